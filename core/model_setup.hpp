@@ -1,0 +1,41 @@
+// From the caller's ContactInput to the numbers the march needs: validation
+// (every error names the input), flexibilities, and Kalker's normalised
+// creepages in the rolling frame.
+#pragma once
+
+#include "kalker_coefficients.hpp"
+#include "params.hpp"
+
+namespace creepwork {
+
+// Normalised kinematics of FASTSIM (Kalker 1982; paper eqs. 13-25): tractions
+// in units of mu*p0 (p0 = pressure scale of the chosen law), coordinates
+// X = x/a, Y = y/b. The rigid slip divided by flexibility, in those units, is
+//   (ux - cx * Y,  uy + cy * X).
+struct NormalisedKinematics {
+    double ux = 0, uy = 0; // a xi/(L1 mu p0), a eta/(L2 mu p0)
+    double cx = 0, cy = 0; // a b phi/(L3 mu p0), a^2 phi/(L3 mu p0)
+};
+
+struct ModelSetup {
+    double a = 0, b = 0;
+    PressureKind pressure = PressureKind::parabolic;
+    double pressure_scale = 0;   // p0 = 2N/(pi a b) (parabolic) or 3N/(2 pi a b) (elliptic) [Pa]
+    double traction_scale = 0;   // mu * p0 [Pa]
+    double L1 = 0, L2 = 0, L3 = 0;
+    CreepCoefficients C{0, 0, 0, 0}; // zero when flexibilities were given
+    int direction = 1;           // rolling direction, +1 or -1
+    // Creepages in the rolling frame (x' = direction * x).
+    double xi = 0, eta = 0, phi = 0;
+    NormalisedKinematics kin;
+};
+
+// Throws Error(invalid_input) naming the first offending input.
+ModelSetup make_model_setup(const ContactInput& in);
+
+// Largest magnitude of a normalised creepage; larger ones are scaled down
+// together (direction kept) so that no intermediate can overflow. Such a
+// contact slides everywhere; the scaling changes nothing measurable.
+constexpr double kMaxNormalisedCreepage = 1e100;
+
+} // namespace creepwork

@@ -1,0 +1,74 @@
+// Plain parameter and result types of the core. Units are consistent
+// (SI recommended: m, N, Pa, 1/m); see README "Units and sign conventions".
+#pragma once
+
+namespace creepwork {
+
+enum class GridKind {
+    kalker_strips, // Kalker 1982: ny equal strips, nx equal elements per chord
+    uniform,       // CONTACT: nx*ny box [-S a, S a] x [-S b, S b], centre-in-ellipse
+};
+
+enum class PressureKind {
+    parabolic, // pz = 2N/(pi a b) (1 - x^2/a^2 - y^2/b^2), simplified theory (paper eq. 16)
+    elliptic,  // pz = 3N/(2 pi a b) sqrt(1 - x^2/a^2 - y^2/b^2), Hertz
+};
+
+enum class FlexibilitySource {
+    kalker_from_material, // L1, L2, L3 from G, nu and Kalker's C11, C22, C23
+    given,                // L1, L2, L3 supplied by the caller
+};
+
+// Grid limits, enforced when a solver is created.
+constexpr int kMaxGridCells = 1000;    // per direction
+constexpr double kMaxBoxScale = 100.0; // uniform grid box scale S in [1, 100]
+
+struct GridSpec {
+    GridKind kind = GridKind::kalker_strips;
+    int nx = 20;             // elements along x (rolling direction)
+    int ny = 20;             // strips across y
+    double box_scale = 1.0;  // S, uniform grid only
+};
+
+// a/b range accepted (Kalker's table + asymptotes are used up to here).
+constexpr double kMinAspect = 1e-3;
+constexpr double kMaxAspect = 1e3;
+
+struct ContactInput {
+    double a = 0.0;            // semi-axis along x (rolling direction) [m]
+    double b = 0.0;            // semi-axis along y (lateral) [m]
+    double normal_force = 0.0; // N >= 0 [N]
+    double mu = 0.0;           // friction coefficient >= 0 [-]
+    FlexibilitySource flexibility = FlexibilitySource::kalker_from_material;
+    double G = 0.0;            // combined shear modulus [Pa] (kalker_from_material)
+    double nu = 0.0;           // combined Poisson ratio, 0..0.5 (kalker_from_material)
+    double L1 = 0.0, L2 = 0.0, L3 = 0.0; // flexibilities [m/Pa] (given)
+    double xi_x = 0.0;         // longitudinal creepage [-]
+    double xi_y = 0.0;         // lateral creepage [-]
+    double phi = 0.0;          // spin creepage [1/m]
+    PressureKind pressure = PressureKind::parabolic;
+    int rolling_direction = 1; // +1: leading edge at x = +a; -1: at x = -a
+};
+
+// Flags in SolveTotals::work_flags.
+constexpr int kWorkUnresolved = 1;   // no slip element: released energy put on trailing elements
+constexpr int kWorkNonPositive = 2;  // W_macro <= 0 with dissipation: consistent map set to zero
+
+struct SolveTotals {
+    double Fx = 0, Fy = 0, Mz = 0;        // on the wheel (body 1) [N, N, N m]
+    double W_macro = 0;                   // -(Fx xi_x + Fy xi_y + Mz phi) [J/m]
+    double W_micro_paper = 0;             // sum of the paper's local work [J/m]
+    double K = 0;                         // W_macro / W_micro_paper (0 if undefined)
+    double W_consistent = 0;              // sum of the energy-consistent map [J/m]
+    double spin_factor = 1;               // W_macro / model power (1 without spin or with L1=L2=L3)
+    double adhesion_fraction = 0;         // n_adhesion / n_contact
+    int n_contact = 0, n_adhesion = 0, n_slip = 0;
+    int work_flags = 0;
+    double a = 0, b = 0;
+    double L1 = 0, L2 = 0, L3 = 0;
+    double C11 = 0, C22 = 0, C23 = 0, C33 = 0; // 0 when the flexibilities were given
+    double profile_max_diff = 0;          // lateral work vs equal-area parabola, / peak
+    double profile_rms_diff = 0;
+};
+
+} // namespace creepwork
