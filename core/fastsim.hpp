@@ -16,9 +16,9 @@ namespace creepwork {
 // slip. Slip, dissipation and every other field follow from (q', f).
 struct MarchState {
     Eigen::ArrayXd qx, qy, factor;
-    // Per strip: sums over the strip of p'_x, p'_y and X p'_y, slip count.
-    Eigen::ArrayXd sum_px, sum_py, sum_x_py;
-    Eigen::ArrayXi slip_count;
+    // Per strip: sums over the strip of p'_x, p'_y and X p'_y, and the
+    // number of slip elements (a double so the march loop stays all-double).
+    Eigen::ArrayXd sum_px, sum_py, sum_x_py, slip_count;
     // Per strip: running traction, the march's only carried state.
     Eigen::ArrayXd px, py;
 

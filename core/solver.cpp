@@ -29,7 +29,7 @@ const SolveTotals& Solver::solve(const ContactInput& input, SolveMode mode)
         fx += area * march_.sum_px[j];
         fy += area * march_.sum_py[j];
         mz += area * (a * march_.sum_x_py[j] - y * march_.sum_px[j]);
-        n_slip += march_.slip_count[j];
+        n_slip += static_cast<int>(march_.slip_count[j]);
     }
     fx *= T;
     fy *= T;

@@ -1,0 +1,379 @@
+/*
+ * creepwork -- creep forces, creep moment and frictional-work distributions
+ * of a wheel rolling on a rail, by Kalker's simplified theory (FASTSIM, 1982)
+ * extended to the moment and an energy-consistent work map.
+ *
+ * This header is the whole public contract of libcreepwork. It is C99 and
+ * C++ compatible and includes only <stddef.h> and <stdint.h>.
+ *
+ * Conventions
+ *   Units     Consistent units; SI recommended: m, N, Pa, 1/m (spin), J/m
+ *             (work per unit rolling distance). The library never converts.
+ *   Frame     x along the rolling direction, y lateral, z into the rail;
+ *             the contact ellipse has semi-axis a along x and b along y.
+ *             rolling_direction = +1: material enters at x = +a (leading
+ *             edge) and leaves at x = -a; -1 mirrors this.
+ *   Kinematics Kalker's: rigid slip w = (xi_x - phi*y, xi_y + phi*x).
+ *   Forces    Fx, Fy, Mz act on the wheel (body 1), as in Kalker's and
+ *             CONTACT's conventions: opposite in sign to the creepages.
+ *             The paper (../shared/paper) prints the force on the rail.
+ *   Work      Positive when dissipated; per unit rolling distance [J/m].
+ *             Multiply by V*dt for the work of a time step.
+ *   Grids     Element (i, j), i = 0..nx-1 along x (increasing x),
+ *             j = 0..ny-1 along y (increasing y), is stored at
+ *             [i + j*nx]: column-major with i fastest, so a Fortran array
+ *             real(c_double) :: f(nx, ny) maps directly.
+ *   Buffers   Caller-owned; each pointer is followed by its length in
+ *             elements. Too short is an error: nothing is written.
+ *   Errors    Every function returns an int status (CW_OK = 0). Codes are
+ *             never renumbered, only appended. cw_status_string() gives a
+ *             static message; a handle keeps a detailed message naming the
+ *             offending input (cw_solver_last_error). On any error nothing
+ *             is written to the outputs and the handle stays usable.
+ *   Threads   Distinct handles may be used concurrently from different
+ *             threads; one handle must be used by one thread at a time.
+ *             The library has no global mutable state.
+ *   Structs   Parameter and result structs start with size_t struct_size,
+ *             set by the matching _init function. Fields are only ever
+ *             appended; the library reads and writes min(struct_size,
+ *             sizeof) bytes, so a program built against an older, smaller
+ *             struct keeps working.
+ */
+#ifndef CREEPWORK_H
+#define CREEPWORK_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "creepwork/creepwork_export.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* ---------------------------------------------------------------- version */
+
+#define CW_VERSION_MAJOR 1
+#define CW_VERSION_MINOR 0
+#define CW_VERSION_PATCH 0
+/* 10000*major + 100*minor + patch */
+#define CW_VERSION_NUMBER (CW_VERSION_MAJOR * 10000 + CW_VERSION_MINOR * 100 + CW_VERSION_PATCH)
+/* Incremented only when a binary built against an older header could break. */
+#define CW_ABI_VERSION 1
+
+/* Run-time versions: compare with CW_VERSION_NUMBER / CW_ABI_VERSION to check
+ * that the loaded library is the one the program was built against. */
+CW_API int cw_version_number(void);
+CW_API int cw_abi_version(void);
+CW_API const char* cw_version_string(void); /* "1.0.0", static */
+
+/* ------------------------------------------------------------ status codes */
+
+/* One list generates the codes (here) and their messages (in the library).
+ * X(name, value, message) */
+#define CW_STATUS_LIST(X)                                                              \
+    X(CW_OK, 0, "success")                                                             \
+    X(CW_ERR_NULL_POINTER, 1, "a required pointer argument is NULL")                   \
+    X(CW_ERR_INVALID_INPUT, 2, "an input value is invalid (NaN, Inf, out of range)")   \
+    X(CW_ERR_GRID_OUT_OF_RANGE, 3, "grid size or box scale outside the limits")        \
+    X(CW_ERR_BUFFER_TOO_SMALL, 4, "an output buffer is shorter than required")         \
+    X(CW_ERR_NO_SOLUTION, 5, "no successful solve yet on this handle")                 \
+    X(CW_ERR_NO_WORK, 6, "field needs a solve with CW_SOLVE_FULL")                     \
+    X(CW_ERR_STRUCT_SIZE, 7, "struct_size is too small or not set")                    \
+    X(CW_ERR_OUT_OF_MEMORY, 8, "memory allocation failed")                             \
+    X(CW_ERR_NUMERIC, 9, "a result is not finite: inputs too extreme")                 \
+    X(CW_ERR_UNKNOWN_OPTION, 10, "unknown field, mode or enumeration value")           \
+    X(CW_ERR_GRID_MISMATCH, 11, "accumulator and solver grids differ")                 \
+    X(CW_ERR_INTERNAL, 12, "internal error (please report)")
+
+#define CW_STATUS_ENUMERATOR_(name, value, message) name = value,
+enum cw_status { CW_STATUS_LIST(CW_STATUS_ENUMERATOR_) CW_STATUS_END_ };
+#undef CW_STATUS_ENUMERATOR_
+
+/* Static, never NULL; "unknown status code" for values not in the list. */
+CW_API const char* cw_status_string(int status);
+
+/* ------------------------------------------------------------------ limits */
+
+#define CW_MAX_GRID_CELLS 1000  /* nx, ny in 1..1000 */
+#define CW_MAX_BOX_SCALE 100.0  /* uniform grid box scale S in [1, 100] */
+#define CW_MIN_ASPECT 1e-3      /* a/b in [1e-3, 1e3]: Kalker's table + asymptotes */
+#define CW_MAX_ASPECT 1e3
+
+/* ------------------------------------------------------------ enumerations */
+
+/* cw_grid.kind */
+#define CW_GRID_KALKER_STRIPS 0 /* ny equal strips, nx equal elements per chord (Kalker 1982) */
+#define CW_GRID_UNIFORM 1       /* nx*ny box [-S a, S a] x [-S b, S b] (CONTACT) */
+
+/* cw_params.pressure: normal pressure and traction bound mu*pz */
+#define CW_PRESSURE_PARABOLIC 0 /* 2N/(pi a b) (1 - x^2/a^2 - y^2/b^2), paper eq. 16 */
+#define CW_PRESSURE_ELLIPTIC 1  /* 3N/(2 pi a b) sqrt(1 - x^2/a^2 - y^2/b^2), Hertz */
+
+/* cw_params.flexibility */
+#define CW_FLEX_FROM_MATERIAL 0 /* L1, L2, L3 from G, nu and Kalker's C11, C22, C23 */
+#define CW_FLEX_GIVEN 1         /* L1, L2, L3 as given (legacy codes) */
+
+/* cw_solver_solve mode */
+#define CW_SOLVE_FORCES 0 /* totals, px, py, pz, state: fastest */
+#define CW_SOLVE_FULL 1   /* also micro-slip, moment and work maps, profile */
+
+/* Field identifiers for cw_solver_get_field (one value per element). */
+#define CW_FIELD_X 0               /* element centre x [m] */
+#define CW_FIELD_Y 1               /* element centre y [m] */
+#define CW_FIELD_AREA 2            /* element area, 0 outside contact [m^2] */
+#define CW_FIELD_PZ 3              /* normal pressure [Pa] */
+#define CW_FIELD_PX 4              /* traction on the wheel, x [Pa] */
+#define CW_FIELD_PY 5              /* traction on the wheel, y [Pa] */
+#define CW_FIELD_SX 6              /* micro-slip W_x/V [-], 0 in adhesion (FULL) */
+#define CW_FIELD_SY 7              /* micro-slip W_y/V [-], 0 in adhesion (FULL) */
+#define CW_FIELD_MZ 8              /* moment contribution (x*py - y*px)*area [N m] */
+#define CW_FIELD_WORK_PAPER 9      /* paper's local work, force x physical slip [J/m] (FULL) */
+#define CW_FIELD_WORK_CONSISTENT 10 /* energy-consistent local work [J/m] (FULL) */
+
+/* Element states (cw_solver_get_state), paper eqs. 32-33 */
+#define CW_STATE_EXTERIOR 0
+#define CW_STATE_ADHESION 1
+#define CW_STATE_SLIP 2
+
+/* cw_result.work_flags bits */
+#define CW_WORK_UNRESOLVED 1  /* no element slips: released elastic energy put on each
+                                 strip's trailing contact element (an adhesion element) */
+#define CW_WORK_NON_POSITIVE 2 /* W_macro <= 0 with dissipation (three-flexibility defect):
+                                  energy-consistent map set to zero */
+
+/* ------------------------------------------------------------------ grid */
+
+typedef struct cw_grid {
+    size_t struct_size; /* set by cw_grid_init */
+    int kind;           /* CW_GRID_KALKER_STRIPS (default) or CW_GRID_UNIFORM */
+    int nx;             /* elements along x, 1..CW_MAX_GRID_CELLS (default 20) */
+    int ny;             /* strips along y, 1..CW_MAX_GRID_CELLS (default 20) */
+    double box_scale;   /* uniform grid: S in [1, CW_MAX_BOX_SCALE] (default 1) */
+} cw_grid;
+
+/* Fills defaults and struct_size. Errors: CW_ERR_NULL_POINTER. */
+CW_API int cw_grid_init(cw_grid* grid);
+
+/* -------------------------------------------------------------- parameters */
+
+typedef struct cw_params {
+    size_t struct_size;    /* set by cw_params_init */
+    double a;              /* semi-axis along x (rolling) [m], > 0 */
+    double b;              /* semi-axis along y (lateral) [m], > 0; a/b in [1e-3, 1e3] */
+    double normal_force;   /* N [N], >= 0 */
+    double mu;             /* friction coefficient [-], >= 0 */
+    int flexibility;       /* CW_FLEX_FROM_MATERIAL (default) or CW_FLEX_GIVEN */
+    int pressure;          /* CW_PRESSURE_PARABOLIC (default) or CW_PRESSURE_ELLIPTIC */
+    double G;              /* combined shear modulus [Pa], > 0 (FROM_MATERIAL) */
+    double nu;             /* combined Poisson's ratio [-], 0..0.5 (FROM_MATERIAL) */
+    double L1, L2, L3;     /* flexibilities [m/Pa], > 0 (GIVEN) */
+    double xi_x;           /* longitudinal creepage [-] */
+    double xi_y;           /* lateral creepage [-] */
+    double phi;            /* spin creepage [1/m] */
+    int rolling_direction; /* +1 (default): leading edge at x = +a; -1: at x = -a */
+} cw_params;
+
+/* Defaults: steel (G = 82e9 Pa, nu = 0.28), mu = 0.3, a = b = 6e-3 m,
+ * N = 80e3 N, zero creepage, parabolic pressure, rolling towards +x.
+ * Errors: CW_ERR_NULL_POINTER. */
+CW_API int cw_params_init(cw_params* params);
+
+/* ----------------------------------------------------------------- result */
+
+typedef struct cw_result {
+    size_t struct_size;       /* set by cw_result_init */
+    double Fx, Fy;            /* creep force on the wheel [N] */
+    double Mz;                /* creep moment about the ellipse centre, on the wheel [N m] */
+    double W_macro;           /* -(Fx xi_x + Fy xi_y + Mz phi) [J/m], paper eq. 34 */
+    double W_micro_paper;     /* sum of the paper's local work [J/m] (FULL) */
+    double K;                 /* W_macro / W_micro_paper, paper eq. 39; 0 if undefined (FULL) */
+    double W_consistent;      /* sum of the energy-consistent map = W_macro [J/m] (FULL) */
+    double balance_factor;    /* W_macro / model energy terms; 1 without spin on the
+                                 uniform grid (see README "Work") (FULL) */
+    double adhesion_fraction; /* n_adhesion / n_contact */
+    int n_contact, n_adhesion, n_slip;
+    int work_flags;           /* CW_WORK_* bits (FULL) */
+    double a, b;              /* semi-axes used [m] */
+    double L1, L2, L3;        /* flexibilities used [m/Pa] */
+    double C11, C22, C23, C33;/* Kalker coefficients used; 0 when L's were given */
+    double profile_max_diff;  /* lateral work profile vs equal-area parabola, max |diff| / peak */
+    double profile_rms_diff;  /* ... RMS difference / peak (FULL) */
+} cw_result;
+
+/* Zeroes the result and sets struct_size. Errors: CW_ERR_NULL_POINTER. */
+CW_API int cw_result_init(cw_result* result);
+
+/* ----------------------------------------------------------------- solver */
+
+typedef struct cw_solver cw_solver;
+
+/* Creates a solver for one grid: all memory is allocated here, none in
+ * solve. message (may be NULL) receives a NUL-terminated explanation of an
+ * error, truncated to message_len bytes.
+ * Errors: CW_ERR_NULL_POINTER, CW_ERR_STRUCT_SIZE, CW_ERR_UNKNOWN_OPTION
+ * (kind), CW_ERR_GRID_OUT_OF_RANGE, CW_ERR_OUT_OF_MEMORY. On error *solver
+ * is set to NULL. */
+CW_API int cw_solver_create(const cw_grid* grid, cw_solver** solver, char* message,
+                            size_t message_len);
+
+/* Frees everything; NULL is a no-op. Always CW_OK. */
+CW_API int cw_solver_destroy(cw_solver* solver);
+
+/* Grid dimensions of the solver. Errors: CW_ERR_NULL_POINTER. */
+CW_API int cw_solver_grid_size(const cw_solver* solver, int* nx, int* ny);
+
+/* Solves one steady-rolling contact. mode: CW_SOLVE_FORCES or CW_SOLVE_FULL.
+ * result may be NULL (read fields afterwards). Allocates nothing, prints
+ * nothing. Errors: CW_ERR_NULL_POINTER, CW_ERR_STRUCT_SIZE,
+ * CW_ERR_UNKNOWN_OPTION, CW_ERR_INVALID_INPUT, CW_ERR_NUMERIC. After an
+ * error the handle holds no solution (fields give CW_ERR_NO_SOLUTION). */
+CW_API int cw_solver_solve(cw_solver* solver, const cw_params* params, int mode,
+                           cw_result* result);
+
+/* Copies the totals of the last successful solve. Errors: CW_ERR_NULL_POINTER,
+ * CW_ERR_STRUCT_SIZE, CW_ERR_NO_SOLUTION. */
+CW_API int cw_solver_get_result(const cw_solver* solver, cw_result* result);
+
+/* One field of the last solve into out[i + j*nx], out_len >= nx*ny.
+ * Units in the CW_FIELD_* list. Errors: CW_ERR_NULL_POINTER,
+ * CW_ERR_UNKNOWN_OPTION, CW_ERR_NO_SOLUTION, CW_ERR_NO_WORK,
+ * CW_ERR_BUFFER_TOO_SMALL. */
+CW_API int cw_solver_get_field(const cw_solver* solver, int field, double* out,
+                               size_t out_len);
+
+/* Element states CW_STATE_* into out[i + j*nx], out_len >= nx*ny.
+ * Errors: as cw_solver_get_field. */
+CW_API int cw_solver_get_state(const cw_solver* solver, int* out, size_t out_len);
+
+/* Lateral work profile (paper Figs. 8-9), per strip j < ny: strip centre y
+ * [m], energy-consistent work per unit width w(y) [J/m per m], and the
+ * parabola over [-b, b] with the same area, (3W/4b)(1 - y^2/b^2). Each of y,
+ * w, parabola may be NULL; len >= ny. Needs a CW_SOLVE_FULL solve.
+ * Errors: CW_ERR_NO_SOLUTION, CW_ERR_NO_WORK, CW_ERR_BUFFER_TOO_SMALL,
+ * CW_ERR_NULL_POINTER (solver). */
+CW_API int cw_solver_get_profile(const cw_solver* solver, double* y, double* w,
+                                 double* parabola, size_t len);
+
+/* Detailed message of the last error on this handle ("" after success);
+ * owned by the handle, valid until its next call. NULL solver gives a
+ * static message. */
+CW_API const char* cw_solver_last_error(const cw_solver* solver);
+
+/* ------------------------------------------------------ work accumulator */
+
+/* Running totals for simulation loops (paper eqs. 35 and 37). The per-element
+ * totals live on the patch grid in normalised coordinates (x/a, y/b), so
+ * contacts whose a, b change from step to step accumulate element by
+ * element. */
+typedef struct cw_accumulator cw_accumulator;
+
+typedef struct cw_accumulation {
+    size_t struct_size;   /* set by cw_accumulation_init */
+    double distance;      /* total rolled distance sum(V dt) [m] */
+    double W_macro;       /* sum W_macro V dt, paper eq. 35 [J] */
+    double W_micro_paper; /* sum W_micro_paper V dt, paper eq. 37 [J] */
+    double K;             /* W_macro / W_micro_paper over the run (eq. 39), 0 if undefined */
+    double W_consistent;  /* sum of the energy-consistent map over the run [J] */
+    int64_t steps;        /* number of cw_accumulator_add calls that succeeded */
+} cw_accumulation;
+
+CW_API int cw_accumulation_init(cw_accumulation* totals);
+
+/* Accumulator on the grid of solver (same nx, ny, kind needed when adding).
+ * Errors: CW_ERR_NULL_POINTER, CW_ERR_OUT_OF_MEMORY. */
+CW_API int cw_accumulator_create(const cw_solver* solver, cw_accumulator** accumulator);
+CW_API int cw_accumulator_destroy(cw_accumulator* accumulator); /* NULL: no-op */
+CW_API int cw_accumulator_reset(cw_accumulator* accumulator);
+
+/* Adds the last CW_SOLVE_FULL solve of solver for a step of length
+ * distance = V*dt [m] >= 0 (finite). Errors: CW_ERR_NULL_POINTER,
+ * CW_ERR_NO_SOLUTION, CW_ERR_NO_WORK, CW_ERR_GRID_MISMATCH,
+ * CW_ERR_INVALID_INPUT (distance). */
+CW_API int cw_accumulator_add(cw_accumulator* accumulator, const cw_solver* solver,
+                              double distance);
+
+CW_API int cw_accumulator_get_totals(const cw_accumulator* accumulator,
+                                     cw_accumulation* totals);
+
+/* Accumulated per-element work [J] into out[i + j*nx]: field is
+ * CW_FIELD_WORK_PAPER or CW_FIELD_WORK_CONSISTENT. Errors:
+ * CW_ERR_NULL_POINTER, CW_ERR_UNKNOWN_OPTION, CW_ERR_BUFFER_TOO_SMALL. */
+CW_API int cw_accumulator_get_field(const cw_accumulator* accumulator, int field,
+                                    double* out, size_t out_len);
+
+/* Accumulated energy-consistent work per strip j < ny [J] (sum over i). */
+CW_API int cw_accumulator_get_strip_work(const cw_accumulator* accumulator, double* out,
+                                         size_t len);
+
+CW_API const char* cw_accumulator_last_error(const cw_accumulator* accumulator);
+
+/* ------------------------------------------------------------------ batch */
+
+/* Many independent contacts on one grid (e.g. every wheel of a vehicle),
+ * in parallel with OpenMP when available. Results are bitwise identical to
+ * one-by-one cw_solver_solve calls, whatever the number of threads. */
+typedef struct cw_batch cw_batch;
+
+/* threads <= 0: use all available cores. All memory is allocated here.
+ * Errors: as cw_solver_create. */
+CW_API int cw_batch_create(const cw_grid* grid, int threads, cw_batch** batch, char* message,
+                           size_t message_len);
+CW_API int cw_batch_destroy(cw_batch* batch); /* NULL: no-op */
+
+/* Solves count contacts. params and results are arrays whose element size is
+ * params[0].struct_size and results[0].struct_size (every element must carry
+ * the same struct_size), so older, smaller structs work. statuses (may be
+ * NULL) receives each contact's status. Returns CW_OK when all succeeded,
+ * otherwise the status of the first failing contact (its message names the
+ * index); results of failed contacts are left untouched.
+ * Errors: CW_ERR_NULL_POINTER, CW_ERR_STRUCT_SIZE, CW_ERR_UNKNOWN_OPTION, and
+ * per contact those of cw_solver_solve. */
+CW_API int cw_batch_solve(cw_batch* batch, size_t count, const cw_params* params, int mode,
+                          cw_result* results, int* statuses);
+
+CW_API const char* cw_batch_last_error(const cw_batch* batch);
+
+/* ------------------------------------------- linear theory and Hertz helpers */
+
+/* Kalker's coefficients (Kalker 1990, Table E.3; interpolated as CONTACT
+ * does; asymptotes below min(a/b, b/a) = 0.1; C33 there is not a confirmed
+ * published value, see README). coefficients[4] = C11, C22, C23, C33.
+ * Errors: CW_ERR_NULL_POINTER, CW_ERR_INVALID_INPUT. */
+CW_API int cw_kalker_coefficients(double a_over_b, double nu, double coefficients[4],
+                                  char* message, size_t message_len);
+
+/* Flexibilities of the simplified theory, flexibilities[3] = L1, L2, L3 [m/Pa]:
+ * L1 = 8a/(3 C11 G), L2 = 8a/(3 C22 G), L3 = pi a sqrt(a/b)/(4 C23 G).
+ * Errors: CW_ERR_NULL_POINTER, CW_ERR_INVALID_INPUT. */
+CW_API int cw_kalker_flexibilities(double a, double b, double G, double nu,
+                                   double flexibilities[3], char* message,
+                                   size_t message_len);
+
+/* Hertz contact of elastically similar bodies: gap A x^2 + B y^2 (A, B > 0,
+ * principal relative curvatures [1/m]), load N >= 0 [N], contact modulus
+ * E* > 0 [Pa] (E* = G/(1-nu) for identical materials).
+ * hertz[4] = a [m], b [m], maximum pressure p0 [Pa], approach [m].
+ * Errors: CW_ERR_NULL_POINTER, CW_ERR_INVALID_INPUT. */
+CW_API int cw_hertz_solve(double A, double B, double normal_force, double E_star,
+                          double hertz[4], char* message, size_t message_len);
+
+/* Kalker's original normalised FASTSIM (1982) on the strip grid with the
+ * parabolic bound 1 - x^2 - y^2 on the unit disk:
+ *   ux, uy   normalised creepages pi a^2 b xi/(2 mu N L), pi a^2 b eta/(2 mu N L)
+ *   fx, fy   normalised spin terms pi a^2 b^2 phi/(2 mu N L), pi a^3 b phi/(2 mu N L)
+ *   mx, my   elements per strip and number of strips (1..CW_MAX_GRID_CELLS)
+ *   tol      strip-split tolerance (Kalker's TOL; large = no split)
+ * Rigid slip (ux - y fx, uy + x fy). Outputs tx, ty: forces on the RAIL
+ * (body 2) divided by mu N, i.e. with the sign of the creepages -- Kalker's
+ * 1982 convention, opposite to cw_solver_solve.
+ * Errors: CW_ERR_NULL_POINTER, CW_ERR_INVALID_INPUT, CW_ERR_GRID_OUT_OF_RANGE. */
+CW_API int cw_fastsim_normalised(double ux, double uy, double fx, double fy, int mx, int my,
+                                 double tol, double* tx, double* ty, char* message,
+                                 size_t message_len);
+
+#ifdef __cplusplus
+} /* extern "C" */
+#endif
+
+#endif /* CREEPWORK_H */
