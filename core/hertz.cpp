@@ -22,13 +22,14 @@ AgmResult agm(double k)
     double weight = 1.0;  // 2^(n-1) for c_n, n = 1, 2, ...
     for (int n = 1; n < 60; ++n) {
         const double c = 0.5 * (an - bn);
-        if (c == 0.0) break;
+        // Converged to rounding: a and b may stall one ulp apart, and the
+        // doubling weight must not keep adding that ulp.
+        if (c <= 4.0 * 2.220446049250313e-16 * an) break;
         tail += weight * c * c;
         weight *= 2.0;
         const double a_next = 0.5 * (an + bn);
         bn = std::sqrt(an * bn);
         an = a_next;
-        if (c < 1e-17 * an) break;
     }
     return {kPi / (2.0 * an), tail};
 }

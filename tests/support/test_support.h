@@ -7,7 +7,13 @@
 #include <stdarg.h>
 #include <stddef.h>
 #include <stdint.h>
+#ifdef __cplusplus
+extern "C" { /* cmocka 1.1.5 has no C++ guards of its own */
+#endif
 #include <cmocka.h>
+#ifdef __cplusplus
+}
+#endif
 #include <math.h>
 #include <stdio.h>
 
