@@ -1,96 +1,219 @@
 #include "fastsim.hpp"
 
-#include <cmath>
-
 namespace creepwork {
 
-void MarchState::resize(int n_elements, int ny)
+bool kernel_isa_supported(KernelIsa isa)
 {
-    qx.setZero(n_elements);
-    qy.setZero(n_elements);
-    factor.setZero(n_elements);
-    sum_px.setZero(ny);
-    sum_py.setZero(ny);
-    sum_x_py.setZero(ny);
-    slip_count.setZero(ny);
-    px.setZero(ny);
-    py.setZero(ny);
+#if CREEPWORK_X86_KERNELS
+    // Idempotent; needed when called before static constructors have run
+    // (a solver made by another library's or program's constructor).
+    __builtin_cpu_init();
+#endif
+    switch (isa) {
+    case KernelIsa::baseline: return true;
+#if CREEPWORK_X86_KERNELS
+    case KernelIsa::avx2: return __builtin_cpu_supports("avx2");
+    case KernelIsa::avx512:
+        return __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512vl") &&
+               __builtin_cpu_supports("avx512dq") && __builtin_cpu_supports("avx512bw");
+#else
+    case KernelIsa::avx2:
+    case KernelIsa::avx512: return false;
+#endif
+    }
+    return false;
+}
+
+KernelIsa best_kernel_isa()
+{
+    if (kernel_isa_supported(KernelIsa::avx512)) return KernelIsa::avx512;
+    if (kernel_isa_supported(KernelIsa::avx2)) return KernelIsa::avx2;
+    return KernelIsa::baseline;
+}
+
+const char* kernel_isa_name(KernelIsa isa)
+{
+    switch (isa) {
+    case KernelIsa::baseline: return "baseline";
+    case KernelIsa::avx2: return "avx2";
+    case KernelIsa::avx512: return "avx512";
+    }
+    return "unknown";
+}
+
+MarchGeometry::MarchGeometry(const ContactGrid& grid)
+    : nx(grid.nx()), ny(grid.ny()), stride(padded_strips(grid.ny()))
+{
+    const Eigen::Index n = static_cast<Eigen::Index>(nx) * stride;
+    x_centre.setZero(n);
+    x_slip.setZero(n);
+    step.setOnes(n); // padding strips: a harmless step, never used
+    inside.setZero(n);
+    shape_parabolic.setZero(n);
+    shape_elliptic.setZero(n);
+    for (int m = 0; m < nx; ++m)
+        for (int j = 0; j < ny; ++j) {
+            const Eigen::Index k = static_cast<Eigen::Index>(m) * ny + j;
+            const Eigen::Index p = static_cast<Eigen::Index>(m) * stride + j;
+            x_centre[p] = grid.x_centre()[k];
+            x_slip[p] = grid.x_slip()[k];
+            step[p] = grid.step()[k];
+            inside[p] = grid.in_contact()[k];
+            shape_parabolic[p] = grid.pressure_shape(PressureKind::parabolic)[k];
+            shape_elliptic[p] = grid.pressure_shape(PressureKind::elliptic)[k];
+        }
+}
+
+void MarchState::resize(int n_elements, int ny_)
+{
+    ny = ny_;
+    nx = ny > 0 ? n_elements / ny : 0;
+    stride = padded_strips(ny);
+    const Eigen::Index n = static_cast<Eigen::Index>(nx) * stride;
+    qx.setZero(n);
+    qy.setZero(n);
+    factor.setZero(n);
+    sum_px.setZero(stride);
+    sum_py.setZero(stride);
+    sum_x_py.setZero(stride);
+    slip_count.setZero(stride);
+    px.setZero(stride);
+    py.setZero(stride);
+    wx.setZero(stride);
 }
 
 namespace {
 
-constexpr double kTiny = 2.2250738585072014e-308; // DBL_MIN
+struct MarchArgs {
+    int nx, first, last, stride; // strips [first, last)
+    double uy, cy;
+    const double *x_centre, *x_slip, *step, *inside, *bound; // per element
+    const double* wx;                                         // per strip
+    double *qx, *qy, *factor;                                 // per element
+    double *px, *py, *sum_px, *sum_py, *sum_x_py, *slip_count; // per strip
+};
 
-// One step of every strip: the elastic predictor u = u_prev - h w (divided
-// by L mu p0), then Coulomb: slip when |q| > g, and then p = f q with
-// f = g/|q| < 1; otherwise f = 1 (exterior elements have q = g = 0).
-// Exterior elements (uniform grid) reset the displacement to zero. Written
-// branch-free over restrict pointers so the compiler vectorises across
-// strips; the division never sees a zero (hosts may trap FP exceptions).
-void step_strips(int ny, double ux, double uy, double cx, double cy,
-                 const double* __restrict y, const double* __restrict x_centre,
-                 const double* __restrict x_slip, const double* __restrict step,
-                 const double* __restrict inside, const double* __restrict bound,
-                 double* __restrict px, double* __restrict py, double* __restrict qx_out,
-                 double* __restrict qy_out, double* __restrict f_out,
-                 double* __restrict sum_px, double* __restrict sum_py,
-                 double* __restrict sum_x_py, double* __restrict slip_count)
+// G vectors of W strips from strip j0, leading edge to trailing edge: the G
+// chains are independent, so their steps overlap in the pipeline, and each
+// strip's running traction and sums stay in registers.
+template <int W, int G>
+CREEPWORK_INLINE void march_group(const MarchArgs& A, int j0)
 {
-    for (int j = 0; j < ny; ++j) {
-        const double h = step[j];
-        const double qx = inside[j] * (px[j] - h * (ux - cx * y[j]));
-        const double qy = inside[j] * (py[j] - h * (uy + cy * x_slip[j]));
-        const double norm = std::sqrt(qx * qx + qy * qy);
-        const double safe_norm = norm > kTiny ? norm : kTiny;
-        const bool slip = norm > bound[j];
-        const double f = slip ? bound[j] / safe_norm : 1.0;
-        const double pxn = f * qx;
-        const double pyn = f * qy;
-        qx_out[j] = qx;
-        qy_out[j] = qy;
-        f_out[j] = f;
-        px[j] = pxn;
-        py[j] = pyn;
-        sum_px[j] += pxn;
-        sum_py[j] += pyn;
-        sum_x_py[j] += x_centre[j] * pyn;
-        slip_count[j] += slip ? 1.0 : 0.0;
+    using V = simd::Vec<W>;
+    // Locals, not A's fields: the stores below may alias anything.
+    const int nx = A.nx;
+    const long stride = A.stride;
+    const double *x_centre = A.x_centre + j0, *x_slip = A.x_slip + j0, *step = A.step + j0,
+                 *inside = A.inside + j0, *bound = A.bound + j0;
+    double *qx = A.qx + j0, *qy = A.qy + j0, *factor = A.factor + j0;
+    V px[G], py[G], spx[G], spy[G], sxpy[G], count[G], wx[G];
+    CREEPWORK_UNROLL
+    for (int g = 0; g < G; ++g) {
+        px[g] = py[g] = spx[g] = spy[g] = sxpy[g] = count[g] = simd::broadcast<W>(0.0);
+        wx[g] = simd::load<W>(A.wx + j0 + g * W);
+    }
+    const V uy = simd::broadcast<W>(A.uy), cy = simd::broadcast<W>(A.cy);
+    for (int m = 0; m < nx; ++m) {
+        const long row = m * stride;
+        CREEPWORK_UNROLL
+        for (int g = 0; g < G; ++g) {
+            const long e = row + g * W;
+            const V xs = simd::load<W>(x_slip + e);
+            const MarchStep<W> s =
+                march_step<W>(px[g], py[g], simd::load<W>(step + e), simd::load<W>(inside + e),
+                              simd::load<W>(bound + e), wx[g], uy + cy * xs);
+            simd::store<W>(qx + e, s.qx);
+            simd::store<W>(qy + e, s.qy);
+            simd::store<W>(factor + e, s.f);
+            px[g] = s.px;
+            py[g] = s.py;
+            spx[g] += s.px;
+            spy[g] += s.py;
+            sxpy[g] += simd::load<W>(x_centre + e) * s.py;
+            count[g] += s.slip;
+        }
+    }
+    CREEPWORK_UNROLL
+    for (int g = 0; g < G; ++g) {
+        const int j = j0 + g * W;
+        simd::store<W>(A.px + j, px[g]);
+        simd::store<W>(A.py + j, py[g]);
+        simd::store<W>(A.sum_px + j, spx[g]);
+        simd::store<W>(A.sum_py + j, spy[g]);
+        simd::store<W>(A.sum_x_py + j, sxpy[g]);
+        simd::store<W>(A.slip_count + j, count[g]);
     }
 }
 
+// Groups of four vectors, then the vectors left (only those holding strips).
+template <int W>
+CREEPWORK_INLINE void march_body(const MarchArgs& A)
+{
+    const int vectors = (A.last - A.first + W - 1) / W;
+    int v = 0;
+    for (; v + 4 <= vectors; v += 4) march_group<W, 4>(A, A.first + v * W);
+    switch (vectors - v) {
+    case 3: march_group<W, 3>(A, A.first + v * W); break;
+    case 2: march_group<W, 2>(A, A.first + v * W); break;
+    case 1: march_group<W, 1>(A, A.first + v * W); break;
+    default: break;
+    }
+}
+
+__attribute__((noinline)) void march_baseline(const MarchArgs& A) { march_body<2>(A); }
+#if CREEPWORK_X86_KERNELS
+CREEPWORK_TARGET_AVX2 void march_avx2(const MarchArgs& A) { march_body<4>(A); }
+CREEPWORK_TARGET_AVX512 void march_avx512(const MarchArgs& A) { march_body<8>(A); }
+#endif
+
 } // namespace
 
-void march(const ContactGrid& grid, const NormalisedKinematics& kin, PressureKind pressure,
-           MarchState& s)
+void march_strips(const MarchGeometry& geo, const NormalisedKinematics& kin, PressureKind pressure,
+                  MarchState& s, KernelIsa isa, int first, int last)
 {
-    const int nx = grid.nx();
+    const MarchArgs A{geo.nx,
+                      first,
+                      last,
+                      geo.stride,
+                      kin.uy,
+                      kin.cy,
+                      geo.x_centre.data(),
+                      geo.x_slip.data(),
+                      geo.step.data(),
+                      geo.inside.data(),
+                      geo.bound(pressure).data(),
+                      s.wx.data(),
+                      s.qx.data(),
+                      s.qy.data(),
+                      s.factor.data(),
+                      s.px.data(),
+                      s.py.data(),
+                      s.sum_px.data(),
+                      s.sum_py.data(),
+                      s.sum_x_py.data(),
+                      s.slip_count.data()};
+    switch (isa) {
+#if CREEPWORK_X86_KERNELS
+    case KernelIsa::avx512: march_avx512(A); return;
+    case KernelIsa::avx2: march_avx2(A); return;
+#endif
+    default: march_baseline(A); return;
+    }
+}
+
+void march(const MarchGeometry& geo, const ContactGrid& grid, const NormalisedKinematics& kin,
+           PressureKind pressure, MarchState& s, KernelIsa isa)
+{
     const int ny = grid.ny();
-    const double* x_centre = grid.x_centre().data();
-    const double* x_slip = grid.x_slip().data();
-    const double* step = grid.step().data();
-    const double* inside = grid.in_contact().data();
-    const double* bound = grid.pressure_shape(pressure).data();
-    const double* y = grid.y_centre().data();
+    for (int j = 0; j < ny; ++j) s.wx[j] = kin.ux - kin.cx * grid.y_centre()[j];
+    march_strips(geo, kin, pressure, s, isa, 0, ny);
+}
 
-    double* px = s.px.data();
-    double* py = s.py.data();
-    double* sum_px = s.sum_px.data();
-    double* sum_py = s.sum_py.data();
-    double* sum_x_py = s.sum_x_py.data();
-    double* slip_count = s.slip_count.data();
-    for (int j = 0; j < ny; ++j) {
-        px[j] = py[j] = sum_px[j] = sum_py[j] = sum_x_py[j] = 0.0;
-        slip_count[j] = 0.0;
-    }
-
-    const double ux = kin.ux, uy = kin.uy, cx = kin.cx, cy = kin.cy;
-    for (int m = 0; m < nx; ++m) {
-        const long base = static_cast<long>(m) * ny;
-        step_strips(ny, ux, uy, cx, cy, y, x_centre + base, x_slip + base, step + base,
-                    inside + base, bound + base, px, py, s.qx.data() + base,
-                    s.qy.data() + base, s.factor.data() + base, sum_px, sum_py, sum_x_py,
-                    slip_count);
-    }
+void march(const ContactGrid& grid, const NormalisedKinematics& kin, PressureKind pressure,
+           MarchState& state, KernelIsa isa)
+{
+    const MarchGeometry geometry(grid);
+    march(geometry, grid, kin, pressure, state, isa);
 }
 
 } // namespace creepwork

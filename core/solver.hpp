@@ -1,8 +1,11 @@
 // The solver object: made once per grid (it owns the grid geometry and every
-// workspace), then solve() many times without allocating. Fields are copied
-// out in the caller's layout: element (i, j) at [i + j*nx], i along x
-// (increasing x), j along y (increasing y) -- column-major, i fastest, so a
-// Fortran array (nx, ny) maps directly.
+// workspace, and picks the kernel for this CPU), then solve() many times
+// without allocating. Fields are copied out in the caller's layout: element
+// (i, j) at [i + j*nx], i along x (increasing x), j along y (increasing y) --
+// column-major, i fastest, so a Fortran array (nx, ny) maps directly. The
+// copy transposes the kernels' layout [m*stride + j] (fastsim.hpp) in 4 x 4
+// blocks (2 x 2 for SSE2) and computes each field on the way, so no field is
+// stored twice.
 #pragma once
 
 #include "contact_grid.hpp"
@@ -46,7 +49,16 @@ public:
     const SolveTotals& totals() const { return totals_; }
     bool has_solution() const { return solved_; }
     bool has_work() const { return solved_ && mode_ == SolveMode::full; }
+    // Marks the last solution absent: the C ABI does so when it rejects a
+    // solve before reaching solve() (mode, struct sizes, enumerations).
+    void discard() { solved_ = false; }
     static bool needs_work(Field f);
+
+    // The kernel in use: best_kernel_isa() unless set. Every kernel gives
+    // bitwise the same results; set_kernel_isa is for tests and benchmarks
+    // and throws Error(invalid_input) when this CPU cannot run the kernel.
+    KernelIsa kernel_isa() const { return isa_; }
+    void set_kernel_isa(KernelIsa isa);
 
     // out[i + j*nx] for i < nx, j < ny. Preconditions (checked by the
     // caller): has_solution(), and has_work() for fields that need it.
@@ -59,15 +71,17 @@ public:
     void copy_profile(double* y, double* work, double* parabola) const;
 
 private:
-    double value(Field f, Eigen::Index k, int j) const;
-    Eigen::Index march_index(int i, int j) const;
+    template <class Op>
+    void export_field(Field f, const Op& op, double* out) const;
 
     ContactGrid grid_;
+    MarchGeometry geometry_; // the grid in the kernels' layout
     MarchState march_;
     WorkState work_;
     ModelSetup setup_;
     SolveTotals totals_;
     SolveMode mode_ = SolveMode::full;
+    KernelIsa isa_ = KernelIsa::baseline;
     bool solved_ = false;
 };
 

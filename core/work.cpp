@@ -1,21 +1,30 @@
 #include "work.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace creepwork {
 
 void WorkState::resize(int n_elements, int ny)
 {
-    slip_x.setZero(n_elements);
-    slip_y.setZero(n_elements);
-    paper.setZero(n_elements);
-    consistent.setZero(n_elements);
-    strip_dissipation.setZero(ny);
-    strip_loss.setZero(ny);
-    strip_pool.setZero(ny);
-    profile.setZero(ny);
-    running_px.setZero(ny);
-    running_py.setZero(ny);
+    // The kernels' layout: [m * stride + j], stride = padded_strips(ny).
+    const int stride = padded_strips(ny);
+    const Eigen::Index n = static_cast<Eigen::Index>(ny > 0 ? n_elements / ny : 0) * stride;
+    slip_x.setZero(n);
+    slip_y.setZero(n);
+    paper.setZero(n);
+    consistent.setZero(n);
+    strip_dissipation.setZero(stride);
+    strip_loss.setZero(stride);
+    strip_pool.setZero(stride);
+    strip_paper.setZero(stride);
+    strip_work.setZero(stride);
+    profile.setZero(stride);
+    width.setZero(stride);
+    rigid_slip_x.setZero(stride);
+    paper_spin_x.setZero(stride);
+    neg_area_T.setZero(stride);
+    ratio.setZero(stride);
 }
 
 double equal_area_parabola(double W, double b, double y)
@@ -26,77 +35,130 @@ double equal_area_parabola(double W, double b, double y)
 
 namespace {
 
-// Walk every strip once: micro-slip, the paper's work, each element's
-// friction dissipation D_k (kept in work.consistent until it is distributed)
-// and each strip's numerical and trailing-edge losses.
-void account_strips(const ContactGrid& grid, const ModelSetup& s, const MarchState& st,
-                    WorkState& w)
+// Everything the work pass reads and writes; per-element pointers point at
+// element 0 of the kernels' layout [m * stride + j].
+struct WorkArgs {
+    int nx, first, last, stride; // strips [first, last)
+    double a, T, half_T, TL1, TL2, L1T, L2T, eta, spin_y, paper_spin_y;
+    const double *x_slip, *step, *inside;              // per element (geometry)
+    const double *qx, *qy, *factor;                    // per element (march)
+    const double *width, *rigid_slip_x, *paper_spin_x, *neg_area_T; // per strip
+    double *slip_x, *slip_y, *paper, *dissipation;     // per element
+    double *loss, *strip_dissipation, *strip_paper;    // per strip
+};
+
+// The work of W strips from strip j0, element by element along the march
+// (p' = f q' as the march computed it; p'_prev the element before):
+//  - micro-slip s = w + (u - u_prev)/h with u = L p (zero in adhesion by
+//    construction, so only computed in slip);
+//  - the numerical dissipation 1/2 dp L dp of the step (an exterior element
+//    after the strip's last contact element releases the exit energy here);
+//  - friction dissipation D = -p.(u - u*) dy = T^2 f (1 - f) q'.L q' dy >= 0;
+//  - the paper's eq. 36 read as element force x physical micro-slip: the
+//    model's micro-slip with its scaled spin (L/L3) replaced by the true one.
+// Exterior elements never slip (q' = g = 0), so "slip" means inside, f < 1.
+// Nothing here feeds the next element but p', so the steps overlap freely.
+template <int W>
+CREEPWORK_INLINE void work_strips(const WorkArgs& A, int j0)
 {
-    const int nx = grid.nx(), ny = grid.ny();
-    const double T = s.traction_scale;
-    const double TL1 = T * s.L1, TL2 = T * s.L2;
-    // Spin in the model's rigid slip is scaled by L1/L3, L2/L3 (Kalker 1982).
-    const double spin_x_model = s.phi * s.L1 / s.L3, spin_y_model = s.phi * s.L2 / s.L3;
-    w.running_px.setZero();
-    w.running_py.setZero();
-    w.strip_dissipation.setZero();
-    w.strip_loss.setZero();
-
+    using V = simd::Vec<W>;
+    // Locals, not A's fields: the stores below may alias anything.
+    const int nx = A.nx;
+    const long stride = A.stride;
+    const double *x_slip = A.x_slip + j0, *step = A.step + j0, *inside = A.inside + j0;
+    const double *qx = A.qx + j0, *qy = A.qy + j0, *factor = A.factor + j0;
+    double *slip_x = A.slip_x + j0, *slip_y = A.slip_y + j0, *paper = A.paper + j0,
+           *dissipation = A.dissipation + j0;
+    const V zero = simd::broadcast<W>(0.0), one = simd::broadcast<W>(1.0);
+    const V a = simd::broadcast<W>(A.a), T = simd::broadcast<W>(A.T);
+    const V half_T = simd::broadcast<W>(A.half_T), TL1 = simd::broadcast<W>(A.TL1),
+            TL2 = simd::broadcast<W>(A.TL2), L1T = simd::broadcast<W>(A.L1T),
+            L2T = simd::broadcast<W>(A.L2T), eta = simd::broadcast<W>(A.eta),
+            spin_y = simd::broadcast<W>(A.spin_y), paper_spin_y = simd::broadcast<W>(A.paper_spin_y);
+    const V dy = simd::load<W>(A.width + j0), wsx = simd::load<W>(A.rigid_slip_x + j0),
+            psx = simd::load<W>(A.paper_spin_x + j0), nat = simd::load<W>(A.neg_area_T + j0);
+    V px_prev = zero, py_prev = zero, loss = zero, diss = zero, spaper = zero;
     for (int m = 0; m < nx; ++m) {
-        for (int j = 0; j < ny; ++j) {
-            const Eigen::Index k = static_cast<Eigen::Index>(m) * ny + j;
-            const double f = st.factor[k];
-            const double pxn = f * st.qx[k], pyn = f * st.qy[k];
-            const double dpx = pxn - w.running_px[j], dpy = pyn - w.running_py[j];
-            const double dy = s.b * grid.y_width()[j];
-            // Numerical dissipation of the step; an exterior element after the
-            // strip's last contact element releases the exit energy here.
-            w.strip_loss[j] += 0.5 * T * (TL1 * dpx * dpx + TL2 * dpy * dpy) * dy;
-
-            const bool inside = grid.in_contact()[k] != 0.0;
-            const double y = s.b * grid.y_centre()[j];
-            const double xs = s.a * grid.x_slip()[k];
-            double sx = 0.0, sy = 0.0, dissipation = 0.0;
-            if (inside && f < 1.0) {
-                // s = w + (u - u_prev)/h with u = L p: zero in adhesion by construction.
-                const double h = s.a * grid.step()[k];
-                sx = s.xi - spin_x_model * y + s.L1 * T * dpx / h;
-                sy = s.eta + spin_y_model * xs + s.L2 * T * dpy / h;
-                // -p.(u - u*) dy = T^2 f (1 - f) q'.L q' dy >= 0.
-                dissipation = T * f * (1.0 - f) *
-                              (TL1 * st.qx[k] * st.qx[k] + TL2 * st.qy[k] * st.qy[k]) * dy;
-            }
-            w.slip_x[k] = sx;
-            w.slip_y[k] = sy;
-            w.consistent[k] = dissipation;
-            w.strip_dissipation[j] += dissipation;
-
-            // Paper eq. 36 read as element force x physical micro-slip: the
-            // model's micro-slip with its scaled spin replaced by the true one.
-            double paper = 0.0;
-            if (inside) {
-                const double area = s.a * s.b * grid.x_length()[j] * grid.y_width()[j];
-                const double phys_x = sx - (s.phi - spin_x_model) * y;
-                const double phys_y = sy + (s.phi - spin_y_model) * xs;
-                paper = -area * T * (pxn * phys_x + pyn * phys_y);
-            }
-            w.paper[k] = paper;
-            w.running_px[j] = pxn;
-            w.running_py[j] = pyn;
+        const long e = m * stride;
+        const V f = simd::load<W>(factor + e), in = simd::load<W>(inside + e);
+        const V q_x = simd::load<W>(qx + e), q_y = simd::load<W>(qy + e);
+        const V px = f * q_x, py = f * q_y;
+        const V dpx = px - px_prev, dpy = py - py_prev;
+        loss += half_T * (TL1 * dpx * dpx + TL2 * dpy * dpy) * dy;
+        const V xp = a * simd::load<W>(x_slip + e); // slip point x' [m]
+        const auto slip = f < one;
+        const V slipping = slip ? one : zero;
+        V sx = zero, sy = zero, d = zero;
+        if (simd::max_lane(slipping) > 0.0) {
+            const V hp = a * simd::load<W>(step + e); // step [m]
+            sx = slip ? wsx + L1T * dpx / hp : zero;
+            sy = slip ? eta + spin_y * xp + L2T * dpy / hp : zero;
+            d = slip ? T * f * (one - f) * (TL1 * q_x * q_x + TL2 * q_y * q_y) * dy : zero;
         }
+        const V w = in != zero ? nat * (px * (sx - psx) + py * (sy + paper_spin_y * xp)) : zero;
+        simd::store<W>(slip_x + e, sx);
+        simd::store<W>(slip_y + e, sy);
+        simd::store<W>(dissipation + e, d);
+        simd::store<W>(paper + e, w);
+        diss += d;
+        spaper += w;
+        px_prev = px;
+        py_prev = py;
     }
-    for (int j = 0; j < ny; ++j) {
-        const double px = w.running_px[j], py = w.running_py[j];
-        w.strip_loss[j] += 0.5 * T * (TL1 * px * px + TL2 * py * py) * s.b * grid.y_width()[j];
+    simd::store<W>(A.loss + j0, loss);
+    simd::store<W>(A.strip_dissipation + j0, diss);
+    simd::store<W>(A.strip_paper + j0, spaper);
+}
+
+template <int W>
+CREEPWORK_INLINE void work_body(const WorkArgs& A)
+{
+    for (int j0 = A.first; j0 < A.last; j0 += W) work_strips<W>(A, j0);
+}
+
+__attribute__((noinline)) void work_baseline(const WorkArgs& A) { work_body<2>(A); }
+#if CREEPWORK_X86_KERNELS
+CREEPWORK_TARGET_AVX2 void work_avx2(const WorkArgs& A) { work_body<4>(A); }
+CREEPWORK_TARGET_AVX512 void work_avx512(const WorkArgs& A) { work_body<8>(A); }
+#endif
+
+// The map from D_k: c_k = (D_k ratio_j) balance, and each strip's sum.
+struct ScaleArgs {
+    int nx, ny, stride;
+    double balance;
+    const double* ratio;
+    double *consistent, *strip_work;
+};
+
+template <int W>
+CREEPWORK_INLINE void scale_body(const ScaleArgs& A)
+{
+    using V = simd::Vec<W>;
+    const V balance = simd::broadcast<W>(A.balance);
+    for (int j0 = 0; j0 < A.ny; j0 += W) {
+        const V ratio = simd::load<W>(A.ratio + j0);
+        V sum = simd::broadcast<W>(0.0);
+        for (int m = 0; m < A.nx; ++m) {
+            double* c = A.consistent + static_cast<long>(m) * A.stride + j0;
+            const V v = simd::load<W>(c) * ratio * balance;
+            simd::store<W>(c, v);
+            sum += v;
+        }
+        simd::store<W>(A.strip_work + j0, sum);
     }
 }
+
+__attribute__((noinline)) void scale_baseline(const ScaleArgs& A) { scale_body<2>(A); }
+#if CREEPWORK_X86_KERNELS
+CREEPWORK_TARGET_AVX2 void scale_avx2(const ScaleArgs& A) { scale_body<4>(A); }
+CREEPWORK_TARGET_AVX512 void scale_avx512(const ScaleArgs& A) { scale_body<8>(A); }
+#endif
 
 // Each strip's pool: its own dissipation and losses, plus the losses of
 // strips without slip, handed to the nearest strip(s) with slip (split
 // evenly on a tie). Returns false when no strip slips at all.
-bool fill_pools(WorkState& w)
+bool fill_pools(Eigen::Index ny, WorkState& w)
 {
-    const Eigen::Index ny = w.strip_pool.size();
     bool any_slip = false;
     for (Eigen::Index j = 0; j < ny; ++j) {
         const bool slips = w.strip_dissipation[j] > 0.0;
@@ -126,87 +188,173 @@ bool fill_pools(WorkState& w)
 // No element slips: the energy is released in slip zones thinner than one
 // element at the trailing edge, so it goes to each strip's last contact
 // element (which the state map calls adhesion; flagged kWorkUnresolved).
-void put_losses_on_trailing_elements(const ContactGrid& grid, WorkState& w)
+// Returns the total put there.
+double put_losses_on_trailing_elements(const ContactGrid& grid, int stride, WorkState& w)
 {
     const int nx = grid.nx(), ny = grid.ny();
+    double total = 0.0;
     for (int j = 0; j < ny; ++j) {
         for (int m = nx - 1; m >= 0; --m) {
-            const Eigen::Index k = static_cast<Eigen::Index>(m) * ny + j;
-            if (grid.in_contact()[k] != 0.0) {
-                w.consistent[k] = w.strip_loss[j];
+            if (grid.in_contact()[static_cast<Eigen::Index>(m) * ny + j] != 0.0) {
+                w.consistent[static_cast<Eigen::Index>(m) * stride + j] = w.strip_loss[j];
+                total += w.strip_loss[j];
                 break;
             }
         }
     }
+    return total;
 }
 
+// The profile and its distance to the equal-area parabola. Written without
+// library calls (fmax is not inlined); the ternaries are fmax for the
+// non-NaN values met here, the parabola is equal_area_parabola() with its
+// per-call constant 0.75 W / b hoisted.
 void lateral_profile(const ContactGrid& grid, const ModelSetup& s, double W, WorkState& w,
                      WorkTotals& t)
 {
-    const int nx = grid.nx(), ny = grid.ny();
-    w.profile.setZero();
-    for (int m = 0; m < nx; ++m)
-        for (int j = 0; j < ny; ++j)
-            w.profile[j] += w.consistent[static_cast<Eigen::Index>(m) * ny + j];
+    const int ny = grid.ny();
+    const double b = s.b;
+    const double* y_width = grid.y_width().data();
+    const double* strip_work = w.strip_work.data();
+    double* profile = w.profile.data();
     double peak = 0.0;
     for (int j = 0; j < ny; ++j) {
-        w.profile[j] /= s.b * grid.y_width()[j];
-        peak = std::fmax(peak, w.profile[j]);
+        const double v = strip_work[j] / (b * y_width[j]);
+        profile[j] = v;
+        peak = v > peak ? v : peak;
     }
+    if (!(peak > 0.0)) return;
+    // Differences relative to the peak before squaring: the squares of
+    // absolute differences overflow once the work passes ~1e154 J/m.
+    const double height = 0.75 * W / b;
     double max_diff = 0.0, sum_sq = 0.0;
     int count = 0;
     for (int j = 0; j < ny; ++j) {
         if (grid.contact_count()[j] == 0) continue;
-        const double d =
-            w.profile[j] - equal_area_parabola(W, s.b, s.b * grid.y_centre()[j]);
-        max_diff = std::fmax(max_diff, std::fabs(d));
+        const double yb = b * grid.y_centre()[j] / b;
+        const double r = 1.0 - yb * yb;
+        const double d = (profile[j] - (r > 0.0 ? height * r : 0.0)) / peak;
+        const double ad = d < 0.0 ? -d : d;
+        max_diff = ad > max_diff ? ad : max_diff;
         sum_sq += d * d;
         ++count;
     }
-    if (peak > 0.0 && count > 0) {
-        t.profile_max_diff = max_diff / peak;
-        t.profile_rms_diff = std::sqrt(sum_sq / count) / peak;
+    if (count > 0) {
+        t.profile_max_diff = max_diff;
+        t.profile_rms_diff = std::sqrt(sum_sq / count);
     }
 }
 
 } // namespace
 
-WorkTotals compute_work(const ContactGrid& grid, const ModelSetup& setup, const MarchState& march,
-                        double W_macro, WorkState& w)
+void march_with_work(const MarchGeometry& geo, const ContactGrid& grid, const ModelSetup& s,
+                     MarchState& st, WorkState& w, KernelIsa isa)
+{
+    const int ny = grid.ny();
+    const double T = s.traction_scale;
+    // Spin in the model's rigid slip is scaled by L1/L3, L2/L3 (Kalker 1982).
+    const double spin_x_model = s.phi * s.L1 / s.L3, spin_y_model = s.phi * s.L2 / s.L3;
+    for (int j = 0; j < ny; ++j) {
+        const double y = s.b * grid.y_centre()[j];
+        st.wx[j] = s.kin.ux - s.kin.cx * grid.y_centre()[j];
+        w.width[j] = s.b * grid.y_width()[j];
+        w.rigid_slip_x[j] = s.xi - spin_x_model * y;
+        w.paper_spin_x[j] = (s.phi - spin_x_model) * y;
+        const double area = s.a * s.b * grid.x_length()[j] * grid.y_width()[j];
+        w.neg_area_T[j] = -area * T;
+    }
+    WorkArgs A{geo.nx,
+               0,
+               0,
+               geo.stride,
+               s.a,
+               T,
+               0.5 * T,
+               T * s.L1,
+               T * s.L2,
+               s.L1 * T,
+               s.L2 * T,
+               s.eta,
+               spin_y_model,
+               s.phi - spin_y_model,
+               geo.x_slip.data(),
+               geo.step.data(),
+               geo.inside.data(),
+               st.qx.data(),
+               st.qy.data(),
+               st.factor.data(),
+               w.width.data(),
+               w.rigid_slip_x.data(),
+               w.paper_spin_x.data(),
+               w.neg_area_T.data(),
+               w.slip_x.data(),
+               w.slip_y.data(),
+               w.paper.data(),
+               w.consistent.data(),
+               w.strip_loss.data(),
+               w.strip_dissipation.data(),
+               w.strip_paper.data()};
+    // Block by block, so that the work pass finds the march's output in cache.
+    for (int first = 0; first < ny; first += kStripBlock) {
+        A.first = first;
+        A.last = std::min(ny, first + kStripBlock);
+        march_strips(geo, s.kin, s.pressure, st, isa, A.first, A.last);
+        switch (isa) {
+#if CREEPWORK_X86_KERNELS
+        case KernelIsa::avx512: work_avx512(A); break;
+        case KernelIsa::avx2: work_avx2(A); break;
+#endif
+        default: work_baseline(A); break;
+        }
+    }
+    // The elastic energy carried out of the trailing edge.
+    for (int j = 0; j < ny; ++j) {
+        const double px = st.px[j], py = st.py[j];
+        w.strip_loss[j] += 0.5 * T * (T * s.L1 * px * px + T * s.L2 * py * py) * s.b *
+                           grid.y_width()[j];
+    }
+}
+
+WorkTotals distribute_work(const MarchGeometry& geo, const ContactGrid& grid,
+                           const ModelSetup& setup, double W_macro, WorkState& w, KernelIsa isa)
 {
     WorkTotals t;
-    account_strips(grid, setup, march, w);
-    const Eigen::Index n = w.consistent.size();
     const int ny = grid.ny();
+    for (int j = 0; j < ny; ++j) t.W_micro_paper += w.strip_paper[j];
 
-    for (Eigen::Index k = 0; k < n; ++k) t.W_micro_paper += w.paper[k];
-
-    if (fill_pools(w)) {
-        for (Eigen::Index k = 0; k < n; ++k) {
-            const Eigen::Index j = k % ny;
-            if (w.consistent[k] > 0.0)
-                w.consistent[k] *= w.strip_pool[j] / w.strip_dissipation[j];
+    double total = 0.0;
+    if (fill_pools(ny, w)) {
+        for (int j = 0; j < ny; ++j) {
+            const double d = w.strip_dissipation[j];
+            w.ratio[j] = d > 0.0 ? w.strip_pool[j] / d : 0.0;
+            total += w.strip_pool[j];
         }
     } else {
-        put_losses_on_trailing_elements(grid, w);
+        total = put_losses_on_trailing_elements(grid, geo.stride, w);
+        w.ratio.setOnes();
         t.flags |= kWorkUnresolved;
     }
 
-    double total = 0.0;
-    for (Eigen::Index k = 0; k < n; ++k) total += w.consistent[k];
+    double balance = 0.0;
     if (W_macro > 0.0 && total > 0.0) {
-        t.balance = W_macro / total;
-        for (Eigen::Index k = 0; k < n; ++k) w.consistent[k] *= t.balance;
-        for (Eigen::Index k = 0; k < n; ++k) t.W_consistent += w.consistent[k];
-    } else {
+        t.balance = balance = W_macro / total;
+    } else if (W_macro != 0.0 || total > 0.0) {
         // Nothing to distribute, or a macro power that is not dissipative
-        // (possible only through the three-flexibility defect, or rounding).
-        if (W_macro != 0.0 || total > 0.0) {
-            t.flags |= kWorkNonPositive;
-            t.balance = 0.0;
-        }
-        w.consistent.setZero();
+        // (possible only through the three-flexibility defect, or rounding):
+        // the map is zero.
+        t.flags |= kWorkNonPositive;
+        t.balance = 0.0;
     }
+    const ScaleArgs A{geo.nx,      ny, geo.stride, balance, w.ratio.data(), w.consistent.data(),
+                      w.strip_work.data()};
+    switch (isa) {
+#if CREEPWORK_X86_KERNELS
+    case KernelIsa::avx512: scale_avx512(A); break;
+    case KernelIsa::avx2: scale_avx2(A); break;
+#endif
+    default: scale_baseline(A); break;
+    }
+    for (int j = 0; j < ny; ++j) t.W_consistent += w.strip_work[j];
     lateral_profile(grid, setup, t.W_consistent, w, t);
     return t;
 }

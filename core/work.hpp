@@ -19,6 +19,16 @@
 // between slip points and element centres. The result is non-negative, zero
 // in adhesion, sums to W_macro to rounding, and converges to the model's
 // dissipation density times a grid-independent factor.
+//
+// Computation (march_with_work, then distribute_work once W_macro is known):
+// block by block of kStripBlock strips, the march, then a work pass over the
+// block's (q', f) while they are in cache (micro-slip, paper's work, D_k and
+// the strip losses; it carries nothing from element to element but p', so
+// unlike the march it is not a chain of dependent steps); then one pass
+// scales D_k into the map. Sums run strip by strip along the march, then
+// over the strips in order, so they do not depend on the kernel's vector
+// width. Totals are therefore summed in another order than element by
+// element: they differ from such a sum by rounding only.
 #pragma once
 
 #include <Eigen/Core>
@@ -30,14 +40,16 @@
 namespace creepwork {
 
 struct WorkState {
-    // Per element, march order, rolling frame.
+    // Per element, the kernels' layout [m * stride + j] (MarchGeometry),
+    // rolling frame; per strip, j < stride.
     Eigen::ArrayXd slip_x, slip_y;  // model micro-slip s = W/V [-], zero in adhesion
     Eigen::ArrayXd paper;           // paper's local work [J/m]
-    Eigen::ArrayXd consistent;      // energy-consistent local work [J/m]
+    Eigen::ArrayXd consistent;      // energy-consistent local work [J/m] (D_k until distributed)
     // Per strip.
-    Eigen::ArrayXd strip_dissipation, strip_loss, strip_pool;
+    Eigen::ArrayXd strip_dissipation, strip_loss, strip_pool, strip_paper, strip_work;
     Eigen::ArrayXd profile;         // consistent work per unit width [J/m / m]
-    Eigen::ArrayXd running_px, running_py; // scratch: traction carried along each strip
+    // Per strip, constants of one solve (scratch).
+    Eigen::ArrayXd width, rigid_slip_x, paper_spin_x, neg_area_T, ratio;
 
     void resize(int n_elements, int ny);
 };
@@ -50,8 +62,16 @@ struct WorkTotals {
     double profile_max_diff = 0, profile_rms_diff = 0;
 };
 
-WorkTotals compute_work(const ContactGrid& grid, const ModelSetup& setup, const MarchState& march,
-                        double W_macro, WorkState& work);
+// The march (as march() in fastsim.hpp, same results) and the work of every
+// element. Allocates nothing.
+void march_with_work(const MarchGeometry& geometry, const ContactGrid& grid,
+                     const ModelSetup& setup, MarchState& march, WorkState& work, KernelIsa isa);
+
+// The paper's total and the energy-consistent map, given W_macro of the
+// march just done by march_with_work.
+WorkTotals distribute_work(const MarchGeometry& geometry, const ContactGrid& grid,
+                           const ModelSetup& setup, double W_macro, WorkState& work,
+                           KernelIsa isa);
 
 // Equal-area parabola of a lateral profile over [-b, b]: (3 W / 4b)(1 - y^2/b^2).
 double equal_area_parabola(double W, double b, double y);

@@ -1,0 +1,183 @@
+// The kernels (core/fastsim.hpp): the march and the work pass are compiled
+// for SSE2, AVX2 and AVX-512 and a solver picks one per CPU. Every kernel
+// this CPU runs must give bitwise the same totals, fields, states and
+// profile (issue 2, "results must be bitwise reproducible"); and the march,
+// with its exact adhesion shortcut, must give bitwise what the plain
+// one-element-at-a-time FASTSIM step of Kalker 1982 gives.
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include "core_test_support.hpp"
+#include "error.hpp"
+#include "test_support.h"
+
+namespace cw = creepwork;
+
+namespace {
+
+const cw::KernelIsa kIsas[] = {cw::KernelIsa::baseline, cw::KernelIsa::avx2,
+                               cw::KernelIsa::avx512};
+
+std::vector<cw::GridSpec> grids()
+{
+    return {cwtest::kalker_grid(1, 1),     cwtest::kalker_grid(7, 13),
+            cwtest::kalker_grid(20, 20),   cwtest::kalker_grid(33, 17),
+            cwtest::uniform_grid(20, 20),  cwtest::uniform_grid(37, 23, 1.07),
+            cwtest::uniform_grid(9, 30, 2.5)};
+}
+
+// Partial and full slip, spin, elliptic pressure, both rolling directions,
+// one flexibility, no creepage (no slip anywhere).
+std::vector<cw::ContactInput> inputs()
+{
+    std::vector<cw::ContactInput> v;
+    auto add = [&](double ab, double xi, double eta, double phi) -> cw::ContactInput& {
+        cw::ContactInput in = cwtest::steel_contact(ab);
+        in.xi_x = xi;
+        in.xi_y = eta;
+        in.phi = phi;
+        v.push_back(in);
+        return v.back();
+    };
+    add(1.0, 6e-4, 3e-4, 0.2);
+    add(1.3, 1e-2, 5e-3, 2.0);
+    add(0.2, 1e-3, -4e-4, 3.0).pressure = cw::PressureKind::elliptic;
+    add(5.0, 0.0, 0.0, 2.0).rolling_direction = -1;
+    cw::ContactInput& single = add(1.7, 7e-4, 4e-4, 0.6);
+    single.flexibility = cw::FlexibilitySource::given;
+    single.L1 = single.L2 = single.L3 = 5e-14;
+    add(1.0, 0.0, 0.0, 0.0);
+    return v;
+}
+
+// Everything a solve returns, as raw bytes.
+std::string outputs(cw::Solver& s, const cw::ContactInput& in, cw::SolveMode mode)
+{
+    const cw::SolveTotals t = s.solve(in, mode);
+    std::string bytes(reinterpret_cast<const char*>(&t), sizeof t);
+    const size_t n = static_cast<size_t>(s.grid().nx()) * s.grid().ny();
+    std::vector<double> field(n, -1.0);
+    for (int f = 0; f <= static_cast<int>(cw::Field::work_consistent); ++f) {
+        if (!s.has_work() && cw::Solver::needs_work(static_cast<cw::Field>(f))) continue;
+        s.copy_field(static_cast<cw::Field>(f), field.data());
+        bytes.append(reinterpret_cast<const char*>(field.data()), n * sizeof(double));
+        std::fill(field.begin(), field.end(), 0.5);
+        s.add_field(static_cast<cw::Field>(f), 0.37, field.data());
+        bytes.append(reinterpret_cast<const char*>(field.data()), n * sizeof(double));
+    }
+    std::vector<int> state(n, -1);
+    s.copy_state(state.data());
+    bytes.append(reinterpret_cast<const char*>(state.data()), n * sizeof(int));
+    if (s.has_work()) {
+        const size_t ny = static_cast<size_t>(s.grid().ny());
+        std::vector<double> y(ny), w(ny), p(ny);
+        s.copy_profile(y.data(), w.data(), p.data());
+        for (const auto* v : {&y, &w, &p})
+            bytes.append(reinterpret_cast<const char*>(v->data()), ny * sizeof(double));
+    }
+    return bytes;
+}
+
+void every_kernel_gives_the_same_bits(void**)
+{
+    int compared = 0;
+    for (const cw::GridSpec& g : grids()) {
+        cw::Solver reference(g);
+        reference.set_kernel_isa(cw::KernelIsa::baseline);
+        for (cw::KernelIsa isa : kIsas) {
+            if (!cw::kernel_isa_supported(isa)) {
+                printf("  kernel %s: not supported by this CPU, skipped\n", cw::kernel_isa_name(isa));
+                continue;
+            }
+            cw::Solver s(g);
+            s.set_kernel_isa(isa);
+            assert_true(s.kernel_isa() == isa);
+            for (const cw::ContactInput& in : inputs())
+                for (cw::SolveMode mode : {cw::SolveMode::forces_only, cw::SolveMode::full}) {
+                    const std::string a = outputs(reference, in, mode);
+                    const std::string b = outputs(s, in, mode);
+                    assert_int_equal(a.size(), b.size());
+                    assert_true(std::memcmp(a.data(), b.data(), a.size()) == 0);
+                    ++compared;
+                }
+        }
+    }
+    assert_true(compared > 0);
+}
+
+void best_kernel_is_the_default(void**)
+{
+    const cw::Solver s(cwtest::kalker_grid(4, 4));
+    assert_true(s.kernel_isa() == cw::best_kernel_isa());
+    assert_true(cw::kernel_isa_supported(cw::best_kernel_isa()));
+    printf("  default kernel: %s\n", cw::kernel_isa_name(s.kernel_isa()));
+}
+
+void unsupported_kernel_is_refused(void**)
+{
+    for (cw::KernelIsa isa : kIsas) {
+        if (cw::kernel_isa_supported(isa)) continue;
+        cw::Solver s(cwtest::kalker_grid(4, 4));
+        bool thrown = false;
+        try {
+            s.set_kernel_isa(isa);
+        } catch (const cw::Error& e) {
+            thrown = e.kind() == cw::ErrorKind::invalid_input;
+        }
+        assert_true(thrown);
+    }
+}
+
+// The plain FASTSIM step, one element at a time in march order (Kalker
+// 1982; fastsim.hpp): the kernels vectorise it across strips and skip the
+// square root where no lane can slip, which must change no bit.
+void march_matches_the_plain_step(void**)
+{
+    for (const cw::GridSpec& g : grids())
+        for (const cw::ContactInput& in : inputs()) {
+            cw::Solver s(g);
+            s.solve(in, cw::SolveMode::forces_only);
+            const cw::ContactGrid& grid = s.grid();
+            const cw::ModelSetup setup = cw::make_model_setup(in);
+            const int nx = grid.nx(), ny = grid.ny();
+            const double dT = setup.direction * setup.traction_scale;
+            const auto px = cwtest::field(s, cw::Field::px);
+            const auto st = cwtest::states(s);
+            for (int j = 0; j < ny; ++j) {
+                double p_x = 0.0, p_y = 0.0;
+                for (int m = 0; m < nx; ++m) {
+                    const long k = static_cast<long>(m) * ny + j;
+                    const double h = grid.step()[k], inside = grid.in_contact()[k];
+                    const double bound = grid.pressure_shape(setup.pressure)[k];
+                    const double qx =
+                        inside * (p_x - h * (setup.kin.ux - setup.kin.cx * grid.y_centre()[j]));
+                    const double qy =
+                        inside * (p_y - h * (setup.kin.uy + setup.kin.cy * grid.x_slip()[k]));
+                    const double norm = std::sqrt(qx * qx + qy * qy);
+                    const bool slip = norm > bound;
+                    const double f = slip ? bound / std::fmax(norm, 2.2250738585072014e-308) : 1.0;
+                    p_x = f * qx;
+                    p_y = f * qy;
+                    const int i = setup.direction > 0 ? nx - 1 - m : m;
+                    const size_t c = static_cast<size_t>(i) + static_cast<size_t>(j) * nx;
+                    const double expected = dT * (f * qx);
+                    assert_true(std::memcmp(&px[c], &expected, sizeof expected) == 0);
+                    assert_int_equal(st[c], inside == 0.0 ? 0 : slip ? 2 : 1);
+                }
+            }
+        }
+}
+
+} // namespace
+
+int main()
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(every_kernel_gives_the_same_bits),
+        cmocka_unit_test(best_kernel_is_the_default),
+        cmocka_unit_test(unsupported_kernel_is_refused),
+        cmocka_unit_test(march_matches_the_plain_step),
+    };
+    return cmocka_run_group_tests(tests, nullptr, nullptr);
+}
