@@ -31,6 +31,7 @@ struct cw_accumulator {
     cw::GridSpec grid;
     int nx = 0, ny = 0;
     std::vector<double> paper, consistent, strips;
+    std::vector<double> next_paper, next_consistent; // a step is checked here first
     cw_accumulation totals{};
     std::string last_error;
 };
@@ -199,7 +200,9 @@ cw::GridSpec to_grid(const cw_grid* grid)
                                         " is not CW_GRID_KALKER_STRIPS (0) or CW_GRID_UNIFORM (1)");
     spec.nx = g.nx;
     spec.ny = g.ny;
-    spec.box_scale = g.box_scale;
+    // The strip grid has no box: whatever the caller left there (even NaN)
+    // must not make two equal strip grids compare unequal.
+    spec.box_scale = spec.kind == cw::GridKind::uniform ? g.box_scale : 1.0;
     return spec;
 }
 
@@ -392,7 +395,7 @@ int cw_solver_grid_size(const cw_solver* solver, int* nx, int* ny)
 int cw_solver_solve(cw_solver* solver, const cw_params* params, int mode, cw_result* result)
 {
     if (!solver) return CW_ERR_NULL_POINTER;
-    return guarded(&solver->last_error, [&] {
+    const int status = guarded(&solver->last_error, [&] {
         require(params, "params");
         if (result && (result->struct_size < sizeof(size_t) || result->struct_size > kMaxStructSize))
             fail(CW_ERR_STRUCT_SIZE, "result->struct_size = " +
@@ -404,6 +407,9 @@ int cw_solver_solve(cw_solver* solver, const cw_params* params, int mode, cw_res
         if (result) write_struct(result, to_result(t));
         return CW_OK;
     });
+    // The header's promise: after any failed solve the handle holds no solution.
+    if (status != CW_OK) solver->solver.discard();
+    return status;
 }
 
 int cw_solver_get_result(const cw_solver* solver, cw_result* result)
@@ -484,6 +490,8 @@ int cw_accumulator_create(const cw_solver* solver, cw_accumulator** accumulator)
         try {
             acc->paper.assign(element_count(solver->solver), 0.0);
             acc->consistent.assign(element_count(solver->solver), 0.0);
+            acc->next_paper.assign(element_count(solver->solver), 0.0);
+            acc->next_consistent.assign(element_count(solver->solver), 0.0);
             acc->strips.assign(static_cast<size_t>(acc->ny), 0.0);
         } catch (...) {
             delete acc;
@@ -527,21 +535,37 @@ int cw_accumulator_add(cw_accumulator* accumulator, const cw_solver* solver, dou
             fail(CW_ERR_INVALID_INPUT, "distance = " + std::to_string(distance) +
                                            " must be finite and >= 0 (V*dt)");
         const cw::SolveTotals& t = s.totals();
-        s.add_field(cw::Field::work_paper, distance, accumulator->paper.data());
-        s.add_field(cw::Field::work_consistent, distance, accumulator->consistent.data());
+        // The step goes into copies first (same size: no allocation), so a
+        // step that would overflow leaves the accumulator as it was.
+        accumulator->next_paper = accumulator->paper;
+        accumulator->next_consistent = accumulator->consistent;
+        s.add_field(cw::Field::work_paper, distance, accumulator->next_paper.data());
+        s.add_field(cw::Field::work_consistent, distance, accumulator->next_consistent.data());
+        cw_accumulation a = accumulator->totals;
+        a.distance += distance;
+        a.W_macro += t.W_macro * distance;
+        a.W_micro_paper += t.W_micro_paper * distance;
+        a.W_consistent += t.W_consistent * distance;
+        a.K = a.W_micro_paper != 0.0 ? a.W_macro / a.W_micro_paper : 0.0;
+        bool finite = std::isfinite(a.distance) && std::isfinite(a.W_macro) &&
+                      std::isfinite(a.W_micro_paper) && std::isfinite(a.W_consistent) &&
+                      std::isfinite(a.K);
+        for (size_t k = 0; finite && k < accumulator->next_paper.size(); ++k)
+            finite = std::isfinite(accumulator->next_paper[k]) &&
+                     std::isfinite(accumulator->next_consistent[k]);
+        if (!finite)
+            fail(CW_ERR_NUMERIC, "distance = " + std::to_string(distance) +
+                                     " makes the accumulated work overflow");
+        accumulator->paper.swap(accumulator->next_paper);
+        accumulator->consistent.swap(accumulator->next_consistent);
         const size_t nx = static_cast<size_t>(accumulator->nx);
         for (size_t j = 0; j < accumulator->strips.size(); ++j) {
             double sum = 0.0;
             for (size_t i = 0; i < nx; ++i) sum += accumulator->consistent[i + j * nx];
             accumulator->strips[j] = sum;
         }
-        cw_accumulation& a = accumulator->totals;
-        a.distance += distance;
-        a.W_macro += t.W_macro * distance;
-        a.W_micro_paper += t.W_micro_paper * distance;
-        a.W_consistent += t.W_consistent * distance;
-        a.K = a.W_micro_paper != 0.0 ? a.W_macro / a.W_micro_paper : 0.0;
         a.steps += 1;
+        accumulator->totals = a;
         return CW_OK;
     });
 }
@@ -655,13 +679,7 @@ int cw_batch_solve(cw_batch* batch, size_t count, const cw_params* params, int m
         const int threads = batch->threads;
         for (int t = 0; t < threads; ++t) batch->thread_error_index[t] = count;
         const long n = static_cast<long>(count);
-#pragma omp parallel for schedule(static) num_threads(threads)
-        for (long i = 0; i < n; ++i) {
-#ifdef _OPENMP
-            const int t = omp_get_thread_num();
-#else
-            const int t = 0;
-#endif
+        auto solve_one = [&](long i, int t) {
             const auto* p = reinterpret_cast<const cw_params*>(pbytes + i * pstride);
             auto* r = reinterpret_cast<cw_result*>(rbytes + i * rstride);
             std::string& scratch = batch->thread_scratch[t];
@@ -678,6 +696,20 @@ int cw_batch_solve(cw_batch* batch, size_t count, const cw_params* params, int m
                     batch->thread_errors[t] = "params[" + std::to_string(i) + "]: " + scratch;
                 } catch (...) {
                 }
+            }
+        };
+        if (threads == 1 || n == 1) {
+            // No parallel region: libgomp allocates a new team for every
+            // one-thread region, and solving allocates nothing.
+            for (long i = 0; i < n; ++i) solve_one(i, 0);
+        } else {
+#pragma omp parallel for schedule(static) num_threads(threads)
+            for (long i = 0; i < n; ++i) {
+#ifdef _OPENMP
+                solve_one(i, omp_get_thread_num());
+#else
+                solve_one(i, 0);
+#endif
             }
         }
 
@@ -772,6 +804,11 @@ int cw_fastsim_normalised(double ux, double uy, double fx, double fy, int mx, in
     return guarded_free(message, message_len, [&] {
         require(tx, "tx");
         require(ty, "ty");
+        // Named here: the core's grid speaks of nx, ny.
+        if (mx < 1 || mx > CW_MAX_GRID_CELLS)
+            fail(CW_ERR_GRID_OUT_OF_RANGE, "mx = " + std::to_string(mx) + " is outside 1..1000");
+        if (my < 1 || my > CW_MAX_GRID_CELLS)
+            fail(CW_ERR_GRID_OUT_OF_RANGE, "my = " + std::to_string(my) + " is outside 1..1000");
         const cw::NormalisedForces f = cw::kalker_fastsim_normalised(ux, uy, fx, fy, mx, my, tol);
         if (!std::isfinite(f.tx) || !std::isfinite(f.ty))
             fail(CW_ERR_NUMERIC, "the normalised forces overflowed for these inputs");

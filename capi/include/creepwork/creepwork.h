@@ -115,8 +115,8 @@ CW_API const char* cw_status_string(int status);
 #define CW_FLEX_GIVEN 1         /* L1, L2, L3 as given (legacy codes) */
 
 /* cw_solver_solve mode */
-#define CW_SOLVE_FORCES 0 /* totals, px, py, pz, state: fastest */
-#define CW_SOLVE_FULL 1   /* also micro-slip, moment and work maps, profile */
+#define CW_SOLVE_FORCES 0 /* totals, px, py, pz, mz, state: fastest */
+#define CW_SOLVE_FULL 1   /* also micro-slip, both work maps and the profile */
 
 /* Field identifiers for cw_solver_get_field (one value per element). */
 #define CW_FIELD_X 0               /* element centre x [m] */
@@ -278,21 +278,25 @@ typedef struct cw_accumulation {
     int64_t steps;        /* number of cw_accumulator_add calls that succeeded */
 } cw_accumulation;
 
+/* Zeroes the totals and sets struct_size. Errors: CW_ERR_NULL_POINTER. */
 CW_API int cw_accumulation_init(cw_accumulation* totals);
 
 /* Accumulator on the grid of solver (same nx, ny, kind needed when adding).
  * Errors: CW_ERR_NULL_POINTER, CW_ERR_OUT_OF_MEMORY. */
 CW_API int cw_accumulator_create(const cw_solver* solver, cw_accumulator** accumulator);
 CW_API int cw_accumulator_destroy(cw_accumulator* accumulator); /* NULL: no-op */
+/* Back to zero totals and maps. Errors: CW_ERR_NULL_POINTER. */
 CW_API int cw_accumulator_reset(cw_accumulator* accumulator);
 
 /* Adds the last CW_SOLVE_FULL solve of solver for a step of length
  * distance = V*dt [m] >= 0 (finite). Errors: CW_ERR_NULL_POINTER,
  * CW_ERR_NO_SOLUTION, CW_ERR_NO_WORK, CW_ERR_GRID_MISMATCH,
- * CW_ERR_INVALID_INPUT (distance). */
+ * CW_ERR_INVALID_INPUT (distance), CW_ERR_NUMERIC (a running total would
+ * overflow). On error the accumulator is unchanged. */
 CW_API int cw_accumulator_add(cw_accumulator* accumulator, const cw_solver* solver,
                               double distance);
 
+/* Copies the running totals. Errors: CW_ERR_NULL_POINTER, CW_ERR_STRUCT_SIZE. */
 CW_API int cw_accumulator_get_totals(const cw_accumulator* accumulator,
                                      cw_accumulation* totals);
 
@@ -302,7 +306,8 @@ CW_API int cw_accumulator_get_totals(const cw_accumulator* accumulator,
 CW_API int cw_accumulator_get_field(const cw_accumulator* accumulator, int field,
                                     double* out, size_t out_len);
 
-/* Accumulated energy-consistent work per strip j < ny [J] (sum over i). */
+/* Accumulated energy-consistent work per strip j < ny [J] (sum over i).
+ * Errors: CW_ERR_NULL_POINTER, CW_ERR_BUFFER_TOO_SMALL. */
 CW_API int cw_accumulator_get_strip_work(const cw_accumulator* accumulator, double* out,
                                          size_t len);
 
@@ -354,20 +359,25 @@ CW_API int cw_kalker_flexibilities(double a, double b, double G, double nu,
  * principal relative curvatures [1/m]), load N >= 0 [N], contact modulus
  * E* > 0 [Pa] (E* = G/(1-nu) for identical materials).
  * hertz[4] = a [m], b [m], maximum pressure p0 [Pa], approach [m].
- * Errors: CW_ERR_NULL_POINTER, CW_ERR_INVALID_INPUT. */
+ * Errors: CW_ERR_NULL_POINTER, CW_ERR_INVALID_INPUT, CW_ERR_NUMERIC. */
 CW_API int cw_hertz_solve(double A, double B, double normal_force, double E_star,
                           double hertz[4], char* message, size_t message_len);
 
-/* Kalker's original normalised FASTSIM (1982) on the strip grid with the
- * parabolic bound 1 - x^2 - y^2 on the unit disk:
+/* Kalker's original normalised FASTSIM (1982): a drop-in for its SIM routine.
+ * Unit disk, parabolic bound 1 - x^2 - y^2, rigid slip (ux - y fx, uy + x fy):
  *   ux, uy   normalised creepages pi a^2 b xi/(2 mu N L), pi a^2 b eta/(2 mu N L)
  *   fx, fy   normalised spin terms pi a^2 b^2 phi/(2 mu N L), pi a^3 b phi/(2 mu N L)
- *   mx, my   elements per strip and number of strips (1..CW_MAX_GRID_CELLS)
- *   tol      strip-split tolerance (Kalker's TOL; large = no split)
- * Rigid slip (ux - y fx, uy + x fy). Outputs tx, ty: forces on the RAIL
- * (body 2) divided by mu N, i.e. with the sign of the creepages -- Kalker's
- * 1982 convention, opposite to cw_solver_solve.
- * Errors: CW_ERR_NULL_POINTER, CW_ERR_INVALID_INPUT, CW_ERR_GRID_OUT_OF_RANGE. */
+ *   mx       elements per strip (1..CW_MAX_GRID_CELLS)
+ *   my, tol  Kalker's strip layout: the strips are cut at the y of the spin
+ *            pole (-uy/fy, ux/fx) when it lies in the disk (else at y = 0),
+ *            each side gets ceil(my (1 -+ ys)/2) equal strips, and the strip
+ *            beside the cut is halved until its centre is within tol of it
+ * Outputs tx, ty with the signs of Kalker's published check values (so old
+ * callers get the numbers they always got): tx = rail's x-force / (mu N),
+ * sign of ux; ty = wheel's y-force / (mu N), opposite sign to uy. In
+ * cw_solver_solve's convention: tx = -Fx/(mu N), ty = +Fy/(mu N).
+ * Errors: CW_ERR_NULL_POINTER, CW_ERR_INVALID_INPUT, CW_ERR_GRID_OUT_OF_RANGE,
+ * CW_ERR_NUMERIC. */
 CW_API int cw_fastsim_normalised(double ux, double uy, double fx, double fy, int mx, int my,
                                  double tol, double* tx, double* ty, char* message,
                                  size_t message_len);
