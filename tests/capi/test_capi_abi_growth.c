@@ -1,0 +1,382 @@
+/* ABI growth (header, "Structs"): a program built against an older, smaller
+ * struct keeps working. The library reads and writes min(struct_size,
+ * sizeof) bytes; fields beyond the caller's struct_size take their defaults
+ * on input and are never written on output; batch arrays are strided by
+ * element 0's struct_size. The "old" structs below are the current ones cut
+ * before a field, exactly what an old header would have declared. */
+#include "capi_test.h"
+
+#include <stdlib.h>
+
+/* cw_params before rolling_direction was appended. */
+typedef struct {
+    size_t struct_size;
+    double a, b, normal_force, mu;
+    int flexibility, pressure;
+    double G, nu, L1, L2, L3, xi_x, xi_y, phi;
+} params_v0;
+
+/* cw_result before the semi-axes, flexibilities, coefficients and profile
+ * measures were appended. */
+typedef struct {
+    size_t struct_size;
+    double Fx, Fy, Mz, W_macro, W_micro_paper, K, W_consistent, balance_factor,
+        adhesion_fraction;
+    int n_contact, n_adhesion, n_slip, work_flags;
+} result_v0;
+
+/* Structs of a future, larger header: today's plus fields the library does
+ * not know. */
+typedef struct {
+    cw_params p;
+    double future[3];
+} params_next;
+
+typedef struct {
+    cw_result r;
+    double future[3];
+} result_next;
+
+static cw_solver* make_solver(int kind)
+{
+    return cw_test_solver(kind, 15, 12, 1.0);
+}
+
+static void copy_to_v0(const cw_params* p, params_v0* old)
+{
+    memcpy(old, p, sizeof *old); /* same leading layout */
+    old->struct_size = sizeof *old;
+}
+
+/* The layouts really are prefixes of today's structs. */
+static void old_structs_are_prefixes(void** state)
+{
+    (void)state;
+    assert_int_equal(sizeof(params_v0), offsetof(cw_params, rolling_direction));
+    assert_int_equal(offsetof(params_v0, phi), offsetof(cw_params, phi));
+    assert_int_equal(sizeof(result_v0), offsetof(cw_result, a));
+    assert_int_equal(offsetof(result_v0, work_flags), offsetof(cw_result, work_flags));
+}
+
+/* An old caller's params (heap object of exactly the old size, so reading
+ * past it would be caught by AddressSanitizer): rolling_direction takes its
+ * default +1. A case with spin and rolling -1 shows the difference. */
+static void smaller_params_take_defaults(void** state)
+{
+    (void)state;
+    for (int kind = CW_GRID_KALKER_STRIPS; kind <= CW_GRID_UNIFORM; ++kind) {
+        cw_solver* s = make_solver(kind);
+        cw_params now;
+        cw_test_case(2, &now); /* rolling_direction = -1 */
+        assert_int_equal(now.rolling_direction, -1);
+        cw_params forward = now;
+        forward.rolling_direction = 1;
+
+        params_v0* old = malloc(sizeof *old);
+        assert_non_null(old);
+        copy_to_v0(&now, old);
+        cw_result r_old, r_fwd, r_back;
+        cw_result_init(&r_old);
+        cw_result_init(&r_fwd);
+        cw_result_init(&r_back);
+        assert_int_equal(cw_solver_solve(s, (const cw_params*)old, CW_SOLVE_FULL, &r_old), CW_OK);
+        assert_int_equal(cw_solver_solve(s, &forward, CW_SOLVE_FULL, &r_fwd), CW_OK);
+        assert_int_equal(cw_solver_solve(s, &now, CW_SOLVE_FULL, &r_back), CW_OK);
+        assert_memory_equal(&r_old, &r_fwd, sizeof r_old);
+        assert_false(cw_same_bits(r_old.Mz, r_back.Mz)); /* the default mattered */
+
+        /* The same through a full-size struct whose struct_size says "old":
+         * the -1 beyond struct_size is ignored. */
+        cw_params cut = now;
+        cut.struct_size = offsetof(cw_params, rolling_direction);
+        cw_result r_cut;
+        cw_result_init(&r_cut);
+        assert_int_equal(cw_solver_solve(s, &cut, CW_SOLVE_FULL, &r_cut), CW_OK);
+        assert_memory_equal(&r_cut, &r_fwd, sizeof r_cut);
+
+        /* Cut before the creepages: they default to zero -> no force. */
+        cut.struct_size = offsetof(cw_params, xi_x);
+        assert_int_equal(cw_solver_solve(s, &cut, CW_SOLVE_FULL, &r_cut), CW_OK);
+        assert_true(r_cut.Fx == 0.0 && r_cut.Fy == 0.0 && r_cut.Mz == 0.0);
+
+        /* Only struct_size: every field is cw_params_init's default. */
+        size_t* bare = malloc(sizeof *bare);
+        assert_non_null(bare);
+        *bare = sizeof *bare;
+        cw_params defaults;
+        cw_params_init(&defaults);
+        cw_result r_bare, r_def;
+        cw_result_init(&r_bare);
+        cw_result_init(&r_def);
+        assert_int_equal(cw_solver_solve(s, (const cw_params*)bare, CW_SOLVE_FULL, &r_bare),
+                         CW_OK);
+        assert_int_equal(cw_solver_solve(s, &defaults, CW_SOLVE_FULL, &r_def), CW_OK);
+        assert_memory_equal(&r_bare, &r_def, sizeof r_bare);
+        free(bare);
+        free(old);
+        cw_solver_destroy(s);
+    }
+}
+
+/* A future caller's larger params: the unknown tail is ignored. */
+static void larger_params_are_read_up_to_today(void** state)
+{
+    (void)state;
+    cw_solver* s = make_solver(CW_GRID_UNIFORM);
+    params_next next;
+    memset(&next, CW_POISON, sizeof next);
+    cw_test_case(3, &next.p);
+    next.p.struct_size = sizeof next;
+    cw_params today;
+    cw_test_case(3, &today);
+    cw_result r_next, r_today;
+    cw_result_init(&r_next);
+    cw_result_init(&r_today);
+    assert_int_equal(cw_solver_solve(s, &next.p, CW_SOLVE_FULL, &r_next), CW_OK);
+    assert_int_equal(cw_solver_solve(s, &today, CW_SOLVE_FULL, &r_today), CW_OK);
+    assert_memory_equal(&r_next, &r_today, sizeof r_next);
+    cw_solver_destroy(s);
+}
+
+/* An old caller's result (heap object of exactly the old size): the known
+ * prefix is written, its struct_size kept, and nothing beyond. Through
+ * solve and get_result. */
+static void smaller_result_is_written_up_to_its_size(void** state)
+{
+    (void)state;
+    cw_solver* s = make_solver(CW_GRID_KALKER_STRIPS);
+    cw_params p;
+    cw_test_case(1, &p);
+    cw_result full;
+    cw_result_init(&full);
+    assert_int_equal(cw_solver_solve(s, &p, CW_SOLVE_FULL, &full), CW_OK);
+
+    result_v0* old = malloc(sizeof *old);
+    assert_non_null(old);
+    memset(old, CW_POISON, sizeof *old);
+    old->struct_size = sizeof *old;
+    assert_int_equal(cw_solver_solve(s, &p, CW_SOLVE_FULL, (cw_result*)old), CW_OK);
+    assert_int_equal(old->struct_size, sizeof *old);
+    assert_memory_equal((const char*)old + sizeof(size_t), (const char*)&full + sizeof(size_t),
+                        sizeof *old - sizeof(size_t));
+    memset(old, CW_POISON, sizeof *old);
+    old->struct_size = sizeof *old;
+    assert_int_equal(cw_solver_get_result(s, (cw_result*)old), CW_OK);
+    assert_true(cw_same_bits(old->Fy, full.Fy) && old->n_slip == full.n_slip);
+    free(old);
+
+    /* A full-size struct with a smaller struct_size: the bytes beyond it
+     * keep the caller's poison. */
+    cw_result cut;
+    cw_poison_result(&cut);
+    const cw_result poisoned = cut;
+    cut.struct_size = offsetof(cw_result, K);
+    assert_int_equal(cw_solver_solve(s, &p, CW_SOLVE_FULL, &cut), CW_OK);
+    assert_int_equal(cut.struct_size, offsetof(cw_result, K));
+    assert_true(cw_same_bits(cut.W_micro_paper, full.W_micro_paper));
+    assert_memory_equal((const char*)&cut + offsetof(cw_result, K),
+                        (const char*)&poisoned + offsetof(cw_result, K),
+                        sizeof cut - offsetof(cw_result, K));
+    cw_solver_destroy(s);
+}
+
+/* A future caller's larger result: today's fields written, the tail kept. */
+static void larger_result_keeps_its_tail(void** state)
+{
+    (void)state;
+    cw_solver* s = make_solver(CW_GRID_UNIFORM);
+    cw_params p;
+    cw_test_case(0, &p);
+    cw_result full;
+    cw_result_init(&full);
+    assert_int_equal(cw_solver_solve(s, &p, CW_SOLVE_FULL, &full), CW_OK);
+    result_next next;
+    memset(&next, CW_POISON, sizeof next);
+    next.r.struct_size = sizeof next;
+    const result_next poisoned = next;
+    assert_int_equal(cw_solver_solve(s, &p, CW_SOLVE_FULL, &next.r), CW_OK);
+    assert_int_equal(next.r.struct_size, sizeof next);
+    assert_memory_equal((const char*)&next.r + sizeof(size_t),
+                        (const char*)&full + sizeof(size_t), sizeof full - sizeof(size_t));
+    assert_memory_equal(next.future, poisoned.future, sizeof next.future);
+    cw_solver_destroy(s);
+}
+
+/* Accumulated totals into an older cw_accumulation (without steps): the
+ * known prefix only. */
+static void smaller_accumulation(void** state)
+{
+    (void)state;
+    cw_solver* s = make_solver(CW_GRID_KALKER_STRIPS);
+    cw_accumulator* acc = NULL;
+    assert_int_equal(cw_accumulator_create(s, &acc), CW_OK);
+    cw_params p;
+    cw_test_case(0, &p);
+    assert_int_equal(cw_solver_solve(s, &p, CW_SOLVE_FULL, NULL), CW_OK);
+    assert_int_equal(cw_accumulator_add(acc, s, 0.5), CW_OK);
+    cw_accumulation full, cut;
+    cw_accumulation_init(&full);
+    assert_int_equal(cw_accumulator_get_totals(acc, &full), CW_OK);
+    memset(&cut, CW_POISON, sizeof cut);
+    cut.struct_size = offsetof(cw_accumulation, steps);
+    const cw_accumulation poisoned = cut;
+    assert_int_equal(cw_accumulator_get_totals(acc, &cut), CW_OK);
+    assert_true(cw_same_bits(cut.W_macro, full.W_macro) && cw_same_bits(cut.K, full.K));
+    assert_memory_equal(&cut.steps, &poisoned.steps, sizeof cut.steps);
+    cw_accumulator_destroy(acc);
+    cw_solver_destroy(s);
+}
+
+/* A grid without box_scale: the default S = 1 is used, whatever the bytes
+ * beyond struct_size hold. */
+static void smaller_grid_takes_defaults(void** state)
+{
+    (void)state;
+    cw_grid cut, plain;
+    cw_grid_init(&cut);
+    cut.kind = CW_GRID_UNIFORM;
+    cut.nx = cut.ny = 30;
+    plain = cut;
+    cut.box_scale = 50.0;
+    cut.struct_size = offsetof(cw_grid, box_scale);
+    cw_solver *a = NULL, *b = NULL;
+    assert_int_equal(cw_solver_create(&cut, &a, NULL, 0), CW_OK);
+    assert_int_equal(cw_solver_create(&plain, &b, NULL, 0), CW_OK);
+    cw_params p;
+    cw_test_case(0, &p);
+    cw_result ra, rb;
+    cw_result_init(&ra);
+    cw_result_init(&rb);
+    assert_int_equal(cw_solver_solve(a, &p, CW_SOLVE_FULL, &ra), CW_OK);
+    assert_int_equal(cw_solver_solve(b, &p, CW_SOLVE_FULL, &rb), CW_OK);
+    assert_memory_equal(&ra, &rb, sizeof ra);
+    cw_solver_destroy(a);
+    cw_solver_destroy(b);
+}
+
+/* struct_size 0 (never initialised) is refused everywhere it is read. */
+static void zero_struct_size_is_refused(void** state)
+{
+    (void)state;
+    cw_grid g;
+    cw_grid_init(&g);
+    g.struct_size = 0;
+    cw_solver* s = NULL;
+    char message[128];
+    assert_int_equal(cw_solver_create(&g, &s, message, sizeof message), CW_ERR_STRUCT_SIZE);
+    assert_names(message, "grid->struct_size");
+    s = make_solver(CW_GRID_KALKER_STRIPS);
+    cw_params p;
+    cw_params_init(&p);
+    p.struct_size = 0;
+    cw_result r;
+    cw_result_init(&r);
+    assert_int_equal(cw_solver_solve(s, &p, CW_SOLVE_FULL, &r), CW_ERR_STRUCT_SIZE);
+    assert_names(cw_solver_last_error(s), "params->struct_size");
+    cw_params_init(&p);
+    r.struct_size = 0;
+    assert_int_equal(cw_solver_solve(s, &p, CW_SOLVE_FULL, &r), CW_ERR_STRUCT_SIZE);
+    assert_names(cw_solver_last_error(s), "result->struct_size");
+    assert_int_equal(cw_solver_solve(s, &p, CW_SOLVE_FULL, NULL), CW_OK);
+    assert_int_equal(cw_solver_get_result(s, &r), CW_ERR_STRUCT_SIZE);
+    cw_accumulator* acc = NULL;
+    assert_int_equal(cw_accumulator_create(s, &acc), CW_OK);
+    cw_accumulation t;
+    cw_accumulation_init(&t);
+    t.struct_size = 0;
+    assert_int_equal(cw_accumulator_get_totals(acc, &t), CW_ERR_STRUCT_SIZE);
+    cw_accumulator_destroy(acc);
+    cw_solver_destroy(s);
+}
+
+/* Batch arrays strided by element 0's struct_size: old (smaller) and future
+ * (larger) element types both give the one-by-one results. */
+enum { COUNT = 9 };
+
+static void batch_with_old_and_new_strides(void** state)
+{
+    (void)state;
+    cw_grid g;
+    cw_grid_init(&g);
+    g.nx = 15;
+    g.ny = 12;
+    cw_batch* b = NULL;
+    assert_int_equal(cw_batch_create(&g, 3, &b, NULL, 0), CW_OK);
+    cw_solver* s = make_solver(CW_GRID_KALKER_STRIPS);
+
+    params_v0 old_p[COUNT];
+    result_v0 old_r[COUNT];
+    params_next next_p[COUNT];
+    result_next next_r[COUNT];
+    cw_result expected[COUNT];
+    for (int k = 0; k < COUNT; ++k) {
+        cw_params p;
+        cw_test_case(k, &p);
+        p.rolling_direction = 1; /* what an old caller gets */
+        copy_to_v0(&p, &old_p[k]);
+        memset(&old_r[k], CW_POISON, sizeof old_r[k]);
+        old_r[k].struct_size = sizeof old_r[k];
+        memset(&next_p[k], CW_POISON, sizeof next_p[k]);
+        next_p[k].p = p;
+        next_p[k].p.struct_size = sizeof next_p[k];
+        memset(&next_r[k], CW_POISON, sizeof next_r[k]);
+        next_r[k].r.struct_size = sizeof next_r[k];
+        cw_result_init(&expected[k]);
+        assert_int_equal(cw_solver_solve(s, &p, CW_SOLVE_FULL, &expected[k]), CW_OK);
+    }
+    const result_next poisoned = next_r[0];
+
+    /* Old params, old results. */
+    assert_int_equal(
+        cw_batch_solve(b, COUNT, (const cw_params*)old_p, CW_SOLVE_FULL, (cw_result*)old_r, NULL),
+        CW_OK);
+    for (int k = 0; k < COUNT; ++k) {
+        assert_int_equal(old_r[k].struct_size, sizeof old_r[k]);
+        assert_memory_equal((const char*)&old_r[k] + sizeof(size_t),
+                            (const char*)&expected[k] + sizeof(size_t),
+                            sizeof old_r[k] - sizeof(size_t));
+    }
+    /* Future params, future results: tails untouched. */
+    assert_int_equal(cw_batch_solve(b, COUNT, &next_p[0].p, CW_SOLVE_FULL, &next_r[0].r, NULL),
+                     CW_OK);
+    for (int k = 0; k < COUNT; ++k) {
+        assert_memory_equal((const char*)&next_r[k].r + sizeof(size_t),
+                            (const char*)&expected[k] + sizeof(size_t),
+                            sizeof(cw_result) - sizeof(size_t));
+        assert_memory_equal(next_r[k].future, poisoned.future, sizeof poisoned.future);
+    }
+    /* Mixed: old params into future results, future params into old results. */
+    for (int k = 0; k < COUNT; ++k) {
+        memset(&old_r[k], CW_POISON, sizeof old_r[k]);
+        old_r[k].struct_size = sizeof old_r[k];
+    }
+    assert_int_equal(
+        cw_batch_solve(b, COUNT, &next_p[0].p, CW_SOLVE_FORCES, (cw_result*)old_r, NULL), CW_OK);
+    assert_int_equal(
+        cw_batch_solve(b, COUNT, (const cw_params*)old_p, CW_SOLVE_FORCES, &next_r[0].r, NULL),
+        CW_OK);
+    for (int k = 0; k < COUNT; ++k) {
+        assert_true(cw_same_bits(old_r[k].Fx, expected[k].Fx) &&
+                    cw_same_bits(old_r[k].Mz, expected[k].Mz));
+        assert_true(cw_same_bits(next_r[k].r.Fy, expected[k].Fy) &&
+                    next_r[k].r.n_slip == expected[k].n_slip);
+    }
+    cw_solver_destroy(s);
+    cw_batch_destroy(b);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(old_structs_are_prefixes),
+        cmocka_unit_test(smaller_params_take_defaults),
+        cmocka_unit_test(larger_params_are_read_up_to_today),
+        cmocka_unit_test(smaller_result_is_written_up_to_its_size),
+        cmocka_unit_test(larger_result_keeps_its_tail),
+        cmocka_unit_test(smaller_accumulation),
+        cmocka_unit_test(smaller_grid_takes_defaults),
+        cmocka_unit_test(zero_struct_size_is_refused),
+        cmocka_unit_test(batch_with_old_and_new_strides),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
