@@ -6,6 +6,7 @@
 #include "contact_grid.hpp"
 #include "error.hpp"
 #include "fastsim.hpp"
+#include "model_setup.hpp"
 
 namespace creepwork {
 namespace {
@@ -16,27 +17,72 @@ void require_finite(const char* name, double v)
         throw Error(ErrorKind::invalid_input, std::string(name) + " must be a finite number");
 }
 
-// Strip boundaries: my equal strips; when the longitudinal rigid slip
-// changes sign inside a strip (y0 = ux/fx) and tol asks for it, that strip
-// is cut at y0 so that no strip straddles the sign change.
-Eigen::ArrayXd strip_bounds(double ux, double fx, int my, double tol)
+// Kalker's 1982 strip layout, reconstructed from his published check values
+// (../shared/reference/kalker1982_checks.csv: all five rows to 4 decimals;
+// the rules below were identified by reproducing them, see README "Kalker
+// 1982"):
+//  1. The spin pole (x0, y0) = (-uy/fy, ux/fx) is where the rigid slip
+//     (ux - y fx, uy + x fy) vanishes. If it lies inside the unit disk, the
+//     strips are cut at ys = y0 (the x-slip changes sign there); otherwise
+//     at ys = 0.
+//  2. [-1, ys] and [ys, 1] get ceil(my (1 + ys)/2) and ceil(my (1 - ys)/2)
+//     equal strips (so my odd gives my + 1 strips even without spin).
+//  3. With the pole inside, the strip next to ys on each side is bisected
+//     towards ys while it is wider than 2 tol, i.e. while its centre lies
+//     more than tol from y0 (tol >= 1 never bisects; the cut stays).
+// At most kMaxGridCells strips: the bisections, then the strip counts, are
+// capped so that the grid limits of the C ABI (mx, my <= 1000) always hold.
+constexpr int kMaxBisections = 40; // 2^-40 of a strip: far below any useful tol
+
+int strips_over(double length, int my)
 {
-    Eigen::ArrayXd equal = Eigen::ArrayXd::LinSpaced(my + 1, -1.0, 1.0);
-    if (fx == 0.0) return equal;
-    const double y0 = ux / fx;
-    for (int j = 0; j < my; ++j) {
-        const double lo = equal[j], hi = equal[j + 1];
-        const double width = hi - lo;
-        if (!(y0 > lo && y0 < hi)) continue;
-        if (std::fabs(y0 - 0.5 * (lo + hi)) > tol * width && tol < 1.0) continue;
-        if (tol >= 1.0) break;
-        Eigen::ArrayXd split(my + 2);
-        split.head(j + 1) = equal.head(j + 1);
-        split[j + 1] = y0;
-        split.tail(my - j) = equal.tail(my - j);
-        return split;
+    // The tolerance keeps exact products (my even, ys = 0) from rounding up.
+    const double n = std::ceil(0.5 * my * length - 1e-9);
+    return n < 1.0 ? 1 : static_cast<int>(n);
+}
+
+Eigen::ArrayXd strip_bounds(double ux, double uy, double fx, double fy, int my, double tol)
+{
+    double ys = 0.0;
+    bool pole_inside = false;
+    if (fx != 0.0 && fy != 0.0) {
+        const double x0 = -uy / fy, y0 = ux / fx;
+        if (x0 * x0 + y0 * y0 < 1.0) {
+            ys = y0;
+            pole_inside = true;
+        }
     }
-    return equal;
+    int lower = strips_over(1.0 + ys, my), upper = strips_over(1.0 - ys, my);
+    while (lower + upper > kMaxGridCells) (lower > upper ? lower : upper) -= 1;
+
+    // Bisections next to ys: the new boundaries approach ys geometrically.
+    int cut_lower = 0, cut_upper = 0;
+    if (pole_inside) {
+        double width = (1.0 + ys) / lower;
+        while (width > 2.0 * tol && cut_lower < kMaxBisections) {
+            width *= 0.5;
+            ++cut_lower;
+        }
+        width = (1.0 - ys) / upper;
+        while (width > 2.0 * tol && cut_upper < kMaxBisections) {
+            width *= 0.5;
+            ++cut_upper;
+        }
+        while (lower + upper + cut_lower + cut_upper > kMaxGridCells)
+            (cut_lower > cut_upper ? cut_lower : cut_upper) -= 1;
+    }
+
+    Eigen::ArrayXd b(lower + upper + cut_lower + cut_upper + 1);
+    Eigen::Index k = 0;
+    for (int i = 0; i < lower; ++i) b[k++] = -1.0 + (1.0 + ys) * i / lower;
+    // The last equal lower strip [ys - w, ys] becomes [ys - w, ys - w/2, ...].
+    const double w_lower = (1.0 + ys) / lower;
+    for (int c = 1; c <= cut_lower; ++c) b[k++] = ys - std::ldexp(w_lower, -c);
+    b[k++] = ys;
+    const double w_upper = (1.0 - ys) / upper;
+    for (int c = cut_upper; c >= 1; --c) b[k++] = ys + std::ldexp(w_upper, -c);
+    for (int i = 1; i <= upper; ++i) b[k++] = i == upper ? 1.0 : ys + (1.0 - ys) * i / upper;
+    return b;
 }
 
 } // namespace
@@ -49,7 +95,19 @@ NormalisedForces kalker_fastsim_normalised(double ux, double uy, double fx, doub
     require_finite("fx", fx);
     require_finite("fy", fy);
     require_finite("tol", tol);
-    const ContactGrid grid(mx, strip_bounds(ux, fx, my, tol));
+    // As in make_model_setup: huge creepages (full sliding) are scaled down
+    // together so that |q|^2 in the march cannot overflow to Inf (which
+    // gave zero traction) and ux - fx*y cannot become Inf - Inf.
+    const double largest =
+        std::fmax(std::fmax(std::fabs(ux), std::fabs(uy)), std::fmax(std::fabs(fx), std::fabs(fy)));
+    if (largest > kMaxNormalisedCreepage) {
+        const double scale = kMaxNormalisedCreepage / largest;
+        ux *= scale;
+        uy *= scale;
+        fx *= scale;
+        fy *= scale;
+    }
+    const ContactGrid grid(mx, strip_bounds(ux, uy, fx, fy, my, tol));
     MarchState state;
     state.resize(grid.size(), grid.ny());
     NormalisedKinematics kin;
@@ -66,8 +124,10 @@ NormalisedForces kalker_fastsim_normalised(double ux, double uy, double fx, doub
         tx += area * state.sum_px[j];
         ty += area * state.sum_py[j];
     }
-    const double scale = -2.0 / 3.14159265358979323846;
-    return {scale * tx, scale * ty};
+    // Unit-disk load integral pi/2; signs as Kalker's program printed them
+    // (kalker_normalised.hpp): the march gives the wheel's traction.
+    const double scale = 2.0 / 3.14159265358979323846;
+    return {-scale * tx, scale * ty};
 }
 
 } // namespace creepwork

@@ -1,0 +1,1236 @@
+! module creepwork -- the Fortran 2003 interface of libcreepwork.
+!
+! Creep forces, creep moment and frictional-work distributions of a wheel
+! rolling on a rail by Kalker's simplified theory (FASTSIM, 1982). This module
+! mirrors the C header creepwork/creepwork.h, which is the whole contract:
+!
+!   * private bind(C) interfaces to every function of the C ABI (assumed-size
+!     buffers followed by their c_size_t length, by value);
+!   * the C structs as bind(C) derived types cw_grid, cw_params, cw_result,
+!     cw_accumulation (struct_size first; fill them with cw_grid_init etc.);
+!   * every status code and #define of the header as a named constant,
+!     generated from the header at build time (creepwork_constants.inc);
+!   * public wrapper types that own a C handle: cw_solver_type,
+!     cw_accumulator_type, cw_batch_type. Each has an explicit, idempotent
+!     destroy; the final procedure is only a safety net (gfortran 12 does not
+!     finalize reliably) and copying a live handle is an error.
+!
+! Conventions (as in the header)
+!   Units    consistent, SI recommended: m, N, Pa, 1/m; work in J/m.
+!   Grids    real(c_double) :: f(nx, ny): element (i, j), i along x (the
+!            rolling direction, x increasing), j along y (increasing) -- the
+!            C layout [i + j*nx] seen from Fortran. Arrays are filled in
+!            place; no copies are made.
+!   Forces   on the wheel (body 1), opposite in sign to the creepages.
+!   Errors   every procedure that can fail has optional stat (integer, a
+!            CW_* status) and errmsg (deferred-length character). With stat
+!            absent, an error stops the program (error stop) with the message.
+!            On error nothing is written to the outputs.
+!   Threads  distinct objects may be used concurrently from different
+!            threads; one object by one thread at a time.
+module creepwork
+   use, intrinsic :: iso_c_binding, only: c_int, c_size_t, c_double, c_int64_t, c_char, &
+      c_ptr, c_null_ptr, c_null_char, c_associated, c_f_pointer, c_loc, c_sizeof
+   implicit none
+   private
+
+   include 'creepwork_constants.inc'
+
+   ! ---------------------------------------------------------- C structs
+
+   ! Grid of a solver (cw_grid). Call cw_grid_init first.
+   type, bind(c), public :: cw_grid
+      integer(c_size_t) :: struct_size = 0
+      integer(c_int) :: kind = 0          ! CW_GRID_KALKER_STRIPS or CW_GRID_UNIFORM
+      integer(c_int) :: nx = 0            ! elements along x, 1..CW_MAX_GRID_CELLS
+      integer(c_int) :: ny = 0            ! strips along y, 1..CW_MAX_GRID_CELLS
+      real(c_double) :: box_scale = 0     ! uniform grid: S in [1, CW_MAX_BOX_SCALE]
+   end type cw_grid
+
+   ! Contact parameters (cw_params). Call cw_params_init first: it sets
+   ! struct_size and the defaults (steel, mu = 0.3, a = b = 6 mm, N = 80 kN).
+   type, bind(c), public :: cw_params
+      integer(c_size_t) :: struct_size = 0
+      real(c_double) :: a = 0             ! semi-axis along x (rolling) [m]
+      real(c_double) :: b = 0             ! semi-axis along y (lateral) [m]
+      real(c_double) :: normal_force = 0  ! N [N]
+      real(c_double) :: mu = 0            ! friction coefficient [-]
+      integer(c_int) :: flexibility = 0   ! CW_FLEX_FROM_MATERIAL or CW_FLEX_GIVEN
+      integer(c_int) :: pressure = 0      ! CW_PRESSURE_PARABOLIC or CW_PRESSURE_ELLIPTIC
+      real(c_double) :: G = 0             ! combined shear modulus [Pa]
+      real(c_double) :: nu = 0            ! combined Poisson's ratio [-]
+      real(c_double) :: L1 = 0, L2 = 0, L3 = 0 ! flexibilities [m/Pa] (CW_FLEX_GIVEN)
+      real(c_double) :: xi_x = 0          ! longitudinal creepage [-]
+      real(c_double) :: xi_y = 0          ! lateral creepage [-]
+      real(c_double) :: phi = 0           ! spin creepage [1/m]
+      integer(c_int) :: rolling_direction = 0 ! +1: leading edge at x = +a; -1: at -a
+   end type cw_params
+
+   ! Totals of a solve (cw_result); see the header for each field.
+   type, bind(c), public :: cw_result
+      integer(c_size_t) :: struct_size = 0
+      real(c_double) :: Fx = 0, Fy = 0    ! creep force on the wheel [N]
+      real(c_double) :: Mz = 0            ! creep moment on the wheel [N m]
+      real(c_double) :: W_macro = 0       ! -(Fx xi_x + Fy xi_y + Mz phi) [J/m], paper eq. 34
+      real(c_double) :: W_micro_paper = 0 ! sum of the paper's local work [J/m]
+      real(c_double) :: K = 0             ! W_macro / W_micro_paper, paper eq. 39
+      real(c_double) :: W_consistent = 0  ! sum of the energy-consistent map [J/m]
+      real(c_double) :: balance_factor = 0
+      real(c_double) :: adhesion_fraction = 0
+      integer(c_int) :: n_contact = 0, n_adhesion = 0, n_slip = 0
+      integer(c_int) :: work_flags = 0    ! CW_WORK_* bits
+      real(c_double) :: a = 0, b = 0      ! semi-axes used [m]
+      real(c_double) :: L1 = 0, L2 = 0, L3 = 0 ! flexibilities used [m/Pa]
+      real(c_double) :: C11 = 0, C22 = 0, C23 = 0, C33 = 0
+      real(c_double) :: profile_max_diff = 0
+      real(c_double) :: profile_rms_diff = 0
+   end type cw_result
+
+   ! Running totals of an accumulator (cw_accumulation), paper eqs. 35, 37.
+   type, bind(c), public :: cw_accumulation
+      integer(c_size_t) :: struct_size = 0
+      real(c_double) :: distance = 0      ! sum(V dt) [m]
+      real(c_double) :: W_macro = 0       ! [J], eq. 35
+      real(c_double) :: W_micro_paper = 0 ! [J], eq. 37
+      real(c_double) :: K = 0             ! over the run, eq. 39
+      real(c_double) :: W_consistent = 0  ! [J]
+      integer(c_int64_t) :: steps = 0
+   end type cw_accumulation
+
+   ! ------------------------------------------------------ wrapper types
+
+   ! Owns one cw_solver: create once, solve many times, destroy.
+   type, public :: cw_solver_type
+      private
+      type(c_ptr) :: handle = c_null_ptr
+      integer :: nx = 0, ny = 0
+   contains
+      procedure :: create => solver_create
+      procedure :: destroy => solver_destroy
+      procedure :: is_created => solver_is_created
+      procedure :: grid_size => solver_grid_size
+      procedure :: solve => solver_solve
+      procedure :: get_result => solver_get_result
+      procedure, private :: solver_get_field_2d, solver_get_field_1d
+      generic :: get_field => solver_get_field_2d, solver_get_field_1d
+      procedure, private :: solver_get_state_2d, solver_get_state_1d
+      generic :: get_state => solver_get_state_2d, solver_get_state_1d
+      procedure :: get_profile => solver_get_profile
+      procedure :: last_error => solver_last_error
+      procedure, private :: solver_assign
+      generic :: assignment(=) => solver_assign
+      final :: solver_finalize
+   end type cw_solver_type
+
+   ! Owns one cw_accumulator: running work totals of a simulation loop.
+   type, public :: cw_accumulator_type
+      private
+      type(c_ptr) :: handle = c_null_ptr
+      integer :: nx = 0, ny = 0
+   contains
+      procedure :: create => accumulator_create
+      procedure :: destroy => accumulator_destroy
+      procedure :: is_created => accumulator_is_created
+      procedure :: reset => accumulator_reset
+      procedure :: add => accumulator_add
+      procedure :: get_totals => accumulator_get_totals
+      procedure, private :: accumulator_get_field_2d, accumulator_get_field_1d
+      generic :: get_field => accumulator_get_field_2d, accumulator_get_field_1d
+      procedure :: get_strip_work => accumulator_get_strip_work
+      procedure :: last_error => accumulator_last_error
+      procedure, private :: accumulator_assign
+      generic :: assignment(=) => accumulator_assign
+      final :: accumulator_finalize
+   end type cw_accumulator_type
+
+   ! Owns one cw_batch: many independent contacts on one grid (OpenMP).
+   type, public :: cw_batch_type
+      private
+      type(c_ptr) :: handle = c_null_ptr
+   contains
+      procedure :: create => batch_create
+      procedure :: destroy => batch_destroy
+      procedure :: is_created => batch_is_created
+      procedure :: solve => batch_solve
+      procedure :: last_error => batch_last_error
+      procedure, private :: batch_assign
+      generic :: assignment(=) => batch_assign
+      final :: batch_finalize
+   end type cw_batch_type
+
+   public :: cw_library_version_number, cw_library_abi_version, cw_version_string
+   public :: cw_status_string
+   public :: cw_grid_init, cw_params_init, cw_result_init, cw_accumulation_init
+   public :: cw_kalker_coefficients, cw_kalker_flexibilities, cw_hertz_solve
+   public :: cw_fastsim_normalised
+
+   ! Size of the message buffers handed to the C functions that take one.
+   integer, parameter :: message_capacity = 1024
+
+   ! Status and message of a call, delivered at the end of every public
+   ! procedure by the same two lines:
+   !    if (present(errmsg)) errmsg = error_text(o)
+   !    call deliver(o, stat)
+   ! (errmsg is assigned in the public procedure itself: gfortran 12 passes
+   ! an optional deferred-length dummy on to another optional one wrongly.)
+   type :: outcome
+      integer(c_int) :: status = CW_OK
+      character(len=:), allocatable :: message
+   end type outcome
+
+   ! ------------------------------------------- raw C interfaces (private)
+   ! One interface per function of creepwork.h, named capi_<name> here and
+   ! bound to the C name. tests/fortran checks that the two lists agree.
+   interface
+      function capi_version_number() bind(c, name='cw_version_number') result(v)
+         import :: c_int
+         integer(c_int) :: v
+      end function capi_version_number
+
+      function capi_abi_version() bind(c, name='cw_abi_version') result(v)
+         import :: c_int
+         integer(c_int) :: v
+      end function capi_abi_version
+
+      function capi_version_string() bind(c, name='cw_version_string') result(s)
+         import :: c_ptr
+         type(c_ptr) :: s
+      end function capi_version_string
+
+      function capi_status_string(status) bind(c, name='cw_status_string') result(s)
+         import :: c_int, c_ptr
+         integer(c_int), value :: status
+         type(c_ptr) :: s
+      end function capi_status_string
+
+      function capi_grid_init(grid) bind(c, name='cw_grid_init') result(status)
+         import :: c_int, cw_grid
+         type(cw_grid), intent(inout) :: grid
+         integer(c_int) :: status
+      end function capi_grid_init
+
+      function capi_params_init(params) bind(c, name='cw_params_init') result(status)
+         import :: c_int, cw_params
+         type(cw_params), intent(inout) :: params
+         integer(c_int) :: status
+      end function capi_params_init
+
+      function capi_result_init(result) bind(c, name='cw_result_init') result(status)
+         import :: c_int, cw_result
+         type(cw_result), intent(inout) :: result
+         integer(c_int) :: status
+      end function capi_result_init
+
+      function capi_solver_create(grid, solver, message, message_len) &
+         bind(c, name='cw_solver_create') result(status)
+         import :: c_int, c_ptr, c_char, c_size_t, cw_grid
+         type(cw_grid), intent(in) :: grid
+         type(c_ptr), intent(out) :: solver
+         character(kind=c_char), intent(inout) :: message(*)
+         integer(c_size_t), value :: message_len
+         integer(c_int) :: status
+      end function capi_solver_create
+
+      function capi_solver_destroy(solver) bind(c, name='cw_solver_destroy') result(status)
+         import :: c_int, c_ptr
+         type(c_ptr), value :: solver
+         integer(c_int) :: status
+      end function capi_solver_destroy
+
+      function capi_solver_grid_size(solver, nx, ny) bind(c, name='cw_solver_grid_size') &
+         result(status)
+         import :: c_int, c_ptr
+         type(c_ptr), value :: solver
+         integer(c_int), intent(out) :: nx, ny
+         integer(c_int) :: status
+      end function capi_solver_grid_size
+
+      function capi_solver_solve(solver, params, mode, result) bind(c, name='cw_solver_solve') &
+         result(status)
+         import :: c_int, c_ptr, cw_params
+         type(c_ptr), value :: solver
+         type(cw_params), intent(in) :: params
+         integer(c_int), value :: mode
+         type(c_ptr), value :: result ! cw_result*, may be NULL
+         integer(c_int) :: status
+      end function capi_solver_solve
+
+      function capi_solver_get_result(solver, result) bind(c, name='cw_solver_get_result') &
+         result(status)
+         import :: c_int, c_ptr, cw_result
+         type(c_ptr), value :: solver
+         type(cw_result), intent(inout) :: result
+         integer(c_int) :: status
+      end function capi_solver_get_result
+
+      function capi_solver_get_field(solver, field, out, out_len) &
+         bind(c, name='cw_solver_get_field') result(status)
+         import :: c_int, c_ptr, c_double, c_size_t
+         type(c_ptr), value :: solver
+         integer(c_int), value :: field
+         real(c_double), intent(inout) :: out(*)
+         integer(c_size_t), value :: out_len
+         integer(c_int) :: status
+      end function capi_solver_get_field
+
+      function capi_solver_get_state(solver, out, out_len) bind(c, name='cw_solver_get_state') &
+         result(status)
+         import :: c_int, c_ptr, c_size_t
+         type(c_ptr), value :: solver
+         integer(c_int), intent(inout) :: out(*)
+         integer(c_size_t), value :: out_len
+         integer(c_int) :: status
+      end function capi_solver_get_state
+
+      function capi_solver_get_profile(solver, y, w, parabola, len) &
+         bind(c, name='cw_solver_get_profile') result(status)
+         import :: c_int, c_ptr, c_size_t
+         type(c_ptr), value :: solver
+         type(c_ptr), value :: y, w, parabola ! double*, each may be NULL
+         integer(c_size_t), value :: len
+         integer(c_int) :: status
+      end function capi_solver_get_profile
+
+      function capi_solver_last_error(solver) bind(c, name='cw_solver_last_error') result(s)
+         import :: c_ptr
+         type(c_ptr), value :: solver
+         type(c_ptr) :: s
+      end function capi_solver_last_error
+
+      function capi_accumulation_init(totals) bind(c, name='cw_accumulation_init') &
+         result(status)
+         import :: c_int, cw_accumulation
+         type(cw_accumulation), intent(inout) :: totals
+         integer(c_int) :: status
+      end function capi_accumulation_init
+
+      function capi_accumulator_create(solver, accumulator) &
+         bind(c, name='cw_accumulator_create') result(status)
+         import :: c_int, c_ptr
+         type(c_ptr), value :: solver
+         type(c_ptr), intent(out) :: accumulator
+         integer(c_int) :: status
+      end function capi_accumulator_create
+
+      function capi_accumulator_destroy(accumulator) bind(c, name='cw_accumulator_destroy') &
+         result(status)
+         import :: c_int, c_ptr
+         type(c_ptr), value :: accumulator
+         integer(c_int) :: status
+      end function capi_accumulator_destroy
+
+      function capi_accumulator_reset(accumulator) bind(c, name='cw_accumulator_reset') &
+         result(status)
+         import :: c_int, c_ptr
+         type(c_ptr), value :: accumulator
+         integer(c_int) :: status
+      end function capi_accumulator_reset
+
+      function capi_accumulator_add(accumulator, solver, distance) &
+         bind(c, name='cw_accumulator_add') result(status)
+         import :: c_int, c_ptr, c_double
+         type(c_ptr), value :: accumulator, solver
+         real(c_double), value :: distance
+         integer(c_int) :: status
+      end function capi_accumulator_add
+
+      function capi_accumulator_get_totals(accumulator, totals) &
+         bind(c, name='cw_accumulator_get_totals') result(status)
+         import :: c_int, c_ptr, cw_accumulation
+         type(c_ptr), value :: accumulator
+         type(cw_accumulation), intent(inout) :: totals
+         integer(c_int) :: status
+      end function capi_accumulator_get_totals
+
+      function capi_accumulator_get_field(accumulator, field, out, out_len) &
+         bind(c, name='cw_accumulator_get_field') result(status)
+         import :: c_int, c_ptr, c_double, c_size_t
+         type(c_ptr), value :: accumulator
+         integer(c_int), value :: field
+         real(c_double), intent(inout) :: out(*)
+         integer(c_size_t), value :: out_len
+         integer(c_int) :: status
+      end function capi_accumulator_get_field
+
+      function capi_accumulator_get_strip_work(accumulator, out, len) &
+         bind(c, name='cw_accumulator_get_strip_work') result(status)
+         import :: c_int, c_ptr, c_double, c_size_t
+         type(c_ptr), value :: accumulator
+         real(c_double), intent(inout) :: out(*)
+         integer(c_size_t), value :: len
+         integer(c_int) :: status
+      end function capi_accumulator_get_strip_work
+
+      function capi_accumulator_last_error(accumulator) &
+         bind(c, name='cw_accumulator_last_error') result(s)
+         import :: c_ptr
+         type(c_ptr), value :: accumulator
+         type(c_ptr) :: s
+      end function capi_accumulator_last_error
+
+      function capi_batch_create(grid, threads, batch, message, message_len) &
+         bind(c, name='cw_batch_create') result(status)
+         import :: c_int, c_ptr, c_char, c_size_t, cw_grid
+         type(cw_grid), intent(in) :: grid
+         integer(c_int), value :: threads
+         type(c_ptr), intent(out) :: batch
+         character(kind=c_char), intent(inout) :: message(*)
+         integer(c_size_t), value :: message_len
+         integer(c_int) :: status
+      end function capi_batch_create
+
+      function capi_batch_destroy(batch) bind(c, name='cw_batch_destroy') result(status)
+         import :: c_int, c_ptr
+         type(c_ptr), value :: batch
+         integer(c_int) :: status
+      end function capi_batch_destroy
+
+      function capi_batch_solve(batch, count, params, mode, results, statuses) &
+         bind(c, name='cw_batch_solve') result(status)
+         import :: c_int, c_ptr, c_size_t, cw_params, cw_result
+         type(c_ptr), value :: batch
+         integer(c_size_t), value :: count
+         type(cw_params), intent(in) :: params(*)
+         integer(c_int), value :: mode
+         type(cw_result), intent(inout) :: results(*)
+         type(c_ptr), value :: statuses ! int*, may be NULL
+         integer(c_int) :: status
+      end function capi_batch_solve
+
+      function capi_batch_last_error(batch) bind(c, name='cw_batch_last_error') result(s)
+         import :: c_ptr
+         type(c_ptr), value :: batch
+         type(c_ptr) :: s
+      end function capi_batch_last_error
+
+      function capi_kalker_coefficients(a_over_b, nu, coefficients, message, message_len) &
+         bind(c, name='cw_kalker_coefficients') result(status)
+         import :: c_int, c_double, c_char, c_size_t
+         real(c_double), value :: a_over_b, nu
+         real(c_double), intent(inout) :: coefficients(*)
+         character(kind=c_char), intent(inout) :: message(*)
+         integer(c_size_t), value :: message_len
+         integer(c_int) :: status
+      end function capi_kalker_coefficients
+
+      function capi_kalker_flexibilities(a, b, G, nu, flexibilities, message, message_len) &
+         bind(c, name='cw_kalker_flexibilities') result(status)
+         import :: c_int, c_double, c_char, c_size_t
+         real(c_double), value :: a, b, G, nu
+         real(c_double), intent(inout) :: flexibilities(*)
+         character(kind=c_char), intent(inout) :: message(*)
+         integer(c_size_t), value :: message_len
+         integer(c_int) :: status
+      end function capi_kalker_flexibilities
+
+      function capi_hertz_solve(A, B, normal_force, E_star, hertz, message, message_len) &
+         bind(c, name='cw_hertz_solve') result(status)
+         import :: c_int, c_double, c_char, c_size_t
+         real(c_double), value :: A, B, normal_force, E_star
+         real(c_double), intent(inout) :: hertz(*)
+         character(kind=c_char), intent(inout) :: message(*)
+         integer(c_size_t), value :: message_len
+         integer(c_int) :: status
+      end function capi_hertz_solve
+
+      function capi_fastsim_normalised(ux, uy, fx, fy, mx, my, tol, tx, ty, message, &
+                                       message_len) bind(c, name='cw_fastsim_normalised') &
+         result(status)
+         import :: c_int, c_double, c_char, c_size_t
+         real(c_double), value :: ux, uy, fx, fy
+         integer(c_int), value :: mx, my
+         real(c_double), value :: tol
+         real(c_double), intent(inout) :: tx, ty
+         character(kind=c_char), intent(inout) :: message(*)
+         integer(c_size_t), value :: message_len
+         integer(c_int) :: status
+      end function capi_fastsim_normalised
+
+      ! From the C library: length of a NUL-terminated string.
+      pure function c_strlen(s) bind(c, name='strlen') result(n)
+         import :: c_ptr, c_size_t
+         type(c_ptr), value :: s
+         integer(c_size_t) :: n
+      end function c_strlen
+   end interface
+
+contains
+
+   ! ============================================================ helpers
+
+   ! Copy of a NUL-terminated C string ('' for NULL).
+   function f_string(p) result(s)
+      type(c_ptr), intent(in) :: p
+      character(len=:), allocatable :: s
+      character(kind=c_char), pointer :: chars(:)
+      integer :: n, i
+      if (.not. c_associated(p)) then
+         s = ''
+         return
+      end if
+      n = int(c_strlen(p))
+      call c_f_pointer(p, chars, [n])
+      allocate (character(len=n) :: s)
+      do i = 1, n
+         s(i:i) = chars(i)
+      end do
+   end function f_string
+
+   ! The text of a message buffer filled by C, up to its NUL.
+   function buffer_string(buffer) result(s)
+      character(kind=c_char), intent(in) :: buffer(:)
+      character(len=:), allocatable :: s
+      integer :: n, i
+      n = 0
+      do while (n < size(buffer))
+         if (buffer(n + 1) == c_null_char) exit
+         n = n + 1
+      end do
+      allocate (character(len=n) :: s)
+      do i = 1, n
+         s(i:i) = buffer(i)
+      end do
+   end function buffer_string
+
+   ! Outcome of a status with "<static message>: <detail>" (or the static
+   ! message alone); success carries no message.
+   function make_outcome(status, detail) result(o)
+      integer(c_int), intent(in) :: status
+      character(len=*), intent(in) :: detail
+      type(outcome) :: o
+      o%status = status
+      if (status == CW_OK) then
+         o%message = ''
+      else
+         o%message = f_string(capi_status_string(status))
+         if (len(detail) > 0) o%message = o%message//': '//detail
+      end if
+   end function make_outcome
+
+   ! A call on an object that was never created.
+   function not_created(what) result(o)
+      character(len=*), intent(in) :: what
+      type(outcome) :: o
+      o = make_outcome(CW_ERR_NULL_POINTER, 'the '//what//' has not been created (call create first)')
+   end function not_created
+
+   ! '' on success, else the message.
+   function error_text(o) result(s)
+      type(outcome), intent(in) :: o
+      character(len=:), allocatable :: s
+      s = o%message
+   end function error_text
+
+   ! The status to stat when present; otherwise an error stops the program
+   ! with the message (success does nothing).
+   subroutine deliver(o, stat)
+      type(outcome), intent(in) :: o
+      integer, intent(out), optional :: stat
+      if (present(stat)) stat = int(o%status)
+      if (o%status /= CW_OK .and. .not. present(stat)) then
+         error stop 'creepwork: '//o%message
+      end if
+   end subroutine deliver
+
+   ! Applies the optional grid settings of the create procedures.
+   subroutine make_grid(g, grid, nx, ny, kind, box_scale)
+      type(cw_grid), intent(out) :: g
+      type(cw_grid), intent(in), optional :: grid
+      integer, intent(in), optional :: nx, ny, kind
+      real(c_double), intent(in), optional :: box_scale
+      integer(c_int) :: status
+      if (present(grid)) then
+         g = grid
+      else
+         status = capi_grid_init(g)
+      end if
+      if (present(nx)) g%nx = int(nx, c_int)
+      if (present(ny)) g%ny = int(ny, c_int)
+      if (present(kind)) g%kind = int(kind, c_int)
+      if (present(box_scale)) g%box_scale = box_scale
+   end subroutine make_grid
+
+   ! Decimal text of an integer. List-directed, so that no format string
+   ! is parsed: libgfortran copies formats with strndup, which
+   ! AddressSanitizer's strict_string_checks reports as an overflow.
+   function integer_text(n) result(s)
+      integer, intent(in) :: n
+      character(len=:), allocatable :: s
+      character(len=32) :: buffer
+      write (buffer, *) n
+      s = trim(adjustl(buffer))
+   end function integer_text
+
+   ! A caller's (nx, ny) map must match the grid.
+   function map_shape(n1, n2, nx, ny) result(o)
+      integer, intent(in) :: n1, n2, nx, ny
+      type(outcome) :: o
+      character(len=:), allocatable :: text
+      if (n1 == nx .and. n2 == ny) then
+         o = make_outcome(CW_OK, '')
+         return
+      end if
+      text = 'out has shape ('//integer_text(n1)//', '//integer_text(n2)// &
+             ') but the grid is ('//integer_text(nx)//', '//integer_text(ny)//')'
+      if (n1*n2 < nx*ny) then
+         o = make_outcome(CW_ERR_BUFFER_TOO_SMALL, text)
+      else
+         o = make_outcome(CW_ERR_INVALID_INPUT, text)
+      end if
+   end function map_shape
+
+   ! ======================================================== free functions
+
+   ! Run-time version of the loaded library: compare with CW_VERSION_NUMBER.
+   function cw_library_version_number() result(v)
+      integer :: v
+      v = int(capi_version_number())
+   end function cw_library_version_number
+
+   ! Run-time ABI version of the loaded library: compare with CW_ABI_VERSION.
+   function cw_library_abi_version() result(v)
+      integer :: v
+      v = int(capi_abi_version())
+   end function cw_library_abi_version
+
+   ! "1.0.0"
+   function cw_version_string() result(s)
+      character(len=:), allocatable :: s
+      s = f_string(capi_version_string())
+   end function cw_version_string
+
+   ! Static message of a status code ("unknown status code" if not a CW_*).
+   function cw_status_string(status) result(s)
+      integer, intent(in) :: status
+      character(len=:), allocatable :: s
+      s = f_string(capi_status_string(int(status, c_int)))
+   end function cw_status_string
+
+   ! Defaults and struct_size (default grid: Kalker strips, 20 x 20).
+   subroutine cw_grid_init(grid)
+      type(cw_grid), intent(out) :: grid
+      integer(c_int) :: status
+      status = capi_grid_init(grid)
+   end subroutine cw_grid_init
+
+   ! Defaults and struct_size: steel (G = 82e9 Pa, nu = 0.28), mu = 0.3,
+   ! a = b = 6e-3 m, N = 80e3 N, zero creepage, parabolic pressure, +x.
+   subroutine cw_params_init(params)
+      type(cw_params), intent(out) :: params
+      integer(c_int) :: status
+      status = capi_params_init(params)
+   end subroutine cw_params_init
+
+   ! Zeroes and sets struct_size.
+   subroutine cw_result_init(result)
+      type(cw_result), intent(out) :: result
+      integer(c_int) :: status
+      status = capi_result_init(result)
+   end subroutine cw_result_init
+
+   ! Zeroes and sets struct_size.
+   subroutine cw_accumulation_init(totals)
+      type(cw_accumulation), intent(out) :: totals
+      integer(c_int) :: status
+      status = capi_accumulation_init(totals)
+   end subroutine cw_accumulation_init
+
+   ! Kalker's coefficients C11, C22, C23, C33 (Kalker 1990, Table E.3).
+   subroutine cw_kalker_coefficients(a_over_b, nu, coefficients, stat, errmsg)
+      real(c_double), intent(in) :: a_over_b, nu
+      real(c_double), intent(inout) :: coefficients(4)
+      integer, intent(out), optional :: stat
+      character(len=:), allocatable, intent(out), optional :: errmsg
+      character(kind=c_char) :: buffer(message_capacity)
+      type(outcome) :: o
+      buffer(1) = c_null_char
+      o = make_outcome(capi_kalker_coefficients(a_over_b, nu, coefficients, buffer, &
+                                                size(buffer, kind=c_size_t)), buffer_string(buffer))
+      if (present(errmsg)) errmsg = error_text(o)
+      call deliver(o, stat)
+   end subroutine cw_kalker_coefficients
+
+   ! Flexibilities L1, L2, L3 [m/Pa] of the simplified theory.
+   subroutine cw_kalker_flexibilities(a, b, G, nu, flexibilities, stat, errmsg)
+      real(c_double), intent(in) :: a, b, G, nu
+      real(c_double), intent(inout) :: flexibilities(3)
+      integer, intent(out), optional :: stat
+      character(len=:), allocatable, intent(out), optional :: errmsg
+      character(kind=c_char) :: buffer(message_capacity)
+      type(outcome) :: o
+      buffer(1) = c_null_char
+      o = make_outcome(capi_kalker_flexibilities(a, b, G, nu, flexibilities, buffer, &
+                                                 size(buffer, kind=c_size_t)), buffer_string(buffer))
+      if (present(errmsg)) errmsg = error_text(o)
+      call deliver(o, stat)
+   end subroutine cw_kalker_flexibilities
+
+   ! Hertz contact: hertz = a [m], b [m], p0 [Pa], approach [m].
+   subroutine cw_hertz_solve(A, B, normal_force, E_star, hertz, stat, errmsg)
+      real(c_double), intent(in) :: A, B, normal_force, E_star
+      real(c_double), intent(inout) :: hertz(4)
+      integer, intent(out), optional :: stat
+      character(len=:), allocatable, intent(out), optional :: errmsg
+      character(kind=c_char) :: buffer(message_capacity)
+      type(outcome) :: o
+      buffer(1) = c_null_char
+      o = make_outcome(capi_hertz_solve(A, B, normal_force, E_star, hertz, buffer, &
+                                        size(buffer, kind=c_size_t)), buffer_string(buffer))
+      if (present(errmsg)) errmsg = error_text(o)
+      call deliver(o, stat)
+   end subroutine cw_hertz_solve
+
+   ! Kalker's original normalised FASTSIM (1982): tx, ty are the forces on
+   ! the rail divided by mu N (the sign of the creepages). See the header.
+   subroutine cw_fastsim_normalised(ux, uy, fx, fy, mx, my, tol, tx, ty, stat, errmsg)
+      real(c_double), intent(in) :: ux, uy, fx, fy
+      integer, intent(in) :: mx, my
+      real(c_double), intent(in) :: tol
+      real(c_double), intent(inout) :: tx, ty
+      integer, intent(out), optional :: stat
+      character(len=:), allocatable, intent(out), optional :: errmsg
+      character(kind=c_char) :: buffer(message_capacity)
+      type(outcome) :: o
+      buffer(1) = c_null_char
+      o = make_outcome(capi_fastsim_normalised(ux, uy, fx, fy, int(mx, c_int), int(my, c_int), &
+                                               tol, tx, ty, buffer, size(buffer, kind=c_size_t)), &
+                       buffer_string(buffer))
+      if (present(errmsg)) errmsg = error_text(o)
+      call deliver(o, stat)
+   end subroutine cw_fastsim_normalised
+
+   ! ================================================================ solver
+
+   ! Creates the solver (destroying a previous one): from grid if given
+   ! (after cw_grid_init), else the defaults; nx, ny, kind, box_scale
+   ! override. All memory is allocated here, none in solve.
+   subroutine solver_create(self, grid, nx, ny, kind, box_scale, stat, errmsg)
+      class(cw_solver_type), intent(inout) :: self
+      type(cw_grid), intent(in), optional :: grid
+      integer, intent(in), optional :: nx, ny, kind
+      real(c_double), intent(in), optional :: box_scale
+      integer, intent(out), optional :: stat
+      character(len=:), allocatable, intent(out), optional :: errmsg
+      type(cw_grid) :: g
+      character(kind=c_char) :: buffer(message_capacity)
+      integer(c_int) :: status, gnx, gny
+      type(outcome) :: o
+      call self%destroy()
+      call make_grid(g, grid, nx, ny, kind, box_scale)
+      buffer(1) = c_null_char
+      status = capi_solver_create(g, self%handle, buffer, size(buffer, kind=c_size_t))
+      if (status == CW_OK) then
+         status = capi_solver_grid_size(self%handle, gnx, gny)
+         self%nx = int(gnx)
+         self%ny = int(gny)
+      end if
+      o = make_outcome(status, buffer_string(buffer))
+      if (present(errmsg)) errmsg = error_text(o)
+      call deliver(o, stat)
+   end subroutine solver_create
+
+   ! Frees the C solver; does nothing when there is none (idempotent).
+   subroutine solver_destroy(self)
+      class(cw_solver_type), intent(inout) :: self
+      integer(c_int) :: status
+      if (c_associated(self%handle)) status = capi_solver_destroy(self%handle)
+      self%handle = c_null_ptr
+      self%nx = 0
+      self%ny = 0
+   end subroutine solver_destroy
+
+   logical function solver_is_created(self)
+      class(cw_solver_type), intent(in) :: self
+      solver_is_created = c_associated(self%handle)
+   end function solver_is_created
+
+   ! Grid dimensions (0, 0 before create).
+   subroutine solver_grid_size(self, nx, ny)
+      class(cw_solver_type), intent(in) :: self
+      integer, intent(out) :: nx, ny
+      nx = self%nx
+      ny = self%ny
+   end subroutine solver_grid_size
+
+   ! Outcome of a call on the solver, with the handle's detailed message.
+   function solver_outcome(self, status) result(o)
+      class(cw_solver_type), intent(in) :: self
+      integer(c_int), intent(in) :: status
+      type(outcome) :: o
+      if (status == CW_OK) then
+         o = make_outcome(status, '')
+      else
+         o = make_outcome(status, f_string(capi_solver_last_error(self%handle)))
+      end if
+   end function solver_outcome
+
+   ! Solves one steady-rolling contact; mode CW_SOLVE_FULL (default) or
+   ! CW_SOLVE_FORCES. result (optional) receives the totals; an
+   ! uninitialised result (struct_size 0) is initialised first.
+   subroutine solver_solve(self, params, mode, result, stat, errmsg)
+      class(cw_solver_type), intent(inout) :: self
+      type(cw_params), intent(in) :: params
+      integer, intent(in), optional :: mode
+      type(cw_result), intent(inout), optional, target :: result
+      integer, intent(out), optional :: stat
+      character(len=:), allocatable, intent(out), optional :: errmsg
+      integer(c_int) :: m
+      type(c_ptr) :: r
+      type(outcome) :: o
+      if (.not. c_associated(self%handle)) then
+         o = not_created('solver')
+      else
+         m = CW_SOLVE_FULL
+         if (present(mode)) m = int(mode, c_int)
+         r = c_null_ptr
+         if (present(result)) then
+            if (result%struct_size == 0) call cw_result_init(result)
+            r = c_loc(result)
+         end if
+         o = solver_outcome(self, capi_solver_solve(self%handle, params, m, r))
+      end if
+      if (present(errmsg)) errmsg = error_text(o)
+      call deliver(o, stat)
+   end subroutine solver_solve
+
+   ! Totals of the last successful solve.
+   subroutine solver_get_result(self, result, stat, errmsg)
+      class(cw_solver_type), intent(in) :: self
+      type(cw_result), intent(inout) :: result
+      integer, intent(out), optional :: stat
+      character(len=:), allocatable, intent(out), optional :: errmsg
+      type(outcome) :: o
+      if (.not. c_associated(self%handle)) then
+         o = not_created('solver')
+      else
+         if (result%struct_size == 0) call cw_result_init(result)
+         o = solver_outcome(self, capi_solver_get_result(self%handle, result))
+      end if
+      if (present(errmsg)) errmsg = error_text(o)
+      call deliver(o, stat)
+   end subroutine solver_get_result
+
+   ! One field (CW_FIELD_*) of the last solve into out(nx, ny), in place.
+   subroutine solver_get_field_2d(self, field, out, stat, errmsg)
+      class(cw_solver_type), intent(in) :: self
+      integer, intent(in) :: field
+      real(c_double), intent(inout), contiguous :: out(:, :)
+      integer, intent(out), optional :: stat
+      character(len=:), allocatable, intent(out), optional :: errmsg
+      type(outcome) :: o
+      if (.not. c_associated(self%handle)) then
+         o = not_created('solver')
+      else
+         o = map_shape(size(out, 1), size(out, 2), self%nx, self%ny)
+         if (o%status == CW_OK) &
+            o = solver_outcome(self, capi_solver_get_field(self%handle, int(field, c_int), out, &
+                                                           size(out, kind=c_size_t)))
+      end if
+      if (present(errmsg)) errmsg = error_text(o)
+      call deliver(o, stat)
+   end subroutine solver_get_field_2d
+
+   ! The same into a vector out(nx*ny or longer), element (i, j) at i + (j-1)*nx.
+   subroutine solver_get_field_1d(self, field, out, stat, errmsg)
+      class(cw_solver_type), intent(in) :: self
+      integer, intent(in) :: field
+      real(c_double), intent(inout), contiguous :: out(:)
+      integer, intent(out), optional :: stat
+      character(len=:), allocatable, intent(out), optional :: errmsg
+      type(outcome) :: o
+      if (.not. c_associated(self%handle)) then
+         o = not_created('solver')
+      else
+         o = solver_outcome(self, capi_solver_get_field(self%handle, int(field, c_int), out, &
+                                                        size(out, kind=c_size_t)))
+      end if
+      if (present(errmsg)) errmsg = error_text(o)
+      call deliver(o, stat)
+   end subroutine solver_get_field_1d
+
+   ! Element states (CW_STATE_*) into out(nx, ny).
+   subroutine solver_get_state_2d(self, out, stat, errmsg)
+      class(cw_solver_type), intent(in) :: self
+      integer(c_int), intent(inout), contiguous :: out(:, :)
+      integer, intent(out), optional :: stat
+      character(len=:), allocatable, intent(out), optional :: errmsg
+      type(outcome) :: o
+      if (.not. c_associated(self%handle)) then
+         o = not_created('solver')
+      else
+         o = map_shape(size(out, 1), size(out, 2), self%nx, self%ny)
+         if (o%status == CW_OK) &
+            o = solver_outcome(self, capi_solver_get_state(self%handle, out, size(out, kind=c_size_t)))
+      end if
+      if (present(errmsg)) errmsg = error_text(o)
+      call deliver(o, stat)
+   end subroutine solver_get_state_2d
+
+   subroutine solver_get_state_1d(self, out, stat, errmsg)
+      class(cw_solver_type), intent(in) :: self
+      integer(c_int), intent(inout), contiguous :: out(:)
+      integer, intent(out), optional :: stat
+      character(len=:), allocatable, intent(out), optional :: errmsg
+      type(outcome) :: o
+      if (.not. c_associated(self%handle)) then
+         o = not_created('solver')
+      else
+         o = solver_outcome(self, capi_solver_get_state(self%handle, out, size(out, kind=c_size_t)))
+      end if
+      if (present(errmsg)) errmsg = error_text(o)
+      call deliver(o, stat)
+   end subroutine solver_get_state_1d
+
+   ! Lateral work profile per strip j = 1..ny (needs a CW_SOLVE_FULL solve):
+   ! strip centre y [m], work per unit width w [J/m per m] and the
+   ! equal-area parabola; each optional, each at least ny long.
+   subroutine solver_get_profile(self, y, w, parabola, stat, errmsg)
+      class(cw_solver_type), intent(in) :: self
+      real(c_double), intent(inout), contiguous, target, optional :: y(:), w(:), parabola(:)
+      integer, intent(out), optional :: stat
+      character(len=:), allocatable, intent(out), optional :: errmsg
+      type(c_ptr) :: py, pw, pp
+      integer(c_size_t) :: n
+      type(outcome) :: o
+      if (.not. c_associated(self%handle)) then
+         o = not_created('solver')
+      else
+         n = int(self%ny, c_size_t)
+         py = c_null_ptr
+         pw = c_null_ptr
+         pp = c_null_ptr
+         if (present(y)) then
+            py = c_loc(y)
+            n = min(n, size(y, kind=c_size_t))
+         end if
+         if (present(w)) then
+            pw = c_loc(w)
+            n = min(n, size(w, kind=c_size_t))
+         end if
+         if (present(parabola)) then
+            pp = c_loc(parabola)
+            n = min(n, size(parabola, kind=c_size_t))
+         end if
+         o = solver_outcome(self, capi_solver_get_profile(self%handle, py, pw, pp, n))
+      end if
+      if (present(errmsg)) errmsg = error_text(o)
+      call deliver(o, stat)
+   end subroutine solver_get_profile
+
+   ! Detailed message of the last error on this solver ('' after success).
+   function solver_last_error(self) result(s)
+      class(cw_solver_type), intent(in) :: self
+      character(len=:), allocatable :: s
+      if (c_associated(self%handle)) then
+         s = f_string(capi_solver_last_error(self%handle))
+      else
+         s = 'the solver has not been created'
+      end if
+   end function solver_last_error
+
+   ! A solver owns a C handle: copying a live one would free it twice.
+   subroutine solver_assign(lhs, rhs)
+      class(cw_solver_type), intent(inout) :: lhs
+      class(cw_solver_type), intent(in) :: rhs
+      if (c_associated(rhs%handle)) &
+         error stop 'creepwork: a cw_solver_type cannot be copied (pass it by reference)'
+      call lhs%destroy()
+   end subroutine solver_assign
+
+   subroutine solver_finalize(self)
+      type(cw_solver_type), intent(inout) :: self
+      call self%destroy()
+   end subroutine solver_finalize
+
+   ! =========================================================== accumulator
+
+   ! Creates an accumulator on the grid of solver (destroying a previous one).
+   subroutine accumulator_create(self, solver, stat, errmsg)
+      class(cw_accumulator_type), intent(inout) :: self
+      class(cw_solver_type), intent(in) :: solver
+      integer, intent(out), optional :: stat
+      character(len=:), allocatable, intent(out), optional :: errmsg
+      type(outcome) :: o
+      call self%destroy()
+      if (.not. c_associated(solver%handle)) then
+         o = not_created('solver')
+      else
+         o = make_outcome(capi_accumulator_create(solver%handle, self%handle), '')
+         if (o%status == CW_OK) then
+            self%nx = solver%nx
+            self%ny = solver%ny
+         end if
+      end if
+      if (present(errmsg)) errmsg = error_text(o)
+      call deliver(o, stat)
+   end subroutine accumulator_create
+
+   subroutine accumulator_destroy(self)
+      class(cw_accumulator_type), intent(inout) :: self
+      integer(c_int) :: status
+      if (c_associated(self%handle)) status = capi_accumulator_destroy(self%handle)
+      self%handle = c_null_ptr
+      self%nx = 0
+      self%ny = 0
+   end subroutine accumulator_destroy
+
+   logical function accumulator_is_created(self)
+      class(cw_accumulator_type), intent(in) :: self
+      accumulator_is_created = c_associated(self%handle)
+   end function accumulator_is_created
+
+   function accumulator_outcome(self, status) result(o)
+      class(cw_accumulator_type), intent(in) :: self
+      integer(c_int), intent(in) :: status
+      type(outcome) :: o
+      if (status == CW_OK) then
+         o = make_outcome(status, '')
+      else
+         o = make_outcome(status, f_string(capi_accumulator_last_error(self%handle)))
+      end if
+   end function accumulator_outcome
+
+   ! Back to zero totals.
+   subroutine accumulator_reset(self, stat, errmsg)
+      class(cw_accumulator_type), intent(inout) :: self
+      integer, intent(out), optional :: stat
+      character(len=:), allocatable, intent(out), optional :: errmsg
+      type(outcome) :: o
+      if (.not. c_associated(self%handle)) then
+         o = not_created('accumulator')
+      else
+         o = accumulator_outcome(self, capi_accumulator_reset(self%handle))
+      end if
+      if (present(errmsg)) errmsg = error_text(o)
+      call deliver(o, stat)
+   end subroutine accumulator_reset
+
+   ! Adds the last CW_SOLVE_FULL solve of solver for a step of length
+   ! distance = V*dt [m] (paper eqs. 35 and 37).
+   subroutine accumulator_add(self, solver, distance, stat, errmsg)
+      class(cw_accumulator_type), intent(inout) :: self
+      class(cw_solver_type), intent(in) :: solver
+      real(c_double), intent(in) :: distance
+      integer, intent(out), optional :: stat
+      character(len=:), allocatable, intent(out), optional :: errmsg
+      type(outcome) :: o
+      if (.not. c_associated(self%handle)) then
+         o = not_created('accumulator')
+      else if (.not. c_associated(solver%handle)) then
+         o = not_created('solver')
+      else
+         o = accumulator_outcome(self, capi_accumulator_add(self%handle, solver%handle, distance))
+      end if
+      if (present(errmsg)) errmsg = error_text(o)
+      call deliver(o, stat)
+   end subroutine accumulator_add
+
+   ! Running totals; an uninitialised totals (struct_size 0) is initialised first.
+   subroutine accumulator_get_totals(self, totals, stat, errmsg)
+      class(cw_accumulator_type), intent(in) :: self
+      type(cw_accumulation), intent(inout) :: totals
+      integer, intent(out), optional :: stat
+      character(len=:), allocatable, intent(out), optional :: errmsg
+      type(outcome) :: o
+      if (.not. c_associated(self%handle)) then
+         o = not_created('accumulator')
+      else
+         if (totals%struct_size == 0) call cw_accumulation_init(totals)
+         o = accumulator_outcome(self, capi_accumulator_get_totals(self%handle, totals))
+      end if
+      if (present(errmsg)) errmsg = error_text(o)
+      call deliver(o, stat)
+   end subroutine accumulator_get_totals
+
+   ! Accumulated work map [J] (CW_FIELD_WORK_PAPER or CW_FIELD_WORK_CONSISTENT)
+   ! into out(nx, ny).
+   subroutine accumulator_get_field_2d(self, field, out, stat, errmsg)
+      class(cw_accumulator_type), intent(in) :: self
+      integer, intent(in) :: field
+      real(c_double), intent(inout), contiguous :: out(:, :)
+      integer, intent(out), optional :: stat
+      character(len=:), allocatable, intent(out), optional :: errmsg
+      type(outcome) :: o
+      if (.not. c_associated(self%handle)) then
+         o = not_created('accumulator')
+      else
+         o = map_shape(size(out, 1), size(out, 2), self%nx, self%ny)
+         if (o%status == CW_OK) &
+            o = accumulator_outcome(self, capi_accumulator_get_field(self%handle, int(field, c_int), &
+                                                                     out, size(out, kind=c_size_t)))
+      end if
+      if (present(errmsg)) errmsg = error_text(o)
+      call deliver(o, stat)
+   end subroutine accumulator_get_field_2d
+
+   subroutine accumulator_get_field_1d(self, field, out, stat, errmsg)
+      class(cw_accumulator_type), intent(in) :: self
+      integer, intent(in) :: field
+      real(c_double), intent(inout), contiguous :: out(:)
+      integer, intent(out), optional :: stat
+      character(len=:), allocatable, intent(out), optional :: errmsg
+      type(outcome) :: o
+      if (.not. c_associated(self%handle)) then
+         o = not_created('accumulator')
+      else
+         o = accumulator_outcome(self, capi_accumulator_get_field(self%handle, int(field, c_int), &
+                                                                  out, size(out, kind=c_size_t)))
+      end if
+      if (present(errmsg)) errmsg = error_text(o)
+      call deliver(o, stat)
+   end subroutine accumulator_get_field_1d
+
+   ! Accumulated energy-consistent work per strip j = 1..ny [J].
+   subroutine accumulator_get_strip_work(self, out, stat, errmsg)
+      class(cw_accumulator_type), intent(in) :: self
+      real(c_double), intent(inout), contiguous :: out(:)
+      integer, intent(out), optional :: stat
+      character(len=:), allocatable, intent(out), optional :: errmsg
+      type(outcome) :: o
+      if (.not. c_associated(self%handle)) then
+         o = not_created('accumulator')
+      else
+         o = accumulator_outcome(self, capi_accumulator_get_strip_work(self%handle, out, &
+                                                                       size(out, kind=c_size_t)))
+      end if
+      if (present(errmsg)) errmsg = error_text(o)
+      call deliver(o, stat)
+   end subroutine accumulator_get_strip_work
+
+   function accumulator_last_error(self) result(s)
+      class(cw_accumulator_type), intent(in) :: self
+      character(len=:), allocatable :: s
+      if (c_associated(self%handle)) then
+         s = f_string(capi_accumulator_last_error(self%handle))
+      else
+         s = 'the accumulator has not been created'
+      end if
+   end function accumulator_last_error
+
+   subroutine accumulator_assign(lhs, rhs)
+      class(cw_accumulator_type), intent(inout) :: lhs
+      class(cw_accumulator_type), intent(in) :: rhs
+      if (c_associated(rhs%handle)) &
+         error stop 'creepwork: a cw_accumulator_type cannot be copied (pass it by reference)'
+      call lhs%destroy()
+   end subroutine accumulator_assign
+
+   subroutine accumulator_finalize(self)
+      type(cw_accumulator_type), intent(inout) :: self
+      call self%destroy()
+   end subroutine accumulator_finalize
+
+   ! ================================================================= batch
+
+   ! Creates a batch (destroying a previous one) on a grid as in
+   ! cw_solver_type%create; threads <= 0 (default): all available cores.
+   subroutine batch_create(self, grid, nx, ny, kind, box_scale, threads, stat, errmsg)
+      class(cw_batch_type), intent(inout) :: self
+      type(cw_grid), intent(in), optional :: grid
+      integer, intent(in), optional :: nx, ny, kind
+      real(c_double), intent(in), optional :: box_scale
+      integer, intent(in), optional :: threads
+      integer, intent(out), optional :: stat
+      character(len=:), allocatable, intent(out), optional :: errmsg
+      type(cw_grid) :: g
+      character(kind=c_char) :: buffer(message_capacity)
+      integer(c_int) :: t
+      type(outcome) :: o
+      call self%destroy()
+      call make_grid(g, grid, nx, ny, kind, box_scale)
+      t = 0
+      if (present(threads)) t = int(threads, c_int)
+      buffer(1) = c_null_char
+      o = make_outcome(capi_batch_create(g, t, self%handle, buffer, size(buffer, kind=c_size_t)), &
+                       buffer_string(buffer))
+      if (present(errmsg)) errmsg = error_text(o)
+      call deliver(o, stat)
+   end subroutine batch_create
+
+   subroutine batch_destroy(self)
+      class(cw_batch_type), intent(inout) :: self
+      integer(c_int) :: status
+      if (c_associated(self%handle)) status = capi_batch_destroy(self%handle)
+      self%handle = c_null_ptr
+   end subroutine batch_destroy
+
+   logical function batch_is_created(self)
+      class(cw_batch_type), intent(in) :: self
+      batch_is_created = c_associated(self%handle)
+   end function batch_is_created
+
+   ! Buffer of n elements where count are needed.
+   function too_short(name, n, count) result(o)
+      character(len=*), intent(in) :: name
+      integer, intent(in) :: n, count
+      type(outcome) :: o
+      o = make_outcome(CW_ERR_BUFFER_TOO_SMALL, name//' holds '//integer_text(n)//' but '// &
+                       integer_text(count)//' are needed')
+   end function too_short
+
+   ! Solves size(params) independent contacts into results(1:size(params))
+   ! (results bitwise equal to one-by-one solves). statuses (optional)
+   ! receives each contact's status. Uninitialised results are initialised.
+   subroutine batch_solve(self, params, mode, results, statuses, stat, errmsg)
+      class(cw_batch_type), intent(inout) :: self
+      type(cw_params), intent(in), contiguous :: params(:)
+      integer, intent(in) :: mode
+      type(cw_result), intent(inout), contiguous :: results(:)
+      integer(c_int), intent(inout), contiguous, target, optional :: statuses(:)
+      integer, intent(out), optional :: stat
+      character(len=:), allocatable, intent(out), optional :: errmsg
+      type(c_ptr) :: ps
+      type(outcome) :: o
+      integer :: i
+      if (.not. c_associated(self%handle)) then
+         o = not_created('batch')
+      else if (size(results) < size(params)) then
+         o = too_short('results', size(results), size(params))
+      else
+         o = make_outcome(CW_OK, '')
+         ps = c_null_ptr
+         if (present(statuses)) then
+            if (size(statuses) < size(params)) then
+               o = too_short('statuses', size(statuses), size(params))
+            else
+               ps = c_loc(statuses)
+            end if
+         end if
+         if (o%status == CW_OK) then
+            do i = 1, size(params)
+               if (results(i)%struct_size == 0) call cw_result_init(results(i))
+            end do
+            o%status = capi_batch_solve(self%handle, size(params, kind=c_size_t), params, &
+                                        int(mode, c_int), results, ps)
+            if (o%status /= CW_OK) &
+               o = make_outcome(o%status, f_string(capi_batch_last_error(self%handle)))
+         end if
+      end if
+      if (present(errmsg)) errmsg = error_text(o)
+      call deliver(o, stat)
+   end subroutine batch_solve
+
+   function batch_last_error(self) result(s)
+      class(cw_batch_type), intent(in) :: self
+      character(len=:), allocatable :: s
+      if (c_associated(self%handle)) then
+         s = f_string(capi_batch_last_error(self%handle))
+      else
+         s = 'the batch has not been created'
+      end if
+   end function batch_last_error
+
+   subroutine batch_assign(lhs, rhs)
+      class(cw_batch_type), intent(inout) :: lhs
+      class(cw_batch_type), intent(in) :: rhs
+      if (c_associated(rhs%handle)) &
+         error stop 'creepwork: a cw_batch_type cannot be copied (pass it by reference)'
+      call lhs%destroy()
+   end subroutine batch_assign
+
+   subroutine batch_finalize(self)
+      type(cw_batch_type), intent(inout) :: self
+      call self%destroy()
+   end subroutine batch_finalize
+
+end module creepwork

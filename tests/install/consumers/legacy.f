@@ -1,0 +1,11 @@
+C     A FORTRAN 77 caller of the legacy layer outside the creepwork tree:
+C     no module, no -I, only -L<prefix>/lib -lcreepwork_fortran -lcreepwork.
+C     Kalker's 1982 check row 4 (kalker1982_checks.csv): TX = 0.5684.
+      PROGRAM LEGACY
+      DOUBLE PRECISION TX, TY
+      INTEGER IERR
+      CALL CWFSIM(1.0D0, -2.0D0, 2.0D0, 4.0D0, 5, 5, 3.0D0, TX, TY,
+     &            IERR)
+      WRITE (*, '(A, F7.4, A, F7.4)') 'CWFSIM: TX =', TX, ' TY =', TY
+      IF (IERR .NE. 0 .OR. ABS(TX - 0.5684D0) .GT. 0.5D-4) STOP 1
+      END
