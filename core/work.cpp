@@ -123,29 +123,44 @@ CREEPWORK_TARGET_AVX512 void work_avx512(const WorkArgs& A) { work_body<8>(A); }
 #endif
 
 // The map from D_k: c_k = (D_k ratio_j) balance, and each strip's sum.
+// When balance = W_macro/total is not a normal number (inputs far beyond the
+// creepage cap), it is applied as (D_k ratio_j / total) W_macro instead,
+// which cannot underflow as a whole.
 struct ScaleArgs {
     int nx, ny, stride;
-    double balance;
+    bool divide;
+    double balance, total, W_macro;
     const double* ratio;
     double *consistent, *strip_work;
 };
 
-template <int W>
-CREEPWORK_INLINE void scale_body(const ScaleArgs& A)
+template <int W, bool kDivide>
+CREEPWORK_INLINE void scale_strips(const ScaleArgs& A)
 {
     using V = simd::Vec<W>;
     const V balance = simd::broadcast<W>(A.balance);
+    const V total = simd::broadcast<W>(A.total), macro = simd::broadcast<W>(A.W_macro);
     for (int j0 = 0; j0 < A.ny; j0 += W) {
         const V ratio = simd::load<W>(A.ratio + j0);
         V sum = simd::broadcast<W>(0.0);
         for (int m = 0; m < A.nx; ++m) {
             double* c = A.consistent + static_cast<long>(m) * A.stride + j0;
-            const V v = simd::load<W>(c) * ratio * balance;
+            const V v = kDivide ? simd::load<W>(c) * ratio / total * macro
+                                : simd::load<W>(c) * ratio * balance;
             simd::store<W>(c, v);
             sum += v;
         }
         simd::store<W>(A.strip_work + j0, sum);
     }
+}
+
+template <int W>
+CREEPWORK_INLINE void scale_body(const ScaleArgs& A)
+{
+    if (A.divide)
+        scale_strips<W, true>(A);
+    else
+        scale_strips<W, false>(A);
 }
 
 __attribute__((noinline)) void scale_baseline(const ScaleArgs& A) { scale_body<2>(A); }
@@ -345,8 +360,11 @@ WorkTotals distribute_work(const MarchGeometry& geo, const ContactGrid& grid,
         t.flags |= kWorkNonPositive;
         t.balance = 0.0;
     }
-    const ScaleArgs A{geo.nx,      ny, geo.stride, balance, w.ratio.data(), w.consistent.data(),
-                      w.strip_work.data()};
+    const bool divide = balance > 0.0 ? balance < 2.2250738585072014e-308  // DBL_MIN
+                                      : W_macro > 0.0 && total > 0.0;
+    const ScaleArgs A{geo.nx,  ny,      geo.stride,     divide,
+                      balance, total,   W_macro,        w.ratio.data(),
+                      w.consistent.data(), w.strip_work.data()};
     switch (isa) {
 #if CREEPWORK_X86_KERNELS
     case KernelIsa::avx512: scale_avx512(A); break;
