@@ -624,6 +624,9 @@ int cw_batch_create(const cw_grid* grid, int threads, cw_batch** batch, char* me
         require(batch, "batch");
         *batch = nullptr;
         const cw::GridSpec spec = to_grid(grid);
+        if (threads > CW_MAX_BATCH_THREADS)
+            fail(CW_ERR_INVALID_INPUT, "threads = " + std::to_string(threads) +
+                                           " exceeds CW_MAX_BATCH_THREADS (256)");
         auto b = new cw_batch;
         try {
             b->grid = spec;

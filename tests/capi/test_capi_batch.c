@@ -149,6 +149,13 @@ static void create_errors(void** state)
         assert_null(b);
         assert_names(message, bad[k].names);
     }
+    /* More threads than CW_MAX_BATCH_THREADS (each would own a solver). */
+    make_grid(&g, CW_GRID_UNIFORM);
+    b = (cw_batch*)&g;
+    assert_int_equal(cw_batch_create(&g, CW_MAX_BATCH_THREADS + 1, &b, message, sizeof message),
+                     CW_ERR_INVALID_INPUT);
+    assert_null(b);
+    assert_names(message, "threads");
     /* CW_ERR_OUT_OF_MEMORY: test_capi_errors (needs an address-space limit). */
 }
 

@@ -97,6 +97,7 @@ CW_API const char* cw_status_string(int status);
 
 #define CW_MAX_GRID_CELLS 1000  /* nx, ny in 1..1000 */
 #define CW_MAX_BOX_SCALE 100.0  /* uniform grid box scale S in [1, 100] */
+#define CW_MAX_BATCH_THREADS 256 /* cw_batch_create */
 #define CW_MIN_ASPECT 1e-3      /* a/b in [1e-3, 1e3]: Kalker's table + asymptotes */
 #define CW_MAX_ASPECT 1e3
 
@@ -224,7 +225,8 @@ CW_API int cw_solver_destroy(cw_solver* solver);
 CW_API int cw_solver_grid_size(const cw_solver* solver, int* nx, int* ny);
 
 /* Solves one steady-rolling contact. mode: CW_SOLVE_FORCES or CW_SOLVE_FULL.
- * result may be NULL (read fields afterwards). Allocates nothing, prints
+ * result may be NULL (read fields afterwards). Allocates nothing on success
+ * (an error may allocate its message), prints
  * nothing. Errors: CW_ERR_NULL_POINTER, CW_ERR_STRUCT_SIZE,
  * CW_ERR_UNKNOWN_OPTION, CW_ERR_INVALID_INPUT, CW_ERR_NUMERIC. After an
  * error the handle holds no solution (fields give CW_ERR_NO_SOLUTION). */
@@ -320,8 +322,9 @@ CW_API const char* cw_accumulator_last_error(const cw_accumulator* accumulator);
  * one-by-one cw_solver_solve calls, whatever the number of threads. */
 typedef struct cw_batch cw_batch;
 
-/* threads <= 0: use all available cores. All memory is allocated here.
- * Errors: as cw_solver_create. */
+/* threads <= 0: use all available cores; at most CW_MAX_BATCH_THREADS (each
+ * thread owns a solver of the grid's size). All memory is allocated here.
+ * Errors: as cw_solver_create, and CW_ERR_INVALID_INPUT (threads). */
 CW_API int cw_batch_create(const cw_grid* grid, int threads, cw_batch** batch, char* message,
                            size_t message_len);
 CW_API int cw_batch_destroy(cw_batch* batch); /* NULL: no-op */
