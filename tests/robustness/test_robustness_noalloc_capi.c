@@ -1,0 +1,166 @@
+/* No heap allocation inside a successful solve once the solver exists, nor
+ * in reading its results: cw_solver_solve (both modes), cw_solver_get_result,
+ * _get_field, _get_state, _get_profile, cw_accumulator_add and its getters,
+ * and cw_batch_solve after its first call (the OpenMP runtime builds its
+ * thread pool on first use). Counted by interposing malloc (count_malloc.h),
+ * which also sees libstdc++'s operator new and Eigen's aligned_malloc. */
+#include "robustness_support.h"
+
+#include "count_malloc.h"
+
+static cw_params contact(int k)
+{
+    cw_params p;
+    cw_params_init(&p);
+    switch (k) {
+    case 0: break;                                   /* zero creepage */
+    case 1: p.xi_x = 1e-3; p.phi = 2.0; break;       /* partial slip */
+    case 2: p.xi_y = -1.0; break;                    /* full slip */
+    case 3: p.xi_x = 1e100; p.phi = -1e90; break;    /* scaled huge creepage */
+    case 4: p.normal_force = 0.0; p.xi_x = 1e-3; break;
+    case 5: p.mu = 0.0; p.xi_y = 1e-3; break;
+    case 6: p.flexibility = CW_FLEX_GIVEN; p.L1 = p.L2 = p.L3 = 1e-11; p.phi = 5.0; break;
+    case 7: p.rolling_direction = -1; p.pressure = CW_PRESSURE_ELLIPTIC; p.xi_x = 2e-3; break;
+    case 8: p.a = 1e-3; p.b = 1.0; p.xi_x = 1e-12; break;
+    default: p.a = 1.0; p.b = 1e-3; p.phi = 100.0; break;
+    }
+    return p;
+}
+enum { kContacts = 10 };
+
+static void test_counter_sees_library_allocations(void** state)
+{
+    (void)state;
+    cw_grid g;
+    cw_grid_init(&g);
+    cw_solver* s = NULL;
+    cw_count_start();
+    const int st = cw_solver_create(&g, &s, NULL, 0);
+    const long at_create = cw_count_stop();
+    assert_status(st, CW_OK);
+    assert_true(at_create > 0); /* create allocates: the counter sees it */
+
+    cw_params p;
+    cw_params_init(&p);
+    p.a = NAN;
+    cw_count_start();
+    const int bad = cw_solver_solve(s, &p, CW_SOLVE_FULL, NULL);
+    const long at_error = cw_count_stop();
+    assert_status(bad, CW_ERR_INVALID_INPUT);
+    assert_true(at_error > 0); /* the error path builds a message: seen too */
+    cw_solver_destroy(s);
+}
+
+static void test_solve_and_export_allocate_nothing(void** state)
+{
+    (void)state;
+    for (int kind = CW_GRID_KALKER_STRIPS; kind <= CW_GRID_UNIFORM; ++kind) {
+        const int nx = 33, ny = 21;
+        const size_t n = (size_t)nx * ny;
+        cw_solver* s = rob_solver(kind, nx, ny, 1.3);
+        double* buf = (double*)malloc(n * sizeof *buf);
+        int* ibuf = (int*)malloc(n * sizeof *ibuf);
+        double profile[3 * 21];
+        cw_result r;
+        cw_result_init(&r);
+        long allocations = 0;
+        int failures = 0;
+        for (int k = 0; k < kContacts; ++k) {
+            const cw_params p = contact(k);
+            cw_count_start(); /* the first solve on a new handle included */
+            for (int mode = CW_SOLVE_FORCES; mode <= CW_SOLVE_FULL; ++mode) {
+                failures += cw_solver_solve(s, &p, mode, &r) != CW_OK;
+                failures += cw_solver_get_result(s, &r) != CW_OK;
+                for (int f = CW_FIELD_X; f <= CW_FIELD_WORK_CONSISTENT; ++f) {
+                    const int needs_full = f == CW_FIELD_SX || f == CW_FIELD_SY ||
+                                           f == CW_FIELD_WORK_PAPER ||
+                                           f == CW_FIELD_WORK_CONSISTENT;
+                    if (mode == CW_SOLVE_FULL || !needs_full) /* errors may allocate */
+                        failures += cw_solver_get_field(s, f, buf, n) != CW_OK;
+                }
+                failures += cw_solver_get_state(s, ibuf, n) != CW_OK;
+            }
+            failures += cw_solver_get_profile(s, profile, profile + ny, profile + 2 * ny, ny) !=
+                        CW_OK;
+            allocations += cw_count_stop();
+        }
+        assert_int_equal(failures, 0);
+        assert_int_equal(allocations, 0);
+        free(buf);
+        free(ibuf);
+        cw_solver_destroy(s);
+    }
+}
+
+static void test_accumulator_allocates_nothing(void** state)
+{
+    (void)state;
+    const int nx = 16, ny = 12;
+    const size_t n = (size_t)nx * ny;
+    cw_solver* s = rob_solver(CW_GRID_UNIFORM, nx, ny, 1.0);
+    cw_accumulator* acc = NULL;
+    assert_status(cw_accumulator_create(s, &acc), CW_OK);
+    double buf[16 * 12];
+    cw_accumulation totals;
+    cw_accumulation_init(&totals);
+    int failures = 0;
+    cw_count_start();
+    for (int k = 0; k < kContacts; ++k) {
+        const cw_params p = contact(k);
+        failures += cw_solver_solve(s, &p, CW_SOLVE_FULL, NULL) != CW_OK;
+        failures += cw_accumulator_add(acc, s, 0.01 * (k + 1)) != CW_OK;
+        failures += cw_accumulator_get_totals(acc, &totals) != CW_OK;
+        failures += cw_accumulator_get_field(acc, CW_FIELD_WORK_PAPER, buf, n) != CW_OK;
+        failures += cw_accumulator_get_field(acc, CW_FIELD_WORK_CONSISTENT, buf, n) != CW_OK;
+        failures += cw_accumulator_get_strip_work(acc, buf, (size_t)ny) != CW_OK;
+    }
+    failures += cw_accumulator_reset(acc) != CW_OK;
+    const long allocations = cw_count_stop();
+    assert_int_equal(failures, 0);
+    assert_int_equal(allocations, 0);
+    cw_accumulator_destroy(acc);
+    cw_solver_destroy(s);
+}
+
+static void test_batch_allocates_nothing_after_first_call(void** state)
+{
+    (void)state;
+    cw_grid g;
+    cw_grid_init(&g);
+    g.nx = 25;
+    g.ny = 19;
+    cw_params p[kContacts];
+    cw_result r[kContacts];
+    int statuses[kContacts];
+    for (int k = 0; k < kContacts; ++k) {
+        p[k] = contact(k);
+        cw_result_init(&r[k]);
+    }
+    const int threads[] = {1, 2, 4};
+    for (int t = 0; t < 3; ++t) {
+        cw_batch* b = NULL;
+        assert_status(cw_batch_create(&g, threads[t], &b, NULL, 0), CW_OK);
+        assert_status(cw_batch_solve(b, kContacts, p, CW_SOLVE_FULL, r, statuses), CW_OK);
+        int failures = 0;
+        cw_count_start();
+        for (int repeat = 0; repeat < 5; ++repeat)
+            for (int mode = CW_SOLVE_FORCES; mode <= CW_SOLVE_FULL; ++mode)
+                failures += cw_batch_solve(b, kContacts, p, mode, r, statuses) != CW_OK;
+        const long allocations = cw_count_stop();
+        assert_int_equal(failures, 0);
+        if (allocations != 0) print_error("threads = %d: %ld allocations\n", threads[t], allocations);
+        assert_int_equal(allocations, 0);
+        cw_batch_destroy(b);
+    }
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_counter_sees_library_allocations),
+        cmocka_unit_test(test_solve_and_export_allocate_nothing),
+        cmocka_unit_test(test_accumulator_allocates_nothing),
+        cmocka_unit_test(test_batch_allocates_nothing_after_first_call),
+    };
+    return cmocka_run_group_tests_name("robustness_noalloc_capi", tests, NULL, NULL);
+}

@@ -1,0 +1,95 @@
+// No heap allocation in creepwork::Solver::solve (both modes) nor in
+// copying its fields, states and profile out, counted by interposing malloc
+// (count_malloc.h sees operator new, which libstdc++ implements with
+// malloc, and Eigen's aligned_malloc, which calls std::malloc). This is
+// stricter than Eigen's EIGEN_RUNTIME_NO_MALLOC, which would see only
+// Eigen's own allocations and only in code compiled with the macro.
+#include <vector>
+
+#include "count_malloc.h"
+#include "solver.hpp"
+#include "test_support.h"
+
+namespace cw = creepwork;
+
+namespace {
+
+cw::ContactInput contact(int k)
+{
+    cw::ContactInput in;
+    in.a = 6e-3;
+    in.b = 6e-3;
+    in.normal_force = 80e3;
+    in.mu = 0.3;
+    in.G = 82e9;
+    in.nu = 0.28;
+    in.xi_x = 1e-3 * (k % 3);
+    in.xi_y = -5e-4 * (k % 2);
+    in.phi = 10.0 * (k % 5 - 2);
+    in.pressure = k % 2 ? cw::PressureKind::elliptic : cw::PressureKind::parabolic;
+    in.rolling_direction = k % 4 == 3 ? -1 : 1;
+    if (k == 5) {
+        in.flexibility = cw::FlexibilitySource::given;
+        in.L1 = in.L2 = in.L3 = 1e-11;
+    }
+    if (k == 6) in.xi_x = 1e150; // scaled to full sliding
+    if (k == 7) in.normal_force = 0.0;
+    return in;
+}
+
+void test_counter_works(void**)
+{
+    cw_count_start();
+    std::vector<double>* v = new std::vector<double>(10);
+    const long n = cw_count_stop();
+    delete v;
+    assert_true(n >= 2); // the vector object and its storage
+}
+
+void test_solver_solve_allocates_nothing(void**)
+{
+    for (int kind = 0; kind < 2; ++kind) {
+        cw::GridSpec g;
+        g.kind = kind ? cw::GridKind::uniform : cw::GridKind::kalker_strips;
+        g.nx = 41;
+        g.ny = 27;
+        g.box_scale = 1.2;
+        cw_count_start();
+        cw::Solver solver(g);
+        assert_true(cw_count_stop() > 0);
+
+        const size_t n = static_cast<size_t>(g.nx) * g.ny;
+        std::vector<double> out(n), y(g.ny), w(g.ny), parabola(g.ny);
+        std::vector<int> states(n);
+        long allocations = 0;
+        for (int k = 0; k < 8; ++k) {
+            const cw::ContactInput in = contact(k);
+            cw_count_start();
+            solver.solve(in, cw::SolveMode::forces_only);
+            for (cw::Field f : {cw::Field::x, cw::Field::y, cw::Field::area, cw::Field::pz,
+                                cw::Field::px, cw::Field::py, cw::Field::mz})
+                solver.copy_field(f, out.data());
+            solver.copy_state(states.data());
+            solver.solve(in, cw::SolveMode::full);
+            for (int f = 0; f <= static_cast<int>(cw::Field::work_consistent); ++f) {
+                solver.copy_field(static_cast<cw::Field>(f), out.data());
+                solver.add_field(static_cast<cw::Field>(f), 0.5, out.data());
+            }
+            solver.copy_state(states.data());
+            solver.copy_profile(y.data(), w.data(), parabola.data());
+            allocations += cw_count_stop();
+        }
+        assert_int_equal(allocations, 0);
+    }
+}
+
+} // namespace
+
+int main()
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_counter_works),
+        cmocka_unit_test(test_solver_solve_allocates_nothing),
+    };
+    return cmocka_run_group_tests_name("robustness_noalloc_core", tests, nullptr, nullptr);
+}
