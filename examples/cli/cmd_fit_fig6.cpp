@@ -1,0 +1,268 @@
+// creepwork fit-fig6: the paper's Figs. 6 and 7 reproduced. The paper gives
+// neither the semi-axes nor the material, so a is fitted to the printed
+// forces (paper_cases.hpp explains the choices); the comparison with every
+// printed number is printed and the pictures are written.
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+
+#include "cli_error.hpp"
+#include "command_common.hpp"
+#include "commands.hpp"
+#include "contact_options.hpp"
+#include "csv_output.hpp"
+#include "output_dir.hpp"
+#include "paper_cases.hpp"
+#include "patch_plots.hpp"
+#include "report.hpp"
+#include "units.hpp"
+
+namespace cwcli {
+
+namespace {
+
+struct CaseRun {
+    PaperCase paper;
+    SemiAxisFit fit;
+    Solution solution; // full solve at the chosen a
+};
+
+// The fit's material and grid: defaults documented in paper_cases.hpp,
+// overridable to see how much the reproduction depends on them.
+FitChoices read_choices(const ParsedOptions& o, const Units& u)
+{
+    FitChoices c;
+    if (o.has("G")) c.G = u.to_si(Quantity::stress, o.number("G", 0.0));
+    c.nu = o.number("nu", c.nu);
+    c.nx = o.integer("nx", c.nx);
+    c.ny = o.integer("ny", c.ny);
+    if (!(c.G > 0.0)) throw usage_error("--G", "must be > 0");
+    if (!(c.nu >= 0.0 && c.nu <= 0.5)) throw usage_error("--nu", "must lie in [0, 0.5]");
+    const std::string range = "must lie in 1.." + std::to_string(CW_MAX_GRID_CELLS);
+    if (c.nx < 1 || c.nx > CW_MAX_GRID_CELLS) throw usage_error("--nx", range);
+    if (c.ny < 1 || c.ny > CW_MAX_GRID_CELLS) throw usage_error("--ny", range);
+    return c;
+}
+
+CaseRun run_case(const PaperCase& paper, const FitChoices& choices, ContactSolver& solver)
+{
+    CaseRun run{paper, fit_semi_axis(paper, solver, choices), {}};
+    run.solution = solver.solve_full(paper_params(paper, run.fit.best().a, choices));
+    return run;
+}
+
+std::string pct(double ours, double printed)
+{
+    if (printed == 0.0) return "";
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%+.2f %%", 100.0 * (ours - printed) / std::fabs(printed));
+    return buf;
+}
+
+// One line of the comparison: printed value, ours in the paper's units and
+// in SI, relative difference. Values below 1e-9 of the scale are rounding
+// noise of an exact zero (Fx of Fig. 7) and print as 0.
+std::string row(const char* name, const char* printed, double ours_paper, const char* paper_unit,
+                double ours_si, const char* si_unit, double printed_value, double scale)
+{
+    const auto clean = [scale](double v) { return std::fabs(v) < 1e-9 * scale ? 0.0 : v; };
+    char buf[200];
+    std::snprintf(buf, sizeof buf, "  %-15s %10s %12.3f %-10s %12.5g %-4s %s\n", name, printed,
+                  clean(ours_paper), paper_unit, clean(ours_si), si_unit,
+                  pct(ours_paper, printed_value).c_str());
+    return buf;
+}
+
+std::string printed(double v, int decimals)
+{
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
+    return buf;
+}
+
+void print_minima(std::ostream& os, const CaseRun& run)
+{
+    const double lbf = kNewtonPerLbf, ft = kMetrePerFoot;
+    // Force on the rail in lbf; rounding noise of an exact zero prints as 0.
+    const auto rail_lbf = [](double on_wheel) {
+        return std::fabs(on_wheel) < 1e-9 * kNewtonPerLbf ? 0.0 : -on_wheel / kNewtonPerLbf;
+    };
+    os << "  least squares on the printed forces; local minima over a = 1..40 mm:\n";
+    for (size_t k = 0; k < run.fit.candidates.size(); ++k) {
+        const FitCandidate& c = run.fit.candidates[k];
+        char buf[240];
+        std::snprintf(
+            buf, sizeof buf,
+            "    a = %7.4f mm: Fx %7.1f, Fy %7.1f lbf (rms misfit %6.2f lbf), Mz %7.3f lbf ft, "
+            "W_macro %6.3f, adhesion %3.0f %%%s\n",
+            c.a * 1e3, rail_lbf(c.result.Fx), rail_lbf(c.result.Fy), c.rms_lbf,
+            -c.result.Mz / (lbf * ft), c.result.W_macro / lbf, 100 * c.result.adhesion_fraction,
+            k == run.fit.chosen ? "  <- chosen: closest to the printed Mz" : "");
+        os << buf;
+    }
+}
+
+void print_case(std::ostream& os, const CaseRun& run)
+{
+    const PaperCase& p = run.paper;
+    const cw_result& r = run.solution.result;
+    const double lbf = kNewtonPerLbf, ft = kMetrePerFoot, F = p.N_lbf;
+    os << p.name << ": xi_x = " << p.xi_x << ", xi_y = " << p.xi_y << ", spin = " << p.spin_per_ft
+       << " 1/ft, a/b = " << p.a_over_b << ", mu = " << p.mu << ", N = " << p.N_lbf << " lbf ("
+       << p.slip << ")\n";
+    print_minima(os, run);
+    os << "  fitted a = " << fmt(r.a * 1e3, 6) << " mm = " << fmt(r.a / ft, 6)
+       << " ft, b = " << fmt(r.b * 1e3, 6) << " mm = " << fmt(r.b / ft, 6) << " ft\n";
+    os << "  on the rail (the paper's sign; the library, JSON and CSV give the wheel's):\n";
+    char head[160];
+    std::snprintf(head, sizeof head, "  %-15s %10s %12s %-10s %12s %-4s %s\n", "", "paper",
+                  "creepwork", "", "creepwork", "", "diff");
+    os << head;
+    os << row("Fx", printed(p.Fx_lbf, 3).c_str(), -r.Fx / lbf, "lbf", -r.Fx, "N", p.Fx_lbf, F);
+    os << row("Fy", printed(p.Fy_lbf, 3).c_str(), -r.Fy / lbf, "lbf", -r.Fy, "N", p.Fy_lbf, F);
+    os << row("Mz", printed(p.Mz_lbf_ft, 3).c_str(), -r.Mz / (lbf * ft), "lbf ft", -r.Mz, "N m",
+              p.Mz_lbf_ft, F);
+    os << row("W_macro (Wd)", printed(p.Wd, 3).c_str(), r.W_macro / lbf, "lbf ft/ft", r.W_macro,
+              "J/m", p.Wd, F);
+    os << row("W_micro_paper", ("(" + printed(p.Wd / p.K, 3) + ")").c_str(), r.W_micro_paper / lbf,
+              "lbf ft/ft", r.W_micro_paper, "J/m", p.Wd / p.K, F);
+    os << row("K", printed(p.K, 3).c_str(), r.K, "", r.K, "", p.K, 1.0);
+    os << row("W_consistent", "", r.W_consistent / lbf, "lbf ft/ft", r.W_consistent, "J/m", 0.0, F);
+    os << "  adhesion " << fmt(100 * r.adhesion_fraction, 3) << " % (" << r.n_adhesion << " of "
+       << r.n_contact << " elements); paper: " << p.slip << ". (W_micro_paper printed = Wd/K.)\n";
+    os << "  printed Fx xi_x + Fy xi_y + Mz spin = "
+       << printed(p.Fx_lbf * p.xi_x + p.Fy_lbf * p.xi_y + p.Mz_lbf_ft * p.spin_per_ft, 3)
+       << " = printed Wd.\n"
+       << "  The printed Mz is compared with our creep moment itself (sum of (x py - y px) dA, no\n"
+          "  extra factor): the paper's Mz is the moment in lbf ft.\n";
+}
+
+JsonObject case_json(const CaseRun& run, const Units& u)
+{
+    const PaperCase& p = run.paper;
+    JsonObject printed, j;
+    printed.number("Fx_lbf", p.Fx_lbf)
+        .number("Fy_lbf", p.Fy_lbf)
+        .number("Mz_lbf_ft", p.Mz_lbf_ft)
+        .number("Wd_lbf_ft_per_ft", p.Wd)
+        .number("K", p.K)
+        .text("slip", p.slip);
+    std::vector<JsonObject> minima;
+    for (const FitCandidate& c : run.fit.candidates)
+        minima.push_back(JsonObject()
+                             .number("a", u.from_si(Quantity::length, c.a))
+                             .number("rms_misfit_lbf", c.rms_lbf)
+                             .number("Fx", u.from_si(Quantity::force, c.result.Fx))
+                             .number("Fy", u.from_si(Quantity::force, c.result.Fy))
+                             .number("Mz", u.from_si(Quantity::moment, c.result.Mz))
+                             .number("adhesion_fraction", c.result.adhesion_fraction));
+    j.text("case", p.name)
+        .object("paper_printed_on_rail", printed)
+        .integer("chosen_minimum", static_cast<long>(run.fit.chosen))
+        .array("minima", minima)
+        .object("result",
+                result_json(run.solution.result, run.solution.params, run.solution.grid, u));
+    return j;
+}
+
+// Hertz scaling for comparison: a ~ N^(1/3) at fixed curvatures.
+double hertz_scaled_a(const CaseRun& from, const PaperCase& to)
+{
+    return from.solution.result.a * std::cbrt(to.N_lbf / from.paper.N_lbf);
+}
+
+void write_case_files(const std::string& dir, const CaseRun& run, const Units& u, bool plots)
+{
+    write_fields_csv(dir + "/fields.csv", run.solution, u);
+    write_profile_csv(dir + "/profile.csv", run.solution, u);
+    std::ofstream f(dir + "/result.json");
+    f << case_json(run, u).str(true) << "\n";
+    f.close();
+    if (!f) throw CliError(kExitFailure, "cannot write " + dir + "/result.json");
+    if (plots)
+        write_patch_pictures(
+            dir, run.solution, u,
+            "Paper " + run.paper.name +
+                " reproduced (a fitted to the printed forces): " + describe_case(run.solution, u));
+}
+
+} // namespace
+
+int command_fit_fig6(int argc, char** argv, int first)
+{
+    using K = OptionKind;
+    const auto specs = join({{"G", K::number, {}},
+                             {"nu", K::number, {}},
+                             {"nx", K::integer, {}},
+                             {"ny", K::integer, {}},
+                             {"units", K::choice, {"si", "SI", "paper"}}},
+                            output_options());
+    ParsedOptions opts;
+    if (parse_or_help(specs, argc, argv, first, usage_fit_fig6(), opts)) return kExitOk;
+    const Units units = Units::named(opts.text("units", "si"));
+    const FitChoices choices = read_choices(opts, units);
+    const std::string out = opts.text("out", "");
+    if (!out.empty()) check_output_target(out, "--out");
+
+    cw_grid grid = library_default_grid();
+    grid.kind = CW_GRID_KALKER_STRIPS;
+    grid.nx = choices.nx;
+    grid.ny = choices.ny;
+    ContactSolver solver(grid);
+    const CaseRun fig6 = run_case(paper_fig6(), choices, solver);
+    const CaseRun fig7 = run_case(paper_fig7(), choices, solver);
+    const double a7_hertz = hertz_scaled_a(fig6, fig7.paper);
+    const cw_result hertz = solver.solve_totals(paper_params(fig7.paper, a7_hertz, choices));
+
+    if (!out.empty()) {
+        const bool plots = should_plot(opts);
+        StagedOutput dir(out, "--out");
+        write_case_files(dir.path(), fig6, units, plots);
+        std::filesystem::create_directories(dir.path("fig7"));
+        write_case_files(dir.path("fig7"), fig7, units, plots);
+        dir.commit();
+    }
+
+    if (opts.text("format", "text") == "json") {
+        JsonObject j;
+        j.text("units", units.name())
+            .object("choices", JsonObject()
+                                   .number("G", units.from_si(Quantity::stress, choices.G))
+                                   .number("nu", choices.nu)
+                                   .text("grid", "strips")
+                                   .integer("nx", choices.nx)
+                                   .integer("ny", choices.ny)
+                                   .text("pressure", "parabolic"))
+            .object("fig6", case_json(fig6, units))
+            .object("fig7", case_json(fig7, units))
+            .number("fig7_hertz_scaled_a", units.from_si(Quantity::length, a7_hertz))
+            .number("fig7_hertz_scaled_Fy", units.from_si(Quantity::force, hertz.Fy));
+        std::cout << j.str(true) << "\n";
+        return kExitOk;
+    }
+    std::ostream& os = std::cout;
+    os << "The paper's Figs. 6 and 7 reproduced. The paper gives neither the semi-axes nor the\n"
+          "material. Choices (see creepwork fit-fig6 --help for why): steel G = "
+       << fmt(choices.G / 1e9, 4) << " GPa = " << fmt(choices.G / kPascalPerPsi, 8)
+       << " psi, nu = " << choices.nu << ";\nparabolic pressure (paper eq. 16); Kalker strip grid "
+       << choices.nx << " x " << choices.ny
+       << " (K depends on the grid; 7 x 7 gives Table 1's K).\n"
+       << "Forces, moment and work per rolled distance: paper units and SI.\n\n";
+    print_case(os, fig6);
+    os << "\n";
+    print_case(os, fig7);
+    os << "  for comparison, Hertz scaling of Fig. 6's a (a ~ N^(1/3), same curvatures, a/b "
+          "ignored):\n"
+       << "  a = " << fmt(a7_hertz * 1e3, 5)
+       << " mm gives Fy = " << fmt(-hertz.Fy / kNewtonPerLbf, 6) << " lbf ("
+       << pct(-hertz.Fy / kNewtonPerLbf, fig7.paper.Fy_lbf)
+       << "), Mz = " << fmt(-hertz.Mz / (kNewtonPerLbf * kMetrePerFoot), 4) << " lbf ft\n";
+    if (!out.empty())
+        os << "\npictures and data: " << out << " (Fig. 6), " << out << "/fig7 (Fig. 7)\n";
+    return kExitOk;
+}
+
+} // namespace cwcli

@@ -1,0 +1,17 @@
+// The subcommands. Each parses its own options (argv[first..]), writes its
+// results and returns the exit status; errors are thrown as CliError.
+#pragma once
+
+namespace cwcli {
+
+int command_solve(int argc, char** argv, int first);
+int command_sweep(int argc, char** argv, int first);
+int command_fit_fig6(int argc, char** argv, int first);
+
+// Usage texts (usage.cpp).
+const char* usage_main();
+const char* usage_solve();
+const char* usage_sweep();
+const char* usage_fit_fig6();
+
+} // namespace cwcli

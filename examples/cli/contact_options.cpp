@@ -1,0 +1,184 @@
+#include "contact_options.hpp"
+
+#include <cmath>
+#include <sstream>
+
+#include "cli_error.hpp"
+
+namespace cwcli {
+
+std::vector<OptionSpec> material_and_load_options()
+{
+    using K = OptionKind;
+    return {{"a", K::number, {}},
+            {"b", K::number, {}},
+            {"N", K::number, {}},
+            {"mu", K::number, {}},
+            {"G", K::number, {}},
+            {"nu", K::number, {}},
+            {"L1", K::number, {}},
+            {"L2", K::number, {}},
+            {"L3", K::number, {}},
+            {"pressure", K::choice, {"parabolic", "elliptic"}},
+            {"rolling-direction", K::choice, {"+1", "1", "-1"}},
+            {"units", K::choice, {"si", "SI", "paper"}}};
+}
+
+std::vector<OptionSpec> creepage_options()
+{
+    using K = OptionKind;
+    return {{"xi-x", K::number, {}}, {"xi-y", K::number, {}}, {"spin", K::number, {}}};
+}
+
+std::vector<OptionSpec> grid_options()
+{
+    using K = OptionKind;
+    return {{"grid", K::choice, {"strips", "uniform"}},
+            {"nx", K::integer, {}},
+            {"ny", K::integer, {}},
+            {"box-scale", K::number, {}}};
+}
+
+cw_params library_default_params()
+{
+    cw_params p;
+    cw_params_init(&p);
+    return p;
+}
+
+cw_grid library_default_grid()
+{
+    cw_grid g;
+    cw_grid_init(&g);
+    return g;
+}
+
+const char* grid_kind_name(int kind)
+{
+    return kind == CW_GRID_UNIFORM ? "uniform" : "strips";
+}
+
+const char* pressure_name(int pressure)
+{
+    return pressure == CW_PRESSURE_ELLIPTIC ? "elliptic" : "parabolic";
+}
+
+namespace {
+
+std::string show(double v, const std::string& unit)
+{
+    std::ostringstream s;
+    s.precision(10);
+    s << v;
+    if (!unit.empty() && unit != "-") s << " " << unit;
+    return s.str();
+}
+
+// Reads --name (in user units) into *si if present.
+void read(const ParsedOptions& o, const Units& u, const char* name, Quantity q, double* si)
+{
+    if (o.has(name)) *si = u.to_si(q, o.number(name, 0.0));
+}
+
+void require(bool ok, const char* name, const std::string& rule, double si_value, Quantity q,
+             const Units& u)
+{
+    if (!ok)
+        throw usage_error(std::string("--") + name,
+                          rule + " (got " + show(u.from_si(q, si_value), u.label(q)) + ")");
+}
+
+void read_flexibilities(const ParsedOptions& o, const Units& u, cw_params& p)
+{
+    const int given = o.has("L1") + o.has("L2") + o.has("L3");
+    if (given == 0) return;
+    if (given != 3) {
+        const char* missing = !o.has("L1") ? "--L1" : !o.has("L2") ? "--L2" : "--L3";
+        throw usage_error(missing, "--L1, --L2 and --L3 must be given together");
+    }
+    if (o.has("G") || o.has("nu"))
+        throw usage_error(o.has("G") ? "--G" : "--nu",
+                          "not used when --L1, --L2, --L3 give the flexibilities");
+    p.flexibility = CW_FLEX_GIVEN;
+    const struct {
+        const char* name;
+        double* value;
+    } flex[] = {{"L1", &p.L1}, {"L2", &p.L2}, {"L3", &p.L3}};
+    for (const auto& f : flex) {
+        read(o, u, f.name, Quantity::flexibility, f.value);
+        require(*f.value > 0.0, f.name, "must be > 0", *f.value, Quantity::flexibility, u);
+    }
+}
+
+void validate_params(const ParsedOptions& o, const cw_params& p, const Units& u)
+{
+    require(p.a > 0.0, "a", "must be > 0", p.a, Quantity::length, u);
+    require(p.b > 0.0, "b", "must be > 0", p.b, Quantity::length, u);
+    const double ratio = p.a / p.b;
+    if (!(ratio >= CW_MIN_ASPECT && ratio <= CW_MAX_ASPECT))
+        throw usage_error(o.has("a") == o.has("b") ? "--a/--b"
+                          : o.has("a")             ? "--a"
+                                                   : "--b",
+                          "a/b = " + show(ratio, "") +
+                              " is outside [1e-3, 1e3], the range of Kalker's coefficients");
+    require(p.normal_force >= 0.0, "N", "must be >= 0", p.normal_force, Quantity::force, u);
+    require(p.mu >= 0.0, "mu", "must be >= 0", p.mu, Quantity::dimensionless, u);
+    if (p.flexibility == CW_FLEX_FROM_MATERIAL) {
+        require(p.G > 0.0, "G", "must be > 0", p.G, Quantity::stress, u);
+        require(p.nu >= 0.0 && p.nu <= 0.5, "nu", "must lie in [0, 0.5]", p.nu,
+                Quantity::dimensionless, u);
+    }
+}
+
+cw_grid read_grid(const ParsedOptions& o, const cw_grid& defaults)
+{
+    cw_grid g = defaults;
+    if (o.has("grid"))
+        g.kind = o.text("grid", "") == "uniform" ? CW_GRID_UNIFORM : CW_GRID_KALKER_STRIPS;
+    g.nx = o.integer("nx", g.nx);
+    g.ny = o.integer("ny", g.ny);
+    g.box_scale = o.number("box-scale", g.box_scale);
+    const std::string range = "must lie in 1.." + std::to_string(CW_MAX_GRID_CELLS);
+    if (g.nx < 1 || g.nx > CW_MAX_GRID_CELLS)
+        throw usage_error("--nx", range + " (got " + std::to_string(g.nx) + ")");
+    if (g.ny < 1 || g.ny > CW_MAX_GRID_CELLS)
+        throw usage_error("--ny", range + " (got " + std::to_string(g.ny) + ")");
+    if (o.has("box-scale") && g.kind != CW_GRID_UNIFORM)
+        throw usage_error("--box-scale", "only used with --grid uniform");
+    if (!(g.box_scale >= 1.0 && g.box_scale <= CW_MAX_BOX_SCALE))
+        throw usage_error("--box-scale", "must lie in [1, 100] so the box holds the ellipse (got " +
+                                             show(g.box_scale, "") + ")");
+    return g;
+}
+
+} // namespace
+
+ContactSetup read_contact(const ParsedOptions& o, const cw_params& defaults,
+                          const cw_grid& default_grid)
+{
+    ContactSetup c;
+    c.units = Units::named(o.text("units", "si"));
+    const Units& u = c.units;
+    cw_params p = defaults;
+    read(o, u, "a", Quantity::length, &p.a);
+    read(o, u, "b", Quantity::length, &p.b);
+    read(o, u, "N", Quantity::force, &p.normal_force);
+    read(o, u, "mu", Quantity::dimensionless, &p.mu);
+    read(o, u, "G", Quantity::stress, &p.G);
+    read(o, u, "nu", Quantity::dimensionless, &p.nu);
+    read(o, u, "xi-x", Quantity::dimensionless, &p.xi_x);
+    read(o, u, "xi-y", Quantity::dimensionless, &p.xi_y);
+    read(o, u, "spin", Quantity::spin, &p.phi);
+    read_flexibilities(o, u, p);
+    if (o.has("pressure"))
+        p.pressure =
+            o.text("pressure", "") == "elliptic" ? CW_PRESSURE_ELLIPTIC : CW_PRESSURE_PARABOLIC;
+    if (o.has("rolling-direction"))
+        p.rolling_direction = o.text("rolling-direction", "+1") == "-1" ? -1 : 1;
+    validate_params(o, p, u);
+    c.params = p;
+    c.grid = read_grid(o, default_grid);
+    return c;
+}
+
+} // namespace cwcli

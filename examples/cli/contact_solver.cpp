@@ -1,0 +1,126 @@
+#include "contact_solver.hpp"
+
+#include <cctype>
+
+#include "cli_error.hpp"
+
+namespace cwcli {
+
+ContactSolver::ContactSolver(const cw_grid& grid) : grid_(grid)
+{
+    char message[256] = "";
+    const int status = cw_solver_create(&grid, &solver_, message, sizeof message);
+    if (status != CW_OK)
+        throw CliError(kExitUsage, std::string("library rejected the grid: ") + message);
+    cw_solver_grid_size(solver_, &nx_, &ny_);
+}
+
+namespace {
+
+// The library names its struct fields; say which options set them.
+std::string options_named_in(const std::string& message)
+{
+    static const char* const names[][2] = {
+        {"a", "--a"},       {"b", "--b"},       {"normal_force", "--N"},
+        {"mu", "--mu"},     {"G", "--G"},       {"nu", "--nu"},
+        {"L1", "--L1"},     {"L2", "--L2"},     {"L3", "--L3"},
+        {"xi_x", "--xi-x"}, {"xi_y", "--xi-y"}, {"phi", "--spin"},
+        {"nx", "--nx"},     {"ny", "--ny"},     {"box_scale", "--box-scale"}};
+    const auto is_word = [](char c) {
+        return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
+    };
+    std::string options;
+    for (const auto& n : names) {
+        const std::string field = n[0];
+        for (size_t at = message.find(field); at != std::string::npos;
+             at = message.find(field, at + 1)) {
+            const bool starts = at == 0 || !is_word(message[at - 1]);
+            const bool ends =
+                at + field.size() == message.size() || !is_word(message[at + field.size()]);
+            if (starts && ends) {
+                options += (options.empty() ? "" : ", ") + std::string(n[1]);
+                break;
+            }
+        }
+    }
+    return options.empty() ? "" : " (options " + options + ")";
+}
+
+} // namespace
+
+void ContactSolver::check(int status, const char* call) const
+{
+    if (status == CW_OK) return;
+    std::string detail = cw_solver_last_error(solver_);
+    if (detail.empty()) detail = cw_status_string(status);
+    // Inputs the CLI's own checks let through (e.g. overflow) end up here.
+    const int exit_status = status == CW_ERR_INTERNAL ? kExitFailure : kExitUsage;
+    throw CliError(exit_status, std::string("library rejected the input (") + call +
+                                    "): " + detail + options_named_in(detail));
+}
+
+cw_result ContactSolver::solve_totals(const cw_params& params)
+{
+    cw_result r;
+    cw_result_init(&r);
+    check(cw_solver_solve(solver_, &params, CW_SOLVE_FORCES, &r), "cw_solver_solve");
+    return r;
+}
+
+cw_result ContactSolver::solve_states(const cw_params& params, std::vector<int>& state)
+{
+    const cw_result r = solve_totals(params);
+    state.assign(static_cast<size_t>(nx_) * ny_, 0);
+    check(cw_solver_get_state(solver_, state.data(), state.size()), "cw_solver_get_state");
+    return r;
+}
+
+Solution ContactSolver::solve_full(const cw_params& params)
+{
+    Solution s;
+    cw_result_init(&s.result);
+    check(cw_solver_solve(solver_, &params, CW_SOLVE_FULL, &s.result), "cw_solver_solve");
+    s.params = params;
+    s.grid = grid_;
+    s.nx = nx_;
+    s.ny = ny_;
+    const size_t n = s.size();
+    struct {
+        int id;
+        std::vector<double>* out;
+    } fields[] = {{CW_FIELD_X, &s.x},
+                  {CW_FIELD_Y, &s.y},
+                  {CW_FIELD_AREA, &s.area},
+                  {CW_FIELD_PZ, &s.pz},
+                  {CW_FIELD_PX, &s.px},
+                  {CW_FIELD_PY, &s.py},
+                  {CW_FIELD_SX, &s.sx},
+                  {CW_FIELD_SY, &s.sy},
+                  {CW_FIELD_MZ, &s.mz},
+                  {CW_FIELD_WORK_PAPER, &s.work_paper},
+                  {CW_FIELD_WORK_CONSISTENT, &s.work_consistent}};
+    for (auto& f : fields) {
+        f.out->assign(n, 0.0);
+        check(cw_solver_get_field(solver_, f.id, f.out->data(), n), "cw_solver_get_field");
+    }
+    s.state.assign(n, 0);
+    check(cw_solver_get_state(solver_, s.state.data(), n), "cw_solver_get_state");
+    const size_t m = static_cast<size_t>(ny_);
+    s.profile_y.assign(m, 0.0);
+    s.profile_w.assign(m, 0.0);
+    s.profile_parabola.assign(m, 0.0);
+    check(cw_solver_get_profile(solver_, s.profile_y.data(), s.profile_w.data(),
+                                s.profile_parabola.data(), m),
+          "cw_solver_get_profile");
+    return s;
+}
+
+std::vector<double> spin_distribution(const Solution& s)
+{
+    std::vector<double> spin(s.size(), 0.0);
+    for (size_t k = 0; k < spin.size(); ++k)
+        if (s.state[k] == CW_STATE_SLIP) spin[k] = s.params.phi;
+    return spin;
+}
+
+} // namespace cwcli

@@ -1,0 +1,56 @@
+// The CLI's only door to the library: the public C ABI (creepwork.h), as any
+// user program would call it. A small RAII owner for cw_solver and a
+// Solution that holds the totals and every per-element field in SI.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <creepwork/creepwork.h>
+
+namespace cwcli {
+
+struct Solution {
+    cw_result result;
+    cw_params params; // the inputs solved (SI)
+    cw_grid grid;
+    int nx = 0, ny = 0;
+    // One value per element at [i + j*nx] (the library's layout), SI.
+    std::vector<double> x, y, area, pz, px, py, sx, sy, mz, work_paper, work_consistent;
+    std::vector<int> state;
+    // Lateral profile, one value per strip j.
+    std::vector<double> profile_y, profile_w, profile_parabola;
+
+    size_t size() const { return static_cast<size_t>(nx) * static_cast<size_t>(ny); }
+};
+
+class ContactSolver {
+public:
+    explicit ContactSolver(const cw_grid& grid); // throws CliError(kExitUsage) on a bad grid
+    ~ContactSolver() { cw_solver_destroy(solver_); }
+    ContactSolver(const ContactSolver&) = delete;
+    ContactSolver& operator=(const ContactSolver&) = delete;
+
+    // Totals only (CW_SOLVE_FORCES), e.g. inside a fit or a sweep.
+    cw_result solve_totals(const cw_params& params);
+    // Totals plus states only (for slip/adhesion maps).
+    cw_result solve_states(const cw_params& params, std::vector<int>& state);
+    // Everything (CW_SOLVE_FULL).
+    Solution solve_full(const cw_params& params);
+
+    int nx() const { return nx_; }
+    int ny() const { return ny_; }
+
+private:
+    void check(int status, const char* call) const;
+
+    cw_solver* solver_ = nullptr;
+    cw_grid grid_;
+    int nx_ = 0, ny_ = 0;
+};
+
+// Spin creepage felt by each element: phi where it slips, 0 in adhesion (no
+// relative motion) and outside -- the paper's "spin distribution" (Fig. 6).
+std::vector<double> spin_distribution(const Solution& s);
+
+} // namespace cwcli

@@ -1,0 +1,44 @@
+// Running gnuplot and the pieces of script every picture shares (terminal,
+// palettes, quoting). Pictures are scripts plus whitespace data files kept
+// in <out>/gnuplot/, so a user can restyle and re-run them:
+//   cd <out> && gnuplot gnuplot/<name>.gp
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace cwcli {
+
+// True when a "gnuplot" executable is on PATH.
+bool gnuplot_available();
+
+// Writes text to dir/script (kept, so the user can re-run it) and runs
+// "gnuplot <script>" with working directory dir; gnuplot's output goes to
+// dir/gnuplot/gnuplot.log (removed when empty). Throws CliError(kExitFailure)
+// quoting gnuplot's first error line.
+void run_gnuplot(const std::string& dir, const std::string& script, const std::string& text);
+
+// A gnuplot string literal ('...' with ' doubled).
+std::string gp_quote(const std::string& text);
+
+// A double-quoted gnuplot string of several lines.
+std::string gp_text_lines(const std::vector<std::string>& lines);
+
+// "set terminal pngcairo ..." and "set output ..." for a picture.
+std::string gp_png(const std::string& file, int width, int height);
+
+// Colour scale for one heat map: white at zero; sequential when all values
+// are >= 0, diverging blue-white-red with a symmetric range otherwise.
+std::string gp_colour_scale(const std::vector<double>& values, const std::string& label);
+
+// boxxyerror columns x:y:dx:dy of the patch data files, each box padded by
+// about one pixel so antialiasing leaves no seams (moire) between elements.
+extern const char* const kPaddedBoxes;
+
+// Two-colour scale for element states: adhesion (1) blue, slip (2) orange.
+std::string gp_state_scale();
+
+// The unit-disk patch outline and the rolling-direction arrow, in x/a, y/b.
+std::string gp_patch_frame(int rolling_direction);
+
+} // namespace cwcli

@@ -1,0 +1,39 @@
+// Command-line options of one subcommand: "--name value", "--name=value" or
+// a bare "--flag". Parsing is strict -- unknown options, missing values,
+// repeats, trailing garbage in numbers, NaN and Inf are all errors naming the
+// option -- so a typo can never silently fall back to a default.
+#pragma once
+
+#include <map>
+#include <string>
+#include <vector>
+
+namespace cwcli {
+
+enum class OptionKind { number, integer, choice, flag, text };
+
+struct OptionSpec {
+    std::string name; // without the leading "--"
+    OptionKind kind;
+    std::vector<std::string> choices; // OptionKind::choice only
+};
+
+class ParsedOptions {
+public:
+    bool has(const std::string& name) const { return values_.count(name) != 0; }
+    double number(const std::string& name, double fallback) const;
+    int integer(const std::string& name, int fallback) const;
+    std::string text(const std::string& name, const std::string& fallback) const;
+
+    // Filled by parse_options; values are already checked against their kind.
+    std::map<std::string, std::string> values_;
+};
+
+// Parses argv[first..argc). Throws CliError(kExitUsage) naming the option.
+ParsedOptions parse_options(const std::vector<OptionSpec>& specs, int argc, char** argv, int first);
+
+// Strict conversions, exposed for tests of the parser's rules.
+bool parse_finite_double(const std::string& text, double& value);
+bool parse_int(const std::string& text, int& value);
+
+} // namespace cwcli

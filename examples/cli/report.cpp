@@ -1,0 +1,135 @@
+#include "report.hpp"
+
+#include <cstdio>
+
+#include "contact_options.hpp"
+
+namespace cwcli {
+
+std::string fmt(double v, int digits)
+{
+    char buf[48];
+    std::snprintf(buf, sizeof buf, "%.*g", digits, v);
+    return buf;
+}
+
+namespace {
+
+struct Entry {
+    const char* key;
+    double si_value;
+    Quantity q;
+};
+
+std::vector<Entry> totals(const cw_result& r)
+{
+    using Q = Quantity;
+    return {{"Fx", r.Fx, Q::force},
+            {"Fy", r.Fy, Q::force},
+            {"Mz", r.Mz, Q::moment},
+            {"W_macro", r.W_macro, Q::work},
+            {"W_micro_paper", r.W_micro_paper, Q::work},
+            {"K", r.K, Q::dimensionless},
+            {"W_consistent", r.W_consistent, Q::work},
+            {"balance_factor", r.balance_factor, Q::dimensionless}};
+}
+
+std::vector<Entry> geometry(const cw_result& r)
+{
+    using Q = Quantity;
+    return {{"a", r.a, Q::length},
+            {"b", r.b, Q::length},
+            {"L1", r.L1, Q::flexibility},
+            {"L2", r.L2, Q::flexibility},
+            {"L3", r.L3, Q::flexibility},
+            {"C11", r.C11, Q::dimensionless},
+            {"C22", r.C22, Q::dimensionless},
+            {"C23", r.C23, Q::dimensionless},
+            {"C33", r.C33, Q::dimensionless}};
+}
+
+JsonObject input_json(const cw_params& p, const cw_grid& g, const Units& u)
+{
+    JsonObject in;
+    in.number("N", u.from_si(Quantity::force, p.normal_force))
+        .number("mu", p.mu)
+        .number("xi_x", p.xi_x)
+        .number("xi_y", p.xi_y)
+        .number("spin", u.from_si(Quantity::spin, p.phi))
+        .text("flexibility", p.flexibility == CW_FLEX_GIVEN ? "given" : "material");
+    if (p.flexibility != CW_FLEX_GIVEN)
+        in.number("G", u.from_si(Quantity::stress, p.G)).number("nu", p.nu);
+    in.text("pressure", pressure_name(p.pressure))
+        .integer("rolling_direction", p.rolling_direction)
+        .text("grid", grid_kind_name(g.kind))
+        .integer("nx", g.nx)
+        .integer("ny", g.ny)
+        .number("box_scale", g.box_scale);
+    return in;
+}
+
+} // namespace
+
+JsonObject result_json(const cw_result& r, const cw_params& p, const cw_grid& g, const Units& u)
+{
+    JsonObject j, unit_of;
+    for (const Entry& e : totals(r)) {
+        j.number(e.key, u.from_si(e.q, e.si_value));
+        unit_of.text(e.key, u.label(e.q));
+    }
+    j.integer("work_flags", r.work_flags)
+        .number("adhesion_fraction", r.adhesion_fraction)
+        .integer("n_contact", r.n_contact)
+        .integer("n_adhesion", r.n_adhesion)
+        .integer("n_slip", r.n_slip);
+    for (const Entry& e : geometry(r)) {
+        j.number(e.key, u.from_si(e.q, e.si_value));
+        unit_of.text(e.key, u.label(e.q));
+    }
+    j.number("profile_max_diff", r.profile_max_diff)
+        .number("profile_rms_diff", r.profile_rms_diff)
+        .text("units", u.name())
+        .text("sign_convention",
+              "Fx, Fy, Mz act on the wheel (Kalker, CONTACT): opposite to the creepages; "
+              "the paper prints the force on the rail")
+        .object("input", input_json(p, g, u))
+        .object("unit_of", unit_of.text("N", u.label(Quantity::force))
+                               .text("spin", u.label(Quantity::spin))
+                               .text("G", u.label(Quantity::stress)));
+    return j;
+}
+
+void print_result_text(std::ostream& os, const cw_result& r, const cw_params& p, const cw_grid& g,
+                       const Units& u)
+{
+    const auto val = [&u](double si, Quantity q) {
+        return fmt(u.from_si(q, si)) + (q == Quantity::dimensionless ? "" : " " + u.label(q));
+    };
+    os << "contact    a = " << val(r.a, Quantity::length) << ", b = " << val(r.b, Quantity::length)
+       << ", N = " << val(p.normal_force, Quantity::force) << ", mu = " << fmt(p.mu) << "\n";
+    if (p.flexibility == CW_FLEX_GIVEN)
+        os << "material   flexibilities given\n";
+    else
+        os << "material   G = " << val(p.G, Quantity::stress) << ", nu = " << fmt(p.nu) << "\n";
+    os << "creepage   xi_x = " << fmt(p.xi_x) << ", xi_y = " << fmt(p.xi_y)
+       << ", spin = " << val(p.phi, Quantity::spin) << ", rolling towards "
+       << (p.rolling_direction > 0 ? "+x" : "-x") << "\n";
+    os << "grid       " << grid_kind_name(g.kind) << " " << g.nx << " x " << g.ny << ", "
+       << pressure_name(p.pressure) << " pressure\n";
+    os << "results    (forces and moment on the wheel; the rail gets the opposite sign)\n";
+    for (const Entry& e : totals(r))
+        os << "  " << e.key << std::string(16 - std::string(e.key).size(), ' ') << "= "
+           << val(e.si_value, e.q) << "\n";
+    os << "  adhesion_fraction = " << fmt(r.adhesion_fraction, 4) << "  (" << r.n_adhesion
+       << " adhesion, " << r.n_slip << " slip of " << r.n_contact << " elements)\n";
+    if (r.work_flags)
+        os << "  work_flags      = " << r.work_flags << " (see creepwork.h CW_WORK_*)\n";
+    for (const Entry& e : geometry(r))
+        if (e.key[0] != 'a' && e.key[0] != 'b')
+            os << "  " << e.key << std::string(16 - std::string(e.key).size(), ' ') << "= "
+               << val(e.si_value, e.q) << "\n";
+    os << "  profile vs equal-area parabola: max diff " << fmt(100 * r.profile_max_diff, 3)
+       << " %, RMS " << fmt(100 * r.profile_rms_diff, 3) << " % of the peak\n";
+}
+
+} // namespace cwcli

@@ -1,0 +1,508 @@
+/* Tests of the creepwork command-line program, run as a user would run it:
+ * its JSON must parse and equal what the C ABI gives for the same inputs,
+ * bad input must fail cleanly (status 2, one stderr line naming the option,
+ * nothing written), --out must write every column and row, and the paper
+ * units must describe the same physics as SI.
+ *
+ * usage: test_cli <creepwork binary> <scratch dir> [cmocka filter] */
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <fcntl.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <creepwork/creepwork.h>
+
+#include "json_reader.hpp"
+// Last: cmocka defines macros (fail, skip) that clash with the C++ library.
+#include "test_support.h"
+
+extern char** environ;
+
+namespace fs = std::filesystem;
+using cwtest::Json;
+
+namespace {
+
+std::string g_cli, g_scratch;
+const double kLbf = 4.4482216152605, kFt = 0.3048, kPsi = 4.4482216152605 / (0.0254 * 0.0254);
+
+struct Run {
+    int status = -1;
+    std::string out, err;
+};
+
+std::string slurp(const std::string& path)
+{
+    std::ifstream f(path);
+    std::stringstream s;
+    s << f.rdbuf();
+    return s.str();
+}
+
+// Runs the CLI with args, capturing stdout and stderr.
+Run run_cli(const std::vector<std::string>& args)
+{
+    const std::string out = g_scratch + "/stdout.txt", err = g_scratch + "/stderr.txt";
+    posix_spawn_file_actions_t fa;
+    posix_spawn_file_actions_init(&fa);
+    posix_spawn_file_actions_addopen(&fa, 1, out.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    posix_spawn_file_actions_addopen(&fa, 2, err.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    std::vector<char*> argv;
+    argv.push_back(const_cast<char*>(g_cli.c_str()));
+    for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+    argv.push_back(nullptr);
+    pid_t pid = 0;
+    Run r;
+    if (posix_spawn(&pid, g_cli.c_str(), &fa, nullptr, argv.data(), environ) == 0) {
+        int status = 0;
+        waitpid(pid, &status, 0);
+        r.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    }
+    posix_spawn_file_actions_destroy(&fa);
+    r.out = slurp(out);
+    r.err = slurp(err);
+    return r;
+}
+
+Json parse_or_fail(const std::string& text)
+{
+    try {
+        return cwtest::parse_json(text);
+    } catch (const std::exception& e) {
+        print_error("%s\n--- output ---\n%s\n", e.what(), text.c_str());
+        fail();
+    }
+    return Json();
+}
+
+Run run_ok(const std::vector<std::string>& args)
+{
+    Run r = run_cli(args);
+    if (r.status != 0) print_error("exit %d, stderr: %s\n", r.status, r.err.c_str());
+    assert_int_equal(r.status, 0);
+    return r;
+}
+
+std::string num(double v)
+{
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.17g", v);
+    return buf;
+}
+
+// A case given both as CLI options (SI) and as the C structs the library sees.
+struct Case {
+    std::vector<std::string> args;
+    cw_grid grid;
+    cw_params params;
+};
+
+std::vector<Case> cases()
+{
+    std::vector<Case> cs(3);
+    for (Case& c : cs) {
+        cw_grid_init(&c.grid);
+        cw_params_init(&c.params);
+    }
+    // Kalker strip grid, partial slip with spin.
+    // clang-format off
+    cs[0].args = {"--a", "0.008", "--b", "0.005", "--N", "60000", "--mu", "0.4", "--G", "8e10",
+                  "--nu", "0.3", "--xi-x", "0.001", "--xi-y", "-0.0005", "--spin", "0.8",
+                  "--nx", "9", "--ny", "7"};
+    cs[0].params.a = 0.008, cs[0].params.b = 0.005, cs[0].params.normal_force = 60000;
+    cs[0].params.mu = 0.4, cs[0].params.G = 8e10, cs[0].params.nu = 0.3;
+    cs[0].params.xi_x = 0.001, cs[0].params.xi_y = -0.0005, cs[0].params.phi = 0.8;
+    cs[0].grid.nx = 9, cs[0].grid.ny = 7;
+    // Uniform grid, box scale, elliptic pressure, rolling towards -x.
+    cs[1].args = {"--grid", "uniform", "--box-scale", "1.2", "--pressure", "elliptic",
+                  "--rolling-direction", "-1", "--xi-x", "-0.0008", "--spin", "-1.5",
+                  "--nx", "16", "--ny", "12"};
+    cs[1].grid.kind = CW_GRID_UNIFORM, cs[1].grid.box_scale = 1.2;
+    cs[1].grid.nx = 16, cs[1].grid.ny = 12;
+    cs[1].params.pressure = CW_PRESSURE_ELLIPTIC, cs[1].params.rolling_direction = -1;
+    cs[1].params.xi_x = -0.0008, cs[1].params.phi = -1.5;
+    // Flexibilities given (legacy), pure lateral creepage.
+    cs[2].args = {"--L1", "1e-11", "--L2", "1.1e-11", "--L3", "9e-12", "--xi-y", "0.002"};
+    cs[2].params.flexibility = CW_FLEX_GIVEN;
+    cs[2].params.L1 = 1e-11, cs[2].params.L2 = 1.1e-11, cs[2].params.L3 = 9e-12;
+    cs[2].params.xi_y = 0.002;
+    // clang-format on
+    return cs;
+}
+
+cw_result library_solve(const Case& c, cw_solver** keep = nullptr)
+{
+    cw_solver* s = nullptr;
+    assert_int_equal(cw_solver_create(&c.grid, &s, nullptr, 0), CW_OK);
+    cw_result r;
+    cw_result_init(&r);
+    assert_int_equal(cw_solver_solve(s, &c.params, CW_SOLVE_FULL, &r), CW_OK);
+    if (keep)
+        *keep = s;
+    else
+        cw_solver_destroy(s);
+    return r;
+}
+
+std::vector<std::string> with(std::vector<std::string> a, const std::vector<std::string>& b)
+{
+    a.insert(a.end(), b.begin(), b.end());
+    return a;
+}
+
+// clang-format off
+const char* const kRequiredKeys[] = {
+    "Fx", "Fy", "Mz", "W_macro", "W_micro_paper", "K", "W_consistent", "adhesion_fraction",
+    "n_contact", "n_adhesion", "n_slip", "a", "b", "L1", "L2", "L3", "C11", "C22", "C23", "C33"};
+// clang-format on
+
+/* ------------------------------------------------------------ JSON output */
+
+void json_matches_library(void**)
+{
+    for (const Case& c : cases()) {
+        const Run r = run_ok(with({"solve", "--format", "json"}, c.args));
+        const Json j = parse_or_fail(r.out);
+        const cw_result lib = library_solve(c);
+        // %.17g round-trips: the CLI's values are the library's, bit for bit.
+        // clang-format off
+        const struct {
+            const char* key;
+            double value;
+        } expect[] = {{"Fx", lib.Fx}, {"Fy", lib.Fy}, {"Mz", lib.Mz}, {"W_macro", lib.W_macro},
+                      {"W_micro_paper", lib.W_micro_paper}, {"K", lib.K},
+                      {"W_consistent", lib.W_consistent}, {"balance_factor", lib.balance_factor},
+                      {"adhesion_fraction", lib.adhesion_fraction}, {"a", lib.a}, {"b", lib.b},
+                      {"L1", lib.L1}, {"L2", lib.L2}, {"L3", lib.L3}, {"C11", lib.C11},
+                      {"C22", lib.C22}, {"C23", lib.C23}, {"C33", lib.C33},
+                      {"profile_max_diff", lib.profile_max_diff},
+                      {"profile_rms_diff", lib.profile_rms_diff}};
+        // clang-format on
+        for (const auto& e : expect) {
+            if (j.num(e.key) != e.value)
+                print_error("%s: CLI %.17g, library %.17g\n", e.key, j.num(e.key), e.value);
+            assert_true(j.num(e.key) == e.value);
+        }
+        assert_int_equal(static_cast<int>(j.num("n_contact")), lib.n_contact);
+        assert_int_equal(static_cast<int>(j.num("n_adhesion")), lib.n_adhesion);
+        assert_int_equal(static_cast<int>(j.num("n_slip")), lib.n_slip);
+        assert_int_equal(static_cast<int>(j.num("work_flags")), lib.work_flags);
+        assert_string_equal(j.at("units").string.c_str(), "SI");
+    }
+}
+
+void json_keys_and_identities(void**)
+{
+    for (const Case& c : cases()) {
+        const Json j = parse_or_fail(run_ok(with({"solve", "--format", "json"}, c.args)).out);
+        for (const char* key : kRequiredKeys) {
+            if (!j.has(key)) print_error("missing key %s\n", key);
+            assert_true(j.has(key) && j.at(key).type == Json::Type::number);
+        }
+        const Json& in = j.at("input");
+        // Paper eq. 34 from the printed numbers alone.
+        const double macro = -(j.num("Fx") * in.num("xi_x") + j.num("Fy") * in.num("xi_y") +
+                               j.num("Mz") * in.num("spin"));
+        assert_close(j.num("W_macro"), macro, 1e-12, 1e-12 * std::fabs(j.num("Fx")) + 1e-300);
+        assert_close(j.num("W_consistent"), j.num("W_macro"), 1e-12, 0.0);
+        assert_close(j.num("K"), j.num("W_macro") / j.num("W_micro_paper"), 1e-12, 0.0);
+        assert_int_equal(static_cast<int>(j.num("n_contact")),
+                         static_cast<int>(j.num("n_adhesion") + j.num("n_slip")));
+        assert_close(j.num("adhesion_fraction"), j.num("n_adhesion") / j.num("n_contact"), 1e-15,
+                     0.0);
+    }
+    // Text output is the default and names the sign convention.
+    const Run t = run_ok({"solve", "--xi-x", "0.001"});
+    assert_non_null(std::strstr(t.out.c_str(), "on the wheel"));
+}
+
+/* -------------------------------------------------------------- bad input */
+
+struct Bad {
+    std::vector<std::string> args;
+    const char* names;   // must appear in the stderr line
+    bool add_out = true; // append --out <never> to check nothing is written
+};
+
+void bad_inputs_fail_cleanly(void**)
+{
+    const std::string foreign = g_scratch + "/foreign";
+    fs::create_directories(foreign);
+    std::ofstream(foreign + "/precious.txt") << "keep me\n";
+    const std::string a_file = g_scratch + "/a_file";
+    std::ofstream(a_file) << "x\n";
+    const std::vector<Bad> bad = {
+        {{"solve", "--bogus", "1"}, "--bogus"},
+        {{"solve", "--a"}, "--a"},
+        {{"solve", "--a", "--b", "0.01"}, "--a"},
+        {{"solve", "--a", "abc"}, "--a"},
+        {{"solve", "--a", "nan"}, "--a"},
+        {{"solve", "--a", "inf"}, "--a"},
+        {{"solve", "--a", "1e-3x"}, "--a"},
+        {{"solve", "--a", "-0.01"}, "--a"},
+        {{"solve", "--a", "0"}, "--a"},
+        {{"solve", "--a", "0.01", "--a", "0.02"}, "--a"},
+        {{"solve", "--b", "1e-9"}, "--b"},
+        {{"solve", "--N", "-1"}, "--N"},
+        {{"solve", "--mu", "-0.1"}, "--mu"},
+        {{"solve", "--G", "0"}, "--G"},
+        {{"solve", "--nu", "0.7"}, "--nu"},
+        {{"solve", "--nx", "0"}, "--nx"},
+        {{"solve", "--nx", "1001"}, "--nx"},
+        {{"solve", "--nx", "2.5"}, "--nx"},
+        {{"solve", "--ny", "-3"}, "--ny"},
+        {{"solve", "--ny", "99999999999"}, "--ny"},
+        {{"solve", "--L1", "1e-11"}, "--L2"},
+        {{"solve", "--L1", "1e-11", "--L2", "1e-11", "--L3", "-1e-11"}, "--L3"},
+        {{"solve", "--L1", "1e-11", "--L2", "1e-11", "--L3", "1e-11", "--G", "8e10"}, "--G"},
+        {{"solve", "--grid", "hex"}, "--grid"},
+        {{"solve", "--pressure", "flat"}, "--pressure"},
+        {{"solve", "--format", "xml"}, "--format"},
+        {{"solve", "--units", "imperial"}, "--units"},
+        {{"solve", "--rolling-direction", "0"}, "--rolling-direction"},
+        {{"solve", "--grid", "uniform", "--box-scale", "0.5"}, "--box-scale"},
+        {{"solve", "--box-scale", "2"}, "--box-scale"},
+        {{"solve", "--no-plots=1"}, "--no-plots"},
+        {{"solve", "stray"}, "stray"},
+        {{"solve", "--out", foreign}, "--out"},
+        {{"solve", "--out", a_file}, "--out"},
+        {{"solve", "--out", a_file + "/sub"}, "--out"},
+        // Passes the CLI's checks, overflows in the library: its message is relayed.
+        {{"solve", "--xi-x", "1e308"}, "library"},
+        {{"sweep"}, "--out", false},
+        {{"sweep", "--nx", "0"}, "--nx"},
+        {{"fit-fig6", "--nu", "0.9"}, "--nu"},
+        {{"fit-fig6", "--ny", "0"}, "--ny"},
+        {{"frobnicate"}, "frobnicate", false},
+    };
+    const std::string never = g_scratch + "/never";
+    for (const Bad& b : bad) {
+        std::vector<std::string> args = b.args;
+        if (b.add_out && std::find(args.begin(), args.end(), std::string("--out")) == args.end())
+            args.insert(args.end(), {"--out", never});
+        const Run r = run_cli(args);
+        std::string shown;
+        for (const std::string& a : args) shown += a + " ";
+        if (r.status != 2 || std::count(r.err.begin(), r.err.end(), '\n') != 1 ||
+            r.err.back() != '\n' || r.err.find(b.names) == std::string::npos || !r.out.empty())
+            print_error("creepwork %s-> exit %d, stderr '%s', stdout '%s'\n", shown.c_str(),
+                        r.status, r.err.c_str(), r.out.c_str());
+        assert_int_equal(r.status, 2);
+        assert_int_equal(std::count(r.err.begin(), r.err.end(), '\n'), 1);
+        assert_true(r.err.rfind("creepwork: ", 0) == 0);
+        assert_true(r.err.find(b.names) != std::string::npos);
+        assert_true(r.out.empty());
+        assert_false(fs::exists(never));
+    }
+    // Nothing half-written: no staging directories left behind, the foreign
+    // directory untouched.
+    for (const auto& e : fs::directory_iterator(g_scratch))
+        assert_true(e.path().filename().string().find(".tmp-") == std::string::npos);
+    assert_string_equal(slurp(foreign + "/precious.txt").c_str(), "keep me\n");
+}
+
+/* ---------------------------------------------------------------- --out */
+
+std::vector<std::vector<std::string>> read_csv(const std::string& path)
+{
+    std::vector<std::vector<std::string>> rows;
+    std::ifstream f(path);
+    std::string line;
+    while (std::getline(f, line)) {
+        std::vector<std::string> cells;
+        std::stringstream s(line);
+        std::string cell;
+        while (std::getline(s, cell, ',')) cells.push_back(cell);
+        rows.push_back(cells);
+    }
+    return rows;
+}
+
+void out_writes_every_field(void**)
+{
+    const Case c = cases()[0];
+    const std::string dir = g_scratch + "/solve_out";
+    run_ok(with({"solve", "--no-plots", "--out", dir}, c.args));
+    const auto rows = read_csv(dir + "/fields.csv");
+    const std::vector<std::string> header = {
+        "i",  "j",  "x",  "y",  "area", "state",      "pz",
+        "px", "py", "sx", "sy", "mz",   "work_paper", "work_consistent"};
+    assert_true(rows.size() == 1u + static_cast<size_t>(c.grid.nx * c.grid.ny));
+    assert_true(rows[0] == header);
+
+    cw_solver* s = nullptr;
+    library_solve(c, &s);
+    const size_t n = static_cast<size_t>(c.grid.nx * c.grid.ny);
+    const int ids[] = {CW_FIELD_X,  CW_FIELD_Y,  CW_FIELD_AREA,       -1,
+                       CW_FIELD_PZ, CW_FIELD_PX, CW_FIELD_PY,         CW_FIELD_SX,
+                       CW_FIELD_SY, CW_FIELD_MZ, CW_FIELD_WORK_PAPER, CW_FIELD_WORK_CONSISTENT};
+    std::vector<int> state(n);
+    assert_int_equal(cw_solver_get_state(s, state.data(), n), CW_OK);
+    for (size_t col = 0; col < 12; ++col) {
+        std::vector<double> f(n);
+        if (ids[col] >= 0) assert_int_equal(cw_solver_get_field(s, ids[col], f.data(), n), CW_OK);
+        for (size_t k = 0; k < n; ++k) {
+            const auto& row = rows[k + 1];
+            assert_int_equal(row.size(), 14);
+            // Row order: i fastest, as the library's layout.
+            assert_int_equal(std::stoi(row[0]), static_cast<int>(k % c.grid.nx));
+            assert_int_equal(std::stoi(row[1]), static_cast<int>(k / c.grid.nx));
+            if (ids[col] < 0)
+                assert_int_equal(std::stoi(row[5]), state[k]);
+            else
+                assert_true(std::strtod(row[col + 2].c_str(), nullptr) == f[k]);
+        }
+    }
+    std::vector<double> y(c.grid.ny), w(c.grid.ny), par(c.grid.ny);
+    assert_int_equal(cw_solver_get_profile(s, y.data(), w.data(), par.data(), y.size()), CW_OK);
+    cw_solver_destroy(s);
+    const auto prof = read_csv(dir + "/profile.csv");
+    assert_int_equal(prof.size(), 1u + c.grid.ny);
+    assert_true((prof[0] == std::vector<std::string>{"j", "y", "w", "parabola"}));
+    for (int j = 0; j < c.grid.ny; ++j) {
+        assert_true(std::strtod(prof[j + 1][1].c_str(), nullptr) == y[j]);
+        assert_true(std::strtod(prof[j + 1][2].c_str(), nullptr) == w[j]);
+        assert_true(std::strtod(prof[j + 1][3].c_str(), nullptr) == par[j]);
+    }
+    parse_or_fail(slurp(dir + "/result.json"));
+    assert_true(fs::exists(dir + "/.creepwork-output"));
+    // A second run replaces the directory made by the first.
+    run_ok(with({"solve", "--no-plots", "--nx", "5", "--out", dir}, {"--ny", "4"}));
+    assert_int_equal(read_csv(dir + "/fields.csv").size(), 1u + 20u);
+}
+
+/* ---------------------------------------------------------------- units */
+
+void paper_units_round_trip(void**)
+{
+    // The same contact in SI and in the paper's units (ft, lbf, psi, 1/ft).
+    const double a = 0.0071, b = 0.0043, N = 52000, G = 8.1e10, spin = 0.9;
+    const Json si = parse_or_fail(
+        run_ok({"solve",  "--format", "json",    "--a",  num(a), "--b",    num(b),   "--N",
+                num(N),   "--G",      num(G),    "--mu", "0.5",  "--xi-x", "0.0012", "--xi-y",
+                "0.0007", "--spin",   num(spin), "--nx", "12",   "--ny",   "10"})
+            .out);
+    const Json us =
+        parse_or_fail(run_ok({"solve",         "--format",   "json",        "--units",    "paper",
+                              "--a",           num(a / kFt), "--b",         num(b / kFt), "--N",
+                              num(N / kLbf),   "--G",        num(G / kPsi), "--mu",       "0.5",
+                              "--xi-x",        "0.0012",     "--xi-y",      "0.0007",     "--spin",
+                              num(spin * kFt), "--nx",       "12",          "--ny",       "10"})
+                          .out);
+    assert_string_equal(us.at("units").string.c_str(), "paper");
+    assert_string_equal(us.at("unit_of").at("G").string.c_str(), "psi");
+    const struct {
+        const char* key;
+        double si_per_paper;
+    } q[] = {{"Fx", kLbf},
+             {"Fy", kLbf},
+             {"Mz", kLbf * kFt},
+             {"W_macro", kLbf},
+             {"W_micro_paper", kLbf},
+             {"W_consistent", kLbf},
+             {"K", 1},
+             {"a", kFt},
+             {"b", kFt},
+             {"L1", kFt / kPsi},
+             {"L3", kFt / kPsi},
+             {"C22", 1},
+             {"adhesion_fraction", 1}};
+    for (const auto& e : q) assert_close(us.num(e.key) * e.si_per_paper, si.num(e.key), 1e-10, 0.0);
+    assert_close(us.at("input").num("spin") / kFt, spin, 1e-14, 0.0);
+}
+
+/* ------------------------------------------------------------- pictures */
+
+bool is_png(const std::string& path)
+{
+    const std::string data = slurp(path);
+    return data.size() > 5000 && data.compare(0, 8, "\x89PNG\r\n\x1a\n") == 0;
+}
+
+void out_writes_pictures(void**)
+{
+    if (std::getenv("CW_TEST_NO_GNUPLOT")) skip();
+    const std::string dir = g_scratch + "/pictures";
+    run_ok({"solve", "--xi-x", "0.001", "--xi-y", "0.0005", "--spin", "1", "--nx", "10", "--ny",
+            "10", "--out", dir});
+    for (const char* png :
+         {"patch.png", "slip_adhesion.png", "work.png", "traction_x.png", "traction_y.png",
+          "slip_x.png", "slip_y.png", "moment.png", "spin.png", "work_paper.png", "profile.png"}) {
+        if (!is_png(dir + "/" + png)) print_error("%s is not a PNG picture\n", png);
+        assert_true(is_png(dir + "/" + png));
+    }
+    assert_true(fs::exists(dir + "/gnuplot/patch.gp"));
+}
+
+void sweep_writes_maps(void**)
+{
+    const std::string dir = g_scratch + "/sweep";
+    std::vector<std::string> args = {"sweep",    "--nx", "10",    "--ny", "10",
+                                     "--format", "json", "--out", dir};
+    if (std::getenv("CW_TEST_NO_GNUPLOT")) args.push_back("--no-plots");
+    const Json j = parse_or_fail(run_ok(args).out);
+    const size_t n = j.at("cases").array.size();
+    assert_true(n >= 24);
+    assert_int_equal(read_csv(dir + "/cases.csv").size(), n + 1);
+    if (!std::getenv("CW_TEST_NO_GNUPLOT"))
+        for (const char* png : {"fig2.png", "fig3.png", "fig4.png", "fig5.png"})
+            assert_true(is_png(dir + "/" + png));
+    // Fig. 2 runs from almost full adhesion to full slip.
+    const Json& first = j.at("cases").array.front();
+    assert_true(first.num("adhesion_fraction") > 0.9);
+    double last_fig2 = 1;
+    for (const Json& c : j.at("cases").array)
+        if (c.at("figure").string == "fig2") last_fig2 = c.num("adhesion_fraction");
+    assert_true(last_fig2 == 0.0);
+}
+
+/* ------------------------------------------------------------- fit-fig6 */
+
+void fit_fig6_reproduces_the_paper(void**)
+{
+    const Json j = parse_or_fail(run_ok({"fit-fig6", "--units", "paper", "--format", "json"}).out);
+    const Json& r6 = j.at("fig6").at("result");
+    // Printed (on the rail): Fx 2780.880, Fy 3789.320 lbf; ours on the wheel.
+    assert_close(-r6.num("Fx"), 2780.880, 1e-3, 0.0);
+    assert_close(-r6.num("Fy"), 3789.320, 1e-3, 0.0);
+    assert_close(-r6.num("Mz"), 2.385, 0.06, 0.0); // printed moment, no extra factor a
+    assert_close(r6.num("W_macro"), 9.795, 0.01, 0.0);
+    assert_close(r6.num("K"), 1.602, 0.01, 0.0);    // Table 1
+    assert_true(r6.num("adhesion_fraction") > 0.3); // "partial slip example"
+    const Json& r7 = j.at("fig7").at("result");
+    assert_close(-r7.num("Fy"), 3255.332, 1e-5, 0.0);
+    assert_close(r7.num("Fx"), 0.0, 0.0, 1e-9);
+    assert_true(r7.num("adhesion_fraction") < 0.05); // "full slip example"
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+    if (argc < 3) {
+        std::fprintf(stderr, "usage: test_cli <creepwork> <scratch dir> [filter]\n");
+        return 2;
+    }
+    g_cli = argv[1];
+    g_scratch = argv[2];
+    fs::remove_all(g_scratch);
+    fs::create_directories(g_scratch);
+    if (argc > 3) cmocka_set_test_filter(argv[3]);
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(json_matches_library),    cmocka_unit_test(json_keys_and_identities),
+        cmocka_unit_test(bad_inputs_fail_cleanly), cmocka_unit_test(out_writes_every_field),
+        cmocka_unit_test(paper_units_round_trip),  cmocka_unit_test(out_writes_pictures),
+        cmocka_unit_test(sweep_writes_maps),       cmocka_unit_test(fit_fig6_reproduces_the_paper),
+    };
+    return cmocka_run_group_tests(tests, nullptr, nullptr);
+}

@@ -1,0 +1,171 @@
+// The help texts: the CLI's documentation of commands, options, units,
+// signs and output files.
+#include "commands.hpp"
+
+namespace cwcli {
+
+const char* usage_main()
+{
+    return R"(usage: creepwork <command> [options]      (creepwork <command> --help for details)
+
+Creep forces, creep moment and frictional-work distributions of a wheel
+rolling on a rail (Kalker's simplified theory, FASTSIM), via libcreepwork.
+
+commands:
+  solve      one contact: totals (text or JSON), and with --out every field
+             as CSV plus pictures (the paper's Figs. 6-9)
+  sweep      slip/adhesion maps for series of creepages (the paper's Figs. 2-5)
+  fit-fig6   reproduce the paper's Figs. 6 and 7: fit the semi-axis to the
+             printed forces, print the comparison, write the pictures
+  --version  program and library versions
+
+exit status: 0 success, 1 environment failure (cannot write, gnuplot failed),
+             2 bad input (one line on stderr names the option and the problem)
+)";
+}
+
+const char* usage_solve()
+{
+    return R"(usage: creepwork solve [options]
+
+Solves one steady-rolling contact on an elliptical patch. Every option has a
+default (the library's: steel G = 82 GPa, nu = 0.28, mu = 0.3, a = b = 6 mm,
+N = 80 kN, zero creepage; Kalker strip grid 20 x 20, parabolic pressure).
+
+contact (lengths, forces, stresses in the --units system):
+  --a A             semi-axis along the rolling direction x (> 0)
+  --b B             lateral semi-axis (> 0; a/b within [1e-3, 1e3])
+  --N N             normal force (>= 0)
+  --mu MU           friction coefficient (>= 0)
+  --G G             combined shear modulus (> 0)
+  --nu NU           combined Poisson's ratio (0 .. 0.5)
+  --L1 L --L2 L --L3 L
+                    flexibilities of the simplified theory, all three together
+                    (replace G and nu; legacy codes give one L: pass it thrice)
+  --xi-x XI         longitudinal creepage (-)
+  --xi-y XI         lateral creepage (-)
+  --spin PHI        spin creepage (1/length)
+  --rolling-direction +1|-1
+                    +1 (default): rolling towards +x, leading edge at x = +a
+  --pressure parabolic|elliptic
+                    normal pressure and traction bound (default parabolic,
+                    the simplified theory; elliptic = Hertz)
+grid:
+  --grid strips|uniform
+                    Kalker's strip grid (default) or CONTACT's uniform grid
+  --nx N --ny N     elements per strip and number of strips (1 .. 1000)
+  --box-scale S     uniform grid box [-S a, S a] x [-S b, S b], S in [1, 100]
+units:
+  --units si|paper  si (default): m, N, Pa, 1/m, N m, J/m.
+                    paper: the units the paper prints -- ft, lbf, 1/ft,
+                    lbf ft, work per rolled distance in lbf ft/ft; G and
+                    tractions in psi; L1..L3 in ft/psi.
+output:
+  --format text|json
+                    totals on stdout (default text)
+  --out DIR         also write DIR/fields.csv, profile.csv, result.json and
+                    the pictures (all or nothing: staged, then renamed; an
+                    existing DIR is replaced only if creepwork wrote it)
+  --no-plots        with --out: data files only
+
+signs: Fx, Fy, Mz, px, py, mz are the library's: they act on the WHEEL,
+opposite to the creepages (Kalker, CONTACT). The paper prints the force on
+the rail. Work is positive when dissipated, per unit rolling distance.
+
+JSON keys (stable; values in the --units system):
+  Fx Fy Mz W_macro W_micro_paper K W_consistent balance_factor work_flags
+  adhesion_fraction n_contact n_adhesion n_slip a b L1 L2 L3 C11 C22 C23 C33
+  profile_max_diff profile_rms_diff units sign_convention input{} unit_of{}
+  W_macro = -(Fx xi_x + Fy xi_y + Mz spin) (paper eq. 34); W_micro_paper is
+  the paper's summed local work and K = W_macro / W_micro_paper (eq. 39);
+  W_consistent sums the energy-consistent work map (= W_macro).
+
+files with --out:
+  fields.csv   one row per element, i fastest (nx*ny rows):
+               i,j,x,y,area,state,pz,px,py,sx,sy,mz,work_paper,work_consistent
+               state 0 exterior, 1 adhesion, 2 slip; sx, sy = W/V (-);
+               mz, work_* per element (moment, work per rolled distance)
+  profile.csv  j,y,w,parabola: lateral work profile (per unit width) and
+               the equal-area parabola (paper Figs. 8-9)
+  result.json  the JSON above
+  patch.png    the eight panels of the paper's Figs. 6-7 over (x/a, y/b)
+  slip_adhesion.png work.png traction_x.png traction_y.png slip_x.png
+  slip_y.png moment.png spin.png work_paper.png profile.png
+  gnuplot/     the scripts and data behind the pictures
+               (cd DIR && gnuplot gnuplot/patch.gp re-draws them)
+
+example (the paper's Fig. 6 contact in its units):
+  creepwork solve --units paper --a 0.0218554 --b 0.0109277 --N 10000 --mu 0.6 \
+      --G 11893094 --nu 0.25 --xi-x 0.0019 --xi-y 0.0011 --spin 0.144 \
+      --nx 7 --ny 7 --out fig6
+)";
+}
+
+const char* usage_sweep()
+{
+    return R"(usage: creepwork sweep --out DIR [options]
+
+Slip/adhesion maps for the series of creepages of the paper's Figs. 2-5
+(a/b = 2): one PNG per figure, each a grid of panels.
+  fig2.png  zero spin, xi_x = xi_y increasing
+  fig3.png  zero lateral creepage, xi_x increasing; small spin (top row),
+            large spin (bottom row)
+  fig4.png  zero longitudinal creepage, xi_y from negative to positive;
+            small spin (top row), large spin (bottom row)
+  fig5.png  pure spin, increasing
+The paper prints no creepage values for these figures. The series are set
+relative to the contact's own saturation creepages, so they keep their
+meaning for any contact: xi_c = 2 mu p0 L1 / a is the longitudinal creepage
+at which the centre strip of the simplified theory slips completely
+(p0 = 2N/(pi a b), parabolic), eta_c = 2 mu p0 L2 / a the lateral one, and
+phi_c = 2 mu p0 L3 / a^2 the spin at which the centre strip slips.
+
+contact (defaults: the paper's Fig. 6 contact as fitted by fit-fig6 --
+a = 6.6615 mm, b = a/2, N = 10000 lbf, mu = 0.6, G = 82 GPa, nu = 0.25,
+Kalker strip grid 40 x 40): --a --b --N --mu --G --nu --L1 --L2 --L3
+--pressure --rolling-direction --grid --nx --ny --box-scale --units
+(as for solve).
+output: --out DIR (required), --format text|json (the table of cases on
+stdout), --no-plots. DIR gets cases.csv (one row per panel: figure, panel,
+xi_x, xi_y, spin, Fx, Fy, Mz, adhesion_fraction, n_slip, n_contact) and
+fig2.png .. fig5.png with their gnuplot/ scripts.
+)";
+}
+
+const char* usage_fit_fig6()
+{
+    return R"(usage: creepwork fit-fig6 [--out DIR] [options]
+
+Reproduces the paper's Figs. 6 and 7, whose semi-axes and material the
+paper does not give.
+Fig. 6: xi_x = 0.0019, xi_y = 0.0011, spin = 0.144 1/ft, a/b = 2, mu = 0.6,
+  N = 10000 lbf; printed Fx = 2780.880 lbf, Fy = 3789.320 lbf,
+  Mz = 2.385 lbf ft, Wd = 9.795, K = 1.602 (Table 1).
+  The semi-axis a (b = a/2) is fitted by least squares on the two printed
+  forces: a scan of a over [1, 40] mm finds every local minimum, golden-
+  section search refines each. The forces reach the printed values on two
+  branches; the one whose creep moment agrees with the printed Mz is taken
+  (the other is nearly full slip with a moment 20 times larger). All minima
+  are printed. At the fitted a our creep moment, the plain integral of
+  (x py - y px), is 2.29 lbf ft: the printed Mz is the moment itself (no
+  extra factor a), and the printed Wd = Fx xi_x + Fy xi_y + Mz spin uses it.
+Fig. 7: xi_x = 0, xi_y = 0.0022, spin = 0.576 1/ft, a/b = 1.8, mu = 0.6,
+  N = 6345.8 lbf; printed Fy = 3255.332 lbf, Mz = 9.971 lbf ft,
+  Wd = 12.905, K = 1.424. Its a is fitted the same way to the printed Fy
+  (the contact differs from Fig. 6's -- other a/b, other load -- so Hertz
+  scaling of Fig. 6's a is only shown for comparison).
+Defaults: steel G = 82 GPa; nu = 0.25, a node of Kalker's table and the
+value whose C11/C22 ratio reproduces the printed Fx/Fy (RMS misfit 0.5 lbf;
+nu = 0.28 gives 15 lbf, 0.30 gives 26 lbf); parabolic pressure (paper
+eq. 16); Kalker strip grid 7 x 7: the paper's grid is not given, and K
+depends on the grid (K -> 1 as it is refined); 7 x 7 reproduces the printed
+K = 1.602 of Fig. 6 (1.606).
+
+options: --G --nu --nx --ny --units si|paper (units of --G, the JSON, the
+files and the pictures; the text shows both), --format text|json, --out DIR
+(pictures of Fig. 6 in DIR, of Fig. 7 in DIR/fig7, plus fields.csv,
+profile.csv, result.json in each), --no-plots.
+)";
+}
+
+} // namespace cwcli
