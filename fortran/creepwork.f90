@@ -774,7 +774,7 @@ contains
       type(cw_result), intent(inout), optional, target :: result
       integer, intent(out), optional :: stat
       character(len=:), allocatable, intent(out), optional :: errmsg
-      integer(c_int) :: m
+      integer(c_int) :: m, status
       type(c_ptr) :: r
       type(outcome) :: o
       if (.not. c_associated(self%handle)) then
@@ -787,7 +787,15 @@ contains
             if (result%struct_size == 0) call cw_result_init(result)
             r = c_loc(result)
          end if
-         o = solver_outcome(self, capi_solver_solve(self%handle, params, m, r))
+         status = capi_solver_solve(self%handle, params, m, r)
+         ! Success path without building an outcome (no allocation): this
+         ! call sits in the caller's time loop.
+         if (status == CW_OK) then
+            if (present(stat)) stat = CW_OK
+            if (present(errmsg)) errmsg = ''
+            return
+         end if
+         o = solver_outcome(self, status)
       end if
       if (present(errmsg)) errmsg = error_text(o)
       call deliver(o, stat)
@@ -818,13 +826,20 @@ contains
       integer, intent(out), optional :: stat
       character(len=:), allocatable, intent(out), optional :: errmsg
       type(outcome) :: o
+      integer(c_int) :: status
       if (.not. c_associated(self%handle)) then
          o = not_created('solver')
-      else
+      else if (size(out, 1) /= self%nx .or. size(out, 2) /= self%ny) then
          o = map_shape(size(out, 1), size(out, 2), self%nx, self%ny)
-         if (o%status == CW_OK) &
-            o = solver_outcome(self, capi_solver_get_field(self%handle, int(field, c_int), out, &
-                                                           size(out, kind=c_size_t)))
+      else
+         status = capi_solver_get_field(self%handle, int(field, c_int), out, &
+                                        size(out, kind=c_size_t))
+         if (status == CW_OK) then ! no outcome on success: no allocation
+            if (present(stat)) stat = CW_OK
+            if (present(errmsg)) errmsg = ''
+            return
+         end if
+         o = solver_outcome(self, status)
       end if
       if (present(errmsg)) errmsg = error_text(o)
       call deliver(o, stat)
@@ -838,11 +853,18 @@ contains
       integer, intent(out), optional :: stat
       character(len=:), allocatable, intent(out), optional :: errmsg
       type(outcome) :: o
+      integer(c_int) :: status
       if (.not. c_associated(self%handle)) then
          o = not_created('solver')
       else
-         o = solver_outcome(self, capi_solver_get_field(self%handle, int(field, c_int), out, &
-                                                        size(out, kind=c_size_t)))
+         status = capi_solver_get_field(self%handle, int(field, c_int), out, &
+                                        size(out, kind=c_size_t))
+         if (status == CW_OK) then ! no outcome on success: no allocation
+            if (present(stat)) stat = CW_OK
+            if (present(errmsg)) errmsg = ''
+            return
+         end if
+         o = solver_outcome(self, status)
       end if
       if (present(errmsg)) errmsg = error_text(o)
       call deliver(o, stat)
