@@ -127,7 +127,8 @@ NormalisedForces kalker_fastsim_normalised(double ux, double uy, double fx, doub
     // Unit-disk load integral pi/2; signs as Kalker's program printed them
     // (kalker_normalised.hpp): the march gives the wheel's traction.
     const double scale = 2.0 / 3.14159265358979323846;
-    return {-scale * tx, scale * ty};
+    // + 0.0 turns a -0 (no force) into 0, as Kalker's program printed it.
+    return {-scale * tx + 0.0, scale * ty + 0.0};
 }
 
 } // namespace creepwork
