@@ -262,7 +262,7 @@ cw_result to_result(const cw::SolveTotals& t)
     r.W_micro_paper = t.W_micro_paper;
     r.K = t.K;
     r.W_consistent = t.W_consistent;
-    r.balance_factor = t.spin_factor;
+    r.balance_factor = t.balance_factor;
     r.adhesion_fraction = t.adhesion_fraction;
     r.n_contact = t.n_contact;
     r.n_adhesion = t.n_adhesion;

@@ -60,7 +60,8 @@ struct SolveTotals {
     double W_micro_paper = 0;             // sum of the paper's local work [J/m]
     double K = 0;                         // W_macro / W_micro_paper (0 if undefined)
     double W_consistent = 0;              // sum of the energy-consistent map [J/m]
-    double spin_factor = 1;               // W_macro / model power (1 without spin or with L1=L2=L3)
+    double balance_factor = 1;            // W_macro / model energy terms (work.hpp); 1 on the
+                                          // uniform grid without spin or with L1=L2=L3
     double adhesion_fraction = 0;         // n_adhesion / n_contact
     int n_contact = 0, n_adhesion = 0, n_slip = 0;
     int work_flags = 0;

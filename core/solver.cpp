@@ -72,14 +72,14 @@ const SolveTotals& Solver::solve(const ContactInput& input, SolveMode mode)
         t.W_micro_paper = w.W_micro_paper;
         t.K = w.W_micro_paper != 0.0 ? t.W_macro / w.W_micro_paper : 0.0;
         t.W_consistent = w.W_consistent;
-        t.spin_factor = w.balance;
+        t.balance_factor = w.balance;
         t.work_flags = w.flags;
         t.profile_max_diff = w.profile_max_diff;
         t.profile_rms_diff = w.profile_rms_diff;
     }
 
     const double checks[] = {t.Fx, t.Fy, t.Mz, t.W_macro, t.W_micro_paper, t.K, t.W_consistent,
-                             t.spin_factor, t.profile_max_diff, t.profile_rms_diff};
+                             t.balance_factor, t.profile_max_diff, t.profile_rms_diff};
     for (double v : checks)
         if (!std::isfinite(v))
             throw Error(ErrorKind::numeric_failure,

@@ -57,7 +57,7 @@ void assert_totals_equal(const cw_result& r, const cw::SolveTotals& t)
     assert_true(same(r.Fx, t.Fx) && same(r.Fy, t.Fy) && same(r.Mz, t.Mz));
     assert_true(same(r.W_macro, t.W_macro) && same(r.W_micro_paper, t.W_micro_paper));
     assert_true(same(r.K, t.K) && same(r.W_consistent, t.W_consistent));
-    assert_true(same(r.balance_factor, t.spin_factor));
+    assert_true(same(r.balance_factor, t.balance_factor));
     assert_true(same(r.adhesion_fraction, t.adhesion_fraction));
     assert_int_equal(r.n_contact, t.n_contact);
     assert_int_equal(r.n_adhesion, t.n_adhesion);

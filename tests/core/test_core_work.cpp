@@ -37,12 +37,12 @@ void discrete_energy_identity(void**)
     for (int n : {7, 24, 101}) {
         cw::Solver s(cwtest::uniform_grid(n, n + 3, 1.07));
         const cw::SolveTotals a = s.solve(contact(0.0007, 0.0004, 0.0, 1.7));
-        assert_close(a.spin_factor, 1.0, 1e-12, 0.0);
+        assert_close(a.balance_factor, 1.0, 1e-12, 0.0);
         cw::ContactInput single = contact(0.0007, 0.0004, 0.6, 1.7);
         single.flexibility = cw::FlexibilitySource::given;
         single.L1 = single.L2 = single.L3 = 5e-14;
         const cw::SolveTotals b = s.solve(single);
-        assert_close(b.spin_factor, 1.0, 1e-12, 0.0);
+        assert_close(b.balance_factor, 1.0, 1e-12, 0.0);
     }
 }
 
@@ -57,7 +57,7 @@ void spin_defect_is_a_model_property(void**)
     const int n[3] = {40, 160, 320};
     for (int k = 0; k < 3; ++k) {
         cw::Solver s(cwtest::uniform_grid(n[k], n[k]));
-        factor[k] = s.solve(in).spin_factor;
+        factor[k] = s.solve(in).balance_factor;
     }
     printf("  W_macro / model power, spin case: %.5f %.5f %.5f\n", factor[0], factor[1], factor[2]);
     assert_close(factor[1], factor[2], 2e-4, 0.0);
