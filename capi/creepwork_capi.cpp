@@ -13,10 +13,10 @@
 #include <omp.h>
 #endif
 
-#include "error.hpp"
-#include "hertz.hpp"
-#include "kalker_coefficients.hpp"
-#include "kalker_normalised.hpp"
+#include "contact/error.hpp"
+#include "contact/hertz.hpp"
+#include "contact/kalker_coefficients.hpp"
+#include "fastsim/kalker_normalised.hpp"
 #include "solver.hpp"
 
 namespace cw = creepwork;
@@ -63,6 +63,7 @@ int map_kind(cw::ErrorKind kind)
     case cw::ErrorKind::invalid_input: return CW_ERR_INVALID_INPUT;
     case cw::ErrorKind::grid_out_of_range: return CW_ERR_GRID_OUT_OF_RANGE;
     case cw::ErrorKind::numeric_failure: return CW_ERR_NUMERIC;
+    case cw::ErrorKind::not_converged: return CW_ERR_NOT_CONVERGED;
     }
     return CW_ERR_INTERNAL;
 }
@@ -183,6 +184,9 @@ cw_params default_params()
     p.G = 82e9;
     p.nu = 0.28;
     p.rolling_direction = 1;
+    p.model = CW_MODEL_FASTSIM;
+    p.warm_start = 1;
+    p.spin_offset = CW_SPIN_OFFSET_DEFAULT;
     return p;
 }
 
@@ -239,6 +243,28 @@ cw::ContactInput to_input(const cw_params* params)
     in.xi_y = p.xi_y;
     in.phi = p.phi;
     in.rolling_direction = p.rolling_direction;
+    if (p.model == CW_MODEL_FASTSIM)
+        in.model = cw::ModelKind::fastsim;
+    else if (p.model == CW_MODEL_EXACT)
+        in.model = cw::ModelKind::exact;
+    else if (p.model == CW_MODEL_CALIBRATED)
+        in.model = cw::ModelKind::calibrated;
+    else
+        fail(CW_ERR_UNKNOWN_OPTION, "params->model = " + std::to_string(p.model) +
+                                        " is not CW_MODEL_FASTSIM (0), CW_MODEL_EXACT (1) or "
+                                        "CW_MODEL_CALIBRATED (2)");
+    in.tolerance = p.tolerance;
+    in.max_iterations = p.max_iterations;
+    if (p.warm_start != 0 && p.warm_start != 1)
+        fail(CW_ERR_INVALID_INPUT,
+             "params->warm_start = " + std::to_string(p.warm_start) + " must be 0 or 1");
+    in.warm_start = p.warm_start == 1;
+    in.spin_offset = p.spin_offset;
+    if (p.flexibility_blending != 0 && p.flexibility_blending != 1)
+        fail(CW_ERR_INVALID_INPUT, "params->flexibility_blending = " +
+                                       std::to_string(p.flexibility_blending) +
+                                       " must be 0 or 1");
+    in.flexibility_blending = p.flexibility_blending == 1;
     return in;
 }
 
@@ -279,6 +305,11 @@ cw_result to_result(const cw::SolveTotals& t)
     r.C33 = t.C33;
     r.profile_max_diff = t.profile_max_diff;
     r.profile_rms_diff = t.profile_rms_diff;
+    r.model = static_cast<int>(t.model);
+    r.p_max = t.p_max;
+    r.approach = t.approach;
+    r.iterations = t.iterations;
+    r.residual = t.residual;
     return r;
 }
 

@@ -1,64 +1,38 @@
-// The solver object: made once per grid (it owns the grid geometry and every
-// workspace, and picks the kernel for this CPU), then solve() many times
-// without allocating. Fields are copied out in the caller's layout: element
-// (i, j) at [i + j*nx], i along x (increasing x), j along y (increasing y) --
-// column-major, i fastest, so a Fortran array (nx, ny) maps directly. The
-// copy transposes the kernels' layout [m*stride + j] (fastsim.hpp) in 4 x 4
-// blocks (2 x 2 for SSE2) and computes each field on the way, so no field is
-// stored twice.
+// The solver object: one per grid, holding every model of the contact
+// (fastsim/, and the models that need more memory, made on first use or by
+// prepare()), dispatching each solve to the model the input asks for, and
+// exporting the fields of the last solve in the caller's layout
+// (contact/fields.hpp).
 #pragma once
 
-#include "contact_grid.hpp"
-#include "fastsim.hpp"
-#include "model_setup.hpp"
-#include "params.hpp"
-#include "work.hpp"
+#include "contact/fields.hpp"
+#include "contact/params.hpp"
+#include "fastsim/fastsim_model.hpp"
 
 namespace creepwork {
-
-enum class Field {
-    x,               // element centre x [m]
-    y,               // element centre y [m]
-    area,            // element area [m^2]
-    pz,              // normal pressure [Pa]
-    px,              // tangential traction on the wheel, x [Pa]
-    py,              // tangential traction on the wheel, y [Pa]
-    sx,              // micro-slip W_x/V [-] (model slip, 0 in adhesion)
-    sy,              // micro-slip W_y/V [-]
-    mz,              // moment contribution (x py - y px) area [N m]
-    work_paper,      // paper's local work per unit rolling distance [J/m]
-    work_consistent, // energy-consistent local work [J/m]
-};
-
-enum class ElementState { exterior = 0, adhesion = 1, slip = 2 };
-
-enum class SolveMode {
-    forces_only, // totals, tractions and states; no slip or work fields
-    full,        // also micro-slip, moment, both work maps and the profile
-};
 
 class Solver {
 public:
     explicit Solver(const GridSpec& grid);
 
-    // Throws Error(invalid_input) naming a bad input; the previous solution
-    // is then marked absent.
+    // Throws Error naming a bad input; the previous solution is then marked
+    // absent.
     const SolveTotals& solve(const ContactInput& input, SolveMode mode = SolveMode::full);
 
-    const ContactGrid& grid() const { return grid_; }
+    const ContactGrid& grid() const { return fastsim_.grid(); }
     const SolveTotals& totals() const { return totals_; }
     bool has_solution() const { return solved_; }
     bool has_work() const { return solved_ && mode_ == SolveMode::full; }
     // Marks the last solution absent: the C ABI does so when it rejects a
     // solve before reaching solve() (mode, struct sizes, enumerations).
     void discard() { solved_ = false; }
-    static bool needs_work(Field f);
+    static bool needs_work(Field f) { return field_needs_work(f); }
 
-    // The kernel in use: best_kernel_isa() unless set. Every kernel gives
-    // bitwise the same results; set_kernel_isa is for tests and benchmarks
-    // and throws Error(invalid_input) when this CPU cannot run the kernel.
-    KernelIsa kernel_isa() const { return isa_; }
-    void set_kernel_isa(KernelIsa isa);
+    // The FASTSIM kernel in use: best_kernel_isa() unless set. Every kernel
+    // gives bitwise the same results; set_kernel_isa is for tests and
+    // benchmarks and throws Error(invalid_input) when this CPU cannot run it.
+    KernelIsa kernel_isa() const { return fastsim_.kernel_isa(); }
+    void set_kernel_isa(KernelIsa isa) { fastsim_.set_kernel_isa(isa); }
 
     // out[i + j*nx] for i < nx, j < ny. Preconditions (checked by the
     // caller): has_solution(), and has_work() for fields that need it.
@@ -71,17 +45,9 @@ public:
     void copy_profile(double* y, double* work, double* parabola) const;
 
 private:
-    template <class Op>
-    void export_field(Field f, const Op& op, double* out) const;
-
-    ContactGrid grid_;
-    MarchGeometry geometry_; // the grid in the kernels' layout
-    MarchState march_;
-    WorkState work_;
-    ModelSetup setup_;
+    FastsimModel fastsim_;
     SolveTotals totals_;
     SolveMode mode_ = SolveMode::full;
-    KernelIsa isa_ = KernelIsa::baseline;
     bool solved_ = false;
 };
 

@@ -64,6 +64,13 @@ module creepwork
       real(c_double) :: xi_y = 0          ! lateral creepage [-]
       real(c_double) :: phi = 0           ! spin creepage [1/m]
       integer(c_int) :: rolling_direction = 0 ! +1: leading edge at x = +a; -1: at -a
+      ! appended in 1.1
+      integer(c_int) :: model = 0         ! CW_MODEL_FASTSIM, CW_MODEL_EXACT, CW_MODEL_CALIBRATED
+      real(c_double) :: tolerance = 0     ! exact model: relative tolerance (0: default)
+      integer(c_int) :: max_iterations = 0 ! exact model: iteration bound (0: default)
+      integer(c_int) :: warm_start = 0    ! exact model: 1 start from the last solution
+      real(c_double) :: spin_offset = 0   ! CONTACT's facphi (CW_SPIN_OFFSET_DEFAULT: model's own)
+      integer(c_int) :: flexibility_blending = 0 ! FASTSIM: 1 = CONTACT's blending of L1..L3
    end type cw_params
 
    ! Totals of a solve (cw_result); see the header for each field.
@@ -84,6 +91,12 @@ module creepwork
       real(c_double) :: C11 = 0, C22 = 0, C23 = 0, C33 = 0
       real(c_double) :: profile_max_diff = 0
       real(c_double) :: profile_rms_diff = 0
+      ! appended in 1.1
+      integer(c_int) :: model = 0         ! the CW_MODEL_* that produced this result
+      real(c_double) :: p_max = 0         ! largest element pressure [Pa]
+      real(c_double) :: approach = 0      ! normal approach [m]
+      integer(c_int) :: iterations = 0    ! exact model: iterations of the tangential solve
+      real(c_double) :: residual = 0      ! exact model: final relative residual
    end type cw_result
 
    ! Running totals of an accumulator (cw_accumulation), paper eqs. 35, 37.

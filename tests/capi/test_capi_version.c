@@ -47,6 +47,7 @@ static void status_codes_are_frozen(void** state)
     assert_int_equal(CW_ERR_UNKNOWN_OPTION, 10);
     assert_int_equal(CW_ERR_GRID_MISMATCH, 11);
     assert_int_equal(CW_ERR_INTERNAL, 12);
+    assert_int_equal(CW_ERR_NOT_CONVERGED, 13);
     assert_true(CW_STATUS_END_ > CW_ERR_INTERNAL); /* later codes go after */
 }
 

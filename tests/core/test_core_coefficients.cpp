@@ -2,8 +2,8 @@
 #include "core_test_support.hpp"
 #include "test_support.h"
 
-#include "hertz.hpp"
-#include "kalker_coefficients.hpp"
+#include "contact/hertz.hpp"
+#include "contact/kalker_coefficients.hpp"
 
 namespace cw = creepwork;
 

@@ -1,4 +1,4 @@
-// The kernels (core/fastsim.hpp): the march and the work pass are compiled
+// The kernels (core/fastsim/march.hpp): the march and the work pass are compiled
 // for SSE2, AVX2 and AVX-512 and a solver picks one per CPU. Every kernel
 // this CPU runs must give bitwise the same totals, fields, states and
 // profile (issue 2, "results must be bitwise reproducible"); and the march,
@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "core_test_support.hpp"
-#include "error.hpp"
+#include "contact/error.hpp"
 #include "test_support.h"
 
 namespace cw = creepwork;

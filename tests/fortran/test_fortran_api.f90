@@ -41,7 +41,7 @@ contains
       write (expected, '(i0,".",i0,".",i0)') CW_VERSION_MAJOR, CW_VERSION_MINOR, CW_VERSION_PATCH
       call check_string(cw_version_string(), trim(expected), 'cw_version_string()')
       ! Codes are appended, never renumbered: 0, 1, 2, ... in list order.
-      call check_int(CW_STATUS_COUNT, 13, 'number of status codes in CW_STATUS_LIST')
+      call check_int(CW_STATUS_COUNT, 14, 'number of status codes in CW_STATUS_LIST')
       do k = 1, CW_STATUS_COUNT
          call check_int(int(CW_STATUS_CODES(k)), k - 1, 'status codes are consecutive')
          call check_string(cw_status_string(int(CW_STATUS_CODES(k))), trim(CW_STATUS_MESSAGES(k)), &
@@ -49,6 +49,7 @@ contains
       end do
       call check_int(int(CW_OK), 0, 'CW_OK')
       call check_int(int(CW_ERR_INTERNAL), 12, 'CW_ERR_INTERNAL')
+      call check_int(int(CW_ERR_NOT_CONVERGED), 13, 'CW_ERR_NOT_CONVERGED')
       call check_string(cw_status_string(-1), 'unknown status code', 'cw_status_string(-1)')
       call check_string(cw_status_string(CW_STATUS_COUNT), 'unknown status code', &
                         'cw_status_string(past the list)')

@@ -84,7 +84,8 @@ CW_API const char* cw_version_string(void); /* "1.0.0", static */
     X(CW_ERR_NUMERIC, 9, "a result is not finite: inputs too extreme")                 \
     X(CW_ERR_UNKNOWN_OPTION, 10, "unknown field, mode or enumeration value")           \
     X(CW_ERR_GRID_MISMATCH, 11, "accumulator and solver grids differ")                 \
-    X(CW_ERR_INTERNAL, 12, "internal error (please report)")
+    X(CW_ERR_INTERNAL, 12, "internal error (please report)")                           \
+    X(CW_ERR_NOT_CONVERGED, 13, "the iterative solver reached its iteration bound")
 
 #define CW_STATUS_ENUMERATOR_(name, value, message) name = value,
 enum cw_status { CW_STATUS_LIST(CW_STATUS_ENUMERATOR_) CW_STATUS_END_ };
@@ -110,6 +111,15 @@ CW_API const char* cw_status_string(int status);
 /* cw_params.pressure: normal pressure and traction bound mu*pz */
 #define CW_PRESSURE_PARABOLIC 0 /* 2N/(pi a b) (1 - x^2/a^2 - y^2/b^2), paper eq. 16 */
 #define CW_PRESSURE_ELLIPTIC 1  /* 3N/(2 pi a b) sqrt(1 - x^2/a^2 - y^2/b^2), Hertz */
+
+/* cw_params.model: how the tangential tractions are found */
+#define CW_MODEL_FASTSIM 0    /* Kalker's simplified theory, FASTSIM (default) */
+#define CW_MODEL_EXACT 1      /* Kalker's exact half-space theory (CONTACT's method),
+                                 uniform grid and G, nu needed */
+#define CW_MODEL_CALIBRATED 2 /* simplified theory calibrated to the exact theory */
+
+/* cw_params.spin_offset: the model's own default (0 FASTSIM, 1/6 exact) */
+#define CW_SPIN_OFFSET_DEFAULT -1.0
 
 /* cw_params.flexibility */
 #define CW_FLEX_FROM_MATERIAL 0 /* L1, L2, L3 from G, nu and Kalker's C11, C22, C23 */
@@ -173,6 +183,19 @@ typedef struct cw_params {
     double xi_y;           /* lateral creepage [-] */
     double phi;            /* spin creepage [1/m] */
     int rolling_direction; /* +1 (default): leading edge at x = +a; -1: at x = -a */
+    /* ---- appended in 1.1 ---- */
+    int model;             /* CW_MODEL_FASTSIM (default), CW_MODEL_EXACT, CW_MODEL_CALIBRATED */
+    double tolerance;      /* exact model: relative tolerance of the tangential solve;
+                              0 (default) = the model's default (README "Exact model") */
+    int max_iterations;    /* exact model: iteration bound; 0 (default) = the model's
+                              default; reaching it is CW_ERR_NOT_CONVERGED */
+    int warm_start;        /* exact model: 1 (default) starts from the handle's last
+                              solution, 0 from full adhesion (same answer to tolerance) */
+    double spin_offset;    /* CONTACT's facphi: rigid spin slip taken at x + spin_offset*dx
+                              (uniform grid); CW_SPIN_OFFSET_DEFAULT (default): 0 for
+                              FASTSIM (Kalker 1982), 1/6 for the exact model (CONTACT) */
+    int flexibility_blending; /* FASTSIM: 1 = CONTACT's blending of L1..L3 for combined
+                                 creepages, 0 (default) = Kalker's L1, L2, L3 */
 } cw_params;
 
 /* Defaults: steel (G = 82e9 Pa, nu = 0.28), mu = 0.3, a = b = 6e-3 m,
@@ -200,6 +223,13 @@ typedef struct cw_result {
     double C11, C22, C23, C33;/* Kalker coefficients used; 0 when L's were given */
     double profile_max_diff;  /* lateral work profile vs equal-area parabola, max |diff| / peak */
     double profile_rms_diff;  /* ... RMS difference / peak (FULL) */
+    /* ---- appended in 1.1 ---- */
+    int model;                /* the CW_MODEL_* that produced this result */
+    double p_max;             /* largest element pressure [Pa] */
+    double approach;          /* normal approach [m]: exact model, of the discrete normal
+                                 problem; FASTSIM, Hertz's value (0 with given L1..L3) */
+    int iterations;           /* exact model: iterations of the tangential solve; else 0 */
+    double residual;          /* exact model: final relative residual; else 0 */
 } cw_result;
 
 /* Zeroes the result and sets struct_size. Errors: CW_ERR_NULL_POINTER. */

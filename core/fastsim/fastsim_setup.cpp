@@ -1,76 +1,23 @@
-#include "model_setup.hpp"
+#include "fastsim/fastsim_setup.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <string>
 
-#include "error.hpp"
+#include "contact/contact_input.hpp"
+#include "contact/error.hpp"
 
 namespace creepwork {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-[[noreturn]] void reject(const char* name, double value, const char* rule)
-{
-    std::ostringstream msg;
-    msg.precision(17);
-    msg << name << " = " << value << " is invalid: " << rule;
-    throw Error(ErrorKind::invalid_input, msg.str());
-}
-
-void require_finite(const char* name, double v)
-{
-    if (!std::isfinite(v)) reject(name, v, "must be a finite number");
-}
-
-void require_positive(const char* name, double v)
-{
-    require_finite(name, v);
-    if (!(v > 0.0)) reject(name, v, "must be > 0");
-}
-
-void require_non_negative(const char* name, double v)
-{
-    require_finite(name, v);
-    if (!(v >= 0.0)) reject(name, v, "must be >= 0");
-}
-
-void validate(const ContactInput& in)
-{
-    require_positive("a", in.a);
-    require_positive("b", in.b);
-    const double ratio = in.a / in.b;
-    if (!(ratio >= kMinAspect && ratio <= kMaxAspect))
-        reject("a/b", ratio, "must lie in [1e-3, 1e3] (range of Kalker's coefficients)");
-    require_non_negative("normal_force", in.normal_force);
-    require_non_negative("mu", in.mu);
-    if (in.flexibility == FlexibilitySource::kalker_from_material) {
-        require_positive("G", in.G);
-        require_finite("nu", in.nu);
-        if (!(in.nu >= 0.0 && in.nu <= 0.5)) reject("nu", in.nu, "must lie in [0, 0.5]");
-    } else if (in.flexibility == FlexibilitySource::given) {
-        require_positive("L1", in.L1);
-        require_positive("L2", in.L2);
-        require_positive("L3", in.L3);
-    } else {
-        reject("flexibility", static_cast<double>(in.flexibility), "unknown flexibility source");
-    }
-    require_finite("xi_x", in.xi_x);
-    require_finite("xi_y", in.xi_y);
-    require_finite("phi", in.phi);
-    if (in.pressure != PressureKind::parabolic && in.pressure != PressureKind::elliptic)
-        reject("pressure", static_cast<double>(in.pressure), "unknown pressure law");
-    if (in.rolling_direction != 1 && in.rolling_direction != -1)
-        reject("rolling_direction", in.rolling_direction, "must be +1 or -1");
-}
-
 } // namespace
 
 ModelSetup make_model_setup(const ContactInput& in)
 {
-    validate(in);
+    validate_contact_input(in);
     ModelSetup s;
     s.a = in.a;
     s.b = in.b;

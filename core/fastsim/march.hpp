@@ -19,8 +19,8 @@
 
 #include <Eigen/Core>
 
-#include "contact_grid.hpp"
-#include "model_setup.hpp"
+#include "contact/contact_grid.hpp"
+#include "fastsim/fastsim_setup.hpp"
 
 #if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
 #define CREEPWORK_X86_KERNELS 1

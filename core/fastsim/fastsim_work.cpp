@@ -1,4 +1,4 @@
-#include "work.hpp"
+#include "fastsim/fastsim_work.hpp"
 
 #include <algorithm>
 #include <cmath>

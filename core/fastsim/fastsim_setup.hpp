@@ -3,8 +3,8 @@
 // creepages in the rolling frame.
 #pragma once
 
-#include "kalker_coefficients.hpp"
-#include "params.hpp"
+#include "contact/kalker_coefficients.hpp"
+#include "contact/params.hpp"
 
 namespace creepwork {
 

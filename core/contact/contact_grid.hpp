@@ -10,7 +10,7 @@
 
 #include <Eigen/Core>
 
-#include "params.hpp"
+#include "contact/params.hpp"
 
 namespace creepwork {
 

@@ -12,6 +12,7 @@ enum class ErrorKind {
     invalid_input,     // NaN/Inf, out-of-range or inconsistent parameter
     grid_out_of_range, // nx, ny or box scale outside the documented limits
     numeric_failure,   // a non-finite intermediate result (never returned)
+    not_converged,     // an iterative model hit its iteration bound (never returned silently)
 };
 
 class Error : public std::runtime_error {

@@ -14,6 +14,13 @@ enum class PressureKind {
     elliptic,  // pz = 3N/(2 pi a b) sqrt(1 - x^2/a^2 - y^2/b^2), Hertz
 };
 
+// The models of the contact: how the tangential tractions are found.
+enum class ModelKind {
+    fastsim = 0,    // Kalker's simplified theory, FASTSIM (fastsim/)
+    exact = 1,      // Kalker's exact half-space theory on CONTACT's uniform grid (exact/)
+    calibrated = 2, // simplified theory calibrated to the exact one (calibrated/)
+};
+
 enum class FlexibilitySource {
     kalker_from_material, // L1, L2, L3 from G, nu and Kalker's C11, C22, C23
     given,                // L1, L2, L3 supplied by the caller
@@ -48,6 +55,18 @@ struct ContactInput {
     double phi = 0.0;          // spin creepage [1/m]
     PressureKind pressure = PressureKind::parabolic;
     int rolling_direction = 1; // +1: leading edge at x = +a; -1: at x = -a
+    ModelKind model = ModelKind::fastsim;
+    // Iterative models (exact): relative tolerance and iteration bound (0:
+    // the model's default), and whether to start from the last solution.
+    double tolerance = 0.0;
+    int max_iterations = 0;
+    bool warm_start = true;
+    // CONTACT's facphi: the spin centre of the rigid slip shifted by
+    // spin_offset * dx along x (uniform grid). Negative: the model's default
+    // (0 for FASTSIM as Kalker 1982, 1/6 for exact as CONTACT).
+    double spin_offset = -1.0;
+    // FASTSIM: CONTACT's blending of L1, L2, L3 for combined creepages.
+    bool flexibility_blending = false;
 };
 
 // Flags in SolveTotals::work_flags.
@@ -70,6 +89,11 @@ struct SolveTotals {
     double C11 = 0, C22 = 0, C23 = 0, C33 = 0; // 0 when the flexibilities were given
     double profile_max_diff = 0;          // lateral work vs equal-area parabola, / peak
     double profile_rms_diff = 0;
+    ModelKind model = ModelKind::fastsim;
+    double p_max = 0;                     // largest element pressure [Pa]
+    double approach = 0;                  // normal approach [m] (exact: of the grid solution)
+    int iterations = 0;                   // iterative models: iterations of the last solve
+    double residual = 0;                  // iterative models: final relative residual
 };
 
 } // namespace creepwork

@@ -1,4 +1,4 @@
-#include "fastsim.hpp"
+#include "fastsim/march.hpp"
 
 namespace creepwork {
 

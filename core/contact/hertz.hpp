@@ -27,4 +27,15 @@ struct HertzContact {
 // (1/E* = (1-nu1^2)/E1 + (1-nu2^2)/E2; for identical bodies E* = G/(1-nu)).
 HertzContact hertz_from_curvatures(double A, double B, double N, double E_star);
 
+// The same contact from its semi-axes: the gap coefficients A, B (h = A x^2
+// + B y^2) and the approach that Hertz's theory gives for semi-axes a, b
+// under N with contact modulus E* (the inverse of hertz_from_curvatures;
+// CONTACT's hzcalc3d for IPOTCN = -3).
+struct HertzCurvatures {
+    double A, B;     // gap coefficients [1/m]
+    double p0;       // 3N/(2 pi a b) [Pa]
+    double approach; // [m]
+};
+HertzCurvatures hertz_from_semi_axes(double a, double b, double N, double E_star);
+
 } // namespace creepwork

@@ -1,4 +1,4 @@
-#include "kalker_coefficients.hpp"
+#include "contact/kalker_coefficients.hpp"
 
 #include <algorithm>
 #include <cmath>

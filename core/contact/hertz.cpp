@@ -1,4 +1,4 @@
-#include "hertz.hpp"
+#include "contact/hertz.hpp"
 
 #include <cmath>
 
@@ -79,6 +79,31 @@ HertzContact hertz_from_curvatures(double A, double B, double N, double E_star)
     h.b = A <= B ? minor : major;
     h.p0 = major > 0.0 ? 3.0 * N / (2.0 * kPi * major * minor) : 0.0;
     h.approach = h.p0 * minor * ell.K / E_star;
+    return h;
+}
+
+HertzCurvatures hertz_from_semi_axes(double a, double b, double N, double E_star)
+{
+    // Johnson eqs. 4.38-4.39 with e^2 = 1 - (small/big)^2: with
+    // c = p0 small/(E* e^2 big^2), the curvature along the major axis is
+    // c (K - E) and along the minor axis c ((big/small)^2 E - K); for e -> 0
+    // both tend to p0 pi/(4 E* a).
+    const double big = a > b ? a : b, small = a > b ? b : a;
+    const double k = std::sqrt((1.0 - small / big) * (1.0 + small / big));
+    const EllipticIntegrals ell = complete_elliptic_integrals(k);
+    HertzCurvatures h{};
+    h.p0 = 3.0 * N / (2.0 * kPi * a * b);
+    double along_major, along_minor;
+    if (k > 0.0) {
+        const double c = h.p0 * small / (E_star * k * k * big * big);
+        along_major = c * ell.K_minus_E;
+        along_minor = c * ((big / small) * (big / small) * ell.E - ell.K);
+    } else {
+        along_major = along_minor = h.p0 * kPi / (4.0 * E_star * a);
+    }
+    h.A = a >= b ? along_major : along_minor;
+    h.B = a >= b ? along_minor : along_major;
+    h.approach = h.p0 * small * ell.K / E_star;
     return h;
 }
 

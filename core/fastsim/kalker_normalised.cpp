@@ -1,12 +1,12 @@
-#include "kalker_normalised.hpp"
+#include "fastsim/kalker_normalised.hpp"
 
 #include <cmath>
 #include <string>
 
-#include "contact_grid.hpp"
-#include "error.hpp"
-#include "fastsim.hpp"
-#include "model_setup.hpp"
+#include "contact/contact_grid.hpp"
+#include "contact/error.hpp"
+#include "fastsim/march.hpp"
+#include "fastsim/fastsim_setup.hpp"
 
 namespace creepwork {
 namespace {

@@ -1,9 +1,9 @@
-#include "contact_grid.hpp"
+#include "contact/contact_grid.hpp"
 
 #include <cmath>
 #include <string>
 
-#include "error.hpp"
+#include "contact/error.hpp"
 
 namespace creepwork {
 namespace {

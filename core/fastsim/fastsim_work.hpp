@@ -33,9 +33,9 @@
 
 #include <Eigen/Core>
 
-#include "contact_grid.hpp"
-#include "fastsim.hpp"
-#include "model_setup.hpp"
+#include "contact/contact_grid.hpp"
+#include "fastsim/march.hpp"
+#include "fastsim/fastsim_setup.hpp"
 
 namespace creepwork {
 

@@ -1,0 +1,77 @@
+#include "contact/contact_input.hpp"
+
+#include <cmath>
+#include <sstream>
+#include <string>
+
+#include "contact/error.hpp"
+
+namespace creepwork {
+
+[[noreturn]] void reject_input(const char* name, double value, const char* rule)
+{
+    std::ostringstream msg;
+    msg.precision(17);
+    msg << name << " = " << value << " is invalid: " << rule;
+    throw Error(ErrorKind::invalid_input, msg.str());
+}
+
+void require_finite(const char* name, double v)
+{
+    if (!std::isfinite(v)) reject_input(name, v, "must be a finite number");
+}
+
+void require_positive(const char* name, double v)
+{
+    require_finite(name, v);
+    if (!(v > 0.0)) reject_input(name, v, "must be > 0");
+}
+
+void require_non_negative(const char* name, double v)
+{
+    require_finite(name, v);
+    if (!(v >= 0.0)) reject_input(name, v, "must be >= 0");
+}
+
+void validate_contact_input(const ContactInput& in)
+{
+    require_positive("a", in.a);
+    require_positive("b", in.b);
+    const double ratio = in.a / in.b;
+    if (!(ratio >= kMinAspect && ratio <= kMaxAspect))
+        reject_input("a/b", ratio, "must lie in [1e-3, 1e3] (range of Kalker's coefficients)");
+    require_non_negative("normal_force", in.normal_force);
+    require_non_negative("mu", in.mu);
+    if (in.flexibility == FlexibilitySource::kalker_from_material) {
+        require_positive("G", in.G);
+        require_finite("nu", in.nu);
+        if (!(in.nu >= 0.0 && in.nu <= 0.5)) reject_input("nu", in.nu, "must lie in [0, 0.5]");
+    } else if (in.flexibility == FlexibilitySource::given) {
+        require_positive("L1", in.L1);
+        require_positive("L2", in.L2);
+        require_positive("L3", in.L3);
+    } else {
+        reject_input("flexibility", static_cast<double>(in.flexibility), "unknown flexibility source");
+    }
+    require_finite("xi_x", in.xi_x);
+    require_finite("xi_y", in.xi_y);
+    require_finite("phi", in.phi);
+    if (in.pressure != PressureKind::parabolic && in.pressure != PressureKind::elliptic)
+        reject_input("pressure", static_cast<double>(in.pressure), "unknown pressure law");
+    if (in.rolling_direction != 1 && in.rolling_direction != -1)
+        reject_input("rolling_direction", in.rolling_direction, "must be +1 or -1");
+    if (in.model != ModelKind::fastsim && in.model != ModelKind::exact &&
+        in.model != ModelKind::calibrated)
+        reject_input("model", static_cast<double>(in.model), "unknown model");
+    require_non_negative("tolerance", in.tolerance);
+    if (!(in.tolerance < 1.0)) reject_input("tolerance", in.tolerance, "must be < 1 (relative)");
+    if (in.max_iterations < 0)
+        reject_input("max_iterations", in.max_iterations, "must be >= 0 (0: the model's default)");
+    require_finite("spin_offset", in.spin_offset);
+    if (in.spin_offset > 1.0)
+        reject_input("spin_offset", in.spin_offset,
+                     "must lie in [0, 1] (a fraction of the element length), or be negative "
+                     "for the model's default");
+}
+
+} // namespace creepwork

@@ -1,0 +1,19 @@
+// Validation of a ContactInput, shared by every model: each error names the
+// offending input and the rule it breaks (Error(invalid_input)). Models add
+// their own requirements (e.g. the exact model needs the uniform grid).
+#pragma once
+
+#include "contact/params.hpp"
+
+namespace creepwork {
+
+// Throws Error(invalid_input) naming the first offending input.
+void validate_contact_input(const ContactInput& in);
+
+// The building blocks, for the models' own checks.
+[[noreturn]] void reject_input(const char* name, double value, const char* rule);
+void require_finite(const char* name, double v);
+void require_positive(const char* name, double v);
+void require_non_negative(const char* name, double v);
+
+} // namespace creepwork

@@ -1,0 +1,327 @@
+// Field export of the FASTSIM model (fastsim_model.hpp): each field is
+// computed from the march's (q', f) while it is copied into the caller's
+// layout.
+#include <cstring>
+#include <type_traits>
+
+#include "fastsim/fastsim_model.hpp"
+
+// The vector types below never cross a non-inlined call: their ABI is moot.
+#if defined(__GNUC__) || defined(__clang__)
+#pragma GCC diagnostic ignored "-Wpsabi"
+#endif
+
+namespace creepwork {
+
+// ------------------------------------------------------------ field export
+//
+// Element (i, j) of the caller's layout [i + j*nx] is kernel element (m, j)
+// at [m*stride + j], with m = nx-1-i when rolling towards +x (the march
+// starts at the leading edge x = +a) and m = i otherwise. Each field is a
+// functor evaluated on B consecutive strips of one march row at once (GCC/
+// Clang vector extensions: one source for every kernel ISA; B = 2 for SSE2,
+// 4 otherwise); B rows are transposed in registers and stored as B runs of i.
+namespace {
+
+template <int B>
+using Vec = simd::Vec<B>;
+
+template <class V>
+CREEPWORK_INLINE V load(const double* p)
+{
+    if constexpr (std::is_same_v<V, double>) {
+        return *p;
+    } else {
+        V v;
+        std::memcpy(&v, p, sizeof v);
+        return v;
+    }
+}
+
+// c != 0 ? x : y and c < 1 ? x : y, lane by lane.
+template <class V>
+CREEPWORK_INLINE V select_nonzero(const V& c, const V& x, const V& y)
+{
+    return c != V{} ? x : y;
+}
+template <class V>
+CREEPWORK_INLINE V select_below_one(const V& c, const V& x, const V& y)
+{
+    return c < V{} + 1.0 ? x : y;
+}
+
+struct ExportArgs {
+    int nx, ny, stride; // per-element arrays are [m * stride + j]
+    bool reverse;
+    double d, a, b, ab, T, dT, p0;
+    const double *x_centre, *inside, *shape;        // per element (MarchGeometry)
+    const double *y_centre, *x_length, *y_width;    // per strip (ContactGrid)
+    const double *qx, *qy, *factor;                 // per element (MarchState)
+    const double *slip_x, *slip_y, *paper, *consistent; // per element (WorkState)
+};
+
+// Fields: value at kernel index k (first lane) in strip j (first lane).
+// Each computes exactly what the per-element formula in the comment says.
+struct Scaled { // c * src[k]: x (c = d a), pz (c = p0), sx (c = d)
+    const double* src;
+    double c;
+    template <class V>
+    CREEPWORK_INLINE V operator()(long k, int) const { return c * load<V>(src + k); }
+};
+struct Copied { // src[k]: sy, work_paper, work_consistent
+    const double* src;
+    template <class V>
+    CREEPWORK_INLINE V operator()(long k, int) const { return load<V>(src + k); }
+};
+struct StripY { // b * Y_j
+    const double* y_centre;
+    double b;
+    template <class V>
+    CREEPWORK_INLINE V operator()(long, int j) const { return b * load<V>(y_centre + j); }
+};
+struct Area { // a b dX_j dY_j inside, 0 outside
+    const ExportArgs* A;
+    template <class V>
+    CREEPWORK_INLINE V operator()(long k, int j) const
+    {
+        const V area = A->ab * load<V>(A->x_length + j) * load<V>(A->y_width + j);
+        return select_nonzero(load<V>(A->inside + k), area, V{});
+    }
+};
+struct Traction { // scale * (f q'): f q' first, T f alone can underflow
+    const double *q, *factor;
+    double scale;
+    template <class V>
+    CREEPWORK_INLINE V operator()(long k, int) const
+    {
+        return scale * (load<V>(factor + k) * load<V>(q + k));
+    }
+};
+struct Moment { // d area (x py - y px), tractions on the wheel
+    const ExportArgs* A;
+    template <class V>
+    CREEPWORK_INLINE V operator()(long k, int j) const
+    {
+        const V f = load<V>(A->factor + k);
+        const V px = A->T * (f * load<V>(A->qx + k));
+        const V py = A->T * (f * load<V>(A->qy + k));
+        const V area = A->ab * load<V>(A->x_length + j) * load<V>(A->y_width + j);
+        return A->d * area *
+               (A->a * load<V>(A->x_centre + k) * py - A->b * load<V>(A->y_centre + j) * px);
+    }
+};
+struct State { // CW_STATE_*: 0 exterior, 1 adhesion, 2 slip
+    const ExportArgs* A;
+    template <class V>
+    CREEPWORK_INLINE V operator()(long k, int) const
+    {
+        const V one = V{} + 1.0;
+        return select_nonzero(load<V>(A->inside + k),
+                              select_below_one(load<V>(A->factor + k), one + one, one), V{});
+    }
+};
+
+// Stores: out = v, out += scale v, out = int(v).
+struct Assign {
+    CREEPWORK_INLINE void operator()(double* out, double v) const { *out = v; }
+    template <class V>
+    CREEPWORK_INLINE void operator()(double* out, const V& v) const
+    {
+        std::memcpy(out, &v, sizeof v);
+    }
+};
+struct AddScaled {
+    double scale;
+    CREEPWORK_INLINE void operator()(double* out, double v) const { *out += scale * v; }
+    template <class V>
+    CREEPWORK_INLINE void operator()(double* out, const V& v) const
+    {
+        V o;
+        std::memcpy(&o, out, sizeof o);
+        o += scale * v;
+        std::memcpy(out, &o, sizeof o);
+    }
+};
+struct AssignInt {
+    CREEPWORK_INLINE void operator()(int* out, double v) const { *out = static_cast<int>(v); }
+    template <class V>
+    CREEPWORK_INLINE void operator()(int* out, const V& v) const
+    {
+        typedef int Ints __attribute__((vector_size(sizeof(V) / 2)));
+        const Ints w = __builtin_convertvector(v, Ints);
+        std::memcpy(out, &w, sizeof w);
+    }
+};
+
+// r[r][q] = field(i0 + r, j0 + q) -> stored as column q: out[i0.. + (j0+q) nx].
+template <class Op, class Out>
+CREEPWORK_INLINE void store_transposed(const Op& op, Out* o, int nx, const Vec<2> (&r)[2])
+{
+    op(o, __builtin_shufflevector(r[0], r[1], 0, 2));
+    op(o + nx, __builtin_shufflevector(r[0], r[1], 1, 3));
+}
+template <class Op, class Out>
+CREEPWORK_INLINE void store_transposed(const Op& op, Out* o, int nx, const Vec<4> (&r)[4])
+{
+    const Vec<4> t0 = __builtin_shufflevector(r[0], r[1], 0, 4, 2, 6);
+    const Vec<4> t1 = __builtin_shufflevector(r[0], r[1], 1, 5, 3, 7);
+    const Vec<4> t2 = __builtin_shufflevector(r[2], r[3], 0, 4, 2, 6);
+    const Vec<4> t3 = __builtin_shufflevector(r[2], r[3], 1, 5, 3, 7);
+    op(o, __builtin_shufflevector(t0, t2, 0, 1, 4, 5));
+    op(o + nx, __builtin_shufflevector(t1, t3, 0, 1, 4, 5));
+    op(o + 2 * nx, __builtin_shufflevector(t0, t2, 2, 3, 6, 7));
+    op(o + 3 * nx, __builtin_shufflevector(t1, t3, 2, 3, 6, 7));
+}
+
+template <int B, class F, class Op, class Out>
+CREEPWORK_INLINE void export_grid(const ExportArgs& A, const F& f, const Op& op, Out* out)
+{
+    using V = Vec<B>;
+    const int nx = A.nx, ny = A.ny, stride = A.stride;
+    const int nxb = nx / B * B, nyb = ny / B * B;
+    const bool reverse = A.reverse;
+    auto row = [nx, stride, reverse](int i) {
+        return static_cast<long>(reverse ? nx - 1 - i : i) * stride;
+    };
+    for (int j0 = 0; j0 < nyb; j0 += B) {
+        Out* o = out + static_cast<long>(j0) * nx;
+        for (int i0 = 0; i0 < nxb; i0 += B) {
+            V r[B];
+            CREEPWORK_UNROLL
+            for (int q = 0; q < B; ++q) r[q] = f.template operator()<V>(row(i0 + q) + j0, j0);
+            store_transposed(op, o + i0, nx, r);
+        }
+        for (int q = 0; q < B; ++q)
+            for (int i = nxb; i < nx; ++i)
+                op(o + q * nx + i, f.template operator()<double>(row(i) + j0 + q, j0 + q));
+    }
+    for (int j = nyb; j < ny; ++j)
+        for (int i = 0; i < nx; ++i)
+            op(out + static_cast<long>(j) * nx + i, f.template operator()<double>(row(i) + j, j));
+}
+
+template <int B, class Op>
+CREEPWORK_INLINE void export_body(const ExportArgs& A, Field f, const Op& op, double* out)
+{
+    switch (f) {
+    case Field::x: export_grid<B>(A, Scaled{A.x_centre, A.d * A.a}, op, out); return;
+    case Field::y: export_grid<B>(A, StripY{A.y_centre, A.b}, op, out); return;
+    case Field::area: export_grid<B>(A, Area{&A}, op, out); return;
+    case Field::pz: export_grid<B>(A, Scaled{A.shape, A.p0}, op, out); return;
+    case Field::px: export_grid<B>(A, Traction{A.qx, A.factor, A.dT}, op, out); return;
+    case Field::py: export_grid<B>(A, Traction{A.qy, A.factor, A.T}, op, out); return;
+    case Field::sx: export_grid<B>(A, Scaled{A.slip_x, A.d}, op, out); return;
+    case Field::sy: export_grid<B>(A, Copied{A.slip_y}, op, out); return;
+    case Field::mz: export_grid<B>(A, Moment{&A}, op, out); return;
+    case Field::work_paper: export_grid<B>(A, Copied{A.paper}, op, out); return;
+    case Field::work_consistent: export_grid<B>(A, Copied{A.consistent}, op, out); return;
+    }
+}
+
+template <class Op>
+__attribute__((noinline)) void export_baseline(const ExportArgs& A, Field f, const Op& op,
+                                               double* out)
+{
+    export_body<2>(A, f, op, out);
+}
+__attribute__((noinline)) void state_baseline(const ExportArgs& A, int* out)
+{
+    export_grid<2>(A, State{&A}, AssignInt{}, out);
+}
+#if CREEPWORK_X86_KERNELS
+template <class Op>
+CREEPWORK_TARGET_AVX2 void export_avx2(const ExportArgs& A, Field f, const Op& op, double* out)
+{
+    export_body<4>(A, f, op, out);
+}
+template <class Op>
+CREEPWORK_TARGET_AVX512 void export_avx512(const ExportArgs& A, Field f, const Op& op,
+                                           double* out)
+{
+    export_body<4>(A, f, op, out);
+}
+CREEPWORK_TARGET_AVX2 void state_avx2(const ExportArgs& A, int* out)
+{
+    export_grid<4>(A, State{&A}, AssignInt{}, out);
+}
+CREEPWORK_TARGET_AVX512 void state_avx512(const ExportArgs& A, int* out)
+{
+    export_grid<4>(A, State{&A}, AssignInt{}, out);
+}
+#endif
+
+ExportArgs export_args(const MarchGeometry& geo, const ContactGrid& g, const ModelSetup& s,
+                       const MarchState& m, const WorkState& w)
+{
+    const double d = s.direction, T = s.traction_scale;
+    return ExportArgs{g.nx(),
+                      g.ny(),
+                      geo.stride,
+                      s.direction > 0,
+                      d,
+                      s.a,
+                      s.b,
+                      s.a * s.b,
+                      T,
+                      d * T,
+                      s.pressure_scale,
+                      geo.x_centre.data(),
+                      geo.inside.data(),
+                      geo.bound(s.pressure).data(),
+                      g.y_centre().data(),
+                      g.x_length().data(),
+                      g.y_width().data(),
+                      m.qx.data(),
+                      m.qy.data(),
+                      m.factor.data(),
+                      w.slip_x.data(),
+                      w.slip_y.data(),
+                      w.paper.data(),
+                      w.consistent.data()};
+}
+
+} // namespace
+
+template <class Op>
+void FastsimModel::export_field(Field f, const Op& op, double* out) const
+{
+    const ExportArgs A = export_args(geometry_, grid_, setup_, march_, work_);
+    switch (isa_) {
+#if CREEPWORK_X86_KERNELS
+    case KernelIsa::avx512: export_avx512(A, f, op, out); return;
+    case KernelIsa::avx2: export_avx2(A, f, op, out); return;
+#endif
+    default: export_baseline(A, f, op, out); return;
+    }
+}
+
+void FastsimModel::copy_field(Field f, double* out) const { export_field(f, Assign{}, out); }
+
+void FastsimModel::add_field(Field f, double scale, double* out) const
+{
+    export_field(f, AddScaled{scale}, out);
+}
+
+void FastsimModel::copy_state(int* out) const
+{
+    const ExportArgs A = export_args(geometry_, grid_, setup_, march_, work_);
+    switch (isa_) {
+#if CREEPWORK_X86_KERNELS
+    case KernelIsa::avx512: state_avx512(A, out); return;
+    case KernelIsa::avx2: state_avx2(A, out); return;
+#endif
+    default: state_baseline(A, out); return;
+    }
+}
+
+void FastsimModel::copy_profile(double W, double* y, double* work, double* parabola) const
+{
+    for (int j = 0; j < grid_.ny(); ++j) {
+        const double yj = setup_.b * grid_.y_centre()[j];
+        if (y) y[j] = yj;
+        if (work) work[j] = work_.profile[j];
+        if (parabola) parabola[j] = equal_area_parabola(W, setup_.b, yj);
+    }
+}
+
+} // namespace creepwork

@@ -1,0 +1,53 @@
+// Kalker's simplified theory as one model of the contact: the FASTSIM march
+// (march.hpp), its work bookkeeping (fastsim_work.hpp) and the export of its
+// fields. Made once per grid (it owns the grid geometry in the kernels'
+// layout and every workspace, and picks the kernel for this CPU), then
+// solve() many times without allocating.
+//
+// The fields are not stored in the caller's layout: the march keeps the trial
+// traction q' and the factor f (p' = f q') in march order, and each field is
+// computed from them while it is copied out (fastsim_fields.cpp).
+#pragma once
+
+#include "contact/contact_grid.hpp"
+#include "contact/fields.hpp"
+#include "contact/params.hpp"
+#include "fastsim/fastsim_setup.hpp"
+#include "fastsim/fastsim_work.hpp"
+#include "fastsim/march.hpp"
+
+namespace creepwork {
+
+class FastsimModel {
+public:
+    explicit FastsimModel(const GridSpec& grid);
+
+    // Throws Error(invalid_input) naming a bad input.
+    SolveTotals solve(const ContactInput& input, SolveMode mode);
+
+    const ContactGrid& grid() const { return grid_; }
+    KernelIsa kernel_isa() const { return isa_; }
+    void set_kernel_isa(KernelIsa isa); // throws when the CPU cannot run it
+
+    // Of the last solve (the caller checks that there is one).
+    void copy_field(Field f, double* out) const;
+    void add_field(Field f, double scale, double* out) const; // out += scale * field
+    void copy_state(int* out) const;
+    // Per strip j < ny: strip centre y [m], energy-consistent work per unit
+    // width [J/m per m], and the equal-area parabola of total W at y.
+    void copy_profile(double W, double* y, double* work, double* parabola) const;
+
+private:
+    template <class Op>
+    void export_field(Field f, const Op& op, double* out) const;
+
+    ContactGrid grid_;
+    MarchGeometry geometry_; // the grid in the kernels' layout
+    MarchState march_;
+    WorkState work_;
+    ModelSetup setup_;
+    KernelIsa isa_ = KernelIsa::baseline;
+    double max_shape_parabolic_ = 0, max_shape_elliptic_ = 0; // largest pz / p0 on the grid
+};
+
+} // namespace creepwork
