@@ -2,7 +2,7 @@
 // profile value through libcreepwork.so equals, bit for bit, what the C++
 // core (creepwork::Solver, linked here from the core's objects) computes for
 // the same contact. The translation of cw_params into ContactInput is done
-// here by hand, independently of capi/creepwork_capi.cpp.
+// here by hand, independently of capi/capi_translate.cpp.
 // The core and the standard library first: cmocka's macros (fail, ...)
 // would otherwise clash with names in the C++ headers.
 #include <cstring>

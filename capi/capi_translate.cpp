@@ -1,0 +1,242 @@
+// Translation between the C structs and the core, and the small helpers of
+// every area (capi_internal.hpp).
+#include "capi_internal.hpp"
+
+#include <cmath>
+
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
+namespace creepwork::capi {
+
+int map_kind(cw::ErrorKind kind)
+{
+    switch (kind) {
+    case cw::ErrorKind::invalid_input: return CW_ERR_INVALID_INPUT;
+    case cw::ErrorKind::grid_out_of_range: return CW_ERR_GRID_OUT_OF_RANGE;
+    case cw::ErrorKind::numeric_failure: return CW_ERR_NUMERIC;
+    case cw::ErrorKind::not_converged: return CW_ERR_NOT_CONVERGED;
+    }
+    return CW_ERR_INTERNAL;
+}
+
+// Free functions report through a caller buffer instead of a handle.
+void copy_message(const std::string& text, char* out, size_t len) noexcept
+{
+    if (!out || len == 0) return;
+    const size_t n = std::min(text.size(), len - 1);
+    std::memcpy(out, text.data(), n);
+    out[n] = '\0';
+}
+
+[[noreturn]] void fail(int status, const std::string& message)
+{
+    throw Failure{status, message};
+}
+
+void require(const void* p, const char* name)
+{
+    if (!p) fail(CW_ERR_NULL_POINTER, std::string(name) + " is NULL");
+}
+
+cw_grid default_grid()
+{
+    cw_grid g;
+    std::memset(&g, 0, sizeof g);
+    g.struct_size = sizeof g;
+    g.kind = CW_GRID_KALKER_STRIPS;
+    g.nx = 20;
+    g.ny = 20;
+    g.box_scale = 1.0;
+    return g;
+}
+
+cw_params default_params()
+{
+    cw_params p;
+    std::memset(&p, 0, sizeof p);
+    p.struct_size = sizeof p;
+    p.a = 6e-3;
+    p.b = 6e-3;
+    p.normal_force = 80e3;
+    p.mu = 0.3;
+    p.flexibility = CW_FLEX_FROM_MATERIAL;
+    p.pressure = CW_PRESSURE_PARABOLIC;
+    p.G = 82e9;
+    p.nu = 0.28;
+    p.rolling_direction = 1;
+    p.model = CW_MODEL_FASTSIM;
+    p.warm_start = 1;
+    p.spin_offset = CW_SPIN_OFFSET_DEFAULT;
+    return p;
+}
+
+cw::GridSpec to_grid(const cw_grid* grid)
+{
+    require(grid, "grid");
+    const cw_grid g = read_struct(grid, default_grid(), "grid");
+    cw::GridSpec spec;
+    if (g.kind == CW_GRID_KALKER_STRIPS)
+        spec.kind = cw::GridKind::kalker_strips;
+    else if (g.kind == CW_GRID_UNIFORM)
+        spec.kind = cw::GridKind::uniform;
+    else
+        fail(CW_ERR_UNKNOWN_OPTION, "grid->kind = " + std::to_string(g.kind) +
+                                        " is not CW_GRID_KALKER_STRIPS (0) or CW_GRID_UNIFORM (1)");
+    spec.nx = g.nx;
+    spec.ny = g.ny;
+    // The strip grid has no box: whatever the caller left there (even NaN)
+    // must not make two equal strip grids compare unequal.
+    spec.box_scale = spec.kind == cw::GridKind::uniform ? g.box_scale : 1.0;
+    return spec;
+}
+
+cw::ContactInput to_input(const cw_params* params)
+{
+    const cw_params p = read_struct(params, default_params(), "params");
+    cw::ContactInput in;
+    in.a = p.a;
+    in.b = p.b;
+    in.normal_force = p.normal_force;
+    in.mu = p.mu;
+    if (p.flexibility == CW_FLEX_FROM_MATERIAL)
+        in.flexibility = cw::FlexibilitySource::kalker_from_material;
+    else if (p.flexibility == CW_FLEX_GIVEN)
+        in.flexibility = cw::FlexibilitySource::given;
+    else
+        fail(CW_ERR_UNKNOWN_OPTION, "params->flexibility = " +
+                                        std::to_string(p.flexibility) +
+                                        " is not CW_FLEX_FROM_MATERIAL (0) or CW_FLEX_GIVEN (1)");
+    if (p.pressure == CW_PRESSURE_PARABOLIC)
+        in.pressure = cw::PressureKind::parabolic;
+    else if (p.pressure == CW_PRESSURE_ELLIPTIC)
+        in.pressure = cw::PressureKind::elliptic;
+    else
+        fail(CW_ERR_UNKNOWN_OPTION,
+             "params->pressure = " + std::to_string(p.pressure) +
+                 " is not CW_PRESSURE_PARABOLIC (0) or CW_PRESSURE_ELLIPTIC (1)");
+    in.G = p.G;
+    in.nu = p.nu;
+    in.L1 = p.L1;
+    in.L2 = p.L2;
+    in.L3 = p.L3;
+    in.xi_x = p.xi_x;
+    in.xi_y = p.xi_y;
+    in.phi = p.phi;
+    in.rolling_direction = p.rolling_direction;
+    if (p.model == CW_MODEL_FASTSIM)
+        in.model = cw::ModelKind::fastsim;
+    else if (p.model == CW_MODEL_EXACT)
+        in.model = cw::ModelKind::exact;
+    else if (p.model == CW_MODEL_CALIBRATED)
+        in.model = cw::ModelKind::calibrated;
+    else
+        fail(CW_ERR_UNKNOWN_OPTION, "params->model = " + std::to_string(p.model) +
+                                        " is not CW_MODEL_FASTSIM (0), CW_MODEL_EXACT (1) or "
+                                        "CW_MODEL_CALIBRATED (2)");
+    in.tolerance = p.tolerance;
+    in.max_iterations = p.max_iterations;
+    if (p.warm_start != 0 && p.warm_start != 1)
+        fail(CW_ERR_INVALID_INPUT,
+             "params->warm_start = " + std::to_string(p.warm_start) + " must be 0 or 1");
+    in.warm_start = p.warm_start == 1;
+    in.spin_offset = p.spin_offset;
+    if (p.flexibility_blending != 0 && p.flexibility_blending != 1)
+        fail(CW_ERR_INVALID_INPUT, "params->flexibility_blending = " +
+                                       std::to_string(p.flexibility_blending) +
+                                       " must be 0 or 1");
+    in.flexibility_blending = p.flexibility_blending == 1;
+    return in;
+}
+
+cw::SolveMode to_mode(int mode)
+{
+    if (mode == CW_SOLVE_FORCES) return cw::SolveMode::forces_only;
+    if (mode == CW_SOLVE_FULL) return cw::SolveMode::full;
+    fail(CW_ERR_UNKNOWN_OPTION, "mode = " + std::to_string(mode) +
+                                    " is not CW_SOLVE_FORCES (0) or CW_SOLVE_FULL (1)");
+}
+
+cw_result to_result(const cw::SolveTotals& t)
+{
+    cw_result r;
+    std::memset(&r, 0, sizeof r);
+    r.struct_size = sizeof r;
+    r.Fx = t.Fx;
+    r.Fy = t.Fy;
+    r.Mz = t.Mz;
+    r.W_macro = t.W_macro;
+    r.W_micro_paper = t.W_micro_paper;
+    r.K = t.K;
+    r.W_consistent = t.W_consistent;
+    r.balance_factor = t.balance_factor;
+    r.adhesion_fraction = t.adhesion_fraction;
+    r.n_contact = t.n_contact;
+    r.n_adhesion = t.n_adhesion;
+    r.n_slip = t.n_slip;
+    r.work_flags = t.work_flags;
+    r.a = t.a;
+    r.b = t.b;
+    r.L1 = t.L1;
+    r.L2 = t.L2;
+    r.L3 = t.L3;
+    r.C11 = t.C11;
+    r.C22 = t.C22;
+    r.C23 = t.C23;
+    r.C33 = t.C33;
+    r.profile_max_diff = t.profile_max_diff;
+    r.profile_rms_diff = t.profile_rms_diff;
+    r.model = static_cast<int>(t.model);
+    r.p_max = t.p_max;
+    r.approach = t.approach;
+    r.iterations = t.iterations;
+    r.residual = t.residual;
+    return r;
+}
+
+cw::Field to_field(int field)
+{
+    if (field < CW_FIELD_X || field > CW_FIELD_WORK_CONSISTENT)
+        fail(CW_ERR_UNKNOWN_OPTION, "field = " + std::to_string(field) +
+                                        " is not one of CW_FIELD_X (0) .. "
+                                        "CW_FIELD_WORK_CONSISTENT (10)");
+    return static_cast<cw::Field>(field);
+}
+
+void require_length(size_t have, size_t need, const char* name)
+{
+    if (have < need)
+        fail(CW_ERR_BUFFER_TOO_SMALL, std::string(name) + " holds " + std::to_string(have) +
+                                          " values but " + std::to_string(need) +
+                                          " are needed");
+}
+
+size_t element_count(const cw::Solver& s)
+{
+    return static_cast<size_t>(s.grid().nx()) * static_cast<size_t>(s.grid().ny());
+}
+
+void require_solution(const cw::Solver& s, bool needs_work)
+{
+    if (!s.has_solution())
+        fail(CW_ERR_NO_SOLUTION, "no successful solve on this solver yet (or the last failed)");
+    if (needs_work && !s.has_work())
+        fail(CW_ERR_NO_WORK, "this output needs the last solve to use CW_SOLVE_FULL");
+}
+
+void require_finite(const char* name, double v)
+{
+    if (!std::isfinite(v)) fail(CW_ERR_INVALID_INPUT, std::string(name) + " must be finite");
+}
+
+int hardware_threads()
+{
+#ifdef _OPENMP
+    return std::max(1, omp_get_num_procs());
+#else
+    return 1;
+#endif
+}
+
+} // namespace creepwork::capi
