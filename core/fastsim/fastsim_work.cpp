@@ -39,8 +39,8 @@ namespace {
 // element 0 of the kernels' layout [m * stride + j].
 struct WorkArgs {
     int nx, first, last, stride; // strips [first, last)
-    double a, T, half_T, TL1, TL2, L1T, L2T, eta, spin_y, paper_spin_y;
-    const double *x_slip, *step, *inside;              // per element (geometry)
+    double a, T, half_T, TL1, TL2, L1T, L2T, eta, spin_y, phi;
+    const double *x_slip, *x_centre, *step, *inside;   // per element (geometry)
     const double *qx, *qy, *factor;                    // per element (march)
     const double *width, *rigid_slip_x, *paper_spin_x, *neg_area_T; // per strip
     double *slip_x, *slip_y, *paper, *dissipation;     // per element
@@ -54,8 +54,14 @@ struct WorkArgs {
 //  - the numerical dissipation 1/2 dp L dp of the step (an exterior element
 //    after the strip's last contact element releases the exit energy here);
 //  - friction dissipation D = -p.(u - u*) dy = T^2 f (1 - f) q'.L q' dy >= 0;
-//  - the paper's eq. 36 read as element force x physical micro-slip: the
-//    model's micro-slip with its scaled spin (L/L3) replaced by the true one.
+//  - the paper's eq. 36 as printed: element force x translational
+//    micro-slip + element moment x spin, the moment taken about the
+//    element's own position (eq. 28), i.e. force x (s - s_spin + phi e_z x r)
+//    with s_spin the model's scaled-spin slip at the slip point x' and r the
+//    element centre. On Kalker's strip grid x' is half a step ahead of the
+//    centre; taking the spin there instead changes W_micro by tens of per
+//    cent on coarse grids (issue 11). In adhesion s = 0 and the same formula
+//    holds (the translational slip is then minus the model's spin slip).
 // Exterior elements never slip (q' = g = 0), so "slip" means inside, f < 1.
 // Nothing here feeds the next element but p', so the steps overlap freely.
 template <int W>
@@ -65,7 +71,8 @@ CREEPWORK_INLINE void work_strips(const WorkArgs& A, int j0)
     // Locals, not A's fields: the stores below may alias anything.
     const int nx = A.nx;
     const long stride = A.stride;
-    const double *x_slip = A.x_slip + j0, *step = A.step + j0, *inside = A.inside + j0;
+    const double *x_slip = A.x_slip + j0, *x_centre = A.x_centre + j0, *step = A.step + j0,
+                 *inside = A.inside + j0;
     const double *qx = A.qx + j0, *qy = A.qy + j0, *factor = A.factor + j0;
     double *slip_x = A.slip_x + j0, *slip_y = A.slip_y + j0, *paper = A.paper + j0,
            *dissipation = A.dissipation + j0;
@@ -74,7 +81,7 @@ CREEPWORK_INLINE void work_strips(const WorkArgs& A, int j0)
     const V half_T = simd::broadcast<W>(A.half_T), TL1 = simd::broadcast<W>(A.TL1),
             TL2 = simd::broadcast<W>(A.TL2), L1T = simd::broadcast<W>(A.L1T),
             L2T = simd::broadcast<W>(A.L2T), eta = simd::broadcast<W>(A.eta),
-            spin_y = simd::broadcast<W>(A.spin_y), paper_spin_y = simd::broadcast<W>(A.paper_spin_y);
+            spin_y = simd::broadcast<W>(A.spin_y), phi = simd::broadcast<W>(A.phi);
     const V dy = simd::load<W>(A.width + j0), wsx = simd::load<W>(A.rigid_slip_x + j0),
             psx = simd::load<W>(A.paper_spin_x + j0), nat = simd::load<W>(A.neg_area_T + j0);
     V px_prev = zero, py_prev = zero, loss = zero, diss = zero, spaper = zero;
@@ -95,7 +102,8 @@ CREEPWORK_INLINE void work_strips(const WorkArgs& A, int j0)
             sy = slip ? eta + spin_y * xp + L2T * dpy / hp : zero;
             d = slip ? T * f * (one - f) * (TL1 * q_x * q_x + TL2 * q_y * q_y) * dy : zero;
         }
-        const V w = in != zero ? nat * (px * (sx - psx) + py * (sy + paper_spin_y * xp)) : zero;
+        const V xc = a * simd::load<W>(x_centre + e); // element centre x [m]
+        const V w = in != zero ? nat * (px * (sx - psx) + py * (sy - spin_y * xp + phi * xc)) : zero;
         simd::store<W>(slip_x + e, sx);
         simd::store<W>(slip_y + e, sy);
         simd::store<W>(dissipation + e, d);
@@ -291,8 +299,9 @@ void march_with_work(const MarchGeometry& geo, const ContactGrid& grid, const Mo
                s.L2 * T,
                s.eta,
                spin_y_model,
-               s.phi - spin_y_model,
+               s.phi,
                geo.x_slip.data(),
+               geo.x_centre.data(),
                geo.step.data(),
                geo.inside.data(),
                st.qx.data(),

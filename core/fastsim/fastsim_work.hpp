@@ -1,6 +1,7 @@
 // Frictional work bookkeeping of one solve (per unit rolling distance, J/m,
 // positive for dissipation):
-//  - the paper's local work, force x physical micro-slip, and its K (eq. 39);
+//  - the paper's local work as eq. 36 prints it (element force x translational
+//    micro-slip + element moment about its own position x spin) and K (eq. 39);
 //  - the energy-consistent distribution, which sums to W_macro exactly.
 //
 // The energy-consistent map. Along a strip the march satisfies exactly
