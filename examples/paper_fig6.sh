@@ -5,7 +5,7 @@
 #   usage: bash examples/paper_fig6.sh <creepwork binary> <output dir>
 # The paper gives neither the semi-axes nor the material: `creepwork
 # fit-fig6` fits the semi-axis a (b = a/2) to the printed Fx and Fy (steel
-# G = 82 GPa, nu = 0.25, Kalker strip grid 7 x 7; see `creepwork fit-fig6
+# G = 82 GPa, nu = 0.3, Kalker strip grid 10 x 10; see `creepwork fit-fig6
 # --help`), prints the comparison with every printed number in the paper's
 # units and SI, and writes the pictures of Figs. 6-9.
 set -euo pipefail

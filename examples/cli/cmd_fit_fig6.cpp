@@ -168,6 +168,60 @@ JsonObject case_json(const CaseRun& run, const Units& u)
     return j;
 }
 
+// The paper's Table 1 on the fitted contacts: row 5 on Fig. 7's, the others
+// on Fig. 6's (paper_cases.hpp). K needs the paper's micro work: full solves.
+struct Table1Result {
+    Table1Row row;
+    cw_result result;
+};
+
+std::vector<Table1Result> run_table1(const CaseRun& fig6, const CaseRun& fig7,
+                                     const FitChoices& choices, ContactSolver& solver)
+{
+    std::vector<Table1Result> out;
+    for (const Table1Row& row : paper_table1()) {
+        const CaseRun& on = row.fig7_contact ? fig7 : fig6;
+        PaperCase c = on.paper;
+        c.xi_x = row.xi_x;
+        c.xi_y = row.xi_y;
+        c.spin_per_ft = row.spin_per_ft;
+        out.push_back({row, solver.solve_full(paper_params(c, on.fit.best().a, choices)).result});
+    }
+    return out;
+}
+
+void print_table1(std::ostream& os, const std::vector<Table1Result>& table)
+{
+    os << "Table 1 (K = Wd / W_micro, eq. 39) on the fitted contacts (row 5 on Fig. 7's,\n"
+          "the others on Fig. 6's: the paper does not say which contact they used):\n";
+    char buf[200];
+    std::snprintf(buf, sizeof buf, "  %6s %6s %6s | %6s %-12s | %9s %8s  %s\n", "xi_x", "xi_y",
+                  "spin", "paper", "", "creepwork", "adhesion", "diff");
+    os << buf;
+    for (const Table1Result& t : table) {
+        std::snprintf(buf, sizeof buf, "  %6.4g %6.4g %6.4g | %6.3f %-12s | %9.4f %7.1f %%  %s\n",
+                      t.row.xi_x, t.row.xi_y, t.row.spin_per_ft, t.row.K, t.row.slip, t.result.K,
+                      100 * t.result.adhesion_fraction, pct(t.result.K, t.row.K).c_str());
+        os << buf;
+    }
+}
+
+std::vector<JsonObject> table1_json(const std::vector<Table1Result>& table)
+{
+    std::vector<JsonObject> rows;
+    for (const Table1Result& t : table)
+        rows.push_back(JsonObject()
+                           .number("xi_x", t.row.xi_x)
+                           .number("xi_y", t.row.xi_y)
+                           .number("spin_per_ft", t.row.spin_per_ft)
+                           .number("K_paper", t.row.K)
+                           .text("slip_paper", t.row.slip)
+                           .text("contact", t.row.fig7_contact ? "fig7" : "fig6")
+                           .number("K", t.result.K)
+                           .number("adhesion_fraction", t.result.adhesion_fraction));
+    return rows;
+}
+
 // Hertz scaling for comparison: a ~ N^(1/3) at fixed curvatures.
 double hertz_scaled_a(const CaseRun& from, const PaperCase& to)
 {
@@ -216,6 +270,7 @@ int command_fit_fig6(int argc, char** argv, int first)
     const CaseRun fig7 = run_case(paper_fig7(), choices, solver);
     const double a7_hertz = hertz_scaled_a(fig6, fig7.paper);
     const cw_result hertz = solver.solve_totals(paper_params(fig7.paper, a7_hertz, choices));
+    const std::vector<Table1Result> table1 = run_table1(fig6, fig7, choices, solver);
 
     if (!out.empty()) {
         const bool plots = should_plot(opts);
@@ -238,6 +293,7 @@ int command_fit_fig6(int argc, char** argv, int first)
                                    .text("pressure", "parabolic"))
             .object("fig6", case_json(fig6, units))
             .object("fig7", case_json(fig7, units))
+            .array("table1", table1_json(table1))
             .number("fig7_hertz_scaled_a", units.from_si(Quantity::length, a7_hertz))
             .number("fig7_hertz_scaled_Fy", units.from_si(Quantity::force, hertz.Fy));
         std::cout << j.str(true) << "\n";
@@ -249,7 +305,7 @@ int command_fit_fig6(int argc, char** argv, int first)
        << fmt(choices.G / 1e9, 4) << " GPa = " << fmt(choices.G / kPascalPerPsi, 8)
        << " psi, nu = " << choices.nu << ";\nparabolic pressure (paper eq. 16); Kalker strip grid "
        << choices.nx << " x " << choices.ny
-       << " (K depends on the grid; 7 x 7 gives Table 1's K).\n"
+       << " (K depends on the grid; about 10 x 10 gives Table 1's K).\n"
        << "Forces, moment and work per rolled distance: paper units and SI.\n\n";
     print_case(os, fig6);
     os << "\n";
@@ -260,6 +316,8 @@ int command_fit_fig6(int argc, char** argv, int first)
        << " mm gives Fy = " << fmt(-hertz.Fy / kNewtonPerLbf, 6) << " lbf ("
        << pct(-hertz.Fy / kNewtonPerLbf, fig7.paper.Fy_lbf)
        << "), Mz = " << fmt(-hertz.Mz / (kNewtonPerLbf * kMetrePerFoot), 4) << " lbf ft\n";
+    os << "\n";
+    print_table1(os, table1);
     if (!out.empty())
         os << "\npictures and data: " << out << " (Fig. 6), " << out << "/fig7 (Fig. 7)\n";
     return kExitOk;

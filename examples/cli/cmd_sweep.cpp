@@ -23,12 +23,12 @@ namespace {
 void fig6_contact(cw_params& p, cw_grid& g)
 {
     p = library_default_params();
-    p.a = 6.6615e-3;
+    p.a = 6.6323e-3;
     p.b = p.a / 2.0;
     p.normal_force = 10000.0 * kNewtonPerLbf;
     p.mu = 0.6;
     p.G = 82e9;
-    p.nu = 0.25;
+    p.nu = 0.3;
     g = library_default_grid();
     g.nx = 40;
     g.ny = 40;

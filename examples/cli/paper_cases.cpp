@@ -19,6 +19,17 @@ PaperCase paper_fig7()
             0.0,      3255.332, 9.971,  12.905, 1.424, "full slip"};
 }
 
+std::vector<Table1Row> paper_table1()
+{
+    return {{0.050, 0.050, 0.1, 1.001, "full slip", false},
+            {0.050, 0.010, 0.1, 1.008, "full slip", false},
+            {0.010, 0.010, 0.1, 1.031, "full slip", false},
+            {0.100, 0.100, 0.1, 1.003, "full slip", false},
+            {0.000, 0.0022, 0.576, 1.424, "full slip", true},
+            {0.0019, 0.0011, 0.144, 1.602, "partial slip", false},
+            {0.001, 0.001, 0.1, 2.397, "partial slip", false}};
+}
+
 cw_params paper_params(const PaperCase& c, double a, const FitChoices& choices)
 {
     cw_params p;
