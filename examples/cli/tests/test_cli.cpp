@@ -535,6 +535,17 @@ int main(int argc, char** argv)
         cmocka_unit_test(paper_units_round_trip),  cmocka_unit_test(out_writes_pictures),
         cmocka_unit_test(sweep_writes_maps),       cmocka_unit_test(fit_fig6_reproduces_the_paper),
     };
-    if (argc > 3) cmocka_set_test_filter(argv[3]);
+    if (argc > 3) {
+        // A cmocka filter that matches nothing runs no test and returns 0:
+        // CTest would count a misspelt name as a pass. Each CTest entry
+        // names exactly one test, so anything else is an error.
+        bool known = false;
+        for (const CMUnitTest& t : tests) known = known || std::strcmp(t.name, argv[3]) == 0;
+        if (!known) {
+            std::fprintf(stderr, "test_cli: no test is named '%s'\n", argv[3]);
+            return 2;
+        }
+        cmocka_set_test_filter(argv[3]);
+    }
     return cmocka_run_group_tests(tests, nullptr, nullptr);
 }
