@@ -13,13 +13,14 @@ struct Case {
     const char* name;
     double a_over_b, xi, eta, phi; // creepages; spin in 1/m (a ~ 6 mm)
     bool full_slip;
+    double order[2]; // observed order of |F| (Kalker strips, uniform), measured
 };
 
 const Case kCases[] = {
-    {"partial", 1.0, 0.0005, 0.0, 0.0, false},
-    {"partial + spin", 1.0, 0.0005, 0.0003, 0.1, false},
-    {"full", 2.0, 0.01, 0.005, 0.0, true},
-    {"full + spin", 0.5, 0.01, 0.0, 2.0, true},
+    {"partial", 1.0, 0.0005, 0.0, 0.0, false, {1.85, 1.18}},
+    {"partial + spin", 1.0, 0.0005, 0.0003, 0.1, false, {1.57, 1.12}},
+    {"full", 2.0, 0.01, 0.005, 0.0, true, {2.05, 2.27}},
+    {"full + spin", 0.5, 0.01, 0.0, 2.0, true, {0.99, 1.52}},
 };
 
 cw::ContactInput input(const Case& c, double a_over_b)
@@ -41,7 +42,8 @@ const char* name(cw::GridKind kind)
     return kind == cw::GridKind::uniform ? "uniform" : "Kalker strips";
 }
 
-// |F(n) - F(2n)| shrinks with n; the observed order is printed.
+// |F(n) - F(2n)| shrinks with n; the observed order (between 40-80 and
+// 160-320) is at least first order and is held to its measured value.
 void totals_converge(void**)
 {
     for (cw::GridKind kind : {cw::GridKind::kalker_strips, cw::GridKind::uniform}) {
@@ -54,8 +56,10 @@ void totals_converge(void**)
                 F[k] = std::hypot(t.Fx, t.Fy);
             }
             const double d_coarse = std::fabs(F[2] - F[1]), d_fine = std::fabs(F[4] - F[3]);
+            const double order = std::log(d_coarse / d_fine) / std::log(4.0);
             printf("  %-13s %-14s |F|: %.6g .. %.6g, observed order %.2f\n", name(kind), c.name,
-                   F[0], F[4], std::log(d_coarse / d_fine) / std::log(4.0));
+                   F[0], F[4], order);
+            assert_close(order, c.order[kind == cw::GridKind::uniform], 0.0, 0.01);
             assert_true(d_fine < d_coarse);
             assert_true(d_fine < 0.005 * F[4]);
         }
@@ -64,16 +68,22 @@ void totals_converge(void**)
 
 // K = W_macro / W_micro_paper (paper eq. 39): >= 1, near 1 in full slip,
 // large at small creepage, and -> 1 roughly as 1/n (paper Table 1 trend).
+// README "Validation" quotes the Kalker-strip partial-slip sequence.
 void paper_K_tends_to_one(void**)
 {
+    const double readme[6] = {2.13, 1.83, 1.34, 1.16, 1.08, 1.04};
     for (cw::GridKind kind : {cw::GridKind::kalker_strips, cw::GridKind::uniform}) {
         for (const Case& c : kCases) {
             double previous = 1e300;
             printf("  %-13s %-14s K:", name(kind), c.name);
+            int step = 0;
             for (int n : {10, 20, 40, 80, 160, 320}) {
                 cw::Solver s(grid(kind, n));
                 const double K = s.solve(input(c, c.a_over_b)).K;
                 printf(" %.4f", K);
+                if (kind == cw::GridKind::kalker_strips && &c == &kCases[0])
+                    assert_close(K, readme[step], 0.0, 0.005);
+                ++step;
                 assert_true(K >= 1.0);
                 assert_true(K < previous);
                 if (c.full_slip) assert_true(K < 1.1);
@@ -90,8 +100,11 @@ void paper_K_tends_to_one(void**)
     }
 }
 
-// The four properties, on every grid of the sweep: non-negative, zero in
-// adhesion (and exterior) elements, sum = W_macro to 1e-12 relative.
+// On every grid of the sweep: non-negative, zero in adhesion (and exterior)
+// elements, no flag. The sum = W_macro holds by construction (the map is
+// scaled by W_macro / total): asserted as a wiring check of the exported
+// field, not as validation; test_core_work checks the ingredients (balance
+// factor against the energy identity and its limits, a 3 x 3 map by hand).
 // Convergence is the next test.
 void consistent_map_properties_sweep(void**)
 {
@@ -123,8 +136,9 @@ void consistent_map_properties_sweep(void**)
 }
 
 // Convergence to one density: the map is binned on a fixed 8 x 8 partition
-// of the normalised patch; the L1 distance to a 400 x 400 solution, relative
-// to W, falls as the grid is refined.
+// of the normalised patch; the L1 distance to a 512 x 512 solution, relative
+// to W, falls as the grid is refined: below 1 % at 256 x 256 in every case
+// (README "Validation"), at most half the 16 x 16 value.
 std::vector<double> binned(const cw::Solver& s, const cw::ContactInput& in)
 {
     const auto w = cwtest::field(s, cw::Field::work_consistent);
@@ -161,7 +175,7 @@ void consistent_map_converges(void**)
             }
             printf("\n");
             assert_true(last < 0.5 * first);
-            assert_true(last < 0.05);
+            assert_true(last < 0.01);
         }
     }
 }
