@@ -139,7 +139,7 @@ CW_API const char* cw_status_string(int status);
 #define CW_FIELD_SX 6              /* micro-slip W_x/V [-], 0 in adhesion (FULL) */
 #define CW_FIELD_SY 7              /* micro-slip W_y/V [-], 0 in adhesion (FULL) */
 #define CW_FIELD_MZ 8              /* moment contribution (x*py - y*px)*area [N m] */
-#define CW_FIELD_WORK_PAPER 9      /* paper's local work, force x physical slip [J/m] (FULL) */
+#define CW_FIELD_WORK_PAPER 9      /* paper's local work, eq. 36: F.s_transl + M phi [J/m] (FULL) */
 #define CW_FIELD_WORK_CONSISTENT 10 /* energy-consistent local work [J/m] (FULL) */
 
 /* Element states (cw_solver_get_state), paper eqs. 32-33 */
