@@ -218,10 +218,11 @@ void balance_factor_is_the_energy_identity(void**)
 //    sum pz r / sum pz (L1 y^2 + L2 x^2)/(L3 r) = 2 L3 / (L1 + L2) on a
 //    square grid, = 3 pi / (16 C23 (1/C11 + 1/C22)) with Kalker's L1 =
 //    8a/(3 C11 G), L2 = 8a/(3 C22 G), L3 = pi a/(4 C23 G) and Table E.3's
-//    C11 = 4.12, C22 = 3.67, C23 = 1.47 (a/b = 1, nu = 0.25): 0.7753;
+//    C11 = 4.12, C22 = 3.67, C23 = 1.47 (a/b = 1, nu = 0.25): 0.7778;
 //  - Kalker's strip grid without spin: the first step of each strip is half
 //    a step, where the traction (~ h w / L) is itself small, so the march's
-//    energy misses O(h^2) per strip: the factor tends to 1 like 1/n^2.
+//    energy misses O(h^2) per strip: the factor tends to 1 like 1/n^2;
+//  - Kalker's strip grid with spin: to the uniform grid's value like 1/n.
 void balance_factor_limits(void**)
 {
     const double C11 = 4.12, C22 = 3.67, C23 = 1.47; // Kalker 1990, Table E.3
@@ -245,6 +246,20 @@ void balance_factor_limits(void**)
         previous = d;
     }
     printf("\n");
+    // With spin the strip grid's slip points sit half a step ahead of the
+    // centres: its factor approaches the uniform grid's like 1/n (README
+    // "Work"; measured ratios of successive distances 1.8, 1.9).
+    cw::Solver fine(cwtest::uniform_grid(320, 320));
+    const cw::ContactInput spin = contact(0.01, 0.0, 2.0, 0.5);
+    const double limit = fine.solve(spin).balance_factor;
+    previous = 0.0;
+    for (int n : {40, 80, 160}) {
+        cw::Solver s(cwtest::kalker_grid(n, n));
+        const double d = limit - s.solve(spin).balance_factor;
+        assert_true(d > 0.0);
+        if (n > 40) assert_close(previous / d, 1.85, 0.0, 0.15); // first order
+        previous = d;
+    }
 }
 
 // The energy-consistent map on a 3 x 3 Kalker strip grid, computed here
