@@ -1,0 +1,222 @@
+#!/usr/bin/env python3
+"""Mutation check: do the tests catch deliberate single-line bugs?
+
+Part of the development routine (issue 14), not of CI: it builds a copy of
+the working tree, then for each mutant below applies one single-line edit,
+rebuilds only the executables of the tests that could catch it, runs those
+tests and records which failed. Every mutant must be caught by at least two
+tests; a mutant of a model may further name tests that must be among its
+catchers (the exact and calibrated models' bugs must be caught by CONTACT's
+reference data, not by tests that reuse the model's own formulas).
+
+    scripts/mutation-check.py [--only ID ...] [--jobs N] [--keep] [--all-tests]
+
+Prints a Markdown table (mutant, edit, tests that caught it, candidates that
+did not) and exits 1 when a mutant is caught by fewer than two tests, misses
+a required catcher, fails to apply or fails to compile. The working tree is
+never touched: the copy lives in a temporary directory (--keep keeps it).
+Cost: one Release build of the copy (a few minutes on 2 cores), then per
+mutant one recompiled file, a few relinks and its candidate tests (~15-30 s).
+"""
+import argparse
+import json
+import os
+import re
+import shutil
+import subprocess
+import sys
+import tempfile
+
+# Tests that check the FASTSIM core against data or formulas from outside the
+# code (CONTACT's rows, the FORTRAN 77 reference, Kalker's published values,
+# hand computations), plus the wiring checks that read the same quantities.
+CORE = [
+    "test_core_contact_reference", "test_core_coefficients", "test_core_linear_theory",
+    "test_core_full_slip", "test_core_symmetry", "test_core_convergence", "test_core_work",
+    "test_core_kernels", "test_fortran_sweep", "test_fortran_kalker1982", "test_capi_solver",
+    "cli_fit_fig6_reproduces_the_paper",
+]
+
+# One entry per mutant: file, the exact text of one line (or a unique part of
+# it) and its replacement, the candidate tests, and tests that must be among
+# the catchers ("require"). Add the exact and calibrated models' mutants here
+# with require = the CONTACT reference tests (tests labelled exact that read
+# ../shared/reference), never tests that recompute the model's own formulas.
+MUTANTS = [
+    dict(id="moment-sign", what="creep moment Mz reported with the wrong sign",
+         file="core/fastsim/fastsim_model.cpp",
+         old="    t.Mz = d * mz;", new="    t.Mz = -d * mz;", tests=CORE),
+    dict(id="moment-arm", what="sign of the y px term of Mz (moment about the centre)",
+         file="core/fastsim/fastsim_model.cpp",
+         old="mz += area * (a * march_.sum_x_py[j] - y * march_.sum_px[j]);",
+         new="mz += area * (a * march_.sum_x_py[j] + y * march_.sum_px[j]);", tests=CORE),
+    dict(id="half-first-step", what="Kalker's strips start with a full step, not half a step",
+         file="core/contact/contact_grid.cpp",
+         old="        double previous = half_chord;",
+         new="        double previous = half_chord + 0.5 * dx;", tests=CORE),
+    dict(id="numerical-dissipation", what="numerical dissipation 1/2 dp L dp doubled",
+         file="core/fastsim/fastsim_work.cpp",
+         old="loss += half_T * (TL1 * dpx * dpx + TL2 * dpy * dpy) * dy;",
+         new="loss += T * (TL1 * dpx * dpx + TL2 * dpy * dpy) * dy;", tests=CORE),
+    dict(id="friction-dissipation", what="friction dissipation factor f (1 - f) -> (1 - f^2)",
+         file="core/fastsim/fastsim_work.cpp",
+         old="d = slip ? T * f * (one - f) *", new="d = slip ? T * (one - f * f) *", tests=CORE),
+    dict(id="spin-rigid-slip", what="spin term of the lateral rigid slip negated (eq. 12 misprint)",
+         file="core/fastsim/fastsim_setup.cpp",
+         old="s.a * s.a * s.phi / s.L3};", new="-s.a * s.a * s.phi / s.L3};", tests=CORE),
+    dict(id="traction-bound", what="slip only 1 % beyond the traction bound mu pz",
+         file="core/fastsim/march.hpp",
+         old="    const auto slip = norm > bound;",
+         new="    const auto slip = norm > bound * simd::broadcast<W>(1.01);", tests=CORE),
+    dict(id="eq36-moment-arm", what="paper's work: spin slip at the slip point, not the element",
+         file="core/fastsim/fastsim_work.cpp",
+         old="(sy - spin_y * xp + phi * xc)", new="(sy - spin_y * xp + phi * xp)", tests=CORE),
+    dict(id="prints", what="solve prints a debugging line",
+         file="capi/capi_solver.cpp",
+         old="        if (result) write_struct(result, to_result(t));",
+         new="        if (result) write_struct(result, to_result(t)); __builtin_printf(\"K %g\\n\", t.K);",
+         tests=["test_robustness_silent", "test_capi_solver", "cli_json_matches_library"],
+         min_caught=1),  # only the silent test can see output: one catcher is all there is
+]
+
+
+def run(cmd, cwd=None, quiet=True):
+    r = subprocess.run(cmd, cwd=cwd, stdout=subprocess.PIPE if quiet else None,
+                       stderr=subprocess.STDOUT if quiet else None, text=True)
+    return r.returncode, (r.stdout or "")
+
+
+def copy_tree(src, dst):
+    """Tracked and untracked-but-not-ignored files: the working tree as it is."""
+    _, out = run(["git", "ls-files", "-co", "--exclude-standard", "-z"], cwd=src)
+    for rel in filter(None, out.split("\0")):
+        s = os.path.join(src, rel)
+        if not os.path.isfile(s):
+            continue
+        d = os.path.join(dst, rel)
+        os.makedirs(os.path.dirname(d), exist_ok=True)
+        shutil.copy2(s, d)
+
+
+def targets_of(build, tests):
+    """Executables the tests run (basenames of their commands that are targets)."""
+    _, out = run(["cmake", "--build", build, "--target", "help"])
+    known = set(re.findall(r"^\.\.\. (\S+)", out, re.M))
+    _, js = run(["ctest", "--test-dir", build, "--show-only=json-v1"])
+    info = {t["name"]: t.get("command", []) for t in json.loads(js)["tests"]}
+    targets = set()
+    for name in tests:
+        if name not in info:
+            sys.exit(f"mutation-check: no CTest test named {name}")
+        found = False
+        for word in info[name]:
+            base = os.path.basename(word)
+            base = "creepwork_cli" if base == "creepwork" else base
+            if base in known:
+                targets.add(base)
+                found = True
+        if not found:
+            targets.add("all")
+    return sorted(targets)
+
+
+def build(build_dir, targets, jobs):
+    cmd = ["cmake", "--build", build_dir, "-j", str(jobs)]
+    if "all" not in targets:
+        for t in targets:
+            cmd += ["--target", t]
+    return run(cmd)
+
+
+def failed_tests(build_dir, tests, jobs):
+    regex = "^(" + "|".join(re.escape(t) for t in tests) + ")$"
+    _, out = run(["ctest", "--test-dir", build_dir, "-j", str(jobs), "--timeout", "300", "-R", regex])
+    failed = re.findall(r"^\s*\d+ - (\S+) \(", out, re.M)
+    ran = re.findall(r"Test\s+#\d+: (\S+) \.", out)
+    return set(failed), set(ran)
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--only", nargs="*", help="mutant ids")
+    ap.add_argument("--jobs", type=int, default=2)
+    ap.add_argument("--keep", action="store_true", help="keep the temporary copy")
+    ap.add_argument("--all-tests", action="store_true",
+                    help="run every CTest test per mutant (slow; shows every catcher)")
+    args = ap.parse_args()
+    root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+    mutants = [m for m in MUTANTS if not args.only or m["id"] in args.only]
+
+    tmp = tempfile.mkdtemp(prefix="creepwork-mutation-")
+    src, bld = os.path.join(tmp, "src"), os.path.join(tmp, "build")
+    shared = os.path.realpath(os.path.join(root, "..", "shared"))
+    try:
+        copy_tree(root, src)
+        rc, out = run(["cmake", "-S", src, "-B", bld, "-DCMAKE_BUILD_TYPE=Release",
+                       "-DCREEPWORK_BUILD_BENCH=OFF", f"-DCREEPWORK_SHARED_DIR={shared}"])
+        if rc:
+            sys.exit(out)
+        if args.all_tests:
+            _, js = run(["ctest", "--test-dir", bld, "--show-only=json-v1"])
+            everything = [t["name"] for t in json.loads(js)["tests"]]
+            for m in mutants:
+                m["tests"] = everything
+        union = sorted({t for m in mutants for t in m["tests"]})
+        print(f"building the copy in {tmp} ...", file=sys.stderr)
+        rc, out = build(bld, targets_of(bld, union), args.jobs)
+        if rc:
+            sys.exit(out[-3000:])
+        failed, _ = failed_tests(bld, union, args.jobs)
+        if failed:
+            sys.exit("mutation-check: unmutated tests fail: " + ", ".join(sorted(failed)))
+
+        rows, bad = [], 0
+        for m in mutants:
+            path = os.path.join(src, m["file"])
+            text = open(path).read()
+            if text.count(m["old"]) != 1 or "\n" in m["old"] or "\n" in m["new"]:
+                rows.append((m, None, "edit does not apply to exactly one line"))
+                bad += 1
+                continue
+            print(f"mutant {m['id']} ...", file=sys.stderr)
+            open(path, "w").write(text.replace(m["old"], m["new"]))
+            try:
+                rc, out = build(bld, targets_of(bld, m["tests"]), args.jobs)
+                if rc:
+                    rows.append((m, None, "does not compile"))
+                    bad += 1
+                    continue
+                caught, ran = failed_tests(bld, m["tests"], args.jobs)
+                missing = set(m["tests"]) - ran
+                need = m.get("min_caught", 2)
+                verdict = "ok"
+                if missing:
+                    verdict = "tests did not run: " + ", ".join(sorted(missing))
+                elif len(caught) < need:
+                    verdict = f"caught by {len(caught)} < {need} tests"
+                elif not set(m.get("require", [])) <= caught:
+                    verdict = "not caught by " + ", ".join(sorted(set(m["require"]) - caught))
+                bad += verdict != "ok"
+                rows.append((m, caught, verdict))
+            finally:
+                open(path, "w").write(text)
+        # Leave the copy's build matching its sources.
+        build(bld, targets_of(bld, union), args.jobs)
+
+        print("| mutant | edit | caught by | candidates that passed | verdict |")
+        print("|---|---|---|---|---|")
+        for m, caught, verdict in rows:
+            edit = f"`{m['file']}`: {m['what']}"
+            c = ", ".join(sorted(caught)) if caught else "-"
+            passed = ", ".join(sorted(set(m["tests"]) - (caught or set()))) if caught is not None else "-"
+            print(f"| {m['id']} | {edit} | {c} | {passed} | {verdict} |")
+        return 1 if bad else 0
+    finally:
+        if args.keep:
+            print(f"copy kept in {tmp}", file=sys.stderr)
+        else:
+            shutil.rmtree(tmp, ignore_errors=True)
+
+
+if __name__ == "__main__":
+    sys.exit(main())
