@@ -103,7 +103,8 @@ CREEPWORK_INLINE void work_strips(const WorkArgs& A, int j0)
             d = slip ? T * f * (one - f) * (TL1 * q_x * q_x + TL2 * q_y * q_y) * dy : zero;
         }
         const V xc = a * simd::load<W>(x_centre + e); // element centre x [m]
-        const V w = in != zero ? nat * (px * (sx - psx) + py * (sy - spin_y * xp + phi * xc)) : zero;
+        const V w =
+            in != zero ? nat * (px * (sx - psx) + py * (sy - spin_y * xp + phi * xc)) : zero;
         simd::store<W>(slip_x + e, sx);
         simd::store<W>(slip_y + e, sy);
         simd::store<W>(dissipation + e, d);
