@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "contact/fp_safe.hpp"
+
 namespace creepwork {
 
 void WorkState::resize(int n_elements, int ny)
@@ -30,7 +32,7 @@ void WorkState::resize(int n_elements, int ny)
 double equal_area_parabola(double W, double b, double y)
 {
     const double r = 1.0 - (y / b) * (y / b);
-    return r > 0.0 ? 0.75 * W / b * r : 0.0;
+    return r > 0.0 ? 0.75 * W / b * r : 0.0; // b > 0: nothing to trap
 }
 
 namespace {
@@ -341,7 +343,7 @@ WorkTotals distribute_work(const MarchGeometry& geo, const ContactGrid& grid,
     if (fill_pools(ny, w)) {
         for (int j = 0; j < ny; ++j) {
             const double d = w.strip_dissipation[j];
-            w.ratio[j] = d > 0.0 ? w.strip_pool[j] / d : 0.0;
+            w.ratio[j] = quotient_if_positive(w.strip_pool[j], d); // vectorised: fp_safe.hpp
             total += w.strip_pool[j];
         }
     } else {

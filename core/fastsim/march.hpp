@@ -187,12 +187,21 @@ CREEPWORK_INLINE double min_lane(const Vec<8>& v)
 // restart the strip from zero displacement). The division never sees a zero
 // (hosts may trap FP exceptions).
 //
-// Shortcut, exact: when every lane has |q|^2 = 0, or |q|^2 < g^2 (1 - 2^-50)
-// with g^2 a normal number, then RN(sqrt(|q|^2)) <= g in every lane (the
-// margin covers the rounding of g^2 and of the product), so no lane slips
-// and the square root and the division are skipped: f = 1, p = q, exactly as
-// the full test gives. It applies to adhesion zones, exterior elements and
-// the padding strips.
+// Shortcut, exact: when every lane has |q|^2 <= g^2 (1 - 2^-50) with g^2 a
+// normal number, or |q|^2 = 0 = g^2, then RN(sqrt(|q|^2)) <= g in every lane
+// (the margin covers the rounding of g^2 and of the product), so no lane
+// slips and the square root and the division are skipped: f = 1, p = q,
+// exactly as the full test gives. It applies to adhesion zones, exterior
+// elements and the padding strips.
+//
+// Floating-point exceptions (hosts may trap them, README "Guarantees"): no
+// lane, live or masked, divides by zero (safe_norm), takes the root of a
+// negative number, or meets a subnormal constant (the test for g = 0 is
+// |q|^2 <= 0, not a comparison with the smallest subnormal). g is 0
+// (exterior, padding) or at least ~1e-32 (a grid's pressure shape), so for
+// creepages in the practical range q, |q|^2 and f stay normal numbers
+// (tests/robustness/test_robustness_fptrap_kernels.cpp); absurd inputs are
+// the C ABI's floating-point mode's business (capi/capi_fp_mode.hpp).
 template <int W>
 struct MarchStep {
     using V = simd::Vec<W>;
@@ -208,16 +217,15 @@ CREEPWORK_INLINE MarchStep<W> march_step(const simd::Vec<W>& px_prev, const simd
 {
     using V = simd::Vec<W>;
     const V one = simd::broadcast<W>(1.0), zero = simd::broadcast<W>(0.0);
-    const V tiny = simd::broadcast<W>(2.2250738585072014e-308);      // DBL_MIN
-    const V denorm_min = simd::broadcast<W>(4.9406564584124654e-324); // n2 < it: n2 = 0
+    const V tiny = simd::broadcast<W>(2.2250738585072014e-308); // DBL_MIN
     const V margin = simd::broadcast<W>(1.0 - 0x1p-50);
     MarchStep<W> s;
     s.qx = inside * (px_prev - h * wx);
     s.qy = inside * (py_prev - h * wy);
     const V n2 = s.qx * s.qx + s.qy * s.qy;
     const V g2 = bound * bound;
-    const V threshold = g2 >= tiny ? g2 * margin : denorm_min;
-    if (simd::min_lane((n2 < threshold) ? one : zero) > 0.0) {
+    const V threshold = g2 >= tiny ? g2 * margin : zero; // g = 0: only q = 0
+    if (simd::min_lane((n2 <= threshold) ? one : zero) > 0.0) {
         s.f = one;
         s.px = s.qx;
         s.py = s.qy;
