@@ -24,6 +24,7 @@ void WorkState::resize(int n_elements, int ny)
     profile.setZero(stride);
     width.setZero(stride);
     rigid_slip_x.setZero(stride);
+    rigid_slip_y.setZero(stride);
     paper_spin_x.setZero(stride);
     neg_area_T.setZero(stride);
     ratio.setZero(stride);
@@ -41,10 +42,10 @@ namespace {
 // element 0 of the kernels' layout [m * stride + j].
 struct WorkArgs {
     int nx, first, last, stride; // strips [first, last)
-    double a, T, half_T, TL1, TL2, L1T, L2T, eta, spin_y, paper_spin_y;
+    double a, T, half_T, TL1, TL2, L1T, L2T, spin_y, paper_spin_y;
     const double *x_slip, *step, *inside;              // per element (geometry)
     const double *qx, *qy, *factor;                    // per element (march)
-    const double *width, *rigid_slip_x, *paper_spin_x, *neg_area_T; // per strip
+    const double *width, *rigid_slip_x, *rigid_slip_y, *paper_spin_x, *neg_area_T; // per strip
     double *slip_x, *slip_y, *paper, *dissipation;     // per element
     double *loss, *strip_dissipation, *strip_paper;    // per strip
 };
@@ -75,9 +76,10 @@ CREEPWORK_INLINE void work_strips(const WorkArgs& A, int j0)
     const V a = simd::broadcast<W>(A.a), T = simd::broadcast<W>(A.T);
     const V half_T = simd::broadcast<W>(A.half_T), TL1 = simd::broadcast<W>(A.TL1),
             TL2 = simd::broadcast<W>(A.TL2), L1T = simd::broadcast<W>(A.L1T),
-            L2T = simd::broadcast<W>(A.L2T), eta = simd::broadcast<W>(A.eta),
-            spin_y = simd::broadcast<W>(A.spin_y), paper_spin_y = simd::broadcast<W>(A.paper_spin_y);
+            L2T = simd::broadcast<W>(A.L2T), spin_y = simd::broadcast<W>(A.spin_y),
+            paper_spin_y = simd::broadcast<W>(A.paper_spin_y);
     const V dy = simd::load<W>(A.width + j0), wsx = simd::load<W>(A.rigid_slip_x + j0),
+            wsy = simd::load<W>(A.rigid_slip_y + j0),
             psx = simd::load<W>(A.paper_spin_x + j0), nat = simd::load<W>(A.neg_area_T + j0);
     V px_prev = zero, py_prev = zero, loss = zero, diss = zero, spaper = zero;
     for (int m = 0; m < nx; ++m) {
@@ -94,7 +96,7 @@ CREEPWORK_INLINE void work_strips(const WorkArgs& A, int j0)
         if (simd::max_lane(slipping) > 0.0) {
             const V hp = a * simd::load<W>(step + e); // step [m]
             sx = slip ? wsx + L1T * dpx / hp : zero;
-            sy = slip ? eta + spin_y * xp + L2T * dpy / hp : zero;
+            sy = slip ? wsy + spin_y * xp + L2T * dpy / hp : zero;
             d = slip ? T * f * (one - f) * (TL1 * q_x * q_x + TL2 * q_y * q_y) * dy : zero;
         }
         const V w = in != zero ? nat * (px * (sx - psx) + py * (sy + paper_spin_y * xp)) : zero;
@@ -271,11 +273,17 @@ void march_with_work(const MarchGeometry& geo, const ContactGrid& grid, const Mo
     const double T = s.traction_scale;
     // Spin in the model's rigid slip is scaled by L1/L3, L2/L3 (Kalker 1982).
     const double spin_x_model = s.phi * s.L1 / s.L3, spin_y_model = s.phi * s.L2 / s.L3;
+    set_rigid_slip(grid, s.kin, st, 0, ny);
     for (int j = 0; j < ny; ++j) {
         const double y = s.b * grid.y_centre()[j];
-        st.wx[j] = s.kin.ux - s.kin.cx * grid.y_centre()[j];
         w.width[j] = s.b * grid.y_width()[j];
         w.rigid_slip_x[j] = s.xi - spin_x_model * y;
+        // The march's spin offset (CONTACT's facphi), in metres; exactly eta
+        // without one.
+        w.rigid_slip_y[j] =
+            s.kin.spin_offset > 0.0
+                ? s.eta + spin_y_model * (s.a * s.kin.spin_offset * grid.x_length()[j])
+                : s.eta;
         w.paper_spin_x[j] = (s.phi - spin_x_model) * y;
         const double area = s.a * s.b * grid.x_length()[j] * grid.y_width()[j];
         w.neg_area_T[j] = -area * T;
@@ -291,7 +299,6 @@ void march_with_work(const MarchGeometry& geo, const ContactGrid& grid, const Mo
                T * s.L2,
                s.L1 * T,
                s.L2 * T,
-               s.eta,
                spin_y_model,
                s.phi - spin_y_model,
                geo.x_slip.data(),
@@ -302,6 +309,7 @@ void march_with_work(const MarchGeometry& geo, const ContactGrid& grid, const Mo
                st.factor.data(),
                w.width.data(),
                w.rigid_slip_x.data(),
+               w.rigid_slip_y.data(),
                w.paper_spin_x.data(),
                w.neg_area_T.data(),
                w.slip_x.data(),

@@ -83,11 +83,17 @@ struct MarchState {
     Eigen::ArrayXd sum_px, sum_py, sum_x_py, slip_count;
     // Per strip: the traction leaving the trailing edge.
     Eigen::ArrayXd px, py;
-    // Per strip: rigid slip over flexibility along x, ux - cx Y (scratch).
-    Eigen::ArrayXd wx;
+    // Per strip: rigid slip over flexibility along x, ux - cx Y, and the
+    // part of the one along y that does not vary along the strip, uy (plus
+    // cy times the spin offset); scratch, set by set_rigid_slip().
+    Eigen::ArrayXd wx, wy;
 
     void resize(int n_elements, int ny);
 };
+
+// The per-strip rigid slip of kin (state.wx, state.wy) for strips [first, last).
+void set_rigid_slip(const ContactGrid& grid, const NormalisedKinematics& kin, MarchState& state,
+                    int first, int last);
 
 // Advance every strip from the leading edge (m = 0) to the trailing edge.
 // Writes state (sized by resize(nx * ny, ny)); allocates nothing.
@@ -95,8 +101,8 @@ void march(const MarchGeometry& geometry, const ContactGrid& grid,
            const NormalisedKinematics& kin, PressureKind pressure, MarchState& state,
            KernelIsa isa);
 // Only strips [first, last) (first a multiple of kStripBlock), the rigid slip
-// state.wx of which is set: callers that follow each block with more work
-// while its data are in cache.
+// state.wx, state.wy of which is set: callers that follow each block with
+// more work while its data are in cache.
 constexpr int kStripBlock = 32;
 void march_strips(const MarchGeometry& geometry, const NormalisedKinematics& kin,
                   PressureKind pressure, MarchState& state, KernelIsa isa, int first, int last);
