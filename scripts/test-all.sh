@@ -45,7 +45,9 @@ targets_for_label() { # targets_for_label <dir> <label>
 }
 
 stage "Release build and tests"
-build build -DCMAKE_BUILD_TYPE=Release
+# Every part on, whatever an earlier configure of build/ cached.
+build build -DCMAKE_BUILD_TYPE=Release -DCREEPWORK_BUILD_TESTS=ON -DCREEPWORK_BUILD_EXAMPLES=ON \
+  -DCREEPWORK_BUILD_BENCH=ON -DCREEPWORK_BUILD_FORTRAN=ON -DCREEPWORK_BUILD_CLI=ON
 ctest --test-dir build --output-on-failure -j "$jobs"
 
 # The whole suite with ASan + UBSan (gcc: one compiler family for C, C++ and
