@@ -2,7 +2,8 @@
 // the header): the handle structs, the exception guard, versioned-struct
 // reading and writing, and the translation between C structs and the core.
 // Every extern "C" body runs inside guarded(), which turns C++ exceptions
-// into status codes.
+// into status codes and sets the floating-point mode of the call
+// (capi_fp_mode.hpp).
 #pragma once
 
 #include "creepwork/creepwork.h"
@@ -13,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "capi_fp_mode.hpp"
 #include "contact/error.hpp"
 #include "solver.hpp"
 
@@ -62,6 +64,7 @@ int map_kind(cw::ErrorKind kind);
 template <class Body>
 inline int guarded(std::string* message, Body&& body) noexcept
 {
+    const ScopedFpMode fp_mode; // masked, subnormals flushed; the caller's MXCSR back on return
     try {
         if (message) message->clear();
         return body();

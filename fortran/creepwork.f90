@@ -678,7 +678,9 @@ contains
       call deliver(o, stat)
    end subroutine cw_kalker_flexibilities
 
-   ! Hertz contact: hertz = a [m], b [m], p0 [Pa], approach [m].
+   ! Hertz contact from the undeformed gap A x^2 + B y^2 [1/m]: A and B are
+   ! HALF the relative curvatures, A = (1/R1x + 1/R2x)/2 (see the header).
+   ! hertz = a [m], b [m], p0 [Pa], approach [m].
    subroutine cw_hertz_solve(A, B, normal_force, E_star, hertz, stat, errmsg)
       real(c_double), intent(in) :: A, B, normal_force, E_star
       real(c_double), intent(inout) :: hertz(4)

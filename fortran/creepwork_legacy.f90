@@ -3,9 +3,9 @@
 ! Plain external subroutines: no module, no derived type, no optional
 ! argument in the caller. Scalars are passed by reference, arrays have
 ! explicit shape, the integer error flag IERR comes last (0 = success,
-! otherwise a CW_* status of creepwork.h; on error nothing is written to
-! the outputs). Written in Fortran so the compiler handles name mangling:
-! call them from any Fortran compiler-compatible caller built with gfortran.
+! otherwise a CW_* status of creepwork.h, text from CWERRM; on error nothing
+! is written to the outputs). Written in Fortran so the compiler handles name
+! mangling: call them from any caller built with gfortran.
 !
 !   CWFSIM  Kalker's original normalised FASTSIM (1982): the drop-in for
 !           CALL FASTSIM(UX, UY, FX, FY, MX, MY, TOL, TX, TY)
@@ -13,20 +13,125 @@
 !           forces, moment, work totals and every per-element map
 !   CWSOLL  the same with the flexibilities L1, L2, L3 given
 !   CWACCU  adds one time step's work into running totals (paper eqs. 35, 37)
+!   CWKALK  Kalker's creepage and spin coefficients C11, C22, C23, C33
+!   CWFLEX  Kalker's flexibilities L1, L2, L3 (for CWSOLL and CWFSIM)
+!   CWHERT  Hertz: semi-axes, peak pressure and approach from the gap
+!   CWERRM  the message of an IERR value
+!   CWTYPE  checks that the caller's REAL and INTEGER are the library's
 !
-! Types: every real argument is DOUBLE PRECISION (REAL*8), every integer
-! argument default INTEGER. The names follow the implicit typing rule
-! (I-N integer), so IMPLICIT DOUBLE PRECISION (A-H, O-Z) callers need no
-! declarations. Arrays are dimensioned exactly (NX, NY) in the caller
-! (element I along x, the rolling direction, J along y), as in the C layout.
-! Each CWSOLM/CWSOLL call creates and frees its own solver: they keep no
-! state and may be called from several threads at once. Loops that want to
-! avoid that allocation use module creepwork (cw_solver_type) instead.
+! The installed include/creepwork/fortran/creepwork_legacy.inc declares them
+! EXTERNAL with every argument listed; creepwork_legacy.fi has interface
+! blocks (free form) that let the compiler check every call.
+!
+! Types -- the one thing Fortran 77 cannot check for you: every real
+! argument is DOUBLE PRECISION (REAL*8, real(c_double)), every integer
+! argument INTEGER*4 (integer(c_int)). A REAL (single precision) argument, or
+! a caller compiled with -fdefault-integer-8 or -fdefault-real-8 (which makes
+! DOUBLE PRECISION 16 bytes), passes garbage. Where the garbage has an
+! impossible pattern -- a real input that is a subnormal number, the upper
+! half of a REAL*8 read from a REAL*4 that is followed by zero bytes -- IERR
+! is CW_ERR_INVALID_INPUT; otherwise the results are garbage. Run CWTYPE once
+! at start-up, or include creepwork_legacy.fi. The names follow the implicit
+! typing rule (I-N integer), so IMPLICIT DOUBLE PRECISION (A-H, O-Z) callers
+! need no declarations except CHARACTER for CWERRM's message. Arrays are
+! dimensioned exactly (NX, NY) in the caller (element I along x, the rolling
+! direction, J along y), as in the C layout. Each CWSOLM/CWSOLL call creates
+! and frees its own solver: they keep no state and may be called from several
+! threads at once. Loops that want to avoid that allocation use module
+! creepwork (cw_solver_type) instead.
+!
+! Floating-point traps: every routine is safe in a program built with
+! -ffpe-trap=invalid,zero,overflow,denormal. The library's calls mask and
+! restore the floating-point state themselves (README "Guarantees"); the
+! arithmetic done here (CWACCU) runs with halting off and restores the
+! caller's halting modes and flags (IEEE_GET_STATUS/IEEE_SET_STATUS), and
+! reads no subnormal number: such inputs are rejected, such results are 0.
+
+! Shared by the routines below (not for callers).
+module creepwork_legacy_support
+   use, intrinsic :: iso_c_binding, only: c_double, c_int, c_int64_t
+   use creepwork
+   implicit none
+   private
+   public :: legacy_solve, subnormal, any_subnormal, flushed
+
+contains
+
+   ! x is a subnormal number: its exponent bits are zero and it is not zero.
+   ! Tested on the bits, so that reading it raises no denormal exception.
+   ! No physical input is ~1e-310; the usual cause is a REAL (single
+   ! precision) actual argument followed by zero bytes.
+   elemental logical function subnormal(x)
+      real(c_double), intent(in) :: x
+      integer(c_int64_t) :: bits
+      bits = transfer(x, bits)
+      subnormal = ibits(bits, 52, 11) == 0 .and. ibits(bits, 0, 52) /= 0
+   end function subnormal
+
+   logical function any_subnormal(values)
+      real(c_double), intent(in) :: values(:)
+      any_subnormal = any(subnormal(values))
+   end function any_subnormal
+
+   ! x, or 0 if it is subnormal (a result the next call would have to read).
+   elemental real(c_double) function flushed(x)
+      real(c_double), intent(in) :: x
+      flushed = x
+      if (subnormal(x)) flushed = 0.0_c_double
+   end function flushed
+
+   subroutine legacy_solve(params, nx, ny, fx, fy, fmz, wmac, wmic, ck, px, py, sx, sy, &
+                           zmap, wpap, wcon, istate, ierr)
+      type(cw_params), intent(in) :: params
+      integer(c_int), intent(in) :: nx, ny
+      real(c_double), intent(inout) :: fx, fy, fmz, wmac, wmic, ck
+      real(c_double), intent(inout), dimension(nx, ny) :: px, py, sx, sy, zmap, wpap, wcon
+      integer(c_int), intent(inout) :: istate(nx, ny)
+      integer(c_int), intent(out) :: ierr
+      type(cw_solver_type) :: solver
+      type(cw_result) :: r
+      integer :: stat
+      if (any_subnormal([params%a, params%b, params%normal_force, params%mu, params%G, &
+                         params%nu, params%L1, params%L2, params%L3, params%xi_x, &
+                         params%xi_y, params%phi])) then
+         ierr = CW_ERR_INVALID_INPUT
+         return
+      end if
+      call solver%create(nx=nx, ny=ny, stat=stat)
+      ierr = int(stat, c_int)
+      if (ierr /= CW_OK) return
+      call solver%solve(params, CW_SOLVE_FULL, r, stat=stat)
+      ! After a successful full solve no field can fail; stop at the first
+      ! error all the same.
+      if (stat == CW_OK) call solver%get_field(CW_FIELD_PX, px, stat=stat)
+      if (stat == CW_OK) call solver%get_field(CW_FIELD_PY, py, stat=stat)
+      if (stat == CW_OK) call solver%get_field(CW_FIELD_SX, sx, stat=stat)
+      if (stat == CW_OK) call solver%get_field(CW_FIELD_SY, sy, stat=stat)
+      if (stat == CW_OK) call solver%get_field(CW_FIELD_MZ, zmap, stat=stat)
+      if (stat == CW_OK) call solver%get_field(CW_FIELD_WORK_PAPER, wpap, stat=stat)
+      if (stat == CW_OK) call solver%get_field(CW_FIELD_WORK_CONSISTENT, wcon, stat=stat)
+      if (stat == CW_OK) call solver%get_state(istate, stat=stat)
+      if (stat == CW_OK) then
+         fx = r%Fx
+         fy = r%Fy
+         fmz = r%Mz
+         wmac = r%W_macro
+         wmic = r%W_micro_paper
+         ck = r%K
+      end if
+      ierr = int(stat, c_int)
+      call solver%destroy()
+   end subroutine legacy_solve
+
+end module creepwork_legacy_support
 
 ! Kalker's normalised interface (Kalker 1982), argument for argument:
 !   UX, UY   normalised creepages pi a^2 b xi/(2 mu N L), pi a^2 b eta/(2 mu N L)
 !   FX, FY   normalised spin terms pi a^2 b^2 phi/(2 mu N L), pi a^3 b phi/(2 mu N L)
-!            (so FX/FY = b/a); rigid slip (UX - Y*FX, UY + X*FY) on the unit disk
+!            (so FX/FY = b/a); rigid slip (UX - Y*FX, UY + X*FY) on the unit disk.
+!            With Kalker's three flexibilities (CWFLEX) put L1 in UX, L2 in UY
+!            and L3 in FX, FY: that is exactly the simplified theory CWSOLM
+!            solves (README "Legacy Fortran").
 !   MX, MY   elements per strip and strips (1..1000)
 !   TOL      strip-refinement tolerance: when the spin pole (-UY/FY, UX/FX)
 !            lies in the contact, the strips are cut at Y = UX/FX and the two
@@ -41,61 +146,22 @@
 !            CW_ERR_NUMERIC; TX, TY are then left unchanged.
 ! A FASTSIM caller changes CALL FASTSIM(...) into CALL CWFSIM(..., IERR).
 subroutine CWFSIM(UX, UY, FX, FY, MX, MY, TOL, TX, TY, IERR)
-   use, intrinsic :: iso_c_binding, only: c_double
-   use creepwork, only: cw_fastsim_normalised
+   use, intrinsic :: iso_c_binding, only: c_double, c_int
+   use creepwork, only: cw_fastsim_normalised, CW_ERR_INVALID_INPUT
+   use creepwork_legacy_support, only: any_subnormal
    implicit none
    real(c_double), intent(in) :: UX, UY, FX, FY, TOL
-   integer, intent(in) :: MX, MY
+   integer(c_int), intent(in) :: MX, MY
    real(c_double), intent(inout) :: TX, TY
-   integer, intent(out) :: IERR
-   call cw_fastsim_normalised(UX, UY, FX, FY, MX, MY, TOL, TX, TY, stat=IERR)
+   integer(c_int), intent(out) :: IERR
+   integer :: stat
+   if (any_subnormal([UX, UY, FX, FY, TOL])) then
+      IERR = CW_ERR_INVALID_INPUT
+      return
+   end if
+   call cw_fastsim_normalised(UX, UY, FX, FY, int(MX), int(MY), TOL, TX, TY, stat=stat)
+   IERR = int(stat, c_int)
 end subroutine CWFSIM
-
-! Shared implementation of CWSOLM and CWSOLL (not for callers).
-module creepwork_legacy_support
-   use, intrinsic :: iso_c_binding, only: c_double, c_int
-   use creepwork
-   implicit none
-   private
-   public :: legacy_solve
-
-contains
-
-   subroutine legacy_solve(params, nx, ny, fx, fy, fmz, wmac, wmic, ck, px, py, sx, sy, &
-                           zmap, wpap, wcon, istate, ierr)
-      type(cw_params), intent(in) :: params
-      integer, intent(in) :: nx, ny
-      real(c_double), intent(inout) :: fx, fy, fmz, wmac, wmic, ck
-      real(c_double), intent(inout), dimension(nx, ny) :: px, py, sx, sy, zmap, wpap, wcon
-      integer(c_int), intent(inout) :: istate(nx, ny)
-      integer, intent(out) :: ierr
-      type(cw_solver_type) :: solver
-      type(cw_result) :: r
-      call solver%create(nx=nx, ny=ny, stat=ierr)
-      if (ierr /= CW_OK) return
-      call solver%solve(params, CW_SOLVE_FULL, r, stat=ierr)
-      ! After a successful full solve no field can fail; stop at the first
-      ! error all the same.
-      if (ierr == CW_OK) call solver%get_field(CW_FIELD_PX, px, stat=ierr)
-      if (ierr == CW_OK) call solver%get_field(CW_FIELD_PY, py, stat=ierr)
-      if (ierr == CW_OK) call solver%get_field(CW_FIELD_SX, sx, stat=ierr)
-      if (ierr == CW_OK) call solver%get_field(CW_FIELD_SY, sy, stat=ierr)
-      if (ierr == CW_OK) call solver%get_field(CW_FIELD_MZ, zmap, stat=ierr)
-      if (ierr == CW_OK) call solver%get_field(CW_FIELD_WORK_PAPER, wpap, stat=ierr)
-      if (ierr == CW_OK) call solver%get_field(CW_FIELD_WORK_CONSISTENT, wcon, stat=ierr)
-      if (ierr == CW_OK) call solver%get_state(istate, stat=ierr)
-      if (ierr == CW_OK) then
-         fx = r%Fx
-         fy = r%Fy
-         fmz = r%Mz
-         wmac = r%W_macro
-         wmic = r%W_micro_paper
-         ck = r%K
-      end if
-      call solver%destroy()
-   end subroutine legacy_solve
-
-end module creepwork_legacy_support
 
 ! Extended entry, flexibilities from the material (Kalker's C11, C22, C23):
 ! steady rolling of an elliptic contact on Kalker's strip grid (NY strips of
@@ -125,11 +191,11 @@ subroutine CWSOLM(A, B, FN, FMU, G, PNU, XI, ETA, PHI, NX, NY, FX, FY, FMZ, WMAC
    use creepwork_legacy_support, only: legacy_solve
    implicit none
    real(c_double), intent(in) :: A, B, FN, FMU, G, PNU, XI, ETA, PHI
-   integer, intent(in) :: NX, NY
+   integer(c_int), intent(in) :: NX, NY
    real(c_double), intent(inout) :: FX, FY, FMZ, WMAC, WMIC, CK
    real(c_double), intent(inout), dimension(NX, NY) :: PX, PY, SX, SY, ZMAP, WPAP, WCON
    integer(c_int), intent(inout) :: ISTATE(NX, NY)
-   integer, intent(out) :: IERR
+   integer(c_int), intent(out) :: IERR
    type(cw_params) :: p
    call cw_params_init(p)
    p%a = A
@@ -155,11 +221,11 @@ subroutine CWSOLL(A, B, FN, FMU, FL1, FL2, FL3, XI, ETA, PHI, NX, NY, FX, FY, FM
    use creepwork_legacy_support, only: legacy_solve
    implicit none
    real(c_double), intent(in) :: A, B, FN, FMU, FL1, FL2, FL3, XI, ETA, PHI
-   integer, intent(in) :: NX, NY
+   integer(c_int), intent(in) :: NX, NY
    real(c_double), intent(inout) :: FX, FY, FMZ, WMAC, WMIC, CK
    real(c_double), intent(inout), dimension(NX, NY) :: PX, PY, SX, SY, ZMAP, WPAP, WCON
    integer(c_int), intent(inout) :: ISTATE(NX, NY)
-   integer, intent(out) :: IERR
+   integer(c_int), intent(out) :: IERR
    type(cw_params) :: p
    call cw_params_init(p)
    p%a = A
@@ -192,39 +258,84 @@ end subroutine CWSOLL
 ! Output:
 !   CKRUN        K over the run, WMSUM/WPSUM (eq. 39; 0 while WPSUM = 0)
 !   IERR         0, CW_ERR_GRID_OUT_OF_RANGE (NX, NY), CW_ERR_INVALID_INPUT
-!                (DIST) or CW_ERR_NUMERIC (a total would overflow): nothing
-!                is changed then.
+!                (DIST, or a subnormal input) or CW_ERR_NUMERIC (a total
+!                would overflow): nothing is changed then.
 ! The arithmetic is that of cw_accumulator_add, so the totals equal the C
-! accumulator's to the last bit.
+! accumulator's to the last bit (a subnormal sum, which that flushes, is 0).
 subroutine CWACCU(NX, NY, DIST, WMAC, WMIC, WPAP, WCON, DSUM, WMSUM, WPSUM, WPACC, WCACC, &
                   CKRUN, IERR)
-   use, intrinsic :: iso_c_binding, only: c_double
-   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
-   use creepwork, only: CW_OK, CW_ERR_GRID_OUT_OF_RANGE, CW_ERR_INVALID_INPUT, CW_ERR_NUMERIC, &
-                        CW_MAX_GRID_CELLS
+   use, intrinsic :: iso_c_binding, only: c_double, c_int
+   use, intrinsic :: ieee_exceptions, only: ieee_status_type, ieee_get_status, ieee_set_status, &
+                                            ieee_set_halting_mode, ieee_usual, ieee_underflow
    implicit none
-   integer, intent(in) :: NX, NY
+   integer(c_int), intent(in) :: NX, NY
    real(c_double), intent(in) :: DIST, WMAC, WMIC
    real(c_double), intent(in), dimension(NX, NY) :: WPAP, WCON
    real(c_double), intent(inout) :: DSUM, WMSUM, WPSUM
    real(c_double), intent(inout), dimension(NX, NY) :: WPACC, WCACC
    real(c_double), intent(inout) :: CKRUN
-   integer, intent(out) :: IERR
+   integer(c_int), intent(out) :: IERR
+   interface
+      subroutine cwaccu_body(nx, ny, dist, wmac, wmic, wpap, wcon, dsum, wmsum, wpsum, wpacc, &
+                             wcacc, ckrun, ierr)
+         import :: c_double, c_int
+         integer(c_int), intent(in) :: nx, ny
+         real(c_double), intent(in) :: dist, wmac, wmic
+         real(c_double), intent(in), dimension(nx, ny) :: wpap, wcon
+         real(c_double), intent(inout) :: dsum, wmsum, wpsum
+         real(c_double), intent(inout), dimension(nx, ny) :: wpacc, wcacc
+         real(c_double), intent(inout) :: ckrun
+         integer(c_int), intent(out) :: ierr
+      end subroutine cwaccu_body
+   end interface
+   type(ieee_status_type) :: caller
+   ! Halting off while the sums are formed and checked; the caller's halting
+   ! modes and flags back afterwards, so an overflow found here is a status.
+   call ieee_get_status(caller)
+   call ieee_set_halting_mode(ieee_usual, .false.)
+   call ieee_set_halting_mode(ieee_underflow, .false.)
+   call cwaccu_body(NX, NY, DIST, WMAC, WMIC, WPAP, WCON, DSUM, WMSUM, WPSUM, WPACC, WCACC, &
+                    CKRUN, IERR)
+   call ieee_set_status(caller)
+end subroutine CWACCU
+
+! CWACCU's arithmetic, run with halting off (not for callers).
+subroutine cwaccu_body(NX, NY, DIST, WMAC, WMIC, WPAP, WCON, DSUM, WMSUM, WPSUM, WPACC, WCACC, &
+                       CKRUN, IERR)
+   use, intrinsic :: iso_c_binding, only: c_double, c_int
+   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
+   use creepwork, only: CW_OK, CW_ERR_GRID_OUT_OF_RANGE, CW_ERR_INVALID_INPUT, CW_ERR_NUMERIC, &
+                        CW_MAX_GRID_CELLS
+   use creepwork_legacy_support, only: subnormal, any_subnormal, flushed
+   implicit none
+   integer(c_int), intent(in) :: NX, NY
+   real(c_double), intent(in) :: DIST, WMAC, WMIC
+   real(c_double), intent(in), dimension(NX, NY) :: WPAP, WCON
+   real(c_double), intent(inout) :: DSUM, WMSUM, WPSUM
+   real(c_double), intent(inout), dimension(NX, NY) :: WPACC, WCACC
+   real(c_double), intent(inout) :: CKRUN
+   integer(c_int), intent(out) :: IERR
    real(c_double) :: d, wm, wp, k
    integer :: i, j
    if (NX < 1 .or. NX > CW_MAX_GRID_CELLS .or. NY < 1 .or. NY > CW_MAX_GRID_CELLS) then
       IERR = CW_ERR_GRID_OUT_OF_RANGE
       return
    end if
+   ! Subnormal inputs are read by nothing (they would trip a denormal trap).
+   if (any_subnormal([DIST, WMAC, WMIC, DSUM, WMSUM, WPSUM]) .or. any(subnormal(WPAP)) .or. &
+       any(subnormal(WCON)) .or. any(subnormal(WPACC)) .or. any(subnormal(WCACC))) then
+      IERR = CW_ERR_INVALID_INPUT
+      return
+   end if
    if (.not. (ieee_is_finite(DIST) .and. DIST >= 0.0_c_double)) then
       IERR = CW_ERR_INVALID_INPUT
       return
    end if
-   d = DSUM + DIST
-   wm = WMSUM + WMAC*DIST
-   wp = WPSUM + WMIC*DIST
+   d = flushed(DSUM + DIST)
+   wm = flushed(WMSUM + flushed(WMAC*DIST))
+   wp = flushed(WPSUM + flushed(WMIC*DIST))
    k = 0.0_c_double
-   if (wp /= 0.0_c_double) k = wm/wp
+   if (wp /= 0.0_c_double) k = flushed(wm/wp)
    if (.not. (ieee_is_finite(d) .and. ieee_is_finite(wm) .and. ieee_is_finite(wp) .and. &
               ieee_is_finite(k))) then
       IERR = CW_ERR_NUMERIC
@@ -241,8 +352,8 @@ subroutine CWACCU(NX, NY, DIST, WMAC, WMIC, WPAP, WCON, DSUM, WMSUM, WPSUM, WPAC
    end do
    do j = 1, NY
       do i = 1, NX
-         WPACC(i, j) = WPACC(i, j) + DIST*WPAP(i, j)
-         WCACC(i, j) = WCACC(i, j) + DIST*WCON(i, j)
+         WPACC(i, j) = flushed(WPACC(i, j) + flushed(DIST*WPAP(i, j)))
+         WCACC(i, j) = flushed(WCACC(i, j) + flushed(DIST*WCON(i, j)))
       end do
    end do
    DSUM = d
@@ -250,4 +361,135 @@ subroutine CWACCU(NX, NY, DIST, WMAC, WMIC, WPAP, WCON, DSUM, WMSUM, WPSUM, WPAC
    WPSUM = wp
    CKRUN = k
    IERR = CW_OK
-end subroutine CWACCU
+end subroutine cwaccu_body
+
+! Kalker's creepage and spin coefficients (Kalker 1990, Table E.3;
+! asymptotes below min(a/b, b/a) = 0.1), as cw_kalker_coefficients:
+!   AOB       semi-axis ratio a/b [-], 1e-3 .. 1e3
+!   PNU       Poisson's ratio [-], 0 .. 0.5
+!   C11, C22, C23, C33  (out) the coefficients [-]
+!   IERR      0 or CW_ERR_INVALID_INPUT (outputs unchanged)
+subroutine CWKALK(AOB, PNU, C11, C22, C23, C33, IERR)
+   use, intrinsic :: iso_c_binding, only: c_double, c_int
+   use creepwork, only: cw_kalker_coefficients, CW_OK, CW_ERR_INVALID_INPUT
+   use creepwork_legacy_support, only: any_subnormal
+   implicit none
+   real(c_double), intent(in) :: AOB, PNU
+   real(c_double), intent(inout) :: C11, C22, C23, C33
+   integer(c_int), intent(out) :: IERR
+   real(c_double) :: c(4)
+   integer :: stat
+   if (any_subnormal([AOB, PNU])) then
+      IERR = CW_ERR_INVALID_INPUT
+      return
+   end if
+   c = 0.0_c_double
+   call cw_kalker_coefficients(AOB, PNU, c, stat=stat)
+   IERR = int(stat, c_int)
+   if (IERR /= CW_OK) return
+   C11 = c(1)
+   C22 = c(2)
+   C23 = c(3)
+   C33 = c(4)
+end subroutine CWKALK
+
+! Kalker's flexibilities of the simplified theory (Kalker 1982), as
+! cw_kalker_flexibilities: L1 = 8A/(3 C11 G), L2 = 8A/(3 C22 G),
+! L3 = pi A sqrt(A/B)/(4 C23 G).
+!   A, B          semi-axes [m];  G  combined shear modulus [Pa];  PNU  [-]
+!   FL1, FL2, FL3 (out) flexibilities [m/Pa]: for CWSOLL, or for CWFSIM's
+!                 UX = pi A^2 B XI/(2 FMU FN FL1), UY = pi A^2 B ETA/(2 FMU FN FL2),
+!                 FX = pi A^2 B^2 PHI/(2 FMU FN FL3), FY = pi A^3 B PHI/(2 FMU FN FL3)
+!   IERR          0 or CW_ERR_INVALID_INPUT (outputs unchanged)
+subroutine CWFLEX(A, B, G, PNU, FL1, FL2, FL3, IERR)
+   use, intrinsic :: iso_c_binding, only: c_double, c_int
+   use creepwork, only: cw_kalker_flexibilities, CW_OK, CW_ERR_INVALID_INPUT
+   use creepwork_legacy_support, only: any_subnormal
+   implicit none
+   real(c_double), intent(in) :: A, B, G, PNU
+   real(c_double), intent(inout) :: FL1, FL2, FL3
+   integer(c_int), intent(out) :: IERR
+   real(c_double) :: L(3)
+   integer :: stat
+   if (any_subnormal([A, B, G, PNU])) then
+      IERR = CW_ERR_INVALID_INPUT
+      return
+   end if
+   L = 0.0_c_double
+   call cw_kalker_flexibilities(A, B, G, PNU, L, stat=stat)
+   IERR = int(stat, c_int)
+   if (IERR /= CW_OK) return
+   FL1 = L(1)
+   FL2 = L(2)
+   FL3 = L(3)
+end subroutine CWFLEX
+
+! Hertz contact of elastically similar bodies, as cw_hertz_solve:
+!   GA, GB    gap coefficients [1/m]: the undeformed gap is GA x^2 + GB y^2,
+!             so GA = (1/R1x + 1/R2x)/2 -- HALF the relative curvature
+!             along x (the rolling direction), GB the same across
+!   FN        normal force [N];  ESTAR  contact modulus E* [Pa]
+!             (G/(1 - PNU) for identical materials)
+!   A, B      (out) semi-axes along x and y [m]
+!   P0        (out) peak pressure 3 FN/(2 pi A B) [Pa];  APPR  approach [m]
+!   IERR      0, CW_ERR_INVALID_INPUT or CW_ERR_NUMERIC (outputs unchanged)
+subroutine CWHERT(GA, GB, FN, ESTAR, A, B, P0, APPR, IERR)
+   use, intrinsic :: iso_c_binding, only: c_double, c_int
+   use creepwork, only: cw_hertz_solve, CW_OK, CW_ERR_INVALID_INPUT
+   use creepwork_legacy_support, only: any_subnormal
+   implicit none
+   real(c_double), intent(in) :: GA, GB, FN, ESTAR
+   real(c_double), intent(inout) :: A, B, P0, APPR
+   integer(c_int), intent(out) :: IERR
+   real(c_double) :: h(4)
+   integer :: stat
+   if (any_subnormal([GA, GB, FN, ESTAR])) then
+      IERR = CW_ERR_INVALID_INPUT
+      return
+   end if
+   h = 0.0_c_double
+   call cw_hertz_solve(GA, GB, FN, ESTAR, h, stat=stat)
+   IERR = int(stat, c_int)
+   if (IERR /= CW_OK) return
+   A = h(1)
+   B = h(2)
+   P0 = h(3)
+   APPR = h(4)
+end subroutine CWHERT
+
+! The message of a status: MSG (CHARACTER*(*), any length; 80 holds every
+! message) receives cw_status_string(IERR), blank-padded or cut.
+subroutine CWERRM(IERR, MSG)
+   use, intrinsic :: iso_c_binding, only: c_int
+   use creepwork, only: cw_status_string
+   implicit none
+   integer(c_int), intent(in) :: IERR
+   character(len=*), intent(out) :: MSG
+   MSG = cw_status_string(int(IERR))
+end subroutine CWERRM
+
+! Checks that the caller's types are the library's. Call it once with
+!   DOUBLE PRECISION R(2), INTEGER N(2), INTEGER IERR
+!   R(1) = 1, R(2) = 2, N(1) = 1, N(2) = 2, IERR = -1
+! declared exactly as the variables passed to the other routines. IERR = 0:
+! REAL*8 and INTEGER*4 as expected. Anything else (CW_ERR_INVALID_INPUT, or
+! a garbage IERR when the caller's INTEGER is 8 bytes and only 4 were
+! written): the other routines would get garbage. It reads only the first 8
+! bytes of R and of N, which exist whatever the caller's kinds.
+subroutine CWTYPE(R, N, IERR)
+   use, intrinsic :: iso_c_binding, only: c_double, c_int, c_int64_t
+   use creepwork, only: CW_OK, CW_ERR_INVALID_INPUT
+   implicit none
+   real(c_double), intent(in) :: R(2)
+   integer(c_int), intent(in) :: N(2)
+   integer(c_int), intent(out) :: IERR
+   integer(c_int64_t) :: bits
+   ! Two REAL*4 (1.0, 2.0) read as one REAL*8 are 2.0000004731118679; a
+   ! REAL*16 1.0 has zero low bytes; INTEGER*8 (1, 2) reads as (1, 0).
+   ! Compared as bits: garbage may be a NaN, and comparing a NaN traps.
+   IERR = CW_ERR_INVALID_INPUT
+   bits = transfer(R(1), bits)
+   if (bits /= transfer(1.0_c_double, bits)) return
+   if (N(1) /= 1_c_int .or. N(2) /= 2_c_int) return
+   IERR = CW_OK
+end subroutine CWTYPE

@@ -1,10 +1,20 @@
 #!/usr/bin/env bash
 # Installs the Debian packages creepwork needs, if any is missing. As root it
 # uses apt-get; otherwise it lists what to install and fails.
+#   install-deps.sh demo   what ./run demo needs: the library, the CLI, gnuplot
+#   install-deps.sh all    everything ./run test needs (default): also
+#                          gfortran, cmocka, clang for fuzzing and TSan,
+#                          valgrind
 set -euo pipefail
 
-packages=(cmake g++ gfortran make pkg-config libeigen3-dev libcmocka-dev gnuplot-nox
-          clang-14 libclang-rt-14-dev libomp-14-dev valgrind)
+demo=(cmake g++ make libeigen3-dev gnuplot-nox)
+all=("${demo[@]}" gfortran pkg-config libcmocka-dev clang-14 libclang-rt-14-dev libomp-14-dev
+     valgrind)
+case "${1:-all}" in
+  demo) packages=("${demo[@]}") ;;
+  all) packages=("${all[@]}") ;;
+  *) echo "usage: install-deps.sh [demo|all]" >&2; exit 2 ;;
+esac
 
 missing=()
 for p in "${packages[@]}"; do
@@ -17,6 +27,7 @@ if [ "$(id -u)" -ne 0 ]; then
   echo "install them with: sudo apt-get install -y ${missing[*]}" >&2
   exit 1
 fi
+echo "installing Debian packages: ${missing[*]} ..."
 export DEBIAN_FRONTEND=noninteractive
-apt-get update -qq
-apt-get install -y -qq --no-install-recommends "${missing[@]}"
+apt-get update -qq >/dev/null
+apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null

@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "contact/fp_safe.hpp"
+
 namespace creepwork {
 namespace {
 
@@ -70,14 +72,14 @@ HertzContact hertz_from_curvatures(double A, double B, double N, double E_star)
 
     // Johnson eq. 4.38: small = (p0/E*) (b/(e^2 a^2)) (K - E), p0 = 3N/(2 pi a b);
     // for e -> 0, (K - E)/e^2 -> pi/4.
-    const double k_minus_e_over_m = k > 0.0 ? ell.K_minus_E / (k * k) : 0.25 * kPi;
+    const double k_minus_e_over_m = k > 0.0 ? quotient_or_zero(ell.K_minus_E, k * k) : 0.25 * kPi;
     const double major = std::cbrt(3.0 * N * k_minus_e_over_m / (2.0 * kPi * E_star * small));
     const double minor = major * std::sqrt((1.0 - k) * (1.0 + k));
 
     HertzContact h{};
     h.a = A <= B ? major : minor;
     h.b = A <= B ? minor : major;
-    h.p0 = major > 0.0 ? 3.0 * N / (2.0 * kPi * major * minor) : 0.0;
+    h.p0 = quotient_if_positive(3.0 * N, 2.0 * kPi * major * minor);
     h.approach = h.p0 * minor * ell.K / E_star;
     return h;
 }
@@ -95,7 +97,7 @@ HertzCurvatures hertz_from_semi_axes(double a, double b, double N, double E_star
     h.p0 = 3.0 * N / (2.0 * kPi * a * b);
     double along_major, along_minor;
     if (k > 0.0) {
-        const double c = h.p0 * small / (E_star * k * k * big * big);
+        const double c = quotient_or_zero(h.p0 * small, E_star * k * k * big * big);
         along_major = c * ell.K_minus_E;
         along_minor = c * ((big / small) * (big / small) * ell.E - ell.K);
     } else {

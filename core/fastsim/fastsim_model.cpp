@@ -3,6 +3,7 @@
 #include <string>
 
 #include "contact/error.hpp"
+#include "contact/fp_safe.hpp"
 #include "contact/hertz.hpp"
 
 namespace creepwork {
@@ -58,7 +59,7 @@ SolveTotals FastsimModel::solve(const ContactInput& input, SolveMode mode)
     t.n_contact = grid_.n_contact();
     t.n_slip = n_slip;
     t.n_adhesion = t.n_contact - n_slip;
-    t.adhesion_fraction = t.n_contact > 0 ? double(t.n_adhesion) / t.n_contact : 0.0;
+    t.adhesion_fraction = quotient_or_zero(t.n_adhesion, t.n_contact);
     t.a = a;
     t.b = b;
     t.L1 = setup_.L1;
@@ -79,7 +80,7 @@ SolveTotals FastsimModel::solve(const ContactInput& input, SolveMode mode)
     if (mode == SolveMode::full) {
         const WorkTotals w = distribute_work(geometry_, grid_, setup_, t.W_macro, work_, isa_);
         t.W_micro_paper = w.W_micro_paper;
-        t.K = w.W_micro_paper != 0.0 ? t.W_macro / w.W_micro_paper : 0.0;
+        t.K = quotient_or_zero(t.W_macro, w.W_micro_paper);
         t.W_consistent = w.W_consistent;
         t.balance_factor = w.balance;
         t.work_flags = w.flags;

@@ -7,6 +7,7 @@
 
 #include "contact/contact_input.hpp"
 #include "contact/error.hpp"
+#include "fastsim/flexibility_blending.hpp"
 
 namespace creepwork {
 namespace {
@@ -38,6 +39,13 @@ ModelSetup make_model_setup(const ContactInput& in)
         s.L2 = in.L2;
         s.L3 = in.L3;
     }
+    if (in.flexibility_blending) {
+        const Flexibilities L = blend_flexibilities({s.L1, s.L2, s.L3}, in.a, in.b, in.mu,
+                                                    in.normal_force, in.xi_x, in.xi_y, in.phi);
+        s.L1 = L.L1;
+        s.L2 = L.L2;
+        s.L3 = L.L3;
+    }
     if (!std::isfinite(s.L1 * s.L2 * s.L3) || !std::isfinite(s.traction_scale))
         throw Error(ErrorKind::invalid_input,
                     "G, L1..L3, normal_force or a, b are so extreme that the flexibilities or "
@@ -65,6 +73,8 @@ ModelSetup make_model_setup(const ContactInput& in)
         s.kin.cx = n[2] / divisor;
         s.kin.cy = n[3] / divisor;
     }
+    // FASTSIM's default is Kalker's: no offset (params.hpp).
+    s.kin.spin_offset = in.spin_offset >= 0.0 ? in.spin_offset : 0.0;
     return s;
 }
 

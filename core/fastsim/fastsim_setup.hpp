@@ -15,6 +15,11 @@ namespace creepwork {
 struct NormalisedKinematics {
     double ux = 0, uy = 0; // a xi/(L1 mu p0), a eta/(L2 mu p0)
     double cx = 0, cy = 0; // a b phi/(L3 mu p0), a^2 phi/(L3 mu p0)
+    // CONTACT's facphi: the spin term of the lateral rigid slip is taken
+    // spin_offset element lengths ahead of the slip point, towards the
+    // leading edge: uy + cy (X + spin_offset dX), dX the strip's element
+    // length (x/a). 0 is Kalker's FASTSIM.
+    double spin_offset = 0;
 };
 
 struct ModelSetup {
@@ -22,7 +27,7 @@ struct ModelSetup {
     PressureKind pressure = PressureKind::parabolic;
     double pressure_scale = 0;   // p0 = 2N/(pi a b) (parabolic) or 3N/(2 pi a b) (elliptic) [Pa]
     double traction_scale = 0;   // mu * p0 [Pa]
-    double L1 = 0, L2 = 0, L3 = 0;
+    double L1 = 0, L2 = 0, L3 = 0; // in use: Kalker's or given, blended on request
     CreepCoefficients C{0, 0, 0, 0}; // zero when flexibilities were given
     int direction = 1;           // rolling direction, +1 or -1
     // Creepages in the rolling frame (x' = direction * x).

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "contact/fp_safe.hpp"
+
 namespace creepwork {
 
 void WorkState::resize(int n_elements, int ny)
@@ -22,6 +24,7 @@ void WorkState::resize(int n_elements, int ny)
     profile.setZero(stride);
     width.setZero(stride);
     rigid_slip_x.setZero(stride);
+    rigid_slip_y.setZero(stride);
     paper_spin_x.setZero(stride);
     neg_area_T.setZero(stride);
     ratio.setZero(stride);
@@ -30,7 +33,7 @@ void WorkState::resize(int n_elements, int ny)
 double equal_area_parabola(double W, double b, double y)
 {
     const double r = 1.0 - (y / b) * (y / b);
-    return r > 0.0 ? 0.75 * W / b * r : 0.0;
+    return r > 0.0 ? 0.75 * W / b * r : 0.0; // b > 0: nothing to trap
 }
 
 namespace {
@@ -42,7 +45,7 @@ struct WorkArgs {
     double a, T, half_T, TL1, TL2, L1T, L2T, eta, spin_y, phi;
     const double *x_slip, *x_centre, *step, *inside;   // per element (geometry)
     const double *qx, *qy, *factor;                    // per element (march)
-    const double *width, *rigid_slip_x, *paper_spin_x, *neg_area_T; // per strip
+    const double *width, *rigid_slip_x, *rigid_slip_y, *paper_spin_x, *neg_area_T; // per strip
     double *slip_x, *slip_y, *paper, *dissipation;     // per element
     double *loss, *strip_dissipation, *strip_paper;    // per strip
 };
@@ -83,6 +86,7 @@ CREEPWORK_INLINE void work_strips(const WorkArgs& A, int j0)
             L2T = simd::broadcast<W>(A.L2T), eta = simd::broadcast<W>(A.eta),
             spin_y = simd::broadcast<W>(A.spin_y), phi = simd::broadcast<W>(A.phi);
     const V dy = simd::load<W>(A.width + j0), wsx = simd::load<W>(A.rigid_slip_x + j0),
+            wsy = simd::load<W>(A.rigid_slip_y + j0),
             psx = simd::load<W>(A.paper_spin_x + j0), nat = simd::load<W>(A.neg_area_T + j0);
     V px_prev = zero, py_prev = zero, loss = zero, diss = zero, spaper = zero;
     for (int m = 0; m < nx; ++m) {
@@ -99,12 +103,15 @@ CREEPWORK_INLINE void work_strips(const WorkArgs& A, int j0)
         if (simd::max_lane(slipping) > 0.0) {
             const V hp = a * simd::load<W>(step + e); // step [m]
             sx = slip ? wsx + L1T * dpx / hp : zero;
-            sy = slip ? eta + spin_y * xp + L2T * dpy / hp : zero;
+            sy = slip ? wsy + spin_y * xp + L2T * dpy / hp : zero;
             d = slip ? T * f * (one - f) * (TL1 * q_x * q_x + TL2 * q_y * q_y) * dy : zero;
         }
+        // The translational y-slip leaves out the whole model spin slip,
+        // the spin-offset part (wsy - eta, exactly 0 without one) included.
         const V xc = a * simd::load<W>(x_centre + e); // element centre x [m]
-        const V w =
-            in != zero ? nat * (px * (sx - psx) + py * (sy - spin_y * xp + phi * xc)) : zero;
+        const V w = in != zero ? nat * (px * (sx - psx) +
+                                        py * (sy - (wsy - eta) - spin_y * xp + phi * xc))
+                               : zero;
         simd::store<W>(slip_x + e, sx);
         simd::store<W>(slip_y + e, sy);
         simd::store<W>(dissipation + e, d);
@@ -278,11 +285,17 @@ void march_with_work(const MarchGeometry& geo, const ContactGrid& grid, const Mo
     const double T = s.traction_scale;
     // Spin in the model's rigid slip is scaled by L1/L3, L2/L3 (Kalker 1982).
     const double spin_x_model = s.phi * s.L1 / s.L3, spin_y_model = s.phi * s.L2 / s.L3;
+    set_rigid_slip(grid, s.kin, st, 0, ny);
     for (int j = 0; j < ny; ++j) {
         const double y = s.b * grid.y_centre()[j];
-        st.wx[j] = s.kin.ux - s.kin.cx * grid.y_centre()[j];
         w.width[j] = s.b * grid.y_width()[j];
         w.rigid_slip_x[j] = s.xi - spin_x_model * y;
+        // The march's spin offset (CONTACT's facphi), in metres; exactly eta
+        // without one.
+        w.rigid_slip_y[j] =
+            s.kin.spin_offset > 0.0
+                ? s.eta + spin_y_model * (s.a * s.kin.spin_offset * grid.x_length()[j])
+                : s.eta;
         w.paper_spin_x[j] = (s.phi - spin_x_model) * y;
         const double area = s.a * s.b * grid.x_length()[j] * grid.y_width()[j];
         w.neg_area_T[j] = -area * T;
@@ -310,6 +323,7 @@ void march_with_work(const MarchGeometry& geo, const ContactGrid& grid, const Mo
                st.factor.data(),
                w.width.data(),
                w.rigid_slip_x.data(),
+               w.rigid_slip_y.data(),
                w.paper_spin_x.data(),
                w.neg_area_T.data(),
                w.slip_x.data(),
@@ -351,7 +365,7 @@ WorkTotals distribute_work(const MarchGeometry& geo, const ContactGrid& grid,
     if (fill_pools(ny, w)) {
         for (int j = 0; j < ny; ++j) {
             const double d = w.strip_dissipation[j];
-            w.ratio[j] = d > 0.0 ? w.strip_pool[j] / d : 0.0;
+            w.ratio[j] = quotient_if_positive(w.strip_pool[j], d); // vectorised: fp_safe.hpp
             total += w.strip_pool[j];
         }
     } else {

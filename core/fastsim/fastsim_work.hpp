@@ -50,7 +50,7 @@ struct WorkState {
     Eigen::ArrayXd strip_dissipation, strip_loss, strip_pool, strip_paper, strip_work;
     Eigen::ArrayXd profile;         // consistent work per unit width [J/m / m]
     // Per strip, constants of one solve (scratch).
-    Eigen::ArrayXd width, rigid_slip_x, paper_spin_x, neg_area_T, ratio;
+    Eigen::ArrayXd width, rigid_slip_x, rigid_slip_y, paper_spin_x, neg_area_T, ratio;
 
     void resize(int n_elements, int ny);
 };

@@ -80,15 +80,16 @@ void MarchState::resize(int n_elements, int ny_)
     px.setZero(stride);
     py.setZero(stride);
     wx.setZero(stride);
+    wy.setZero(stride);
 }
 
 namespace {
 
 struct MarchArgs {
     int nx, first, last, stride; // strips [first, last)
-    double uy, cy;
+    double cy;
     const double *x_centre, *x_slip, *step, *inside, *bound; // per element
-    const double* wx;                                         // per strip
+    const double *wx, *wy;                                    // per strip
     double *qx, *qy, *factor;                                 // per element
     double *px, *py, *sum_px, *sum_py, *sum_x_py, *slip_count; // per strip
 };
@@ -106,13 +107,14 @@ CREEPWORK_INLINE void march_group(const MarchArgs& A, int j0)
     const double *x_centre = A.x_centre + j0, *x_slip = A.x_slip + j0, *step = A.step + j0,
                  *inside = A.inside + j0, *bound = A.bound + j0;
     double *qx = A.qx + j0, *qy = A.qy + j0, *factor = A.factor + j0;
-    V px[G], py[G], spx[G], spy[G], sxpy[G], count[G], wx[G];
+    V px[G], py[G], spx[G], spy[G], sxpy[G], count[G], wx[G], wy[G];
     CREEPWORK_UNROLL
     for (int g = 0; g < G; ++g) {
         px[g] = py[g] = spx[g] = spy[g] = sxpy[g] = count[g] = simd::broadcast<W>(0.0);
         wx[g] = simd::load<W>(A.wx + j0 + g * W);
+        wy[g] = simd::load<W>(A.wy + j0 + g * W);
     }
-    const V uy = simd::broadcast<W>(A.uy), cy = simd::broadcast<W>(A.cy);
+    const V cy = simd::broadcast<W>(A.cy);
     for (int m = 0; m < nx; ++m) {
         const long row = m * stride;
         CREEPWORK_UNROLL
@@ -121,7 +123,7 @@ CREEPWORK_INLINE void march_group(const MarchArgs& A, int j0)
             const V xs = simd::load<W>(x_slip + e);
             const MarchStep<W> s =
                 march_step<W>(px[g], py[g], simd::load<W>(step + e), simd::load<W>(inside + e),
-                              simd::load<W>(bound + e), wx[g], uy + cy * xs);
+                              simd::load<W>(bound + e), wx[g], wy[g] + cy * xs);
             simd::store<W>(qx + e, s.qx);
             simd::store<W>(qy + e, s.qy);
             simd::store<W>(factor + e, s.f);
@@ -175,7 +177,6 @@ void march_strips(const MarchGeometry& geo, const NormalisedKinematics& kin, Pre
                       first,
                       last,
                       geo.stride,
-                      kin.uy,
                       kin.cy,
                       geo.x_centre.data(),
                       geo.x_slip.data(),
@@ -183,6 +184,7 @@ void march_strips(const MarchGeometry& geo, const NormalisedKinematics& kin, Pre
                       geo.inside.data(),
                       geo.bound(pressure).data(),
                       s.wx.data(),
+                      s.wy.data(),
                       s.qx.data(),
                       s.qy.data(),
                       s.factor.data(),
@@ -201,11 +203,23 @@ void march_strips(const MarchGeometry& geo, const NormalisedKinematics& kin, Pre
     }
 }
 
+void set_rigid_slip(const ContactGrid& grid, const NormalisedKinematics& kin, MarchState& s,
+                    int first, int last)
+{
+    for (int j = first; j < last; ++j) {
+        s.wx[j] = kin.ux - kin.cx * grid.y_centre()[j];
+        // Without an offset exactly uy, so that plain FASTSIM is unchanged
+        // to the bit (uy + cy * 0 could flip the sign of a zero).
+        s.wy[j] = kin.spin_offset > 0.0 ? kin.uy + kin.cy * (kin.spin_offset * grid.x_length()[j])
+                                        : kin.uy;
+    }
+}
+
 void march(const MarchGeometry& geo, const ContactGrid& grid, const NormalisedKinematics& kin,
            PressureKind pressure, MarchState& s, KernelIsa isa)
 {
     const int ny = grid.ny();
-    for (int j = 0; j < ny; ++j) s.wx[j] = kin.ux - kin.cx * grid.y_centre()[j];
+    set_rigid_slip(grid, kin, s, 0, ny);
     march_strips(geo, kin, pressure, s, isa, 0, ny);
 }
 

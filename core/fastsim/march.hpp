@@ -83,11 +83,17 @@ struct MarchState {
     Eigen::ArrayXd sum_px, sum_py, sum_x_py, slip_count;
     // Per strip: the traction leaving the trailing edge.
     Eigen::ArrayXd px, py;
-    // Per strip: rigid slip over flexibility along x, ux - cx Y (scratch).
-    Eigen::ArrayXd wx;
+    // Per strip: rigid slip over flexibility along x, ux - cx Y, and the
+    // part of the one along y that does not vary along the strip, uy (plus
+    // cy times the spin offset); scratch, set by set_rigid_slip().
+    Eigen::ArrayXd wx, wy;
 
     void resize(int n_elements, int ny);
 };
+
+// The per-strip rigid slip of kin (state.wx, state.wy) for strips [first, last).
+void set_rigid_slip(const ContactGrid& grid, const NormalisedKinematics& kin, MarchState& state,
+                    int first, int last);
 
 // Advance every strip from the leading edge (m = 0) to the trailing edge.
 // Writes state (sized by resize(nx * ny, ny)); allocates nothing.
@@ -95,8 +101,8 @@ void march(const MarchGeometry& geometry, const ContactGrid& grid,
            const NormalisedKinematics& kin, PressureKind pressure, MarchState& state,
            KernelIsa isa);
 // Only strips [first, last) (first a multiple of kStripBlock), the rigid slip
-// state.wx of which is set: callers that follow each block with more work
-// while its data are in cache.
+// state.wx, state.wy of which is set: callers that follow each block with
+// more work while its data are in cache.
 constexpr int kStripBlock = 32;
 void march_strips(const MarchGeometry& geometry, const NormalisedKinematics& kin,
                   PressureKind pressure, MarchState& state, KernelIsa isa, int first, int last);
@@ -187,12 +193,21 @@ CREEPWORK_INLINE double min_lane(const Vec<8>& v)
 // restart the strip from zero displacement). The division never sees a zero
 // (hosts may trap FP exceptions).
 //
-// Shortcut, exact: when every lane has |q|^2 = 0, or |q|^2 < g^2 (1 - 2^-50)
-// with g^2 a normal number, then RN(sqrt(|q|^2)) <= g in every lane (the
-// margin covers the rounding of g^2 and of the product), so no lane slips
-// and the square root and the division are skipped: f = 1, p = q, exactly as
-// the full test gives. It applies to adhesion zones, exterior elements and
-// the padding strips.
+// Shortcut, exact: when every lane has |q|^2 <= g^2 (1 - 2^-50) with g^2 a
+// normal number, or |q|^2 = 0 = g^2, then RN(sqrt(|q|^2)) <= g in every lane
+// (the margin covers the rounding of g^2 and of the product), so no lane
+// slips and the square root and the division are skipped: f = 1, p = q,
+// exactly as the full test gives. It applies to adhesion zones, exterior
+// elements and the padding strips.
+//
+// Floating-point exceptions (hosts may trap them, README "Guarantees"): no
+// lane, live or masked, divides by zero (safe_norm), takes the root of a
+// negative number, or meets a subnormal constant (the test for g = 0 is
+// |q|^2 <= 0, not a comparison with the smallest subnormal). g is 0
+// (exterior, padding) or at least ~1e-32 (a grid's pressure shape), so for
+// creepages in the practical range q, |q|^2 and f stay normal numbers
+// (tests/robustness/test_robustness_fptrap_kernels.cpp); absurd inputs are
+// the C ABI's floating-point mode's business (capi/capi_fp_mode.hpp).
 template <int W>
 struct MarchStep {
     using V = simd::Vec<W>;
@@ -208,16 +223,15 @@ CREEPWORK_INLINE MarchStep<W> march_step(const simd::Vec<W>& px_prev, const simd
 {
     using V = simd::Vec<W>;
     const V one = simd::broadcast<W>(1.0), zero = simd::broadcast<W>(0.0);
-    const V tiny = simd::broadcast<W>(2.2250738585072014e-308);      // DBL_MIN
-    const V denorm_min = simd::broadcast<W>(4.9406564584124654e-324); // n2 < it: n2 = 0
+    const V tiny = simd::broadcast<W>(2.2250738585072014e-308); // DBL_MIN
     const V margin = simd::broadcast<W>(1.0 - 0x1p-50);
     MarchStep<W> s;
     s.qx = inside * (px_prev - h * wx);
     s.qy = inside * (py_prev - h * wy);
     const V n2 = s.qx * s.qx + s.qy * s.qy;
     const V g2 = bound * bound;
-    const V threshold = g2 >= tiny ? g2 * margin : denorm_min;
-    if (simd::min_lane((n2 < threshold) ? one : zero) > 0.0) {
+    const V threshold = g2 >= tiny ? g2 * margin : zero; // g = 0: only q = 0
+    if (simd::min_lane((n2 <= threshold) ? one : zero) > 0.0) {
         s.f = one;
         s.px = s.qx;
         s.py = s.qy;

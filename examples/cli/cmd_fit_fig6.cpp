@@ -228,7 +228,8 @@ double hertz_scaled_a(const CaseRun& from, const PaperCase& to)
     return from.solution.result.a * std::cbrt(to.N_lbf / from.paper.N_lbf);
 }
 
-void write_case_files(const std::string& dir, const CaseRun& run, const Units& u, bool plots)
+void write_case_files(const std::string& dir, const CaseRun& run, const Units& u, bool plots,
+                      const PlotStyle& style)
 {
     write_fields_csv(dir + "/fields.csv", run.solution, u);
     write_profile_csv(dir + "/profile.csv", run.solution, u);
@@ -240,7 +241,8 @@ void write_case_files(const std::string& dir, const CaseRun& run, const Units& u
         write_patch_pictures(
             dir, run.solution, u,
             "Paper " + run.paper.name +
-                " reproduced (a fitted to the printed forces): " + describe_case(run.solution, u));
+                " reproduced (a fitted to the printed forces): " + describe_case(run.solution, u),
+            style);
 }
 
 } // namespace
@@ -259,7 +261,7 @@ int command_fit_fig6(int argc, char** argv, int first)
     const Units units = Units::named(opts.text("units", "si"));
     const FitChoices choices = read_choices(opts, units);
     const std::string out = opts.text("out", "");
-    if (!out.empty()) check_output_target(out, "--out");
+    if (!out.empty()) check_output_target(out, "--out", opts.has("force"));
 
     cw_grid grid = library_default_grid();
     grid.kind = CW_GRID_KALKER_STRIPS;
@@ -274,10 +276,12 @@ int command_fit_fig6(int argc, char** argv, int first)
 
     if (!out.empty()) {
         const bool plots = should_plot(opts);
-        StagedOutput dir(out, "--out");
-        write_case_files(dir.path(), fig6, units, plots);
+        // The comparison printed here is on the rail, as the paper prints it.
+        const PlotStyle style = read_plot_style(opts, ForceSign::rail);
+        StagedOutput dir(out, "--out", opts.has("force"));
+        write_case_files(dir.path(), fig6, units, plots, style);
         std::filesystem::create_directories(dir.path("fig7"));
-        write_case_files(dir.path("fig7"), fig7, units, plots);
+        write_case_files(dir.path("fig7"), fig7, units, plots, style);
         dir.commit();
     }
 

@@ -84,11 +84,12 @@ int command_sweep(int argc, char** argv, int first)
     const ContactSetup c = read_contact(opts, defaults, default_grid);
     const std::string out = opts.text("out", "");
     if (out.empty()) throw usage_error("--out", "missing: sweep writes its maps to a directory");
-    check_output_target(out, "--out");
+    check_output_target(out, "--out", opts.has("force"));
 
     ContactSolver solver(c.grid);
     // One full solve at zero creepage gives the flexibilities and the grid geometry.
     const Solution base = solver.solve_full(c.params);
+    print_notes(c);
     const Saturation sat = saturation_creepages(c.params, base.result);
     const std::vector<SweepFigure> figs = paper_sweep_figures(sat);
     std::vector<std::vector<SweepPanel>> panels(figs.size());
@@ -106,7 +107,7 @@ int command_sweep(int argc, char** argv, int first)
     const Units& u = c.units;
     {
         const bool plots = should_plot(opts, static_cast<long>(base.size()));
-        StagedOutput dir(out, "--out");
+        StagedOutput dir(out, "--out", opts.has("force"));
         write_cases_csv(dir.path("cases.csv"), figs, panels, u);
         if (plots) {
             const std::string caption =

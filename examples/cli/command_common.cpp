@@ -3,16 +3,19 @@
 #include <cstdio>
 
 #include "gnuplot.hpp"
+#include "plot_style.hpp"
 
 namespace cwcli {
 
 std::vector<OptionSpec> output_options()
 {
     using K = OptionKind;
-    return {{"format", K::choice, {"text", "json"}},
-            {"out", K::text, {}},
-            {"no-plots", K::flag, {}},
-            {"help", K::flag, {}}};
+    return join({{"format", K::choice, {"text", "json"}},
+                 {"out", K::text, {}},
+                 {"force", K::flag, {}},
+                 {"no-plots", K::flag, {}},
+                 {"help", K::flag, {}}},
+                plot_options());
 }
 
 std::vector<OptionSpec> join(std::vector<OptionSpec> a, const std::vector<OptionSpec>& b)

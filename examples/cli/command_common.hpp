@@ -8,7 +8,8 @@
 
 namespace cwcli {
 
-// --format text|json, --out DIR, --no-plots, --help
+// --format text|json, --out DIR, --force, --no-plots, --help, and the
+// picture options --plot-sign, --plot-axes (plot_style.hpp)
 std::vector<OptionSpec> output_options();
 
 // Appends b to a.

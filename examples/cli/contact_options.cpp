@@ -1,6 +1,7 @@
 #include "contact_options.hpp"
 
 #include <cmath>
+#include <cstdio>
 #include <sstream>
 
 #include "cli_error.hpp"
@@ -21,7 +22,9 @@ std::vector<OptionSpec> material_and_load_options()
             {"L3", K::number, {}},
             {"pressure", K::choice, {"parabolic", "elliptic"}},
             {"rolling-direction", K::choice, {"+1", "1", "-1"}},
-            {"units", K::choice, {"si", "SI", "paper"}}};
+            {"units", K::choice, {"si", "paper"}},
+            {"spin-offset", K::number, {}},
+            {"flexibility-blending", K::flag, {}}};
 }
 
 std::vector<OptionSpec> creepage_options()
@@ -151,11 +154,93 @@ cw_grid read_grid(const ParsedOptions& o, const cw_grid& defaults)
     return g;
 }
 
+void require_given(const ParsedOptions& o)
+{
+    std::string missing;
+    for (const char* name : {"a", "b", "N"})
+        if (!o.has(name)) missing += std::string(missing.empty() ? "" : ", ") + "--" + name;
+    if (!missing.empty())
+        throw usage_error(missing, "missing: the contact's semi-axes and load have no sensible "
+                                   "default (e.g. --a 6e-3 --b 6e-3 --N 80e3: a 6 mm circle "
+                                   "under 80 kN; a, b from wheel and rail radii: README "
+                                   "\"From profile radii to a solve\")");
+}
+
+// The library's material and friction defaults, named when they are used.
+void note_defaults(const ParsedOptions& o, const cw_params& p, const Units& u,
+                   std::vector<std::string>& notes)
+{
+    std::string used;
+    const auto add = [&](const char* name, const std::string& text) {
+        if (!o.has(name)) used += (used.empty() ? "" : ", ") + text;
+    };
+    add("mu", "mu = " + show(p.mu, ""));
+    if (p.flexibility == CW_FLEX_FROM_MATERIAL) {
+        add("G", "G = " + show(u.from_si(Quantity::stress, p.G), u.label(Quantity::stress)));
+        add("nu", "nu = " + show(p.nu, ""));
+    }
+    if (!used.empty())
+        notes.push_back("note: not given, so the library's defaults (steel on steel) were used: " +
+                        used);
+}
+
 } // namespace
 
-ContactSetup read_contact(const ParsedOptions& o, const cw_params& defaults,
-                          const cw_grid& default_grid)
+void print_notes(const ContactSetup& c)
 {
+    for (const std::string& note : c.notes) std::fprintf(stderr, "creepwork: %s\n", note.c_str());
+}
+
+std::vector<std::string> plausibility_warnings(const cw_params& p, const Units& u)
+{
+    std::vector<std::string> w;
+    const auto warn = [&](const char* option, double si, Quantity q, const std::string& why) {
+        w.push_back(std::string("--") + option + " = " + show(u.from_si(q, si), u.label(q)) +
+                    " is implausible for a wheel-rail contact: " + why);
+    };
+    for (const auto& [name, v] : {std::pair<const char*, double>{"a", p.a}, {"b", p.b}}) {
+        if (v > 0.1)
+            warn(name, v, Quantity::length,
+                 "semi-axes are 1-20 mm (were millimetres typed as metres? the CLI reads SI "
+                 "unless --units paper)");
+        else if (v < 1e-4)
+            warn(name, v, Quantity::length, "semi-axes are 1-20 mm, not below 0.1 mm");
+    }
+    if (p.normal_force > 1e7)
+        warn("N", p.normal_force, Quantity::force, "wheel loads are below 1 MN (kN typed as N?)");
+    else if (p.normal_force > 0.0 && p.normal_force < 100.0)
+        warn("N", p.normal_force, Quantity::force,
+             "wheel loads are 1-500 kN (kN typed where N are read?)");
+    if (p.mu > 1.5) warn("mu", p.mu, Quantity::dimensionless, "dry steel on steel is 0.1-0.6");
+    if (p.flexibility == CW_FLEX_FROM_MATERIAL) {
+        if (p.G < 1e6)
+            warn("G", p.G, Quantity::stress,
+                 "steel is 8.2e10 Pa (a modulus in MPa or N/mm^2 typed as Pa?)");
+        else if (p.G > 1e12)
+            warn("G", p.G, Quantity::stress, "steel is 8.2e10 Pa, no solid exceeds 1e12 Pa");
+    } else {
+        for (const auto& [name, v] :
+             {std::pair<const char*, double>{"L1", p.L1}, {"L2", p.L2}, {"L3", p.L3}})
+            if (v > 1e-10 || v < 1e-18)
+                warn(name, v, Quantity::flexibility,
+                     "Kalker's flexibilities of steel contacts are ~5e-14 m/Pa (mm^3/N are "
+                     "1e-9 m^3/N)");
+    }
+    for (const auto& [name, v] :
+         {std::pair<const char*, double>{"xi-x", p.xi_x}, {"xi-y", p.xi_y}})
+        if (std::fabs(v) > 0.5)
+            warn(name, v, Quantity::dimensionless,
+                 "creepages are ratios, usually below 0.02 (a per cent typed as a ratio?)");
+    if (std::fabs(p.phi) > 50.0)
+        warn("spin", p.phi, Quantity::spin,
+             "spin of wheel-rail contacts stays below ~20 1/m (1/mm typed as 1/m?)");
+    return w;
+}
+
+ContactSetup read_contact(const ParsedOptions& o, const cw_params& defaults,
+                          const cw_grid& default_grid, SizeAndLoad size_and_load)
+{
+    if (size_and_load == SizeAndLoad::required) require_given(o);
     ContactSetup c;
     c.units = Units::named(o.text("units", "si"));
     const Units& u = c.units;
@@ -175,7 +260,18 @@ ContactSetup read_contact(const ParsedOptions& o, const cw_params& defaults,
             o.text("pressure", "") == "elliptic" ? CW_PRESSURE_ELLIPTIC : CW_PRESSURE_PARABOLIC;
     if (o.has("rolling-direction"))
         p.rolling_direction = o.text("rolling-direction", "+1") == "-1" ? -1 : 1;
+    // CONTACT's FASTSIM defaults (README "Coming from other FASTSIM codes").
+    if (o.has("spin-offset")) {
+        p.spin_offset = o.number("spin-offset", 0.0);
+        if (!(p.spin_offset >= 0.0 && p.spin_offset <= 1.0))
+            throw usage_error("--spin-offset", "must lie in [0, 1] element lengths (got " +
+                                                   show(p.spin_offset, "") + "; CONTACT: 1/6)");
+    }
+    if (o.has("flexibility-blending")) p.flexibility_blending = 1;
     validate_params(o, p, u);
+    for (const std::string& warning : plausibility_warnings(p, u))
+        c.notes.push_back("warning: " + warning);
+    if (size_and_load == SizeAndLoad::required) note_defaults(o, p, u, c.notes);
     c.params = p;
     c.grid = read_grid(o, default_grid);
     return c;

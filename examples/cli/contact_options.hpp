@@ -19,7 +19,13 @@ struct ContactSetup {
     cw_grid grid;
     cw_params params; // SI
     Units units = Units::si();
+    // Warnings about implausible inputs and a note naming the defaults used:
+    // print_notes() writes them to stderr once the contact has been solved
+    // (an error's single stderr line stays alone).
+    std::vector<std::string> notes;
 };
+
+void print_notes(const ContactSetup& c);
 
 // --a --b --N --mu --G --nu --L1 --L2 --L3 --pressure --rolling-direction --units
 std::vector<OptionSpec> material_and_load_options();
@@ -28,10 +34,23 @@ std::vector<OptionSpec> creepage_options();
 // --grid --nx --ny --box-scale
 std::vector<OptionSpec> grid_options();
 
+// What read_contact insists on. solve has no sensible default for the size
+// and load of a contact, so it requires --a, --b and --N; sweep and fit-fig6
+// default to the paper's contact (their --help says which).
+enum class SizeAndLoad { required, defaulted };
+
 // Reads the options present in opts over the given defaults (SI structs) and
 // validates the result. Throws CliError(kExitUsage) naming the option.
+// Inputs that are valid but implausible for a wheel-rail contact (semi-axes
+// above 0.1 m, G below 1e6 Pa, creepage above 0.5, ...: plausibility_warnings)
+// get a warning each in notes; with SizeAndLoad::required, the library
+// defaults taken for mu, G and nu are named in a note.
 ContactSetup read_contact(const ParsedOptions& opts, const cw_params& default_params,
-                          const cw_grid& default_grid);
+                          const cw_grid& default_grid,
+                          SizeAndLoad size_and_load = SizeAndLoad::defaulted);
+
+// The warnings for p (SI), each naming the option in the user's units.
+std::vector<std::string> plausibility_warnings(const cw_params& p, const Units& u);
 
 // Library defaults (cw_params_init, cw_grid_init).
 cw_params library_default_params();

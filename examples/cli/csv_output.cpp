@@ -8,7 +8,20 @@
 
 namespace cwcli {
 
-const char* const kFieldColumns = "i,j,x,y,area,state,pz,px,py,sx,sy,mz,work_paper,work_consistent";
+std::string field_columns(const Units& u)
+{
+    using Q = Quantity;
+    const auto c = [&u](const char* name, Q q) { return "," + std::string(name) + "_" + u.csv_suffix(q); };
+    return "i,j" + c("x", Q::length) + c("y", Q::length) + c("area", Q::area) + ",state" +
+           c("pz", Q::stress) + c("px_wheel", Q::stress) + c("py_wheel", Q::stress) + ",sx,sy" +
+           c("mz_wheel", Q::moment) + c("work_paper", Q::work) + c("work_consistent", Q::work);
+}
+
+std::string profile_columns(const Units& u)
+{
+    const std::string w = u.csv_suffix(Quantity::profile);
+    return "j,y_" + u.csv_suffix(Quantity::length) + ",w_" + w + ",parabola_" + w;
+}
 
 namespace {
 
@@ -36,7 +49,7 @@ void put(std::ostream& os, double v)
 void write_fields_csv(const std::string& path, const Solution& s, const Units& u)
 {
     std::ofstream f = open_for_writing(path);
-    f << kFieldColumns << "\n";
+    f << field_columns(u) << "\n";
     using Q = Quantity;
     for (int j = 0; j < s.ny; ++j) {
         for (int i = 0; i < s.nx; ++i) {
@@ -63,7 +76,7 @@ void write_fields_csv(const std::string& path, const Solution& s, const Units& u
 void write_profile_csv(const std::string& path, const Solution& s, const Units& u)
 {
     std::ofstream f = open_for_writing(path);
-    f << "j,y,w,parabola\n";
+    f << profile_columns(u) << "\n";
     for (int j = 0; j < s.ny; ++j) {
         f << j;
         put(f, u.from_si(Quantity::length, s.profile_y[j]));

@@ -124,7 +124,7 @@ std::string gp_colour_scale(const std::vector<double>& values, const std::string
              "'#b2182b')\n"
           << "set cbrange [" << -m << ":" << m << "]\n";
     }
-    s << "set cbtics auto\nset cblabel " << gp_quote(label) << "\n";
+    s << "set cbtics auto\nset cblabel " << gp_quote(label) << " offset 1.5,0\n";
     return s.str();
 }
 
@@ -136,24 +136,31 @@ std::string gp_state_scale()
            "set cbrange [0.5:2.5]\nset cbtics ('adhesion' 1, 'slip' 2) scale 0\nunset cblabel\n";
 }
 
-std::string gp_patch_frame(int rolling_direction)
+std::string gp_patch_frame(int rolling_direction, const PatchAxes& axes)
 {
     // Leading edge where material enters: x = +a when rolling towards +x.
     const int d = rolling_direction >= 0 ? 1 : -1;
+    const double a = axes.ax, b = axes.by;
     std::ostringstream s;
+    s.precision(9);
     s << "unset arrow; unset label; unset object\n"
       << "set size ratio -1\n"
-      << "set xrange [-1.12:1.12]\nset yrange [-1.12:1.42]\n"
-      << "set xtics -1,0.5,1\nset ytics -1,0.5,1\n"
-      << "set xlabel 'x/a'\nset ylabel 'y/b'\n"
-      << "set object 1 ellipse at 0,0 size 2,2 front fillstyle empty border lc rgb 'black' lw 1\n"
-      << "set arrow 1 from " << -0.35 * d << ",1.24 to " << 0.35 * d
-      << ",1.24 head filled size 0.06,25 lw 2 lc rgb 'black' front\n"
-      << "set label 1 'rolling' at 0,1.345 center front\n"
-      << "set label 2 'leading edge' at " << 1.08 * d << ",1.12 " << (d > 0 ? "right" : "left")
-      << " front font ',8'\n"
-      << "set label 3 'trailing edge' at " << -1.08 * d << ",1.12 " << (d > 0 ? "left" : "right")
-      << " front font ',8'\n";
+      << "set xrange [" << -1.12 * a << ":" << 1.12 * a << "]\nset yrange [" << -1.12 * b << ":"
+      << 1.42 * b << "]\n";
+    if (a == 1.0 && b == 1.0)
+        s << "set xtics -1,0.5,1\nset ytics -1,0.5,1\n";
+    else
+        s << "set xtics auto\nset ytics auto\n";
+    s << "set xlabel " << gp_quote(axes.xlabel) << "\nset ylabel " << gp_quote(axes.ylabel) << "\n"
+      << "set object 1 ellipse at 0,0 size " << 2 * a << "," << 2 * b
+      << " front fillstyle empty border lc rgb 'black' lw 1\n"
+      << "set arrow 1 from " << -0.35 * d * a << "," << 1.24 * b << " to " << 0.35 * d * a << ","
+      << 1.24 * b << " head filled size screen 0.015,25 lw 2 lc rgb 'black' front\n"
+      << "set label 1 'rolling' at 0," << 1.345 * b << " center front\n"
+      << "set label 2 'leading edge' at " << 1.08 * d * a << "," << 1.12 * b << " "
+      << (d > 0 ? "right" : "left") << " front font ',8'\n"
+      << "set label 3 'trailing edge' at " << -1.08 * d * a << "," << 1.12 * b << " "
+      << (d > 0 ? "left" : "right") << " front font ',8'\n";
     return s.str();
 }
 

@@ -31,14 +31,22 @@ std::string gp_png(const std::string& file, int width, int height);
 // are >= 0, diverging blue-white-red with a symmetric range otherwise.
 std::string gp_colour_scale(const std::vector<double>& values, const std::string& label);
 
-// boxxyerror columns x:y:dx:dy of the patch data files, each box padded by
-// about one pixel so antialiasing leaves no seams (moire) between elements.
+// boxxyerror columns x:y:dx:dy of data files in normalised coordinates,
+// each box padded by about one pixel so antialiasing leaves no seams
+// (moire) between elements.
 extern const char* const kPaddedBoxes;
 
 // Two-colour scale for element states: adhesion (1) blue, slip (2) orange.
 std::string gp_state_scale();
 
-// The unit-disk patch outline and the rolling-direction arrow, in x/a, y/b.
-std::string gp_patch_frame(int rolling_direction);
+// The axes a patch is drawn on: semi-axes ax, by in plot coordinates (1, 1
+// for x/a, y/b) and the axis labels.
+struct PatchAxes {
+    double ax = 1.0, by = 1.0;
+    std::string xlabel = "x/a", ylabel = "y/b";
+};
+
+// The ellipse outline, ranges, labels and the rolling-direction arrow.
+std::string gp_patch_frame(int rolling_direction, const PatchAxes& axes = PatchAxes());
 
 } // namespace cwcli

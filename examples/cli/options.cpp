@@ -1,5 +1,7 @@
 #include "options.hpp"
 
+#include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <climits>
 #include <cmath>
@@ -34,6 +36,51 @@ bool parse_int(const std::string& text, int& value)
 
 namespace {
 
+std::string folded(const std::string& s)
+{
+    std::string out = s;
+    for (char& c : out) c = c == '_' ? '-' : static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return out;
+}
+
+// Edit distance counting an insertion, deletion, substitution or swap of
+// two neighbours as one edit (optimal string alignment), so "slove" is one
+// edit from "solve".
+size_t edit_distance(const std::string& a, const std::string& b)
+{
+    std::vector<std::vector<size_t>> d(a.size() + 1, std::vector<size_t>(b.size() + 1));
+    for (size_t i = 0; i <= a.size(); ++i) d[i][0] = i;
+    for (size_t j = 0; j <= b.size(); ++j) d[0][j] = j;
+    for (size_t i = 1; i <= a.size(); ++i)
+        for (size_t j = 1; j <= b.size(); ++j) {
+            d[i][j] = std::min({d[i - 1][j] + 1, d[i][j - 1] + 1,
+                                d[i - 1][j - 1] + (a[i - 1] != b[j - 1])});
+            if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1])
+                d[i][j] = std::min(d[i][j], d[i - 2][j - 2] + 1);
+        }
+    return d[a.size()][b.size()];
+}
+
+} // namespace
+
+std::string nearest(const std::string& word, const std::vector<std::string>& candidates)
+{
+    const std::string w = folded(word);
+    const size_t limit = std::max<size_t>(1, w.size() / 3);
+    std::string best;
+    size_t best_distance = limit + 1;
+    for (const std::string& c : candidates) {
+        const size_t d = edit_distance(w, folded(c));
+        if (d < best_distance) {
+            best_distance = d;
+            best = c;
+        }
+    }
+    return best;
+}
+
+namespace {
+
 const OptionSpec* find_spec(const std::vector<OptionSpec>& specs, const std::string& name)
 {
     for (const OptionSpec& s : specs)
@@ -41,7 +88,9 @@ const OptionSpec* find_spec(const std::vector<OptionSpec>& specs, const std::str
     return nullptr;
 }
 
-void check_value(const OptionSpec& spec, const std::string& value)
+// Checks value against the spec; a choice is returned in the spec's own
+// spelling (choices are matched without regard to case).
+std::string check_value(const OptionSpec& spec, const std::string& value)
 {
     const std::string opt = "--" + spec.name;
     double d = 0.0;
@@ -58,10 +107,12 @@ void check_value(const OptionSpec& spec, const std::string& value)
     case OptionKind::choice: {
         std::string list;
         for (const std::string& c : spec.choices) {
-            if (c == value) return;
+            if (folded(c) == folded(value)) return c;
             list += (list.empty() ? "" : "|") + c;
         }
-        throw usage_error(opt, "expected one of " + list + ", got '" + value + "'");
+        const std::string hint = nearest(value, spec.choices);
+        throw usage_error(opt, "expected one of " + list + ", got '" + value + "'" +
+                                   (hint.empty() ? "" : " (did you mean " + hint + "?)"));
     }
     case OptionKind::flag:
     case OptionKind::text:
@@ -69,6 +120,7 @@ void check_value(const OptionSpec& spec, const std::string& value)
             throw usage_error(opt, "the value must not be empty");
         break;
     }
+    return value;
 }
 
 } // namespace
@@ -89,7 +141,14 @@ ParsedOptions parse_options(const std::vector<OptionSpec>& specs, int argc, char
             name = name.substr(0, eq);
         }
         const OptionSpec* spec = find_spec(specs, name);
-        if (!spec) throw usage_error("--" + name, "unknown option (see --help)");
+        if (!spec) {
+            std::vector<std::string> names;
+            for (const OptionSpec& s : specs) names.push_back(s.name);
+            const std::string hint = nearest(name, names);
+            throw usage_error("--" + name, "unknown option" +
+                                               (hint.empty() ? std::string(" (see --help)")
+                                                             : "; did you mean --" + hint + "?"));
+        }
         if (parsed.has(name)) throw usage_error("--" + name, "given more than once");
         if (spec->kind == OptionKind::flag) {
             if (inline_value) throw usage_error("--" + name, "takes no value");
@@ -100,8 +159,7 @@ ParsedOptions parse_options(const std::vector<OptionSpec>& specs, int argc, char
                 throw usage_error("--" + name, "missing value");
             value = argv[++k];
         }
-        check_value(*spec, value);
-        parsed.values_[name] = value;
+        parsed.values_[name] = check_value(*spec, value);
     }
     return parsed;
 }

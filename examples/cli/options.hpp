@@ -1,7 +1,11 @@
 // Command-line options of one subcommand: "--name value", "--name=value" or
 // a bare "--flag". Parsing is strict -- unknown options, missing values,
 // repeats, trailing garbage in numbers, NaN and Inf are all errors naming the
-// option -- so a typo can never silently fall back to a default.
+// option -- so a typo can never silently fall back to a default. An unknown
+// option gets the nearest known one suggested. Option names are exact
+// (--N is the load, --nx the grid); values of choice options are not case
+// sensitive anywhere (--units SI, --grid Uniform), and are stored in the
+// spelling of the spec.
 #pragma once
 
 #include <map>
@@ -31,6 +35,10 @@ public:
 
 // Parses argv[first..argc). Throws CliError(kExitUsage) naming the option.
 ParsedOptions parse_options(const std::vector<OptionSpec>& specs, int argc, char** argv, int first);
+
+// The candidate nearest to word (edit distance, ignoring case and '_' vs
+// '-'), or "" when none is within a third of word's length (at least 1).
+std::string nearest(const std::string& word, const std::vector<std::string>& candidates);
 
 // Strict conversions, exposed for tests of the parser's rules.
 bool parse_finite_double(const std::string& text, double& value);

@@ -1,5 +1,6 @@
 #include "output_dir.hpp"
 
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <system_error>
@@ -33,7 +34,7 @@ fs::path parent_of(const fs::path& target)
 
 } // namespace
 
-void check_output_target(const std::string& target, const std::string& option)
+void check_output_target(const std::string& target, const std::string& option, bool force)
 {
     std::error_code ec;
     const fs::path t = without_trailing_slash(target);
@@ -50,15 +51,20 @@ void check_output_target(const std::string& target, const std::string& option)
     if (!fs::exists(t, ec)) return;
     if (!fs::is_directory(t, ec))
         throw usage_error(option, "'" + target + "' exists and is not a directory");
-    if (fs::is_empty(t, ec) || fs::exists(t / kOutputMarker, ec)) return;
-    throw usage_error(option, "'" + target + "' exists and was not written by creepwork (no " +
-                                  kOutputMarker + "); refusing to replace it");
+    if (fs::is_empty(t, ec)) return;
+    if (!fs::exists(t / kOutputMarker, ec))
+        throw usage_error(option, "'" + target + "' exists and was not written by creepwork (no " +
+                                      kOutputMarker + "); refusing to replace it");
+    if (!force)
+        throw usage_error(option, "'" + target +
+                                      "' holds an earlier creepwork output; add --force to "
+                                      "replace it, or choose another directory");
 }
 
-StagedOutput::StagedOutput(const std::string& target, const std::string& option)
+StagedOutput::StagedOutput(const std::string& target, const std::string& option, bool force)
     : target_(without_trailing_slash(target).string())
 {
-    check_output_target(target, option);
+    check_output_target(target, option, force);
     const fs::path t(target_);
     std::error_code ec;
     fs::create_directories(parent_of(t), ec);
@@ -113,6 +119,10 @@ void StagedOutput::commit()
     }
     committed_ = true;
     if (!old.empty()) fs::remove_all(old.parent_path(), ec);
+    long files = 0;
+    for (const auto& entry : fs::recursive_directory_iterator(t, ec))
+        files += entry.is_regular_file(ec) && entry.path().filename() != kOutputMarker;
+    std::fprintf(stderr, "creepwork: wrote %ld files to %s\n", files, target_.c_str());
 }
 
 } // namespace cwcli

@@ -22,13 +22,14 @@ struct Panel {
     std::string title; // with the total
     int column;        // in patch.dat
     std::string unit;  // colour-bar label
+    bool outline_slip; // draw the slip elements' borders over it
 };
 
 // Data columns of patch.dat (1-based for gnuplot).
 enum Column {
     kX = 1,
     kY,
-    kHalfX,
+    kHalfX, // half widths, padded by about a pixel so antialiasing leaves no seams
     kHalfY,
     kState,
     kWork,
@@ -38,53 +39,64 @@ enum Column {
     kSlipX,
     kSlipY,
     kMoment,
-    kSpin,
-    kColumns = kSpin
+    kUtilisation,
+    kColumns = kUtilisation
 };
 
+// A total in the pictures' units (kN, N m, J/m in SI).
 std::string total(double si, Quantity q, const Units& u, int digits = 6)
 {
-    return fmt(u.from_si(q, si), digits) + " " + u.label(q);
+    return fmt(si * u.plot_factor(q), digits) + " " + u.plot_label(q);
 }
 
-// The same force or moment as it acts on the rail (an exact zero stays +0).
-double on_rail(double on_wheel)
+PatchAxes axes_of(const Solution& s, const Units& u, const PlotStyle& style)
 {
-    return on_wheel == 0.0 ? 0.0 : -on_wheel;
+    PatchAxes axes;
+    if (style.physical) {
+        const double k = u.plot_factor(Quantity::length);
+        axes.ax = k * s.result.a;
+        axes.by = k * s.result.b;
+        axes.xlabel = "x [" + u.plot_label(Quantity::length) + "]";
+        axes.ylabel = "y [" + u.plot_label(Quantity::length) + "]";
+    }
+    return axes;
 }
 
-// Writes one row per contact element in normalised coordinates and plot
-// units; returns the columns (index = Column - 1) for the colour scales.
+// Writes one row per contact element in plot coordinates and units; returns
+// the columns (index = Column - 1) for the colour scales.
 std::vector<std::vector<double>> write_patch_data(const std::string& path, const Solution& s,
-                                                  const Units& u)
+                                                  const Units& u, const PlotStyle& style,
+                                                  const PatchAxes& axes)
 {
     const cw_result& r = s.result;
     const double half_y = (s.grid.kind == CW_GRID_UNIFORM ? s.grid.box_scale : 1.0) / s.ny;
-    const std::vector<double> spin = spin_distribution(s);
     const double stress = u.plot_factor(Quantity::stress);
     const double work = u.plot_factor(Quantity::work_per_area);
     const double moment = u.plot_factor(Quantity::moment_per_area);
-    const double spin_f = u.plot_factor(Quantity::spin);
+    const ForceSign sign = style.sign;
     std::vector<std::vector<double>> cols(kColumns);
     std::ofstream f(path);
-    f << "# x/a y/b half_dx/a half_dy/b state work/area K*work_paper/area px_rail py_rail sx sy "
-         "mz_rail/area spin\n";
+    f << "# x y half_dx half_dy (" << axes.xlabel << ", " << axes.ylabel
+      << ") state work/area K*work_paper/area px py sx sy mz/area utilisation; px py mz on the "
+      << body_name(sign) << "\n";
     for (size_t k = 0; k < s.size(); ++k) {
         const double area = s.area[k];
         if (!(area > 0.0)) continue; // exterior: not part of the patch
-        const double row[kColumns] = {s.x[k] / r.a,
-                                      s.y[k] / r.b,
-                                      area / (4.0 * r.a * r.b * half_y),
-                                      half_y,
+        const double bound = s.params.mu * s.pz[k];
+        const double utilisation = bound > 0.0 ? std::hypot(s.px[k], s.py[k]) / bound : 0.0;
+        const double row[kColumns] = {axes.ax * s.x[k] / r.a,
+                                      axes.by * s.y[k] / r.b,
+                                      axes.ax * (area / (4.0 * r.a * r.b * half_y) + 0.004),
+                                      axes.by * (half_y + 0.004),
                                       static_cast<double>(s.state[k]),
                                       work * s.work_consistent[k] / area,
                                       work * r.K * s.work_paper[k] / area,
-                                      -stress * s.px[k],
-                                      -stress * s.py[k],
+                                      stress * on_body(sign, s.px[k]),
+                                      stress * on_body(sign, s.py[k]),
                                       s.sx[k],
                                       s.sy[k],
-                                      -moment * s.mz[k] / area,
-                                      spin_f * spin[k]};
+                                      moment * on_body(sign, s.mz[k]) / area,
+                                      utilisation};
         char buf[40];
         for (int c = 0; c < kColumns; ++c) {
             std::snprintf(buf, sizeof buf, c ? " %.9g" : "%.9g", row[c]);
@@ -97,18 +109,19 @@ std::vector<std::vector<double>> write_patch_data(const std::string& path, const
     return cols;
 }
 
-void write_profile_data(const std::string& path, const Solution& s, const Units& u)
+void write_profile_data(const std::string& path, const Solution& s, const Units& u,
+                        const PatchAxes& axes)
 {
     std::ofstream f(path);
-    f << "# y/b w parabola (" << u.plot_label(Quantity::profile) << ")\n";
+    f << "# " << axes.ylabel << ", w and parabola (" << u.plot_label(Quantity::profile) << ")\n";
     const double k = u.plot_factor(Quantity::profile);
     for (int j = 0; j < s.ny; ++j)
-        f << s.profile_y[j] / s.result.b << " " << k * s.profile_w[j] << " "
+        f << axes.by * s.profile_y[j] / s.result.b << " " << k * s.profile_w[j] << " "
           << k * s.profile_parabola[j] << "\n";
     if (!f) throw CliError(kExitFailure, "cannot write " + path);
 }
 
-std::vector<Panel> panels(const Solution& s, const Units& u)
+std::vector<Panel> panels(const Solution& s, const Units& u, ForceSign sign)
 {
     // Totals that vanish by symmetry (Fx of pure lateral creepage with spin)
     // come out as rounding noise; show them as 0.
@@ -118,29 +131,31 @@ std::vector<Panel> panels(const Solution& s, const Units& u)
     if (std::fabs(r.Fy) < 1e-9 * force_scale) r.Fy = 0.0;
     if (std::fabs(r.Mz) < 1e-9 * force_scale * r.a) r.Mz = 0.0;
     const std::string stress = u.plot_label(Quantity::stress);
+    const std::string on = std::string(" on the ") + body_name(sign);
     return {
         {"work.png",
-         "Work per unit area (energy-consistent), W = " + total(r.W_consistent, Quantity::work, u),
-         kWork, u.plot_label(Quantity::work_per_area)},
+         "Work per unit area (energy-consistent; slip elements outlined), W = " +
+             total(r.W_consistent, Quantity::work, u),
+         kWork, u.plot_label(Quantity::work_per_area), true},
         {"traction_x.png",
-         "Longitudinal traction on the rail, Fx = " + total(on_rail(r.Fx), Quantity::force, u),
-         kTractionX, stress},
-        {"slip_x.png", "Longitudinal micro-slip W_x/V (0 in adhesion)", kSlipX, "-"},
+         "Longitudinal traction" + on + ", Fx = " + total(on_body(sign, r.Fx), Quantity::force, u),
+         kTractionX, stress, false},
+        {"slip_x.png", "Longitudinal micro-slip W_x/V of the wheel (0 in adhesion)", kSlipX, "-",
+         false},
         {"traction_y.png",
-         "Lateral traction on the rail, Fy = " + total(on_rail(r.Fy), Quantity::force, u),
-         kTractionY, stress},
-        {"slip_y.png", "Lateral micro-slip W_y/V (0 in adhesion)", kSlipY, "-"},
+         "Lateral traction" + on + ", Fy = " + total(on_body(sign, r.Fy), Quantity::force, u),
+         kTractionY, stress, false},
+        {"slip_y.png", "Lateral micro-slip W_y/V of the wheel (0 in adhesion)", kSlipY, "-", false},
         {"moment.png",
-         "Creep moment per unit area on the rail, Mz = " +
-             total(on_rail(r.Mz), Quantity::moment, u),
-         kMoment, u.plot_label(Quantity::moment_per_area)},
-        {"spin.png",
-         "Spin in slip elements (0 in adhesion), spin = " + total(s.params.phi, Quantity::spin, u),
-         kSpin, u.plot_label(Quantity::spin)},
+         "Creep moment per unit area" + on + ", Mz = " +
+             total(on_body(sign, r.Mz), Quantity::moment, u),
+         kMoment, u.plot_label(Quantity::moment_per_area), false},
+        {"utilisation.png", "Traction-bound utilisation |p|/(μ p_z): 1 in slip", kUtilisation,
+         "-", false},
         {"work_paper.png",
-         "Paper's local work x K per unit area, K = " + fmt(r.K, 4) +
+         "Paper's local work x K per unit area (slip elements outlined), K = " + fmt(r.K, 4) +
              ", K W_{micro} = " + total(r.K * r.W_micro_paper, Quantity::work, u),
-         kWorkPaperK, u.plot_label(Quantity::work_per_area)},
+         kWorkPaperK, u.plot_label(Quantity::work_per_area), true},
     };
 }
 
@@ -155,35 +170,38 @@ std::string slip_map_commands(const Solution& s)
       << "\n"
       << gp_state_scale();
     // Element outlines help on coarse grids and would hide the map on fine ones.
-    if (std::max(s.nx, s.ny) <= 30)
-        g << "plot 'gnuplot/patch.dat' using 1:2:3:4:5 with boxxyerror fs solid 1.0 border lc rgb "
-             "'#808080' fc palette z notitle\n";
-    else
-        g << "plot 'gnuplot/patch.dat' using " << kPaddedBoxes
-          << ":5 with boxxyerror fs solid 1.0 noborder fc palette z notitle\n";
+    g << "plot 'gnuplot/patch.dat' using 1:2:3:4:5 with boxxyerror fs solid 1.0 "
+      << (std::max(s.nx, s.ny) <= 30 ? "border lc rgb '#808080'" : "noborder")
+      << " fc palette z notitle\n";
     return g.str();
 }
 
-std::string heat_commands(const Panel& p, const std::vector<double>& values)
+std::string heat_commands(const Panel& p, const std::vector<double>& values, bool outline)
 {
     std::ostringstream g;
     g << "set title " << gp_quote(p.title) << "\n"
-      << gp_colour_scale(values, p.unit == "-" ? "" : p.unit) << "plot 'gnuplot/patch.dat' using "
-      << kPaddedBoxes << ":" << p.column
-      << " with boxxyerror fs solid 1.0 noborder fc palette z notitle\n";
+      << gp_colour_scale(values, p.unit == "-" ? "" : p.unit)
+      << "plot 'gnuplot/patch.dat' using 1:2:3:4:" << p.column
+      << " with boxxyerror fs solid 1.0 noborder fc palette z notitle";
+    if (p.outline_slip && outline)
+        g << ", \\\n     '' using ($5 == 2 ? $1 : NaN):2:3:4 with boxxyerror lw 0.5 "
+             "lc rgb '#505050' fs empty border notitle";
+    g << "\n";
     return g.str();
 }
 
-std::string profile_commands(const Solution& s, const Units& u)
+std::string profile_commands(const Solution& s, const Units& u, const PatchAxes& axes)
 {
     const cw_result& r = s.result;
     // Equal-area parabola (3W/4b)(1 - Y^2) in plot units, Y = y/b.
     const double peak = 0.75 * r.W_consistent / r.b * u.plot_factor(Quantity::profile);
+    const double b = axes.by;
     std::ostringstream g;
     g.precision(9);
     g << "unset arrow; unset label; unset object\nset size noratio\nunset colorbox\n"
-      << "set xrange [-1.05:1.05]\nset yrange [0:*]\nset xtics auto\nset ytics auto\n"
-      << "set xlabel 'y/b'\nset ylabel "
+      << "set xrange [" << -1.05 * b << ":" << 1.05 * b << "]\nset yrange [0:*]\n"
+      << "set xtics auto\nset ytics auto\n"
+      << "set xlabel " << gp_quote(axes.ylabel) << "\nset ylabel "
       << gp_quote("work per unit width [" + u.plot_label(Quantity::profile) + "]")
       << "\nset bmargin 6\nset key at screen 0.5,0.02 center bottom horizontal\nset grid\n"
       << "set title "
@@ -194,7 +212,8 @@ std::string profile_commands(const Solution& s, const Units& u)
       << "plot 'gnuplot/profile.dat' using 1:2 with histeps lw 2 lc rgb '#b2182b' title "
          "'creepwork: work integrated along x, per strip', \\\n"
       << "     '' using 1:2 with points pt 7 ps 0.6 lc rgb '#b2182b' notitle, \\\n"
-      << "     parabola(x) with lines dt 2 lw 2 lc rgb '#2166ac' title 'parabola of equal area'\n"
+      << "     parabola(x / " << b
+      << ") with lines dt 2 lw 2 lc rgb '#2166ac' title 'parabola of equal area'\n"
       << "unset grid\nset bmargin\n";
     return g.str();
 }
@@ -206,43 +225,50 @@ std::string describe_case(const Solution& s, const Units& u)
     const cw_params& p = s.params;
     std::ostringstream d;
     // UTF-8 Greek and gnuplot's enhanced-text subscripts (pngcairo renders both).
+    const double length = u.plot_factor(Quantity::length);
     d << "ξ_x = " << fmt(p.xi_x, 5) << ", ξ_y = " << fmt(p.xi_y, 5)
-      << ", φ = " << total(p.phi, Quantity::spin, u, 5)
-      << ", a = " << total(s.result.a, Quantity::length, u, 5)
-      << ", a/b = " << fmt(s.result.a / s.result.b, 4)
-      << ", N = " << total(p.normal_force, Quantity::force, u, 6) << ", μ = " << fmt(p.mu, 4)
+      << ", φ = " << fmt(u.from_si(Quantity::spin, p.phi), 5) << " " << u.label(Quantity::spin)
+      << ", a = " << fmt(length * s.result.a, 5) << " " << u.plot_label(Quantity::length)
+      << ", b = " << fmt(length * s.result.b, 5) << " " << u.plot_label(Quantity::length)
+      << ", N = " << total(p.normal_force, Quantity::force, u) << ", μ = " << fmt(p.mu, 4)
       << "; " << grid_kind_name(s.grid.kind) << " grid " << s.nx << "x" << s.ny;
     return d.str();
 }
 
 void write_patch_pictures(const std::string& dir, const Solution& s, const Units& u,
-                          const std::string& caption)
+                          const std::string& caption, const PlotStyle& style)
 {
     std::filesystem::create_directories(dir + "/gnuplot");
-    const auto cols = write_patch_data(dir + "/gnuplot/patch.dat", s, u);
-    write_profile_data(dir + "/gnuplot/profile.dat", s, u);
-    const std::vector<Panel> heat = panels(s, u);
-    const std::string frame = gp_patch_frame(s.params.rolling_direction);
+    const PatchAxes axes = axes_of(s, u, style);
+    const auto cols = write_patch_data(dir + "/gnuplot/patch.dat", s, u, style, axes);
+    write_profile_data(dir + "/gnuplot/profile.dat", s, u, axes);
+    const std::vector<Panel> heat = panels(s, u, style.sign);
+    const std::string frame = gp_patch_frame(s.params.rolling_direction, axes);
+    // Outlines help as long as elements are a few pixels wide.
+    const bool outline = std::max(s.nx, s.ny) <= 60;
+    const std::string sign_note =
+        style.sign == ForceSign::wheel
+            ? "tractions, forces and moment on the wheel (creepwork's, Kalker's and CONTACT's sign)"
+            : "tractions, forces and moment on the rail (the paper's sign)";
 
     std::ostringstream g;
     g << "# creepwork: pictures of one contact. Run from the output directory:\n"
       << "#   gnuplot gnuplot/patch.gp\n"
       << "set datafile missing NaN\nset style fill solid 1.0 noborder\n";
     // The overview in the paper's layout: slip map | work, then force | slip
-    // pairs, then moment | spin.
+    // pairs, then moment | utilisation.
     g << gp_png("patch.png", 1400, 2100) << "set multiplot layout 4,2 title "
-      << gp_text_lines({caption, std::string("tractions and moment on the rail (the paper's sign); "
-                                             "rolling towards ") +
+      << gp_text_lines({caption, sign_note + "; rolling towards " +
                                      (s.params.rolling_direction > 0 ? "+x" : "-x")})
       << " font ',12'\n"
       << frame << slip_map_commands(s);
-    for (size_t k = 0; k < 7; ++k) g << heat_commands(heat[k], cols[heat[k].column - 1]);
+    for (size_t k = 0; k < 7; ++k) g << heat_commands(heat[k], cols[heat[k].column - 1], outline);
     g << "unset multiplot\n";
     // The same panels one per file.
     g << gp_png("slip_adhesion.png", 800, 700) << frame << slip_map_commands(s);
     for (const Panel& p : heat)
-        g << gp_png(p.png, 800, 700) << frame << heat_commands(p, cols[p.column - 1]);
-    g << gp_png("profile.png", 900, 600) << profile_commands(s, u) << "unset output\n";
+        g << gp_png(p.png, 800, 700) << frame << heat_commands(p, cols[p.column - 1], outline);
+    g << gp_png("profile.png", 900, 600) << profile_commands(s, u, axes) << "unset output\n";
 
     run_gnuplot(dir, "gnuplot/patch.gp", g.str());
 }

@@ -1,23 +1,25 @@
 // The pictures of one contact, as in the paper's Figs. 6-9: heat maps over
-// the normalised patch (x/a, y/b) of the slip/adhesion map, work per unit
-// area, tractions, micro-slips, moment per unit area and spin, each titled
-// with its total; an eight-panel overview; and the lateral work profile
-// against the equal-area parabola.
+// the patch of the slip/adhesion map, work per unit area, tractions,
+// micro-slips, moment per unit area and the traction-bound utilisation
+// |p|/(mu pz), each titled with its total; an eight-panel overview; and the
+// lateral work profile against the equal-area parabola.
 //
 // Each element is drawn as its own rectangle (boxxyerror), because Kalker's
 // strip grid is not rectangular: every strip has its own chord and element
 // length. Work and moment are shown per unit area for the same reason --
-// elements of different strips differ in size.
+// elements of different strips differ in size. Slip elements are outlined in
+// the work maps, so a reader sees that the work lives in the slip zone.
 //
-// Signs: tractions and moment are drawn as they act on the RAIL (the
-// paper's sign, same as the creepages); the library and the CSV files give
-// them on the wheel.
+// Signs and units: tractions, forces and moment act on the body PlotStyle
+// names (the run's own convention by default), stated in every title; the
+// picture units are Units::plot_label's (SI: mm, N/mm^2, kN).
 #pragma once
 
 #include <string>
 #include <vector>
 
 #include "contact_solver.hpp"
+#include "plot_style.hpp"
 #include "units.hpp"
 
 namespace cwcli {
@@ -25,9 +27,9 @@ namespace cwcli {
 // Writes dir/gnuplot/{patch.dat,profile.dat,patch.gp} and runs gnuplot in
 // dir, which draws patch.png (the overview, headed by caption),
 // slip_adhesion.png, work.png, traction_x.png, slip_x.png, traction_y.png,
-// slip_y.png, moment.png, spin.png, work_paper.png and profile.png.
+// slip_y.png, moment.png, utilisation.png, work_paper.png and profile.png.
 void write_patch_pictures(const std::string& dir, const Solution& s, const Units& u,
-                          const std::string& caption);
+                          const std::string& caption, const PlotStyle& style);
 
 // One-line description of the inputs, e.g. for captions.
 std::string describe_case(const Solution& s, const Units& u);

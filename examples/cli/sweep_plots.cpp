@@ -99,7 +99,7 @@ void write_sweep_pictures(const std::string& dir, const std::vector<SweepFigure>
           << gp_text_lines({fig.caption, caption + "; slip orange, adhesion blue"})
           << " font ',12'\n"
           << gp_patch_frame(rolling_direction)
-          << "unset label 2; unset label 3\nunset xlabel; unset ylabel\n"
+          << "unset label 2; unset label 3\n"
           << gp_state_scale() << "unset colorbox\n";
         for (size_t k = 0; k < panels[f].size(); ++k)
             g << "set title " << panel_title(panels[f][k], varies(fig), u) << " font ',9'\n"

@@ -69,12 +69,16 @@ std::string Units::label(Quantity q) const
 
 double Units::plot_factor(Quantity q) const
 {
-    const double per_small_area = is_si() ? 1e-6 : 0.0254 * 0.0254; // per mm^2 or per in^2
+    const bool si = is_si();
+    const double small_length = si ? 1e-3 : 0.0254; // mm or in, in metres
     switch (q) {
-    case Quantity::stress: return is_si() ? 1e-6 : 1.0 / pascal_;
-    case Quantity::work_per_area: return per_small_area / newton_;
-    case Quantity::moment_per_area: return per_small_area / (newton_ * metre_);
-    case Quantity::profile: return (is_si() ? 1e-3 : 0.0254) / newton_; // per mm, per in
+    case Quantity::length: return 1.0 / small_length;
+    case Quantity::force: return si ? 1e-3 : 1.0 / newton_;
+    case Quantity::stress: return si ? 1e-6 : 1.0 / pascal_;
+    case Quantity::work_per_area: return small_length * small_length / newton_;
+    case Quantity::moment_per_area:
+        return si ? 1e-3 : small_length * small_length / (newton_ * metre_); // N mm per mm^2
+    case Quantity::profile: return small_length / newton_;
     default: return 1.0 / si_per_unit(q);
     }
 }
@@ -83,12 +87,34 @@ std::string Units::plot_label(Quantity q) const
 {
     const bool si = is_si();
     switch (q) {
-    case Quantity::stress: return si ? "MPa" : "psi";
+    case Quantity::length: return si ? "mm" : "in";
+    case Quantity::force: return si ? "kN" : "lbf";
+    case Quantity::stress: return si ? "N/mm^2" : "psi";
     case Quantity::work_per_area: return si ? "J/m per mm^2" : "lbf ft/ft per in^2";
-    case Quantity::moment_per_area: return si ? "N m per mm^2" : "lbf ft per in^2";
+    case Quantity::moment_per_area: return si ? "N mm per mm^2" : "lbf ft per in^2";
     case Quantity::profile: return si ? "J/m per mm" : "lbf ft/ft per in";
     default: return label(q);
     }
+}
+
+std::string Units::csv_suffix(Quantity q) const
+{
+    std::string s = label(q);
+    if (s == "-") return "";
+    std::string out;
+    for (size_t k = 0; k < s.size(); ++k) {
+        if (s.compare(k, 5, " per ") == 0) {
+            out += "_per_";
+            k += 4;
+        } else if (s[k] == ' ') {
+            out += '_';
+        } else if (s[k] == '/') {
+            out += "_per_";
+        } else if (s[k] != '^') {
+            out += s[k];
+        }
+    }
+    return out;
 }
 
 } // namespace cwcli

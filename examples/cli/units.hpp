@@ -55,10 +55,15 @@ public:
     double from_si(Quantity q, double v) const { return v / si_per_unit(q); }
     std::string label(Quantity q) const;
 
-    // Pictures use friendlier magnitudes: MPa rather than Pa, per mm^2 or
-    // per in^2 rather than per m^2 or ft^2. Value shown = SI value * factor.
+    // Pictures use the engineer's magnitudes, one set per system: SI as mm,
+    // N/mm^2, kN (moment N m, work J/m, per mm^2 or per mm); paper as in,
+    // psi, lbf (moment lbf ft, work lbf ft/ft, per in^2 or per in).
+    // Value shown = SI value * factor.
     double plot_factor(Quantity q) const;
     std::string plot_label(Quantity q) const;
+
+    // The unit as a CSV column suffix: "m", "m2", "Pa", "N_m", "J_per_m".
+    std::string csv_suffix(Quantity q) const;
 
 private:
     std::string name_;

@@ -20,22 +20,30 @@ commands:
   --version  program and library versions
 
 exit status: 0 success, 1 environment failure (cannot write, gnuplot failed),
-             2 bad input (one line on stderr names the option and the problem)
+             2 bad input (one line on stderr names the option and the problem,
+             with the nearest option or value when it looks like a typo)
+stderr also carries warnings about inputs the library accepts but a
+wheel-rail contact never has (a semi-axis of 7.2 m, G = 82000 Pa, a creepage
+of 0.7), notes naming defaults taken, and where --out wrote; exit status 0.
+Option names are exact (--N is the load, --nx the grid); values of
+enumerations are not case sensitive (--units SI, --grid Uniform).
 )";
 }
 
 const char* usage_solve()
 {
-    return R"(usage: creepwork solve [options]
+    return R"(usage: creepwork solve --a A --b B --N N [options]
 
-Solves one steady-rolling contact on an elliptical patch. Every option has a
-default (the library's: steel G = 82 GPa, nu = 0.28, mu = 0.3, a = b = 6 mm,
-N = 80 kN, zero creepage; Kalker strip grid 20 x 20, parabolic pressure).
+Solves one steady-rolling contact on an elliptical patch. The semi-axes and
+the load are required (no default could fit a real contact). Everything else
+has the library's default, named on stderr when taken for mu, G or nu:
+steel G = 82 GPa, nu = 0.28, mu = 0.3, zero creepage; Kalker strip grid
+20 x 20, parabolic pressure.
 
 contact (lengths, forces, stresses in the --units system):
-  --a A             semi-axis along the rolling direction x (> 0)
-  --b B             lateral semi-axis (> 0; a/b within [1e-3, 1e3])
-  --N N             normal force (>= 0)
+  --a A             semi-axis along the rolling direction x (> 0), required
+  --b B             lateral semi-axis (> 0; a/b within [1e-3, 1e3]), required
+  --N N             normal force (>= 0), required
   --mu MU           friction coefficient (>= 0)
   --G G             combined shear modulus (> 0)
   --nu NU           combined Poisson's ratio (0 .. 0.5)
@@ -50,6 +58,14 @@ contact (lengths, forces, stresses in the --units system):
   --pressure parabolic|elliptic
                     normal pressure and traction bound (default parabolic,
                     the simplified theory; elliptic = Hertz)
+  --spin-offset S   spin term of the lateral rigid slip taken S element
+                    lengths ahead of the slip point (0 .. 1; default 0,
+                    Kalker's FASTSIM; CONTACT's FASTSIM uses 1/6)
+  --flexibility-blending
+                    CONTACT's blending of L1, L2, L3 towards one flexibility
+                    as the creepage grows (CONTACT's FASTSIM default). With
+                    --grid uniform --spin-offset 0.1666666666666667 this
+                    reproduces CONTACT's FASTSIM output.
 grid:
   --grid strips|uniform
                     Kalker's strip grid (default) or CONTACT's uniform grid
@@ -64,13 +80,25 @@ output:
   --format text|json
                     totals on stdout (default text)
   --out DIR         also write DIR/fields.csv, profile.csv, result.json and
-                    the pictures (all or nothing: staged, then renamed; an
-                    existing DIR is replaced only if creepwork wrote it)
+                    the pictures (all or nothing: staged, then renamed);
+                    stderr says how many files went where
+  --force           with --out: replace DIR if an earlier creepwork run
+                    wrote it (a directory creepwork did not write is never
+                    replaced)
   --no-plots        with --out: data files only
+  --plot-sign wheel|rail
+                    the body the pictures' tractions, forces and moment act
+                    on; default wheel, the sign of solve's text, JSON and CSV
+  --plot-axes normalised|physical
+                    pictures over x/a, y/b (default: every patch a circle,
+                    as the paper draws it) or over x, y in mm (in with
+                    --units paper): a 2:1 patch drawn as a 2:1 ellipse
 
 signs: Fx, Fy, Mz, px, py, mz are the library's: they act on the WHEEL,
 opposite to the creepages (Kalker, CONTACT). The paper prints the force on
 the rail. Work is positive when dissipated, per unit rolling distance.
+Pictures: SI in mm, N/mm^2 (tractions), kN (forces), N m, J/m; --units
+paper in in, psi, lbf, lbf ft, lbf ft/ft.
 
 JSON keys (stable; values in the --units system):
   Fx Fy Mz W_macro W_micro_paper K W_consistent balance_factor work_flags
@@ -81,16 +109,23 @@ JSON keys (stable; values in the --units system):
   W_consistent sums the energy-consistent work map (= W_macro).
 
 files with --out:
-  fields.csv   one row per element, i fastest (nx*ny rows):
-               i,j,x,y,area,state,pz,px,py,sx,sy,mz,work_paper,work_consistent
+  fields.csv   one row per element, i fastest (nx*ny rows), the unit in
+               every column name (SI shown):
+               i,j,x_m,y_m,area_m2,state,pz_Pa,px_wheel_Pa,py_wheel_Pa,sx,sy,
+               mz_wheel_N_m,work_paper_J_per_m,work_consistent_J_per_m
                state 0 exterior, 1 adhesion, 2 slip; sx, sy = W/V (-);
                mz, work_* per element (moment, work per rolled distance)
-  profile.csv  j,y,w,parabola: lateral work profile (per unit width) and
-               the equal-area parabola (paper Figs. 8-9)
+  profile.csv  j,y_m,w_J_per_m_per_m,parabola_J_per_m_per_m: lateral work
+               profile (per unit width) and the equal-area parabola (paper
+               Figs. 8-9)
   result.json  the JSON above
-  patch.png    the eight panels of the paper's Figs. 6-7 over (x/a, y/b)
+  patch.png    eight panels after the paper's Figs. 6-7: slip/adhesion,
+               work per area (slip elements outlined), tractions and
+               micro-slips, moment per area, and the traction-bound
+               utilisation |p|/(mu pz) in place of the paper's spin panel
+               (which is one constant colour in slip)
   slip_adhesion.png work.png traction_x.png traction_y.png slip_x.png
-  slip_y.png moment.png spin.png work_paper.png profile.png
+  slip_y.png moment.png utilisation.png work_paper.png profile.png
   gnuplot/     the scripts and data behind the pictures
                (cd DIR && gnuplot gnuplot/patch.gp re-draws them)
 
@@ -125,10 +160,10 @@ a = 6.6323 mm, b = a/2, N = 10000 lbf, mu = 0.6, G = 82 GPa, nu = 0.3,
 Kalker strip grid 40 x 40): --a --b --N --mu --G --nu --L1 --L2 --L3
 --pressure --rolling-direction --grid --nx --ny --box-scale --units
 (as for solve).
-output: --out DIR (required), --format text|json (the table of cases on
-stdout), --no-plots. DIR gets cases.csv (one row per panel: figure, panel,
-xi_x, xi_y, spin, Fx, Fy, Mz, adhesion_fraction, n_slip, n_contact) and
-fig2.png .. fig5.png with their gnuplot/ scripts.
+output: --out DIR (required), --force, --format text|json (the table of
+cases on stdout), --no-plots. DIR gets cases.csv (one row per panel: figure,
+panel, xi_x, xi_y, spin, Fx, Fy, Mz on the wheel, adhesion_fraction, n_slip,
+n_contact) and fig2.png .. fig5.png with their gnuplot/ scripts.
 )";
 }
 
@@ -167,7 +202,10 @@ paper does not say which contact they used), row 5 on Fig. 7's.
 options: --G --nu --nx --ny --units si|paper (units of --G, the JSON, the
 files and the pictures; the text shows both), --format text|json, --out DIR
 (pictures of Fig. 6 in DIR, of Fig. 7 in DIR/fig7, plus fields.csv,
-profile.csv, result.json in each), --no-plots.
+profile.csv, result.json in each), --force, --no-plots, --plot-sign
+wheel|rail (default rail: the comparison above is on the rail, as the paper
+prints it; the CSV and JSON files give the wheel's), --plot-axes
+normalised|physical.
 )";
 }
 

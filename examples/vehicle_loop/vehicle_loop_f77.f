@@ -6,8 +6,11 @@ C     rolling, paper eqs. 35, 37) into the caller's arrays; at the end the
 C     lateral work profile (accumulated energy-consistent work per unit
 C     width, J/m) is written. The strips of the Kalker grid are NY equal
 C     strips across [-B, B].
+C     creepwork_legacy.inc (installed in include/creepwork/fortran)
+C     declares the legacy routines EXTERNAL and lists their arguments.
       PROGRAM VLOOP
       IMPLICIT DOUBLE PRECISION (A-H, O-Z)
+      INCLUDE 'creepwork_legacy.inc'
       PARAMETER (NX = 20, NY = 20, NSTEPS = 3000)
       PARAMETER (PI = 3.14159265358979323846D0)
       DIMENSION PX(NX, NY), PY(NX, NY), SX(NX, NY), SY(NX, NY)

@@ -1,7 +1,8 @@
 # Installs the build tree into a fresh prefix and builds programs outside the
 # tree against it, the ways a user would:
 #   1. libcreepwork.so exports cw_* symbols only;
-#   2. the .mod file is under include/creepwork/fortran;
+#   2. the .mod file and the legacy include files are under
+#      include/creepwork/fortran, both .pc files and bin/creepwork installed;
 #   3. C via find_package(creepwork)            (consumers/c_find_package)
 #   4. C via pkg-config                          (cc consumer.c $(pkg-config ...))
 #   5. Fortran via the plain line of the README:
@@ -68,10 +69,16 @@ if(foreign OR count EQUAL 0)
 endif()
 message(STATUS "libcreepwork.so exports ${count} symbols, all cw_*")
 
-# 2. The compiler-specific module file.
-if(NOT EXISTS ${prefix}/include/creepwork/fortran/creepwork.mod)
-  message(FATAL_ERROR "include/creepwork/fortran/creepwork.mod was not installed")
-endif()
+# 2. The compiler-specific module file, the legacy layer's include files,
+# both pkg-config files and the program (which finds its library in ../lib).
+foreach(file include/creepwork/fortran/creepwork.mod include/creepwork/fortran/creepwork_legacy.inc
+             include/creepwork/fortran/creepwork_legacy.fi lib/pkgconfig/creepwork.pc
+             lib/pkgconfig/creepwork-fortran.pc bin/creepwork)
+  if(NOT EXISTS ${prefix}/${file})
+    message(FATAL_ERROR "${file} was not installed")
+  endif()
+endforeach()
+run("installed program" COMMAND ${prefix}/bin/creepwork --version)
 
 # 3. C, find_package.
 run("C find_package configure" COMMAND ${CMAKE_COMMAND} -S ${consumers}/c_find_package

@@ -16,7 +16,9 @@
  *   Kinematics Kalker's: rigid slip w = (xi_x - phi*y, xi_y + phi*x).
  *   Forces    Fx, Fy, Mz act on the wheel (body 1), as in Kalker's and
  *             CONTACT's conventions: opposite in sign to the creepages.
- *             The paper (../shared/paper) prints the force on the rail.
+ *             The paper (Determination of Creep Force, Moment, and Work
+             Distribution in Rolling Contact With Slip; README "How to
+             cite") prints the force on the rail.
  *   Work      Positive when dissipated; per unit rolling distance [J/m].
  *             Multiply by V*dt for the work of a time step.
  *   Grids     Element (i, j), i = 0..nx-1 along x (increasing x),
@@ -25,11 +27,21 @@
  *             real(c_double) :: f(nx, ny) maps directly.
  *   Buffers   Caller-owned; each pointer is followed by its length in
  *             elements. Too short is an error: nothing is written.
- *   Errors    Every function returns an int status (CW_OK = 0). Codes are
- *             never renumbered, only appended. cw_status_string() gives a
- *             static message; a handle keeps a detailed message naming the
- *             offending input (cw_solver_last_error). On any error nothing
- *             is written to the outputs and the handle stays usable.
+ *   Errors    Every function that can fail returns an int status (CW_OK =
+ *             0); the others return what they name: cw_version_number and
+ *             cw_abi_version an int version, cw_version_string,
+ *             cw_status_string and the cw_*_last_error functions a string.
+ *             Codes are never renumbered, only appended. cw_status_string()
+ *             gives a static message; a handle keeps a detailed message
+ *             naming the offending input (cw_solver_last_error). On any
+ *             error nothing is written to the outputs and the handle stays
+ *             usable.
+ *   Floating point  No call raises a floating-point exception in the
+ *             caller: each runs with exceptions masked and subnormals
+ *             flushed to zero, and restores the caller's control and status
+ *             word (masks, rounding, flags) on return, so hosts that trap
+ *             invalid, zero, overflow or denormal are safe (README
+ *             "Guarantees").
  *   Threads   Distinct handles may be used concurrently from different
  *             threads; one handle must be used by one thread at a time.
  *             The library has no global mutable state.
@@ -191,11 +203,17 @@ typedef struct cw_params {
                               default; reaching it is CW_ERR_NOT_CONVERGED */
     int warm_start;        /* exact model: 1 (default) starts from the handle's last
                               solution, 0 from full adhesion (same answer to tolerance) */
-    double spin_offset;    /* CONTACT's facphi: rigid spin slip taken at x + spin_offset*dx
-                              (uniform grid); CW_SPIN_OFFSET_DEFAULT (default): 0 for
-                              FASTSIM (Kalker 1982), 1/6 for the exact model (CONTACT) */
-    int flexibility_blending; /* FASTSIM: 1 = CONTACT's blending of L1..L3 for combined
-                                 creepages, 0 (default) = Kalker's L1, L2, L3 */
+    double spin_offset;    /* CONTACT's facphi, in [0, 1]: the spin term of the lateral
+                              rigid slip is taken spin_offset element lengths ahead of
+                              the slip point, towards the leading edge (x' + s dx in the
+                              rolling frame, either rolling_direction; on Kalker's strip
+                              grid dx is the strip's own element length);
+                              CW_SPIN_OFFSET_DEFAULT (default): 0 for FASTSIM (Kalker
+                              1982), 1/6 for the exact model (CONTACT) */
+    int flexibility_blending; /* FASTSIM: 1 = CONTACT's blending of L1..L3 towards one
+                                 flexibility as the creepage grows (CONTACT's default;
+                                 with spin_offset = 1/6 on the uniform grid it reproduces
+                                 CONTACT's FASTSIM), 0 (default) = Kalker's L1, L2, L3 */
 } cw_params;
 
 /* Defaults: steel (G = 82e9 Pa, nu = 0.28), mu = 0.3, a = b = 6e-3 m,
@@ -388,10 +406,16 @@ CW_API int cw_kalker_flexibilities(double a, double b, double G, double nu,
                                    double flexibilities[3], char* message,
                                    size_t message_len);
 
-/* Hertz contact of elastically similar bodies: gap A x^2 + B y^2 (A, B > 0,
- * principal relative curvatures [1/m]), load N >= 0 [N], contact modulus
- * E* > 0 [Pa] (E* = G/(1-nu) for identical materials).
- * hertz[4] = a [m], b [m], maximum pressure p0 [Pa], approach [m].
+/* Hertz contact of elastically similar bodies. A, B > 0 [1/m] are the
+ * coefficients of the undeformed gap z = A x^2 + B y^2, i.e. HALF the
+ * relative curvatures: A = (1/R1x + 1/R2x)/2 along x (the rolling
+ * direction), B = (1/R1y + 1/R2y)/2 across (convex radii positive, a flat
+ * profile 0). Passing the curvatures 1/R themselves gives a patch 20 %
+ * smaller and p0 59 % higher. Load N >= 0 [N], contact modulus E* > 0 [Pa]
+ * (E* = G/(1-nu) for identical materials). Example: wheel radius 0.457 m on
+ * a rail crown of 0.3 m, A = 1/(2*0.457), B = 1/(2*0.3), N = 100 kN,
+ * G = 82 GPa, nu = 0.28: a = 7.170 mm, b = 5.417 mm, p0 = 1229 MPa.
+ * hertz[4] = a [m] (along x), b [m], maximum pressure p0 [Pa], approach [m].
  * Errors: CW_ERR_NULL_POINTER, CW_ERR_INVALID_INPUT, CW_ERR_NUMERIC. */
 CW_API int cw_hertz_solve(double A, double B, double normal_force, double E_star,
                           double hertz[4], char* message, size_t message_len);

@@ -1,8 +1,11 @@
 /* Tests of the creepwork command-line program, run as a user would run it:
  * its JSON must parse and equal what the C ABI gives for the same inputs,
  * bad input must fail cleanly (status 2, one stderr line naming the option,
- * nothing written), --out must write every column and row, and the paper
- * units must describe the same physics as SI.
+ * nothing written), --out must write every column and row (units in the
+ * header) and never replace an earlier output without --force, the paper
+ * units must describe the same physics as SI, implausible inputs are warned
+ * about, typos get the nearest option suggested, and the pictures state and
+ * follow one sign convention.
  *
  * usage: test_cli <creepwork binary> <scratch dir> [cmocka filter] */
 #include <algorithm>
@@ -124,7 +127,8 @@ std::vector<Case> cases()
     cs[0].params.xi_x = 0.001, cs[0].params.xi_y = -0.0005, cs[0].params.phi = 0.8;
     cs[0].grid.nx = 9, cs[0].grid.ny = 7;
     // Uniform grid, box scale, elliptic pressure, rolling towards -x.
-    cs[1].args = {"--grid", "uniform", "--box-scale", "1.2", "--pressure", "elliptic",
+    cs[1].args = {"--a", "0.006", "--b", "0.006", "--N", "80000",
+                  "--grid", "uniform", "--box-scale", "1.2", "--pressure", "elliptic",
                   "--rolling-direction", "-1", "--xi-x", "-0.0008", "--spin", "-1.5",
                   "--nx", "16", "--ny", "12"};
     cs[1].grid.kind = CW_GRID_UNIFORM, cs[1].grid.box_scale = 1.2;
@@ -132,7 +136,8 @@ std::vector<Case> cases()
     cs[1].params.pressure = CW_PRESSURE_ELLIPTIC, cs[1].params.rolling_direction = -1;
     cs[1].params.xi_x = -0.0008, cs[1].params.phi = -1.5;
     // Flexibilities given (legacy), pure lateral creepage.
-    cs[2].args = {"--L1", "1e-11", "--L2", "1.1e-11", "--L3", "9e-12", "--xi-y", "0.002"};
+    cs[2].args = {"--a", "0.006", "--b", "0.006", "--N", "80000",
+                  "--L1", "1e-11", "--L2", "1.1e-11", "--L3", "9e-12", "--xi-y", "0.002"};
     cs[2].params.flexibility = CW_FLEX_GIVEN;
     cs[2].params.L1 = 1e-11, cs[2].params.L2 = 1.1e-11, cs[2].params.L3 = 9e-12;
     cs[2].params.xi_y = 0.002;
@@ -222,7 +227,7 @@ void json_keys_and_identities(void**)
                      0.0);
     }
     // Text output is the default and names the sign convention.
-    const Run t = run_ok({"solve", "--xi-x", "0.001"});
+    const Run t = run_ok({"solve", "--a", "0.006", "--b", "0.006", "--N", "80000", "--xi-x", "0.001"});
     assert_non_null(std::strstr(t.out.c_str(), "on the wheel"));
 }
 
@@ -279,6 +284,15 @@ void bad_inputs_fail_cleanly(void**)
         {{"solve", "--out", a_file + "/sub"}, "--out"},
         // Passes the CLI's checks, overflows in the library: its message is relayed.
         {{"solve", "--xi-x", "1e308"}, "library"},
+        // solve has no default size or load.
+        {{"solve", "--xi-x", "1e-3", "--no-size"}, "--a, --b, --N"},
+        // A typo gets the nearest option or value suggested.
+        {{"solve", "--xi_x", "1e-3"}, "did you mean --xi-x?"},
+        {{"solve", "--spn", "1"}, "did you mean --spin?"},
+        {{"solve", "--grid", "unifrom"}, "did you mean uniform?"},
+        {{"slove"}, "did you mean solve?", false},
+        {{"solve", "--plot-sign", "road"}, "--plot-sign"},
+        {{"solve", "--plot-axes", "polar"}, "--plot-axes"},
         {{"sweep"}, "--out", false},
         {{"sweep", "--nx", "0"}, "--nx"},
         {{"fit-fig6", "--nu", "0.9"}, "--nu"},
@@ -288,6 +302,16 @@ void bad_inputs_fail_cleanly(void**)
     const std::string never = g_scratch + "/never";
     for (const Bad& b : bad) {
         std::vector<std::string> args = b.args;
+        // solve needs a size and load: give them unless the case is about
+        // that ("--no-size") or they are what it tests.
+        const auto given = [&args](const char* o) {
+            return std::find(args.begin(), args.end(), std::string(o)) != args.end();
+        };
+        if (given("--no-size"))
+            args.erase(std::find(args.begin(), args.end(), std::string("--no-size")));
+        else if (args[0] == "solve")
+            for (const char* o : {"--a", "--b", "--N"})
+                if (!given(o)) args.insert(args.end(), {o, std::string(o) == "--N" ? "80000" : "0.006"});
         if (b.add_out && std::find(args.begin(), args.end(), std::string("--out")) == args.end())
             args.insert(args.end(), {"--out", never});
         const Run r = run_cli(args);
@@ -334,9 +358,11 @@ void out_writes_every_field(void**)
     const std::string dir = g_scratch + "/solve_out";
     run_ok(with({"solve", "--no-plots", "--out", dir}, c.args));
     const auto rows = read_csv(dir + "/fields.csv");
+    // Every column names its unit, and the body the forces act on.
     const std::vector<std::string> header = {
-        "i",  "j",  "x",  "y",  "area", "state",      "pz",
-        "px", "py", "sx", "sy", "mz",   "work_paper", "work_consistent"};
+        "i",           "j",           "x_m", "y_m", "area_m2",      "state",
+        "pz_Pa",       "px_wheel_Pa", "py_wheel_Pa", "sx", "sy",   "mz_wheel_N_m",
+        "work_paper_J_per_m", "work_consistent_J_per_m"};
     assert_true(rows.size() == 1u + static_cast<size_t>(c.grid.nx * c.grid.ny));
     assert_true(rows[0] == header);
 
@@ -368,7 +394,8 @@ void out_writes_every_field(void**)
     cw_solver_destroy(s);
     const auto prof = read_csv(dir + "/profile.csv");
     assert_int_equal(prof.size(), 1u + c.grid.ny);
-    assert_true((prof[0] == std::vector<std::string>{"j", "y", "w", "parabola"}));
+    assert_true((prof[0] == std::vector<std::string>{"j", "y_m", "w_J_per_m_per_m",
+                                                      "parabola_J_per_m_per_m"}));
     for (int j = 0; j < c.grid.ny; ++j) {
         assert_true(std::strtod(prof[j + 1][1].c_str(), nullptr) == y[j]);
         assert_true(std::strtod(prof[j + 1][2].c_str(), nullptr) == w[j]);
@@ -376,9 +403,18 @@ void out_writes_every_field(void**)
     }
     parse_or_fail(slurp(dir + "/result.json"));
     assert_true(fs::exists(dir + "/.creepwork-output"));
-    // A second run replaces the directory made by the first.
-    run_ok(with({"solve", "--no-plots", "--nx", "5", "--out", dir}, {"--ny", "4"}));
+    // A second run does not replace the first's output unless asked to,
+    // and says where it wrote.
+    const Run again = run_cli(with({"solve", "--no-plots", "--nx", "5", "--ny", "4", "--out", dir},
+                                   {c.args.begin(), c.args.begin() + 6}));
+    assert_int_equal(again.status, 2);
+    assert_non_null(std::strstr(again.err.c_str(), "--force"));
+    assert_true(read_csv(dir + "/fields.csv").size() == 1u + static_cast<size_t>(c.grid.nx * c.grid.ny));
+    const Run forced = run_ok(with({"solve", "--no-plots", "--nx", "5", "--ny", "4", "--force",
+                                    "--out", dir},
+                                   {c.args.begin(), c.args.begin() + 6}));
     assert_int_equal(read_csv(dir + "/fields.csv").size(), 1u + 20u);
+    assert_non_null(std::strstr(forced.err.c_str(), ("creepwork: wrote 3 files to " + dir).c_str()));
 }
 
 /* ---------------------------------------------------------------- units */
@@ -433,15 +469,57 @@ void out_writes_pictures(void**)
 {
     if (std::getenv("CW_TEST_NO_GNUPLOT")) cw_skip();
     const std::string dir = g_scratch + "/pictures";
-    run_ok({"solve", "--xi-x", "0.001", "--xi-y", "0.0005", "--spin", "1", "--nx", "10", "--ny",
-            "10", "--out", dir});
-    for (const char* png :
-         {"patch.png", "slip_adhesion.png", "work.png", "traction_x.png", "traction_y.png",
-          "slip_x.png", "slip_y.png", "moment.png", "spin.png", "work_paper.png", "profile.png"}) {
+    const std::vector<std::string> contact = {"--a", "0.008", "--b", "0.004", "--N", "80000",
+                                              "--xi-x", "0.001", "--xi-y", "0.0005", "--spin",
+                                              "1", "--nx", "10", "--ny", "10"};
+    run_ok(with({"solve", "--out", dir}, contact));
+    for (const char* png : {"patch.png", "slip_adhesion.png", "work.png", "traction_x.png",
+                            "traction_y.png", "slip_x.png", "slip_y.png", "moment.png",
+                            "utilisation.png", "work_paper.png", "profile.png"}) {
         if (!is_png(dir + "/" + png)) print_error("%s is not a PNG picture\n", png);
         assert_true(is_png(dir + "/" + png));
     }
-    assert_true(fs::exists(dir + "/gnuplot/patch.gp"));
+    // One run, one convention: solve's text and files give the forces on the
+    // wheel, and so do its pictures, saying so; SI pictures in kN, N/mm^2.
+    const std::string gp = slurp(dir + "/gnuplot/patch.gp");
+    assert_non_null(std::strstr(gp.c_str(), "Longitudinal traction on the wheel, Fx = -"));
+    assert_null(std::strstr(gp.c_str(), "on the rail"));
+    assert_non_null(std::strstr(gp.c_str(), " kN'"));
+    assert_non_null(std::strstr(gp.c_str(), "'N/mm^2'"));
+    // The work maps outline the slip elements; the unit disk in x/a, y/b.
+    assert_non_null(std::strstr(gp.c_str(), "($5 == 2 ? $1 : NaN)"));
+    assert_non_null(std::strstr(gp.c_str(), "ellipse at 0,0 size 2,2 "));
+    // On request: the rail's sign, and the 2:1 patch as a 16 x 8 mm ellipse.
+    run_ok(with({"solve", "--out", dir, "--force", "--plot-sign", "rail", "--plot-axes",
+                 "physical"},
+                contact));
+    const std::string rail = slurp(dir + "/gnuplot/patch.gp");
+    assert_non_null(std::strstr(rail.c_str(), "Longitudinal traction on the rail, Fx = "));
+    assert_null(std::strstr(rail.c_str(), "on the wheel,"));
+    assert_non_null(std::strstr(rail.c_str(), "ellipse at 0,0 size 16,8 "));
+    assert_non_null(std::strstr(rail.c_str(), "set xlabel 'x [mm]'"));
+}
+
+// Inputs valid for the library but implausible for a wheel-rail contact run
+// (exit 0) with one warning each on stderr; choices are not case sensitive.
+void warns_and_accepts_any_case(void**)
+{
+    const Run r = run_ok({"solve", "--a", "7.2", "--b", "5.4", "--N", "100e3", "--xi-x", "1e-3",
+                          "--mu", "0.3", "--G", "8.2e10", "--nu", "0.28"});
+    assert_non_null(std::strstr(r.err.c_str(), "warning: --a = 7.2 m is implausible"));
+    assert_non_null(std::strstr(r.err.c_str(), "warning: --b = 5.4 m is implausible"));
+    assert_null(std::strstr(r.err.c_str(), "note: not given"));
+    const Run g = run_ok({"solve", "--a", "6e-3", "--b", "6e-3", "--N", "80e3", "--G", "82000",
+                          "--xi-x", "0.7", "--spin", "200"});
+    for (const char* opt : {"--G = 82000 Pa", "--xi-x = 0.7", "--spin = 200 1/m"})
+        assert_non_null(std::strstr(g.err.c_str(), opt));
+    // The defaults taken for mu and nu are named.
+    assert_non_null(std::strstr(g.err.c_str(), "note: not given, so the library's defaults"));
+    const Json j = parse_or_fail(run_ok({"solve", "--a", "6e-3", "--b", "6e-3", "--N", "80e3",
+                                         "--units", "SI", "--grid", "Uniform", "--pressure",
+                                         "Elliptic", "--format", "JSON", "--nx", "8", "--ny", "8"})
+                                     .out);
+    assert_string_equal(j.at("units").string.c_str(), "SI");
 }
 
 void sweep_writes_maps(void**)
@@ -582,7 +660,7 @@ int main(int argc, char** argv)
         cmocka_unit_test(bad_inputs_fail_cleanly), cmocka_unit_test(out_writes_every_field),
         cmocka_unit_test(paper_units_round_trip),  cmocka_unit_test(out_writes_pictures),
         cmocka_unit_test(sweep_writes_maps),       cmocka_unit_test(fit_fig6_reproduces_the_paper),
-        cmocka_unit_test(fit_fig6_choices),
+        cmocka_unit_test(fit_fig6_choices),        cmocka_unit_test(warns_and_accepts_any_case),
     };
     // One test per CTest entry, by exact name (cw_run_tests refuses a name
     // that matches none); a test that cannot run here reports SKIP.

@@ -1,0 +1,43 @@
+// Arithmetic that raises no floating-point exception, whatever the compiler
+// speculates. The core is built with -fno-trapping-math (so the kernels
+// vectorise), which lets the compiler evaluate both sides of `c ? x / y : 0`
+// -- in vector lanes it then discards, or in a branch-free scalar select --
+// and so divide by zero, or 0 by 0, in a host that traps FP exceptions
+// (README "Guarantees"). It even folds a guarded operand back:
+// `d > 0 ? p / (d > 0 ? d : 1) : 0` was compiled as a packed p / d. Here the
+// divisor passes through an empty asm, which hides its value from the
+// optimiser, so the division can only ever see the safe operand.
+#pragma once
+
+namespace creepwork {
+
+// v unchanged, but opaque to the optimiser.
+inline double fp_opaque(double v)
+{
+#if defined(__GNUC__) && defined(__x86_64__)
+    __asm__("" : "+x"(v));
+#elif defined(__GNUC__) && defined(__aarch64__)
+    __asm__("" : "+w"(v));
+#else
+    volatile double copy = v;
+    v = copy;
+#endif
+    return v;
+}
+
+// num / den when den != 0, else 0. The caller guarantees that the quotient
+// does not overflow.
+inline double quotient_or_zero(double num, double den)
+{
+    const bool ok = den != 0.0;
+    return (ok ? num : 0.0) / fp_opaque(ok ? den : 1.0);
+}
+
+// num / den when den > 0, else 0.
+inline double quotient_if_positive(double num, double den)
+{
+    const bool ok = den > 0.0;
+    return (ok ? num : 0.0) / fp_opaque(ok ? den : 1.0);
+}
+
+} // namespace creepwork
