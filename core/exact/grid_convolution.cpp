@@ -10,16 +10,6 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-// Smallest 2^a 3^b 5^c >= n (kissfft has dedicated butterflies for 2, 3, 4, 5).
-int good_fft_size(int n)
-{
-    for (int m = n < 2 ? 2 : n;; ++m) {
-        int r = m;
-        for (int p : {2, 3, 5})
-            while (r % p == 0) r /= p;
-        if (r == 1) return m;
-    }
-}
 
 } // namespace
 
@@ -28,9 +18,9 @@ GridConvolution::GridConvolution(int nx, int ny)
       // The steady shift needs A(k + 1) for k up to nx - 1, and the kernels
       // are stored symmetrically (real spectra): offsets -nx..nx along x
       // without wrap-around, -(ny - 1)..(ny - 1) along y.
-      mx_(good_fft_size(2 * nx + 1)), my_(good_fft_size(2 * ny - 1))
+      mx_(BatchedFft::good_size(2 * nx + 1)), my_(BatchedFft::good_size(2 * ny - 1)),
+      fft_x_(mx_), fft_y_(my_)
 {
-    fft_.SetFlag(Eigen::FFT<double>::Unscaled);
     // Offsets to tabulate: |k| <= nx, |l| <= ny - 1 for the products, and the
     // whole periodic cell |k| <= mx/2, |l| <= my/2 for the preconditioner.
     kmax_ = std::max(nx_, mx_ / 2);
@@ -53,16 +43,11 @@ GridConvolution::GridConvolution(int nx, int ny)
         const double t = 2.0 * kPi * kx / mx_;
         shift_[kx] = Complex(1.0 - std::cos(t), -std::sin(t));
     }
-    grid_.assign(static_cast<size_t>(nx_) * ny_, Complex(0.0, 0.0));
-    spec_.assign(m, Complex(0.0, 0.0));
-    const int longest = mx_ > my_ ? mx_ : my_;
-    line_in_.assign(longest, Complex(0.0, 0.0));
-    line_out_.assign(longest, Complex(0.0, 0.0));
-    // Make the four plans now (kissfft makes a plan on first use of a size).
-    fft_.fwd(line_out_.data(), line_in_.data(), mx_);
-    fft_.inv(line_out_.data(), line_in_.data(), mx_);
-    fft_.fwd(line_out_.data(), line_in_.data(), my_);
-    fft_.inv(line_out_.data(), line_in_.data(), my_);
+    rows_re_.assign(m, 0.0);
+    rows_im_.assign(m, 0.0);
+    spec_re_.assign(m, 0.0);
+    spec_im_.assign(m, 0.0);
+    work_.assign(2 * m, 0.0);
 }
 
 double GridConvolution::cf11(int k, int l) const
@@ -142,109 +127,114 @@ void GridConvolution::kernel_spectrum_pair(const std::vector<double>& k1,
                                            std::vector<double>& s2)
 {
     const double scale = 1.0 / (static_cast<double>(mx_) * my_);
-    // Full-size transform: the kernel fills the padded grid.
-    for (int ky = 0; ky < my_; ++ky) {
-        for (int kx = 0; kx < mx_; ++kx) {
-            const size_t i = kx + static_cast<size_t>(mx_) * ky;
-            line_in_[kx] = Complex(k1[i], k2[i]);
-        }
-        fft_.fwd(line_out_.data(), line_in_.data(), mx_);
-        for (int kx = 0; kx < mx_; ++kx) spec_[ky + static_cast<size_t>(my_) * kx] = line_out_[kx];
-    }
-    for (int kx = 0; kx < mx_; ++kx) {
-        Complex* col = spec_.data() + static_cast<size_t>(my_) * kx;
-        fft_.fwd(line_out_.data(), col, my_);
-        for (int ky = 0; ky < my_; ++ky) {
-            s1[ky + static_cast<size_t>(my_) * kx] = line_out_[ky].real() * scale;
-            s2[ky + static_cast<size_t>(my_) * kx] = line_out_[ky].imag() * scale;
-        }
+    // The kernel fills the padded grid; k1 and k2 are [kx + mx ky], as rows_.
+    std::copy(k1.begin(), k1.end(), rows_re_.begin());
+    std::copy(k2.begin(), k2.end(), rows_im_.begin());
+    forward(mx_, my_);
+    for (size_t i = 0; i < s1.size(); ++i) {
+        s1[i] = spec_re_[i] * scale;
+        s2[i] = spec_im_[i] * scale;
     }
 }
 
-void GridConvolution::forward()
+void GridConvolution::forward(int cols, int rows)
 {
-    for (int j = 0; j < ny_; ++j) {
-        const Complex* row = grid_.data() + static_cast<size_t>(nx_) * j;
-        for (int i = 0; i < nx_; ++i) line_in_[i] = row[i];
-        for (int i = nx_; i < mx_; ++i) line_in_[i] = Complex(0.0, 0.0);
-        fft_.fwd(line_out_.data(), line_in_.data(), mx_);
-        for (int kx = 0; kx < mx_; ++kx) spec_[j + static_cast<size_t>(my_) * kx] = line_out_[kx];
-    }
-    for (int kx = 0; kx < mx_; ++kx) {
-        Complex* col = spec_.data() + static_cast<size_t>(my_) * kx;
-        for (int ky = ny_; ky < my_; ++ky) col[ky] = Complex(0.0, 0.0);
-        fft_.fwd(line_out_.data(), col, my_);
-        for (int ky = 0; ky < my_; ++ky) col[ky] = line_out_[ky];
-    }
+    // Along y: lines are the cols columns, element j at [j * cols + i].
+    const size_t used = static_cast<size_t>(rows) * cols;
+    std::fill(rows_re_.begin() + used, rows_re_.begin() + static_cast<size_t>(my_) * cols, 0.0);
+    std::fill(rows_im_.begin() + used, rows_im_.begin() + static_cast<size_t>(my_) * cols, 0.0);
+    fft_y_.transform(rows_re_.data(), rows_im_.data(), cols, false, work_.data());
+    // Transpose [ky][i] -> [i][ky], zero columns i >= cols, then along x:
+    // lines are the my rows ky, element i at [i * my + ky].
+    for (int i = 0; i < cols; ++i)
+        for (int ky = 0; ky < my_; ++ky) {
+            spec_re_[static_cast<size_t>(i) * my_ + ky] = rows_re_[static_cast<size_t>(ky) * cols + i];
+            spec_im_[static_cast<size_t>(i) * my_ + ky] = rows_im_[static_cast<size_t>(ky) * cols + i];
+        }
+    std::fill(spec_re_.begin() + static_cast<size_t>(cols) * my_, spec_re_.end(), 0.0);
+    std::fill(spec_im_.begin() + static_cast<size_t>(cols) * my_, spec_im_.end(), 0.0);
+    fft_x_.transform(spec_re_.data(), spec_im_.data(), my_, false, work_.data());
 }
 
 void GridConvolution::inverse()
 {
-    for (int kx = 0; kx < mx_; ++kx) {
-        Complex* col = spec_.data() + static_cast<size_t>(my_) * kx;
-        fft_.inv(line_out_.data(), col, my_);
-        for (int j = 0; j < ny_; ++j) col[j] = line_out_[j];
-    }
-    for (int j = 0; j < ny_; ++j) {
-        for (int kx = 0; kx < mx_; ++kx) line_in_[kx] = spec_[j + static_cast<size_t>(my_) * kx];
-        fft_.inv(line_out_.data(), line_in_.data(), mx_);
-        Complex* row = grid_.data() + static_cast<size_t>(nx_) * j;
-        for (int i = 0; i < nx_; ++i) row[i] = line_out_[i];
-    }
+    fft_x_.transform(spec_re_.data(), spec_im_.data(), my_, true, work_.data());
+    for (int ky = 0; ky < my_; ++ky)
+        for (int i = 0; i < nx_; ++i) {
+            rows_re_[static_cast<size_t>(ky) * nx_ + i] = spec_re_[static_cast<size_t>(i) * my_ + ky];
+            rows_im_[static_cast<size_t>(ky) * nx_ + i] = spec_im_[static_cast<size_t>(i) * my_ + ky];
+        }
+    fft_y_.transform(rows_re_.data(), rows_im_.data(), nx_, true, work_.data());
 }
 
 void GridConvolution::apply_normal(const double* p1, const double* p2, double* u1, double* u2)
 {
     const size_t n = static_cast<size_t>(nx_) * ny_;
-    for (size_t i = 0; i < n; ++i) grid_[i] = Complex(p1[i], p2 ? p2[i] : 0.0);
-    forward();
+    for (size_t i = 0; i < n; ++i) {
+        rows_re_[i] = p1[i];
+        rows_im_[i] = p2 ? p2[i] : 0.0;
+    }
+    forward(nx_, ny_);
     const size_t m = static_cast<size_t>(mx_) * my_;
-    for (size_t i = 0; i < m; ++i) spec_[i] *= k33_[i];
+    for (size_t i = 0; i < m; ++i) {
+        spec_re_[i] *= k33_[i];
+        spec_im_[i] *= k33_[i];
+    }
     inverse();
-    for (size_t i = 0; i < n; ++i) u1[i] = grid_[i].real();
+    for (size_t i = 0; i < n; ++i) u1[i] = rows_re_[i];
     if (u2)
-        for (size_t i = 0; i < n; ++i) u2[i] = grid_[i].imag();
+        for (size_t i = 0; i < n; ++i) u2[i] = rows_im_[i];
 }
 
 void GridConvolution::apply_normal_inverse(const double* u, double* p)
 {
     const size_t n = static_cast<size_t>(nx_) * ny_;
-    for (size_t i = 0; i < n; ++i) grid_[i] = Complex(u[i], 0.0);
-    forward();
+    for (size_t i = 0; i < n; ++i) {
+        rows_re_[i] = u[i];
+        rows_im_[i] = 0.0;
+    }
+    forward(nx_, ny_);
     const size_t m = static_cast<size_t>(mx_) * my_;
-    for (size_t i = 0; i < m; ++i) spec_[i] *= k33_inv_[i];
+    for (size_t i = 0; i < m; ++i) {
+        spec_re_[i] *= k33_inv_[i];
+        spec_im_[i] *= k33_inv_[i];
+    }
     inverse();
-    for (size_t i = 0; i < n; ++i) p[i] = grid_[i].real();
+    for (size_t i = 0; i < n; ++i) p[i] = rows_re_[i];
 }
 
 void GridConvolution::apply_tangential(const Complex* z, Complex* s, bool steady)
 {
     const size_t n = static_cast<size_t>(nx_) * ny_;
-    for (size_t i = 0; i < n; ++i) grid_[i] = z[i];
-    forward();
+    for (size_t i = 0; i < n; ++i) {
+        rows_re_[i] = z[i].real();
+        rows_im_[i] = z[i].imag();
+    }
+    forward(nx_, ny_);
     // Pairs (k, -k): s^(k) = alpha^(k) z^(k) + beta^(k) conj(z^(-k)), times the
     // shift factor of column kx for the steady operator. Each pair is visited
     // once, from its lower-indexed member (self-paired modes alone).
     for (int kx = 0; kx < mx_; ++kx) {
         const int kxm = kx == 0 ? 0 : mx_ - kx;
+        if (kxm < kx) continue;
+        const Complex fa = steady ? shift_[kx] : Complex(1.0, 0.0);
+        const Complex fb = steady ? shift_[kxm] : Complex(1.0, 0.0);
         for (int ky = 0; ky < my_; ++ky) {
             const int kym = ky == 0 ? 0 : my_ - ky;
             const size_t a = ky + static_cast<size_t>(my_) * kx;
             const size_t b = kym + static_cast<size_t>(my_) * kxm;
-            if (b < a) continue;
-            const Complex za = spec_[a], zb = spec_[b];
-            Complex sa = alpha_[a] * za + Complex(beta_re_[a], beta_im_[a]) * std::conj(zb);
-            Complex sb = alpha_[b] * zb + Complex(beta_re_[b], beta_im_[b]) * std::conj(za);
-            if (steady) {
-                sa *= shift_[kx];
-                sb *= shift_[kxm];
-            }
-            spec_[a] = sa;
-            spec_[b] = sb;
+            if (kxm == kx && b < a) continue;
+            const Complex za(spec_re_[a], spec_im_[a]), zb(spec_re_[b], spec_im_[b]);
+            const Complex sa = fa * (alpha_[a] * za + Complex(beta_re_[a], beta_im_[a]) * std::conj(zb));
+            const Complex sb = fb * (alpha_[b] * zb + Complex(beta_re_[b], beta_im_[b]) * std::conj(za));
+            spec_re_[a] = sa.real();
+            spec_im_[a] = sa.imag();
+            spec_re_[b] = sb.real();
+            spec_im_[b] = sb.imag();
         }
     }
     inverse();
-    for (size_t i = 0; i < n; ++i) s[i] = grid_[i];
+    for (size_t i = 0; i < n; ++i) s[i] = Complex(rows_re_[i], rows_im_[i]);
 }
 
 } // namespace creepwork

@@ -1,9 +1,11 @@
 // Products of the half-space influence coefficients with tractions on the
 // whole uniform grid by FFT: the coefficients depend only on the offset
 // between two elements (block Toeplitz), so zero-padding the nx x ny grid to
-// Mx x My >= (2 nx - 1) x (2 ny - 1) turns each product into a circular
-// convolution. Plans, spectra and buffers are made by the constructor and
-// set_coefficients(); apply_*() allocate nothing.
+// Mx x My >= (2 nx + 1) x (2 ny - 1) turns each product into a circular
+// convolution. The 2D transforms run as batches of 1D transforms
+// (batched_fft.hpp): along y for all columns at once, a transpose, along x
+// for all rows at once. Plans, spectra and buffers are made by the
+// constructor and set_coefficients(); apply_*() allocate nothing.
 //
 // Tangential products pack the two real traction components into one
 // complex field z = px + i py, so one forward and one inverse complex FFT
@@ -18,7 +20,7 @@
 #include <complex>
 #include <vector>
 
-#include <unsupported/Eigen/FFT>
+#include "exact/batched_fft.hpp"
 
 namespace creepwork {
 
@@ -65,15 +67,18 @@ public:
     double cf33(int k, int l) const;
 
 private:
-    void forward(); // grid_ -> spec_ (2D forward FFT of the zero-padded field)
-    void inverse(); // spec_ -> grid_ (first nx x ny outputs of the inverse FFT)
+    // rows_re_/rows_im_ ([j][i]: cols values per row, rows rows) -> spec_re_/
+    // spec_im_ ([kx][ky]), the 2D forward FFT of the zero-padded field.
+    void forward(int cols, int rows);
+    // spec_ -> rows_ ([j][i], the first ny rows of nx values): inverse FFT.
+    void inverse();
     void kernel_spectrum_pair(const std::vector<double>& k1, const std::vector<double>& k2,
                               std::vector<double>& s1, std::vector<double>& s2);
     int part_index(int k, int l) const { return k + (kmax_ + 1) * l; }
 
     int nx_, ny_, mx_, my_, kmax_ = 0, lmax_ = 0;
     double rho_ = -1.0, nu_ = -1.0;
-    Eigen::FFT<double> fft_;
+    BatchedFft fft_x_, fft_y_;
     // Tabulated nu-free parts for 0 <= k <= kmax_, 0 <= l <= lmax_.
     std::vector<double> X_, Y_, R_, corner_work_;
     // Kernels on the padded grid [kx + mx * ky] (real space), and their real
@@ -81,8 +86,9 @@ private:
     std::vector<double> kern1_, kern2_;
     std::vector<double> alpha_, beta_re_, beta_im_, k33_, k33_inv_;
     std::vector<Complex> shift_; // 1 - exp(2 pi i kx / mx): the steady-rolling shift
-    // Work: the complex field on the grid and its spectrum; 1D buffers.
-    std::vector<Complex> grid_, spec_, line_in_, line_out_;
+    // Work: the field by rows [j][i] (my x mx capacity), the spectrum
+    // [kx][ky], and the transforms' scratch; real and imaginary parts apart.
+    std::vector<double> rows_re_, rows_im_, spec_re_, spec_im_, work_;
 };
 
 } // namespace creepwork
