@@ -211,26 +211,37 @@ void GridConvolution::apply_tangential(const Complex* z, Complex* s, bool steady
         rows_im_[i] = z[i].imag();
     }
     forward(nx_, ny_);
-    // Pairs (k, -k): s^(k) = alpha^(k) z^(k) + beta^(k) conj(z^(-k)), times the
-    // shift factor of column kx for the steady operator. Each pair is visited
-    // once, from its lower-indexed member (self-paired modes alone).
+    // Pairs (k, -k): s^(k) = f(kx) (alpha^(k) z^(k) + beta^(k) conj(z^(-k))),
+    // f the shift factor of column kx for the steady operator (1 otherwise).
+    // Each pair is visited once, from its lower-indexed member.
     for (int kx = 0; kx < mx_; ++kx) {
         const int kxm = kx == 0 ? 0 : mx_ - kx;
         if (kxm < kx) continue;
-        const Complex fa = steady ? shift_[kx] : Complex(1.0, 0.0);
-        const Complex fb = steady ? shift_[kxm] : Complex(1.0, 0.0);
+        const double far = steady ? shift_[kx].real() : 1.0, fai = steady ? shift_[kx].imag() : 0.0;
+        const double fbr = steady ? shift_[kxm].real() : 1.0, fbi = steady ? shift_[kxm].imag() : 0.0;
+        double* re_a = spec_re_.data() + static_cast<size_t>(my_) * kx;
+        double* im_a = spec_im_.data() + static_cast<size_t>(my_) * kx;
+        double* re_b = spec_re_.data() + static_cast<size_t>(my_) * kxm;
+        double* im_b = spec_im_.data() + static_cast<size_t>(my_) * kxm;
+        const double* al_a = alpha_.data() + static_cast<size_t>(my_) * kx;
+        const double* al_b = alpha_.data() + static_cast<size_t>(my_) * kxm;
+        const double* br_a = beta_re_.data() + static_cast<size_t>(my_) * kx;
+        const double* bi_a = beta_im_.data() + static_cast<size_t>(my_) * kx;
+        const double* br_b = beta_re_.data() + static_cast<size_t>(my_) * kxm;
+        const double* bi_b = beta_im_.data() + static_cast<size_t>(my_) * kxm;
         for (int ky = 0; ky < my_; ++ky) {
             const int kym = ky == 0 ? 0 : my_ - ky;
-            const size_t a = ky + static_cast<size_t>(my_) * kx;
-            const size_t b = kym + static_cast<size_t>(my_) * kxm;
-            if (kxm == kx && b < a) continue;
-            const Complex za(spec_re_[a], spec_im_[a]), zb(spec_re_[b], spec_im_[b]);
-            const Complex sa = fa * (alpha_[a] * za + Complex(beta_re_[a], beta_im_[a]) * std::conj(zb));
-            const Complex sb = fb * (alpha_[b] * zb + Complex(beta_re_[b], beta_im_[b]) * std::conj(za));
-            spec_re_[a] = sa.real();
-            spec_im_[a] = sa.imag();
-            spec_re_[b] = sb.real();
-            spec_im_[b] = sb.imag();
+            if (kxm == kx && kym < ky) continue;
+            const double zar = re_a[ky], zai = im_a[ky], zbr = re_b[kym], zbi = im_b[kym];
+            // alpha z + beta conj(z'), then times f
+            const double tar = al_a[ky] * zar + br_a[ky] * zbr + bi_a[ky] * zbi;
+            const double tai = al_a[ky] * zai + bi_a[ky] * zbr - br_a[ky] * zbi;
+            const double tbr = al_b[kym] * zbr + br_b[kym] * zar + bi_b[kym] * zai;
+            const double tbi = al_b[kym] * zbi + bi_b[kym] * zar - br_b[kym] * zai;
+            re_a[ky] = far * tar - fai * tai;
+            im_a[ky] = far * tai + fai * tar;
+            re_b[kym] = fbr * tbr - fbi * tbi;
+            im_b[kym] = fbr * tbi + fbi * tbr;
         }
     }
     inverse();

@@ -24,7 +24,9 @@ bool solve_local_friction(std::complex<double> c, double b1, double b2, double g
     // from a point left of the root converges monotonically; |c| - g max(b)
     // is one (f there is >= 0).
     const double gx = g * b1, gy = g * b2;
-    const double norm_c = std::hypot(cx, cy);
+    // (sqrt, not hypot: the normalised values here are far from overflow,
+    // ExactModel scales creepages beyond 1e100, and hypot is slow.)
+    const double norm_c = std::sqrt(cx * cx + cy * cy);
     double sigma = norm_c - (gx > gy ? gx : gy);
     if (sigma < 0.0) sigma = 0.0;
     for (int it = 0; it < 100; ++it) {
@@ -37,7 +39,7 @@ bool solve_local_friction(std::complex<double> c, double b1, double b2, double g
         if (!(step > 1e-15 * (sigma + gx + gy))) break; // monotone: stops when it stalls
     }
     double ex = cx / (sigma + gx), ey = cy / (sigma + gy);
-    const double ne = std::hypot(ex, ey);
+    const double ne = std::sqrt(ex * ex + ey * ey);
     ex /= ne;
     ey /= ne;
     q = {-g * ex, -g * ey};

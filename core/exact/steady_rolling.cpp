@@ -36,11 +36,11 @@ SteadyRolling::SteadyRolling(int nx, int ny, int krylov_dimension)
 void SteadyRolling::project(std::vector<Complex>& q) const
 {
     for (int k = 0; k < n_; ++k) {
-        const double a = std::abs(q[k]);
+        const double a2 = std::norm(q[k]);
         if (!(g_[k] > 0.0))
             q[k] = 0.0;
-        else if (a > g_[k])
-            q[k] *= g_[k] / a;
+        else if (a2 > g_[k] * g_[k])
+            q[k] *= g_[k] / std::sqrt(a2);
     }
 }
 
@@ -176,15 +176,16 @@ int SteadyRolling::gmres(GridConvolution& conv, const std::vector<Complex>& b,
 double SteadyRolling::residual_norm(const std::vector<Complex>& q, const std::vector<Complex>& gq,
                                     std::vector<Complex>& f, double& max_rel) const
 {
-    double sum = 0.0, fmax = 0.0, qmax = 0.0, gmax = 0.0;
+    double sum = 0.0, fmax2 = 0.0, qmax2 = 0.0, gmax = 0.0;
     for (int k = 0; k < n_; ++k) {
         f[k] = gq[k] - q[k];
-        const double a = std::abs(f[k]);
-        sum += std::norm(f[k]);
-        fmax = std::max(fmax, a);
-        qmax = std::max(qmax, std::abs(gq[k]));
+        const double a2 = std::norm(f[k]);
+        sum += a2;
+        fmax2 = std::max(fmax2, a2);
+        qmax2 = std::max(qmax2, std::norm(gq[k]));
         gmax = std::max(gmax, g_[k]);
     }
+    const double fmax = std::sqrt(fmax2), qmax = std::sqrt(qmax2);
     // Relative to the largest traction, but never to less than a millionth of
     // the largest bound: a contact near zero creepage need not be resolved
     // beyond what matters next to mu p0.
