@@ -275,7 +275,14 @@ SolveTotals ExactModel::solve(const ContactInput& in, SolveMode mode)
             ++info_.levels_used;
         }
     };
-    if (trivial) {
+    // Without creepage the solution is zero traction, exactly.
+    const bool rolling_freely = cx == 0.0 && cy == 0.0 && cp == 0.0;
+    if (rolling_freely && !trivial) {
+        std::fill(fine.tangential.traction().begin(), fine.tangential.traction().end(), 0.0);
+        ti = fine.tangential.solve(fine.conv, tolerance, max_steps); // one sweep
+        info_.products += ti.products;
+        info_.levels_used = 1;
+    } else if (trivial) {
         fine.tangential.slide_freely(g);
         ti.converged = true;
         info_.levels_used = 1;

@@ -38,6 +38,7 @@ inline CsvTable read_csv(const std::string& path)
     std::string line;
     bool first = true;
     while (std::getline(in, line)) {
+        if (!line.empty() && line.back() == '\r') line.pop_back(); // CRLF files
         if (line.empty()) continue;
         std::vector<std::string> cells;
         std::stringstream ss(line);
