@@ -18,7 +18,7 @@ ExactWorkTotals exact_work(const ExactWorkInput& in, double* paper, double* cons
     ExactWorkTotals t;
     const int nx = in.nx, ny = in.ny;
     const double unit = in.traction_scale * in.slip_scale * in.area; // J/m per unit q.s
-    double total_d = 0.0, total_pool = 0.0;
+    double total_d = 0.0, total_pool = 0.0, total_signed = 0.0;
     int rows_with_slip = 0;
     for (int j = 0; j < ny; ++j) {
         double d_sum = 0.0, rigid = 0.0;
@@ -39,9 +39,16 @@ ExactWorkTotals exact_work(const ExactWorkInput& in, double* paper, double* cons
         row_pool[j] = pool > 0.0 ? pool : 0.0;
         total_d += d_sum;
         total_pool += row_pool[j];
+        total_signed += pool;
         rows_with_slip += d_sum > 0.0;
     }
     t.W_micro_paper = total_d;
+    // A row can end with a negative budget (the elastic field passes energy
+    // between rows). The total is the numerical dissipation (>= 0); the rows
+    // with a positive budget share it in proportion to their budgets.
+    const double share = total_pool > 0.0 && total_signed > 0.0 ? total_signed / total_pool : 0.0;
+    for (int j = 0; j < ny; ++j) row_pool[j] *= share;
+    total_pool = total_signed > 0.0 ? total_signed : 0.0;
 
     // Each row's pool goes to its own slip elements, or to the nearest rows
     // with slip (split evenly between two at the same distance); with no slip

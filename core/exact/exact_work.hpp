@@ -21,12 +21,14 @@
 // (fastsim_work.hpp), row by row: each row of elements along x does the
 // rigid-slip work W_row = -sum_row p . w dx dy (its share of W_macro less
 // the spin-offset term); its slip elements keep their own D_I and share the
-// rest W_row - sum_row D_I (when positive) in proportion to D_I; a row
-// without slip hands it to the nearest row(s) with slip; finally one balance
-// factor W_macro / (sum of all that) makes the map add up to W_macro. It is
-// >= 0, zero in adhesion, and the balance factor differs from 1 by the
-// spin-offset term and by rows whose budget was negative (elastic coupling
-// between rows), both small.
+// rest E_row = W_row - sum_row D_I in proportion to D_I; a row without slip
+// hands it to the nearest row(s) with slip. A row's budget can be negative
+// (the elastic field passes energy between rows): such rows get nothing
+// extra, and the rows with a positive budget share the total, the numerical
+// dissipation sum_row E_row, in proportion to their budgets. Finally one
+// balance factor W_macro / (sum_I D_I + numerical dissipation) makes the map
+// add up to W_macro. It is >= 0, zero in adhesion, and the balance factor
+// differs from 1 only by the spin-offset term (O(dx)).
 #pragma once
 
 #include <complex>
