@@ -1,6 +1,6 @@
 // Kalker's exact theory against CONTACT (method a, commit d431cdb): every row
 // of ../shared/reference/contact_exact_dev.csv on the 20 and 40 grids (the
-// 100 grid: test_core_exact_reference_100, label exact_slow) with the same
+// 100 grid: test_core_exact_reference_100, same executable) with the same
 // discretisation must agree to solver tolerance (issue 9): Fx, Fy within
 // 1e-5 of |F|, Mz within 1e-5 of |F| c (c = sqrt(ab)), p_max and approach
 // within 1e-5 relative, adhesion/slip counts within 2 elements, CONTACT's
