@@ -9,12 +9,15 @@ namespace {
 using Complex = std::complex<double>;
 
 // Real inner product of complex fields seen as real vectors (x and y parts).
-double dot(const std::vector<Complex>& a, const std::vector<Complex>& b)
+double dot(const Complex* a, const Complex* b, int n)
 {
     double s = 0.0;
-    for (size_t i = 0; i < a.size(); ++i)
-        s += a[i].real() * b[i].real() + a[i].imag() * b[i].imag();
+    for (int i = 0; i < n; ++i) s += a[i].real() * b[i].real() + a[i].imag() * b[i].imag();
     return s;
+}
+double dot(const std::vector<Complex>& a, const std::vector<Complex>& b)
+{
+    return dot(a.data(), b.data(), static_cast<int>(a.size()));
 }
 
 // Newton's method: first forcing term, and the line search.
@@ -28,7 +31,11 @@ constexpr int kMaxGmresPerStep = 200;
 SteadyRolling::SteadyRolling(int nx, int ny, int krylov_dimension)
     : nx_(nx), ny_(ny), n_(nx * ny), m_(krylov_dimension), g_(n_, 0.0), w_(n_), q_(n_),
       gq_(n_), f_(n_), dq_(n_), qt_(n_), gt_(n_), ft_(n_), s_(n_), work_(n_), jac_(n_),
-      state_(n_, 0), basis_(static_cast<size_t>(m_) + 1, std::vector<Complex>(n_)),
+      state_(n_, 0),
+      // Raw storage: a basis vector's pages are touched (and, on this
+      // machine's VM, page faults are dear) only if GMRES gets that far.
+      // Every vector is written in full before it is read.
+      basis_(static_cast<Complex*>(::operator new(sizeof(Complex) * n_ * (m_ + 1)))),
       hessenberg_(static_cast<size_t>(m_ + 1) * m_), cs_(m_), sn_(m_), rhs_(m_ + 1), y_(m_)
 {
 }
@@ -81,10 +88,9 @@ void SteadyRolling::sweep(GridConvolution& conv, const std::vector<Complex>& q,
     }
 }
 
-void SteadyRolling::linear_sweep(GridConvolution& conv, const std::vector<Complex>& v,
-                                 std::vector<Complex>& out)
+void SteadyRolling::linear_sweep(GridConvolution& conv, const Complex* v, Complex* out)
 {
-    conv.apply_tangential(v.data(), work_.data(), true);
+    conv.apply_tangential(v, work_.data(), true);
     ++products_;
     for (int j = 0; j < ny_; ++j) {
         Complex ahead(0.0, 0.0);
@@ -118,22 +124,25 @@ int SteadyRolling::gmres(GridConvolution& conv, const std::vector<Complex>& b,
     int total = 0;
     auto H = [&](int i, int k) -> double& { return hessenberg_[i + static_cast<size_t>(m_ + 1) * k]; };
     while (total < max_iterations) {
-        for (int t = 0; t < n_; ++t) basis_[0][t] = r[t] / beta;
+        Complex* v0 = basis(0);
+        for (int t = 0; t < n_; ++t) v0[t] = r[t] / beta;
         std::fill(rhs_.begin(), rhs_.end(), 0.0);
         rhs_[0] = beta;
         int k = 0;
         bool done = false;
         for (; k < m_ && total < max_iterations; ++k) {
             ++total;
-            std::vector<Complex>& v = basis_[k + 1];
-            linear_sweep(conv, basis_[k], v);
-            for (int t = 0; t < n_; ++t) v[t] = basis_[k][t] - v[t]; // (I - G') v_k
+            Complex* v = basis(k + 1);
+            const Complex* vk = basis(k);
+            linear_sweep(conv, vk, v);
+            for (int t = 0; t < n_; ++t) v[t] = vk[t] - v[t]; // (I - G') v_k
             for (int i = 0; i <= k; ++i) { // modified Gram-Schmidt
-                const double h = dot(v, basis_[i]);
+                const Complex* vi = basis(i);
+                const double h = dot(v, vi, n_);
                 H(i, k) = h;
-                for (int t = 0; t < n_; ++t) v[t] -= h * basis_[i][t];
+                for (int t = 0; t < n_; ++t) v[t] -= h * vi[t];
             }
-            const double h = std::sqrt(dot(v, v));
+            const double h = std::sqrt(dot(v, v, n_));
             H(k + 1, k) = h;
             if (h > 0.0)
                 for (int t = 0; t < n_; ++t) v[t] /= h;
@@ -161,11 +170,13 @@ int SteadyRolling::gmres(GridConvolution& conv, const std::vector<Complex>& b,
             for (int c = i + 1; c < k; ++c) v -= H(i, c) * y_[c];
             y_[i] = H(i, i) != 0.0 ? v / H(i, i) : 0.0;
         }
-        for (int i = 0; i < k; ++i)
-            for (int t = 0; t < n_; ++t) x[t] += y_[i] * basis_[i][t];
+        for (int i = 0; i < k; ++i) {
+            const Complex* vi = basis(i);
+            for (int t = 0; t < n_; ++t) x[t] += y_[i] * vi[t];
+        }
         if (done || total >= max_iterations) break;
         // Restart: the true residual b - (I - G') x.
-        linear_sweep(conv, x, r);
+        linear_sweep(conv, x.data(), r.data());
         for (int t = 0; t < n_; ++t) r[t] = b[t] - (x[t] - r[t]);
         beta = std::sqrt(dot(r, r));
         if (beta <= target) break;

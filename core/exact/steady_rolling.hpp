@@ -24,6 +24,7 @@
 #pragma once
 
 #include <complex>
+#include <memory>
 #include <vector>
 
 #include "exact/grid_convolution.hpp"
@@ -72,8 +73,7 @@ private:
     // out = G(q); also s_, state_, jac_ at q. One FFT product.
     void sweep(GridConvolution& conv, const std::vector<Complex>& q, std::vector<Complex>& out);
     // out = G'(q) v at the q of the last sweep. One FFT product.
-    void linear_sweep(GridConvolution& conv, const std::vector<Complex>& v,
-                      std::vector<Complex>& out);
+    void linear_sweep(GridConvolution& conv, const Complex* v, Complex* out);
     // Solves (I - G') x = b to relative residual eta; returns the iterations.
     int gmres(GridConvolution& conv, const std::vector<Complex>& b, std::vector<Complex>& x,
               double eta, int max_iterations);
@@ -86,8 +86,12 @@ private:
     std::vector<Complex> w_, q_, gq_, f_, dq_, qt_, gt_, ft_, s_, work_;
     std::vector<LocalJacobian> jac_;
     std::vector<signed char> state_;
-    // GMRES: basis (m + 1 vectors), Hessenberg, Givens rotations, rhs.
-    std::vector<std::vector<Complex>> basis_;
+    // GMRES: basis (m + 1 vectors of n), Hessenberg, Givens rotations, rhs.
+    struct Release {
+        void operator()(Complex* p) const { ::operator delete(p); }
+    };
+    std::unique_ptr<Complex, Release> basis_;
+    Complex* basis(int k) { return basis_.get() + static_cast<size_t>(n_) * k; }
     std::vector<double> hessenberg_, cs_, sn_, rhs_, y_;
     int products_ = 0;
 };
