@@ -97,6 +97,8 @@ private:
     void interpolate(const Level& coarse, Level& fine) const;
     void fastsim_start(Level& level, double ratio, double nu, double G, double a, double b) const;
     void set_rigid_slip(Level& level) const;
+    void predict_start(double ratio, double nu);
+    void remember(double ratio, double nu);
 
     int nx_, ny_;
     double box_scale_;
@@ -115,6 +117,12 @@ private:
         bool full = false;
     } setup_;
     std::vector<double> paper_, consistent_, profile_, row_d_, row_pool_;
+    // The last solutions (normalised tractions, newest first) and their
+    // normalised creepages, for the warm start's prediction.
+    std::vector<SteadyRolling::Complex> history_q_[3];
+    double history_c_[3][3] = {};
+    int history_count_ = 0;
+    double history_ratio_ = 0, history_nu_ = 0, history_offset_ = 0;
 };
 
 } // namespace creepwork
