@@ -23,7 +23,7 @@ constexpr int kMinCoarseCells = 10;
 // products in all than 1e-2 ... 1e-6 (72 against 80 ... 114 at N = 40).
 constexpr double kCoarseTolerance = 1e-1;
 // The normal problem: max |gap| / approach on the contact set, and bounds.
-constexpr double kNormalTolerance = 1e-12;
+constexpr double kNormalTolerance = 1e-10;
 constexpr int kNormalMaxIterations = 500;
 // Normalised creepages beyond this slide everywhere; they are scaled down
 // together (as FASTSIM does, fastsim_setup.hpp) so nothing can overflow.

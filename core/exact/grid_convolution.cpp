@@ -167,40 +167,83 @@ void GridConvolution::inverse()
     fft_y_.transform(rows_re_.data(), rows_im_.data(), nx_, true, work_.data());
 }
 
-void GridConvolution::apply_normal(const double* p1, const double* p2, double* u1, double* u2)
+void GridConvolution::real_product(const double* p, double* u,
+                                   const std::vector<double>& spectrum)
 {
-    const size_t n = static_cast<size_t>(nx_) * ny_;
-    for (size_t i = 0; i < n; ++i) {
-        rows_re_[i] = p1[i];
-        rows_im_[i] = p2 ? p2[i] : 0.0;
+    const int nc = (nx_ + 1) / 2;  // complex columns: x-columns 2c and 2c + 1
+    const int h = my_ / 2;         // spectrum rows ky = 0 .. h (the rest by symmetry)
+    const size_t hl = static_cast<size_t>(h) + 1;
+    // Along y: column pairs as one complex line, element j at [j * nc + c].
+    for (int j = 0; j < ny_; ++j)
+        for (int c = 0; c < nc; ++c) {
+            const size_t k = static_cast<size_t>(j) * nc + c;
+            rows_re_[k] = p[2 * c + static_cast<size_t>(nx_) * j];
+            rows_im_[k] = 2 * c + 1 < nx_ ? p[2 * c + 1 + static_cast<size_t>(nx_) * j] : 0.0;
+        }
+    const size_t used = static_cast<size_t>(ny_) * nc, total = static_cast<size_t>(my_) * nc;
+    std::fill(rows_re_.begin() + used, rows_re_.begin() + total, 0.0);
+    std::fill(rows_im_.begin() + used, rows_im_.begin() + total, 0.0);
+    fft_y_.transform(rows_re_.data(), rows_im_.data(), nc, false, work_.data());
+    // Separate the pair, Z = A + i B: A(k) = (Z(k) + conj Z(-k)) / 2,
+    // B(k) = (Z(k) - conj Z(-k)) / 2i, for ky <= h, into [i][ky].
+    for (int c = 0; c < nc; ++c)
+        for (int ky = 0; ky <= h; ++ky) {
+            const int km = ky == 0 ? 0 : my_ - ky;
+            const double zr = rows_re_[static_cast<size_t>(ky) * nc + c];
+            const double zi = rows_im_[static_cast<size_t>(ky) * nc + c];
+            const double wr = rows_re_[static_cast<size_t>(km) * nc + c];
+            const double wi = rows_im_[static_cast<size_t>(km) * nc + c];
+            const size_t a = static_cast<size_t>(2 * c) * hl + ky;
+            spec_re_[a] = 0.5 * (zr + wr);
+            spec_im_[a] = 0.5 * (zi - wi);
+            if (2 * c + 1 < nx_) {
+                spec_re_[a + hl] = 0.5 * (zi + wi);
+                spec_im_[a + hl] = -0.5 * (zr - wr);
+            }
+        }
+    std::fill(spec_re_.begin() + static_cast<size_t>(nx_) * hl,
+              spec_re_.begin() + static_cast<size_t>(mx_) * hl, 0.0);
+    std::fill(spec_im_.begin() + static_cast<size_t>(nx_) * hl,
+              spec_im_.begin() + static_cast<size_t>(mx_) * hl, 0.0);
+    // Along x on the h + 1 lines, times the (real) kernel, and back.
+    fft_x_.transform(spec_re_.data(), spec_im_.data(), static_cast<int>(hl), false, work_.data());
+    for (int kx = 0; kx < mx_; ++kx)
+        for (int ky = 0; ky <= h; ++ky) {
+            const double k = spectrum[ky + static_cast<size_t>(my_) * kx];
+            spec_re_[static_cast<size_t>(kx) * hl + ky] *= k;
+            spec_im_[static_cast<size_t>(kx) * hl + ky] *= k;
+        }
+    fft_x_.transform(spec_re_.data(), spec_im_.data(), static_cast<int>(hl), true, work_.data());
+    // Each column's y-spectrum is Hermitian (the column is real): complete it
+    // and pair the columns again, W = T_2c + i T_2c+1, into [ky][c].
+    for (int c = 0; c < nc; ++c) {
+        const size_t a = static_cast<size_t>(2 * c) * hl;
+        const bool second = 2 * c + 1 < nx_;
+        for (int ky = 0; ky < my_; ++ky) {
+            const bool mirrored = ky > h;
+            const int kk = mirrored ? my_ - ky : ky;
+            const double s = mirrored ? -1.0 : 1.0; // conjugate
+            const double ar = spec_re_[a + kk], ai = s * spec_im_[a + kk];
+            const double br = second ? spec_re_[a + hl + kk] : 0.0;
+            const double bi = second ? s * spec_im_[a + hl + kk] : 0.0;
+            rows_re_[static_cast<size_t>(ky) * nc + c] = ar - bi;
+            rows_im_[static_cast<size_t>(ky) * nc + c] = ai + br;
+        }
     }
-    forward(nx_, ny_);
-    const size_t m = static_cast<size_t>(mx_) * my_;
-    for (size_t i = 0; i < m; ++i) {
-        spec_re_[i] *= k33_[i];
-        spec_im_[i] *= k33_[i];
-    }
-    inverse();
-    for (size_t i = 0; i < n; ++i) u1[i] = rows_re_[i];
-    if (u2)
-        for (size_t i = 0; i < n; ++i) u2[i] = rows_im_[i];
+    fft_y_.transform(rows_re_.data(), rows_im_.data(), nc, true, work_.data());
+    for (int j = 0; j < ny_; ++j)
+        for (int c = 0; c < nc; ++c) {
+            const size_t k = static_cast<size_t>(j) * nc + c;
+            u[2 * c + static_cast<size_t>(nx_) * j] = rows_re_[k];
+            if (2 * c + 1 < nx_) u[2 * c + 1 + static_cast<size_t>(nx_) * j] = rows_im_[k];
+        }
 }
+
+void GridConvolution::apply_normal(const double* p, double* u) { real_product(p, u, k33_); }
 
 void GridConvolution::apply_normal_inverse(const double* u, double* p)
 {
-    const size_t n = static_cast<size_t>(nx_) * ny_;
-    for (size_t i = 0; i < n; ++i) {
-        rows_re_[i] = u[i];
-        rows_im_[i] = 0.0;
-    }
-    forward(nx_, ny_);
-    const size_t m = static_cast<size_t>(mx_) * my_;
-    for (size_t i = 0; i < m; ++i) {
-        spec_re_[i] *= k33_inv_[i];
-        spec_im_[i] *= k33_inv_[i];
-    }
-    inverse();
-    for (size_t i = 0; i < n; ++i) p[i] = rows_re_[i];
+    real_product(u, p, k33_inv_);
 }
 
 void GridConvolution::apply_tangential(const Complex* z, Complex* s, bool steady)

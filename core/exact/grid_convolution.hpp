@@ -43,9 +43,11 @@ public:
     double rho() const { return rho_; }
     double nu() const { return nu_; }
 
-    // Normal: u[i + nx j] = sum_J cf33(I - J) p[J] (dx = 1), for two fields
-    // at once (the kernel is real: the real and imaginary parts do not mix).
-    void apply_normal(const double* p1, const double* p2, double* u1, double* u2);
+    // Normal: u[i + nx j] = sum_J cf33(I - J) p[J] (dx = 1). Real fields:
+    // two columns go into one complex transform and only half the spectrum
+    // is computed (it is Hermitian), about half the work of a tangential
+    // product.
+    void apply_normal(const double* p, double* u);
     // The inverse of the circulant (periodic) extension of cf33: an
     // approximate inverse of the normal influence matrix on any set of
     // elements, the preconditioner of the normal solver (the spectrum of the
@@ -74,6 +76,9 @@ private:
     void inverse();
     void kernel_spectrum_pair(const std::vector<double>& k1, const std::vector<double>& k2,
                               std::vector<double>& s1, std::vector<double>& s2);
+    // u = IFFT(spectrum * FFT(p)) for a real field p and a real spectrum
+    // ([ky + my kx], scaled as k33_).
+    void real_product(const double* p, double* u, const std::vector<double>& spectrum);
     int part_index(int k, int l) const { return k + (kmax_ + 1) * l; }
 
     int nx_, ny_, mx_, my_, kmax_ = 0, lmax_ = 0;

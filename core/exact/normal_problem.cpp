@@ -31,7 +31,7 @@ void NormalProblem::project(std::vector<double>& v) const
 bool NormalProblem::conjugate_gradients(GridConvolution& conv, double target, double tolerance,
                                         int max_iterations, NormalSolveInfo& info)
 {
-    conv.apply_normal(q_.data(), nullptr, u_.data(), nullptr);
+    conv.apply_normal(q_.data(), u_.data());
     for (int k = 0; k < n_; ++k) r_[k] = active_[k] ? -(h_[k] + u_[k]) : 0.0;
     project(r_);
     auto precondition = [&] {
@@ -50,7 +50,7 @@ bool NormalProblem::conjugate_gradients(GridConvolution& conv, double target, do
     for (int k = 0; k < n_; ++k) rz += r_[k] * z_[k];
     while (info.iterations < max_iterations) {
         ++info.iterations;
-        conv.apply_normal(p_.data(), nullptr, ap_.data(), nullptr);
+        conv.apply_normal(p_.data(), ap_.data());
         project(ap_);
         double pap = 0.0;
         for (int k = 0; k < n_; ++k) pap += p_[k] * ap_[k];
@@ -118,14 +118,14 @@ NormalSolveInfo NormalProblem::solve(const ExactGeometry& g, GridConvolution& co
         for (int k = 0; k < n_; ++k)
             q_[k] = !active_[k] ? 0.0 : sum > 0.0 ? q_[k] * (load / sum) : load / n_active_;
         // The approach sets the scale of the gap residual.
-        conv.apply_normal(q_.data(), nullptr, u_.data(), nullptr);
+        conv.apply_normal(q_.data(), u_.data());
         double pen = 0.0;
         for (int k = 0; k < n_; ++k)
             if (active_[k]) pen += h_[k] + u_[k];
         target = std::max(std::fabs(pen / n_active_), 1e-300);
         if (!conjugate_gradients(conv, target, tolerance, max_iterations, info)) break;
 
-        conv.apply_normal(q_.data(), nullptr, u_.data(), nullptr);
+        conv.apply_normal(q_.data(), u_.data());
         pen = 0.0;
         for (int k = 0; k < n_; ++k)
             if (active_[k]) pen += h_[k] + u_[k];
