@@ -520,9 +520,8 @@ void exact_bench(const Options& o)
                 products = s.exact_model()->info().products;
             }
             // Warm: one solver, creepages drifting.
-            const int steps = N >= 100 ? std::min(o.exact_steps, o.quick ? 10 : 50)
-                              : o.quick ? std::min(o.exact_steps, 100)
-                                        : o.exact_steps;
+            const int steps =
+                o.quick ? std::min(o.exact_steps, N >= 100 ? 10 : 100) : o.exact_steps;
             cw::Solver s(spec);
             s.solve(in, cw::SolveMode::full);
             long warm_products = 0;
