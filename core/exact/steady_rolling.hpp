@@ -16,7 +16,7 @@
 // q = G(q) is solved by a semismooth Newton method: each step solves
 // (I - G'(q)) dq = G(q) - q by GMRES (each GMRES iteration one FFT product
 // and one linearised sweep, so the sweep is the preconditioner), with
-// Eisenstat-Walker forcing terms and a backtracking line search on
+// forcing terms that tighten with the residual and a backtracking line search on
 // |G(q) - q|. On the reference cases it converges in 3-6 steps from a good
 // start; ExactModel provides one (a coarser grid's solution, or the last one).
 //
