@@ -187,11 +187,12 @@ typedef struct cw_params {
     /* ---- appended in 1.1 ---- */
     int model;             /* CW_MODEL_FASTSIM (default), CW_MODEL_EXACT, CW_MODEL_CALIBRATED */
     double tolerance;      /* exact model: relative tolerance of the tangential solve;
-                              0 (default) = the model's default (README "Exact model") */
-    int max_iterations;    /* exact model: iteration bound; 0 (default) = the model's
-                              default; reaching it is CW_ERR_NOT_CONVERGED */
+                              0 (default) = 1e-8; else in [1e-13, 1) (README "Exact model") */
+    int max_iterations;    /* exact model: bound on Newton steps per grid; 0 (default) =
+                              50; reaching it is CW_ERR_NOT_CONVERGED */
     int warm_start;        /* exact model: 1 (default) starts from the handle's last
-                              solution, 0 from full adhesion (same answer to tolerance) */
+                              solution, 0 from scratch (coarser grids); the same answer to
+                              the tolerance. Ignored by cw_batch_solve (always 0) */
     double spin_offset;    /* CONTACT's facphi: rigid spin slip taken at x + spin_offset*dx
                               (uniform grid); CW_SPIN_OFFSET_DEFAULT (default): 0 for
                               FASTSIM (Kalker 1982), 1/6 for the exact model (CONTACT) */
