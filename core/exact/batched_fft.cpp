@@ -146,12 +146,33 @@ void any_stage(bool inverse, int radix, int m, int s, int L, const double* xr, c
 
 int BatchedFft::good_size(int n)
 {
-    for (int m = n < 1 ? 1 : n;; ++m) {
+    // Among the 2^a 3^b 5^c lengths from n to 1.1 n, the one with the least
+    // estimated cost per transform: n (sum of the stage costs + 1), stage
+    // costs per point measured on this machine's 2D batches (radix 4: 0.75,
+    // 2: 0.6, 3: 0.85, 5: 1.1 ns; the + 1 stands for the work per point
+    // outside the transforms). So 96 beats 90 (9 % faster measured) and 48
+    // beats 50 (24 %). Not further than 1.1 n: every other pass over the
+    // spectrum grows with it (256 instead of 216 made a 104 x 104 product
+    // 1.5x slower). A fixed rule, not a timing: the same grid always gets
+    // the same transforms, so the same bits.
+    if (n <= 1) return 1;
+    int best = 0;
+    double best_cost = 0.0;
+    for (int m = n; m <= n + (n + 9) / 10; ++m) {
         int r = m;
-        for (int p : {2, 3, 5})
-            while (r % p == 0) r /= p;
-        if (r == 1) return m;
+        double per_point = 1.0;
+        while (r % 4 == 0) r /= 4, per_point += 0.75;
+        while (r % 2 == 0) r /= 2, per_point += 0.6;
+        while (r % 3 == 0) r /= 3, per_point += 0.85;
+        while (r % 5 == 0) r /= 5, per_point += 1.1;
+        if (r != 1) continue;
+        const double cost = m * per_point;
+        if (best == 0 || cost < best_cost) {
+            best = m;
+            best_cost = cost;
+        }
     }
+    return best;
 }
 
 BatchedFft::BatchedFft(int n) : n_(n)

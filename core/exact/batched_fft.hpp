@@ -23,7 +23,7 @@ public:
     int size() const { return n_; }
     // In place on (re, im) of n * lines values; work holds 2 n lines.
     void transform(double* re, double* im, int lines, bool inverse, double* work) const;
-    // The smallest 2^a 3^b 5^c >= n.
+    // A cheap 2^a 3^b 5^c length >= n (at most 1.1 n; see the .cpp).
     static int good_size(int n);
 
 private:

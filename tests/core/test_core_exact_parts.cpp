@@ -52,6 +52,7 @@ void fft_matches_dft(void**)
     }
     assert_int_equal(cw::BatchedFft::good_size(49), 50);
     assert_int_equal(cw::BatchedFft::good_size(209), 216);
+    assert_int_equal(cw::BatchedFft::good_size(89), 96);   // not 90
     assert_int_equal(cw::BatchedFft::good_size(7), 8);
 }
 
