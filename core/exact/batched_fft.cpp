@@ -125,22 +125,29 @@ __attribute__((always_inline)) inline void run_stage(int radix, int m, int s, in
     }
 }
 
-// One stage, compiled for AVX-512, AVX2 and the baseline, picked at load
-// time by the CPU (GCC/Clang function multiversioning): 10-25 % faster on
-// this machine's AVX-512 cores. The same operations on every lane and no
-// fused multiply-add (-ffp-contract=off), so every version gives the same
-// bits, as FASTSIM's kernels do.
+// One stage, compiled for AVX-512, AVX2 and the baseline; each transform
+// calls the version its CPU runs (chosen by the constructor: explicit
+// dispatch, as FASTSIM's kernels, not ifunc multiversioning, which the
+// ThreadSanitizer runtime cannot start with). 10-25 % faster on this
+// machine's AVX-512 cores. The same operations on every lane and no fused
+// multiply-add (-ffp-contract=off), so every version gives the same bits.
+#define CW_ANY_STAGE_BODY                                                              \
+    {                                                                                  \
+        if (inverse)                                                                   \
+            run_stage<1>(radix, m, s, L, xr, xi, yr, yi, twr, twi);                    \
+        else                                                                           \
+            run_stage<-1>(radix, m, s, L, xr, xi, yr, yi, twr, twi);                   \
+    }
+#define CW_ANY_STAGE_ARGS                                                              \
+    (bool inverse, int radix, int m, int s, int L, const double* xr, const double* xi, \
+     double* yr, double* yi, const double* twr, const double* twi)
+
+void stage_baseline CW_ANY_STAGE_ARGS CW_ANY_STAGE_BODY
 #if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
-__attribute__((target_clones("avx512f", "avx2", "default")))
+#define CW_FFT_X86 1
+__attribute__((target("avx2"))) void stage_avx2 CW_ANY_STAGE_ARGS CW_ANY_STAGE_BODY
+__attribute__((target("avx512f"))) void stage_avx512 CW_ANY_STAGE_ARGS CW_ANY_STAGE_BODY
 #endif
-void any_stage(bool inverse, int radix, int m, int s, int L, const double* xr, const double* xi,
-               double* yr, double* yi, const double* twr, const double* twi)
-{
-    if (inverse)
-        run_stage<1>(radix, m, s, L, xr, xi, yr, yi, twr, twi);
-    else
-        run_stage<-1>(radix, m, s, L, xr, xi, yr, yi, twr, twi);
-}
 
 } // namespace
 
@@ -175,8 +182,15 @@ int BatchedFft::good_size(int n)
     return best;
 }
 
-BatchedFft::BatchedFft(int n) : n_(n)
+BatchedFft::BatchedFft(int n) : n_(n), stage_(&stage_baseline)
 {
+#ifdef CW_FFT_X86
+    __builtin_cpu_init();
+    if (__builtin_cpu_supports("avx512f"))
+        stage_ = &stage_avx512;
+    else if (__builtin_cpu_supports("avx2"))
+        stage_ = &stage_avx2;
+#endif
     int rest = n, stride = 1;
     while (rest > 1) {
         int r = rest % 4 == 0 ? 4 : rest % 2 == 0 ? 2 : rest % 3 == 0 ? 3 : 5;
@@ -208,7 +222,7 @@ void BatchedFft::transform(double* re, double* im, int lines, bool inverse, doub
     for (const Stage& st : stages_) {
         const double* twr = tw_re_.data() + st.twiddle;
         const double* twi = tw_im_.data() + st.twiddle;
-        any_stage(inverse, st.radix, st.m, st.stride, lines, xr, xi, yr, yi, twr, twi);
+        stage_(inverse, st.radix, st.m, st.stride, lines, xr, xi, yr, yi, twr, twi);
         std::swap(xr, yr);
         std::swap(xi, yi);
     }

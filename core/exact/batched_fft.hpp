@@ -31,7 +31,11 @@ private:
         int radix, m, stride; // length n = radix * m of this stage, stride of the sub-transforms
         std::size_t twiddle;      // offset of (radix - 1) * m twiddles in re_/im_
     };
+    using StageFunction = void (*)(bool inverse, int radix, int m, int stride, int lines,
+                                   const double* xr, const double* xi, double* yr, double* yi,
+                                   const double* twr, const double* twi);
     int n_;
+    StageFunction stage_; // this CPU's version (AVX-512, AVX2 or baseline)
     std::vector<Stage> stages_;
     std::vector<double> tw_re_, tw_im_;
 };

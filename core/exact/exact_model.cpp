@@ -39,7 +39,6 @@ std::string number(double v)
 
 } // namespace
 
-
 ExactModel::Level::Level(int nx_, int ny_)
     : nx(nx_), ny(ny_), conv(nx_, ny_), normal(nx_, ny_), tangential(nx_, ny_, kKrylovDimension)
 {
@@ -52,14 +51,14 @@ ExactModel::ExactModel(const GridSpec& grid)
         throw Error(ErrorKind::invalid_input,
                     "grid kind = kalker_strips is invalid for model = exact: Kalker's exact "
                     "theory runs on the uniform grid (CW_GRID_UNIFORM)");
-    for (const char* name : {"nx", "ny"}) {
-        const int v = name[1] == 'x' ? grid.nx : grid.ny;
+    auto check = [](const char* name, int v) {
         if (v < 1 || v > kMaxExactCells)
             throw Error(ErrorKind::grid_out_of_range,
-                        std::string(name) + " = " + std::to_string(v) +
-                            " is outside 1 ... " + std::to_string(kMaxExactCells) +
-                            " for model = exact");
-    }
+                        std::string(name) + " = " + std::to_string(v) + " is outside 1 ... " +
+                            std::to_string(kMaxExactCells) + " for model = exact");
+    };
+    check("nx", grid.nx);
+    check("ny", grid.ny);
     if (!(grid.box_scale >= 1.0 && grid.box_scale <= kMaxBoxScale))
         throw Error(ErrorKind::grid_out_of_range,
                     "box_scale = " + number(grid.box_scale) + " is outside [1, 100]");
@@ -387,7 +386,7 @@ SolveTotals ExactModel::solve(const ContactInput& in, SolveMode mode)
     double fx = 0.0, fy = 0.0, mz = 0.0, pmax = 0.0;
     int n_contact = 0, n_slip = 0;
     for (int j = 0; j < ny_; ++j) {
-        const double y = (fine.geom.Y(j)) * s.dx;
+        const double y = fine.geom.Y(j) * s.dx;
         for (int i = 0; i < nx_; ++i) {
             const int k = i + nx_ * j;
             const double x = fine.geom.X(i) * s.dx; // rolling frame

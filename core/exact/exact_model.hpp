@@ -37,7 +37,8 @@
 namespace creepwork {
 
 // Largest grid of the exact model per direction (memory grows with the
-// square: about 3 kB per element with all levels and the Krylov basis).
+// square: about 2 kB per element with all levels and the Krylov basis, most
+// of it in the FFT arrays of the 4x larger padded grid).
 constexpr int kMaxExactCells = 256;
 // Defaults of ContactInput::tolerance and max_iterations for this model.
 constexpr double kExactDefaultTolerance = 1e-8;

@@ -437,7 +437,7 @@ CW_API int cw_fastsim_normalised(double ux, double uy, double fx, double fy, int
  * afterwards. CW_MODEL_FASTSIM: nothing to do (made by create).
  * CW_MODEL_EXACT: influence tables, FFT plans and spectra, Krylov basis and
  * every workspace of the grid and of its coarser levels (README "Exact
- * model": about 10 kB per element); without prepare the first exact solve
+ * model": about 2 kB per element); without prepare the first exact solve
  * makes them. Idempotent. Errors: CW_ERR_NULL_POINTER,
  * CW_ERR_UNKNOWN_OPTION (model), CW_ERR_INVALID_INPUT (CW_MODEL_EXACT on
  * CW_GRID_KALKER_STRIPS; CW_MODEL_CALIBRATED, not in this build),
