@@ -42,6 +42,16 @@ int cw_batch_create(const cw_grid* grid, int threads, cw_batch** batch, char* me
     });
 }
 
+int cw_batch_prepare(cw_batch* batch, int model)
+{
+    if (!batch) return CW_ERR_NULL_POINTER;
+    return guarded(&batch->last_error, [&] {
+        const cw::ModelKind kind = to_model(model);
+        for (cw::Solver& s : batch->solvers) s.prepare(kind);
+        return CW_OK;
+    });
+}
+
 int cw_batch_destroy(cw_batch* batch)
 {
     delete batch;
@@ -82,7 +92,11 @@ int cw_batch_solve(cw_batch* batch, size_t count, const cw_params* params, int m
             auto* r = reinterpret_cast<cw_result*>(rbytes + i * rstride);
             std::string& scratch = batch->thread_scratch[t];
             const int status = guarded(&scratch, [&] {
-                const cw::SolveTotals& tot = batch->solvers[t].solve(to_input(p), m);
+                // Exact contacts start cold: results must not depend on which
+                // thread solved which contact before.
+                cw::ContactInput in = to_input(p);
+                in.warm_start = false;
+                const cw::SolveTotals& tot = batch->solvers[t].solve(in, m);
                 write_struct(r, to_result(tot));
                 return CW_OK;
             });

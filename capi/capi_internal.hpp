@@ -141,6 +141,7 @@ cw_params default_params();
 cw::GridSpec to_grid(const cw_grid* grid);
 cw::ContactInput to_input(const cw_params* params);
 cw::SolveMode to_mode(int mode);
+cw::ModelKind to_model(int model, const char* name = "model");
 cw_result to_result(const cw::SolveTotals& t);
 cw::Field to_field(int field);
 void require_length(size_t have, size_t need, const char* name);

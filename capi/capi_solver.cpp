@@ -85,6 +85,15 @@ int cw_solver_solve(cw_solver* solver, const cw_params* params, int mode, cw_res
     return status;
 }
 
+int cw_solver_prepare(cw_solver* solver, int model)
+{
+    if (!solver) return CW_ERR_NULL_POINTER;
+    return guarded(&solver->last_error, [&] {
+        solver->solver.prepare(to_model(model));
+        return CW_OK;
+    });
+}
+
 int cw_solver_get_result(const cw_solver* solver, cw_result* result)
 {
     if (!solver) return CW_ERR_NULL_POINTER;

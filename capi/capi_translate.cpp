@@ -125,16 +125,7 @@ cw::ContactInput to_input(const cw_params* params)
     in.xi_y = p.xi_y;
     in.phi = p.phi;
     in.rolling_direction = p.rolling_direction;
-    if (p.model == CW_MODEL_FASTSIM)
-        in.model = cw::ModelKind::fastsim;
-    else if (p.model == CW_MODEL_EXACT)
-        in.model = cw::ModelKind::exact;
-    else if (p.model == CW_MODEL_CALIBRATED)
-        in.model = cw::ModelKind::calibrated;
-    else
-        fail(CW_ERR_UNKNOWN_OPTION, "params->model = " + std::to_string(p.model) +
-                                        " is not CW_MODEL_FASTSIM (0), CW_MODEL_EXACT (1) or "
-                                        "CW_MODEL_CALIBRATED (2)");
+    in.model = to_model(p.model, "params->model");
     in.tolerance = p.tolerance;
     in.max_iterations = p.max_iterations;
     if (p.warm_start != 0 && p.warm_start != 1)
@@ -148,6 +139,19 @@ cw::ContactInput to_input(const cw_params* params)
                                        " must be 0 or 1");
     in.flexibility_blending = p.flexibility_blending == 1;
     return in;
+}
+
+cw::ModelKind to_model(int model, const char* name)
+{
+    switch (model) {
+    case CW_MODEL_FASTSIM: return cw::ModelKind::fastsim;
+    case CW_MODEL_EXACT: return cw::ModelKind::exact;
+    case CW_MODEL_CALIBRATED: return cw::ModelKind::calibrated;
+    default:
+        fail(CW_ERR_UNKNOWN_OPTION, std::string(name) + " = " + std::to_string(model) +
+                                        " is not CW_MODEL_FASTSIM (0), CW_MODEL_EXACT (1) or "
+                                        "CW_MODEL_CALIBRATED (2)");
+    }
 }
 
 cw::SolveMode to_mode(int mode)

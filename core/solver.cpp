@@ -13,12 +13,17 @@ const SolveTotals& Solver::solve(const ContactInput& input, SolveMode mode)
 {
     solved_ = false;
     mode_ = mode;
-    if (input.model != ModelKind::fastsim)
+    if (input.model == ModelKind::calibrated)
         throw Error(ErrorKind::invalid_input,
-                    std::string("model = ") +
-                        (input.model == ModelKind::exact ? "exact" : "calibrated") +
-                        " is not available in this build");
-    const SolveTotals t = fastsim_.solve(input, mode);
+                    "model = calibrated is not available in this build");
+    SolveTotals t;
+    if (input.model == ModelKind::exact) {
+        prepare(ModelKind::exact);
+        t = exact_->solve(input, mode);
+    } else {
+        t = fastsim_.solve(input, mode);
+    }
+    last_model_ = input.model;
 
     const double checks[] = {t.Fx, t.Fy, t.Mz, t.W_macro, t.W_micro_paper, t.K, t.W_consistent,
                              t.balance_factor, t.profile_max_diff, t.profile_rms_diff};
@@ -31,18 +36,51 @@ const SolveTotals& Solver::solve(const ContactInput& input, SolveMode mode)
     return totals_;
 }
 
-void Solver::copy_field(Field f, double* out) const { fastsim_.copy_field(f, out); }
+void Solver::prepare(ModelKind model)
+{
+    if (model == ModelKind::exact) {
+        if (!exact_) exact_ = std::make_unique<ExactModel>(fastsim_.grid().spec());
+    } else if (model == ModelKind::calibrated) {
+        throw Error(ErrorKind::invalid_input,
+                    "model = calibrated is not available in this build");
+    } else if (model != ModelKind::fastsim) {
+        throw Error(ErrorKind::invalid_input,
+                    "model = " + std::to_string(static_cast<int>(model)) + " is unknown");
+    }
+}
+
+bool Solver::exact_last() const { return last_model_ == ModelKind::exact && exact_; }
+
+void Solver::copy_field(Field f, double* out) const
+{
+    if (exact_last())
+        exact_->copy_field(f, out);
+    else
+        fastsim_.copy_field(f, out);
+}
 
 void Solver::add_field(Field f, double scale, double* out) const
 {
-    fastsim_.add_field(f, scale, out);
+    if (exact_last())
+        exact_->add_field(f, scale, out);
+    else
+        fastsim_.add_field(f, scale, out);
 }
 
-void Solver::copy_state(int* out) const { fastsim_.copy_state(out); }
+void Solver::copy_state(int* out) const
+{
+    if (exact_last())
+        exact_->copy_state(out);
+    else
+        fastsim_.copy_state(out);
+}
 
 void Solver::copy_profile(double* y, double* work, double* parabola) const
 {
-    fastsim_.copy_profile(totals_.W_consistent, y, work, parabola);
+    if (exact_last())
+        exact_->copy_profile(totals_.W_consistent, y, work, parabola);
+    else
+        fastsim_.copy_profile(totals_.W_consistent, y, work, parabola);
 }
 
 } // namespace creepwork

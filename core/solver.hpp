@@ -5,8 +5,11 @@
 // (contact/fields.hpp).
 #pragma once
 
+#include <memory>
+
 #include "contact/fields.hpp"
 #include "contact/params.hpp"
+#include "exact/exact_model.hpp"
 #include "fastsim/fastsim_model.hpp"
 
 namespace creepwork {
@@ -16,8 +19,17 @@ public:
     explicit Solver(const GridSpec& grid);
 
     // Throws Error naming a bad input; the previous solution is then marked
-    // absent.
+    // absent. The exact model is made on its first solve unless prepare()
+    // made it before.
     const SolveTotals& solve(const ContactInput& input, SolveMode mode = SolveMode::full);
+
+    // Makes a model's memory now, so that its solves allocate nothing
+    // (FASTSIM's is made with the solver). Throws Error(invalid_input) when
+    // the model cannot run on this grid (exact: needs the uniform grid) and
+    // Error(grid_out_of_range) beyond its grid limit.
+    void prepare(ModelKind model);
+    // The exact model, if made (diagnostics of its last solve: info()).
+    const ExactModel* exact_model() const { return exact_.get(); }
 
     const ContactGrid& grid() const { return fastsim_.grid(); }
     const SolveTotals& totals() const { return totals_; }
@@ -46,6 +58,9 @@ public:
 
 private:
     FastsimModel fastsim_;
+    std::unique_ptr<ExactModel> exact_;
+    bool exact_last() const; // the last solve (and so the fields) is the exact model's
+    ModelKind last_model_ = ModelKind::fastsim;
     SolveTotals totals_;
     SolveMode mode_ = SolveMode::full;
     bool solved_ = false;

@@ -250,6 +250,16 @@ module creepwork
          integer(c_int) :: status
       end function capi_solver_destroy
 
+      ! Bound so the interface matches the header (check_fortran_bindings);
+      ! the Fortran layer of the exact model comes with its model switch.
+      function capi_solver_prepare(solver, model) bind(c, name='cw_solver_prepare') &
+         result(status)
+         import :: c_int, c_ptr
+         type(c_ptr), value :: solver
+         integer(c_int), value :: model
+         integer(c_int) :: status
+      end function capi_solver_prepare
+
       function capi_solver_grid_size(solver, nx, ny) bind(c, name='cw_solver_grid_size') &
          result(status)
          import :: c_int, c_ptr
@@ -397,6 +407,14 @@ module creepwork
          type(c_ptr), value :: batch
          integer(c_int) :: status
       end function capi_batch_destroy
+
+      function capi_batch_prepare(batch, model) bind(c, name='cw_batch_prepare') &
+         result(status)
+         import :: c_int, c_ptr
+         type(c_ptr), value :: batch
+         integer(c_int), value :: model
+         integer(c_int) :: status
+      end function capi_batch_prepare
 
       function capi_batch_solve(batch, count, params, mode, results, statuses) &
          bind(c, name='cw_batch_solve') result(status)

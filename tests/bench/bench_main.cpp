@@ -20,6 +20,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <ctime>
 #include <fstream>
 #include <functional>
 #include <memory>
@@ -100,6 +101,9 @@ struct Options {
     double min_time = 0.002; // seconds per sample
     int samples = 41;
     int threads = 0;        // batch threads; 0 = all cores
+    bool fastsim = true;
+    std::vector<int> exact_grids{20, 40, 100}; // N across the ellipse; empty: none
+    int exact_steps = 1000; // warm-started sequence length (fewer on the largest grids)
 };
 
 void usage(FILE* f)
@@ -112,7 +116,12 @@ void usage(FILE* f)
                  "  --no-batch   skip cw_batch_solve\n"
                  "  --min-time   length of one timing sample (default 0.002 s)\n"
                  "  --samples    samples per measurement, the best is shown (default 41)\n"
-                 "  --threads    batch threads (default 0: all cores)\n");
+                 "  --threads    batch threads (default 0: all cores)\n"
+                 "  --exact-grids N,N,...  exact model: N elements across the ellipse\n"
+                 "               (MX = MY = N + 4, box scale (N + 4)/N; default 20,40,100;\n"
+                 "               0 = none)\n"
+                 "  --exact-steps K  length of the warm-started sequence (default 1000)\n"
+                 "  --exact-only skip the FASTSIM tables\n");
 }
 
 Options parse(int argc, char** argv)
@@ -152,6 +161,20 @@ Options parse(int argc, char** argv)
             o.min_time = std::atof(value().c_str());
         } else if (a == "--samples") {
             o.samples = std::max(1, std::atoi(value().c_str()));
+        } else if (a == "--exact-only") {
+            o.fastsim = false;
+        } else if (a == "--exact-steps") {
+            o.exact_steps = std::max(1, std::atoi(value().c_str()));
+        } else if (a == "--exact-grids") {
+            o.exact_grids.clear();
+            const std::string list = value();
+            size_t pos = 0;
+            while (pos <= list.size()) {
+                const size_t end = std::min(list.find(',', pos), list.size());
+                const int n = std::atoi(list.substr(pos, end - pos).c_str());
+                if (n > 0) o.exact_grids.push_back(n);
+                pos = end + 1;
+            }
         } else if (a == "--threads") {
             o.threads = std::atoi(value().c_str());
         } else if (a == "--help" || a == "-h") {
@@ -448,6 +471,96 @@ std::string percent(double layer, double core)
     return buf;
 }
 
+// ------------------------------------------------------------ exact model
+//
+// Kalker's exact theory (issue 9) on CONTACT's grid: N elements across the
+// ellipse, MX = MY = N + 4, box scale (N + 4)/N, the contact of issue 9
+// (a = 7.17 mm, b = 5.42 mm, N = 100 kN, mu = 0.3, G = 82 GPa, nu = 0.28).
+//  cold: create a solver and solve once (CW_SOLVE_FULL), as a CONTACT call
+//        recomputes its coefficients: influence coefficients, FFT plans and
+//        spectra, the normal problem, the tangential problem, the work maps;
+//  warm: a sequence of solves on one solver, warm-started, the creepages
+//        changing by at most 1 % per step (xi_x, xi_y, phi each
+//        x (1 + 0.1 sin(2 pi k / 100 + offset))).
+// Times are the best of several samples (cold) or the mean over the sequence
+// (warm; the best of three runs of it below N = 100), in CPU time of the
+// calling thread: on a shared machine wall time also counts the waits for a
+// core. Through the C++ core: the C ABI adds ~30 ns per call.
+double thread_seconds()
+{
+    timespec t;
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+    return t.tv_sec + 1e-9 * t.tv_nsec;
+}
+
+void exact_bench(const Options& o)
+{
+    std::printf("\nExact model (Kalker's exact theory, CONTACT's grid MX = MY = N + 4, box scale "
+                "(N + 4)/N), a = 7.17 mm, b = 5.42 mm, N = 100 kN, mu = 0.3, G = 82 GPa, "
+                "nu = 0.28, CW_SOLVE_FULL, one core, thread CPU time:\n\n");
+    std::printf("| N | slip | adhesion | cold ms (create + solve) | Newton steps | FFT products | "
+                "warm ms/step | steps | warm products/step |\n");
+    std::printf("|---|---|---:|---:|---:|---:|---:|---:|---:|\n");
+    for (int N : o.exact_grids) {
+        const cw::GridSpec spec{cw::GridKind::uniform, N + 4, N + 4, (N + 4.0) / N};
+        for (const Case& c : kCases) {
+            cw::ContactInput in;
+            in.model = cw::ModelKind::exact;
+            in.a = 7.17e-3;
+            in.b = 5.42e-3;
+            in.normal_force = 100e3;
+            in.mu = kMu;
+            in.G = kG;
+            in.nu = kNu;
+            in.xi_x = c.xi_x;
+            in.xi_y = c.xi_y;
+            in.phi = c.phi;
+            // Cold: best of a few samples (create + solve).
+            const int samples = N >= 100 ? 3 : o.quick ? 5 : 15;
+            double best = 1e300, adhesion = 0.0;
+            int newton = 0, products = 0;
+            for (int k = 0; k < samples; ++k) {
+                const auto t0 = thread_seconds();
+                cw::Solver s(spec);
+                const cw::SolveTotals& t = s.solve(in, cw::SolveMode::full);
+                const auto t1 = thread_seconds();
+                best = std::min(best, t1 - t0);
+                adhesion = t.adhesion_fraction;
+                newton = t.iterations;
+                products = s.exact_model()->info().products;
+            }
+            // Warm: one solver, creepages drifting.
+            const int steps =
+                o.quick ? std::min(o.exact_steps, N >= 100 ? 10 : 100) : o.exact_steps;
+            // The sequence is run a few times from the same start and the
+            // fastest run counts (other work on the machine only adds time).
+            const int runs = o.quick || N >= 100 ? 1 : 3;
+            double warm = 1e300;
+            long warm_products = 0;
+            for (int run = 0; run < runs; ++run) {
+                cw::Solver s(spec);
+                s.solve(in, cw::SolveMode::full);
+                warm_products = 0;
+                const auto t0 = thread_seconds();
+                for (int k = 1; k <= steps; ++k) {
+                    const double t = 2.0 * 3.14159265358979323846 * k / 100.0;
+                    cw::ContactInput step = in;
+                    step.xi_x = c.xi_x * (1.0 + 0.1 * std::sin(t));
+                    step.xi_y = c.xi_y * (1.0 + 0.1 * std::sin(t + 2.0));
+                    step.phi = c.phi * (1.0 + 0.1 * std::sin(t + 4.0));
+                    s.solve(step, cw::SolveMode::full);
+                    warm_products += s.exact_model()->info().products;
+                }
+                warm = std::min(warm, (thread_seconds() - t0) / steps);
+            }
+            std::printf("| %d | %s | %.2f | %s | %d | %d | %s | %d | %.1f |\n", N, c.name,
+                        adhesion, sig3(best * 1e3).c_str(), newton, products,
+                        sig3(warm * 1e3).c_str(), steps, double(warm_products) / steps);
+            std::fflush(stdout);
+        }
+    }
+}
+
 } // namespace
 
 int main(int argc, char** argv)
@@ -482,6 +595,10 @@ int main(int argc, char** argv)
                                : "");
     std::printf("\n");
 
+    if (!o.fastsim) {
+        exact_bench(o);
+        return 0;
+    }
     std::printf("| grid | slip | mode | core ns/el | C ABI ns/el | C ABI us/solve | C ABI "
                 "solves/s | C ABI vs core | Fortran vs core | batch ns/el | batch solves/s |\n");
     std::printf("|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|\n");
@@ -550,5 +667,6 @@ int main(int argc, char** argv)
     }
     std::printf("\nLayers%s agree bitwise: %s\n", o.batch ? " and batch" : "",
                 agree ? "yes" : "NO");
+    exact_bench(o);
     return agree ? 0 : 1;
 }

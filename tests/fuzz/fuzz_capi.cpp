@@ -15,7 +15,8 @@
 //    (1e-9 relative); batch results equal single solves bit for bit.
 // A violation prints what failed and aborts, which libFuzzer reports.
 // Grids stay small (<= 24 x 24) except occasional limit checks (one side
-// up to 1001, the other tiny), so that an execution takes well under 1 ms.
+// up to 1001, the other tiny), so that an execution takes well under 1 ms;
+// the exact model (issue 9) runs on at most 400 elements (a few ms).
 //
 // Built two ways: with libFuzzer (CREEPWORK_BUILD_FUZZ, clang) and, with any
 // compiler, as fuzz_capi_replay (replay_main.cpp), which runs the committed
@@ -346,6 +347,12 @@ void check_solution(Session& z, const cw_params& p_in, int mode, const cw_result
     FUZZ_CHECK(contact == r.n_contact && slip == r.n_slip);
     FUZZ_CHECK(r.n_adhesion + r.n_slip == r.n_contact);
     FUZZ_CHECK(r.adhesion_fraction >= 0.0 && r.adhesion_fraction <= 1.0);
+    if (p.struct_size >= offsetof(cw_params, model) + sizeof p.model && p.model == CW_MODEL_EXACT) {
+        // Never an unconverged answer: the residual is within the tolerance.
+        const double tol = p.tolerance > 0.0 ? p.tolerance : 1e-8;
+        FUZZ_CHECK(r.model == CW_MODEL_EXACT && r.iterations >= 0 && r.residual <= tol);
+        FUZZ_CHECK(r.p_max >= 0.0 && r.approach >= 0.0);
+    }
     if (mode != CW_SOLVE_FULL) return;
     for (int f : {CW_FIELD_SX, CW_FIELD_SY, CW_FIELD_WORK_PAPER}) {
         fetch(z.solver, f, z.buf, n);
@@ -403,10 +410,23 @@ void op_solve(Session& z, Bytes& in)
 {
     const size_t size = in.struct_size<cw_params>();
     // Room for a struct_size larger than the struct (read up to sizeof).
-    const cw_params p = decode_params(in, size);
+    const cw_params p_decoded = decode_params(in, size);
     const uint8_t how = in.u8();
     const int mode = how < 250 ? how % 2 : in.small_int();
     const bool with_result = how % 7 != 3;
+    // The exact model (issue 9) on small grids only, so an execution stays
+    // short: its own options fuzzed too.
+    cw_params p = p_decoded;
+    if (how < 250 && how % 10 == 5 && z.solver && z.cells <= 400) {
+        p.model = CW_MODEL_EXACT;
+        const uint8_t e = in.u8();
+        if (e & 1) p.tolerance = in.number();
+        if (e & 2) p.max_iterations = in.small_int();
+        if (e & 4) p.warm_start = in.small_int();
+        if (e & 8) p.spin_offset = in.number();
+        if (e & 16) p.flexibility = CW_FLEX_FROM_MATERIAL;
+        if (e & 32) p.model = in.small_int();
+    }
     cw_result r;
     std::memset(&r, kSentinel, sizeof r);
     r.struct_size = in.u8() < 245 ? sizeof r : in.struct_size<cw_result>();
@@ -681,6 +701,15 @@ void op_batch(Session& z, Bytes& in)
         std::memcpy(pmem.data() + k * pstride, &ps[k], std::min(pstride, sizeof(cw_params)));
         std::memcpy(rmem.data() + k * rstride, &rstride, sizeof rstride);
     }
+    // Exact contacts on small batch grids (always started cold by the batch:
+    // the twin below solves them with warm_start = 0).
+    const bool exact = sizes % 9 == 4 && pstride == sizeof(cw_params) &&
+                       static_cast<size_t>(z.batch_grid.nx) * z.batch_grid.ny <= 256;
+    if (exact)
+        for (size_t k = 0; k < count; ++k) {
+            ps[k].model = CW_MODEL_EXACT;
+            std::memcpy(pmem.data() + k * pstride, &ps[k], sizeof(cw_params));
+        }
     const uint8_t how = in.u8();
     const int mode = how < 250 ? how % 2 : in.small_int();
     std::vector<int> statuses(count + 1, -12345);
@@ -714,7 +743,9 @@ void op_batch(Session& z, Bytes& in)
     for (size_t k = 0; k < count; ++k) {
         cw_result single;
         cw_result_init(&single);
-        const int s1 = cw_solver_solve(twin, &ps[k], mode, &single);
+        cw_params one = ps[k];
+        if (exact && one.warm_start == 1) one.warm_start = 0;
+        const int s1 = cw_solver_solve(twin, &one, mode, &single);
         if (with_statuses) FUZZ_CHECK(statuses[k] == s1);
         if (first_error == CW_OK) first_error = s1;
         const unsigned char* got = rmem.data() + k * rstride;

@@ -175,6 +175,64 @@ static void test_batch_thread_counts(void** state)
     }
 }
 
+/* The exact model (issue 9) in a batch: every contact starts cold, so the
+ * results are those of one-by-one solves with warm_start = 0, bitwise,
+ * whatever the thread count and the partition. Small grid: this runs under
+ * ThreadSanitizer. */
+enum { kExact = 6 };
+static cw_params exact_contact(int k)
+{
+    cw_params p;
+    cw_params_init(&p);
+    p.model = CW_MODEL_EXACT;
+    p.a = 7.17e-3;
+    p.b = 5.42e-3 * (k % 3 == 2 ? 0.5 : 1.0);
+    p.normal_force = 100e3;
+    p.xi_x = 6e-4 * (k + 1);
+    p.xi_y = -3e-4 * (k % 2);
+    p.phi = 0.2 * (k - 2);
+    return p;
+}
+
+static void test_exact_batch_thread_counts(void** state)
+{
+    (void)state;
+    cw_grid g;
+    cw_grid_init(&g);
+    g.kind = CW_GRID_UNIFORM;
+    g.nx = 14;
+    g.ny = 12;
+    g.box_scale = 1.2;
+    cw_solver* s = NULL;
+    assert_status(cw_solver_create(&g, &s, NULL, 0), CW_OK);
+    cw_params p[kExact];
+    cw_result single[kExact];
+    for (int k = 0; k < kExact; ++k) {
+        p[k] = exact_contact(k);
+        cw_params cold = p[k];
+        cold.warm_start = 0;
+        cw_result_init(&single[k]);
+        assert_status(cw_solver_solve(s, &cold, CW_SOLVE_FULL, &single[k]), CW_OK);
+    }
+    const int threads[] = {1, 2, 3};
+    for (int t = 0; t < 3; ++t) {
+        cw_batch* b = NULL;
+        assert_status(cw_batch_create(&g, threads[t], &b, NULL, 0), CW_OK);
+        for (int repeat = 0; repeat < 2; ++repeat) {
+            cw_result r[kExact];
+            for (int k = 0; k < kExact; ++k) rob_sentinel_result(&r[k]);
+            assert_status(cw_batch_solve(b, kExact, p, CW_SOLVE_FULL, r, NULL), CW_OK);
+            for (int k = 0; k < kExact; ++k)
+                assert_memory_equal(&r[k], &single[k], sizeof r[k]);
+            assert_status(cw_batch_solve(b, kExact - 1, p + 1, CW_SOLVE_FULL, r, NULL), CW_OK);
+            for (int k = 0; k + 1 < kExact; ++k)
+                assert_memory_equal(&r[k], &single[k + 1], sizeof r[k]);
+        }
+        cw_batch_destroy(b);
+    }
+    cw_solver_destroy(s);
+}
+
 /* ----------------------------------------------------- across processes */
 
 static uint64_t fnv1a(uint64_t h, const void* data, size_t bytes)
@@ -203,6 +261,17 @@ static uint64_t digest_everything(void)
         }
         cw_solver_destroy(s);
     }
+    /* The exact model, warm-started in sequence on one handle. */
+    cw_solver* s = rob_solver(CW_GRID_UNIFORM, 16, 14, 1.2);
+    for (int k = 0; k < kExact; ++k) {
+        const cw_params p = exact_contact(k);
+        Snapshot snap = solve_snapshot(s, &p);
+        h = fnv1a(h, &snap.result, sizeof snap.result);
+        h = fnv1a(h, snap.fields, (CW_FIELD_WORK_CONSISTENT + 1) * snap.n * sizeof(double));
+        h = fnv1a(h, snap.states, snap.n * sizeof(int));
+        free_snapshot(&snap);
+    }
+    cw_solver_destroy(s);
     return h;
 }
 
@@ -242,6 +311,7 @@ int main(int argc, char** argv)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_handles_and_repeats),
         cmocka_unit_test(test_batch_thread_counts),
+        cmocka_unit_test(test_exact_batch_thread_counts),
         cmocka_unit_test(test_across_runs),
     };
     return cmocka_run_group_tests_name("robustness_determinism", tests, NULL, NULL);

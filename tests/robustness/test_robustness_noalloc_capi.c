@@ -122,6 +122,58 @@ static void test_accumulator_allocates_nothing(void** state)
     cw_solver_destroy(s);
 }
 
+/* The exact model after cw_solver_prepare / cw_batch_prepare (issue 9). */
+static void test_exact_allocates_nothing_after_prepare(void** state)
+{
+    (void)state;
+    cw_solver* s = rob_solver(CW_GRID_UNIFORM, 24, 24, 1.2);
+    assert_status(cw_solver_prepare(s, CW_MODEL_EXACT), CW_OK);
+    double out[24 * 24];
+    int states[24 * 24];
+    double y[24], w[24], par[24];
+    long allocations = 0;
+    for (int k = 0; k < kContacts; ++k) {
+        cw_params p = contact(k);
+        p.model = CW_MODEL_EXACT;
+        p.flexibility = CW_FLEX_FROM_MATERIAL;
+        if (k == 8 || k == 9) continue; /* a/b = 1e-3: the box is 1000 elements long */
+        cw_result r;
+        cw_result_init(&r);
+        cw_count_start();
+        const int st = cw_solver_solve(s, &p, CW_SOLVE_FULL, &r);
+        for (int f = CW_FIELD_X; f <= CW_FIELD_WORK_CONSISTENT; ++f)
+            cw_solver_get_field(s, f, out, 24 * 24);
+        cw_solver_get_state(s, states, 24 * 24);
+        cw_solver_get_profile(s, y, w, par, 24);
+        allocations += cw_count_stop();
+        assert_status(st, CW_OK);
+    }
+    assert_int_equal(allocations, 0);
+    cw_solver_destroy(s);
+
+    cw_grid g;
+    cw_grid_init(&g);
+    g.kind = CW_GRID_UNIFORM;
+    g.nx = g.ny = 16;
+    g.box_scale = 1.25;
+    cw_batch* b = NULL;
+    assert_status(cw_batch_create(&g, 2, &b, NULL, 0), CW_OK);
+    assert_status(cw_batch_prepare(b, CW_MODEL_EXACT), CW_OK);
+    cw_params p[4];
+    cw_result r[4];
+    for (int k = 0; k < 4; ++k) {
+        p[k] = contact(k + 1);
+        p[k].model = CW_MODEL_EXACT;
+        cw_result_init(&r[k]);
+    }
+    assert_status(cw_batch_solve(b, 4, p, CW_SOLVE_FULL, r, NULL), CW_OK); /* OpenMP pool */
+    cw_count_start();
+    const int st = cw_batch_solve(b, 4, p, CW_SOLVE_FULL, r, NULL);
+    assert_int_equal(cw_count_stop(), 0);
+    assert_status(st, CW_OK);
+    cw_batch_destroy(b);
+}
+
 static void test_batch_allocates_nothing_after_first_call(void** state)
 {
     (void)state;
@@ -161,6 +213,7 @@ int main(void)
         cmocka_unit_test(test_solve_and_export_allocate_nothing),
         cmocka_unit_test(test_accumulator_allocates_nothing),
         cmocka_unit_test(test_batch_allocates_nothing_after_first_call),
+        cmocka_unit_test(test_exact_allocates_nothing_after_prepare),
     };
     return cmocka_run_group_tests_name("robustness_noalloc_capi", tests, NULL, NULL);
 }

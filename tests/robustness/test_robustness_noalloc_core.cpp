@@ -83,6 +83,48 @@ void test_solver_solve_allocates_nothing(void**)
     }
 }
 
+// The exact model (issue 9): after prepare(), its successful solves (warm or
+// cold, forces or full, a new a/b) and every export allocate nothing.
+void test_exact_solve_allocates_nothing_after_prepare(void**)
+{
+    cw::GridSpec g;
+    g.kind = cw::GridKind::uniform;
+    g.nx = 26;
+    g.ny = 22;
+    g.box_scale = 1.15;
+    cw_count_start();
+    cw::Solver solver(g);
+    solver.prepare(cw::ModelKind::exact);
+    assert_true(cw_count_stop() > 0);
+    const size_t n = static_cast<size_t>(g.nx) * g.ny;
+    std::vector<double> out(n), y(g.ny), w(g.ny), parabola(g.ny);
+    std::vector<int> states(n);
+    long allocations = 0;
+    for (int k = 0; k < 10; ++k) {
+        cw::ContactInput in = contact(k % 8);
+        in.model = cw::ModelKind::exact;
+        in.flexibility = cw::FlexibilitySource::kalker_from_material;
+        in.warm_start = k % 3 != 0;
+        if (k == 8) in.a *= 1.7; // a new a/b: coefficients and normal problem again
+        if (k == 9) in.xi_x = 1e-9; // full adhesion, unresolved work
+        cw_count_start();
+        solver.solve(in, cw::SolveMode::forces_only);
+        for (cw::Field f : {cw::Field::x, cw::Field::y, cw::Field::area, cw::Field::pz,
+                            cw::Field::px, cw::Field::py, cw::Field::mz})
+            solver.copy_field(f, out.data());
+        solver.copy_state(states.data());
+        solver.solve(in, cw::SolveMode::full);
+        for (int f = 0; f <= static_cast<int>(cw::Field::work_consistent); ++f) {
+            solver.copy_field(static_cast<cw::Field>(f), out.data());
+            solver.add_field(static_cast<cw::Field>(f), 0.5, out.data());
+        }
+        solver.copy_state(states.data());
+        solver.copy_profile(y.data(), w.data(), parabola.data());
+        allocations += cw_count_stop();
+    }
+    assert_int_equal(allocations, 0);
+}
+
 } // namespace
 
 int main()
@@ -90,6 +132,7 @@ int main()
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_counter_works),
         cmocka_unit_test(test_solver_solve_allocates_nothing),
+        cmocka_unit_test(test_exact_solve_allocates_nothing_after_prepare),
     };
     return cmocka_run_group_tests_name("robustness_noalloc_core", tests, nullptr, nullptr);
 }

@@ -111,6 +111,7 @@ CW_API const char* cw_status_string(int status);
 #define CW_MAX_GRID_CELLS 1000  /* nx, ny in 1..1000 */
 #define CW_MAX_BOX_SCALE 100.0  /* uniform grid box scale S in [1, 100] */
 #define CW_MAX_BATCH_THREADS 256 /* cw_batch_create */
+#define CW_MAX_EXACT_CELLS 256  /* exact model: nx, ny <= 256 (memory grows as nx*ny) */
 #define CW_MIN_ASPECT 1e-3      /* a/b in [1e-3, 1e3]: Kalker's table + asymptotes */
 #define CW_MAX_ASPECT 1e3
 
@@ -198,11 +199,12 @@ typedef struct cw_params {
     /* ---- appended in 1.1 ---- */
     int model;             /* CW_MODEL_FASTSIM (default), CW_MODEL_EXACT, CW_MODEL_CALIBRATED */
     double tolerance;      /* exact model: relative tolerance of the tangential solve;
-                              0 (default) = the model's default (README "Exact model") */
-    int max_iterations;    /* exact model: iteration bound; 0 (default) = the model's
-                              default; reaching it is CW_ERR_NOT_CONVERGED */
+                              0 (default) = 1e-8; else in [1e-13, 1) (README "Exact model") */
+    int max_iterations;    /* exact model: bound on Newton steps per grid; 0 (default) =
+                              50; reaching it is CW_ERR_NOT_CONVERGED */
     int warm_start;        /* exact model: 1 (default) starts from the handle's last
-                              solution, 0 from full adhesion (same answer to tolerance) */
+                              solution, 0 from scratch (coarser grids); the same answer to
+                              the tolerance. Ignored by cw_batch_solve (always 0) */
     double spin_offset;    /* CONTACT's facphi, in [0, 1]: the spin term of the lateral
                               rigid slip is taken spin_offset element lengths ahead of
                               the slip point, towards the leading edge (x' + s dx in the
@@ -274,10 +276,21 @@ CW_API int cw_solver_grid_size(const cw_solver* solver, int* nx, int* ny);
 
 /* Solves one steady-rolling contact. mode: CW_SOLVE_FORCES or CW_SOLVE_FULL.
  * result may be NULL (read fields afterwards). Allocates nothing on success
- * (an error may allocate its message), prints
- * nothing. Errors: CW_ERR_NULL_POINTER, CW_ERR_STRUCT_SIZE,
- * CW_ERR_UNKNOWN_OPTION, CW_ERR_INVALID_INPUT, CW_ERR_NUMERIC. After an
- * error the handle holds no solution (fields give CW_ERR_NO_SOLUTION). */
+ * (an error may allocate its message; the first CW_MODEL_EXACT solve makes
+ * that model's memory unless cw_solver_prepare did), prints nothing.
+ * CW_MODEL_EXACT (README "Exact model"): needs CW_GRID_UNIFORM and
+ * CW_FLEX_FROM_MATERIAL (G, nu); solves its own normal problem from a, b,
+ * normal_force, so params->pressure is ignored; with warm_start = 1 it
+ * starts from this handle's last successful exact solution (the answer
+ * equals a cold start's to the tolerance); it stops when the relative
+ * residual is <= tolerance (default 1e-8) and reports CW_ERR_NOT_CONVERGED
+ * after max_iterations Newton steps (default 50) otherwise -- never an
+ * unconverged answer. Errors: CW_ERR_NULL_POINTER, CW_ERR_STRUCT_SIZE,
+ * CW_ERR_UNKNOWN_OPTION, CW_ERR_INVALID_INPUT, CW_ERR_GRID_OUT_OF_RANGE
+ * (exact model beyond CW_MAX_EXACT_CELLS), CW_ERR_NOT_CONVERGED,
+ * CW_ERR_NUMERIC, CW_ERR_OUT_OF_MEMORY (first exact solve). After an
+ * error the handle holds no solution (fields give CW_ERR_NO_SOLUTION) and
+ * the next exact solve starts cold. */
 CW_API int cw_solver_solve(cw_solver* solver, const cw_params* params, int mode,
                            cw_result* result);
 
@@ -367,7 +380,10 @@ CW_API const char* cw_accumulator_last_error(const cw_accumulator* accumulator);
 
 /* Many independent contacts on one grid (e.g. every wheel of a vehicle),
  * in parallel with OpenMP when available. Results are bitwise identical to
- * one-by-one cw_solver_solve calls, whatever the number of threads. */
+ * one-by-one cw_solver_solve calls, whatever the number of threads.
+ * CW_MODEL_EXACT contacts are solved cold (warm_start is ignored: which
+ * thread solved what before must not matter), so they equal one-by-one
+ * solves with warm_start = 0. */
 typedef struct cw_batch cw_batch;
 
 /* threads <= 0: use all available cores; at most CW_MAX_BATCH_THREADS (each
@@ -438,6 +454,23 @@ CW_API int cw_hertz_solve(double A, double B, double normal_force, double E_star
 CW_API int cw_fastsim_normalised(double ux, double uy, double fx, double fy, int mx, int my,
                                  double tol, double* tx, double* ty, char* message,
                                  size_t message_len);
+
+/* ----------------------------------------------------------- model memory */
+
+/* Makes one model's memory now, so that its solves allocate nothing
+ * afterwards. CW_MODEL_FASTSIM: nothing to do (made by create).
+ * CW_MODEL_EXACT: influence tables, FFT plans and spectra, Krylov basis and
+ * every workspace of the grid and of its coarser levels (README "Exact
+ * model": about 2 kB per element); without prepare the first exact solve
+ * makes them. Idempotent. Errors: CW_ERR_NULL_POINTER,
+ * CW_ERR_UNKNOWN_OPTION (model), CW_ERR_INVALID_INPUT (CW_MODEL_EXACT on
+ * CW_GRID_KALKER_STRIPS; CW_MODEL_CALIBRATED, not in this build),
+ * CW_ERR_GRID_OUT_OF_RANGE (exact: nx or ny > CW_MAX_EXACT_CELLS),
+ * CW_ERR_OUT_OF_MEMORY. */
+CW_API int cw_solver_prepare(cw_solver* solver, int model);
+
+/* cw_solver_prepare for the solver of every thread of a batch. */
+CW_API int cw_batch_prepare(cw_batch* batch, int model);
 
 #ifdef __cplusplus
 } /* extern "C" */

@@ -1,0 +1,129 @@
+// Kalker's exact half-space theory of steady rolling on CONTACT's uniform
+// grid, as one model of the contact (../shared/reference/
+// exact_discretisation.md lists the discretisation; CONTACT's method a).
+// Made once per grid -- it owns every workspace, FFT plan and coefficient
+// table -- then solve() many times without allocating.
+//
+// One solve: the half-space coefficients of the grid (influence.hpp,
+// grid_convolution.hpp; recomputed only when a/b or nu change), the normal
+// problem with the force prescribed (normal_problem.hpp; its normalised
+// pressure depends only on the grid and a/b, so it is kept and reused), then
+// the tangential problem (steady_rolling.hpp) and, in full mode, the work
+// maps (exact_work.hpp). The tangential problem starts from
+//  - the last solution on this model (tractions in units of mu p0) when
+//    warm_start is set and the last exact solve succeeded, else
+//  - a hierarchy of coarser grids over the same box (about half the
+//    elements per direction each, down to ~10), each solved from the one
+//    below it, the coarsest from Kalker's simplified theory.
+// A warm start that does not converge is retried cold. Every solve ends
+// with a result whose residual is within the tolerance, or with
+// Error(not_converged).
+//
+// Units and frames: the model works in the rolling frame (leading edge at
+// +x; rolling_direction = -1 mirrors x) in the normalised units of
+// steady_rolling.hpp; fields are exported in the caller's layout and units.
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include "contact/fields.hpp"
+#include "contact/params.hpp"
+#include "exact/exact_geometry.hpp"
+#include "exact/grid_convolution.hpp"
+#include "exact/normal_problem.hpp"
+#include "exact/steady_rolling.hpp"
+
+namespace creepwork {
+
+// Largest grid of the exact model per direction (memory grows with the
+// square: about 2 kB per element with all levels and the Krylov basis, most
+// of it in the FFT arrays of the 4x larger padded grid).
+constexpr int kMaxExactCells = 256;
+// Defaults of ContactInput::tolerance and max_iterations for this model.
+constexpr double kExactDefaultTolerance = 1e-8;
+constexpr int kExactDefaultMaxIterations = 50;
+constexpr double kExactDefaultSpinOffset = 1.0 / 6.0; // CONTACT's facphi
+
+// Diagnostics of the last solve.
+struct ExactSolveInfo {
+    int levels_used = 0;      // grids solved (1 for a warm start)
+    int newton_steps = 0;     // on the finest grid
+    int products = 0;         // FFT products, all grids (each ~ the cost of one)
+    int normal_iterations = 0;
+    bool warm = false;        // started from the last solution
+    bool retried_cold = false;
+};
+
+class ExactModel {
+public:
+    // Throws Error(invalid_input) unless grid.kind is uniform, and
+    // Error(grid_out_of_range) beyond kMaxExactCells.
+    explicit ExactModel(const GridSpec& grid);
+    ~ExactModel();
+
+    // Throws Error naming a bad input, or Error(not_converged).
+    SolveTotals solve(const ContactInput& input, SolveMode mode);
+
+    const ExactSolveInfo& info() const { return info_; }
+    int nx() const { return nx_; }
+    int ny() const { return ny_; }
+
+    // Of the last successful solve, in the caller's layout [i + nx j].
+    void copy_field(Field f, double* out) const;
+    void add_field(Field f, double scale, double* out) const; // out += scale * field
+    void copy_state(int* out) const;
+    // Per row j < ny: centre y [m], energy-consistent work per unit width
+    // [J/m per m], and the equal-area parabola of total W at y.
+    void copy_profile(double W, double* y, double* work, double* parabola) const;
+
+private:
+    // One grid of the hierarchy with its coefficients and solvers.
+    struct Level {
+        Level(int nx, int ny);
+        int nx, ny;
+        ExactGeometry geom;
+        GridConvolution conv;
+        NormalProblem normal;
+        SteadyRolling tangential;
+        // The normal solution held: for which a/b and nu, and whether it was
+        // computed from scratch (a cold solve reuses only such a one, so that
+        // results never depend on what was solved before).
+        bool normal_valid = false, normal_cold = false;
+        double normal_ratio = 0, normal_nu = 0;
+    };
+    template <class Op>
+    void export_field(Field f, const Op& op, double* out) const;
+    void solve_normal(Level& level, double ratio, bool warm, const char* which);
+    void interpolate(const Level& coarse, Level& fine) const;
+    void fastsim_start(Level& level, double ratio, double nu, double G, double a, double b) const;
+    void set_rigid_slip(Level& level) const;
+    void predict_start(double ratio, double nu);
+    void remember(double ratio, double nu);
+
+    int nx_, ny_;
+    double box_scale_;
+    std::vector<std::unique_ptr<Level>> levels_; // [0] is the caller's grid
+    ExactSolveInfo info_;
+    bool has_previous_ = false;
+
+    // The last solve (rolling frame), for the exports.
+    struct Setup {
+        int direction = 1;
+        double a = 0, b = 0, dx = 0, dy = 0;
+        double p0 = 0, traction_scale = 0, slip_scale = 0;
+        double xi = 0, eta = 0, phi = 0;          // rolling frame, physical
+        double c_xi = 0, c_eta = 0, c_phi = 0;     // normalised (per dx for phi)
+        double spin_offset = 0;
+        bool full = false;
+    } setup_;
+    std::vector<double> paper_, consistent_, profile_, row_d_, row_pool_;
+    // The last solutions (normalised tractions, newest first) and their
+    // normalised creepages, for the warm start's prediction.
+    std::vector<SteadyRolling::Complex> history_q_[3];
+    double history_c_[3][3] = {};
+    int history_count_ = 0;
+    double history_ratio_ = 0, history_nu_ = 0, history_offset_ = 0;
+};
+
+} // namespace creepwork

@@ -1,0 +1,99 @@
+// The tangential problem of steady rolling on one uniform grid
+// (exact_discretisation.md rules 5-7). In normalised units -- lengths in
+// element lengths dx, tractions q = p / (mu p0), slips s = (S / dq) G / (mu p0)
+// -- the shift of element I per step dq = dx is
+//   s_I = w_I + sum_J B(I - J) q_J,   B(k, l) = A(k, l) - A(k + 1, l),
+// with w the rigid slip and A the half-space coefficients (influence.hpp),
+// and Coulomb's law holds element by element with bound g_I = pn_I / p0.
+//
+// Method. B is dominated by its diagonal and the coupling to the element
+// ahead (B(0,0) ~ -B(-1,0)): a transport operator along x. A Gauss-Seidel
+// sweep in the rolling direction, leading edge first, with the exact local
+// Coulomb solve (local_friction.hpp) and the rest of B taken from the last
+// iterate (one FFT product) defines a fixed-point map q -> G(q). Its
+// fixed point is the solution. Iterating G alone stalls on the smooth modes of
+// the half-space operator (their error is amplified by the transport), so
+// q = G(q) is solved by a semismooth Newton method: each step solves
+// (I - G'(q)) dq = G(q) - q by GMRES (each GMRES iteration one FFT product
+// and one linearised sweep, so the sweep is the preconditioner), with
+// forcing terms that tighten with the residual and a backtracking line search on
+// |G(q) - q|. On the reference cases it converges in 3-6 steps from a good
+// start; ExactModel provides one (a coarser grid's solution, or the last one).
+//
+// Everything is allocated by the constructor; solve() allocates nothing.
+#pragma once
+
+#include <complex>
+#include <memory>
+#include <vector>
+
+#include "exact/grid_convolution.hpp"
+#include "exact/local_friction.hpp"
+
+namespace creepwork {
+
+struct SteadyRollingInfo {
+    int newton_steps = 0;
+    int products = 0;        // FFT products (sweeps, GMRES iterations)
+    double residual = 0;     // max |G(q) - q| / max(max |G(q)|, 1e-6 max g)
+    bool converged = false;
+};
+
+class SteadyRolling {
+public:
+    using Complex = std::complex<double>;
+
+    SteadyRolling(int nx, int ny, int krylov_dimension);
+
+    // conv holds this grid's coefficients; g (bound per element, 0 outside
+    // the contact set) and w (rigid slip) are set by the caller through
+    // bound() and rigid_slip(). q holds the first guess and returns the
+    // solution; solve() stops when the residual is <= tolerance or after
+    // max_steps Newton steps.
+    SteadyRollingInfo solve(GridConvolution& conv, double tolerance, int max_steps);
+
+    std::vector<double>& bound() { return g_; }
+    std::vector<Complex>& rigid_slip() { return w_; }
+    std::vector<Complex>& traction() { return q_; }
+    const std::vector<Complex>& traction() const { return q_; }
+    // Of the last evaluation of G, at the returned traction: the slip
+    // s = w + B q per element and the element states (0 exterior, 1
+    // adhesion, 2 slip).
+    const std::vector<Complex>& slip() const { return s_; }
+    const std::vector<signed char>& state() const { return state_; }
+
+    // No friction: zero traction, and the elements with contact[k] > 0 slip
+    // with the rigid slip (s = w).
+    void slide_freely(const std::vector<double>& contact);
+
+    // Clips q to the bound (and zero outside the contact set).
+    void project(std::vector<Complex>& q) const;
+
+private:
+    // out = G(q); also s_, state_, jac_ at q. One FFT product.
+    void sweep(GridConvolution& conv, const std::vector<Complex>& q, std::vector<Complex>& out);
+    // out = G'(q) v at the q of the last sweep. One FFT product.
+    void linear_sweep(GridConvolution& conv, const Complex* v, Complex* out);
+    // Solves (I - G') x = b to relative residual eta; returns the iterations.
+    int gmres(GridConvolution& conv, const std::vector<Complex>& b, std::vector<Complex>& x,
+              double eta, int max_iterations);
+    double residual_norm(const std::vector<Complex>& q, const std::vector<Complex>& gq,
+                         std::vector<Complex>& f, double& max_rel) const;
+
+    int nx_, ny_, n_, m_;
+    double b0x_ = 0, b0y_ = 0, b1x_ = 0, b1y_ = 0; // B(0,0), B(-1,0) (diagonal)
+    std::vector<double> g_;
+    std::vector<Complex> w_, q_, gq_, f_, dq_, qt_, gt_, ft_, s_, work_;
+    std::vector<LocalJacobian> jac_;
+    std::vector<signed char> state_;
+    // GMRES: basis (m + 1 vectors of n), Hessenberg, Givens rotations, rhs.
+    struct Release {
+        void operator()(Complex* p) const { ::operator delete(p); }
+    };
+    std::unique_ptr<Complex, Release> basis_;
+    Complex* basis(int k) { return basis_.get() + static_cast<size_t>(n_) * k; }
+    std::vector<double> hessenberg_, cs_, sn_, rhs_, y_;
+    int products_ = 0;
+};
+
+} // namespace creepwork
