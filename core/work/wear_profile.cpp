@@ -241,19 +241,31 @@ void ProfileAccumulator::add_saved(const uint64_t* in, long len)
         in[2] != fingerprint())
         throw Error(ErrorKind::invalid_input,
                     "state: not a saved state of a profile accumulator on these nodes s");
-    ProfileAccumulator other(*this);
-    other.reset();
-    long q = kStateHeader;
-    for (ExactSum* e : {&other.passes_, &other.volume_, &other.lost_})
-        for (int w = 0; w < ExactSum::kWords; ++w) e->set_word(w, in[q++]);
+    // Sums are read word by word into one ExactSum at a time: checked in a
+    // first pass, added in a second, no allocation.
+    auto sum_at = [&](long q) {
+        ExactSum e;
+        for (int w = 0; w < ExactSum::kWords; ++w) e.set_word(w, in[q + w]);
+        return e;
+    };
+    const long body = kStateHeader + 3 * ExactSum::kWords;
+    bool fits = passes_.fits_sum(sum_at(kStateHeader)) &&
+                volume_.fits_sum(sum_at(kStateHeader + ExactSum::kWords)) &&
+                lost_.fits_sum(sum_at(kStateHeader + 2 * ExactSum::kWords));
+    for (long k = 0; k < size() && fits; ++k)
+        fits = normal_[k].fits_sum(sum_at(body + 2 * ExactSum::kWords * k)) &&
+               height_[k].fits_sum(sum_at(body + 2 * ExactSum::kWords * k + ExactSum::kWords));
+    if (!fits)
+        throw Error(ErrorKind::numeric_failure,
+                    "the merged depths would leave the accumulator's range (2^120 m)");
+    passes_.add(sum_at(kStateHeader));
+    volume_.add(sum_at(kStateHeader + ExactSum::kWords));
+    lost_.add(sum_at(kStateHeader + 2 * ExactSum::kWords));
     for (long k = 0; k < size(); ++k) {
-        for (int w = 0; w < ExactSum::kWords; ++w) other.normal_[k].set_word(w, in[q + w]);
-        for (int w = 0; w < ExactSum::kWords; ++w)
-            other.height_[k].set_word(w, in[q + ExactSum::kWords + w]);
-        q += 2 * ExactSum::kWords;
+        normal_[k].add(sum_at(body + 2 * ExactSum::kWords * k));
+        height_[k].add(sum_at(body + 2 * ExactSum::kWords * k + ExactSum::kWords));
     }
-    other.adds_ = static_cast<long long>(in[3]);
-    merge(other);
+    adds_ += static_cast<long long>(in[3] & 0x7FFFFFFFFFFFFFFFull);
 }
 
 void update_profile(const double* s, const double* old_profile, const double* depth, long n,
