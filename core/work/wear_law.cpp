@@ -67,45 +67,4 @@ void validate(const WearLaw& w)
     }
 }
 
-double usfd_rate(const UsfdCoefficients& c, double t, int& regime)
-{
-    if (!(t > 0.0)) {
-        regime = kRegimeNone;
-        return 0.0;
-    }
-    if (t < c.t1) {
-        regime = 1;
-        return c.k1 * t;
-    }
-    if (t <= c.t2) {
-        regime = 2;
-        return c.k2;
-    }
-    regime = 3;
-    // As published the branch starts slightly below zero (wear_law.hpp).
-    return std::max(0.0, c.k3 * t - c.c3);
-}
-
-double kth_coefficient(const KthMap& m, double v, double p, int& regime)
-{
-    if (!(v > 0.0)) {
-        regime = kRegimeNone;
-        return 0.0;
-    }
-    if (p > m.seizure_ratio * m.hardness) {
-        regime = 4;
-        return m.k_seizure;
-    }
-    if (v < m.v1) {
-        regime = 1;
-        return m.k_slow;
-    }
-    if (v <= m.v2) {
-        regime = 2;
-        return m.k_severe;
-    }
-    regime = 3;
-    return m.k_fast;
-}
-
 } // namespace creepwork::wear

@@ -84,9 +84,48 @@ constexpr int kRegimeNone = 0;
 constexpr int kRegimeCount = 4;
 
 // USFD rate [kg/m^3] for a wear index t = T_gamma/A [Pa] >= 0; regime out.
-double usfd_rate(const UsfdCoefficients& c, double t, int& regime);
+inline double usfd_rate(const UsfdCoefficients& c, double t, int& regime)
+{
+    if (!(t > 0.0)) {
+        regime = kRegimeNone;
+        return 0.0;
+    }
+    if (t < c.t1) {
+        regime = 1;
+        return c.k1 * t;
+    }
+    if (t <= c.t2) {
+        regime = 2;
+        return c.k2;
+    }
+    regime = 3;
+    // As published the branch starts slightly below zero (see above).
+    const double r = c.k3 * t - c.c3;
+    return r > 0.0 ? r : 0.0;
+}
+
 // KTH wear coefficient [-] for sliding velocity v [m/s] >= 0 and pressure
 // p [Pa]; regime out (0 when v == 0).
-double kth_coefficient(const KthMap& m, double v, double p, int& regime);
+inline double kth_coefficient(const KthMap& m, double v, double p, int& regime)
+{
+    if (!(v > 0.0)) {
+        regime = kRegimeNone;
+        return 0.0;
+    }
+    if (p > m.seizure_ratio * m.hardness) {
+        regime = 4;
+        return m.k_seizure;
+    }
+    if (v < m.v1) {
+        regime = 1;
+        return m.k_slow;
+    }
+    if (v <= m.v2) {
+        regime = 2;
+        return m.k_severe;
+    }
+    regime = 3;
+    return m.k_fast;
+}
 
 } // namespace creepwork::wear

@@ -8,6 +8,20 @@
 
 namespace creepwork::wear {
 
+namespace {
+
+// |(x, y)|: a plain square root for ordinary magnitudes (glibc's hypot costs
+// more than the rest of an element's wear), hypot where the squares could
+// overflow or underflow.
+inline double magnitude(double x, double y)
+{
+    const double m = std::max(std::fabs(x), std::fabs(y));
+    if (m < 1e150 && m > 1e-150) return std::sqrt(x * x + y * y);
+    return std::hypot(x, y);
+}
+
+} // namespace
+
 double parabola_strip_average(double V, double b, double lo, double hi)
 {
     const double width = hi - lo;
@@ -20,45 +34,50 @@ double parabola_strip_average(double V, double b, double lo, double hi)
     return quotient_if_positive(0.75 * V / b * integral, width);
 }
 
-WearTotals wear_map(const ContactFields& in, const WearLaw& law, const WearFields& out)
+namespace {
+
+// The element loop, one instance per law and source (no per-element
+// dispatch). Two divisions per element: T/A = W/A and s = (T/A)/|p|.
+template <Law L, bool SlipSource>
+void element_loop(const ContactFields& in, const WearLaw& law, const WearFields& out,
+                  WearTotals& t, double& volume_section)
 {
-    validate(law);
-    const bool slip_source = law.source == Source::slip;
     const double rho = law.density;
-    WearTotals t;
-    double volume_section = 0.0; // worn cross-section per pass [m^2]
     for (int j = 0; j < in.ny; ++j) {
         const double dy = in.strip_width[j];
+        const double to_depth = quotient_if_positive(1.0, rho * dy); // per unit mass per metre
         double strip = 0.0;
         for (int i = 0; i < in.nx; ++i) {
             const long e = i + static_cast<long>(j) * in.nx;
             const double A = in.area[e];
-            double W = 0.0, s = 0.0, rate = 0.0;
+            double W = 0.0, tga = 0.0, s = 0.0, rate = 0.0;
             int regime = kRegimeNone;
             if (A > 0.0) {
                 const double px = in.px[e], py = in.py[e];
-                const double p = std::hypot(px, py);
-                if (slip_source) {
+                if constexpr (SlipSource) {
                     W = std::max(0.0, -(px * in.sx[e] + py * in.sy[e]) * A);
-                    s = std::hypot(in.sx[e], in.sy[e]);
+                    tga = quotient_if_positive(W, A); // fp_safe.hpp: never speculated
+                    s = magnitude(in.sx[e], in.sy[e]);
                 } else {
                     W = std::max(0.0, in.work[e]);
-                    s = quotient_if_positive(W, p * A);
+                    tga = quotient_if_positive(W, A); // fp_safe.hpp: never speculated
+                    s = quotient_if_positive(tga, magnitude(px, py));
                 }
-                if (law.law == Law::usfd) {
-                    rate = usfd_rate(law.usfd, W / A, regime);
+                if constexpr (L == Law::usfd) {
+                    rate = usfd_rate(law.usfd, tga, regime);
                 } else {
-                    const double k = kth_coefficient(law.kth, s * law.rolling_speed, in.pz[e], regime);
-                    rate = rho * k * std::max(0.0, in.pz[e]) * s / law.kth.hardness;
+                    const double pz = std::max(0.0, in.pz[e]);
+                    const double k = kth_coefficient(law.kth, s * law.rolling_speed, pz, regime);
+                    rate = rho * k * pz * s / law.kth.hardness;
                 }
                 if (regime != kRegimeNone) t.regime_area[regime - 1] += A;
             }
             const double mass_per_distance = rate * A;
-            const double depth = quotient_if_positive(mass_per_distance, rho * dy);
+            const double depth = mass_per_distance * to_depth;
             if (out.rate) out.rate[e] = rate;
             if (out.depth) out.depth[e] = depth;
             if (out.mass) out.mass[e] = mass_per_distance * law.pass_length;
-            if (out.work_density) out.work_density[e] = quotient_if_positive(W, A);
+            if (out.work_density) out.work_density[e] = tga;
             if (out.sliding) out.sliding[e] = s;
             if (out.regime) out.regime[e] = regime;
             t.mass_per_distance += mass_per_distance;
@@ -69,6 +88,23 @@ WearTotals wear_map(const ContactFields& in, const WearLaw& law, const WearField
         t.max_depth = std::max(t.max_depth, strip);
         volume_section += strip * dy;
     }
+}
+
+} // namespace
+
+WearTotals wear_map(const ContactFields& in, const WearLaw& law, const WearFields& out)
+{
+    validate(law);
+    WearTotals t;
+    double volume_section = 0.0; // worn cross-section per pass [m^2]
+    const bool slip = law.source == Source::slip;
+    if (law.law == Law::usfd)
+        slip ? element_loop<Law::usfd, true>(in, law, out, t, volume_section)
+             : element_loop<Law::usfd, false>(in, law, out, t, volume_section);
+    else
+        slip ? element_loop<Law::archard_kth, true>(in, law, out, t, volume_section)
+             : element_loop<Law::archard_kth, false>(in, law, out, t, volume_section);
+    const double rho = law.density;
     t.mass_per_pass = t.mass_per_distance * law.pass_length;
     t.volume_per_distance = t.mass_per_distance / rho;
     if (out.strip_parabola)

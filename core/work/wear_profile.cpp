@@ -86,16 +86,16 @@ void ProfileAccumulator::check_strips(const StripWear& st, const Placement& p) c
     if (!std::isfinite(p.passes) || p.passes < 0.0 || p.passes > kMaxPasses)
         reject_input("passes", p.passes, "must lie in [0, 1e15]");
     for (long j = 0; j < st.count; ++j) {
-        const std::string at = "[" + std::to_string(j) + "]";
+        const auto at = [j] { return "[" + std::to_string(j) + "]"; }; // errors only
         if (!std::isfinite(st.y[j]) || std::fabs(st.y[j]) > kMaxCoordinate)
-            throw Error(ErrorKind::invalid_input, "y" + at + " must be finite, within +-1e6 m");
+            throw Error(ErrorKind::invalid_input, "y" + at() + " must be finite, within +-1e6 m");
         if (!std::isfinite(st.width[j]) || !(st.width[j] > 0.0) || st.width[j] > kMaxCoordinate)
             throw Error(ErrorKind::invalid_input,
-                        "width" + at + " = " + std::to_string(st.width[j]) +
+                        "width" + at() + " = " + std::to_string(st.width[j]) +
                             " must be > 0 and <= 1e6 m");
         if (!std::isfinite(st.depth[j]) || st.depth[j] < 0.0)
             throw Error(ErrorKind::invalid_input,
-                        "depth" + at + " = " + std::to_string(st.depth[j]) +
+                        "depth" + at() + " = " + std::to_string(st.depth[j]) +
                             " must be finite and >= 0");
     }
 }
