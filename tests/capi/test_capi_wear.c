@@ -510,6 +510,94 @@ static void wheel_and_rail_passes(void** state)
     cw_solver_destroy(sv);
 }
 
+/* Element by element through the C ABI, from the exported fields alone:
+ * T/A = work / area (the energy-consistent map), sliding = (T/A) / |p|,
+ * and Archard's rate = rho k pz s / H with k the KTH map's value for the
+ * element's regime (Jendel 2002 as in the header), to 1e-13. And the USFD
+ * plateau includes both of its ends, as published ("10.4-77.2"): with t1
+ * or t2 set to an element's own T/A, that element is in regime 2. */
+static void elements_follow_the_laws(void** state)
+{
+    (void)state;
+    cw_solver* s = solved(2, CW_GRID_KALKER_STRIPS);
+    cw_wear* w = NULL;
+    assert_int_equal(cw_wear_create(s, &w), CW_OK);
+    double area[N], px[N], py[N], pz[N], work[N], dens[N], slide[N], rate[N];
+    int regime[N];
+    assert_int_equal(cw_solver_get_field(s, CW_FIELD_AREA, area, N), CW_OK);
+    assert_int_equal(cw_solver_get_field(s, CW_FIELD_PX, px, N), CW_OK);
+    assert_int_equal(cw_solver_get_field(s, CW_FIELD_PY, py, N), CW_OK);
+    assert_int_equal(cw_solver_get_field(s, CW_FIELD_PZ, pz, N), CW_OK);
+    assert_int_equal(cw_solver_get_field(s, CW_FIELD_WORK_CONSISTENT, work, N), CW_OK);
+    cw_wear_params p;
+    cw_wear_params_init(&p);
+    p.law = CW_WEAR_ARCHARD_KTH;
+    p.rolling_speed = 60.0;
+    p.kth_v1 = 0.05; /* boundaries inside this contact's sliding velocities */
+    p.kth_v2 = 0.12;
+    assert_int_equal(cw_wear_compute(w, s, &p, NULL), CW_OK);
+    assert_int_equal(cw_wear_get_field(w, CW_WEAR_FIELD_WORK_DENSITY, dens, N), CW_OK);
+    assert_int_equal(cw_wear_get_field(w, CW_WEAR_FIELD_SLIDING, slide, N), CW_OK);
+    assert_int_equal(cw_wear_get_field(w, CW_WEAR_FIELD_RATE, rate, N), CW_OK);
+    assert_int_equal(cw_wear_get_regimes(w, regime, N), CW_OK);
+    const double k[5] = {0.0, p.kth_k_slow, p.kth_k_severe, p.kth_k_fast, p.kth_k_seizure};
+    int seen[5] = {0, 0, 0, 0, 0}, max_e = -1;
+    for (int e = 0; e < N; ++e) {
+        if (area[e] <= 0.0) continue;
+        const double tga = work[e] > 0 ? work[e] / area[e] : 0.0;
+        assert_close(dens[e], tga, 1e-15, 0.0);
+        const double sl = tga > 0 ? tga / hypot(px[e], py[e]) : 0.0;
+        assert_close(slide[e], sl, 1e-14, 0.0);
+        ++seen[regime[e]];
+        assert_close(rate[e], p.density * k[regime[e]] * pz[e] * sl / p.hardness, 1e-13, 0.0);
+        if (regime[e] && (max_e < 0 || dens[e] > dens[max_e])) max_e = e;
+    }
+    assert_true(seen[1] > 0 && seen[2] > 0 && seen[3] > 0); /* all three velocity regimes */
+    /* USFD with the plateau's ends on an element's own T/A. */
+    cw_wear_params u;
+    cw_wear_params_init(&u);
+    u.usfd_t1 = 0.5 * dens[max_e];
+    u.usfd_t2 = dens[max_e];
+    assert_int_equal(cw_wear_compute(w, s, &u, NULL), CW_OK);
+    assert_int_equal(cw_wear_get_regimes(w, regime, N), CW_OK);
+    assert_int_equal(cw_wear_get_field(w, CW_WEAR_FIELD_RATE, rate, N), CW_OK);
+    assert_int_equal(regime[max_e], 2);
+    assert_close(rate[max_e], u.usfd_k2, 0.0, 0.0);
+    u.usfd_t1 = dens[max_e];
+    u.usfd_t2 = 2.0 * dens[max_e];
+    assert_int_equal(cw_wear_compute(w, s, &u, NULL), CW_OK);
+    assert_int_equal(cw_wear_get_regimes(w, regime, N), CW_OK);
+    assert_int_equal(regime[max_e], 2);
+    cw_wear_destroy(w);
+    cw_solver_destroy(s);
+}
+
+/* The update helper on uneven nodes: the worn cross-section is kept,
+ * sum (old - new) w = sum depth w with the cells' own widths (1e-12). */
+static void update_keeps_volume_on_uneven_nodes(void** state)
+{
+    (void)state;
+    enum { M = 90 };
+    double s[M], w[M], old[M], depth[M], nw[M];
+    for (int k = 0; k < M; ++k) s[k] = -0.02 + 0.04 * pow(k / (M - 1.0), 1.7);
+    for (int k = 0; k < M; ++k) {
+        const double lo = k ? 0.5 * (s[k - 1] + s[k]) : s[0] - 0.5 * (s[1] - s[0]);
+        const double hi = k < M - 1 ? 0.5 * (s[k] + s[k + 1]) : s[M - 1] + 0.5 * (s[M - 1] - s[M - 2]);
+        w[k] = hi - lo;
+        old[k] = 0.0;
+        depth[k] = 1e-6 * exp(-pow((s[k] - 0.001) / 0.004, 2)) + (k == 70 ? 5e-6 : 0.0);
+    }
+    for (double smoothing = 0.0; smoothing < 4e-3; smoothing += 1.3e-3) {
+        assert_int_equal(cw_wear_profile_update(s, old, depth, M, smoothing, nw, M, NULL, 0), CW_OK);
+        double removed = 0.0, worn = 0.0;
+        for (int k = 0; k < M; ++k) {
+            removed += (old[k] - nw[k]) * w[k];
+            worn += depth[k] * w[k];
+        }
+        assert_close(removed, worn, 1e-12, 0.0);
+    }
+}
+
 int main(int argc, char** argv)
 {
     const struct CMUnitTest tests[] = {
@@ -519,6 +607,8 @@ int main(int argc, char** argv)
         cmocka_unit_test(profile_errors_are_named),
         cmocka_unit_test(accumulation_is_bitwise_split_invariant),
         cmocka_unit_test(wheel_and_rail_passes),
+        cmocka_unit_test(elements_follow_the_laws),
+        cmocka_unit_test(update_keeps_volume_on_uneven_nodes),
     };
     return cw_run_tests(tests, argc > 1 ? argv[1] : NULL);
 }

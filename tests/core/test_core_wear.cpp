@@ -588,6 +588,17 @@ void profile_update(void**)
     std::vector<double> flat(n, 2e-6), back(n);
     ww::update_profile(s.data(), old.data(), flat.data(), n, 0.001, back.data());
     for (int k = 50; k < n - 50; ++k) assert_close(old[k] - back[k], 2e-6, 1e-12, 0.0);
+    // Uneven nodes: the cells' own widths, still conserved.
+    std::vector<double> su(n), wu(n);
+    for (int k = 0; k < n; ++k) su[k] = -0.03 + 0.06 * std::pow(k / (n - 1.0), 1.5);
+    ww::ProfileAccumulator cells(su.data(), n);
+    ww::update_profile(su.data(), old.data(), depth.data(), n, 0.002, out.data());
+    removed = worn = 0;
+    for (int k = 0; k < n; ++k) {
+        removed += (old[k] - out[k]) * cells.cell_widths()[k];
+        worn += depth[k] * cells.cell_widths()[k];
+    }
+    assert_close(removed, worn, 1e-12, 0.0);
     // In place (out = old) gives the same.
     std::vector<double> inplace = old;
     ww::update_profile(s.data(), inplace.data(), depth.data(), n, 0.0015, inplace.data());
