@@ -195,6 +195,7 @@ static void compute_errors_are_named(void** state)
     assert_names(cw_wear_last_error(w), "solver");
     assert_int_equal(cw_wear_compute(w, s, NULL, NULL), CW_ERR_NULL_POINTER);
     assert_names(cw_wear_last_error(w), "params");
+    cw_wear_destroy(w);
     assert_int_equal(cw_wear_create(NULL, &w), CW_ERR_NULL_POINTER); /* w now NULL */
     assert_null(w);
     assert_int_equal(cw_wear_create(s, NULL), CW_ERR_NULL_POINTER);
