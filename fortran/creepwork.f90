@@ -7,13 +7,15 @@
 !   * private bind(C) interfaces to every function of the C ABI (assumed-size
 !     buffers followed by their c_size_t length, by value);
 !   * the C structs as bind(C) derived types cw_grid, cw_params, cw_result,
-!     cw_accumulation (struct_size first; fill them with cw_grid_init etc.);
+!     cw_accumulation, cw_wear_params, cw_wear_result, cw_wear_profile_totals
+!     (struct_size first; fill them with cw_grid_init etc.);
 !   * every status code and #define of the header as a named constant,
 !     generated from the header at build time (creepwork_constants.inc);
 !   * public wrapper types that own a C handle: cw_solver_type,
-!     cw_accumulator_type, cw_batch_type. Each has an explicit, idempotent
-!     destroy; the final procedure is only a safety net (gfortran 12 does not
-!     finalize reliably) and copying a live handle is an error.
+!     cw_accumulator_type, cw_batch_type, cw_wear_type, cw_wear_profile_type.
+!     Each has an explicit, idempotent destroy; the final procedure is only
+!     a safety net (gfortran 12 does not finalize reliably) and copying a
+!     live handle is an error.
 !
 ! Conventions (as in the header)
 !   Units    consistent, SI recommended: m, N, Pa, 1/m; work in J/m.
@@ -483,6 +485,303 @@ module creepwork
          type(c_ptr), value :: s
          integer(c_size_t) :: n
       end function c_strlen
+   end interface
+
+   ! ================================================================ wear
+   ! Wear laws on the work map and wear accumulated on a profile grid
+   ! (header section "wear", README "Wear"). A pass is one axle passage
+   ! (rail) or one wheel revolution (wheel); depths per pass [m].
+
+   ! Wear law and its coefficients (cw_wear_params), SI units. Call
+   ! cw_wear_params_init first: defaults USFD R8T/900A, energy-consistent map.
+   type, bind(c), public :: cw_wear_params
+      integer(c_size_t) :: struct_size = 0
+      integer(c_int) :: law = 0               ! CW_WEAR_USFD or CW_WEAR_ARCHARD_KTH
+      integer(c_int) :: source = 0            ! CW_WEAR_SOURCE_CONSISTENT, _PAPER, _SLIP
+      real(c_double) :: density = 0           ! [kg/m^3]
+      real(c_double) :: rolling_speed = 0     ! V [m/s], Archard (> 0 there)
+      real(c_double) :: pass_length = 0       ! rolled distance of a pass [m] (mass per pass)
+      real(c_double) :: usfd_k1 = 0, usfd_t1 = 0, usfd_k2 = 0 ! [kg/(N m)], [Pa], [kg/m^3]
+      real(c_double) :: usfd_t2 = 0, usfd_k3 = 0, usfd_c3 = 0 ! [Pa], [kg/(N m)], [kg/m^3]
+      real(c_double) :: hardness = 0          ! H [Pa]
+      real(c_double) :: kth_v1 = 0, kth_v2 = 0 ! [m/s]
+      real(c_double) :: kth_seizure_ratio = 0 ! seizure above ratio * H
+      real(c_double) :: kth_k_seizure = 0, kth_k_slow = 0, kth_k_severe = 0, kth_k_fast = 0
+   end type cw_wear_params
+
+   ! Totals of one contact's wear (cw_wear_result).
+   type, bind(c), public :: cw_wear_result
+      integer(c_size_t) :: struct_size = 0
+      real(c_double) :: mass_per_distance = 0   ! [kg/m]
+      real(c_double) :: mass_per_pass = 0       ! [kg]
+      real(c_double) :: volume_per_distance = 0 ! [m^3/m]
+      real(c_double) :: max_depth = 0           ! largest strip depth per pass [m]
+      real(c_double) :: work = 0                ! frictional work used [J/m]
+      real(c_double) :: regime_area(4) = 0      ! [m^2] in regime 1..4
+      integer(c_int) :: law = 0, source = 0
+   end type cw_wear_result
+
+   ! Totals of a profile accumulator (cw_wear_profile_totals).
+   type, bind(c), public :: cw_wear_profile_totals
+      integer(c_size_t) :: struct_size = 0
+      real(c_double) :: passes = 0       ! passes added
+      real(c_double) :: volume = 0       ! worn cross-section added [m^2]
+      real(c_double) :: volume_lost = 0  ! part of it outside the grid [m^2]
+      integer(c_int64_t) :: adds = 0
+   end type cw_wear_profile_totals
+
+   ! Owns one cw_wear: the wear of a solved contact, for one solver grid.
+   type, public :: cw_wear_type
+      private
+      type(c_ptr) :: handle = c_null_ptr
+      integer :: nx = 0, ny = 0
+   contains
+      procedure :: create => wear_create
+      procedure :: destroy => wear_destroy
+      procedure :: is_created => wear_is_created
+      procedure :: compute => wear_compute
+      procedure, private :: wear_get_field_2d, wear_get_field_1d
+      generic :: get_field => wear_get_field_2d, wear_get_field_1d
+      procedure, private :: wear_get_regimes_2d, wear_get_regimes_1d
+      generic :: get_regimes => wear_get_regimes_2d, wear_get_regimes_1d
+      procedure :: get_strips => wear_get_strips
+      procedure :: get_result => wear_get_result
+      procedure :: last_error => wear_last_error
+      procedure, private :: wear_assign
+      generic :: assignment(=) => wear_assign
+      final :: wear_finalize
+   end type cw_wear_type
+
+   ! Owns one cw_wear_profile: wear depth accumulated on a profile grid.
+   type, public :: cw_wear_profile_type
+      private
+      type(c_ptr) :: handle = c_null_ptr
+      integer :: n = 0
+   contains
+      procedure :: create => profile_create
+      procedure :: destroy => profile_destroy
+      procedure :: is_created => profile_is_created
+      procedure :: reset => profile_reset
+      procedure :: add => profile_add
+      procedure :: add_strips => profile_add_strips
+      procedure :: get_depth => profile_get_depth
+      procedure :: get_totals => profile_get_totals
+      procedure :: merge => profile_merge
+      procedure :: state_size => profile_state_size
+      procedure :: get_state => profile_get_state
+      procedure :: add_state => profile_add_state
+      procedure :: last_error => profile_last_error
+      procedure, private :: profile_assign
+      generic :: assignment(=) => profile_assign
+      final :: profile_finalize
+   end type cw_wear_profile_type
+
+   public :: cw_wear_params_init, cw_wear_result_init, cw_wear_profile_totals_init
+   public :: cw_wear_profile_update
+
+   interface
+      function capi_wear_params_init(params) bind(c, name='cw_wear_params_init') result(status)
+         import :: c_int, cw_wear_params
+         type(cw_wear_params), intent(inout) :: params
+         integer(c_int) :: status
+      end function capi_wear_params_init
+
+      function capi_wear_result_init(result) bind(c, name='cw_wear_result_init') result(status)
+         import :: c_int, cw_wear_result
+         type(cw_wear_result), intent(inout) :: result
+         integer(c_int) :: status
+      end function capi_wear_result_init
+
+      function capi_wear_create(solver, wear) bind(c, name='cw_wear_create') result(status)
+         import :: c_int, c_ptr
+         type(c_ptr), value :: solver
+         type(c_ptr), intent(out) :: wear
+         integer(c_int) :: status
+      end function capi_wear_create
+
+      function capi_wear_destroy(wear) bind(c, name='cw_wear_destroy') result(status)
+         import :: c_int, c_ptr
+         type(c_ptr), value :: wear
+         integer(c_int) :: status
+      end function capi_wear_destroy
+
+      function capi_wear_compute(wear, solver, params, result) bind(c, name='cw_wear_compute') &
+         result(status)
+         import :: c_int, c_ptr, cw_wear_params
+         type(c_ptr), value :: wear, solver
+         type(cw_wear_params), intent(in) :: params
+         type(c_ptr), value :: result ! cw_wear_result*, may be NULL
+         integer(c_int) :: status
+      end function capi_wear_compute
+
+      function capi_wear_get_field(wear, field, out, out_len) bind(c, name='cw_wear_get_field') &
+         result(status)
+         import :: c_int, c_ptr, c_double, c_size_t
+         type(c_ptr), value :: wear
+         integer(c_int), value :: field
+         real(c_double), intent(inout) :: out(*)
+         integer(c_size_t), value :: out_len
+         integer(c_int) :: status
+      end function capi_wear_get_field
+
+      function capi_wear_get_regimes(wear, out, out_len) bind(c, name='cw_wear_get_regimes') &
+         result(status)
+         import :: c_int, c_ptr, c_size_t
+         type(c_ptr), value :: wear
+         integer(c_int), intent(inout) :: out(*)
+         integer(c_size_t), value :: out_len
+         integer(c_int) :: status
+      end function capi_wear_get_regimes
+
+      function capi_wear_get_strips(wear, y, width, depth, parabola, len) &
+         bind(c, name='cw_wear_get_strips') result(status)
+         import :: c_int, c_ptr, c_size_t
+         type(c_ptr), value :: wear
+         type(c_ptr), value :: y, width, depth, parabola ! double*, each may be NULL
+         integer(c_size_t), value :: len
+         integer(c_int) :: status
+      end function capi_wear_get_strips
+
+      function capi_wear_get_result(wear, result) bind(c, name='cw_wear_get_result') &
+         result(status)
+         import :: c_int, c_ptr, cw_wear_result
+         type(c_ptr), value :: wear
+         type(cw_wear_result), intent(inout) :: result
+         integer(c_int) :: status
+      end function capi_wear_get_result
+
+      function capi_wear_last_error(wear) bind(c, name='cw_wear_last_error') result(s)
+         import :: c_ptr
+         type(c_ptr), value :: wear
+         type(c_ptr) :: s
+      end function capi_wear_last_error
+
+      function capi_wear_profile_totals_init(totals) &
+         bind(c, name='cw_wear_profile_totals_init') result(status)
+         import :: c_int, cw_wear_profile_totals
+         type(cw_wear_profile_totals), intent(inout) :: totals
+         integer(c_int) :: status
+      end function capi_wear_profile_totals_init
+
+      function capi_wear_profile_create(s, n, profile, message, message_len) &
+         bind(c, name='cw_wear_profile_create') result(status)
+         import :: c_int, c_ptr, c_double, c_size_t, c_char
+         real(c_double), intent(in) :: s(*)
+         integer(c_size_t), value :: n
+         type(c_ptr), intent(out) :: profile
+         character(kind=c_char), intent(inout) :: message(*)
+         integer(c_size_t), value :: message_len
+         integer(c_int) :: status
+      end function capi_wear_profile_create
+
+      function capi_wear_profile_destroy(profile) bind(c, name='cw_wear_profile_destroy') &
+         result(status)
+         import :: c_int, c_ptr
+         type(c_ptr), value :: profile
+         integer(c_int) :: status
+      end function capi_wear_profile_destroy
+
+      function capi_wear_profile_reset(profile) bind(c, name='cw_wear_profile_reset') &
+         result(status)
+         import :: c_int, c_ptr
+         type(c_ptr), value :: profile
+         integer(c_int) :: status
+      end function capi_wear_profile_reset
+
+      function capi_wear_profile_add(profile, wear, s0, orientation, contact_angle, passes) &
+         bind(c, name='cw_wear_profile_add') result(status)
+         import :: c_int, c_ptr, c_double
+         type(c_ptr), value :: profile, wear
+         real(c_double), value :: s0
+         integer(c_int), value :: orientation
+         real(c_double), value :: contact_angle, passes
+         integer(c_int) :: status
+      end function capi_wear_profile_add
+
+      function capi_wear_profile_add_strips(profile, y, width, depth, count, s0, orientation, &
+                                            contact_angle, passes) &
+         bind(c, name='cw_wear_profile_add_strips') result(status)
+         import :: c_int, c_ptr, c_double, c_size_t
+         type(c_ptr), value :: profile
+         real(c_double), intent(in) :: y(*), width(*), depth(*)
+         integer(c_size_t), value :: count
+         real(c_double), value :: s0
+         integer(c_int), value :: orientation
+         real(c_double), value :: contact_angle, passes
+         integer(c_int) :: status
+      end function capi_wear_profile_add_strips
+
+      function capi_wear_profile_get_depth(profile, kind, out, out_len) &
+         bind(c, name='cw_wear_profile_get_depth') result(status)
+         import :: c_int, c_ptr, c_double, c_size_t
+         type(c_ptr), value :: profile
+         integer(c_int), value :: kind
+         real(c_double), intent(inout) :: out(*)
+         integer(c_size_t), value :: out_len
+         integer(c_int) :: status
+      end function capi_wear_profile_get_depth
+
+      function capi_wear_profile_get_totals(profile, totals) &
+         bind(c, name='cw_wear_profile_get_totals') result(status)
+         import :: c_int, c_ptr, cw_wear_profile_totals
+         type(c_ptr), value :: profile
+         type(cw_wear_profile_totals), intent(inout) :: totals
+         integer(c_int) :: status
+      end function capi_wear_profile_get_totals
+
+      function capi_wear_profile_merge(into, from) bind(c, name='cw_wear_profile_merge') &
+         result(status)
+         import :: c_int, c_ptr
+         type(c_ptr), value :: into, from
+         integer(c_int) :: status
+      end function capi_wear_profile_merge
+
+      function capi_wear_profile_state_size(profile, words) &
+         bind(c, name='cw_wear_profile_state_size') result(status)
+         import :: c_int, c_ptr, c_size_t
+         type(c_ptr), value :: profile
+         integer(c_size_t), intent(out) :: words
+         integer(c_int) :: status
+      end function capi_wear_profile_state_size
+
+      function capi_wear_profile_get_state(profile, state, len) &
+         bind(c, name='cw_wear_profile_get_state') result(status)
+         import :: c_int, c_ptr, c_int64_t, c_size_t
+         type(c_ptr), value :: profile
+         integer(c_int64_t), intent(inout) :: state(*)
+         integer(c_size_t), value :: len
+         integer(c_int) :: status
+      end function capi_wear_profile_get_state
+
+      function capi_wear_profile_add_state(profile, state, len) &
+         bind(c, name='cw_wear_profile_add_state') result(status)
+         import :: c_int, c_ptr, c_int64_t, c_size_t
+         type(c_ptr), value :: profile
+         integer(c_int64_t), intent(in) :: state(*)
+         integer(c_size_t), value :: len
+         integer(c_int) :: status
+      end function capi_wear_profile_add_state
+
+      function capi_wear_profile_last_error(profile) bind(c, name='cw_wear_profile_last_error') &
+         result(s)
+         import :: c_ptr
+         type(c_ptr), value :: profile
+         type(c_ptr) :: s
+      end function capi_wear_profile_last_error
+
+      function capi_wear_profile_update(s, old_profile, depth, n, smoothing, new_profile, &
+                                        new_len, message, message_len) &
+         bind(c, name='cw_wear_profile_update') result(status)
+         import :: c_int, c_double, c_size_t, c_char
+         real(c_double), intent(in) :: s(*), old_profile(*), depth(*)
+         integer(c_size_t), value :: n
+         real(c_double), value :: smoothing
+         real(c_double), intent(inout) :: new_profile(*)
+         integer(c_size_t), value :: new_len
+         character(kind=c_char), intent(inout) :: message(*)
+         integer(c_size_t), value :: message_len
+         integer(c_int) :: status
+      end function capi_wear_profile_update
    end interface
 
 contains
@@ -1287,5 +1586,532 @@ contains
       type(cw_batch_type), intent(inout) :: self
       call self%destroy()
    end subroutine batch_finalize
+
+   ! ================================================================ wear
+
+   ! Defaults and struct_size: USFD (Braghin et al. 2006, R8T/900A) on the
+   ! energy-consistent map, steel density, pass_length 1 m; KTH map values.
+   subroutine cw_wear_params_init(params)
+      type(cw_wear_params), intent(out) :: params
+      integer(c_int) :: status
+      status = capi_wear_params_init(params)
+   end subroutine cw_wear_params_init
+
+   ! Zeroes and sets struct_size.
+   subroutine cw_wear_result_init(result)
+      type(cw_wear_result), intent(out) :: result
+      integer(c_int) :: status
+      status = capi_wear_result_init(result)
+   end subroutine cw_wear_result_init
+
+   ! Zeroes and sets struct_size.
+   subroutine cw_wear_profile_totals_init(totals)
+      type(cw_wear_profile_totals), intent(out) :: totals
+      integer(c_int) :: status
+      status = capi_wear_profile_totals_init(totals)
+   end subroutine cw_wear_profile_totals_init
+
+   ! Creates the wear workspace for the grid of solver (destroying a
+   ! previous one).
+   subroutine wear_create(self, solver, stat, errmsg)
+      class(cw_wear_type), intent(inout) :: self
+      class(cw_solver_type), intent(in) :: solver
+      integer, intent(out), optional :: stat
+      character(len=:), allocatable, intent(out), optional :: errmsg
+      type(outcome) :: o
+      call self%destroy()
+      if (.not. c_associated(solver%handle)) then
+         o = not_created('solver')
+      else
+         o = make_outcome(capi_wear_create(solver%handle, self%handle), '')
+         if (o%status == CW_OK) then
+            self%nx = solver%nx
+            self%ny = solver%ny
+         end if
+      end if
+      if (present(errmsg)) errmsg = error_text(o)
+      call deliver(o, stat)
+   end subroutine wear_create
+
+   subroutine wear_destroy(self)
+      class(cw_wear_type), intent(inout) :: self
+      integer(c_int) :: status
+      if (c_associated(self%handle)) status = capi_wear_destroy(self%handle)
+      self%handle = c_null_ptr
+      self%nx = 0
+      self%ny = 0
+   end subroutine wear_destroy
+
+   logical function wear_is_created(self)
+      class(cw_wear_type), intent(in) :: self
+      wear_is_created = c_associated(self%handle)
+   end function wear_is_created
+
+   function wear_outcome(self, status) result(o)
+      class(cw_wear_type), intent(in) :: self
+      integer(c_int), intent(in) :: status
+      type(outcome) :: o
+      if (status == CW_OK) then
+         o = make_outcome(status, '')
+      else
+         o = make_outcome(status, f_string(capi_wear_last_error(self%handle)))
+      end if
+   end function wear_outcome
+
+   ! The wear of solver's last CW_SOLVE_FULL solve. params (default: the
+   ! defaults of cw_wear_params_init) and result are optional; an
+   ! uninitialised result (struct_size 0) is initialised first.
+   subroutine wear_compute(self, solver, params, result, stat, errmsg)
+      class(cw_wear_type), intent(inout) :: self
+      class(cw_solver_type), intent(in) :: solver
+      type(cw_wear_params), intent(in), optional :: params
+      type(cw_wear_result), intent(inout), target, optional :: result
+      integer, intent(out), optional :: stat
+      character(len=:), allocatable, intent(out), optional :: errmsg
+      type(cw_wear_params) :: p
+      type(c_ptr) :: pr
+      type(outcome) :: o
+      if (.not. c_associated(self%handle)) then
+         o = not_created('wear')
+      else if (.not. c_associated(solver%handle)) then
+         o = not_created('solver')
+      else
+         if (present(params)) then
+            p = params
+         else
+            call cw_wear_params_init(p)
+         end if
+         pr = c_null_ptr
+         if (present(result)) then
+            if (result%struct_size == 0) call cw_wear_result_init(result)
+            pr = c_loc(result)
+         end if
+         o = wear_outcome(self, capi_wear_compute(self%handle, solver%handle, p, pr))
+      end if
+      if (present(errmsg)) errmsg = error_text(o)
+      call deliver(o, stat)
+   end subroutine wear_compute
+
+   ! A CW_WEAR_FIELD_* of the last compute into out(nx, ny).
+   subroutine wear_get_field_2d(self, field, out, stat, errmsg)
+      class(cw_wear_type), intent(in) :: self
+      integer, intent(in) :: field
+      real(c_double), intent(inout), contiguous :: out(:, :)
+      integer, intent(out), optional :: stat
+      character(len=:), allocatable, intent(out), optional :: errmsg
+      type(outcome) :: o
+      if (.not. c_associated(self%handle)) then
+         o = not_created('wear')
+      else
+         o = map_shape(size(out, 1), size(out, 2), self%nx, self%ny)
+         if (o%status == CW_OK) &
+            o = wear_outcome(self, capi_wear_get_field(self%handle, int(field, c_int), out, &
+                                                       size(out, kind=c_size_t)))
+      end if
+      if (present(errmsg)) errmsg = error_text(o)
+      call deliver(o, stat)
+   end subroutine wear_get_field_2d
+
+   subroutine wear_get_field_1d(self, field, out, stat, errmsg)
+      class(cw_wear_type), intent(in) :: self
+      integer, intent(in) :: field
+      real(c_double), intent(inout), contiguous :: out(:)
+      integer, intent(out), optional :: stat
+      character(len=:), allocatable, intent(out), optional :: errmsg
+      type(outcome) :: o
+      if (.not. c_associated(self%handle)) then
+         o = not_created('wear')
+      else
+         o = wear_outcome(self, capi_wear_get_field(self%handle, int(field, c_int), out, &
+                                                    size(out, kind=c_size_t)))
+      end if
+      if (present(errmsg)) errmsg = error_text(o)
+      call deliver(o, stat)
+   end subroutine wear_get_field_1d
+
+   ! CW_WEAR_REGIME_* per element into out(nx, ny).
+   subroutine wear_get_regimes_2d(self, out, stat, errmsg)
+      class(cw_wear_type), intent(in) :: self
+      integer(c_int), intent(inout), contiguous :: out(:, :)
+      integer, intent(out), optional :: stat
+      character(len=:), allocatable, intent(out), optional :: errmsg
+      type(outcome) :: o
+      if (.not. c_associated(self%handle)) then
+         o = not_created('wear')
+      else
+         o = map_shape(size(out, 1), size(out, 2), self%nx, self%ny)
+         if (o%status == CW_OK) &
+            o = wear_outcome(self, capi_wear_get_regimes(self%handle, out, size(out, kind=c_size_t)))
+      end if
+      if (present(errmsg)) errmsg = error_text(o)
+      call deliver(o, stat)
+   end subroutine wear_get_regimes_2d
+
+   subroutine wear_get_regimes_1d(self, out, stat, errmsg)
+      class(cw_wear_type), intent(in) :: self
+      integer(c_int), intent(inout), contiguous :: out(:)
+      integer, intent(out), optional :: stat
+      character(len=:), allocatable, intent(out), optional :: errmsg
+      type(outcome) :: o
+      if (.not. c_associated(self%handle)) then
+         o = not_created('wear')
+      else
+         o = wear_outcome(self, capi_wear_get_regimes(self%handle, out, size(out, kind=c_size_t)))
+      end if
+      if (present(errmsg)) errmsg = error_text(o)
+      call deliver(o, stat)
+   end subroutine wear_get_regimes_1d
+
+   ! The lateral wear profile per strip j = 1..ny: centre y [m], width [m],
+   ! depth per pass [m] and the equal-volume parabola [m]; each optional,
+   ! each at least ny long.
+   subroutine wear_get_strips(self, y, width, depth, parabola, stat, errmsg)
+      class(cw_wear_type), intent(in) :: self
+      real(c_double), intent(inout), contiguous, target, optional :: y(:), width(:), depth(:), &
+                                                                     parabola(:)
+      integer, intent(out), optional :: stat
+      character(len=:), allocatable, intent(out), optional :: errmsg
+      type(c_ptr) :: py, pw, pd, pp
+      integer(c_size_t) :: n
+      type(outcome) :: o
+      if (.not. c_associated(self%handle)) then
+         o = not_created('wear')
+      else
+         n = int(self%ny, c_size_t)
+         py = c_null_ptr
+         pw = c_null_ptr
+         pd = c_null_ptr
+         pp = c_null_ptr
+         if (present(y)) then
+            py = c_loc(y)
+            n = min(n, size(y, kind=c_size_t))
+         end if
+         if (present(width)) then
+            pw = c_loc(width)
+            n = min(n, size(width, kind=c_size_t))
+         end if
+         if (present(depth)) then
+            pd = c_loc(depth)
+            n = min(n, size(depth, kind=c_size_t))
+         end if
+         if (present(parabola)) then
+            pp = c_loc(parabola)
+            n = min(n, size(parabola, kind=c_size_t))
+         end if
+         o = wear_outcome(self, capi_wear_get_strips(self%handle, py, pw, pd, pp, n))
+      end if
+      if (present(errmsg)) errmsg = error_text(o)
+      call deliver(o, stat)
+   end subroutine wear_get_strips
+
+   ! Totals of the last compute; an uninitialised result is initialised first.
+   subroutine wear_get_result(self, result, stat, errmsg)
+      class(cw_wear_type), intent(in) :: self
+      type(cw_wear_result), intent(inout) :: result
+      integer, intent(out), optional :: stat
+      character(len=:), allocatable, intent(out), optional :: errmsg
+      type(outcome) :: o
+      if (.not. c_associated(self%handle)) then
+         o = not_created('wear')
+      else
+         if (result%struct_size == 0) call cw_wear_result_init(result)
+         o = wear_outcome(self, capi_wear_get_result(self%handle, result))
+      end if
+      if (present(errmsg)) errmsg = error_text(o)
+      call deliver(o, stat)
+   end subroutine wear_get_result
+
+   function wear_last_error(self) result(s)
+      class(cw_wear_type), intent(in) :: self
+      character(len=:), allocatable :: s
+      if (c_associated(self%handle)) then
+         s = f_string(capi_wear_last_error(self%handle))
+      else
+         s = 'the wear has not been created'
+      end if
+   end function wear_last_error
+
+   subroutine wear_assign(lhs, rhs)
+      class(cw_wear_type), intent(inout) :: lhs
+      class(cw_wear_type), intent(in) :: rhs
+      if (c_associated(rhs%handle)) &
+         error stop 'creepwork: a cw_wear_type cannot be copied (pass it by reference)'
+      call lhs%destroy()
+   end subroutine wear_assign
+
+   subroutine wear_finalize(self)
+      type(cw_wear_type), intent(inout) :: self
+      call self%destroy()
+   end subroutine wear_finalize
+
+   ! Creates a profile accumulator on the nodes s [m] (strictly increasing,
+   ! at least 2), destroying a previous one.
+   subroutine profile_create(self, s, stat, errmsg)
+      class(cw_wear_profile_type), intent(inout) :: self
+      real(c_double), intent(in), contiguous :: s(:)
+      integer, intent(out), optional :: stat
+      character(len=:), allocatable, intent(out), optional :: errmsg
+      character(kind=c_char) :: buffer(message_capacity)
+      type(outcome) :: o
+      call self%destroy()
+      buffer(1) = c_null_char
+      o = make_outcome(capi_wear_profile_create(s, size(s, kind=c_size_t), self%handle, buffer, &
+                                                size(buffer, kind=c_size_t)), buffer_string(buffer))
+      if (o%status == CW_OK) self%n = size(s)
+      if (present(errmsg)) errmsg = error_text(o)
+      call deliver(o, stat)
+   end subroutine profile_create
+
+   subroutine profile_destroy(self)
+      class(cw_wear_profile_type), intent(inout) :: self
+      integer(c_int) :: status
+      if (c_associated(self%handle)) status = capi_wear_profile_destroy(self%handle)
+      self%handle = c_null_ptr
+      self%n = 0
+   end subroutine profile_destroy
+
+   logical function profile_is_created(self)
+      class(cw_wear_profile_type), intent(in) :: self
+      profile_is_created = c_associated(self%handle)
+   end function profile_is_created
+
+   function profile_outcome(self, status) result(o)
+      class(cw_wear_profile_type), intent(in) :: self
+      integer(c_int), intent(in) :: status
+      type(outcome) :: o
+      if (status == CW_OK) then
+         o = make_outcome(status, '')
+      else
+         o = make_outcome(status, f_string(capi_wear_profile_last_error(self%handle)))
+      end if
+   end function profile_outcome
+
+   subroutine profile_reset(self, stat, errmsg)
+      class(cw_wear_profile_type), intent(inout) :: self
+      integer, intent(out), optional :: stat
+      character(len=:), allocatable, intent(out), optional :: errmsg
+      type(outcome) :: o
+      if (.not. c_associated(self%handle)) then
+         o = not_created('wear profile')
+      else
+         o = profile_outcome(self, capi_wear_profile_reset(self%handle))
+      end if
+      if (present(errmsg)) errmsg = error_text(o)
+      call deliver(o, stat)
+   end subroutine profile_reset
+
+   ! Adds passes (default 1) times the last compute of wear, its patch
+   ! centre at s0 [m]; orientation +1 (default) or -1, contact_angle [rad]
+   ! (default 0). See cw_wear_profile_add.
+   subroutine profile_add(self, wear, s0, orientation, contact_angle, passes, stat, errmsg)
+      class(cw_wear_profile_type), intent(inout) :: self
+      class(cw_wear_type), intent(in) :: wear
+      real(c_double), intent(in) :: s0
+      integer, intent(in), optional :: orientation
+      real(c_double), intent(in), optional :: contact_angle, passes
+      integer, intent(out), optional :: stat
+      character(len=:), allocatable, intent(out), optional :: errmsg
+      integer(c_int) :: ori
+      real(c_double) :: angle, n
+      type(outcome) :: o
+      ori = 1
+      angle = 0
+      n = 1
+      if (present(orientation)) ori = int(orientation, c_int)
+      if (present(contact_angle)) angle = contact_angle
+      if (present(passes)) n = passes
+      if (.not. c_associated(self%handle)) then
+         o = not_created('wear profile')
+      else if (.not. c_associated(wear%handle)) then
+         o = not_created('wear')
+      else
+         o = profile_outcome(self, capi_wear_profile_add(self%handle, wear%handle, s0, ori, &
+                                                         angle, n))
+      end if
+      if (present(errmsg)) errmsg = error_text(o)
+      call deliver(o, stat)
+   end subroutine profile_add
+
+   ! The same from the caller's strips y, width, depth (same size).
+   subroutine profile_add_strips(self, y, width, depth, s0, orientation, contact_angle, passes, &
+                                 stat, errmsg)
+      class(cw_wear_profile_type), intent(inout) :: self
+      real(c_double), intent(in), contiguous :: y(:), width(:), depth(:)
+      real(c_double), intent(in) :: s0
+      integer, intent(in), optional :: orientation
+      real(c_double), intent(in), optional :: contact_angle, passes
+      integer, intent(out), optional :: stat
+      character(len=:), allocatable, intent(out), optional :: errmsg
+      integer(c_int) :: ori
+      real(c_double) :: angle, n
+      type(outcome) :: o
+      ori = 1
+      angle = 0
+      n = 1
+      if (present(orientation)) ori = int(orientation, c_int)
+      if (present(contact_angle)) angle = contact_angle
+      if (present(passes)) n = passes
+      if (.not. c_associated(self%handle)) then
+         o = not_created('wear profile')
+      else if (size(width) /= size(y) .or. size(depth) /= size(y)) then
+         o = make_outcome(CW_ERR_INVALID_INPUT, 'y, width and depth have sizes '// &
+                          integer_text(size(y))//', '//integer_text(size(width))//', '// &
+                          integer_text(size(depth))//': they must be equal')
+      else
+         o = profile_outcome(self, capi_wear_profile_add_strips(self%handle, y, width, depth, &
+                                                                size(y, kind=c_size_t), s0, ori, &
+                                                                angle, n))
+      end if
+      if (present(errmsg)) errmsg = error_text(o)
+      call deliver(o, stat)
+   end subroutine profile_add_strips
+
+   ! Accumulated depth per node [m] (kind CW_WEAR_DEPTH_NORMAL or _HEIGHT).
+   subroutine profile_get_depth(self, kind, out, stat, errmsg)
+      class(cw_wear_profile_type), intent(in) :: self
+      integer, intent(in) :: kind
+      real(c_double), intent(inout), contiguous :: out(:)
+      integer, intent(out), optional :: stat
+      character(len=:), allocatable, intent(out), optional :: errmsg
+      type(outcome) :: o
+      if (.not. c_associated(self%handle)) then
+         o = not_created('wear profile')
+      else
+         o = profile_outcome(self, capi_wear_profile_get_depth(self%handle, int(kind, c_int), &
+                                                               out, size(out, kind=c_size_t)))
+      end if
+      if (present(errmsg)) errmsg = error_text(o)
+      call deliver(o, stat)
+   end subroutine profile_get_depth
+
+   subroutine profile_get_totals(self, totals, stat, errmsg)
+      class(cw_wear_profile_type), intent(in) :: self
+      type(cw_wear_profile_totals), intent(inout) :: totals
+      integer, intent(out), optional :: stat
+      character(len=:), allocatable, intent(out), optional :: errmsg
+      type(outcome) :: o
+      if (.not. c_associated(self%handle)) then
+         o = not_created('wear profile')
+      else
+         if (totals%struct_size == 0) call cw_wear_profile_totals_init(totals)
+         o = profile_outcome(self, capi_wear_profile_get_totals(self%handle, totals))
+      end if
+      if (present(errmsg)) errmsg = error_text(o)
+      call deliver(o, stat)
+   end subroutine profile_get_totals
+
+   ! self += from (same nodes), exactly.
+   subroutine profile_merge(self, from, stat, errmsg)
+      class(cw_wear_profile_type), intent(inout) :: self
+      class(cw_wear_profile_type), intent(in) :: from
+      integer, intent(out), optional :: stat
+      character(len=:), allocatable, intent(out), optional :: errmsg
+      type(outcome) :: o
+      if (.not. c_associated(self%handle)) then
+         o = not_created('wear profile')
+      else if (.not. c_associated(from%handle)) then
+         o = not_created('wear profile from')
+      else
+         o = profile_outcome(self, capi_wear_profile_merge(self%handle, from%handle))
+      end if
+      if (present(errmsg)) errmsg = error_text(o)
+      call deliver(o, stat)
+   end subroutine profile_merge
+
+   ! Number of 64-bit words of the exact state (0 if not created).
+   integer function profile_state_size(self)
+      class(cw_wear_profile_type), intent(in) :: self
+      integer(c_size_t) :: words
+      integer(c_int) :: status
+      profile_state_size = 0
+      if (c_associated(self%handle)) then
+         status = capi_wear_profile_state_size(self%handle, words)
+         if (status == CW_OK) profile_state_size = int(words)
+      end if
+   end function profile_state_size
+
+   ! The exact state into state(1:state_size()), e.g. for MPI.
+   subroutine profile_get_state(self, state, stat, errmsg)
+      class(cw_wear_profile_type), intent(in) :: self
+      integer(c_int64_t), intent(inout), contiguous :: state(:)
+      integer, intent(out), optional :: stat
+      character(len=:), allocatable, intent(out), optional :: errmsg
+      type(outcome) :: o
+      if (.not. c_associated(self%handle)) then
+         o = not_created('wear profile')
+      else
+         o = profile_outcome(self, capi_wear_profile_get_state(self%handle, state, &
+                                                               size(state, kind=c_size_t)))
+      end if
+      if (present(errmsg)) errmsg = error_text(o)
+      call deliver(o, stat)
+   end subroutine profile_get_state
+
+   ! Adds a state saved from an accumulator on the same nodes.
+   subroutine profile_add_state(self, state, stat, errmsg)
+      class(cw_wear_profile_type), intent(inout) :: self
+      integer(c_int64_t), intent(in), contiguous :: state(:)
+      integer, intent(out), optional :: stat
+      character(len=:), allocatable, intent(out), optional :: errmsg
+      type(outcome) :: o
+      if (.not. c_associated(self%handle)) then
+         o = not_created('wear profile')
+      else
+         o = profile_outcome(self, capi_wear_profile_add_state(self%handle, state, &
+                                                               size(state, kind=c_size_t)))
+      end if
+      if (present(errmsg)) errmsg = error_text(o)
+      call deliver(o, stat)
+   end subroutine profile_add_state
+
+   function profile_last_error(self) result(s)
+      class(cw_wear_profile_type), intent(in) :: self
+      character(len=:), allocatable :: s
+      if (c_associated(self%handle)) then
+         s = f_string(capi_wear_profile_last_error(self%handle))
+      else
+         s = 'the wear profile has not been created'
+      end if
+   end function profile_last_error
+
+   subroutine profile_assign(lhs, rhs)
+      class(cw_wear_profile_type), intent(inout) :: lhs
+      class(cw_wear_profile_type), intent(in) :: rhs
+      if (c_associated(rhs%handle)) &
+         error stop 'creepwork: a cw_wear_profile_type cannot be copied (pass it by reference)'
+      call lhs%destroy()
+   end subroutine profile_assign
+
+   subroutine profile_finalize(self)
+      type(cw_wear_profile_type), intent(inout) :: self
+      call self%destroy()
+   end subroutine profile_finalize
+
+   ! new_profile = old_profile - smooth(depth) on the nodes s (all the same
+   ! size; new_profile a separate array), smoothing [m] the standard
+   ! deviation of the volume-conserving Gaussian (0: none).
+   subroutine cw_wear_profile_update(s, old_profile, depth, smoothing, new_profile, stat, errmsg)
+      real(c_double), intent(in), contiguous :: s(:), old_profile(:), depth(:)
+      real(c_double), intent(in) :: smoothing
+      real(c_double), intent(inout), contiguous :: new_profile(:)
+      integer, intent(out), optional :: stat
+      character(len=:), allocatable, intent(out), optional :: errmsg
+      character(kind=c_char) :: buffer(message_capacity)
+      type(outcome) :: o
+      if (size(old_profile) /= size(s) .or. size(depth) /= size(s)) then
+         o = make_outcome(CW_ERR_INVALID_INPUT, 's, old_profile and depth have sizes '// &
+                          integer_text(size(s))//', '//integer_text(size(old_profile))//', '// &
+                          integer_text(size(depth))//': they must be equal')
+      else
+         buffer(1) = c_null_char
+         o = make_outcome(capi_wear_profile_update(s, old_profile, depth, size(s, kind=c_size_t), &
+                                                   smoothing, new_profile, &
+                                                   size(new_profile, kind=c_size_t), buffer, &
+                                                   size(buffer, kind=c_size_t)), &
+                          buffer_string(buffer))
+      end if
+      if (present(errmsg)) errmsg = error_text(o)
+      call deliver(o, stat)
+   end subroutine cw_wear_profile_update
 
 end module creepwork

@@ -37,6 +37,13 @@ CORE = [
     "cli_fit_fig6_reproduces_the_paper",
 ]
 
+# Wear: the tests that check it against closed forms, published values and
+# the C ABI, the Fortran layers and the CLI.
+WEAR = [
+    "test_core_wear", "test_capi_wear", "test_fortran_wear", "cli_wear_matches_library",
+    "cli_wear_wheel_distance", "example_wear_loop_f77", "example_c_wear_quickstart",
+]
+
 # One entry per mutant: file, the exact text of one line (or a unique part of
 # it) and its replacement, the candidate tests, and tests that must be among
 # the catchers ("require"). Add the exact and calibrated models' mutants here
@@ -77,6 +84,29 @@ MUTANTS = [
          new="        if (result) write_struct(result, to_result(t)); __builtin_printf(\"K %g\\n\", t.K);",
          tests=["test_robustness_silent", "test_capi_solver", "cli_json_matches_library"],
          min_caught=1),  # only the silent test can see output: one catcher is all there is
+    # Wear (issue 11): the laws, the depth of a pass, the remap, the exact sums
+    # and the update helper, against closed forms and published values.
+    dict(id="usfd-plateau-end", what="USFD's severe plateau ends before 77.2 N/mm^2",
+         file="core/work/wear_law.hpp", old="    if (t <= c.t2) {", new="    if (t < c.t2) {",
+         tests=WEAR),
+    dict(id="wear-depth-width", what="depth per pass divided by the semi-axis, not the strip width",
+         file="core/work/wear_map.cpp",
+         old="const double to_depth = quotient_if_positive(1.0, rho * dy);",
+         new="const double to_depth = quotient_if_positive(1.0, rho * in.b);", tests=WEAR),
+    dict(id="wear-archard-sliding", what="Archard's sliding taken as T/A instead of T/(A |p|)",
+         file="core/work/wear_map.cpp",
+         old="s = quotient_if_positive(tga, magnitude(px, py));", new="s = tga;", tests=WEAR),
+    dict(id="remap-height", what="height depth multiplied by cos(gamma) instead of divided",
+         file="core/work/wear_profile.cpp",
+         old="height_[k].add_product(passes, c / cosg);",
+         new="height_[k].add_product(passes, c * cosg);", tests=WEAR),
+    dict(id="exact-top-word", what="the exact accumulator drops a product's third word",
+         file="core/work/exact_sum.cpp", old="    parts[2] = r ? hi >> (64 - r) : 0;",
+         new="    parts[2] = 0;", tests=WEAR),
+    dict(id="smoothing-volume", what="the update's smoothing forgets the source cell's width",
+         file="core/work/wear_profile.cpp",
+         old="coef[m] = depth[m] * widths[m] / Z;", new="coef[m] = depth[m] * widths[0] / Z;",
+         tests=WEAR),
 ]
 
 

@@ -7,11 +7,13 @@ namespace cwcli {
 int command_solve(int argc, char** argv, int first);
 int command_sweep(int argc, char** argv, int first);
 int command_fit_fig6(int argc, char** argv, int first);
+int command_wear(int argc, char** argv, int first);
 
 // Usage texts (usage.cpp).
 const char* usage_main();
 const char* usage_solve();
 const char* usage_sweep();
 const char* usage_fit_fig6();
+const char* usage_wear();
 
 } // namespace cwcli

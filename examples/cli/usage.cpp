@@ -17,6 +17,9 @@ commands:
   sweep      slip/adhesion maps for series of creepages (the paper's Figs. 2-5)
   fit-fig6   reproduce the paper's Figs. 6 and 7: fit the semi-axis to the
              printed forces, print the comparison, write the pictures
+  wear       wear loop over a CSV of contact states: USFD or Archard wear
+             accumulated on the rail or wheel profile, and the same with the
+             paper's parabola assumption, as CSV and a picture
   --version  program and library versions
 
 exit status: 0 success, 1 environment failure (cannot write, gnuplot failed),
@@ -206,6 +209,90 @@ profile.csv, result.json in each), --force, --no-plots, --plot-sign
 wheel|rail (default rail: the comparison above is on the rail, as the paper
 prints it; the CSV and JSON files give the wheel's), --plot-axes
 normalised|physical.
+)";
+}
+
+const char* usage_wear()
+{
+    return R"(usage: creepwork wear --in STATES.csv --out DIR [options]
+
+A wear loop: each contact state of STATES.csv is solved, its wear computed
+element by element from the frictional work (README "Wear"), and its lateral
+wear profile added, the state's number of passes times, to a profile grid at
+the state's position s0. The same is done with the paper's assumption that
+the work (and so the wear) is spread laterally as a parabola (Figs. 8-9):
+the same worn volume per pass, (3V/4b)(1 - y^2/b^2) over [-b, b].
+A pass is one passage of the body's material through the contact: an axle
+passage for the rail, a wheel revolution for the wheel.
+
+STATES.csv: a header line naming the columns (any order; '#' lines and
+blank lines are skipped), then one state per line, SI units:
+  s0             profile coordinate of the patch centre [m]       required
+  a, b           semi-axes along x (rolling) and y [m]            required
+  N              normal force [N]                                 required
+  xi_x, xi_y     creepages [-]                                    default 0
+  spin           spin creepage [1/m]                              default 0
+  contact_angle  angle of the contact plane to the s axis [rad]   default 0
+                 (0: s runs along the surface; else s is the lateral
+                 coordinate and depths are also given vertically/radially)
+  passes         passes this state stands for: axle passages (rail),
+                 wheel revolutions (wheel)
+  distance       instead of passes, --body wheel only: rolled distance [m],
+                 passes = distance / (2 pi R) (needs --wheel-radius)
+  mu             friction coefficient [-]                         default --mu
+  model          fastsim (default), exact or calibrated (the models this
+                 library holds; exact needs --grid uniform)
+Every state needs passes (or, for a wheel, distance). Values the library
+accepts but a wheel-rail contact never has (a = 7.2 m, N = 80 for 80 kN,
+a contact angle of 70 read as radians) are warned about on stderr, naming the
+line and column.
+
+wear law:
+  --law usfd|archard
+                    usfd (default): Braghin et al., Wear 261 (2006): wear
+                    rate 5.3 T/A, 55.0, 61.9 T/A - 4778.7 ug/(m mm^2) below
+                    10.4, to 77.2, above 77.2 N/mm^2 (R8T/900A);
+                    archard: k N s / H with k from the KTH map (Jendel,
+                    Wear 253 (2002)): needs --speed
+  --source consistent|paper|slip
+                    the frictional work fed to the law: the energy-
+                    consistent map (default), the paper's eq. 36 map, or the
+                    model's traction x micro-slip
+  --speed V         rolling speed [m/s] (Archard's sliding velocity)
+  --density RHO     [kg/m^3], default 7800
+  --hardness H      Archard: [Pa], default 2.5e9
+  --body rail|wheel default rail; mass per metre of rail
+  --wheel-radius R  [m], --body wheel: passes from distance, mass per wheel
+  --orientation +1|-1
+                    +1 (default): s grows with the contact's y
+contact: --mu --G --nu (defaults 0.3, 82e9 Pa, 0.28) --pressure
+  parabolic|elliptic; grid: --grid strips|uniform --nx --ny --box-scale
+  (default Kalker strips 20 x 20)
+profile grid: --profile-from S --profile-to S --profile-step DS [m]
+  (default: every patch s0 -+ b plus 20 %, spacing a quarter of the
+  narrowest strip)
+output: --out DIR (required; all or nothing), --force, --no-plots,
+  --format text|json (the summary on stdout)
+
+files in DIR:
+  wear_profile.csv  k,s_m,depth_normal_m,depth_height_m,
+                    parabola_depth_normal_m,parabola_depth_height_m:
+                    accumulated depth at each node, normal to the surface
+                    and along the profile's height axis (vertical on a rail,
+                    radial on a wheel: normal / cos(contact angle))
+  states.csv        one row per state: line,s0_m,a_m,b_m,N_N,xi_x,xi_y,
+                    spin_per_m,contact_angle_rad,passes,Fx_wheel_N,
+                    Fy_wheel_N,W_macro_J_per_m,work_J_per_m,
+                    mass_per_distance_kg_per_m,mass_per_pass_kg,
+                    max_depth_per_pass_m,area_regime1_m2..area_regime4_m2
+  summary.json      body law source states nodes passes volume_m2
+                    volume_lost_m2 mass_kg peak_depth_height_m peak_s_m
+                    parabola_peak_depth_height_m parabola_peak_s_m mass_per
+  wear.png          both depth profiles over s (gnuplot/ holds the script)
+
+example (two states of one rail section, 500 axle passages each):
+  printf 's0,a,b,N,xi_x,spin,passes\n0.002,6e-3,4e-3,60e3,1e-3,0.5,500\n-0.003,6e-3,4e-3,60e3,-1e-3,2.0,500\n' > s.csv
+  creepwork wear --in s.csv --out wear-out
 )";
 }
 

@@ -3,7 +3,9 @@
 // struct sizes and enumerations), buffer lengths (short, exact, long, NULL)
 // and a sequence of calls: create, solve, get result/fields/state/profile,
 // accumulator create/add/get/reset/destroy, batch create/solve/destroy,
-// the free functions, destroy and reuse after errors. It checks the
+// the free functions, destroy and reuse after errors, and the wear calls
+// (cw_wear_* on the session's solver, cw_wear_profile_* with decoded nodes,
+// strips and placements, state round trips, the update helper). It checks the
 // contract of creepwork.h after every call:
 //  - every status is one of the listed codes, and it is CW_OK exactly when
 //    no documented error applies;
@@ -820,14 +822,333 @@ void op_destroy_solver(Session& z)
     z.ny = 0;
 }
 
+// ------------------------------------------------------------------- wear
+
+// Wear handles and profiles of a session (the solver's grid when made).
+struct WearSession {
+    cw_wear* wear = nullptr;
+    cw_grid wear_grid{};
+    bool computed = false; // shadow of the handle's "holds a wear"
+    cw_wear_profile* profile = nullptr;
+    std::vector<double> nodes;
+    ~WearSession()
+    {
+        cw_wear_destroy(wear);
+        cw_wear_profile_destroy(profile);
+    }
+};
+
+// x as the library sees it: every call flushes subnormal inputs to zero
+// (header, "Floating point").
+double as_seen(double x) { return std::fabs(x) < DBL_MIN ? 0.0 * x : x; }
+
+// Nodes valid for cw_wear_profile_create (header: n >= 2, finite, within
+// +-1e6 m, strictly increasing).
+bool nodes_valid(const std::vector<double>& s)
+{
+    if (s.size() < 2) return false;
+    for (size_t k = 0; k < s.size(); ++k) {
+        if (!std::isfinite(s[k]) || std::fabs(s[k]) > 1e6) return false;
+        if (k && !(as_seen(s[k]) > as_seen(s[k - 1]))) return false;
+    }
+    return true;
+}
+
+std::vector<double> decode_nodes(Bytes& in)
+{
+    const uint8_t how = in.u8();
+    const size_t n = how % 40;
+    std::vector<double> s(n);
+    if (how < 200) { // a plausible profile: spacing 0.1 .. 2 mm around 0
+        const double step = (1 + in.u8() % 20) * 1e-4;
+        for (size_t k = 0; k < n; ++k) s[k] = -0.01 + step * static_cast<double>(k);
+    } else {
+        for (double& v : s) v = in.number();
+    }
+    return s;
+}
+
+// Depths of the profile, bitwise, or empty without one.
+std::vector<double> depths(const WearSession& w)
+{
+    if (!w.profile) return {};
+    std::vector<double> d(2 * w.nodes.size());
+    FUZZ_CHECK(cw_wear_profile_get_depth(w.profile, CW_WEAR_DEPTH_NORMAL, d.data(),
+                                         w.nodes.size()) == CW_OK);
+    FUZZ_CHECK(cw_wear_profile_get_depth(w.profile, CW_WEAR_DEPTH_HEIGHT,
+                                         d.data() + w.nodes.size(), w.nodes.size()) == CW_OK);
+    return d;
+}
+
+void check_wear_values(Session& z, WearSession& w, const cw_wear_result& r)
+{
+    const size_t n = static_cast<size_t>(w.wear_grid.nx) * w.wear_grid.ny;
+    const double t[] = {r.mass_per_distance, r.mass_per_pass, r.volume_per_distance,
+                        r.max_depth, r.work, r.regime_area[0], r.regime_area[1],
+                        r.regime_area[2], r.regime_area[3]};
+    FUZZ_CHECK(all_finite(t, 9));
+    for (double v : t) FUZZ_CHECK(v >= 0.0);
+    std::vector<double> rate(n), area(n);
+    FUZZ_CHECK(cw_wear_get_field(w.wear, CW_WEAR_FIELD_RATE, rate.data(), n) == CW_OK);
+    FUZZ_CHECK(cw_solver_get_field(z.solver, CW_FIELD_AREA, area.data(), n) == CW_OK);
+    double mass = 0.0;
+    for (size_t k = 0; k < n; ++k) {
+        FUZZ_CHECK(std::isfinite(rate[k]) && rate[k] >= 0.0);
+        mass += rate[k] * area[k];
+    }
+    FUZZ_CHECK(std::fabs(mass - r.mass_per_distance) <= 1e-9 * mass + 1e-300);
+    for (int f = CW_WEAR_FIELD_DEPTH; f <= CW_WEAR_FIELD_SLIDING; ++f) {
+        FUZZ_CHECK(cw_wear_get_field(w.wear, f, rate.data(), n) == CW_OK);
+        for (size_t k = 0; k < n; ++k) FUZZ_CHECK(std::isfinite(rate[k]) && rate[k] >= 0.0);
+    }
+    z.ibuf.assign(n, -1);
+    FUZZ_CHECK(cw_wear_get_regimes(w.wear, z.ibuf.data(), n) == CW_OK);
+    for (size_t k = 0; k < n; ++k) FUZZ_CHECK(z.ibuf[k] >= 0 && z.ibuf[k] <= 4);
+}
+
+void op_wear(Session& z, WearSession& w, Bytes& in)
+{
+    const uint8_t what = in.u8() % 8;
+    if (what == 0) { // (re)create on the session's solver
+        cw_wear_destroy(w.wear);
+        w.wear = reinterpret_cast<cw_wear*>(&w); // must become NULL on error
+        const int st = cw_wear_create(z.solver, &w.wear);
+        FUZZ_CHECK((st == CW_OK) == (z.solver != nullptr));
+        if (st != CW_OK) FUZZ_CHECK(w.wear == nullptr);
+        else w.wear_grid = z.grid;
+        w.computed = false;
+        return;
+    }
+    if (what == 1) { // compute
+        cw_wear_params p;
+        cw_wear_params_init(&p);
+        p.struct_size = in.struct_size<cw_wear_params>();
+        p.law = in.u8() < 200 ? in.u8() % 2 : in.small_int();
+        p.source = in.u8() < 200 ? in.u8() % 3 : in.small_int();
+        p.rolling_speed = in.u8() < 128 ? 1.0 + in.u8() : in.number();
+        double* fields[] = {&p.density,  &p.pass_length, &p.usfd_k1, &p.usfd_t1, &p.usfd_k2,
+                            &p.usfd_t2,  &p.usfd_k3,     &p.usfd_c3, &p.hardness, &p.kth_v1,
+                            &p.kth_v2,   &p.kth_seizure_ratio, &p.kth_k_seizure, &p.kth_k_slow,
+                            &p.kth_k_severe, &p.kth_k_fast};
+        const uint8_t touch = in.u8();
+        if (touch < 100) *fields[touch % 16] = in.number();
+        cw_wear_result r;
+        std::memset(&r, kSentinel, sizeof r);
+        r.struct_size = in.struct_size<cw_wear_result>();
+        const bool null_result = in.u8() > 240;
+        const int st = cw_wear_compute(w.wear, z.solver, &p, null_result ? nullptr : &r);
+        FUZZ_CHECK(known_status(st));
+        if (!w.wear) {
+            FUZZ_CHECK(st == CW_ERR_NULL_POINTER);
+            return;
+        }
+        check_message(cw_wear_last_error(w.wear), st != CW_OK);
+        const bool could = z.solver && same_grid(z.grid, w.wear_grid) && z.solved && z.full;
+        if (!could) FUZZ_CHECK(st != CW_OK);
+        w.computed = st == CW_OK;
+        if (st == CW_OK) {
+            cw_wear_result full;
+            cw_wear_result_init(&full);
+            FUZZ_CHECK(cw_wear_get_result(w.wear, &full) == CW_OK);
+            check_wear_values(z, w, full);
+        } else {
+            if (!null_result && r.struct_size >= sizeof(size_t) && r.struct_size <= (1u << 16))
+                FUZZ_CHECK(untouched(reinterpret_cast<unsigned char*>(&r) + sizeof(size_t),
+                                     sizeof r - sizeof(size_t)));
+            double one = 0;
+            FUZZ_CHECK(cw_wear_get_field(w.wear, CW_WEAR_FIELD_RATE, &one, SIZE_MAX) ==
+                       CW_ERR_NO_SOLUTION);
+        }
+        return;
+    }
+    if (what == 2) { // a field into an odd buffer
+        const uint8_t f = in.u8();
+        const int field = f < 240 ? f % 6 : scaled(in.small_int(), 5);
+        const size_t need = w.wear ? static_cast<size_t>(w.wear_grid.nx) * w.wear_grid.ny : 0;
+        const size_t len = decode_length(in, need);
+        const size_t room = std::min(len, need + kGuard) + kGuard;
+        z.buf.assign(room, 0.0);
+        std::memset(z.buf.data(), kSentinel, room * sizeof(double));
+        const int st = cw_wear_get_field(w.wear, field, z.buf.data(), len);
+        FUZZ_CHECK(known_status(st));
+        const bool ok = w.wear && w.computed && field >= 0 && field <= 4 && len >= need;
+        FUZZ_CHECK((st == CW_OK) == ok);
+        if (st == CW_OK) {
+            FUZZ_CHECK(all_finite(z.buf.data(), need));
+            FUZZ_CHECK(untouched(z.buf.data() + need, (room - need) * sizeof(double)));
+        } else {
+            FUZZ_CHECK(untouched(z.buf.data(), room * sizeof(double)));
+        }
+        return;
+    }
+    if (what == 3) { // strips, some NULL
+        const size_t need = w.wear ? static_cast<size_t>(w.wear_grid.ny) : 0;
+        const size_t len = decode_length(in, need);
+        const uint8_t which = in.u8();
+        const size_t room = std::min(len, need + kGuard) + kGuard;
+        std::vector<double> b(4 * room);
+        std::memset(b.data(), kSentinel, b.size() * sizeof(double));
+        double* ptr[4];
+        for (int k = 0; k < 4; ++k) ptr[k] = which & (1 << k) ? nullptr : b.data() + k * room;
+        const int st = cw_wear_get_strips(w.wear, ptr[0], ptr[1], ptr[2], ptr[3], len);
+        FUZZ_CHECK(known_status(st));
+        const bool any = ptr[0] || ptr[1] || ptr[2] || ptr[3];
+        FUZZ_CHECK((st == CW_OK) == (w.wear && w.computed && (!any || len >= need)));
+        for (int k = 0; k < 4; ++k) {
+            const double* v = b.data() + k * room;
+            if (st == CW_OK && ptr[k]) FUZZ_CHECK(all_finite(v, need));
+            if (st != CW_OK || !ptr[k]) FUZZ_CHECK(untouched(v, room * sizeof(double)));
+        }
+        return;
+    }
+    if (what == 4) { // (re)create the profile
+        cw_wear_profile_destroy(w.profile);
+        w.profile = nullptr;
+        const std::vector<double> s = decode_nodes(in);
+        MessageBuffer msg(in);
+        cw_wear_profile* p = reinterpret_cast<cw_wear_profile*>(&w);
+        const int st = cw_wear_profile_create(s.empty() ? nullptr : s.data(), s.size(), &p,
+                                              msg.ptr, msg.len);
+        FUZZ_CHECK(known_status(st));
+        msg.check(st);
+        FUZZ_CHECK((st == CW_OK) == (!s.empty() && nodes_valid(s)));
+        if (st != CW_OK) {
+            FUZZ_CHECK(p == nullptr);
+            return;
+        }
+        w.profile = p;
+        w.nodes = s;
+        return;
+    }
+    if (what == 5 || what == 6) { // add from the wear, or from decoded strips
+        const std::vector<double> before = depths(w);
+        cw_wear_profile_totals t0, t1;
+        cw_wear_profile_totals_init(&t0);
+        cw_wear_profile_totals_init(&t1);
+        if (w.profile) cw_wear_profile_get_totals(w.profile, &t0);
+        const double s0 = in.u8() < 200 ? (in.u8() - 128) * 1e-4 : in.number();
+        const int orientation = in.u8() < 200 ? (in.u8() % 2 ? 1 : -1) : in.small_int();
+        const double angle = in.u8() < 200 ? (in.u8() - 128) * 0.01 : in.number();
+        const double passes = in.u8() < 200 ? in.u8() : in.number();
+        int st;
+        bool could;
+        const bool placement_ok = std::isfinite(s0) && std::fabs(s0) <= 1e6 &&
+                                  (orientation == 1 || orientation == -1) &&
+                                  std::isfinite(angle) &&
+                                  std::fabs(angle) <= CW_WEAR_MAX_CONTACT_ANGLE &&
+                                  std::isfinite(passes) && passes >= 0.0 &&
+                                  passes <= CW_WEAR_MAX_PASSES;
+        if (what == 5) {
+            st = cw_wear_profile_add(w.profile, w.wear, s0, orientation, angle, passes);
+            could = w.profile && w.wear && w.computed && placement_ok;
+        } else {
+            const size_t count = in.u8() % 6;
+            std::vector<double> y(count), width(count), depth(count);
+            bool strips_ok = count >= 1;
+            for (size_t k = 0; k < count; ++k) {
+                y[k] = in.u8() < 200 ? (in.u8() - 128) * 1e-4 : in.number();
+                width[k] = in.u8() < 200 ? (1 + in.u8()) * 1e-5 : in.number();
+                depth[k] = in.u8() < 200 ? in.u8() * 1e-9 : in.number();
+                strips_ok = strips_ok && std::isfinite(y[k]) && std::fabs(y[k]) <= 1e6 &&
+                            std::isfinite(width[k]) && as_seen(width[k]) > 0.0 &&
+                            width[k] <= 1e6 &&
+                            std::isfinite(depth[k]) && depth[k] >= 0.0;
+            }
+            st = cw_wear_profile_add_strips(w.profile, y.data(), width.data(), depth.data(), count,
+                                            s0, orientation, angle, passes);
+            could = w.profile && strips_ok && placement_ok;
+        }
+        FUZZ_CHECK(known_status(st));
+        if (!could) FUZZ_CHECK(st != CW_OK);
+        if (could) FUZZ_CHECK(st == CW_OK || st == CW_ERR_NUMERIC); // exact range refused
+        if (!w.profile) return;
+        check_message(cw_wear_profile_last_error(w.profile), st != CW_OK);
+        const std::vector<double> after = depths(w);
+        cw_wear_profile_get_totals(w.profile, &t1);
+        if (st != CW_OK) {
+            FUZZ_CHECK(std::memcmp(before.data(), after.data(), before.size() * sizeof(double)) ==
+                       0);
+            FUZZ_CHECK(t1.adds == t0.adds);
+        } else {
+            FUZZ_CHECK(all_finite(after.data(), after.size()));
+            for (size_t k = 0; k < after.size(); ++k) FUZZ_CHECK(after[k] >= before[k]);
+            FUZZ_CHECK(t1.adds == t0.adds + 1);
+            const double v[] = {t1.passes, t1.volume, t1.volume_lost};
+            FUZZ_CHECK(all_finite(v, 3));
+            FUZZ_CHECK(t1.volume_lost <= t1.volume * (1 + 1e-12));
+        }
+        return;
+    }
+    // what == 7: state round trip and merge, then the update helper
+    if (w.profile) {
+        size_t words = 0;
+        FUZZ_CHECK(cw_wear_profile_state_size(w.profile, &words) == CW_OK);
+        std::vector<uint64_t> state(words);
+        FUZZ_CHECK(cw_wear_profile_get_state(w.profile, state.data(), words) == CW_OK);
+        cw_wear_profile* copy = nullptr;
+        FUZZ_CHECK(cw_wear_profile_create(w.nodes.data(), w.nodes.size(), &copy, nullptr, 0) ==
+                   CW_OK);
+        const size_t len = decode_length(in, words);
+        if (len < words && !state.empty()) state[0] ^= in.u8(); // sometimes a damaged state
+        const int st = cw_wear_profile_add_state(copy, state.data(), std::min(len, words));
+        FUZZ_CHECK(known_status(st));
+        if (st == CW_OK) {
+            cw_wear_profile* twice = nullptr;
+            FUZZ_CHECK(cw_wear_profile_create(w.nodes.data(), w.nodes.size(), &twice, nullptr,
+                                              0) == CW_OK);
+            FUZZ_CHECK(cw_wear_profile_merge(twice, w.profile) == CW_OK);
+            const size_t n = w.nodes.size();
+            std::vector<double> a(n), b(n);
+            cw_wear_profile_get_depth(copy, CW_WEAR_DEPTH_HEIGHT, a.data(), n);
+            cw_wear_profile_get_depth(twice, CW_WEAR_DEPTH_HEIGHT, b.data(), n);
+            FUZZ_CHECK(std::memcmp(a.data(), b.data(), n * sizeof(double)) == 0);
+            cw_wear_profile_destroy(twice);
+        }
+        cw_wear_profile_destroy(copy);
+    }
+    const std::vector<double> s = decode_nodes(in);
+    const size_t n = s.size();
+    std::vector<double> old(n), dep(n), out(n + kGuard);
+    for (size_t k = 0; k < n; ++k) {
+        old[k] = in.u8() < 220 ? in.u8() * 1e-3 : in.number();
+        dep[k] = in.u8() < 220 ? in.u8() * 1e-6 : in.number();
+    }
+    const double smoothing = in.u8() < 200 ? in.u8() * 1e-4 : in.number();
+    const size_t len = decode_length(in, n);
+    std::memset(out.data(), kSentinel, out.size() * sizeof(double));
+    MessageBuffer msg(in);
+    const int st = cw_wear_profile_update(n ? s.data() : nullptr, old.data(), dep.data(), n,
+                                          smoothing, out.data(), std::min(len, n + kGuard),
+                                          msg.ptr, msg.len);
+    FUZZ_CHECK(known_status(st));
+    msg.check(st);
+    bool inputs_ok = n >= 1 && nodes_valid(s) && std::isfinite(smoothing) && smoothing >= 0.0 &&
+                     smoothing <= 1e6 && std::min(len, n + kGuard) >= n;
+    for (size_t k = 0; k < n; ++k)
+        inputs_ok = inputs_ok && std::isfinite(old[k]) && std::isfinite(dep[k]);
+    if (!inputs_ok) FUZZ_CHECK(st != CW_OK);
+    if (st == CW_OK) {
+        FUZZ_CHECK(all_finite(out.data(), n));
+        FUZZ_CHECK(untouched(out.data() + n, kGuard * sizeof(double)));
+    } else {
+        FUZZ_CHECK(untouched(out.data(), out.size() * sizeof(double)));
+    }
+}
+
 } // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
 {
     Bytes in(data, size);
     Session z;
+    WearSession w; // destroyed before z: wear handles never outlive the solver's grid use
     for (int op = 0; op < kMaxOps && !in.empty(); ++op) {
-        switch (in.u8() % 12) {
+        const uint8_t code = in.u8();
+        if (code >= 232) { // the wear calls (appended: older corpus bytes mostly decode as before)
+            op_wear(z, w, in);
+            continue;
+        }
+        switch (code % 12) {
         case 0:
         case 1: op_create(z, in); break;
         case 2:

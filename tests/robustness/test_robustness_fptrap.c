@@ -2,6 +2,7 @@
  * through the whole C ABI: with invalid, divide-by-zero, overflow and
  * denormal-operand traps on, no call raises one -- valid input of every
  * kind, in both modes, every getter, batches, the accumulator, the helpers,
+ * the wear calls,
  * and hostile or absurd input (NaN, Inf, 1e300 loads, subnormal creepages),
  * which gets a status or zeros, never a trap. And a call leaves no trace:
  * the caller's exception flags, masks and rounding mode are as before, and
@@ -245,6 +246,160 @@ static void test_hostile_and_absurd_inputs(void** state)
     assert_true(solved > 0 && rejected > 0);
 }
 
+/* Wear with traps on: every contact of the sweep on a strip and a uniform
+ * grid, both laws, every source, every getter, the profile calls; then
+ * every double of cw_wear_params, of a placement, of the strips, the nodes
+ * and the update helper set in turn to each hostile value: a status or
+ * finite results, never a trap, never a flag. */
+static void test_wear(void** state)
+{
+    (void)state;
+    const double values[] = {NAN, INFINITY, -INFINITY, -1.0, -0.0, 0.0, 4.9e-324, 1e-310,
+                             1e-300, 1e-200, 1e-150, 1e150, 1e300, 1.7976931348623157e308};
+    const int nv = (int)(sizeof values / sizeof values[0]);
+    double nodes[60];
+    for (int k = 0; k < 60; ++k) nodes[k] = -0.015 + 5e-4 * k;
+    long computed = 0, rejected = 0;
+    for (int gi = 0; gi < 2; ++gi) {
+        const fptrap_grid g = gi ? (fptrap_grid){1, 14, 16, 1.3} : (fptrap_grid){0, 12, 10, 1.0};
+        cw_solver* s = make_solver(&g);
+        cw_wear* w = NULL;
+        assert_status(cw_wear_create(s, &w), CW_OK);
+        cw_wear_profile *a = NULL, *b = NULL;
+        assert_status(cw_wear_profile_create(nodes, 60, &a, NULL, 0), CW_OK);
+        assert_status(cw_wear_profile_create(nodes, 60, &b, NULL, 0), CW_OK);
+        const size_t n = (size_t)g.nx * (size_t)g.ny;
+        double* out = malloc(n * sizeof *out);
+        int* regimes = malloc(n * sizeof *regimes);
+        double y[16], width[16], depth[16], par[16], prof[60], upd[60];
+        size_t words = 0;
+        cw_wear_profile_state_size(a, &words);
+        uint64_t* saved = malloc(words * sizeof *saved);
+        assert_true(out && regimes && saved);
+        assert_true(fptrap_enable());
+        for (int k = 0; k < FPTRAP_ALL_CONTACTS; ++k) {
+            const fptrap_contact_t c = fptrap_contact(k);
+            const cw_params p = params_of(&c);
+            snprintf(fptrap_case, sizeof fptrap_case, "wear: grid %d, contact %d", gi, k);
+            if (cw_solver_solve(s, &p, CW_SOLVE_FULL, NULL) != CW_OK) continue;
+            expect_no_trace("cw_solver_solve");
+            for (int law = CW_WEAR_USFD; law <= CW_WEAR_ARCHARD_KTH; ++law)
+                for (int src = CW_WEAR_SOURCE_CONSISTENT; src <= CW_WEAR_SOURCE_SLIP; ++src) {
+                    cw_wear_params wp;
+                    cw_wear_params_init(&wp);
+                    wp.law = law;
+                    wp.source = src;
+                    wp.rolling_speed = 30.0;
+                    cw_wear_result r;
+                    cw_wear_result_init(&r);
+                    const int st = cw_wear_compute(w, s, &wp, &r);
+                    expect_no_trace("cw_wear_compute");
+                    if (st != CW_OK) {
+                        assert_int_equal(st, CW_ERR_NUMERIC);
+                        ++rejected;
+                        continue;
+                    }
+                    ++computed;
+                    for (int f = CW_WEAR_FIELD_RATE; f <= CW_WEAR_FIELD_SLIDING; ++f) {
+                        assert_status(cw_wear_get_field(w, f, out, n), CW_OK);
+                        for (size_t e = 0; e < n; ++e) assert_true(isfinite(out[e]));
+                    }
+                    assert_status(cw_wear_get_regimes(w, regimes, n), CW_OK);
+                    assert_status(cw_wear_get_strips(w, y, width, depth, par, (size_t)g.ny),
+                                  CW_OK);
+                    expect_no_trace("cw_wear getters");
+                    cw_wear_profile_add(a, w, 1e-3 * (k % 9 - 4), 1, 0.05 * (k % 5), 100.0);
+                    cw_wear_profile_add_strips(b, y, width, par, (size_t)g.ny, 2e-3, -1, 0.3,
+                                               7.0);
+                    expect_no_trace("cw_wear_profile_add");
+                }
+        }
+        snprintf(fptrap_case, sizeof fptrap_case, "wear profile getters, grid %d", gi);
+        cw_wear_profile_totals t;
+        cw_wear_profile_totals_init(&t);
+        assert_status(cw_wear_profile_get_depth(a, CW_WEAR_DEPTH_HEIGHT, prof, 60), CW_OK);
+        assert_status(cw_wear_profile_get_totals(a, &t), CW_OK);
+        assert_status(cw_wear_profile_merge(a, b), CW_OK);
+        assert_status(cw_wear_profile_get_state(b, saved, words), CW_OK);
+        assert_status(cw_wear_profile_add_state(a, saved, words), CW_OK);
+        assert_status(cw_wear_profile_update(nodes, prof, prof, 60, 1e-3, upd, 60, NULL, 0), CW_OK);
+        expect_no_trace("cw_wear_profile calls");
+        fptrap_disable();
+        /* Hostile values, one input at a time. */
+        for (int i = 0; i < nv; ++i) {
+            const double v = values[i];
+            snprintf(fptrap_case, sizeof fptrap_case, "wear hostile %g", v);
+            for (int field = 0; field < 17; ++field)
+                for (int law = CW_WEAR_USFD; law <= CW_WEAR_ARCHARD_KTH; ++law) {
+                    cw_wear_params wp;
+                    cw_wear_params_init(&wp);
+                    wp.law = law;
+                    wp.rolling_speed = 30.0;
+                    double* targets[] = {&wp.density,  &wp.rolling_speed, &wp.pass_length,
+                                         &wp.usfd_k1,  &wp.usfd_t1,       &wp.usfd_k2,
+                                         &wp.usfd_t2,  &wp.usfd_k3,       &wp.usfd_c3,
+                                         &wp.hardness, &wp.kth_v1,        &wp.kth_v2,
+                                         &wp.kth_seizure_ratio, &wp.kth_k_seizure,
+                                         &wp.kth_k_slow, &wp.kth_k_severe, &wp.kth_k_fast};
+                    *targets[field] = v;
+                    cw_wear_result r;
+                    cw_wear_result_init(&r);
+                    int st = CW_OK;
+                    TRAPPED(st = cw_wear_compute(w, s, &wp, &r), "cw_wear_compute hostile");
+                    if (st == CW_OK) {
+                        const double tot[] = {r.mass_per_distance, r.mass_per_pass, r.max_depth,
+                                              r.work, r.volume_per_distance};
+                        for (int q = 0; q < 5; ++q) assert_true(isfinite(tot[q]));
+                    }
+                }
+            double hy[3] = {-1e-3, 0.0, 1e-3}, hw[3] = {1e-3, 1e-3, 1e-3}, hd[3] = {1e-9, 2e-9, 1e-9};
+            double* strip_targets[] = {&hy[1], &hw[1], &hd[1]};
+            for (int q = 0; q < 3; ++q) {
+                const double keep = *strip_targets[q];
+                *strip_targets[q] = v;
+                TRAPPED(cw_wear_profile_add_strips(a, hy, hw, hd, 3, 0.0, 1, 0.2, 5.0),
+                        "cw_wear_profile_add_strips hostile strip");
+                *strip_targets[q] = keep;
+            }
+            TRAPPED(cw_wear_profile_add_strips(a, hy, hw, hd, 3, v, 1, 0.2, 5.0), "hostile s0");
+            TRAPPED(cw_wear_profile_add_strips(a, hy, hw, hd, 3, 0.0, 1, v, 5.0), "hostile angle");
+            TRAPPED(cw_wear_profile_add_strips(a, hy, hw, hd, 3, 0.0, 1, 0.2, v), "hostile passes");
+            double bad_nodes[60], old[60], dep[60];
+            for (int k = 0; k < 60; ++k) {
+                bad_nodes[k] = nodes[k];
+                old[k] = 1e-3;
+                dep[k] = 1e-6;
+            }
+            cw_wear_profile* p = NULL;
+            bad_nodes[30] = v;
+            TRAPPED(cw_wear_profile_create(bad_nodes, 60, &p, NULL, 0), "hostile node");
+            cw_wear_profile_destroy(p);
+            TRAPPED(cw_wear_profile_update(bad_nodes, old, dep, 60, 1e-3, upd, 60, NULL, 0),
+                    "hostile node (update)");
+            old[7] = v;
+            TRAPPED(cw_wear_profile_update(nodes, old, dep, 60, 1e-3, upd, 60, NULL, 0),
+                    "hostile old profile");
+            old[7] = 1e-3;
+            dep[7] = v;
+            TRAPPED(cw_wear_profile_update(nodes, old, dep, 60, 1e-3, upd, 60, NULL, 0),
+                    "hostile depth");
+            TRAPPED(cw_wear_profile_update(nodes, old, old, 60, v, upd, 60, NULL, 0),
+                    "hostile smoothing");
+        }
+        assert_status(cw_wear_profile_get_depth(a, CW_WEAR_DEPTH_NORMAL, prof, 60), CW_OK);
+        for (int k = 0; k < 60; ++k) assert_true(isfinite(prof[k]) && prof[k] >= 0.0);
+        free(out);
+        free(regimes);
+        free(saved);
+        cw_wear_profile_destroy(a);
+        cw_wear_profile_destroy(b);
+        cw_wear_destroy(w);
+        cw_solver_destroy(s);
+    }
+    print_message("wear: %ld computed, %ld refused (overflow), no trap\n", computed, rejected);
+    assert_true(computed > 0);
+}
+
 /* The caller's rounding mode (toward zero here) and flush bits do not leak
  * into the library, and come back unchanged. */
 static void test_caller_mode_restored_and_irrelevant(void** state)
@@ -289,6 +444,7 @@ int main(void)
         cmocka_unit_test(test_batch),
         cmocka_unit_test(test_helpers),
         cmocka_unit_test(test_hostile_and_absurd_inputs),
+        cmocka_unit_test(test_wear),
         cmocka_unit_test(test_caller_mode_restored_and_irrelevant),
     };
     return cmocka_run_group_tests_name("robustness_fptrap", tests, NULL, NULL);

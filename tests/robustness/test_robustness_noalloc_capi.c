@@ -1,9 +1,10 @@
 /* No heap allocation inside a successful solve once the solver exists, nor
  * in reading its results: cw_solver_solve (both modes), cw_solver_get_result,
  * _get_field, _get_state, _get_profile, cw_accumulator_add and its getters,
- * and cw_batch_solve after its first call (the OpenMP runtime builds its
- * thread pool on first use). Counted by interposing malloc (count_malloc.h),
- * which also sees libstdc++'s operator new and Eigen's aligned_malloc. */
+ * cw_batch_solve after its first call (the OpenMP runtime builds its
+ * thread pool on first use), and the wear calls a campaign repeats.
+ * Counted by interposing malloc (count_malloc.h), which also sees
+ * libstdc++'s operator new and Eigen's aligned_malloc. */
 #include "robustness_support.h"
 
 #include "count_malloc.h"
@@ -174,6 +175,83 @@ static void test_exact_allocates_nothing_after_prepare(void** state)
     cw_batch_destroy(b);
 }
 
+/* The wear of a solve and its accumulation on a profile allocate nothing
+ * once the handles exist: cw_wear_compute (both laws, every source) and its
+ * getters, cw_wear_profile_add/_add_strips/_get_depth/_get_totals/_merge/
+ * _get_state/_add_state/_reset (a campaign's hot calls). The update helper
+ * allocates its workspace, as the header says. */
+static void test_wear_allocates_nothing(void** state)
+{
+    (void)state;
+    const int nx = 15, ny = 11;
+    const size_t n = (size_t)nx * ny;
+    cw_solver* s = rob_solver(CW_GRID_KALKER_STRIPS, nx, ny, 1.0);
+    cw_wear* w = NULL;
+    assert_status(cw_wear_create(s, &w), CW_OK);
+    double nodes[80];
+    for (int k = 0; k < 80; ++k) nodes[k] = -0.02 + 5e-4 * k;
+    cw_wear_profile *a = NULL, *b = NULL;
+    assert_status(cw_wear_profile_create(nodes, 80, &a, NULL, 0), CW_OK);
+    assert_status(cw_wear_profile_create(nodes, 80, &b, NULL, 0), CW_OK);
+    size_t words = 0;
+    assert_status(cw_wear_profile_state_size(a, &words), CW_OK);
+    uint64_t* saved = (uint64_t*)malloc(words * sizeof *saved);
+    double* buf = (double*)malloc(n * sizeof *buf);
+    int* ibuf = (int*)malloc(n * sizeof *ibuf);
+    double y[11], width[11], depth[11], par[11], profile[80];
+    cw_wear_result r;
+    cw_wear_result_init(&r);
+    cw_wear_profile_totals t;
+    cw_wear_profile_totals_init(&t);
+    int failures = 0;
+    cw_count_start();
+    for (int k = 0; k < kContacts; ++k) {
+        const cw_params p = contact(k);
+        failures += cw_solver_solve(s, &p, CW_SOLVE_FULL, NULL) != CW_OK;
+        for (int law = CW_WEAR_USFD; law <= CW_WEAR_ARCHARD_KTH; ++law)
+            for (int src = CW_WEAR_SOURCE_CONSISTENT; src <= CW_WEAR_SOURCE_SLIP; ++src) {
+                cw_wear_params wp;
+                cw_wear_params_init(&wp);
+                wp.law = law;
+                wp.source = src;
+                wp.rolling_speed = 20.0;
+                failures += cw_wear_compute(w, s, &wp, &r) != CW_OK;
+                for (int f = CW_WEAR_FIELD_RATE; f <= CW_WEAR_FIELD_SLIDING; ++f)
+                    failures += cw_wear_get_field(w, f, buf, n) != CW_OK;
+                failures += cw_wear_get_regimes(w, ibuf, n) != CW_OK;
+                failures += cw_wear_get_strips(w, y, width, depth, par, (size_t)ny) != CW_OK;
+                failures += cw_wear_get_result(w, &r) != CW_OK;
+                if (k == 3) continue; /* xi = 1e100 wears ~1e40 m a pass: refused (an
+                                         error, which may allocate its message) */
+                failures += cw_wear_profile_add(a, w, 1e-3 * (k - 5), 1, 0.1, 10.0) != CW_OK;
+                failures += cw_wear_profile_add_strips(b, y, width, par, (size_t)ny,
+                                                       1e-3 * (k - 5), -1, 0.0, 3.0) != CW_OK;
+            }
+        failures += cw_wear_profile_get_depth(a, CW_WEAR_DEPTH_NORMAL, profile, 80) != CW_OK;
+        failures += cw_wear_profile_get_depth(a, CW_WEAR_DEPTH_HEIGHT, profile, 80) != CW_OK;
+        failures += cw_wear_profile_get_totals(a, &t) != CW_OK;
+    }
+    failures += cw_wear_profile_merge(a, b) != CW_OK;
+    failures += cw_wear_profile_get_state(b, saved, words) != CW_OK;
+    failures += cw_wear_profile_add_state(a, saved, words) != CW_OK;
+    failures += cw_wear_profile_reset(b) != CW_OK;
+    const long allocations = cw_count_stop();
+    assert_int_equal(failures, 0);
+    assert_int_equal(allocations, 0);
+    /* ... and the counter sees the helper's documented workspace. */
+    double old[80] = {0}, out[80];
+    cw_count_start();
+    assert_status(cw_wear_profile_update(nodes, old, profile, 80, 1e-3, out, 80, NULL, 0), CW_OK);
+    assert_true(cw_count_stop() > 0);
+    free(saved);
+    free(buf);
+    free(ibuf);
+    cw_wear_profile_destroy(a);
+    cw_wear_profile_destroy(b);
+    cw_wear_destroy(w);
+    cw_solver_destroy(s);
+}
+
 static void test_batch_allocates_nothing_after_first_call(void** state)
 {
     (void)state;
@@ -212,6 +290,7 @@ int main(void)
         cmocka_unit_test(test_counter_sees_library_allocations),
         cmocka_unit_test(test_solve_and_export_allocate_nothing),
         cmocka_unit_test(test_accumulator_allocates_nothing),
+        cmocka_unit_test(test_wear_allocates_nothing),
         cmocka_unit_test(test_batch_allocates_nothing_after_first_call),
         cmocka_unit_test(test_exact_allocates_nothing_after_prepare),
     };

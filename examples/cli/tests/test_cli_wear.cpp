@@ -1,0 +1,364 @@
+/* Tests of `creepwork wear`, run as a user runs it: its profile equals what
+ * the C ABI gives for the same states (bitwise: both use the exact sums),
+ * the files carry their units, bad input fails cleanly (status 2, one
+ * stderr line naming the option or the file's line and column, nothing
+ * written), implausible values are warned about, a wheel's distance becomes
+ * revolutions, and the picture is drawn.
+ *
+ * usage: test_cli_wear <creepwork binary> <scratch dir> [cmocka filter] */
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <fcntl.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <creepwork/creepwork.h>
+
+#include "json_reader.hpp"
+// Last: cmocka defines macros (fail, skip) that clash with the C++ library.
+#include "test_support.h"
+
+extern char** environ;
+
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string g_cli, g_scratch;
+
+struct Run {
+    int status = -1;
+    std::string out, err;
+};
+
+std::string slurp(const std::string& path)
+{
+    std::ifstream f(path);
+    std::stringstream s;
+    s << f.rdbuf();
+    return s.str();
+}
+
+Run run_cli(const std::vector<std::string>& args)
+{
+    const std::string out = g_scratch + "/stdout.txt", err = g_scratch + "/stderr.txt";
+    posix_spawn_file_actions_t fa;
+    posix_spawn_file_actions_init(&fa);
+    posix_spawn_file_actions_addopen(&fa, 1, out.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    posix_spawn_file_actions_addopen(&fa, 2, err.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    std::vector<char*> argv;
+    argv.push_back(const_cast<char*>(g_cli.c_str()));
+    for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+    argv.push_back(nullptr);
+    pid_t pid = 0;
+    Run r;
+    if (posix_spawn(&pid, g_cli.c_str(), &fa, nullptr, argv.data(), environ) == 0) {
+        int status = 0;
+        waitpid(pid, &status, 0);
+        r.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    }
+    posix_spawn_file_actions_destroy(&fa);
+    r.out = slurp(out);
+    r.err = slurp(err);
+    return r;
+}
+
+Run run_ok(const std::vector<std::string>& args)
+{
+    Run r = run_cli(args);
+    if (r.status != 0) print_error("exit %d, stderr: %s\n", r.status, r.err.c_str());
+    assert_int_equal(r.status, 0);
+    return r;
+}
+
+std::vector<std::vector<std::string>> read_csv(const std::string& path)
+{
+    std::vector<std::vector<std::string>> rows;
+    std::ifstream f(path);
+    std::string line;
+    while (std::getline(f, line)) {
+        std::vector<std::string> cells;
+        std::stringstream s(line);
+        std::string cell;
+        while (std::getline(s, cell, ',')) cells.push_back(cell);
+        rows.push_back(cells);
+    }
+    return rows;
+}
+
+std::string write_file(const std::string& name, const std::string& text)
+{
+    const std::string path = g_scratch + "/" + name;
+    std::ofstream(path) << text;
+    return path;
+}
+
+// Three states: a tread contact, a spin-dominated one on an angle, one with
+// its own mu; on the rail, 200 + 300 + 500 passes.
+const char* const kStates = "# three states\n"
+                            "s0,a,b,N,xi_x,xi_y,spin,contact_angle,passes,mu\n"
+                            "0.001,6e-3,4e-3,60e3,1e-3,-5e-4,0.5,0.02,200,0.3\n"
+                            "\n"
+                            "-0.003,5e-3,3e-3,70e3,5e-4,1e-3,4.0,-0.2,300,0.35\n"
+                            "0.004,7e-3,5e-3,50e3,-2e-3,0,1.0,0.1,500,0.25\n";
+
+struct StateRow {
+    double s0, a, b, N, xi, eta, phi, angle, passes, mu;
+};
+const StateRow kRows[3] = {{0.001, 6e-3, 4e-3, 60e3, 1e-3, -5e-4, 0.5, 0.02, 200, 0.3},
+                           {-0.003, 5e-3, 3e-3, 70e3, 5e-4, 1e-3, 4.0, -0.2, 300, 0.35},
+                           {0.004, 7e-3, 5e-3, 50e3, -2e-3, 0, 1.0, 0.1, 500, 0.25}};
+
+// The CLI's profile equals the C ABI's for the same states, node grid and
+// options: the profile columns read back (17 digits) equal, bitwise, the
+// library's depths; summary.json's totals agree; every file has its units.
+void wear_matches_library(void**)
+{
+    const std::string in = write_file("states.csv", kStates);
+    const std::string out = g_scratch + "/match";
+    const Run r = run_ok({"wear", "--in", in, "--out", out, "--nx", "12", "--ny", "10",
+                          "--profile-from", "-0.012", "--profile-to", "0.012",
+                          "--profile-step", "2e-4", "--no-plots", "--format", "json"});
+    const cwtest::Json j = cwtest::parse_json(r.out);
+    const auto rows = read_csv(out + "/wear_profile.csv");
+    assert_string_equal(rows[0][0].c_str(), "k");
+    const std::vector<std::string> header = {"k", "s_m", "depth_normal_m", "depth_height_m",
+                                             "parabola_depth_normal_m",
+                                             "parabola_depth_height_m"};
+    assert_true(rows[0] == header);
+    const size_t n = rows.size() - 1;
+    assert_int_equal(n, 121);
+
+    // The library, by hand.
+    std::vector<double> s(n);
+    for (size_t k = 0; k < n; ++k) s[k] = -0.012 + 2e-4 * static_cast<double>(k);
+    cw_grid g;
+    cw_grid_init(&g);
+    g.nx = 12;
+    g.ny = 10;
+    cw_solver* sv = nullptr;
+    cw_wear* w = nullptr;
+    cw_wear_profile *local = nullptr, *par = nullptr;
+    assert_int_equal(cw_solver_create(&g, &sv, nullptr, 0), CW_OK);
+    assert_int_equal(cw_wear_create(sv, &w), CW_OK);
+    assert_int_equal(cw_wear_profile_create(s.data(), n, &local, nullptr, 0), CW_OK);
+    assert_int_equal(cw_wear_profile_create(s.data(), n, &par, nullptr, 0), CW_OK);
+    cw_wear_params wp;
+    cw_wear_params_init(&wp);
+    double y[10], width[10], depth[10], parabola[10];
+    for (const StateRow& row : kRows) {
+        cw_params p;
+        cw_params_init(&p);
+        p.a = row.a, p.b = row.b, p.normal_force = row.N, p.mu = row.mu;
+        p.xi_x = row.xi, p.xi_y = row.eta, p.phi = row.phi;
+        assert_int_equal(cw_solver_solve(sv, &p, CW_SOLVE_FULL, nullptr), CW_OK);
+        assert_int_equal(cw_wear_compute(w, sv, &wp, nullptr), CW_OK);
+        assert_int_equal(cw_wear_get_strips(w, y, width, depth, parabola, 10), CW_OK);
+        assert_int_equal(cw_wear_profile_add(local, w, row.s0, 1, row.angle, row.passes), CW_OK);
+        assert_int_equal(cw_wear_profile_add_strips(par, y, width, parabola, 10, row.s0, 1,
+                                                    row.angle, row.passes),
+                         CW_OK);
+    }
+    std::vector<double> dn(n), dh(n), pn(n), ph(n);
+    cw_wear_profile_get_depth(local, CW_WEAR_DEPTH_NORMAL, dn.data(), n);
+    cw_wear_profile_get_depth(local, CW_WEAR_DEPTH_HEIGHT, dh.data(), n);
+    cw_wear_profile_get_depth(par, CW_WEAR_DEPTH_NORMAL, pn.data(), n);
+    cw_wear_profile_get_depth(par, CW_WEAR_DEPTH_HEIGHT, ph.data(), n);
+    double peak = 0;
+    for (size_t k = 0; k < n; ++k) {
+        const auto& c = rows[k + 1];
+        assert_true(std::stod(c[1]) == s[k]);
+        assert_true(std::stod(c[2]) == dn[k]);
+        assert_true(std::stod(c[3]) == dh[k]);
+        assert_true(std::stod(c[4]) == pn[k]);
+        assert_true(std::stod(c[5]) == ph[k]);
+        peak = std::max(peak, dh[k]);
+    }
+    assert_true(peak > 0);
+    cw_wear_profile_totals t;
+    cw_wear_profile_totals_init(&t);
+    cw_wear_profile_get_totals(local, &t);
+    assert_true(j.num("passes") == 1000.0);
+    assert_true(j.num("volume_m2") == t.volume);
+    assert_true(j.num("peak_depth_height_m") == peak);
+    assert_close(j.num("mass_kg"), t.volume * 7800.0, 1e-15, 0.0); // per metre of rail
+    assert_string_equal(j.at("body").string.c_str(), "rail");
+    const auto st = read_csv(out + "/states.csv");
+    assert_int_equal(st.size(), 4);
+    assert_string_equal(st[0][1].c_str(), "s0_m");
+    assert_string_equal(st[0][14].c_str(), "mass_per_distance_kg_per_m");
+    assert_string_equal(st[2][0].c_str(), "5"); // the file's line of the second state
+    cw_wear_profile_destroy(local);
+    cw_wear_profile_destroy(par);
+    cw_wear_destroy(w);
+    cw_solver_destroy(sv);
+}
+
+// A wheel: distance becomes revolutions distance / (2 pi R), and the mass is
+// per wheel: sum of passes x mass per revolution.
+void wear_wheel_distance(void**)
+{
+    const std::string in = write_file("wheel.csv", "s0,a,b,N,xi_x,spin,distance\n"
+                                                   "0.0,6e-3,4e-3,60e3,1e-3,0.5,1000\n"
+                                                   "0.002,6e-3,4e-3,60e3,2e-3,0.5,500\n");
+    const Run r = run_ok({"wear", "--in", in, "--out", g_scratch + "/wheel", "--body", "wheel",
+                          "--wheel-radius", "0.46", "--no-plots", "--format", "json"});
+    const cwtest::Json j = cwtest::parse_json(r.out);
+    const double rev = 2.0 * M_PI * 0.46;
+    assert_close(j.num("passes"), 1500.0 / rev, 1e-14, 0.0);
+    const auto st = read_csv(g_scratch + "/wheel/states.csv");
+    double mass = 0;
+    for (size_t k = 1; k < st.size(); ++k) {
+        const double passes = std::stod(st[k][9]);
+        assert_close(std::stod(st[k][15]), std::stod(st[k][14]) * rev, 1e-14, 0.0);
+        mass += passes * std::stod(st[k][15]);
+    }
+    assert_close(j.num("mass_kg"), mass, 1e-14, 0.0);
+    assert_string_equal(j.at("body").string.c_str(), "wheel");
+    // The worn volume over the circumference is that mass / density.
+    assert_close(j.num("volume_m2") * rev * 7800.0, mass, 1e-12, 0.0);
+}
+
+struct Bad {
+    std::vector<std::string> args;
+    std::string names; // what the single stderr line must contain
+};
+
+void wear_bad_inputs_fail_cleanly(void**)
+{
+    const std::string good = write_file("good.csv", kStates);
+    const auto file = [](const std::string& name, const std::string& text) {
+        return write_file(name, text);
+    };
+    const std::string never = g_scratch + "/never";
+    const std::string earlier = g_scratch + "/earlier";
+    run_ok({"wear", "--in", good, "--out", earlier, "--no-plots"});
+    const std::vector<Bad> bad = {
+        {{"wear", "--out", never}, "--in"},
+        {{"wear", "--in", good}, "--out"},
+        {{"wear", "--in", g_scratch + "/missing.csv", "--out", never}, "cannot open"},
+        {{"wear", "--in", file("empty.csv", ""), "--out", never}, "no header"},
+        {{"wear", "--in", file("head.csv", "s0,a,b,N,passes\n"), "--out", never},
+         "no contact states"},
+        {{"wear", "--in", file("col.csv", "s0,a,b,N,pases\n0,6e-3,4e-3,6e4,1\n"), "--out", never},
+         "did you mean passes?"},
+        {{"wear", "--in", file("noN.csv", "s0,a,b,passes\n0,6e-3,4e-3,1\n"), "--out", never},
+         "no column 'N'"},
+        {{"wear", "--in", file("num.csv", "s0,a,b,N,passes\n0,6e-3,abc,6e4,1\n"), "--out", never},
+         "line 2, column b"},
+        {{"wear", "--in", file("nan.csv", "s0,a,b,N,passes\n0,6e-3,nan,6e4,1\n"), "--out", never},
+         "column b"},
+        {{"wear", "--in", file("cells.csv", "s0,a,b,N,passes\n0,6e-3,4e-3\n"), "--out", never},
+         "line 2: 3 values for 5 columns"},
+        {{"wear", "--in", file("nopass.csv", "s0,a,b,N\n0,6e-3,4e-3,6e4\n"), "--out", never},
+         "passes"},
+        {{"wear", "--in", file("dist.csv", "s0,a,b,N,distance\n0,6e-3,4e-3,6e4,10\n"), "--out",
+          never},
+         "distance is for --body wheel"},
+        {{"wear", "--in", file("dist2.csv", "s0,a,b,N,distance\n0,6e-3,4e-3,6e4,10\n"), "--out",
+          never, "--body", "wheel"},
+         "--wheel-radius"},
+        {{"wear", "--in", file("neg.csv", "s0,a,b,N,passes\n0,6e-3,-4e-3,6e4,1\n"), "--out", never},
+         "line 2: b"},
+        {{"wear", "--in", file("ang.csv", "s0,a,b,N,passes,contact_angle\n0,6e-3,4e-3,6e4,1,2\n"),
+          "--out", never},
+         "contact_angle"},
+        {{"wear", "--in", file("pneg.csv", "s0,a,b,N,passes\n0,6e-3,4e-3,6e4,-1\n"), "--out",
+          never},
+         "passes"},
+        {{"wear", "--in", file("model.csv", "s0,a,b,N,passes,model\n0,6e-3,4e-3,6e4,1,magic\n"),
+          "--out", never},
+         "column model"},
+        {{"wear", "--in", good, "--out", never, "--law", "archard"}, "--speed"},
+        {{"wear", "--in", good, "--out", never, "--law", "archerd"}, "did you mean archard?"},
+        {{"wear", "--in", good, "--out", never, "--speed", "-3"}, "--speed"},
+        {{"wear", "--in", good, "--out", never, "--hardness", "2e9"}, "--hardness"},
+        {{"wear", "--in", good, "--out", never, "--density", "0"}, "--density"},
+        {{"wear", "--in", good, "--out", never, "--wheel-radius", "0.46"}, "--wheel-radius"},
+        {{"wear", "--in", good, "--out", never, "--profile-step", "0"}, "--profile-step"},
+        {{"wear", "--in", good, "--out", never, "--profile-from", "1", "--profile-to", "0"},
+         "--profile-to"},
+        {{"wear", "--in", good, "--out", never, "--nx", "0"}, "--nx"},
+        {{"wear", "--in", good, "--out", never, "--plot-sign", "rail"}, "--plot-sign"},
+        {{"wear", "--in", good, "--out", earlier}, "--force"},
+    };
+    for (const Bad& b : bad) {
+        const Run r = run_cli(b.args);
+        std::string shown;
+        for (const std::string& a : b.args) shown += a + " ";
+        if (r.status != 2 || std::count(r.err.begin(), r.err.end(), '\n') != 1 ||
+            r.err.find(b.names) == std::string::npos || !r.out.empty())
+            print_error("creepwork %s-> exit %d, stderr '%s', stdout '%s'\n", shown.c_str(),
+                        r.status, r.err.c_str(), r.out.c_str());
+        assert_int_equal(r.status, 2);
+        assert_int_equal(std::count(r.err.begin(), r.err.end(), '\n'), 1);
+        assert_true(r.err.rfind("creepwork: ", 0) == 0);
+        assert_true(r.err.find(b.names) != std::string::npos);
+        assert_true(r.out.empty());
+        assert_false(fs::exists(never));
+    }
+    for (const auto& e : fs::directory_iterator(g_scratch))
+        assert_true(e.path().filename().string().find(".tmp-") == std::string::npos);
+    // --force replaces the earlier output.
+    run_ok({"wear", "--in", good, "--out", earlier, "--no-plots", "--force"});
+}
+
+// Values the library accepts but a wheel-rail contact never has are warned
+// about, naming the line and column; the run succeeds.
+void wear_warns_about_implausible_values(void**)
+{
+    const std::string in = write_file("odd.csv", "s0,a,b,N,passes,contact_angle\n"
+                                                 "0,6e-3,4e-3,60,1,0\n"
+                                                 "0.5,6e-3,4e-3,6e4,1,0\n"
+                                                 "0,6e-3,4e-3,6e4,1,1.4\n");
+    const Run r = run_ok({"wear", "--in", in, "--out", g_scratch + "/odd", "--no-plots"});
+    assert_non_null(std::strstr(r.err.c_str(), "line 2: column N = 60"));
+    assert_non_null(std::strstr(r.err.c_str(), "line 3: column s0 = 0.5"));
+    assert_non_null(std::strstr(r.err.c_str(), "line 4: column contact_angle = 1.4"));
+}
+
+// The picture: written with its script, unless gnuplot is missing.
+void wear_writes_picture(void**)
+{
+    if (std::getenv("CW_TEST_NO_GNUPLOT")) {
+        cw_skip();
+        return;
+    }
+    const std::string in = write_file("pic.csv", kStates);
+    const std::string out = g_scratch + "/pic";
+    run_ok({"wear", "--in", in, "--out", out});
+    assert_true(fs::file_size(out + "/wear.png") > 10000);
+    assert_true(fs::exists(out + "/gnuplot/wear.gp"));
+    assert_non_null(std::strstr(slurp(out + "/gnuplot/wear.gp").c_str(), "parabol"));
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+    if (argc < 3) {
+        std::fprintf(stderr, "usage: test_cli_wear <creepwork> <scratch dir> [filter]\n");
+        return 2;
+    }
+    g_cli = argv[1];
+    g_scratch = argv[2];
+    fs::remove_all(g_scratch);
+    fs::create_directories(g_scratch);
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(wear_matches_library),
+        cmocka_unit_test(wear_wheel_distance),
+        cmocka_unit_test(wear_bad_inputs_fail_cleanly),
+        cmocka_unit_test(wear_warns_about_implausible_values),
+        cmocka_unit_test(wear_writes_picture),
+    };
+    return cw_run_tests(tests, argc > 3 ? argv[3] : nullptr);
+}
