@@ -45,8 +45,11 @@ int dispatch(int argc, char** argv)
     if (command == "solve") return command_solve(argc, argv, 2);
     if (command == "sweep") return command_sweep(argc, argv, 2);
     if (command == "fit-fig6") return command_fit_fig6(argc, argv, 2);
-    const std::string hint = nearest(command, {"solve", "sweep", "fit-fig6", "help", "version"});
-    throw CliError(kExitUsage, "'" + command + "': unknown command (solve, sweep, fit-fig6" +
+    if (command == "campaign") return command_campaign(argc, argv, 2);
+    const std::string hint =
+        nearest(command, {"solve", "sweep", "fit-fig6", "campaign", "help", "version"});
+    throw CliError(kExitUsage, "'" + command +
+                                   "': unknown command (solve, sweep, fit-fig6, campaign" +
                                    (hint.empty() ? std::string("; see --help)")
                                                  : "); did you mean " + hint + "?"));
 }

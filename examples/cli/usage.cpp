@@ -17,6 +17,8 @@ commands:
   sweep      slip/adhesion maps for series of creepages (the paper's Figs. 2-5)
   fit-fig6   reproduce the paper's Figs. 6 and 7: fit the semi-axis to the
              printed forces, print the comparison, write the pictures
+  campaign   many contacts from a CSV file, or a creep-force table, over MPI
+             ranks and threads (built with MPI; creepwork campaign --help)
   --version  program and library versions
 
 exit status: 0 success, 1 environment failure (cannot write, gnuplot failed),
