@@ -67,6 +67,7 @@ struct Setup {
     std::vector<ContactCase> table_rows; // the table's points (--table)
     JournalIdentity identity;
     PreparedOutput output;
+    double setup_seconds = 0.0; // reading the input, opening the checkpoint
 
     const std::vector<ContactCase>& cases() const
     {
@@ -76,6 +77,7 @@ struct Setup {
 
 void prepare(const CampaignOptions& opt, Setup& s)
 {
+    const auto start = std::chrono::steady_clock::now();
     if (opt.table) {
         s.table_rows = table_cases(opt.spec);
         s.identity = {1, table_hash(opt.spec), s.table_rows.size()};
@@ -88,11 +90,13 @@ void prepare(const CampaignOptions& opt, Setup& s)
         s.identity = {0, s.input.hash, s.input.cases.size()};
     }
     s.output = prepare_output(opt.out, opt.resume, opt.force, s.identity);
+    s.setup_seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
 std::string campaign_json(const CampaignOptions& opt, const Setup& s, const RunStats& run,
-                          uint64_t ok, uint64_t failed, int ranks, int threads_total,
-                          int threads_rank0)
+                          uint64_t ok, uint64_t failed, double write_seconds, int ranks,
+                          int threads_total, int threads_rank0)
 {
     cwcli::JsonObject j;
     const double rate = run.seconds > 0.0 ? static_cast<double>(run.rows) / run.seconds : 0.0;
@@ -105,8 +109,10 @@ std::string campaign_json(const CampaignOptions& opt, const Setup& s, const RunS
         .integer("resumed_rows", static_cast<long>(s.output.done_rows))
         .integer("solved_this_run", static_cast<long>(run.rows))
         .integer("chunks_this_run", static_cast<long>(run.chunks))
+        .number("seconds_setup", s.setup_seconds)
         .number("seconds_this_run", run.seconds)
         .number("rows_per_second_this_run", rate)
+        .number("seconds_writing", write_seconds)
         .integer("ranks", ranks)
         .integer("threads_total", threads_total)
         .integer("threads_rank0", threads_rank0)
@@ -118,6 +124,7 @@ std::string campaign_json(const CampaignOptions& opt, const Setup& s, const RunS
 int finish(const CampaignOptions& opt, Setup& s, const RunStats& run, int ranks,
            int threads_total, int threads_rank0)
 {
+    const auto start = std::chrono::steady_clock::now();
     uint64_t ok = 0, failed = 0;
     std::string first_failure, written;
     if (opt.table) {
@@ -135,9 +142,11 @@ int finish(const CampaignOptions& opt, Setup& s, const RunStats& run, int ranks,
             first_failure += (first_failure.empty() ? "" : "; ") + f;
         written = opt.out + "/results.csv";
     }
+    const double write_seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     write_file_atomically(opt.out + "/campaign.json",
-                          campaign_json(opt, s, run, ok, failed, ranks, threads_total,
-                                        threads_rank0));
+                          campaign_json(opt, s, run, ok, failed, write_seconds, ranks,
+                                        threads_total, threads_rank0));
     s.output.journal.reset();
     remove_checkpoint(opt.out);
 

@@ -7,6 +7,7 @@
 #include "../json.hpp"
 #include "atomic_file.hpp"
 #include "csv_text.hpp"
+#include "number_text.hpp"
 #include "results_writer.hpp"
 #include "wire.hpp"
 
@@ -76,8 +77,8 @@ std::vector<ContactCase> table_cases(const TableSpec& s)
             p.G = 1.0;
             p.nu = nu;
             if (status != CW_OK)
-                base.unreadable = std::string("a/b = ") + cwcli::shortest_exact(aob) +
-                                  ", nu = " + cwcli::shortest_exact(nu) + ": " + message;
+                base.unreadable = std::string("a/b = ") + number_text(aob) +
+                                  ", nu = " + number_text(nu) + ": " + message;
             for (double xi : s.xi)
                 for (double eta : s.eta)
                     for (double psi : s.psi) {
@@ -99,7 +100,7 @@ namespace {
 std::string json_array(const std::vector<double>& v)
 {
     std::string s = "[";
-    for (double x : v) s += (s.size() > 1 ? ", " : "") + cwcli::shortest_exact(x);
+    for (double x : v) s += (s.size() > 1 ? ", " : "") + number_text(x);
     return s + "]";
 }
 
@@ -123,7 +124,7 @@ std::string table_json(const TableSpec& s, const TableSummary& summary)
     member("grid", json_quote(s.grid.kind == CW_GRID_UNIFORM ? "uniform" : "strips"), false);
     member("nx", std::to_string(s.grid.nx), false);
     member("ny", std::to_string(s.grid.ny), false);
-    member("box_scale", cwcli::shortest_exact(s.grid.box_scale), false);
+    member("box_scale", number_text(s.grid.box_scale), false);
     member("pressure",
            json_quote(s.pressure == CW_PRESSURE_ELLIPTIC ? "elliptic" : "parabolic"), false);
     member("points", std::to_string(summary.points), false);
@@ -174,14 +175,14 @@ TableSummary write_table(const Journal& journal, const TableSpec& s, const std::
         const uint64_t ipsi = k % npsi, ieta = (k / npsi) % neta,
                        ixi = (k / (npsi * neta)) % nxi, inu = (k / (npsi * neta * nxi)) % nnu,
                        iaob = k / (npsi * neta * nxi * nnu);
-        csv = cwcli::shortest_exact(s.aob[iaob]) + "," + cwcli::shortest_exact(s.nu[inu]) + "," +
-               cwcli::shortest_exact(s.xi[ixi]) + "," + cwcli::shortest_exact(s.eta[ieta]) + "," +
-               cwcli::shortest_exact(s.psi[ipsi]) + "," + status_name(o.status);
+        csv = number_text(s.aob[iaob]) + "," + number_text(s.nu[inu]) + "," +
+               number_text(s.xi[ixi]) + "," + number_text(s.eta[ieta]) + "," +
+               number_text(s.psi[ipsi]) + "," + status_name(o.status);
         if (o.status == CW_OK) {
             // On the unit contact mu N = 1 and c = 1: fx, fy, mz are Fx, Fy, Mz.
-            csv += "," + cwcli::shortest_exact(o.result.Fx) + "," +
-                   cwcli::shortest_exact(o.result.Fy) + "," +
-                   cwcli::shortest_exact(o.result.Mz) + ",\n";
+            csv += "," + number_text(o.result.Fx) + "," +
+                   number_text(o.result.Fy) + "," +
+                   number_text(o.result.Mz) + ",\n";
         } else {
             ++summary.failed;
             if (summary.first_failure.empty()) summary.first_failure = o.message;

@@ -4,7 +4,7 @@ namespace cwcampaign {
 
 int CsvRecordReader::get()
 {
-    const int c = in_.get();
+    const int c = buf_.sbumpc();
     if (c == std::char_traits<char>::eof()) return c;
     hash_ ^= static_cast<unsigned char>(c);
     hash_ *= 1099511628211ull;

@@ -3,9 +3,9 @@
 #include <algorithm>
 #include <cmath>
 
-#include "../json.hpp" // shortest_exact: the digits `creepwork solve --format json` prints
 #include "atomic_file.hpp"
 #include "csv_text.hpp"
+#include "number_text.hpp" // the digits `creepwork solve --format json` prints
 
 namespace cwcampaign {
 
@@ -38,7 +38,7 @@ const Column kColumns[] = {
 std::string optional_number(const std::vector<double>& values, uint64_t row)
 {
     const double v = values[row];
-    return std::isnan(v) ? std::string() : cwcli::shortest_exact(v);
+    return std::isnan(v) ? std::string() : number_text(v);
 }
 
 } // namespace
@@ -93,8 +93,10 @@ MergeSummary write_results_csv(const Journal& journal, const CampaignInput& in,
         for (const Column& c : kColumns) {
             line += ',';
             if (o.status != CW_OK) continue;
-            line += c.real ? cwcli::shortest_exact(c.real(o.result))
-                           : std::to_string(c.integer(o.result));
+            if (c.real)
+                append_number(line, c.real(o.result));
+            else
+                line += std::to_string(c.integer(o.result));
         }
         if (in.has_s0) line += "," + optional_number(in.s0, row);
         if (in.has_distance) line += "," + optional_number(in.distance, row);
