@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
@@ -100,6 +101,51 @@ pid_t start_group(const std::vector<std::string>& argv, const std::vector<std::s
                   const std::string& out_file, const std::string& err_file)
 {
     return spawn(argv, env, out_file, err_file, true);
+}
+
+namespace {
+
+// State and parent of a process from /proc/PID/stat ("pid (comm) state ppid
+// ..."; comm may hold spaces and parentheses, so parse after the last ')').
+bool read_stat(pid_t pid, char& state, long& ppid)
+{
+    const std::string stat = slurp("/proc/" + std::to_string(pid) + "/stat");
+    const size_t close = stat.rfind(')');
+    return close != std::string::npos &&
+           std::sscanf(stat.c_str() + close + 1, " %c %ld", &state, &ppid) == 2;
+}
+
+} // namespace
+
+bool process_alive(pid_t pid)
+{
+    char state = 0;
+    long ppid = 0;
+    return read_stat(pid, state, ppid) && state != 'Z' && state != 'X';
+}
+
+std::vector<pid_t> live_descendants(pid_t root)
+{
+    std::vector<std::pair<pid_t, long>> all; // pid, parent
+    for (const auto& entry : std::filesystem::directory_iterator("/proc")) {
+        const std::string name = entry.path().filename().string();
+        if (name.find_first_not_of("0123456789") != std::string::npos) continue;
+        const pid_t pid = static_cast<pid_t>(std::atol(name.c_str()));
+        char state = 0;
+        long ppid = 0;
+        if (read_stat(pid, state, ppid) && state != 'Z' && state != 'X') all.emplace_back(pid, ppid);
+    }
+    std::vector<pid_t> out, frontier = {root};
+    while (!frontier.empty()) {
+        const pid_t parent = frontier.back();
+        frontier.pop_back();
+        for (const auto& [pid, ppid] : all)
+            if (ppid == parent) {
+                out.push_back(pid);
+                frontier.push_back(pid);
+            }
+    }
+    return out;
 }
 
 std::string slurp(const std::string& path)

@@ -41,6 +41,11 @@ std::vector<std::string> campaign_argv(int np, const std::vector<std::string>& a
 pid_t start_group(const std::vector<std::string>& argv, const std::vector<std::string>& env,
                   const std::string& out_file, const std::string& err_file);
 
+// The live (not zombie) descendants of pid, from /proc.
+std::vector<pid_t> live_descendants(pid_t pid);
+// Whether pid exists and is not a zombie.
+bool process_alive(pid_t pid);
+
 std::string slurp(const std::string& path);
 void write_text(const std::string& path, const std::string& text);
 bool exists(const std::string& path);
