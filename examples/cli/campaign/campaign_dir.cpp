@@ -80,6 +80,8 @@ PreparedOutput prepare_output(const std::string& dir, bool resume, bool force,
                               kCampaignMarker + "); refusing to write into it");
     const fs::path checkpoint = d / kCheckpointFile;
     const bool unfinished = !fresh && fs::exists(checkpoint, ec);
+    if (unfinished && Journal::in_use(checkpoint.string()))
+        throw refuse(dir, "is in use by a running campaign (its checkpoint is locked)");
 
     if (fresh || force) {
         start_fresh(d, dir, identity);

@@ -203,6 +203,14 @@ CampaignInput read_campaign_csv(const std::string& path)
 {
     std::ifstream file(path, std::ios::binary);
     if (!file) throw InputError(path + ": cannot open the input file");
+    // Spreadsheets export CSV with a UTF-8 byte-order mark; it is not part of
+    // the first column's name.
+    char bom[3] = {0, 0, 0};
+    file.read(bom, 3);
+    if (!(file.gcount() == 3 && bom[0] == '\xEF' && bom[1] == '\xBB' && bom[2] == '\xBF')) {
+        file.clear();
+        file.seekg(0);
+    }
     CsvRecordReader csv(file);
     std::vector<std::string> header;
     std::string error;

@@ -5,6 +5,7 @@
 #include <cstring>
 
 #include <fcntl.h>
+#include <sys/file.h>
 #include <unistd.h>
 
 namespace cwcampaign {
@@ -79,11 +80,21 @@ bool read_all(int fd, void* data, size_t size, uint64_t offset)
 
 } // namespace
 
+// An exclusive lock for the journal's lifetime: a second campaign started on
+// the same directory while one runs must not write into its checkpoint.
+static void lock_or_throw(int fd, const std::string& path)
+{
+    if (flock(fd, LOCK_EX | LOCK_NB) != 0)
+        throw JournalError(path + " is in use by a running campaign");
+}
+
 Journal Journal::create(const std::string& path, const JournalIdentity& id)
 {
-    const int fd = ::open(path.c_str(), O_RDWR | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+    const int fd = ::open(path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
     if (fd < 0) throw JournalError(sys_error("cannot create the checkpoint", path));
     Journal j(fd, path);
+    lock_or_throw(fd, path);
+    if (ftruncate(fd, 0) != 0) throw JournalError(sys_error("cannot truncate the checkpoint", path));
     const Header h = make_header(id);
     write_all(fd, &h, sizeof h, 0, path);
     if (fdatasync(fd) != 0) throw JournalError(sys_error("cannot sync the checkpoint", path));
@@ -96,6 +107,7 @@ Journal Journal::open_existing(const std::string& path, const JournalIdentity& i
     const int fd = ::open(path.c_str(), O_RDWR | O_CLOEXEC);
     if (fd < 0) throw JournalError(sys_error("cannot open the checkpoint", path));
     Journal j(fd, path);
+    lock_or_throw(fd, path);
     Header h;
     if (!read_all(fd, &h, sizeof h, 0) || std::memcmp(h.magic, kMagic, sizeof kMagic) != 0 ||
         h.checksum != fnv1a(&h, offsetof(Header, checksum)))
@@ -116,12 +128,22 @@ Journal Journal::open_existing(const std::string& path, const JournalIdentity& i
                            std::to_string(want.rows) + " rows, hash " +
                            std::to_string(want.input_hash) + ")");
     j.end_ = sizeof h;
+    j.rows_ = id.rows;
     j.scan();
     return j;
 }
 
+bool Journal::in_use(const std::string& path)
+{
+    const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+    if (fd < 0) return false;
+    const bool locked = flock(fd, LOCK_EX | LOCK_NB) != 0;
+    ::close(fd);
+    return locked;
+}
+
 Journal::Journal(Journal&& other) noexcept
-    : fd_(other.fd_), path_(std::move(other.path_)), end_(other.end_),
+    : fd_(other.fd_), path_(std::move(other.path_)), end_(other.end_), rows_(other.rows_),
       records_(std::move(other.records_)), dropped_tail_(other.dropped_tail_)
 {
     other.fd_ = -1;
@@ -158,6 +180,8 @@ void Journal::scan()
             dropped_tail_ = true;
             break;
         }
+        if (r.outcomes.empty() || r.first_row + r.outcomes.size() > rows_)
+            throw JournalError(path_ + " holds a chunk outside its input's rows (damaged?)");
         records_.push_back(Record{r.first_row, r.outcomes.size(), pos + 12, length});
         pos += 12 + length + 8;
     }

@@ -6,7 +6,8 @@
 // can leave at most a torn last record; resuming drops it (and so redoes
 // only that chunk). The header ties the file to its input (hash and row count) and to
 // the build (struct sizes and library version): results of another input
-// or another build are never mixed into a campaign.
+// or another build are never mixed into a campaign. The journal holds an
+// exclusive lock (flock) while open, so two runs cannot share one.
 #pragma once
 
 #include <cstdint>
@@ -40,6 +41,8 @@ public:
 
     // A new, empty journal at path (an existing file is replaced).
     static Journal create(const std::string& path, const JournalIdentity& id);
+    // Whether a running campaign holds the journal at path (its lock).
+    static bool in_use(const std::string& path);
     // An existing journal: checks its header against id (JournalError
     // saying what differs), reads its records, drops a torn tail.
     static Journal open_existing(const std::string& path, const JournalIdentity& id);
@@ -66,6 +69,7 @@ private:
     int fd_ = -1;
     std::string path_;
     uint64_t end_ = 0; // offset after the last good record
+    uint64_t rows_ = 0;
     std::vector<Record> records_;
     bool dropped_tail_ = false;
 };

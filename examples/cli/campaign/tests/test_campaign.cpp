@@ -187,7 +187,8 @@ void bad_rows_get_error_lines(void** state)
     const std::string good = "fastsim,strips,10,10,0.006,0.005,80000,0.3,82e9,0.28,0.001,0,0.5";
     const std::string header =
         "id,model,grid,nx,ny,a,b,N,mu,G,nu,xi_x,xi_y,phi,box_scale,L1,L2,L3\n";
-    std::string text = header;
+    // A spreadsheet's UTF-8 byte-order mark before the header is not part of "id".
+    std::string text = "\xEF\xBB\xBF" + header;
     text += "g1," + good + ",,,,\n";                                               // line 2
     text += "b1,fastsim,strips,10,10,0.006,0.005,80000,0.3,82e9,abc,0,0,0,,,,\n";   // line 3
     text += "b2,fastsim,strips,10,10,0.006,0.005,80000,0.3,82e9,0.28,0,0\n";        // line 4
@@ -362,6 +363,28 @@ void output_directory_rules(void** state)
     args = {"--in", path("in.csv"), "--out", path("fresh"), "--resume"};
     expect_status(campaign(0, args), 0);
     assert_true(slurp(path("fresh/results.csv")) == first);
+
+    // While a run uses a directory, a second is refused (--resume or
+    // --force alike, before anything is removed) and the first finishes.
+    const pid_t busy = start_group(
+        campaign_argv(0, {"--in", path("in.csv"), "--out", path("busy"), "--chunk", "1",
+                          "--threads", "1", "--quiet"}),
+        {"CREEPWORK_CAMPAIGN_TEST_CHUNK_DELAY_MS=300"}, path("busy.out"), path("busy.err"));
+    assert_true(busy > 0);
+    const std::string checkpoint = path("busy/checkpoint.cwj");
+    for (int k = 0; k < 12000; ++k) {
+        std::error_code ec;
+        if (fs::exists(checkpoint, ec) && fs::file_size(checkpoint, ec) > 100) break;
+        std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    }
+    for (const char* flag : {"--resume", "--force"}) {
+        r = expect_status(campaign(0, {"--in", path("in.csv"), "--out", path("busy"), flag}), 2);
+        expect_contains(r.err, "is in use by a running campaign");
+    }
+    int status = 0;
+    waitpid(busy, &status, 0);
+    assert_true(WIFEXITED(status) && WEXITSTATUS(status) == 0);
+    assert_true(slurp(path("busy/results.csv")) == first);
 }
 
 void resume_after_kill(void** state)
