@@ -65,8 +65,9 @@ running:
   --quiet           no progress lines on stderr
 
 exit status: 0 done (rows that failed are in the results, counted on
-stderr), 1 environment (cannot write, MPI), 2 bad input (options, the
-input file's header or columns, an output directory the rules refuse)
+stderr), 1 environment (cannot write, MPI) or a table with failed points
+(it could not be interpolated), 2 bad input (options, the input file's
+header or columns, an output directory the rules refuse)
 )";
 }
 
