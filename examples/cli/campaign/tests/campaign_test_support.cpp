@@ -10,6 +10,7 @@
 
 #include <fcntl.h>
 #include <spawn.h>
+#include <sys/file.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -122,6 +123,15 @@ bool process_alive(pid_t pid)
     char state = 0;
     long ppid = 0;
     return read_stat(pid, state, ppid) && state != 'Z' && state != 'X';
+}
+
+bool file_locked(const std::string& path)
+{
+    const int fd = open(path.c_str(), O_RDONLY | O_CLOEXEC);
+    if (fd < 0) return false;
+    const bool locked = flock(fd, LOCK_EX | LOCK_NB) != 0;
+    close(fd); // releases the lock if this call took it
+    return locked;
 }
 
 std::vector<pid_t> live_descendants(pid_t root)

@@ -45,6 +45,8 @@ pid_t start_group(const std::vector<std::string>& argv, const std::vector<std::s
 std::vector<pid_t> live_descendants(pid_t pid);
 // Whether pid exists and is not a zombie.
 bool process_alive(pid_t pid);
+// Whether another process holds an exclusive flock on path.
+bool file_locked(const std::string& path);
 
 std::string slurp(const std::string& path);
 void write_text(const std::string& path, const std::string& text);
