@@ -115,7 +115,10 @@ int cw_batch_solve(cw_batch* batch, size_t count, const cw_params* params, int m
             // one-thread region, and solving allocates nothing.
             for (long i = 0; i < n; ++i) solve_one(i, 0);
         } else {
-#pragma omp parallel for schedule(static) num_threads(threads)
+            // Dynamic: contacts of one batch can differ 10x in cost (the
+            // exact model, partial against full slip); a free thread takes
+            // the next. Which thread solves a contact cannot change it.
+#pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
             for (long i = 0; i < n; ++i) {
 #ifdef _OPENMP
                 solve_one(i, omp_get_thread_num());

@@ -4,12 +4,13 @@
 #   install-deps.sh demo   what ./run demo needs: the library, the CLI, gnuplot
 #   install-deps.sh all    everything ./run test needs (default): also
 #                          gfortran, cmocka, clang for fuzzing and TSan,
-#                          valgrind
+#                          valgrind, and Open MPI for creepwork campaign and
+#                          its tests (the demo builds without it)
 set -euo pipefail
 
 demo=(cmake g++ make libeigen3-dev gnuplot-nox)
 all=("${demo[@]}" gfortran pkg-config libcmocka-dev clang-14 libclang-rt-14-dev libomp-14-dev
-     valgrind)
+     valgrind libopenmpi-dev openmpi-bin)
 case "${1:-all}" in
   demo) packages=("${demo[@]}") ;;
   all) packages=("${all[@]}") ;;

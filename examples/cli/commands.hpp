@@ -8,6 +8,8 @@ int command_solve(int argc, char** argv, int first);
 int command_sweep(int argc, char** argv, int first);
 int command_fit_fig6(int argc, char** argv, int first);
 int command_wear(int argc, char** argv, int first);
+// Execs creepwork-campaign (examples/cli/campaign/, built only with MPI).
+int command_campaign(int argc, char** argv, int first);
 
 // Usage texts (usage.cpp).
 const char* usage_main();

@@ -46,9 +46,11 @@ int dispatch(int argc, char** argv)
     if (command == "sweep") return command_sweep(argc, argv, 2);
     if (command == "fit-fig6") return command_fit_fig6(argc, argv, 2);
     if (command == "wear") return command_wear(argc, argv, 2);
-    const std::string hint =
-        nearest(command, {"solve", "sweep", "fit-fig6", "wear", "help", "version"});
-    throw CliError(kExitUsage, "'" + command + "': unknown command (solve, sweep, fit-fig6, wear" +
+    if (command == "campaign") return command_campaign(argc, argv, 2);
+    const std::string hint = nearest(
+        command, {"solve", "sweep", "fit-fig6", "wear", "campaign", "help", "version"});
+    throw CliError(kExitUsage, "'" + command +
+                                   "': unknown command (solve, sweep, fit-fig6, wear, campaign" +
                                    (hint.empty() ? std::string("; see --help)")
                                                  : "); did you mean " + hint + "?"));
 }

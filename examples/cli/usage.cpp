@@ -20,6 +20,8 @@ commands:
   wear       wear loop over a CSV of contact states: USFD or Archard wear
              accumulated on the rail or wheel profile, and the same with the
              paper's parabola assumption, as CSV and a picture
+  campaign   many contacts from a CSV file, or a creep-force table, over MPI
+             ranks and threads (built with MPI; creepwork campaign --help)
   --version  program and library versions
 
 exit status: 0 success, 1 environment failure (cannot write, gnuplot failed),

@@ -1,0 +1,227 @@
+#include "campaign_options.hpp"
+
+#include <cmath>
+
+#include "../cli_error.hpp"
+#include "../json.hpp"
+#include "../options.hpp"
+
+namespace cwcampaign {
+
+using cwcli::OptionKind;
+using cwcli::OptionSpec;
+using cwcli::usage_error;
+
+const char* usage_campaign()
+{
+    return R"(usage: creepwork campaign --in FILE.csv --out DIR [options]
+       creepwork campaign --table --out DIR [table options] [options]
+       mpirun -np R creepwork campaign ...      (R ranks; without mpirun: one)
+
+Solves many contacts -- the rows of FILE.csv, or the points of a creep-force
+table -- over MPI ranks and the OpenMP threads of each rank, with dynamic
+load balancing, and writes DIR/results.csv (DIR/table.csv) in input order.
+The results are bitwise the same for any number of ranks and threads. A
+row that cannot be read or solved gets a status and a message on its line;
+the campaign goes on. Killed, it resumes with --resume, without redoing
+finished chunks. README "Campaigns" describes the files.
+
+input (--in): a CSV file with a header; columns (SI units)
+  required  id,model,grid,nx,ny,a,b,N,mu,G,nu,xi_x,xi_y,phi
+              model fastsim|exact|calibrated, grid strips|uniform; G and nu
+              may be empty when L1, L2, L3 are given
+  optional  box_scale (uniform grid), pressure (parabolic|elliptic),
+            rolling_direction (+1|-1), spin_offset, flexibility_blending
+            (0|1), L1, L2, L3 (m/Pa), tolerance, max_iterations (exact
+            model), s0, distance (m; carried to results.csv for wear)
+  an empty optional cell takes the library's default, as `creepwork solve`
+
+output:
+  --out DIR         the campaign's directory (created; see README for the
+                    rules on an existing one)
+  --resume          continue the unfinished campaign in DIR (or start one)
+  --force           start over in a DIR an earlier campaign wrote
+
+creep-force table (--table): points over a/b, nu and Kalker's normalised
+creepages xi' = G c^2 C11 xi_x/(3 mu N), eta' = G c^2 C22 xi_y/(3 mu N),
+spin psi' = G c^3 C23 phi/(mu N), c = sqrt(a b); entries Fx/(mu N),
+Fy/(mu N), Mz/(mu N c). Lists are comma-separated, strictly increasing;
+the defaults are CONTACT's USETAB axes.
+  --aob LIST        a/b values (default 24 values, 1/7 .. 200)
+  --nu LIST         Poisson's ratios (default 0.28)
+  --xi LIST --eta LIST --psi LIST
+                    normalised creepages and spin (default 0, 1/7 .. 7, 7e5;
+                    psi also negative)
+  --model fastsim|exact|calibrated   --pressure parabolic|elliptic
+  --grid strips|uniform   --nx N   --ny N   --box-scale S
+                    the solver of every point (default fastsim, strips 20 x 20)
+
+running:
+  --threads N       OpenMP threads per rank (default: OMP_NUM_THREADS, else
+                    the CPUs the rank may run on, shared among the ranks of
+                    a node when they are not bound)
+  --chunk N         rows per chunk (default: sized to about 0.25 s of work)
+  --max-grids N     grid shapes each rank keeps ready (default 8)
+  --quiet           no progress lines on stderr
+
+exit status: 0 done (rows that failed are in the results, counted on
+stderr), 1 environment (cannot write, MPI) or a table with failed points
+(it could not be interpolated), 2 bad input (options, the input file's
+header or columns, an output directory the rules refuse)
+)";
+}
+
+namespace {
+
+std::vector<OptionSpec> specs()
+{
+    using K = OptionKind;
+    return {{"in", K::text, {}},
+            {"out", K::text, {}},
+            {"resume", K::flag, {}},
+            {"force", K::flag, {}},
+            {"threads", K::integer, {}},
+            {"chunk", K::integer, {}},
+            {"max-grids", K::integer, {}},
+            {"quiet", K::flag, {}},
+            {"help", K::flag, {}},
+            {"table", K::flag, {}},
+            {"aob", K::text, {}},
+            {"nu", K::text, {}},
+            {"xi", K::text, {}},
+            {"eta", K::text, {}},
+            {"psi", K::text, {}},
+            {"model", K::choice, {"fastsim", "exact", "calibrated"}},
+            {"pressure", K::choice, {"parabolic", "elliptic"}},
+            {"grid", K::choice, {"strips", "uniform"}},
+            {"nx", K::integer, {}},
+            {"ny", K::integer, {}},
+            {"box-scale", K::number, {}}};
+}
+
+const char* const kTableOnly[] = {"aob", "nu",   "xi", "eta", "psi",      "model",
+                                  "pressure", "grid", "nx", "ny",  "box-scale"};
+
+// "0,0.5,1" -> {0, 0.5, 1}: finite numbers, strictly increasing.
+std::vector<double> read_list(const cwcli::ParsedOptions& o, const std::string& name,
+                              std::vector<double> fallback)
+{
+    if (!o.has(name)) return fallback;
+    const std::string text = o.text(name, "");
+    std::vector<double> values;
+    size_t pos = 0;
+    for (;;) {
+        const size_t comma = text.find(',', pos);
+        const std::string item = text.substr(pos, comma == std::string::npos ? std::string::npos
+                                                                              : comma - pos);
+        double v = 0.0;
+        if (!cwcli::parse_finite_double(item, v))
+            throw usage_error("--" + name, "'" + item + "' is not a finite number (a list is "
+                                                        "comma-separated, e.g. 0,0.5,1)");
+        if (!values.empty() && !(v > values.back()))
+            throw usage_error("--" + name, "values must be strictly increasing ('" + item +
+                                               "' follows " +
+                                               cwcli::shortest_exact(values.back()) + ")");
+        values.push_back(v);
+        if (comma == std::string::npos) break;
+        pos = comma + 1;
+    }
+    return values;
+}
+
+void read_table(const cwcli::ParsedOptions& o, TableSpec& s)
+{
+    s.aob = read_list(o, "aob", s.aob);
+    s.nu = read_list(o, "nu", s.nu);
+    s.xi = read_list(o, "xi", s.xi);
+    s.eta = read_list(o, "eta", s.eta);
+    s.psi = read_list(o, "psi", s.psi);
+    if (s.aob.front() < CW_MIN_ASPECT || s.aob.back() > CW_MAX_ASPECT)
+        throw usage_error("--aob", "values must lie in [1e-3, 1e3], the range of Kalker's "
+                                   "coefficients");
+    if (s.nu.front() < 0.0 || s.nu.back() > 0.5)
+        throw usage_error("--nu", "values must lie in [0, 0.5]");
+    const std::string model = o.text("model", "fastsim");
+    s.model = model == "exact" ? CW_MODEL_EXACT
+              : model == "calibrated" ? CW_MODEL_CALIBRATED
+                                      : CW_MODEL_FASTSIM;
+    if (o.text("pressure", "parabolic") == "elliptic") s.pressure = CW_PRESSURE_ELLIPTIC;
+    if (o.has("grid"))
+        s.grid.kind = o.text("grid", "") == "uniform" ? CW_GRID_UNIFORM : CW_GRID_KALKER_STRIPS;
+    s.grid.nx = o.integer("nx", s.grid.nx);
+    s.grid.ny = o.integer("ny", s.grid.ny);
+    for (const char* n : {"nx", "ny"}) {
+        const int v = o.integer(n, 1);
+        if (v < 1 || v > CW_MAX_GRID_CELLS)
+            throw usage_error(std::string("--") + n, "must lie in 1..1000 (got " +
+                                                         std::to_string(v) + ")");
+    }
+    if (o.has("box-scale")) {
+        if (s.grid.kind != CW_GRID_UNIFORM)
+            throw usage_error("--box-scale", "only used with --grid uniform");
+        s.grid.box_scale = o.number("box-scale", 1.0);
+        if (!(s.grid.box_scale >= 1.0 && s.grid.box_scale <= CW_MAX_BOX_SCALE))
+            throw usage_error("--box-scale", "must lie in [1, 100]");
+    }
+    // Rank 0 holds every point (about 300 bytes each) while the table runs.
+    if (table_points(s) > 10000000ull)
+        throw usage_error("--table", std::to_string(table_points(s)) +
+                                         " points is more than 1e7; use shorter axes or "
+                                         "several tables");
+}
+
+} // namespace
+
+CampaignOptions read_campaign_options(int argc, char** argv, int first)
+{
+    CampaignOptions c;
+    for (int k = first; k < argc; ++k)
+        if (std::string(argv[k]) == "--help" || std::string(argv[k]) == "-h") {
+            c.help = true;
+            return c;
+        }
+    const cwcli::ParsedOptions o = cwcli::parse_options(specs(), argc, argv, first);
+    c.table = o.has("table");
+    c.out = o.text("out", "");
+    c.resume = o.has("resume");
+    c.force = o.has("force");
+    c.quiet = o.has("quiet");
+    if (c.resume && c.force)
+        throw usage_error("--resume", "and --force contradict each other: continue, or start "
+                                      "over?");
+    if (c.out.empty()) throw usage_error("--out", "missing: the campaign's directory");
+    if (c.table) {
+        if (o.has("in"))
+            throw usage_error("--in", "not used with --table (the table makes its own rows)");
+        c.spec = usetab_axes();
+        read_table(o, c.spec);
+    } else {
+        for (const char* name : kTableOnly)
+            if (o.has(name))
+                throw usage_error(std::string("--") + name,
+                                  "only used with --table (a campaign's rows give their own "
+                                  "values)");
+        c.in = o.text("in", "");
+        if (c.in.empty())
+            throw usage_error("--in", "missing: the input CSV file (or --table for a creep-force "
+                                      "table)");
+    }
+    c.threads = o.integer("threads", 0);
+    if (o.has("threads") && (c.threads < 1 || c.threads > CW_MAX_BATCH_THREADS))
+        throw usage_error("--threads", "must lie in 1..256 (got " + std::to_string(c.threads) +
+                                           ")");
+    if (o.has("chunk")) {
+        const int chunk = o.integer("chunk", 0);
+        if (chunk < 1 || chunk > 65536)
+            throw usage_error("--chunk", "must lie in 1..65536 rows (got " +
+                                             std::to_string(chunk) + ")");
+        c.chunk = static_cast<uint64_t>(chunk);
+    }
+    c.max_grids = o.integer("max-grids", c.max_grids);
+    if (c.max_grids < 1 || c.max_grids > 1000)
+        throw usage_error("--max-grids", "must lie in 1..1000 (got " +
+                                             std::to_string(c.max_grids) + ")");
+    return c;
+}
+
+} // namespace cwcampaign

@@ -1,0 +1,17 @@
+#include "campaign_types.hpp"
+
+namespace cwcampaign {
+
+const char* status_name(int status)
+{
+    if (status == CW_OK) return "ok";
+    if (status == kStatusRowUnreadable) return "ROW_UNREADABLE";
+    // The names of the header's own list, so a new code needs no edit here.
+#define CW_CAMPAIGN_STATUS_NAME_(name, value, message) \
+    if (status == value) return #name;
+    CW_STATUS_LIST(CW_CAMPAIGN_STATUS_NAME_)
+#undef CW_CAMPAIGN_STATUS_NAME_
+    return "UNKNOWN_STATUS";
+}
+
+} // namespace cwcampaign

@@ -1,0 +1,130 @@
+#include "chunk_solver.hpp"
+
+#include <cstring>
+#include <map>
+#include <tuple>
+
+namespace cwcampaign {
+
+namespace {
+
+bool same_grid(const cw_grid& a, const cw_grid& b)
+{
+    // The box scale only shapes a uniform grid; compare its bits, so that a
+    // grid is reused exactly when the library would build the same one.
+    return a.kind == b.kind && a.nx == b.nx && a.ny == b.ny &&
+           (a.kind != CW_GRID_UNIFORM ||
+            std::memcmp(&a.box_scale, &b.box_scale, sizeof(double)) == 0);
+}
+
+struct GridOrder {
+    bool operator()(const cw_grid& a, const cw_grid& b) const
+    {
+        uint64_t sa = 0, sb = 0;
+        if (a.kind == CW_GRID_UNIFORM) std::memcpy(&sa, &a.box_scale, sizeof sa);
+        if (b.kind == CW_GRID_UNIFORM) std::memcpy(&sb, &b.box_scale, sizeof sb);
+        return std::tie(a.kind, a.nx, a.ny, sa) < std::tie(b.kind, b.nx, b.ny, sb);
+    }
+};
+
+// cw_batch_last_error names the contact as "params[i]: "; a row's message
+// is about the row itself.
+std::string without_index(const std::string& message)
+{
+    const std::string prefix = "params[0]: ";
+    return message.compare(0, prefix.size(), prefix) == 0 ? message.substr(prefix.size())
+                                                           : message;
+}
+
+} // namespace
+
+ChunkSolver::ChunkSolver(int threads, size_t max_batches)
+    : threads_(threads), max_batches_(max_batches < 1 ? 1 : max_batches)
+{
+}
+
+ChunkSolver::~ChunkSolver()
+{
+    for (Entry& e : batches_) cw_batch_destroy(e.batch);
+}
+
+cw_batch* ChunkSolver::batch_for(const cw_grid& grid, int& status, std::string& message)
+{
+    for (auto it = batches_.begin(); it != batches_.end(); ++it)
+        if (same_grid(it->grid, grid)) {
+            batches_.splice(batches_.begin(), batches_, it);
+            return batches_.front().batch;
+        }
+    if (batches_.size() >= max_batches_) {
+        cw_batch_destroy(batches_.back().batch);
+        batches_.pop_back();
+    }
+    char text[512] = "";
+    cw_batch* batch = nullptr;
+    status = cw_batch_create(&grid, threads_, &batch, text, sizeof text);
+    if (status != CW_OK) {
+        message = text[0] ? text : cw_status_string(status);
+        return nullptr;
+    }
+    batches_.push_front(Entry{grid, batch});
+    return batch;
+}
+
+std::vector<Outcome> ChunkSolver::solve(const Chunk& chunk)
+{
+    const size_t n = chunk.cases.size();
+    std::vector<Outcome> out(n);
+    // Rows grouped by grid shape, each group in chunk order; the order of
+    // the groups does not matter (each contact's result is its own).
+    std::map<cw_grid, std::vector<size_t>, GridOrder> groups;
+    for (size_t i = 0; i < n; ++i) {
+        const ContactCase& c = chunk.cases[i];
+        if (!c.unreadable.empty()) {
+            out[i].status = kStatusRowUnreadable;
+            out[i].message = c.unreadable;
+            cw_result_init(&out[i].result);
+            continue;
+        }
+        groups[c.grid].push_back(i);
+    }
+    for (const auto& [grid, rows] : groups) {
+        int status = CW_OK;
+        std::string message;
+        cw_batch* batch = batch_for(grid, status, message);
+        if (!batch) {
+            for (size_t i : rows) {
+                out[i].status = status;
+                out[i].message = message;
+                cw_result_init(&out[i].result);
+            }
+            continue;
+        }
+        const size_t m = rows.size();
+        params_.resize(m);
+        results_.resize(m);
+        statuses_.assign(m, CW_OK);
+        for (size_t k = 0; k < m; ++k) {
+            params_[k] = chunk.cases[rows[k]].params;
+            cw_result_init(&results_[k]);
+        }
+        cw_batch_solve(batch, m, params_.data(), chunk.mode, results_.data(), statuses_.data());
+        for (size_t k = 0; k < m; ++k) {
+            Outcome& o = out[rows[k]];
+            o.status = statuses_[k];
+            o.result = results_[k];
+            if (o.status == CW_OK) continue;
+            // The batch keeps only the first failure's message: solve the
+            // row alone to get its own (same status; the library is
+            // deterministic, and a failing row is usually rejected at once).
+            cw_result scratch;
+            cw_result_init(&scratch);
+            const int again = cw_batch_solve(batch, 1, &params_[k], chunk.mode, &scratch, nullptr);
+            o.message = again == o.status ? without_index(cw_batch_last_error(batch))
+                                          : cw_status_string(o.status);
+            cw_result_init(&o.result);
+        }
+    }
+    return out;
+}
+
+} // namespace cwcampaign

@@ -1,0 +1,40 @@
+// The end of a campaign: rank 0 reads the checkpoint's chunks in input
+// order and writes DIR/results.csv, one line per input row. Going through
+// the rows in input order is also the campaign's one fixed reduction order:
+// anything summed over rows (issue 11's accumulated wear profiles, from
+// Outcome::wear) is added here, so it is bitwise the same for any number
+// of ranks and threads and any chunking.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "input_csv.hpp"
+#include "journal.hpp"
+
+namespace cwcampaign {
+
+struct MergeSummary {
+    uint64_t rows = 0, ok = 0, failed = 0;
+    std::vector<std::string> first_failures; // up to three "id X: line L: message"
+};
+
+// The header of results.csv (the optional s0, distance columns only when
+// the input has them).
+std::vector<std::string> results_columns(const CampaignInput& in);
+
+// Writes path (via a temporary file renamed into place). Throws JournalError
+// when the checkpoint does not cover every row exactly once, and
+// std::runtime_error when the file cannot be written.
+MergeSummary write_results_csv(const Journal& journal, const CampaignInput& in,
+                               const std::string& path);
+
+// Calls visit(row, outcome) for every row in input order, reading one chunk
+// at a time. Throws JournalError unless the checkpoint covers [0, rows)
+// exactly once.
+void for_each_row_in_order(const Journal& journal, uint64_t rows,
+                           const std::function<void(uint64_t, const Outcome&)>& visit);
+
+} // namespace cwcampaign

@@ -1,0 +1,292 @@
+/* Unit tests of the campaign runner's parts that need no MPI: the number
+ * text (the same digits as `creepwork solve`), the CSV record reader, the
+ * chunk planner (every pending row exactly once, in order), the wire
+ * encoding (round trip; a malformed buffer is an error, never a read past
+ * its end) and the checkpoint journal (reopen, torn tail, wrong input).
+ *
+ * usage: test_campaign_units <scratch dir> [test name] */
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <random>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <creepwork/creepwork.h>
+
+#include "../../json.hpp"
+#include "../chunk_planner.hpp"
+#include "../csv_text.hpp"
+#include "../journal.hpp"
+#include "../number_text.hpp"
+#include "../wire.hpp"
+// Last: cmocka defines macros (fail, skip) that clash with the C++ library.
+#include "test_support.h"
+
+namespace fs = std::filesystem;
+using namespace cwcampaign;
+
+namespace {
+
+std::string g_scratch;
+
+void number_text_equals_shortest_exact(void** state)
+{
+    (void)state;
+    // The CLI's JSON digits (cwcli::shortest_exact, printf-based) are the
+    // reference: random bit patterns, decimal fractions, and powers of two
+    // times integers (where the 15/16/17-digit choice is decided).
+    std::mt19937_64 g(12345);
+    long checked = 0;
+    for (long i = 0; i < 200000; ++i) {
+        double v = 0.0;
+        const uint64_t bits = g();
+        switch (i % 3) {
+        case 0: std::memcpy(&v, &bits, sizeof v); break;
+        case 1: v = static_cast<double>(bits % 1000000) / 1000.0; break;
+        default: v = std::ldexp(static_cast<double>(bits >> 11), static_cast<int>(g() % 120) - 80);
+        }
+        if (!std::isfinite(v)) continue;
+        const std::string want = cwcli::shortest_exact(v), got = number_text(v);
+        if (want != got) print_error("%.17g: %s, expected %s\n", v, got.c_str(), want.c_str());
+        assert_string_equal(got.c_str(), want.c_str());
+        ++checked;
+    }
+    assert_true(checked > 190000);
+    assert_string_equal(number_text(0.1).c_str(), "0.1");
+    assert_string_equal(number_text(-0.0).c_str(), "-0");
+    assert_string_equal(number_text(1e-300).c_str(), "1e-300");
+}
+
+std::vector<std::vector<std::string>> records(const std::string& text,
+                                              std::vector<std::string>* errors = nullptr)
+{
+    std::istringstream in(text);
+    CsvRecordReader r(in);
+    std::vector<std::vector<std::string>> out;
+    std::vector<std::string> fields;
+    std::string error;
+    while (r.next(fields, error)) {
+        out.push_back(fields);
+        if (errors) errors->push_back(error);
+    }
+    return out;
+}
+
+void csv_reader_follows_rfc4180(void** state)
+{
+    (void)state;
+    std::vector<std::string> errors;
+    const auto r = records("a, b ,c\r\n\"x,1\",\"say \"\"hi\"\"\",\"two\nlines\"\n\n last", &errors);
+    assert_int_equal(r.size(), 4);
+    assert_true((r[0] == std::vector<std::string>{"a", "b", "c"})); // trimmed, CRLF
+    assert_true((r[1] == std::vector<std::string>{"x,1", "say \"hi\"", "two\nlines"}));
+    assert_true((r[2] == std::vector<std::string>{""})); // a blank line: one empty field
+    assert_true((r[3] == std::vector<std::string>{"last"}));
+    for (const std::string& e : errors) assert_string_equal(e.c_str(), "");
+
+    errors.clear();
+    const auto bad = records("\"a\"b,c\nnext\n\"open", &errors);
+    assert_int_equal(bad.size(), 3);
+    assert_string_equal(errors[0].c_str(), "text after the closing quote of a field");
+    assert_true((bad[1] == std::vector<std::string>{"next"})); // reading goes on
+    assert_string_equal(errors[2].c_str(),
+                        "a quoted field is not closed before the end of the file");
+
+    // Line numbers count lines, not records (a quoted newline is a line).
+    std::istringstream in("h\n\"a\nb\"\nc\n");
+    CsvRecordReader reader(in);
+    std::vector<std::string> f;
+    std::string e;
+    reader.next(f, e);
+    assert_int_equal(reader.line(), 1);
+    reader.next(f, e);
+    assert_int_equal(reader.line(), 2);
+    reader.next(f, e);
+    assert_int_equal(reader.line(), 4);
+
+    assert_string_equal(csv_quote("plain").c_str(), "plain");
+    assert_string_equal(csv_quote("a,b").c_str(), "\"a,b\"");
+    assert_string_equal(csv_quote("say \"x\"").c_str(), "\"say \"\"x\"\"\"");
+}
+
+void chunk_planner_covers_each_row_once(void** state)
+{
+    (void)state;
+    std::vector<bool> done(1000, false);
+    for (int k = 100; k < 180; ++k) done[k] = true;
+    for (int k = 500; k < 501; ++k) done[k] = true;
+    done[999] = true;
+    const auto ranges = pending_ranges(done);
+    assert_int_equal(ranges.size(), 3);
+    assert_int_equal(ranges[1].first, 180);
+    assert_int_equal(ranges[1].second, 500);
+    for (uint64_t fixed : {uint64_t(0), uint64_t(7)}) {
+        ChunkPlanner p(ranges, fixed, 3, 0.25);
+        std::vector<int> seen(1000, 0);
+        uint64_t last_end = 0, chunks = 0, last_count = 0;
+        double rate = 0.0;
+        while (!p.empty()) {
+            const auto [first, count] = p.next(rate);
+            assert_true(count >= 1);
+            assert_true(first >= last_end); // input order
+            for (uint64_t k = first; k < first + count; ++k) ++seen[k];
+            last_end = first + count;
+            last_count = count;
+            ++chunks;
+            rate = 4000.0; // 1000 rows per 0.25 s
+        }
+        for (int k = 0; k < 1000; ++k) assert_int_equal(seen[k], done[k] ? 0 : 1);
+        assert_int_equal(p.remaining(), 0);
+        if (fixed) {
+            assert_true(last_count <= fixed);
+        } else {
+            // The tail shrinks: no chunk at the end holds more than
+            // remaining / (2 x workers).
+            assert_int_equal(last_count, 1);
+            assert_true(chunks > 10);
+        }
+    }
+}
+
+Chunk sample_chunk()
+{
+    Chunk c;
+    c.id = 7;
+    c.first_row = 40;
+    c.mode = CW_SOLVE_FORCES;
+    c.cases.resize(2);
+    cw_grid_init(&c.cases[0].grid);
+    cw_params_init(&c.cases[0].params);
+    c.cases[0].params.xi_x = 1e-3;
+    c.cases[1].unreadable = "line 9, column nu: 'x' is not a finite number";
+    return c;
+}
+
+ChunkResult sample_result(uint64_t first_row, size_t n)
+{
+    ChunkResult r;
+    r.id = 3;
+    r.first_row = first_row;
+    r.seconds = 0.5;
+    r.outcomes.resize(n);
+    for (size_t k = 0; k < n; ++k) {
+        cw_result_init(&r.outcomes[k].result);
+        r.outcomes[k].result.Fx = -100.0 * static_cast<double>(first_row + k);
+        if (k % 3 == 2) {
+            r.outcomes[k].status = CW_ERR_INVALID_INPUT;
+            r.outcomes[k].message = "nu = 0.7 is invalid";
+        }
+    }
+    r.outcomes[0].wear = {1.0, 2.0};
+    return r;
+}
+
+void wire_round_trips_and_rejects_damage(void** state)
+{
+    (void)state;
+    const Chunk c = sample_chunk();
+    const Chunk back = decode_chunk(encode_chunk(c));
+    assert_int_equal(back.first_row, 40);
+    assert_int_equal(back.mode, CW_SOLVE_FORCES);
+    assert_true(back.cases[0].params.xi_x == 1e-3);
+    assert_string_equal(back.cases[1].unreadable.c_str(), c.cases[1].unreadable.c_str());
+    const ChunkResult r = sample_result(10, 5);
+    const Bytes bytes = encode_result(r);
+    const ChunkResult rb = decode_result(bytes);
+    assert_int_equal(rb.outcomes.size(), 5);
+    assert_true(rb.outcomes[4].result.Fx == -1400.0);
+    assert_string_equal(rb.outcomes[2].message.c_str(), "nu = 0.7 is invalid");
+    assert_true((rb.outcomes[0].wear == std::vector<double>{1.0, 2.0}));
+    assert_true(is_stop(encode_stop()) && !is_stop(bytes));
+    // Every truncation of a valid message is an error, not a read past it.
+    for (size_t n = 0; n < bytes.size(); ++n) {
+        const Bytes cut(bytes.begin(), bytes.begin() + static_cast<std::ptrdiff_t>(n));
+        bool threw = false;
+        try {
+            decode_result(cut);
+        } catch (const WireError&) {
+            threw = true;
+        }
+        assert_true(threw);
+    }
+}
+
+void journal_resumes_and_drops_a_torn_tail(void** state)
+{
+    (void)state;
+    const std::string path = g_scratch + "/j.cwj";
+    const JournalIdentity id{0, 0x1234, 30};
+    {
+        Journal j = Journal::create(path, id);
+        for (uint64_t first : {0u, 10u, 20u}) {
+            j.append(first, 10, encode_result(sample_result(first, 10)));
+        }
+        j.sync();
+    }
+    {
+        Journal j = Journal::open_existing(path, id);
+        assert_int_equal(j.records().size(), 3);
+        assert_false(j.dropped_torn_tail());
+        const ChunkResult r = j.read(j.records()[2]);
+        assert_int_equal(r.first_row, 20);
+        assert_true(r.outcomes[1].result.Fx == -2100.0);
+    }
+    // A kill during an append: part of the last record.
+    fs::resize_file(path, fs::file_size(path) - 9);
+    {
+        Journal j = Journal::open_existing(path, id);
+        assert_int_equal(j.records().size(), 2);
+        assert_true(j.dropped_torn_tail());
+        // The next append starts on a record boundary.
+        j.append(20, 10, encode_result(sample_result(20, 10)));
+    }
+    {
+        Journal j = Journal::open_existing(path, id);
+        assert_int_equal(j.records().size(), 3);
+        assert_false(j.dropped_torn_tail());
+    }
+    // Another input, or a table instead of a campaign: refused, saying so.
+    const JournalIdentity other{0, 0x9999, 30}, table{1, 0x1234, 30};
+    for (const JournalIdentity& wrong : {other, table}) {
+        bool refused = false;
+        try {
+            Journal::open_existing(path, wrong);
+        } catch (const JournalError& e) {
+            refused = std::strstr(e.what(), wrong.kind ? "creep-force table" : "another input");
+        }
+        assert_true(refused);
+    }
+    // Not a checkpoint at all.
+    std::ofstream(g_scratch + "/not.cwj") << "hello";
+    bool refused = false;
+    try {
+        Journal::open_existing(g_scratch + "/not.cwj", id);
+    } catch (const JournalError& e) {
+        refused = std::strstr(e.what(), "is not a creepwork checkpoint") != nullptr;
+    }
+    assert_true(refused);
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+    if (argc < 2) {
+        std::fprintf(stderr, "usage: test_campaign_units <scratch dir> [test]\n");
+        return 2;
+    }
+    g_scratch = argv[1];
+    fs::remove_all(g_scratch);
+    fs::create_directories(g_scratch);
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(number_text_equals_shortest_exact),
+        cmocka_unit_test(csv_reader_follows_rfc4180),
+        cmocka_unit_test(chunk_planner_covers_each_row_once),
+        cmocka_unit_test(wire_round_trips_and_rejects_damage),
+        cmocka_unit_test(journal_resumes_and_drops_a_torn_tail),
+    };
+    return cw_run_tests(tests, argc > 2 ? argv[2] : nullptr);
+}

@@ -1,0 +1,195 @@
+#include "wire.hpp"
+
+#include <cstring>
+#include <string>
+#include <type_traits>
+
+namespace cwcampaign {
+
+namespace {
+
+// Message kinds: the first byte of every encoded buffer.
+constexpr unsigned char kChunkTag = 'C', kStopTag = 'S', kResultTag = 'R';
+// Per-case marker: a contact to solve, or a row the reader rejected.
+constexpr unsigned char kCaseContact = 0, kCaseUnreadable = 1;
+
+class Writer {
+public:
+    explicit Writer(unsigned char tag) { bytes_.push_back(tag); }
+
+    template <class T> void put(const T& v)
+    {
+        static_assert(std::is_trivially_copyable_v<T>, "raw bytes only for plain data");
+        const auto* p = reinterpret_cast<const unsigned char*>(&v);
+        bytes_.insert(bytes_.end(), p, p + sizeof(T));
+    }
+    void put_string(const std::string& s)
+    {
+        put<uint32_t>(static_cast<uint32_t>(s.size()));
+        bytes_.insert(bytes_.end(), s.begin(), s.end());
+    }
+    void put_doubles(const std::vector<double>& v)
+    {
+        put<uint32_t>(static_cast<uint32_t>(v.size()));
+        const auto* p = reinterpret_cast<const unsigned char*>(v.data());
+        bytes_.insert(bytes_.end(), p, p + v.size() * sizeof(double));
+    }
+    Bytes take() { return std::move(bytes_); }
+
+private:
+    Bytes bytes_;
+};
+
+class Reader {
+public:
+    Reader(const Bytes& bytes, unsigned char tag, const char* what) : bytes_(bytes), what_(what)
+    {
+        if (bytes_.empty() || bytes_[0] != tag) throw WireError(std::string(what) + ": wrong kind");
+        pos_ = 1;
+    }
+
+    template <class T> T get()
+    {
+        static_assert(std::is_trivially_copyable_v<T>, "raw bytes only for plain data");
+        need(sizeof(T));
+        T v;
+        std::memcpy(&v, bytes_.data() + pos_, sizeof(T));
+        pos_ += sizeof(T);
+        return v;
+    }
+    std::string get_string()
+    {
+        const uint32_t n = get<uint32_t>();
+        need(n);
+        std::string s(reinterpret_cast<const char*>(bytes_.data() + pos_), n);
+        pos_ += n;
+        return s;
+    }
+    std::vector<double> get_doubles()
+    {
+        const uint32_t n = get<uint32_t>();
+        need(static_cast<size_t>(n) * sizeof(double));
+        std::vector<double> v(n);
+        if (n) std::memcpy(v.data(), bytes_.data() + pos_, n * sizeof(double));
+        pos_ += n * sizeof(double);
+        return v;
+    }
+    void finish() const
+    {
+        if (pos_ != bytes_.size()) throw WireError(std::string(what_) + ": trailing bytes");
+    }
+
+private:
+    void need(size_t n) const
+    {
+        if (bytes_.size() - pos_ < n) throw WireError(std::string(what_) + ": truncated");
+    }
+    const Bytes& bytes_;
+    const char* what_;
+    size_t pos_ = 0;
+};
+
+} // namespace
+
+Bytes encode_chunk(const Chunk& chunk)
+{
+    Writer w(kChunkTag);
+    w.put(chunk.id);
+    w.put(chunk.first_row);
+    w.put<int32_t>(chunk.mode);
+    w.put<uint32_t>(static_cast<uint32_t>(chunk.cases.size()));
+    for (const ContactCase& c : chunk.cases) {
+        if (!c.unreadable.empty()) {
+            w.put(kCaseUnreadable);
+            w.put_string(c.unreadable);
+        } else {
+            w.put(kCaseContact);
+            w.put(c.grid);
+            w.put(c.params);
+        }
+    }
+    return w.take();
+}
+
+Chunk decode_chunk(const Bytes& bytes)
+{
+    Reader r(bytes, kChunkTag, "chunk message");
+    Chunk chunk;
+    chunk.id = r.get<uint64_t>();
+    chunk.first_row = r.get<uint64_t>();
+    chunk.mode = r.get<int32_t>();
+    const uint32_t n = r.get<uint32_t>();
+    chunk.cases.resize(n);
+    for (ContactCase& c : chunk.cases) {
+        const auto kind = r.get<unsigned char>();
+        if (kind == kCaseUnreadable) {
+            c.unreadable = r.get_string();
+            if (c.unreadable.empty()) throw WireError("chunk message: empty row message");
+        } else if (kind == kCaseContact) {
+            c.grid = r.get<cw_grid>();
+            c.params = r.get<cw_params>();
+        } else {
+            throw WireError("chunk message: unknown case kind");
+        }
+    }
+    r.finish();
+    return chunk;
+}
+
+Bytes encode_stop() { return Bytes{kStopTag}; }
+
+bool is_stop(const Bytes& bytes) { return bytes.size() == 1 && bytes[0] == kStopTag; }
+
+Bytes encode_result(const ChunkResult& result)
+{
+    Writer w(kResultTag);
+    w.put(result.id);
+    w.put(result.first_row);
+    w.put(result.seconds);
+    w.put<uint32_t>(static_cast<uint32_t>(result.outcomes.size()));
+    for (const Outcome& o : result.outcomes) {
+        w.put<int32_t>(o.status);
+        if (o.status == CW_OK)
+            w.put(o.result);
+        else
+            w.put_string(o.message);
+        w.put_doubles(o.wear);
+    }
+    return w.take();
+}
+
+ChunkResult decode_result(const Bytes& bytes)
+{
+    Reader r(bytes, kResultTag, "result message");
+    ChunkResult result;
+    result.id = r.get<uint64_t>();
+    result.first_row = r.get<uint64_t>();
+    result.seconds = r.get<double>();
+    const uint32_t n = r.get<uint32_t>();
+    result.outcomes.resize(n);
+    for (Outcome& o : result.outcomes) {
+        o.status = r.get<int32_t>();
+        if (o.status == CW_OK) {
+            o.result = r.get<cw_result>();
+        } else {
+            cw_result_init(&o.result);
+            o.message = r.get_string();
+        }
+        o.wear = r.get_doubles();
+    }
+    r.finish();
+    return result;
+}
+
+uint64_t fnv1a(const void* data, size_t size, uint64_t seed)
+{
+    const auto* p = static_cast<const unsigned char*>(data);
+    uint64_t h = seed;
+    for (size_t i = 0; i < size; ++i) {
+        h ^= p[i];
+        h *= 1099511628211ull;
+    }
+    return h;
+}
+
+} // namespace cwcampaign
