@@ -599,6 +599,99 @@ static void update_keeps_volume_on_uneven_nodes(void** state)
     }
 }
 
+/* Wear of the exact model (Kalker's theory on the uniform 12 x 12 grid,
+ * box 1.2; issue 11: "for every model"), partial and full slip, both
+ * laws: mass per distance = sum of rate x area (1e-12); the energy-
+ * consistent source feeds the law the model's own W_macro (1e-12: the
+ * exact model's consistent map sums to its W_macro, test_capi_exact); each
+ * element's USFD rate is the law of its T/A = W_e/A_e (1e-15, Braghin et
+ * al. 2006 as printed); and the wear is the same whether the exact model
+ * is solved cold or warm from another contact (to the solver's tolerance). */
+static void exact_model_wear(void** state)
+{
+    (void)state;
+    enum { EN = 12 * 12 };
+    cw_solver* s = cw_test_solver(CW_GRID_UNIFORM, 12, 12, 1.2);
+    cw_wear* w = NULL;
+    assert_int_equal(cw_wear_create(s, &w), CW_OK);
+    double area[EN], work[EN], rate[EN], dens[EN];
+    int regime[EN];
+    const double xis[2] = {1e-3, 8e-3}; /* partial slip; full slip */
+    for (int c = 0; c < 2; ++c) {
+        cw_params p;
+        cw_params_init(&p);
+        p.model = CW_MODEL_EXACT;
+        p.warm_start = 0;
+        p.a = 0.006;
+        p.b = 0.005;
+        p.normal_force = 80e3;
+        p.mu = 0.3;
+        p.G = 82e9;
+        p.nu = 0.28;
+        p.xi_x = xis[c];
+        p.xi_y = 5e-4;
+        p.phi = 0.4;
+        cw_result r;
+        cw_result_init(&r);
+        assert_int_equal(cw_solver_solve(s, &p, CW_SOLVE_FULL, &r), CW_OK);
+        assert_true(r.W_macro > 0.0);
+        if (c == 1) assert_true(r.n_adhesion == 0); /* full slip indeed */
+        if (c == 0) assert_true(r.n_adhesion > 0 && r.n_slip > 0);
+        assert_int_equal(cw_solver_get_field(s, CW_FIELD_AREA, area, EN), CW_OK);
+        assert_int_equal(cw_solver_get_field(s, CW_FIELD_WORK_CONSISTENT, work, EN), CW_OK);
+        for (int law = CW_WEAR_USFD; law <= CW_WEAR_ARCHARD_KTH; ++law) {
+            cw_wear_params wp;
+            cw_wear_params_init(&wp);
+            wp.law = law;
+            wp.rolling_speed = 20.0;
+            cw_wear_result wr;
+            cw_wear_result_init(&wr);
+            assert_int_equal(cw_wear_compute(w, s, &wp, &wr), CW_OK);
+            assert_close(wr.work, r.W_macro, 1e-12, 0.0);
+            assert_int_equal(cw_wear_get_field(w, CW_WEAR_FIELD_RATE, rate, EN), CW_OK);
+            assert_int_equal(cw_wear_get_field(w, CW_WEAR_FIELD_WORK_DENSITY, dens, EN), CW_OK);
+            assert_int_equal(cw_wear_get_regimes(w, regime, EN), CW_OK);
+            double mass = 0.0, worn_area = 0.0;
+            for (int e = 0; e < EN; ++e) {
+                assert_true(isfinite(rate[e]) && rate[e] >= 0.0);
+                mass += rate[e] * area[e];
+                if (regime[e] != CW_WEAR_REGIME_NONE) worn_area += area[e];
+                if (law != CW_WEAR_USFD || area[e] <= 0.0) continue;
+                const double tga = work[e] > 0.0 ? work[e] / area[e] : 0.0;
+                assert_close(dens[e], tga, 1e-15, 0.0);
+                const double expect = tga < wp.usfd_t1   ? wp.usfd_k1 * tga
+                                      : tga <= wp.usfd_t2 ? wp.usfd_k2
+                                                          : fmax(0.0, wp.usfd_k3 * tga - wp.usfd_c3);
+                assert_close(rate[e], expect, 1e-15, 0.0);
+            }
+            assert_true(mass > 0.0);
+            assert_close(wr.mass_per_distance, mass, 1e-12, 0.0);
+            assert_close(wr.regime_area[0] + wr.regime_area[1] + wr.regime_area[2] +
+                             wr.regime_area[3],
+                         worn_area, 1e-12, 0.0);
+            if (law == CW_WEAR_USFD) {
+                /* Warm from the other contact: the same wear to the solver's
+                 * tolerance (1e-8, relative; 1e-4 leaves room for
+                 * an element near a regime boundary). */
+                cw_params q = p;
+                q.xi_x = xis[1 - c];
+                assert_int_equal(cw_solver_solve(s, &q, CW_SOLVE_FULL, NULL), CW_OK);
+                p.warm_start = 1;
+                assert_int_equal(cw_solver_solve(s, &p, CW_SOLVE_FULL, NULL), CW_OK);
+                p.warm_start = 0;
+                cw_wear_result warm;
+                cw_wear_result_init(&warm);
+                assert_int_equal(cw_wear_compute(w, s, &wp, &warm), CW_OK);
+                assert_close(warm.mass_per_distance, wr.mass_per_distance, 1e-4, 0.0);
+                /* And back to the cold solve for the next law. */
+                assert_int_equal(cw_solver_solve(s, &p, CW_SOLVE_FULL, NULL), CW_OK);
+            }
+        }
+    }
+    cw_wear_destroy(w);
+    cw_solver_destroy(s);
+}
+
 int main(int argc, char** argv)
 {
     const struct CMUnitTest tests[] = {
@@ -610,6 +703,7 @@ int main(int argc, char** argv)
         cmocka_unit_test(wheel_and_rail_passes),
         cmocka_unit_test(elements_follow_the_laws),
         cmocka_unit_test(update_keeps_volume_on_uneven_nodes),
+        cmocka_unit_test(exact_model_wear),
     };
     return cw_run_tests(tests, argc > 1 ? argv[1] : NULL);
 }

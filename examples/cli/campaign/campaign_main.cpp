@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
+#include <memory>
 #include <string>
 
 #include <creepwork/creepwork.h>
@@ -23,6 +24,8 @@
 #include "mpi_link.hpp"
 #include "rank_threads.hpp"
 #include "results_writer.hpp"
+#include "wear_output.hpp"
+#include "wear_setup.hpp"
 #include "worker.hpp"
 
 namespace cwcampaign {
@@ -67,6 +70,7 @@ struct Setup {
     std::vector<ContactCase> table_rows; // the table's points (--table)
     JournalIdentity identity;
     PreparedOutput output;
+    std::vector<double> wear_nodes; // --wear's profile grid
     double setup_seconds = 0.0; // reading the input, opening the checkpoint
 
     const std::vector<ContactCase>& cases() const
@@ -82,12 +86,27 @@ void prepare(const CampaignOptions& opt, Setup& s)
         s.table_rows = table_cases(opt.spec);
         s.identity = {1, table_hash(opt.spec), s.table_rows.size()};
     } else {
+        WearRules rules;
+        if (opt.wear) {
+            rules.default_body = opt.wear_setup.default_body;
+            rules.wheel_radius = opt.wear_setup.wheel_radius;
+            rules.speed_given = opt.wear_setup.params.rolling_speed > 0.0;
+            rules.archard = opt.wear_setup.params.law == CW_WEAR_ARCHARD_KTH;
+        }
         try {
-            s.input = read_campaign_csv(opt.in);
+            s.input = read_campaign_csv(opt.in, opt.wear ? &rules : nullptr);
         } catch (const InputError& e) {
             throw cwcli::usage_error("--in", e.what());
         }
         s.identity = {0, s.input.hash, s.input.cases.size()};
+        if (opt.wear) {
+            // The grid and the wear options are part of what the checkpoint
+            // holds: --resume with others is refused as another input.
+            WearSetup w = opt.wear_setup;
+            w.nodes = profile_nodes(w, s.input.cases);
+            s.identity.input_hash = wear_identity(w, s.input.hash);
+            s.wear_nodes = std::move(w.nodes);
+        }
     }
     s.output = prepare_output(opt.out, opt.resume, opt.force, s.identity);
     s.setup_seconds =
@@ -96,7 +115,8 @@ void prepare(const CampaignOptions& opt, Setup& s)
 
 std::string campaign_json(const CampaignOptions& opt, const Setup& s, const RunStats& run,
                           uint64_t ok, uint64_t failed, double write_seconds, int ranks,
-                          int threads_total, int threads_rank0)
+                          int threads_total, int threads_rank0,
+                          const cw_wear_profile_totals* wear)
 {
     cwcli::JsonObject j;
     const double rate = run.seconds > 0.0 ? static_cast<double>(run.rows) / run.seconds : 0.0;
@@ -117,6 +137,21 @@ std::string campaign_json(const CampaignOptions& opt, const Setup& s, const RunS
         .integer("threads_total", threads_total)
         .integer("threads_rank0", threads_rank0)
         .text("creepwork", cw_version_string());
+    if (opt.wear) {
+        const cw_wear_params& p = opt.wear_setup.params;
+        j.text("wear_law", p.law == CW_WEAR_ARCHARD_KTH ? "archard" : "usfd")
+            .text("wear_source", p.source == CW_WEAR_SOURCE_PAPER  ? "paper"
+                                 : p.source == CW_WEAR_SOURCE_SLIP ? "slip"
+                                                                   : "consistent")
+            .integer("wear_profile_nodes", static_cast<long>(opt.wear_setup.nodes.size()));
+        for (int body = 0; body < kWearBodies; ++body) {
+            const std::string b = std::string("wear_") + body_name(body);
+            j.integer(b + "_rows", static_cast<long>(wear[body].adds))
+                .number(b + "_passes", wear[body].passes)
+                .number(b + "_volume_m2", wear[body].volume)
+                .number(b + "_volume_lost_m2", wear[body].volume_lost);
+        }
+    }
     return j.str(true) + "\n";
 }
 
@@ -127,6 +162,8 @@ int finish(const CampaignOptions& opt, Setup& s, const RunStats& run, int ranks,
     const auto start = std::chrono::steady_clock::now();
     uint64_t ok = 0, failed = 0;
     std::string first_failure, written;
+    cw_wear_profile_totals wear_totals[kWearBodies];
+    for (cw_wear_profile_totals& t : wear_totals) cw_wear_profile_totals_init(&t);
     if (opt.table) {
         const TableSummary t = write_table(*s.output.journal, opt.spec, opt.out);
         ok = t.points - t.failed;
@@ -134,19 +171,26 @@ int finish(const CampaignOptions& opt, Setup& s, const RunStats& run, int ranks,
         first_failure = t.first_failure;
         written = opt.out + "/table.csv and table.json";
     } else {
-        const MergeSummary m =
-            write_results_csv(*s.output.journal, s.input, opt.out + "/results.csv");
+        std::unique_ptr<WearProfiles> wear;
+        if (opt.wear) wear = std::make_unique<WearProfiles>(opt.wear_setup);
+        const MergeSummary m = write_results_csv(*s.output.journal, s.input,
+                                                 opt.out + "/results.csv", wear.get());
         ok = m.ok;
         failed = m.failed;
         for (const std::string& f : m.first_failures)
             first_failure += (first_failure.empty() ? "" : "; ") + f;
         written = opt.out + "/results.csv";
+        if (wear) {
+            for (const std::string& name : wear->write(opt.out)) written += ", " + name;
+            for (int body = 0; body < kWearBodies; ++body)
+                wear_totals[body] = wear->totals(body);
+        }
     }
     const double write_seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     write_file_atomically(opt.out + "/campaign.json",
                           campaign_json(opt, s, run, ok, failed, write_seconds, ranks,
-                                        threads_total, threads_rank0));
+                                        threads_total, threads_rank0, wear_totals));
     s.output.journal.reset();
     remove_checkpoint(opt.out);
 
@@ -214,7 +258,15 @@ int run(int argc, char** argv)
         return status;
     }
 
+    if (opt.wear) {
+        // Only rank 0 read the input; every rank needs the same grid.
+        opt.wear_setup.nodes =
+            nodes_from_bytes(mpi::broadcast_string(rank == 0 ? nodes_to_bytes(setup.wear_nodes)
+                                                             : std::string()));
+    }
+
     WorkerConfig worker;
+    worker.wear = opt.wear ? &opt.wear_setup : nullptr;
     worker.threads = opt.threads > 0 ? opt.threads : default_threads(mpi::ranks_on_node());
     worker.max_batches = static_cast<size_t>(opt.max_grids);
     worker.test_delay_ms = test_delay_ms();

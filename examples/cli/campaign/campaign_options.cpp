@@ -33,7 +33,11 @@ input (--in): a CSV file with a header; columns (SI units)
   optional  box_scale (uniform grid), pressure (parabolic|elliptic),
             rolling_direction (+1|-1), spin_offset, flexibility_blending
             (0|1), L1, L2, L3 (m/Pa), tolerance, max_iterations (exact
-            model), s0, distance (m; carried to results.csv for wear)
+            model), s0, distance (m; carried to results.csv)
+  wear      (with --wear; the spellings of `creepwork wear`) s0 (m, required),
+            passes (axle passages or wheel revolutions) or distance (m,
+            wheel: passes = distance / (2 pi R)), contact_angle (rad, default
+            0), body (rail|wheel, default --body), speed (m/s, default --speed)
   an empty optional cell takes the library's default, as `creepwork solve`
 
 output:
@@ -41,6 +45,17 @@ output:
                     rules on an existing one)
   --resume          continue the unfinished campaign in DIR (or start one)
   --force           start over in a DIR an earlier campaign wrote
+
+wear (--wear): each row's USFD or Archard/KTH wear from its work map, per
+row in results.csv (wear_* columns) and accumulated on a profile grid per
+body, DIR/wear_profile_rail.csv and/or wear_profile_wheel.csv (README
+"Campaigns", "Wear"); the options of `creepwork wear`:
+  --law usfd|archard  --source consistent|paper|slip  --speed V (m/s, Archard)
+  --density RHO  --hardness H (Archard)  --body rail|wheel (default rail)
+  --wheel-radius R (m)  --orientation +1|-1
+  --profile-from S --profile-to S --profile-step H
+                    the profile grid (m; default: every patch with a 20 %
+                    margin, a quarter of the narrowest strip)
 
 creep-force table (--table): points over a/b, nu and Kalker's normalised
 creepages xi' = G c^2 C11 xi_x/(3 mu N), eta' = G c^2 C22 xi_y/(3 mu N),
@@ -96,7 +111,64 @@ std::vector<OptionSpec> specs()
             {"grid", K::choice, {"strips", "uniform"}},
             {"nx", K::integer, {}},
             {"ny", K::integer, {}},
-            {"box-scale", K::number, {}}};
+            {"box-scale", K::number, {}},
+            {"wear", K::flag, {}},
+            {"law", K::choice, {"usfd", "archard"}},
+            {"source", K::choice, {"consistent", "paper", "slip"}},
+            {"speed", K::number, {}},
+            {"density", K::number, {}},
+            {"hardness", K::number, {}},
+            {"body", K::choice, {"rail", "wheel"}},
+            {"wheel-radius", K::number, {}},
+            {"orientation", K::choice, {"+1", "1", "-1"}},
+            {"profile-from", K::number, {}},
+            {"profile-to", K::number, {}},
+            {"profile-step", K::number, {}}};
+}
+
+const char* const kWearOnly[] = {"law",          "source",      "speed",        "density",
+                                 "hardness",     "body",        "wheel-radius", "orientation",
+                                 "profile-from", "profile-to",  "profile-step"};
+
+// --wear's options, checked as `creepwork wear` checks them.
+void read_wear(const cwcli::ParsedOptions& o, WearSetup& w)
+{
+    cw_wear_params_init(&w.params);
+    w.params.law = o.text("law", "usfd") == "archard" ? CW_WEAR_ARCHARD_KTH : CW_WEAR_USFD;
+    const std::string src = o.text("source", "consistent");
+    w.params.source = src == "paper"  ? CW_WEAR_SOURCE_PAPER
+                      : src == "slip" ? CW_WEAR_SOURCE_SLIP
+                                      : CW_WEAR_SOURCE_CONSISTENT;
+    if (o.has("speed")) {
+        w.params.rolling_speed = o.number("speed", 0);
+        if (!(w.params.rolling_speed > 0 && w.params.rolling_speed <= 1e3))
+            throw usage_error("--speed", "must lie in (0, 1000] m/s");
+    }
+    if (o.has("density")) {
+        w.params.density = o.number("density", 0);
+        if (!(w.params.density >= 1 && w.params.density <= 1e5))
+            throw usage_error("--density", "must lie in [1, 1e5] kg/m^3");
+    }
+    if (o.has("hardness")) {
+        if (w.params.law != CW_WEAR_ARCHARD_KTH)
+            throw usage_error("--hardness", "only used with --law archard");
+        w.params.hardness = o.number("hardness", 0);
+        if (!(w.params.hardness >= 1e6 && w.params.hardness <= 1e12))
+            throw usage_error("--hardness", "must lie in [1e6, 1e12] Pa");
+    }
+    w.default_body = o.text("body", "rail") == "wheel" ? kWheel : kRail;
+    if (o.has("wheel-radius")) {
+        w.wheel_radius = o.number("wheel-radius", 0);
+        if (!(w.wheel_radius > 0 && w.wheel_radius <= 100))
+            throw usage_error("--wheel-radius", "must lie in (0, 100] m");
+    }
+    w.orientation = o.text("orientation", "+1") == "-1" ? -1 : 1;
+    if (o.has("profile-from")) w.profile_from = o.number("profile-from", 0);
+    if (o.has("profile-to")) w.profile_to = o.number("profile-to", 0);
+    if (o.has("profile-step")) w.profile_step = o.number("profile-step", 0);
+    for (const char* name : {"profile-from", "profile-to"})
+        if (o.has(name) && !(std::fabs(o.number(name, 0)) <= 1e6))
+            throw usage_error(std::string("--") + name, "must lie within +-1e6 m");
 }
 
 const char* const kTableOnly[] = {"aob", "nu",   "xi", "eta", "psi",      "model",
@@ -193,6 +265,10 @@ CampaignOptions read_campaign_options(int argc, char** argv, int first)
     if (c.table) {
         if (o.has("in"))
             throw usage_error("--in", "not used with --table (the table makes its own rows)");
+        for (const char* name : kWearOnly)
+            if (o.has(name)) throw usage_error(std::string("--") + name, "only used with --wear");
+        if (o.has("wear"))
+            throw usage_error("--wear", "not used with --table (a table has no wear)");
         c.spec = usetab_axes();
         read_table(o, c.spec);
     } else {
@@ -201,6 +277,14 @@ CampaignOptions read_campaign_options(int argc, char** argv, int first)
                 throw usage_error(std::string("--") + name,
                                   "only used with --table (a campaign's rows give their own "
                                   "values)");
+        c.wear = o.has("wear");
+        if (c.wear) {
+            read_wear(o, c.wear_setup);
+        } else {
+            for (const char* name : kWearOnly)
+                if (o.has(name))
+                    throw usage_error(std::string("--") + name, "only used with --wear");
+        }
         c.in = o.text("in", "");
         if (c.in.empty())
             throw usage_error("--in", "missing: the input CSV file (or --table for a creep-force "

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "creep_table.hpp"
+#include "wear_setup.hpp"
 
 namespace cwcampaign {
 
@@ -21,6 +22,8 @@ struct CampaignOptions {
     uint64_t chunk = 0;       // --chunk rows; 0 = sized by measured speed
     int max_grids = 8;        // --max-grids: batches (grid shapes) kept per rank
     bool quiet = false;       // --quiet: no progress lines
+    bool wear = false;        // --wear: each row's wear, accumulated on profiles
+    WearSetup wear_setup;     // --wear's options (nodes made later, on rank 0)
 };
 
 // Throws cwcli::CliError(kExitUsage) naming the option.

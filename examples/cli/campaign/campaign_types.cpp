@@ -14,4 +14,6 @@ const char* status_name(int status)
     return "UNKNOWN_STATUS";
 }
 
+const char* body_name(int body) { return body == kWheel ? "wheel" : "rail"; }
+
 } // namespace cwcampaign

@@ -4,6 +4,7 @@
 // MPI messages and in the checkpoint journal (wire.hpp).
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -16,12 +17,41 @@ namespace cwcampaign {
 // Library statuses are the CW_STATUS_LIST codes, all >= 0.
 constexpr int kStatusRowUnreadable = -1;
 
+// The bodies whose profiles a wear campaign accumulates (--wear).
+constexpr int kRail = 0, kWheel = 1, kWearBodies = 2;
+
+// Where a row's patch sits on its body's profile and how many passes it
+// stands for (issue 11's cw_wear_profile_add arguments), resolved by the
+// reader from the row's wear columns. Unused without --wear.
+struct RowWear {
+    int32_t body = kRail;
+    int32_t unused = 0;  // explicit padding: the struct travels as its bytes
+    double s0 = 0.0;     // profile coordinate of the patch centre [m]
+    double angle = 0.0;  // contact angle [rad]
+    double passes = 0.0; // axle passages (rail) or wheel revolutions (wheel)
+    double speed = 0.0;  // rolling speed [m/s]; 0: --speed's (or none)
+};
+
 // One contact, in SI, as cw_batch_solve takes it. A row the reader rejected
 // keeps its reason in `unreadable` and is passed through untouched.
 struct ContactCase {
     cw_grid grid;
     cw_params params;
+    RowWear wear;
     std::string unreadable; // non-empty: the row could not be read (the message)
+};
+
+// A row's wear results (Outcome::wear), in this order; results.csv's wear
+// columns carry the same names.
+enum WearValue {
+    kWearPasses,
+    kWearWork,            // cw_wear_result.work [J/m]
+    kWearMassPerDistance, // [kg/m]
+    kWearMassPerPass,     // [kg]
+    kWearMaxDepth,        // deepest strip per pass [m]
+    kWearMass,            // passes x mass per pass [kg]
+    kWearArea1, kWearArea2, kWearArea3, kWearArea4, // contact area per regime [m^2]
+    kWearValues
 };
 
 // The result of one row: the library's status and totals, or a message.
@@ -29,10 +59,9 @@ struct Outcome {
     int status = CW_OK; // CW_OK, a CW_ERR_* code, or kStatusRowUnreadable
     cw_result result;   // valid when status == CW_OK
     std::string message; // why the row failed ("" when it succeeded)
-    // Seam for issue 11 (wear): a worker will put the row's wear-depth
-    // profile on the host's profile grid here, computed from the row's own
-    // solve; rank 0 adds the profiles in input order (results_writer.hpp),
-    // so the sum does not depend on ranks or threads. Empty until then.
+    // With --wear: the row's kWearValues wear results (empty otherwise, and
+    // for a failed row). Its wear-depth profile went into its chunk's
+    // accumulator (ChunkResult::wear_states).
     std::vector<double> wear;
 };
 
@@ -49,10 +78,19 @@ struct ChunkResult {
     uint64_t first_row = 0;
     double seconds = 0.0; // the worker's wall time for the chunk (load balancing)
     std::vector<Outcome> outcomes;
+    // With --wear: per body, the exact state (cw_wear_profile_get_state) of
+    // the chunk's rows' wear-depth profiles added together; empty when no
+    // row of the chunk wore that body. Being exact sums, they reduce to the
+    // same bits in any order, and the checkpoint keeps them with their
+    // rows, so a resumed campaign counts every row once.
+    std::array<std::vector<uint64_t>, kWearBodies> wear_states;
 };
 
 // Human name of a status for results.csv: "ok", "CW_ERR_INVALID_INPUT", ...,
 // or "ROW_UNREADABLE".
 const char* status_name(int status);
+
+// "rail", "wheel".
+const char* body_name(int body);
 
 } // namespace cwcampaign

@@ -30,7 +30,15 @@ const std::vector<std::string>& optional_columns()
     return c;
 }
 
+const std::vector<std::string>& wear_columns()
+{
+    static const std::vector<std::string> c = {"body", "contact_angle", "passes", "speed"};
+    return c;
+}
+
 namespace {
+
+constexpr double kPi = 3.14159265358979323846;
 
 // A row the reader rejects: the message names the line and the column.
 struct RowError {
@@ -163,12 +171,62 @@ ContactCase read_row(const RowReader& r)
     return c;
 }
 
+// The wear columns of a row (--wear), as `creepwork wear` reads them: s0;
+// passes, or (a wheel) distance / (2 pi R); the contact angle, body, speed.
+RowWear read_row_wear(const RowReader& r, const WearRules& rules, double s0, double distance)
+{
+    RowWear w;
+    r.require("s0");
+    if (!(std::fabs(s0) <= 1e6)) r.fail("s0", "must lie within +-1e6 m");
+    w.s0 = s0;
+    w.body = rules.default_body;
+    if (r.has("body")) w.body = r.choice("body", {"rail", "wheel"}) == 1 ? kWheel : kRail;
+    if (r.has("contact_angle")) {
+        w.angle = r.number("contact_angle");
+        if (!(std::fabs(w.angle) <= CW_WEAR_MAX_CONTACT_ANGLE))
+            r.fail("contact_angle", "must lie within +-85 degrees (+-1.4835 rad)");
+    }
+    if (r.has("passes") && r.has("distance"))
+        r.fail("passes", "give passes or distance, not both");
+    if (r.has("passes")) {
+        w.passes = r.number("passes");
+        if (!(w.passes >= 0 && w.passes <= CW_WEAR_MAX_PASSES))
+            r.fail("passes", "must lie in [0, 1e15]");
+    } else if (r.has("distance")) {
+        if (w.body != kWheel)
+            r.fail("distance", "is for a wheel (passes = distance / (2 pi R)); a rail row needs "
+                               "passes (axle passages)");
+        if (!(rules.wheel_radius > 0))
+            r.fail("distance", "needs --wheel-radius (passes = distance / (2 pi R))");
+        w.passes = distance / (2.0 * kPi * rules.wheel_radius);
+        if (!(w.passes <= CW_WEAR_MAX_PASSES)) r.fail("distance", "makes more than 1e15 passes");
+    } else {
+        r.fail("passes", w.body == kWheel ? "empty: a wheel row needs passes (revolutions) or "
+                                            "distance (rolled, with --wheel-radius)"
+                                          : "empty: a rail row needs passes (axle passages)");
+    }
+    if (r.has("speed")) {
+        w.speed = r.number("speed");
+        if (!(w.speed > 0 && w.speed <= 1e3)) r.fail("speed", "must lie in (0, 1000] m/s");
+    } else if (rules.archard && !rules.speed_given) {
+        r.fail("speed", "empty: Archard's KTH map needs the rolling speed (a speed column or "
+                        "--speed)");
+    }
+    return w;
+}
+
 // The file-level checks: every column known, none twice, the required there.
 std::map<std::string, size_t> column_index(const std::vector<std::string>& header,
-                                           const std::string& path)
+                                           const std::string& path, bool wear)
 {
     std::vector<std::string> known = required_columns();
     known.insert(known.end(), optional_columns().begin(), optional_columns().end());
+    for (size_t k = 0; k < header.size(); ++k)
+        if (!wear && std::find(wear_columns().begin(), wear_columns().end(), header[k]) !=
+                         wear_columns().end())
+            throw InputError(path + ": column '" + header[k] + "' is a wear column: add --wear "
+                                                               "(or drop the column)");
+    if (wear) known.insert(known.end(), wear_columns().begin(), wear_columns().end());
     std::map<std::string, size_t> index;
     for (size_t k = 0; k < header.size(); ++k) {
         const std::string& name = header[k];
@@ -199,7 +257,7 @@ bool blank_record(const std::vector<std::string>& fields)
 
 } // namespace
 
-CampaignInput read_campaign_csv(const std::string& path)
+CampaignInput read_campaign_csv(const std::string& path, const WearRules* wear)
 {
     std::ifstream file(path, std::ios::binary);
     if (!file) throw InputError(path + ": cannot open the input file");
@@ -221,7 +279,10 @@ CampaignInput read_campaign_csv(const std::string& path)
                                 "contact)");
     if (!error.empty())
         throw InputError(path + ": header (line " + std::to_string(csv.line()) + "): " + error);
-    const std::map<std::string, size_t> index = column_index(header, path);
+    const std::map<std::string, size_t> index = column_index(header, path, wear != nullptr);
+    if (wear && !index.count("s0"))
+        throw InputError(path + ": --wear needs the column s0 (the profile coordinate of each "
+                                "patch centre, m)");
 
     CampaignInput in;
     in.has_s0 = index.count("s0") != 0;
@@ -253,6 +314,7 @@ CampaignInput read_campaign_csv(const std::string& path)
                 distance = r.number("distance");
                 if (distance < 0.0) r.fail("distance", "must be >= 0 (a rolled distance in m)");
             }
+            if (wear) c.wear = read_row_wear(r, *wear, s0, distance);
         } catch (const RowError& e) {
             c = ContactCase{};
             c.unreadable = e.message;

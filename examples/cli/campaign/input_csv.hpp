@@ -32,10 +32,23 @@ struct CampaignInput {
     uint64_t hash = 0; // of the file's bytes: the campaign's identity on resume
 };
 
-// Every column the reader knows, required first.
+// What the reader needs to resolve a row's wear columns (--wear).
+struct WearRules {
+    int default_body = kRail; // --body
+    double wheel_radius = 0;  // --wheel-radius [m]; 0: not given
+    bool speed_given = false; // --speed
+    bool archard = false;     // --law archard: a row needs a rolling speed
+};
+
+// Every column the reader knows, required first; the wear columns (body,
+// contact_angle, passes, speed) only with --wear.
 const std::vector<std::string>& required_columns();
 const std::vector<std::string>& optional_columns();
+const std::vector<std::string>& wear_columns();
 
-CampaignInput read_campaign_csv(const std::string& path);
+// wear: nullptr without --wear. With it, the file must have an s0 column,
+// and each row's wear columns are checked and resolved into ContactCase::wear
+// (a bad one makes the row unreadable).
+CampaignInput read_campaign_csv(const std::string& path, const WearRules* wear = nullptr);
 
 } // namespace cwcampaign

@@ -123,7 +123,8 @@ Journal Journal::open_existing(const std::string& path, const JournalIdentity& i
         throw JournalError(path + " belongs to a " + (h.kind ? "creep-force table" : "campaign") +
                            ", not to a " + (want.kind ? "creep-force table" : "campaign"));
     if (h.input_hash != want.input_hash || h.rows != want.rows)
-        throw JournalError(path + " belongs to another input (" + std::to_string(h.rows) +
+        throw JournalError(path + " belongs to another input or other --wear options (" +
+                           std::to_string(h.rows) +
                            " rows, hash " + std::to_string(h.input_hash) + "; this input: " +
                            std::to_string(want.rows) + " rows, hash " +
                            std::to_string(want.input_hash) + ")");

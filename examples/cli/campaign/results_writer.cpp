@@ -35,6 +35,12 @@ const Column kColumns[] = {
 #undef CW_REAL
 #undef CW_INT
 
+// results.csv's wear columns, in WearValue order.
+const char* const kWearColumns[kWearValues] = {
+    "passes",          "wear_work",         "wear_mass_per_distance", "wear_mass_per_pass",
+    "wear_max_depth",  "wear_mass",         "wear_area_regime1",      "wear_area_regime2",
+    "wear_area_regime3", "wear_area_regime4"};
+
 std::string optional_number(const std::vector<double>& values, uint64_t row)
 {
     const double v = values[row];
@@ -44,7 +50,8 @@ std::string optional_number(const std::vector<double>& values, uint64_t row)
 } // namespace
 
 void for_each_row_in_order(const Journal& journal, uint64_t rows,
-                           const std::function<void(uint64_t, const Outcome&)>& visit)
+                           const std::function<void(uint64_t, const Outcome&)>& visit,
+                           const std::function<void(const ChunkResult&)>& chunk_visit)
 {
     std::vector<Journal::Record> order = journal.records();
     std::sort(order.begin(), order.end(),
@@ -60,6 +67,7 @@ void for_each_row_in_order(const Journal& journal, uint64_t rows,
         const ChunkResult chunk = journal.read(rec);
         if (chunk.first_row != rec.first_row || chunk.outcomes.size() != rec.count)
             throw JournalError("a checkpoint record does not match its index");
+        if (chunk_visit) chunk_visit(chunk);
         for (uint64_t k = 0; k < rec.count; ++k) visit(rec.first_row + k, chunk.outcomes[k]);
         next = rec.first_row + rec.count;
     }
@@ -68,22 +76,26 @@ void for_each_row_in_order(const Journal& journal, uint64_t rows,
                            std::to_string(rows) + " rows");
 }
 
-std::vector<std::string> results_columns(const CampaignInput& in)
+std::vector<std::string> results_columns(const CampaignInput& in, bool wear)
 {
     std::vector<std::string> names = {"id", "status"};
     for (const Column& c : kColumns) names.emplace_back(c.name);
     if (in.has_s0) names.emplace_back("s0");
     if (in.has_distance) names.emplace_back("distance");
+    if (wear) {
+        names.emplace_back("body");
+        for (const char* name : kWearColumns) names.emplace_back(name);
+    }
     names.emplace_back("message");
     return names;
 }
 
 MergeSummary write_results_csv(const Journal& journal, const CampaignInput& in,
-                               const std::string& path)
+                               const std::string& path, WearProfiles* wear)
 {
     AtomicFile out(path);
     std::string line;
-    for (const std::string& name : results_columns(in)) line += (line.empty() ? "" : ",") + name;
+    for (const std::string& name : results_columns(in, wear != nullptr)) line += (line.empty() ? "" : ",") + name;
     out.write(line + "\n");
 
     MergeSummary summary;
@@ -100,10 +112,18 @@ MergeSummary write_results_csv(const Journal& journal, const CampaignInput& in,
         }
         if (in.has_s0) line += "," + optional_number(in.s0, row);
         if (in.has_distance) line += "," + optional_number(in.distance, row);
+        if (wear) {
+            const ContactCase& c = in.cases[row];
+            line += ',';
+            if (c.unreadable.empty()) line += body_name(c.wear.body);
+            for (int k = 0; k < kWearValues; ++k) {
+                line += ',';
+                if (o.status == CW_OK && o.wear.size() == kWearValues)
+                    append_number(line, o.wear[k]);
+            }
+        }
         line += "," + csv_quote(o.message) + "\n";
         out.write(line);
-        // Reductions over rows (issue 11: o.wear into the accumulated wear
-        // profiles) belong here: this is the input order.
         if (o.status == CW_OK) {
             ++summary.ok;
         } else {
@@ -115,7 +135,9 @@ MergeSummary write_results_csv(const Journal& journal, const CampaignInput& in,
                          ? o.message // already names its line and column
                          : "line " + std::to_string(in.lines[row]) + ": " + o.message));
         }
-    });
+    }, wear ? std::function<void(const ChunkResult&)>(
+                  [wear](const ChunkResult& chunk) { wear->add_chunk(chunk); })
+            : nullptr);
     out.commit();
     return summary;
 }

@@ -1,9 +1,8 @@
 // The end of a campaign: rank 0 reads the checkpoint's chunks in input
 // order and writes DIR/results.csv, one line per input row. Going through
 // the rows in input order is also the campaign's one fixed reduction order:
-// anything summed over rows (issue 11's accumulated wear profiles, from
-// Outcome::wear) is added here, so it is bitwise the same for any number
-// of ranks and threads and any chunking.
+// the chunks' wear profiles (--wear) are added here, in that order (and,
+// being exact sums, they would give the same bits in any other).
 #pragma once
 
 #include <cstdint>
@@ -13,6 +12,7 @@
 
 #include "input_csv.hpp"
 #include "journal.hpp"
+#include "wear_output.hpp"
 
 namespace cwcampaign {
 
@@ -22,19 +22,22 @@ struct MergeSummary {
 };
 
 // The header of results.csv (the optional s0, distance columns only when
-// the input has them).
-std::vector<std::string> results_columns(const CampaignInput& in);
+// the input has them; the wear_* columns with --wear).
+std::vector<std::string> results_columns(const CampaignInput& in, bool wear = false);
 
 // Writes path (via a temporary file renamed into place). Throws JournalError
 // when the checkpoint does not cover every row exactly once, and
 // std::runtime_error when the file cannot be written.
+// wear (--wear; else nullptr) receives every chunk, in input order.
 MergeSummary write_results_csv(const Journal& journal, const CampaignInput& in,
-                               const std::string& path);
+                               const std::string& path, WearProfiles* wear = nullptr);
 
 // Calls visit(row, outcome) for every row in input order, reading one chunk
 // at a time. Throws JournalError unless the checkpoint covers [0, rows)
 // exactly once.
+// chunk_visit, when given, is called with each chunk before its rows.
 void for_each_row_in_order(const Journal& journal, uint64_t rows,
-                           const std::function<void(uint64_t, const Outcome&)>& visit);
+                           const std::function<void(uint64_t, const Outcome&)>& visit,
+                           const std::function<void(const ChunkResult&)>& chunk_visit = nullptr);
 
 } // namespace cwcampaign

@@ -34,6 +34,12 @@ public:
         const auto* p = reinterpret_cast<const unsigned char*>(v.data());
         bytes_.insert(bytes_.end(), p, p + v.size() * sizeof(double));
     }
+    void put_words(const std::vector<uint64_t>& v)
+    {
+        put<uint64_t>(v.size());
+        const auto* p = reinterpret_cast<const unsigned char*>(v.data());
+        bytes_.insert(bytes_.end(), p, p + v.size() * sizeof(uint64_t));
+    }
     Bytes take() { return std::move(bytes_); }
 
 private:
@@ -74,6 +80,16 @@ public:
         pos_ += n * sizeof(double);
         return v;
     }
+    std::vector<uint64_t> get_words()
+    {
+        const uint64_t n = get<uint64_t>();
+        if (n > (bytes_.size() - pos_) / sizeof(uint64_t))
+            throw WireError(std::string(what_) + ": truncated");
+        std::vector<uint64_t> v(n);
+        if (n) std::memcpy(v.data(), bytes_.data() + pos_, n * sizeof(uint64_t));
+        pos_ += n * sizeof(uint64_t);
+        return v;
+    }
     void finish() const
     {
         if (pos_ != bytes_.size()) throw WireError(std::string(what_) + ": trailing bytes");
@@ -106,6 +122,7 @@ Bytes encode_chunk(const Chunk& chunk)
             w.put(kCaseContact);
             w.put(c.grid);
             w.put(c.params);
+            w.put(c.wear);
         }
     }
     return w.take();
@@ -128,6 +145,7 @@ Chunk decode_chunk(const Bytes& bytes)
         } else if (kind == kCaseContact) {
             c.grid = r.get<cw_grid>();
             c.params = r.get<cw_params>();
+            c.wear = r.get<RowWear>();
         } else {
             throw WireError("chunk message: unknown case kind");
         }
@@ -155,6 +173,7 @@ Bytes encode_result(const ChunkResult& result)
             w.put_string(o.message);
         w.put_doubles(o.wear);
     }
+    for (const std::vector<uint64_t>& state : result.wear_states) w.put_words(state);
     return w.take();
 }
 
@@ -177,6 +196,7 @@ ChunkResult decode_result(const Bytes& bytes)
         }
         o.wear = r.get_doubles();
     }
+    for (std::vector<uint64_t>& state : result.wear_states) state = r.get_words();
     r.finish();
     return result;
 }

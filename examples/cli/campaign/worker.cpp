@@ -2,21 +2,38 @@
 
 #include <chrono>
 
+#include <memory>
+
 #include "chunk_solver.hpp"
 #include "mpi_link.hpp"
+#include "wear_solver.hpp"
 #include "wire.hpp"
 
 namespace cwcampaign {
 
 namespace {
 
-ChunkResult solve_chunk(ChunkSolver& solver, const Chunk& chunk, int test_delay_ms)
+// A worker's solvers: the batches, or with --wear the wear solver.
+struct Solvers {
+    explicit Solvers(const WorkerConfig& c) : plain(c.threads, c.max_batches)
+    {
+        if (c.wear) wear = std::make_unique<WearChunkSolver>(c.threads, c.max_batches, *c.wear);
+    }
+    ChunkSolver plain;
+    std::unique_ptr<WearChunkSolver> wear;
+};
+
+ChunkResult solve_chunk(Solvers& solvers, const Chunk& chunk, int test_delay_ms)
 {
     const auto start = std::chrono::steady_clock::now();
     ChunkResult r;
-    r.id = chunk.id;
-    r.first_row = chunk.first_row;
-    r.outcomes = solver.solve(chunk);
+    if (solvers.wear) {
+        r = solvers.wear->solve(chunk);
+    } else {
+        r.id = chunk.id;
+        r.first_row = chunk.first_row;
+        r.outcomes = solvers.plain.solve(chunk);
+    }
     r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (test_delay_ms > 0) std::this_thread::sleep_for(std::chrono::milliseconds(test_delay_ms));
     return r;
@@ -26,7 +43,7 @@ ChunkResult solve_chunk(ChunkSolver& solver, const Chunk& chunk, int test_delay_
 
 void run_remote_worker(const WorkerConfig& config)
 {
-    ChunkSolver solver(config.threads, config.max_batches);
+    Solvers solver(config);
     std::deque<Chunk> queue;
     bool stopping = false;
     mpi::Backoff backoff;
@@ -104,7 +121,7 @@ bool LocalWorker::take(ChunkResult& result)
 void LocalWorker::run()
 {
     try {
-        ChunkSolver solver(config_.threads, config_.max_batches);
+        Solvers solver(config_);
         for (;;) {
             Chunk chunk;
             {
