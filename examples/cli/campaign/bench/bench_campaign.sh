@@ -20,24 +20,31 @@ dir=$(mktemp -d)
 trap 'rm -rf "$dir"' EXIT
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 
-make_input() { # make_input <model> <rows> <file>
-  awk -v model="$1" -v n="$2" 'BEGIN {
+make_input() { # make_input <model> <rows> <file>: with WEAR=1, s0 and passes columns too
+  awk -v model="$1" -v n="$2" -v wear="${WEAR:-0}" 'BEGIN {
     srand(7)
-    print "id,model,grid,nx,ny,box_scale,a,b,N,mu,G,nu,xi_x,xi_y,phi"
+    print "id,model,grid,nx,ny,box_scale,a,b,N,mu,G,nu,xi_x,xi_y,phi" (wear ? ",s0,passes" : "")
     grid = model == "exact" ? "uniform,44,44,1.1" : "strips,20,20,"
     for (k = 0; k < n; ++k) {
       s = (k % 4 == 3) ? 10 : 1  # a quarter in (or near) full slip
-      printf "r%d,%s,%s,%.5g,%.5g,%.5g,0.3,82e9,0.28,%.5g,%.5g,%.5g\n", k, model, grid,
+      printf "r%d,%s,%s,%.5g,%.5g,%.5g,0.3,82e9,0.28,%.5g,%.5g,%.5g", k, model, grid,
         0.005 + 0.004 * rand(), 0.004 + 0.003 * rand(), 5e4 + 1e5 * rand(),
         (rand() - 0.5) * 2e-3 * s, (rand() - 0.5) * 2e-3 * s, (rand() - 0.5) * 1.0
+      if (wear) printf ",%.5g,%d", (rand() - 0.5) * 0.02, 1 + int(1000 * rand())
+      printf "\n"
     }
   }' >"$3"
 }
 
+# WEAR=1 bench_campaign.sh ...: the same contacts with --wear (USFD, each
+# row's wear accumulated on the rail's profile grid, 0.1 mm spacing).
+wear_args=()
+[ "${WEAR:-0}" = 1 ] && wear_args=(--wear --profile-from -0.025 --profile-to 0.025 --profile-step 1e-4)
+
 run_model() { # run_model <model> <rows>
   local model=$1 rows=$2
   make_input "$model" "$rows" "$dir/$model.csv"
-  printf '\n%s, %d contacts (%s)\n' "$model" "$rows" \
+  printf '\n%s%s, %d contacts (%s)\n' "$model" "$([ "${WEAR:-0}" = 1 ] && echo ' with --wear')" "$rows" \
     "$([ "$model" = exact ] && echo 'uniform 44 x 44, 40 across' || echo 'strips 20 x 20')"
   printf '%-6s %-8s %14s %12s %10s\n' ranks threads "contacts/s" "s/contact" "wall s"
   local reference=""
@@ -49,7 +56,7 @@ run_model() { # run_model <model> <rows>
       local t0 t1
       t0=$(date +%s.%N)
       "$mpirun" --oversubscribe --bind-to none -np "$1" "$creepwork" campaign \
-        --in "$dir/$model.csv" --out "$dir/out" --threads "$2" --quiet 2>/dev/null
+        --in "$dir/$model.csv" --out "$dir/out" --threads "$2" --quiet "${wear_args[@]}" 2>/dev/null
       t1=$(date +%s.%N)
       local rate
       rate=$(sed -n 's/.*"rows_per_second_this_run": *\([0-9.e+-]*\).*/\1/p' "$dir/out/campaign.json")
@@ -72,7 +79,7 @@ run_model() { # run_model <model> <rows>
 nproc_=$(nproc)
 echo "machine: $nproc_ cores, $(sed -n 's/^model name[^:]*: //p' /proc/cpuinfo | head -1); load $(cut -d' ' -f1-3 /proc/loadavg)"
 run_model fastsim "$fastsim_rows"
-make_input exact 1 "$dir/probe.csv"
+WEAR=0 make_input exact 1 "$dir/probe.csv"
 rm -rf "$dir/probe"
 "$creepwork" campaign --in "$dir/probe.csv" --out "$dir/probe" --quiet 2>/dev/null || true
 if grep -q ',ok,' "$dir/probe/results.csv" 2>/dev/null; then

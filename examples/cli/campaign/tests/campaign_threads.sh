@@ -30,3 +30,15 @@ lines=$(wc -l <"$dir/np1/results.csv")
 [ "$(grep -c ',ok,' "$dir/np1/results.csv")" -ge 58 ] || { echo "fewer than 58 rows solved"; exit 1; }
 cmp "$dir/np1/results.csv" "$dir/np2/results.csv"
 echo "1 and 2 ranks x 2 threads: results.csv bitwise equal ($((lines - 1)) rows)"
+# The same rows with their wear (--wear: the wear solver's own threads and
+# the merge of their profile accumulators).
+awk -F, 'NR == 1 { print $0 ",s0,passes"; next } { printf "%s,%.4g,%d\n", $0, (NR % 7 - 3) * 1e-3, 100 + NR }' \
+  "$dir/in.csv" >"$dir/wear.csv"
+for np in 1 2; do
+  "$mpirun" --oversubscribe --bind-to none -np "$np" "$program" --in "$dir/wear.csv" \
+    --out "$dir/wear$np" --threads 2 --chunk 3 --quiet --wear
+done
+[ "$(grep -c ',ok,' "$dir/wear1/results.csv")" -ge 58 ] || { echo "fewer than 58 wear rows solved"; exit 1; }
+cmp "$dir/wear1/results.csv" "$dir/wear2/results.csv"
+cmp "$dir/wear1/wear_profile_rail.csv" "$dir/wear2/wear_profile_rail.csv"
+echo "--wear, 1 and 2 ranks x 2 threads: results.csv and wear_profile_rail.csv bitwise equal"
