@@ -605,7 +605,8 @@ static void update_keeps_volume_on_uneven_nodes(void** state)
  * consistent source feeds the law the model's own W_macro (1e-12: the
  * exact model's consistent map sums to its W_macro, test_capi_exact); each
  * element's USFD rate is the law of its T/A = W_e/A_e (1e-15, Braghin et
- * al. 2006 as printed); and the wear is the same whether the exact model
+ * al. 2006 as printed), so that in the mild regime the mass is k1 x
+ * W_macro (1e-12); and the wear is the same whether the exact model
  * is solved cold or warm from another contact (to the solver's tolerance). */
 static void exact_model_wear(void** state)
 {
@@ -666,6 +667,14 @@ static void exact_model_wear(void** state)
             }
             assert_true(mass > 0.0);
             assert_close(wr.mass_per_distance, mass, 1e-12, 0.0);
+            if (law == CW_WEAR_USFD) {
+                /* T/A stays below 10.4 N/mm^2 here (mild everywhere), where
+                 * the rate is k1 T/A: the mass per rolled metre is then
+                 * k1 x (sum of the consistent work) = k1 x W_macro. */
+                assert_true(wr.regime_area[0] > 0.0 && wr.regime_area[1] == 0.0 &&
+                            wr.regime_area[2] == 0.0);
+                assert_close(wr.mass_per_distance, wp.usfd_k1 * r.W_macro, 1e-12, 0.0);
+            }
             assert_close(wr.regime_area[0] + wr.regime_area[1] + wr.regime_area[2] +
                              wr.regime_area[3],
                          worn_area, 1e-12, 0.0);

@@ -34,11 +34,23 @@ public:
         const auto* p = reinterpret_cast<const unsigned char*>(v.data());
         bytes_.insert(bytes_.end(), p, p + v.size() * sizeof(double));
     }
+    // Words as runs: (zeros, count, count literal words)... A wear profile's
+    // state is mostly zero words (the nodes no patch of the chunk touched),
+    // so a chunk's record grows with the nodes its rows wore, not the grid.
     void put_words(const std::vector<uint64_t>& v)
     {
         put<uint64_t>(v.size());
-        const auto* p = reinterpret_cast<const unsigned char*>(v.data());
-        bytes_.insert(bytes_.end(), p, p + v.size() * sizeof(uint64_t));
+        size_t k = 0;
+        while (k < v.size()) {
+            size_t zeros = 0, count = 0;
+            while (k + zeros < v.size() && v[k + zeros] == 0) ++zeros;
+            while (k + zeros + count < v.size() && v[k + zeros + count] != 0) ++count;
+            put<uint64_t>(zeros);
+            put<uint64_t>(count);
+            const auto* p = reinterpret_cast<const unsigned char*>(v.data() + k + zeros);
+            bytes_.insert(bytes_.end(), p, p + count * sizeof(uint64_t));
+            k += zeros + count;
+        }
     }
     Bytes take() { return std::move(bytes_); }
 
@@ -83,11 +95,19 @@ public:
     std::vector<uint64_t> get_words()
     {
         const uint64_t n = get<uint64_t>();
-        if (n > (bytes_.size() - pos_) / sizeof(uint64_t))
-            throw WireError(std::string(what_) + ": truncated");
-        std::vector<uint64_t> v(n);
-        if (n) std::memcpy(v.data(), bytes_.data() + pos_, n * sizeof(uint64_t));
-        pos_ += n * sizeof(uint64_t);
+        if (n > (uint64_t(1) << 32)) throw WireError(std::string(what_) + ": malformed words");
+        std::vector<uint64_t> v(n, 0);
+        uint64_t k = 0;
+        while (k < n) {
+            const uint64_t zeros = get<uint64_t>(), count = get<uint64_t>();
+            if (zeros + count == 0 || zeros > n - k || count > n - k - zeros)
+                throw WireError(std::string(what_) + ": malformed words");
+            k += zeros;
+            need(count * sizeof(uint64_t));
+            if (count) std::memcpy(v.data() + k, bytes_.data() + pos_, count * sizeof(uint64_t));
+            pos_ += count * sizeof(uint64_t);
+            k += count;
+        }
         return v;
     }
     void finish() const

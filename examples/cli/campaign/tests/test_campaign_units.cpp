@@ -161,6 +161,9 @@ Chunk sample_chunk()
     cw_grid_init(&c.cases[0].grid);
     cw_params_init(&c.cases[0].params);
     c.cases[0].params.xi_x = 1e-3;
+    c.cases[0].wear.body = kWheel;
+    c.cases[0].wear.s0 = -0.003;
+    c.cases[0].wear.passes = 1234.5;
     c.cases[1].unreadable = "line 9, column nu: 'x' is not a finite number";
     return c;
 }
@@ -181,6 +184,9 @@ ChunkResult sample_result(uint64_t first_row, size_t n)
         }
     }
     r.outcomes[0].wear = {1.0, 2.0};
+    // A wear profile's state: runs of zero words between literal ones, a
+    // zero first and last word, and an empty state for the other body.
+    r.wear_states[kRail] = {0, 0, 7, 0, 0, 0, 9, 10, 0, 0xffffffffffffffffull, 0, 0};
     return r;
 }
 
@@ -200,6 +206,17 @@ void wire_round_trips_and_rejects_damage(void** state)
     assert_true(rb.outcomes[4].result.Fx == -1400.0);
     assert_string_equal(rb.outcomes[2].message.c_str(), "nu = 0.7 is invalid");
     assert_true((rb.outcomes[0].wear == std::vector<double>{1.0, 2.0}));
+    assert_true(rb.wear_states[kRail] == r.wear_states[kRail]);
+    assert_true(rb.wear_states[kWheel].empty());
+    assert_true(back.cases[0].wear.body == kWheel && back.cases[0].wear.s0 == -0.003 &&
+                back.cases[0].wear.passes == 1234.5);
+    // Zero runs are stored as counts: a long, mostly zero state is small.
+    ChunkResult big = r;
+    big.wear_states[kWheel].assign(100000, 0);
+    big.wear_states[kWheel][50000] = 3;
+    const Bytes big_bytes = encode_result(big);
+    assert_true(big_bytes.size() < bytes.size() + 100);
+    assert_true(decode_result(big_bytes).wear_states[kWheel] == big.wear_states[kWheel]);
     assert_true(is_stop(encode_stop()) && !is_stop(bytes));
     // Every truncation of a valid message is an error, not a read past it.
     for (size_t n = 0; n < bytes.size(); ++n) {
