@@ -5,7 +5,8 @@
  * row solved cold with CW_SOLVE_FULL, cw_wear_compute, cw_wear_profile_add)
  * and to `creepwork wear` on the same states; the same after a SIGKILL and
  * --resume (no row counted twice); and a bad wear row gets its own error
- * line. FASTSIM rows and exact-model rows (uniform 12 x 12).
+ * line; the contact columns are those of the same campaign without wear.
+ * FASTSIM rows and exact-model rows (uniform 12 x 12).
  *
  * usage: test_campaign_wear <creepwork> <mpirun> <scratch dir> <test name> */
 #include <algorithm>
@@ -321,6 +322,31 @@ void wear_ranks_bitwise(void** state)
             fail();
         }
     }
+    // Every contact column equals, bitwise, a campaign without --wear (its
+    // rows through cw_batch_solve) of the same rows, wear columns dropped.
+    write_input(path("plain.csv"), rows);
+    expect_status(campaign(0, {"--in", path("plain.csv"), "--out", path("plain"), "--quiet"}), 0);
+    {
+        const auto worn = read_csv(path("out0/results.csv"));
+        const auto plain = read_csv(path("plain/results.csv"));
+        assert_int_equal(worn.size(), plain.size());
+        const auto wi = header_index(worn[0]);
+        size_t compared = 0;
+        for (size_t k = 1; k < plain.size(); ++k) {
+            if (worn[k][wi.at("status")] != "ok") continue;
+            for (size_t c = 0; c < plain[0].size(); ++c) {
+                const std::string& name = plain[0][c];
+                if (worn[k][wi.at(name)] != plain[k][c]) {
+                    print_error("row %zu, column %s: %s with --wear, %s without\n", k,
+                                name.c_str(), worn[k][wi.at(name)].c_str(), plain[k][c].c_str());
+                    fail();
+                }
+            }
+            ++compared;
+        }
+        assert_int_equal(compared, rows.size() - 3);
+    }
+
     // The bad rows' lines.
     const auto records = read_csv(path("out0/results.csv"));
     const auto idx = header_index(records[0]);
