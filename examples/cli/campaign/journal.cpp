@@ -12,7 +12,9 @@ namespace cwcampaign {
 
 namespace {
 
-constexpr char kMagic[8] = {'C', 'W', 'C', 'K', 'P', 'T', '1', '\0'};
+// The last digit is the record format (wire.cpp): 2 since the rows carry
+// their wear placement and the chunks their wear profiles (--wear).
+constexpr char kMagic[8] = {'C', 'W', 'C', 'K', 'P', 'T', '2', '\0'};
 constexpr uint32_t kRecordMagic = 0x43575243u; // "CRWC" little-endian
 
 // Fixed header: written once, checked on resume.
@@ -109,9 +111,14 @@ Journal Journal::open_existing(const std::string& path, const JournalIdentity& i
     Journal j(fd, path);
     lock_or_throw(fd, path);
     Header h;
-    if (!read_all(fd, &h, sizeof h, 0) || std::memcmp(h.magic, kMagic, sizeof kMagic) != 0 ||
+    if (!read_all(fd, &h, sizeof h, 0) || std::memcmp(h.magic, kMagic, 6) != 0 ||
         h.checksum != fnv1a(&h, offsetof(Header, checksum)))
         throw JournalError(path + " is not a creepwork checkpoint (or its header is damaged)");
+    if (std::memcmp(h.magic, kMagic, sizeof kMagic) != 0)
+        throw JournalError(path + " was written by another version of creepwork campaign "
+                                  "(checkpoint format " + std::string(1, h.magic[6]) +
+                           ", this one " + kMagic[6] + "); its results cannot be mixed with "
+                           "this build's");
     const Header want = make_header(id);
     if (h.sizeof_grid != want.sizeof_grid || h.sizeof_params != want.sizeof_params ||
         h.sizeof_result != want.sizeof_result || h.library_version != want.library_version)
