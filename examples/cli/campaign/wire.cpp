@@ -95,7 +95,9 @@ public:
     std::vector<uint64_t> get_words()
     {
         const uint64_t n = get<uint64_t>();
-        if (n > (uint64_t(1) << 32)) throw WireError(std::string(what_) + ": malformed words");
+        // A profile state has 35 + 20 n words, n <= 1e6 nodes (--profile-step):
+        // a larger count is damage, not a reason to allocate gigabytes.
+        if (n > (uint64_t(1) << 26)) throw WireError(std::string(what_) + ": malformed words");
         std::vector<uint64_t> v(n, 0);
         uint64_t k = 0;
         while (k < n) {
