@@ -360,9 +360,10 @@ contact (defaults: the paper's Fig. 6 contact as fit-fig6 reproduces it --
 a = 6.6323 mm, b = a/2, N = 10000 lbf, mu = 0.6, G = 82 GPa, nu = 0.3,
 xi_x = 0.0019, xi_y = 0.0011, spin = 0.144 1/ft): --a --b --N --mu --G --nu
 --xi-x --xi-y --spin --rolling-direction --spin-offset (both models; default
-each model's own, 0 FASTSIM and 1/6 exact) --flexibility-blending (FASTSIM)
---tolerance --max-iterations (exact) --units si|paper (as for solve).
-The exact model needs G and nu: --L1..--L3 and --pressure are errors.
+each model's own, 0 FASTSIM and 1/6 exact) --tolerance --max-iterations
+(exact) --units si|paper (as for solve). The exact model needs G and nu, and
+the comparison is of the two theories as Kalker states them: --L1..--L3,
+--pressure and --flexibility-blending are errors.
 grid: uniform (--grid strips is an error), default 48 x 48 over 1.2 times the
 semi-axes (40 elements across the ellipse, two guard cells on each side,
 CONTACT's layout); --nx --ny (at most 256) --box-scale.
