@@ -109,7 +109,7 @@ void print_text(std::ostream& os, const Solution& f, const Solution& e, const Wo
     os << "one contact, two models on the same uniform grid " << f.nx << " x " << f.ny
        << " (box " << fmt(f.grid.box_scale, 4) << " a x " << fmt(f.grid.box_scale, 4)
        << " b); forces on the wheel\n";
-    std::snprintf(line, sizeof line, "  %-18s %14s %14s %10s\n", "", "FASTSIM", "exact",
+    std::snprintf(line, sizeof line, "  %-26s %14s %14s %16s\n", "", "FASTSIM", "exact",
                   "FASTSIM/exact-1");
     os << line;
     const struct {
@@ -130,7 +130,7 @@ void print_text(std::ostream& os, const Solution& f, const Solution& e, const Wo
     for (const auto& r : rows) {
         const std::string name = r.unit.empty() ? r.name : std::string(r.name) + " [" + r.unit + "]";
         const double rel = r.ev != 0.0 ? r.fv / r.ev - 1.0 : NAN;
-        std::snprintf(line, sizeof line, "  %-18s %14.6g %14.6g %+9.1f %%\n", name.c_str(), r.fv,
+        std::snprintf(line, sizeof line, "  %-26s %14.6g %14.6g %+14.1f %%\n", name.c_str(), r.fv,
                       r.ev, 100.0 * rel);
         os << line;
     }

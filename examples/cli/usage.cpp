@@ -367,9 +367,9 @@ the comparison is of the two theories as Kalker states them: --L1..--L3,
 grid: uniform (--grid strips is an error), default 48 x 48 over 1.2 times the
 semi-axes (40 elements across the ellipse, two guard cells on each side,
 CONTACT's layout); --nx --ny (at most 256) --box-scale.
-output: --format text|json (the summary on stdout), --out DIR, --force,
---no-plots, --plot-sign (pictures' tractions; forces are on the wheel),
---plot-axes normalised|physical.
+output: --format text|json (the summary on stdout; forces on the wheel),
+--out DIR, --force, --no-plots, --plot-axes normalised|physical
+(--plot-sign changes nothing here: states and work have no sign).
 
 files with --out:
   summary.json   units, fastsim{}, exact{} (solve's JSON keys each), metrics{}
