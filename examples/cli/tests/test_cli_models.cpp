@@ -336,6 +336,46 @@ void solve_exact_writes_fields_and_pictures(void**)
     assert_int_equal(drawn, slip + adhesion);
 }
 
+// sweep --model exact: the exact model on the uniform grid the CLI documents
+// (--nx/--ny given, so 12 x 12 over 1.2 a x 1.2 b), from almost full
+// adhesion to full slip; a panel's forces equal a cold C ABI solve to the
+// solver tolerance (the sweep warm-starts one handle: README "Exact model",
+// warm and cold agree to ~1e-10 of |F|).
+void sweep_exact_model(void**)
+{
+    const std::string dir = g_scratch + "/sweep";
+    const Json j = parse_or_fail(run_ok({"sweep", "--model", "exact", "--nx", "12", "--ny", "12",
+                                         "--format", "json", "--no-plots", "--out", dir})
+                                     .out);
+    const auto& cases = j.at("cases").array;
+    assert_true(cases.size() >= 24);
+    assert_true(cases.front().num("adhesion_fraction") > 0.9);
+    double last_fig2 = 1;
+    const Json* probe = nullptr;
+    for (const Json& c : cases)
+        if (c.at("figure").string == "fig2") {
+            last_fig2 = c.num("adhesion_fraction");
+            if (!probe && last_fig2 < 0.6) probe = &c; // a partial-slip panel
+        }
+    assert_true(last_fig2 == 0.0);
+    assert_non_null(probe);
+    // sweep's default contact (its --help): the paper's Fig. 6 contact.
+    cw_params p;
+    cw_params_init(&p);
+    p.model = CW_MODEL_EXACT;
+    p.a = 6.6323e-3, p.b = p.a / 2, p.normal_force = 10000 * 4.4482216152605, p.mu = 0.6;
+    p.G = 82e9, p.nu = 0.3;
+    p.xi_x = probe->num("xi_x"), p.xi_y = probe->num("xi_y"), p.phi = probe->num("spin");
+    cw_grid g;
+    cw_grid_init(&g);
+    g.kind = CW_GRID_UNIFORM, g.nx = 12, g.ny = 12, g.box_scale = 1.2;
+    const cw_result r = library_solve(g, p);
+    const double F = std::hypot(r.Fx, r.Fy);
+    assert_close(probe->num("Fx"), r.Fx, 0.0, 1e-7 * F);
+    assert_close(probe->num("Fy"), r.Fy, 0.0, 1e-7 * F);
+    assert_close(probe->num("adhesion_fraction"), r.adhesion_fraction, 0.0, 1e-12);
+}
+
 /* ---------------------------------------------------------------- compare */
 
 double sum(const std::vector<double>& v)
@@ -487,6 +527,7 @@ int main(int argc, char** argv)
         cmocka_unit_test(solve_exact_matches_library),
         cmocka_unit_test(model_bad_inputs_fail_cleanly),
         cmocka_unit_test(solve_exact_writes_fields_and_pictures),
+        cmocka_unit_test(sweep_exact_model),
         cmocka_unit_test(compare_metrics_from_its_files),
         cmocka_unit_test(compare_fig6_readme_numbers),
     };
