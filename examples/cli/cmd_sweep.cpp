@@ -43,7 +43,7 @@ PatchGeometry geometry_of(const Solution& s)
         g.Y.push_back(s.y[k] / s.result.b);
         g.half_x.push_back(s.area[k] / (4.0 * s.result.a * s.result.b * half_y));
         g.half_y.push_back(half_y);
-        // The state decides: the exact model reports every element's area.
+        // Area 0 outside the contact; the state says so too.
         g.inside.push_back(s.area[k] > 0.0 && s.state[k] != CW_STATE_EXTERIOR);
     }
     return g;
