@@ -124,6 +124,7 @@ module creepwork
       procedure :: destroy => solver_destroy
       procedure :: is_created => solver_is_created
       procedure :: grid_size => solver_grid_size
+      procedure :: prepare => solver_prepare
       procedure :: solve => solver_solve
       procedure :: get_result => solver_get_result
       procedure, private :: solver_get_field_2d, solver_get_field_1d
@@ -166,6 +167,7 @@ module creepwork
       procedure :: create => batch_create
       procedure :: destroy => batch_destroy
       procedure :: is_created => batch_is_created
+      procedure :: prepare => batch_prepare
       procedure :: solve => batch_solve
       procedure :: last_error => batch_last_error
       procedure, private :: batch_assign
@@ -252,8 +254,6 @@ module creepwork
          integer(c_int) :: status
       end function capi_solver_destroy
 
-      ! Bound so the interface matches the header (check_fortran_bindings);
-      ! the Fortran layer of the exact model comes with its model switch.
       function capi_solver_prepare(solver, model) bind(c, name='cw_solver_prepare') &
          result(status)
          import :: c_int, c_ptr
@@ -1096,6 +1096,25 @@ contains
       end if
    end function solver_outcome
 
+   ! Makes one model's memory now (cw_solver_prepare), so that its solves
+   ! allocate nothing afterwards: model CW_MODEL_EXACT makes the exact
+   ! model's tables and workspaces (about 2 kB per element; needs the uniform
+   ! grid), CW_MODEL_FASTSIM has nothing to do. Idempotent.
+   subroutine solver_prepare(self, model, stat, errmsg)
+      class(cw_solver_type), intent(inout) :: self
+      integer, intent(in) :: model
+      integer, intent(out), optional :: stat
+      character(len=:), allocatable, intent(out), optional :: errmsg
+      type(outcome) :: o
+      if (.not. c_associated(self%handle)) then
+         o = not_created('solver')
+      else
+         o = solver_outcome(self, capi_solver_prepare(self%handle, int(model, c_int)))
+      end if
+      if (present(errmsg)) errmsg = error_text(o)
+      call deliver(o, stat)
+   end subroutine solver_prepare
+
    ! Solves one steady-rolling contact; mode CW_SOLVE_FULL (default) or
    ! CW_SOLVE_FORCES. result (optional) receives the totals; an
    ! uninitialised result (struct_size 0) is initialised first.
@@ -1512,6 +1531,29 @@ contains
       class(cw_batch_type), intent(in) :: self
       batch_is_created = c_associated(self%handle)
    end function batch_is_created
+
+   ! cw_solver_type%prepare for the solver of every thread of the batch
+   ! (cw_batch_prepare).
+   subroutine batch_prepare(self, model, stat, errmsg)
+      class(cw_batch_type), intent(inout) :: self
+      integer, intent(in) :: model
+      integer, intent(out), optional :: stat
+      character(len=:), allocatable, intent(out), optional :: errmsg
+      type(outcome) :: o
+      integer(c_int) :: status
+      if (.not. c_associated(self%handle)) then
+         o = not_created('batch')
+      else
+         status = capi_batch_prepare(self%handle, int(model, c_int))
+         if (status == CW_OK) then
+            o = make_outcome(status, '')
+         else
+            o = make_outcome(status, f_string(capi_batch_last_error(self%handle)))
+         end if
+      end if
+      if (present(errmsg)) errmsg = error_text(o)
+      call deliver(o, stat)
+   end subroutine batch_prepare
 
    ! Buffer of n elements where count are needed.
    function too_short(name, n, count) result(o)

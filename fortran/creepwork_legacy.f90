@@ -12,6 +12,9 @@
 !   CWSOLM  dimensional contact with Kalker's flexibilities from G and nu:
 !           forces, moment, work totals and every per-element map
 !   CWSOLL  the same with the flexibilities L1, L2, L3 given
+!   CWSOLX  dimensional contact on CONTACT's uniform grid with a model
+!           switch: FASTSIM or Kalker's exact theory (pressure, p_max and
+!           approach of its normal problem too)
 !   CWACCU  adds one time step's work into running totals (paper eqs. 35, 37)
 !   CWKALK  Kalker's creepage and spin coefficients C11, C22, C23, C33
 !   CWFLEX  Kalker's flexibilities L1, L2, L3 (for CWSOLL and CWFSIM)
@@ -83,14 +86,19 @@ contains
       if (subnormal(x)) flushed = 0.0_c_double
    end function flushed
 
+   ! Kalker's strip grid, or with box present CONTACT's uniform grid over
+   ! [-box a, box a] x [-box b, box b]; pz, pmax, appr (all or none) receive
+   ! the pressure map, p_max and the approach.
    subroutine legacy_solve(params, nx, ny, fx, fy, fmz, wmac, wmic, ck, px, py, sx, sy, &
-                           zmap, wpap, wcon, istate, ierr)
+                           zmap, wpap, wcon, istate, ierr, box, pz, pmax, appr)
       type(cw_params), intent(in) :: params
       integer(c_int), intent(in) :: nx, ny
       real(c_double), intent(inout) :: fx, fy, fmz, wmac, wmic, ck
       real(c_double), intent(inout), dimension(nx, ny) :: px, py, sx, sy, zmap, wpap, wcon
       integer(c_int), intent(inout) :: istate(nx, ny)
       integer(c_int), intent(out) :: ierr
+      real(c_double), intent(in), optional :: box
+      real(c_double), intent(inout), optional :: pz(nx, ny), pmax, appr
       type(cw_solver_type) :: solver
       type(cw_result) :: r
       integer :: stat
@@ -100,10 +108,19 @@ contains
          ierr = CW_ERR_INVALID_INPUT
          return
       end if
-      call solver%create(nx=nx, ny=ny, stat=stat)
+      if (present(box)) then
+         if (subnormal(box)) then
+            ierr = CW_ERR_INVALID_INPUT
+            return
+         end if
+         call solver%create(nx=nx, ny=ny, kind=int(CW_GRID_UNIFORM), box_scale=box, stat=stat)
+      else
+         call solver%create(nx=nx, ny=ny, stat=stat)
+      end if
       ierr = int(stat, c_int)
       if (ierr /= CW_OK) return
       call solver%solve(params, CW_SOLVE_FULL, r, stat=stat)
+      if (stat == CW_OK .and. present(pz)) call solver%get_field(CW_FIELD_PZ, pz, stat=stat)
       ! After a successful full solve no field can fail; stop at the first
       ! error all the same.
       if (stat == CW_OK) call solver%get_field(CW_FIELD_PX, px, stat=stat)
@@ -121,6 +138,8 @@ contains
          wmac = r%W_macro
          wmic = r%W_micro_paper
          ck = r%K
+         if (present(pmax)) pmax = r%p_max
+         if (present(appr)) appr = r%approach
       end if
       ierr = int(stat, c_int)
       call solver%destroy()
@@ -245,6 +264,59 @@ subroutine CWSOLL(A, B, FN, FMU, FL1, FL2, FL3, XI, ETA, PHI, NX, NY, FX, FY, FM
    call legacy_solve(p, NX, NY, FX, FY, FMZ, WMAC, WMIC, CK, PX, PY, SX, SY, ZMAP, WPAP, WCON, &
                      ISTATE, IERR)
 end subroutine CWSOLL
+
+! Extended entry with a model switch, on CONTACT's uniform grid (NX x NY
+! equal elements over [-BOX A, BOX A] x [-BOX B, BOX B]), flexibilities or
+! half-space from G and PNU, rolling towards +x:
+!   MODEL     0 FASTSIM (CW_MODEL_FASTSIM: Kalker's simplified theory,
+!             parabolic traction bound, CONTACT's FASTSIM grid), 1 Kalker's
+!             exact half-space theory (CW_MODEL_EXACT, README "Exact model":
+!             its own discrete normal problem, tolerance 1e-8, at most 50
+!             Newton steps, else IERR = CW_ERR_NOT_CONVERGED), 2 the
+!             calibrated model (CW_MODEL_CALIBRATED; IERR says whether this
+!             build has it)
+!   A ... PHI as CWSOLM
+!   NX, NY    elements along x and y (1..1000; exact model 1..256)
+!   BOX       box scale S in [1, 100]: CONTACT's N elements across the
+!             ellipse with two guard cells are NX = NY = N + 4, BOX = (N+4)/N
+! Outputs as CWSOLM, and
+!   PMAX      largest element pressure [Pa]
+!   APPR      normal approach [m]: exact model, of its discrete normal
+!             problem; FASTSIM, Hertz's
+!   PZ        normal pressure [Pa]                   (NX, NY)
+!   WPAP      exact model: the frictional power density per element
+!             (CONTACT's FRIC_POWER at V = 1) [J/m]
+! Each call makes and frees its own solver, so the exact model starts cold
+! every time (warm starts from the previous step: module creepwork).
+subroutine CWSOLX(MODEL, A, B, FN, FMU, G, PNU, XI, ETA, PHI, NX, NY, BOX, FX, FY, FMZ, WMAC, &
+                  WMIC, CK, PMAX, APPR, PX, PY, PZ, SX, SY, ZMAP, WPAP, WCON, ISTATE, IERR)
+   use, intrinsic :: iso_c_binding, only: c_double, c_int
+   use creepwork, only: cw_params, cw_params_init, CW_FLEX_FROM_MATERIAL
+   use creepwork_legacy_support, only: legacy_solve
+   implicit none
+   integer(c_int), intent(in) :: MODEL
+   real(c_double), intent(in) :: A, B, FN, FMU, G, PNU, XI, ETA, PHI, BOX
+   integer(c_int), intent(in) :: NX, NY
+   real(c_double), intent(inout) :: FX, FY, FMZ, WMAC, WMIC, CK, PMAX, APPR
+   real(c_double), intent(inout), dimension(NX, NY) :: PX, PY, PZ, SX, SY, ZMAP, WPAP, WCON
+   integer(c_int), intent(inout) :: ISTATE(NX, NY)
+   integer(c_int), intent(out) :: IERR
+   type(cw_params) :: p
+   call cw_params_init(p)
+   p%model = MODEL
+   p%a = A
+   p%b = B
+   p%normal_force = FN
+   p%mu = FMU
+   p%flexibility = CW_FLEX_FROM_MATERIAL
+   p%G = G
+   p%nu = PNU
+   p%xi_x = XI
+   p%xi_y = ETA
+   p%phi = PHI
+   call legacy_solve(p, NX, NY, FX, FY, FMZ, WMAC, WMIC, CK, PX, PY, SX, SY, ZMAP, WPAP, WCON, &
+                     ISTATE, IERR, BOX, PZ, PMAX, APPR)
+end subroutine CWSOLX
 
 ! Time accumulation for a simulation loop (paper eqs. 35 and 37), on the
 ! caller's arrays: adds one step of length DIST = V*dt [m] (finite, >= 0).

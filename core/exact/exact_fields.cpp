@@ -40,7 +40,8 @@ void ExactModel::export_field(Field f, const Op& op, double* out) const
             switch (f) {
             case Field::x: v = x; break;
             case Field::y: v = y; break;
-            case Field::area: v = area; break;
+            // creepwork.h: 0 outside the contact, as FASTSIM reports it.
+            case Field::area: v = state[k] != 0 ? area : 0.0; break;
             case Field::pz: v = loaded ? s.p0 * qn[k] : 0.0; break;
             case Field::px: v = px; break;
             case Field::py: v = py; break;

@@ -31,7 +31,8 @@ void write_json_file(const std::string& path, const JsonObject& j)
 int command_solve(int argc, char** argv, int first)
 {
     const auto specs =
-        join(join(join(material_and_load_options(), creepage_options()), grid_options()),
+        join(join(join(join(material_and_load_options(), model_options()), creepage_options()),
+                  grid_options()),
              output_options());
     ParsedOptions opts;
     if (parse_or_help(specs, argc, argv, first, usage_solve(), opts)) return kExitOk;

@@ -43,7 +43,8 @@ PatchGeometry geometry_of(const Solution& s)
         g.Y.push_back(s.y[k] / s.result.b);
         g.half_x.push_back(s.area[k] / (4.0 * s.result.a * s.result.b * half_y));
         g.half_y.push_back(half_y);
-        g.inside.push_back(s.area[k] > 0.0);
+        // Area 0 outside the contact; the state says so too.
+        g.inside.push_back(s.area[k] > 0.0 && s.state[k] != CW_STATE_EXTERIOR);
     }
     return g;
 }
@@ -75,7 +76,8 @@ void write_cases_csv(const std::string& path, const std::vector<SweepFigure>& fi
 
 int command_sweep(int argc, char** argv, int first)
 {
-    const auto specs = join(join(material_and_load_options(), grid_options()), output_options());
+    const auto specs = join(join(join(material_and_load_options(), model_options()), grid_options()),
+                            output_options());
     ParsedOptions opts;
     if (parse_or_help(specs, argc, argv, first, usage_sweep(), opts)) return kExitOk;
     cw_params defaults;

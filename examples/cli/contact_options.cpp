@@ -42,6 +42,14 @@ std::vector<OptionSpec> grid_options()
             {"box-scale", K::number, {}}};
 }
 
+std::vector<OptionSpec> model_options()
+{
+    using K = OptionKind;
+    return {{"model", K::choice, {"fastsim", "exact", "calibrated"}},
+            {"tolerance", K::number, {}},
+            {"max-iterations", K::integer, {}}};
+}
+
 cw_params library_default_params()
 {
     cw_params p;
@@ -59,6 +67,13 @@ cw_grid library_default_grid()
 const char* grid_kind_name(int kind)
 {
     return kind == CW_GRID_UNIFORM ? "uniform" : "strips";
+}
+
+const char* model_name(int model)
+{
+    return model == CW_MODEL_EXACT        ? "exact"
+           : model == CW_MODEL_CALIBRATED ? "calibrated"
+                                          : "fastsim";
 }
 
 const char* pressure_name(int pressure)
@@ -133,11 +148,24 @@ void validate_params(const ParsedOptions& o, const cw_params& p, const Units& u)
     }
 }
 
-cw_grid read_grid(const ParsedOptions& o, const cw_grid& defaults)
+cw_grid read_grid(const ParsedOptions& o, const cw_grid& defaults, int model)
 {
     cw_grid g = defaults;
     if (o.has("grid"))
         g.kind = o.text("grid", "") == "uniform" ? CW_GRID_UNIFORM : CW_GRID_KALKER_STRIPS;
+    if (model == CW_MODEL_EXACT) {
+        if (g.kind != CW_GRID_UNIFORM && o.has("grid"))
+            throw usage_error("--grid", "the exact model needs the uniform grid (give --grid "
+                                        "uniform, or no --grid: it is then the default)");
+        if (g.kind != CW_GRID_UNIFORM) {
+            // CONTACT's layout (README "Exact model"): the ellipse inside a
+            // box 1.2 times larger, two guard cells on each side at 20 across.
+            g.kind = CW_GRID_UNIFORM;
+            g.nx = static_cast<int>(std::lround(kExactBoxScale * g.nx));
+            g.ny = static_cast<int>(std::lround(kExactBoxScale * g.ny));
+            g.box_scale = kExactBoxScale;
+        }
+    }
     g.nx = o.integer("nx", g.nx);
     g.ny = o.integer("ny", g.ny);
     g.box_scale = o.number("box-scale", g.box_scale);
@@ -151,7 +179,51 @@ cw_grid read_grid(const ParsedOptions& o, const cw_grid& defaults)
     if (!(g.box_scale >= 1.0 && g.box_scale <= CW_MAX_BOX_SCALE))
         throw usage_error("--box-scale", "must lie in [1, 100] so the box holds the ellipse (got " +
                                              show(g.box_scale, "") + ")");
+    if (model == CW_MODEL_EXACT)
+        for (const auto& [name, n] : {std::pair<const char*, int>{"--nx", g.nx}, {"--ny", g.ny}})
+            if (n > CW_MAX_EXACT_CELLS)
+                throw usage_error(name, "the exact model takes at most " +
+                                            std::to_string(CW_MAX_EXACT_CELLS) +
+                                            " elements per direction (got " + std::to_string(n) +
+                                            ")");
     return g;
+}
+
+// --model and the options of the exact model. Options another model would
+// silently ignore are errors, so a run never shows what was not asked for.
+void read_model(const ParsedOptions& o, cw_params& p)
+{
+    if (o.has("model"))
+        p.model = o.text("model", "") == "exact"        ? CW_MODEL_EXACT
+                  : o.text("model", "") == "calibrated" ? CW_MODEL_CALIBRATED
+                                                        : CW_MODEL_FASTSIM;
+    if (p.model != CW_MODEL_EXACT) {
+        for (const char* name : {"tolerance", "max-iterations"})
+            if (o.has(name))
+                throw usage_error(std::string("--") + name, "only used with --model exact");
+        return;
+    }
+    const char* unused[][2] = {
+        {"L1", "the exact model needs G and nu, not the flexibilities of the simplified theory"},
+        {"L2", "the exact model needs G and nu, not the flexibilities of the simplified theory"},
+        {"L3", "the exact model needs G and nu, not the flexibilities of the simplified theory"},
+        {"pressure", "not used by the exact model: it solves its own normal problem"},
+        {"flexibility-blending", "a FASTSIM option, not used by the exact model"}};
+    for (const auto& u : unused)
+        if (o.has(u[0])) throw usage_error(std::string("--") + u[0], u[1]);
+    if (o.has("tolerance")) {
+        p.tolerance = o.number("tolerance", 0.0);
+        if (!(p.tolerance >= 1e-13 && p.tolerance < 1.0))
+            throw usage_error("--tolerance", "must lie in [1e-13, 1) (got " +
+                                                 show(p.tolerance, "") + "; default 1e-8)");
+    }
+    if (o.has("max-iterations")) {
+        p.max_iterations = o.integer("max-iterations", 0);
+        if (p.max_iterations < 1)
+            throw usage_error("--max-iterations", "must be >= 1 (got " +
+                                                      std::to_string(p.max_iterations) +
+                                                      "; default 50)");
+    }
 }
 
 void require_given(const ParsedOptions& o)
@@ -254,6 +326,7 @@ ContactSetup read_contact(const ParsedOptions& o, const cw_params& defaults,
     read(o, u, "xi-x", Quantity::dimensionless, &p.xi_x);
     read(o, u, "xi-y", Quantity::dimensionless, &p.xi_y);
     read(o, u, "spin", Quantity::spin, &p.phi);
+    read_model(o, p);
     read_flexibilities(o, u, p);
     if (o.has("pressure"))
         p.pressure =
@@ -273,7 +346,7 @@ ContactSetup read_contact(const ParsedOptions& o, const cw_params& defaults,
         c.notes.push_back("warning: " + warning);
     if (size_and_load == SizeAndLoad::required) note_defaults(o, p, u, c.notes);
     c.params = p;
-    c.grid = read_grid(o, default_grid);
+    c.grid = read_grid(o, default_grid, p.model);
     return c;
 }
 

@@ -33,6 +33,14 @@ std::vector<OptionSpec> material_and_load_options();
 std::vector<OptionSpec> creepage_options();
 // --grid --nx --ny --box-scale
 std::vector<OptionSpec> grid_options();
+// --model fastsim|exact|calibrated --tolerance --max-iterations
+std::vector<OptionSpec> model_options();
+
+// The grid the exact model gets when --grid is not given: CONTACT's layout,
+// the uniform grid over kExactBoxScale times the semi-axes with
+// kExactBoxScale times the command's default element count (solve: 24 x 24,
+// 20 elements across the ellipse and two guard cells on each side).
+constexpr double kExactBoxScale = 1.2;
 
 // What read_contact insists on. solve has no sensible default for the size
 // and load of a contact, so it requires --a, --b and --N; sweep and fit-fig6
@@ -40,7 +48,10 @@ std::vector<OptionSpec> grid_options();
 enum class SizeAndLoad { required, defaulted };
 
 // Reads the options present in opts over the given defaults (SI structs) and
-// validates the result. Throws CliError(kExitUsage) naming the option.
+// validates the result. With --model exact the grid defaults to the uniform
+// one (kExactBoxScale above), and the options the exact model cannot use
+// (--grid strips, --L1..--L3, --pressure, --flexibility-blending) are errors;
+// --tolerance and --max-iterations need --model exact. Throws CliError(kExitUsage) naming the option.
 // Inputs that are valid but implausible for a wheel-rail contact (semi-axes
 // above 0.1 m, G below 1e6 Pa, creepage above 0.5, ...: plausibility_warnings)
 // get a warning each in notes; with SizeAndLoad::required, the library
@@ -57,6 +68,7 @@ cw_params library_default_params();
 cw_grid library_default_grid();
 
 const char* grid_kind_name(int kind);    // "strips" | "uniform"
+const char* model_name(int model);       // "fastsim" | "exact" | "calibrated"
 const char* pressure_name(int pressure); // "parabolic" | "elliptic"
 
 } // namespace cwcli

@@ -25,7 +25,9 @@ std::string options_named_in(const std::string& message)
         {"mu", "--mu"},     {"G", "--G"},       {"nu", "--nu"},
         {"L1", "--L1"},     {"L2", "--L2"},     {"L3", "--L3"},
         {"xi_x", "--xi-x"}, {"xi_y", "--xi-y"}, {"phi", "--spin"},
-        {"nx", "--nx"},     {"ny", "--ny"},     {"box_scale", "--box-scale"}};
+        {"nx", "--nx"},     {"ny", "--ny"},     {"box_scale", "--box-scale"},
+        {"model", "--model"}, {"tolerance", "--tolerance"},
+        {"max_iterations", "--max-iterations"}, {"spin_offset", "--spin-offset"}};
     const auto is_word = [](char c) {
         return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
     };

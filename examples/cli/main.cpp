@@ -47,10 +47,12 @@ int dispatch(int argc, char** argv)
     if (command == "fit-fig6") return command_fit_fig6(argc, argv, 2);
     if (command == "wear") return command_wear(argc, argv, 2);
     if (command == "campaign") return command_campaign(argc, argv, 2);
-    const std::string hint = nearest(
-        command, {"solve", "sweep", "fit-fig6", "wear", "campaign", "help", "version"});
+    if (command == "compare") return command_compare(argc, argv, 2);
+    const std::string hint = nearest(command, {"solve", "sweep", "fit-fig6", "wear", "campaign",
+                                               "compare", "help", "version"});
     throw CliError(kExitUsage, "'" + command +
-                                   "': unknown command (solve, sweep, fit-fig6, wear, campaign" +
+                                   "': unknown command (solve, sweep, fit-fig6, wear, campaign, "
+                                   "compare" +
                                    (hint.empty() ? std::string("; see --help)")
                                                  : "); did you mean " + hint + "?"));
 }

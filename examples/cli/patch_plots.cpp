@@ -81,7 +81,8 @@ std::vector<std::vector<double>> write_patch_data(const std::string& path, const
       << body_name(sign) << "\n";
     for (size_t k = 0; k < s.size(); ++k) {
         const double area = s.area[k];
-        if (!(area > 0.0)) continue; // exterior: not part of the patch
+        // Exterior: not part of the patch (area 0; the state says so too).
+        if (!(area > 0.0) || s.state[k] == CW_STATE_EXTERIOR) continue;
         const double bound = s.params.mu * s.pz[k];
         const double utilisation = bound > 0.0 ? std::hypot(s.px[k], s.py[k]) / bound : 0.0;
         const double row[kColumns] = {axes.ax * s.x[k] / r.a,

@@ -59,7 +59,12 @@ JsonObject input_json(const cw_params& p, const cw_grid& g, const Units& u)
         .text("flexibility", p.flexibility == CW_FLEX_GIVEN ? "given" : "material");
     if (p.flexibility != CW_FLEX_GIVEN)
         in.number("G", u.from_si(Quantity::stress, p.G)).number("nu", p.nu);
-    in.text("pressure", pressure_name(p.pressure))
+    in.text("model", model_name(p.model));
+    if (p.model == CW_MODEL_EXACT)
+        in.number("tolerance", p.tolerance).integer("max_iterations", p.max_iterations);
+    // The exact model ignores params.pressure: it solves its own normal problem.
+    in.text("pressure", p.model == CW_MODEL_EXACT ? "discrete_normal_problem"
+                                                  : pressure_name(p.pressure))
         .integer("rolling_direction", p.rolling_direction)
         .text("grid", grid_kind_name(g.kind))
         .integer("nx", g.nx)
@@ -88,12 +93,19 @@ JsonObject result_json(const cw_result& r, const cw_params& p, const cw_grid& g,
     }
     j.number("profile_max_diff", r.profile_max_diff)
         .number("profile_rms_diff", r.profile_rms_diff)
+        .text("model", model_name(r.model))
+        .number("p_max", u.from_si(Quantity::stress, r.p_max))
+        .number("approach", u.from_si(Quantity::length, r.approach))
+        .integer("iterations", r.iterations)
+        .number("residual", r.residual)
         .text("units", u.name())
         .text("sign_convention",
               "Fx, Fy, Mz act on the wheel (Kalker, CONTACT): opposite to the creepages; "
               "the paper prints the force on the rail")
         .object("input", input_json(p, g, u))
-        .object("unit_of", unit_of.text("N", u.label(Quantity::force))
+        .object("unit_of", unit_of.text("p_max", u.label(Quantity::stress))
+                               .text("approach", u.label(Quantity::length))
+                               .text("N", u.label(Quantity::force))
                                .text("spin", u.label(Quantity::spin))
                                .text("G", u.label(Quantity::stress)));
     return j;
@@ -114,8 +126,17 @@ void print_result_text(std::ostream& os, const cw_result& r, const cw_params& p,
     os << "creepage   xi_x = " << fmt(p.xi_x) << ", xi_y = " << fmt(p.xi_y)
        << ", spin = " << val(p.phi, Quantity::spin) << ", rolling towards "
        << (p.rolling_direction > 0 ? "+x" : "-x") << "\n";
-    os << "grid       " << grid_kind_name(g.kind) << " " << g.nx << " x " << g.ny << ", "
-       << pressure_name(p.pressure) << " pressure\n";
+    os << "grid       " << grid_kind_name(g.kind) << " " << g.nx << " x " << g.ny;
+    if (g.kind == CW_GRID_UNIFORM) os << ", box " << fmt(g.box_scale) << " a x " << fmt(g.box_scale) << " b";
+    if (r.model == CW_MODEL_EXACT)
+        os << ", pressure of the discrete normal problem\n"
+           << "model      exact (Kalker's half-space theory): p_max = "
+           << val(r.p_max, Quantity::stress) << ", approach = " << val(r.approach, Quantity::length)
+           << ", " << r.iterations << " iterations, residual " << fmt(r.residual, 3) << "\n";
+    else
+        os << ", " << pressure_name(p.pressure) << " pressure\n"
+           << "model      " << model_name(r.model)
+           << (r.model == CW_MODEL_FASTSIM ? " (Kalker's simplified theory)" : "") << "\n";
     os << "results    (forces and moment on the wheel; the rail gets the opposite sign)\n";
     for (const Entry& e : totals(r))
         os << "  " << e.key << std::string(16 - std::string(e.key).size(), ' ') << "= "

@@ -6,7 +6,8 @@
 // JSON keys, stable (new keys are only ever added):
 //   Fx Fy Mz W_macro W_micro_paper K W_consistent balance_factor work_flags
 //   adhesion_fraction n_contact n_adhesion n_slip a b L1 L2 L3 C11 C22 C23 C33
-//   profile_max_diff profile_rms_diff units sign_convention input{...} unit_of{...}
+//   profile_max_diff profile_rms_diff model p_max approach iterations residual
+//   units sign_convention input{...} unit_of{...}
 #pragma once
 
 #include <ostream>

@@ -9,7 +9,8 @@ const char* usage_main()
     return R"(usage: creepwork <command> [options]      (creepwork <command> --help for details)
 
 Creep forces, creep moment and frictional-work distributions of a wheel
-rolling on a rail (Kalker's simplified theory, FASTSIM), via libcreepwork.
+rolling on a rail (Kalker's simplified theory, FASTSIM, or his exact
+half-space theory: --model exact), via libcreepwork.
 
 commands:
   solve      one contact: totals (text or JSON), and with --out every field
@@ -22,6 +23,9 @@ commands:
              paper's parabola assumption, as CSV and a picture
   campaign   many contacts from a CSV file, or a creep-force table, over MPI
              ranks and threads (built with MPI; creepwork campaign --help)
+  compare    one contact by FASTSIM and by the exact theory on one grid:
+             both models' totals, how far FASTSIM's work distribution is
+             from the exact one, pictures side by side
   --version  program and library versions
 
 exit status: 0 success, 1 environment failure (cannot write, gnuplot failed),
@@ -42,8 +46,28 @@ const char* usage_solve()
 Solves one steady-rolling contact on an elliptical patch. The semi-axes and
 the load are required (no default could fit a real contact). Everything else
 has the library's default, named on stderr when taken for mu, G or nu:
-steel G = 82 GPa, nu = 0.28, mu = 0.3, zero creepage; Kalker strip grid
-20 x 20, parabolic pressure.
+steel G = 82 GPa, nu = 0.28, mu = 0.3, zero creepage; FASTSIM on Kalker's
+strip grid 20 x 20, parabolic pressure.
+
+model:
+  --model fastsim|exact|calibrated
+                    fastsim (default): Kalker's simplified theory. exact:
+                    Kalker's exact half-space theory on CONTACT's
+                    discretisation (README "Exact model"): needs G and nu
+                    (not --L1..--L3) and the uniform grid, and solves its own
+                    normal problem (no --pressure). Without --grid it gets
+                    CONTACT's layout: the uniform grid, 24 x 24 elements over
+                    1.2 times the semi-axes (20 elements across the ellipse,
+                    two guard cells on each side); --nx, --ny, --box-scale
+                    override (at most 256 per direction); --grid strips is an
+                    error. calibrated: passed to the library, which says
+                    whether this build has it.
+  --tolerance T     exact model: relative residual at which the tangential
+                    solve stops, in [1e-13, 1) (default 1e-8)
+  --max-iterations N
+                    exact model: bound on its Newton steps (default 50);
+                    reaching it is an error (exit 2), never an unconverged
+                    answer
 
 contact (lengths, forces, stresses in the --units system):
   --a A             semi-axis along the rolling direction x (> 0), required
@@ -65,7 +89,8 @@ contact (lengths, forces, stresses in the --units system):
                     the simplified theory; elliptic = Hertz)
   --spin-offset S   spin term of the lateral rigid slip taken S element
                     lengths ahead of the slip point (0 .. 1; default 0,
-                    Kalker's FASTSIM; CONTACT's FASTSIM uses 1/6)
+                    Kalker's FASTSIM; CONTACT's FASTSIM uses 1/6; the exact
+                    model's default is 1/6, CONTACT's)
   --flexibility-blending
                     CONTACT's blending of L1, L2, L3 towards one flexibility
                     as the creepage grows (CONTACT's FASTSIM default). With
@@ -108,10 +133,16 @@ paper in in, psi, lbf, lbf ft, lbf ft/ft.
 JSON keys (stable; values in the --units system):
   Fx Fy Mz W_macro W_micro_paper K W_consistent balance_factor work_flags
   adhesion_fraction n_contact n_adhesion n_slip a b L1 L2 L3 C11 C22 C23 C33
-  profile_max_diff profile_rms_diff units sign_convention input{} unit_of{}
+  profile_max_diff profile_rms_diff model p_max approach iterations residual
+  units sign_convention input{} unit_of{}
   W_macro = -(Fx xi_x + Fy xi_y + Mz spin) (paper eq. 34); W_micro_paper is
   the paper's summed local work and K = W_macro / W_micro_paper (eq. 39);
-  W_consistent sums the energy-consistent work map (= W_macro).
+  W_consistent sums the energy-consistent work map (= W_macro). model is
+  fastsim or exact; p_max the largest element pressure, approach the normal
+  approach (exact: of its discrete normal problem; FASTSIM: Hertz's);
+  iterations and residual those of the exact model's solve (0 for FASTSIM).
+  With --model exact, work_paper is the exact frictional power density
+  (CONTACT's FRIC_POWER) and K = W_macro over its sum.
 
 files with --out:
   fields.csv   one row per element, i fastest (nx*ny rows), the unit in
@@ -164,7 +195,8 @@ contact (defaults: the paper's Fig. 6 contact as fitted by fit-fig6 --
 a = 6.6323 mm, b = a/2, N = 10000 lbf, mu = 0.6, G = 82 GPa, nu = 0.3,
 Kalker strip grid 40 x 40): --a --b --N --mu --G --nu --L1 --L2 --L3
 --pressure --rolling-direction --grid --nx --ny --box-scale --units
-(as for solve).
+--model --tolerance --max-iterations (as for solve; --model exact without
+--grid: the uniform grid 48 x 48 over 1.2 times the semi-axes).
 output: --out DIR (required), --force, --format text|json (the table of
 cases on stdout), --no-plots. DIR gets cases.csv (one row per panel: figure,
 panel, xi_x, xi_y, spin, Fx, Fy, Mz on the wheel, adhesion_fraction, n_slip,
@@ -295,6 +327,67 @@ files in DIR:
 example (two states of one rail section, 500 axle passages each):
   printf 's0,a,b,N,xi_x,spin,passes\n0.002,6e-3,4e-3,60e3,1e-3,0.5,500\n-0.003,6e-3,4e-3,60e3,-1e-3,2.0,500\n' > s.csv
   creepwork wear --in s.csv --out wear-out
+)";
+}
+
+const char* usage_compare()
+{
+    return R"(usage: creepwork compare [options]
+
+One contact solved twice on the same uniform grid: by FASTSIM (Kalker's
+simplified theory, parabolic pressure, the paper's) and by Kalker's exact
+half-space theory (README "Exact model"). Prints both models' totals and how
+far FASTSIM's frictional-work distribution is from the exact one -- what the
+paper could not check. Distances compare shapes: each map is scaled to unit
+total first.
+  map_l1_consistent  sum |f/F - e/E| over the elements of the two energy-
+                     consistent work maps (0 same shape, 2 disjoint)
+  map_l1_paper       the same for FASTSIM's eq. 36 map against the exact
+                     frictional power density D_I (CONTACT's FRIC_POWER)
+  profile_l1         the same for the lateral work profiles (per strip)
+  exact_power_in_fastsim_adhesion
+                     share of the exact dissipation sum D_I that falls in
+                     elements FASTSIM calls adhesion (its work there is 0)
+  fastsim_work_in_exact_adhesion
+                     share of FASTSIM's work in elements the exact theory
+                     calls adhesion
+  state_differences  elements in contact for both whose states differ
+  centroid_fastsim, centroid_exact
+                     work centroid along the rolling direction in units of
+                     a (+1 leading edge, -1 trailing edge)
+
+contact (defaults: the paper's Fig. 6 contact as fit-fig6 reproduces it --
+a = 6.6323 mm, b = a/2, N = 10000 lbf, mu = 0.6, G = 82 GPa, nu = 0.3,
+xi_x = 0.0019, xi_y = 0.0011, spin = 0.144 1/ft): --a --b --N --mu --G --nu
+--xi-x --xi-y --spin --rolling-direction --spin-offset (both models; default
+each model's own, 0 FASTSIM and 1/6 exact) --tolerance --max-iterations
+(exact) --units si|paper (as for solve). The exact model needs G and nu, and
+the comparison is of the two theories as Kalker states them: --L1..--L3,
+--pressure and --flexibility-blending are errors.
+grid: uniform (--grid strips is an error), default 48 x 48 over 1.2 times the
+semi-axes (40 elements across the ellipse, two guard cells on each side,
+CONTACT's layout); --nx --ny (at most 256) --box-scale.
+output: --format text|json (the summary on stdout; forces on the wheel),
+--out DIR, --force, --no-plots, --plot-axes normalised|physical
+(--plot-sign changes nothing here: states and work have no sign).
+
+files with --out:
+  summary.json   units, fastsim{}, exact{} (solve's JSON keys each), metrics{}
+  totals.csv     one row per model: model,Fx_wheel_N,Fy_wheel_N,Mz_wheel_N_m,
+                 W_macro_J_per_m,W_micro_paper_J_per_m,K,adhesion_fraction,
+                 n_contact,n_adhesion,n_slip,p_max_Pa
+  fastsim/fields.csv fastsim/profile.csv exact/fields.csv exact/profile.csv
+                 each model's fields and lateral profile, as solve writes them
+                 (every metric can be recomputed from them)
+  compare.png    FASTSIM (left) beside exact (right): slip/adhesion maps,
+                 energy-consistent work per unit area on one colour scale
+                 (slip elements outlined), the lateral work profiles of both,
+                 and the work-share difference FASTSIM minus exact
+  slip_adhesion_fastsim.png slip_adhesion_exact.png work_fastsim.png
+  work_exact.png work_difference.png profile.png, gnuplot/ (the scripts)
+
+example (the paper's Fig. 6 contact):
+  creepwork compare --out fig6-compare
 )";
 }
 

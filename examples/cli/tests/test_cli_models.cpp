@@ -1,0 +1,536 @@
+/* Tests of the CLI's model switch and of creepwork compare, run as a user
+ * would run them:
+ *   - solve --model exact --format json gives the C ABI's numbers bit for bit
+ *     for the same inputs on the grid the CLI documents as the exact model's
+ *     default (uniform, 24 x 24, box 1.2), and the new JSON keys;
+ *   - invalid model inputs fail with status 2 and one stderr line naming the
+ *     option; the calibrated model's library error is shown cleanly;
+ *   - solve --model exact --out: adhesion at the leading edge, slip at the
+ *     trailing edge, work zero in adhesion, no exterior element drawn;
+ *   - compare: both models' totals equal the C ABI's, and every distribution
+ *     metric equals an independent computation from the fields and profiles
+ *     it writes; the Fig. 6 contact on CONTACT's 20-across layout holds the
+ *     numbers README "Exact model" quotes.
+ *
+ * usage: test_cli_models <creepwork binary> <scratch dir> [cmocka filter] */
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <fcntl.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <creepwork/creepwork.h>
+
+#include "json_reader.hpp"
+// Last: cmocka defines macros (fail, skip) that clash with the C++ library.
+#include "test_support.h"
+
+extern char** environ;
+
+namespace fs = std::filesystem;
+using cwtest::Json;
+
+namespace {
+
+std::string g_cli, g_scratch;
+
+struct Run {
+    int status = -1;
+    std::string out, err;
+};
+
+std::string slurp(const std::string& path)
+{
+    std::ifstream f(path);
+    std::stringstream s;
+    s << f.rdbuf();
+    return s.str();
+}
+
+Run run_cli(const std::vector<std::string>& args)
+{
+    const std::string out = g_scratch + "/stdout.txt", err = g_scratch + "/stderr.txt";
+    posix_spawn_file_actions_t fa;
+    posix_spawn_file_actions_init(&fa);
+    posix_spawn_file_actions_addopen(&fa, 1, out.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    posix_spawn_file_actions_addopen(&fa, 2, err.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    std::vector<char*> argv;
+    argv.push_back(const_cast<char*>(g_cli.c_str()));
+    for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+    argv.push_back(nullptr);
+    pid_t pid = 0;
+    Run r;
+    if (posix_spawn(&pid, g_cli.c_str(), &fa, nullptr, argv.data(), environ) == 0) {
+        int status = 0;
+        waitpid(pid, &status, 0);
+        r.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    }
+    posix_spawn_file_actions_destroy(&fa);
+    r.out = slurp(out);
+    r.err = slurp(err);
+    return r;
+}
+
+Run run_ok(const std::vector<std::string>& args)
+{
+    Run r = run_cli(args);
+    if (r.status != 0) print_error("exit %d, stderr: %s\n", r.status, r.err.c_str());
+    assert_int_equal(r.status, 0);
+    return r;
+}
+
+Json parse_or_fail(const std::string& text)
+{
+    try {
+        return cwtest::parse_json(text);
+    } catch (const std::exception& e) {
+        print_error("%s\n--- output ---\n%s\n", e.what(), text.c_str());
+        fail();
+    }
+    return Json();
+}
+
+std::vector<std::string> with(std::vector<std::string> a, const std::vector<std::string>& b)
+{
+    a.insert(a.end(), b.begin(), b.end());
+    return a;
+}
+
+// CSV rows as numbers (the header dropped); the CLI writes exact doubles.
+std::vector<std::vector<double>> read_numbers(const std::string& path)
+{
+    std::vector<std::vector<double>> rows;
+    std::ifstream f(path);
+    std::string line;
+    std::getline(f, line);
+    while (std::getline(f, line)) {
+        std::vector<double> row;
+        std::stringstream s(line);
+        std::string cell;
+        while (std::getline(s, cell, ',')) row.push_back(std::strtod(cell.c_str(), nullptr));
+        rows.push_back(row);
+    }
+    return rows;
+}
+
+// One contact given as CLI options and as the structs the library sees.
+struct Contact {
+    std::vector<std::string> args;
+    cw_params params;
+    cw_grid grid;
+};
+
+Contact spin_contact(int model)
+{
+    Contact c;
+    cw_params_init(&c.params);
+    cw_grid_init(&c.grid);
+    c.args = {"--a",  "0.007",  "--b",    "0.004",  "--N",    "70000", "--mu",
+              "0.5",  "--G",    "8e10",   "--nu",   "0.3",    "--xi-x", "0.0012",
+              "--xi-y", "0.0008", "--spin", "1.0"};
+    c.params.a = 0.007, c.params.b = 0.004, c.params.normal_force = 70000, c.params.mu = 0.5;
+    c.params.G = 8e10, c.params.nu = 0.3;
+    c.params.xi_x = 0.0012, c.params.xi_y = 0.0008, c.params.phi = 1.0;
+    c.params.model = model;
+    return c;
+}
+
+cw_result library_solve(const cw_grid& g, const cw_params& p)
+{
+    cw_solver* s = nullptr;
+    assert_int_equal(cw_solver_create(&g, &s, nullptr, 0), CW_OK);
+    cw_result r;
+    cw_result_init(&r);
+    assert_int_equal(cw_solver_solve(s, &p, CW_SOLVE_FULL, &r), CW_OK);
+    cw_solver_destroy(s);
+    return r;
+}
+
+void same(double cli, double lib, const char* what)
+{
+    if (cli != lib) print_error("%s: CLI %.17g, library %.17g\n", what, cli, lib);
+    assert_true(cli == lib);
+}
+
+/* ------------------------------------------------------------ solve --model */
+
+void solve_exact_matches_library(void**)
+{
+    Contact c = spin_contact(CW_MODEL_EXACT);
+    // The documented default grid of --model exact: CONTACT's layout.
+    c.grid.kind = CW_GRID_UNIFORM, c.grid.nx = 24, c.grid.ny = 24, c.grid.box_scale = 1.2;
+    const Json j = parse_or_fail(run_ok(with({"solve", "--model", "exact", "--format", "json"},
+                                             c.args)).out);
+    const cw_result lib = library_solve(c.grid, c.params);
+    const struct {
+        const char* key;
+        double value;
+    } expect[] = {{"Fx", lib.Fx},           {"Fy", lib.Fy},
+                  {"Mz", lib.Mz},           {"W_macro", lib.W_macro},
+                  {"W_micro_paper", lib.W_micro_paper}, {"K", lib.K},
+                  {"W_consistent", lib.W_consistent}, {"p_max", lib.p_max},
+                  {"approach", lib.approach}, {"residual", lib.residual},
+                  {"adhesion_fraction", lib.adhesion_fraction}};
+    for (const auto& e : expect) same(j.num(e.key), e.value, e.key);
+    assert_int_equal(static_cast<int>(j.num("iterations")), lib.iterations);
+    assert_true(lib.iterations > 0);
+    assert_int_equal(static_cast<int>(j.num("n_slip")), lib.n_slip);
+    assert_string_equal(j.at("model").string.c_str(), "exact");
+    const Json& in = j.at("input");
+    assert_string_equal(in.at("grid").string.c_str(), "uniform");
+    assert_int_equal(static_cast<int>(in.num("nx")), 24);
+    assert_int_equal(static_cast<int>(in.num("ny")), 24);
+    assert_true(in.num("box_scale") == 1.2);
+    assert_string_equal(in.at("model").string.c_str(), "exact");
+    // The exact pressure is near Hertz's peak 3N/(2 pi a b) (Kalker 1990;
+    // CONTACT: 1226.8 of 1229.3 N/mm^2 at 20 across, README "Exact model").
+    const double p0 = 1.5 * 70000 / (M_PI * 0.007 * 0.004);
+    assert_close(j.num("p_max"), p0, 0.01, 0.0);
+    // Given options reach the library: tolerance, iteration bound, grid.
+    Contact t = c;
+    t.grid.nx = 16, t.grid.ny = 14, t.grid.box_scale = 1.1;
+    t.params.tolerance = 1e-11, t.params.max_iterations = 40;
+    const Json k = parse_or_fail(run_ok(with({"solve", "--model", "exact", "--format", "json",
+                                              "--tolerance", "1e-11", "--max-iterations", "40",
+                                              "--grid", "uniform", "--nx", "16", "--ny", "14",
+                                              "--box-scale", "1.1"},
+                                             t.args)).out);
+    const cw_result tight = library_solve(t.grid, t.params);
+    same(k.num("Fx"), tight.Fx, "Fx (tolerance 1e-11)");
+    same(k.num("Mz"), tight.Mz, "Mz (tolerance 1e-11)");
+    assert_true(k.num("residual") <= 1e-11);
+    // FASTSIM says so, and has no iterations.
+    const Json f = parse_or_fail(run_ok(with({"solve", "--model", "fastsim", "--format", "json"},
+                                             c.args)).out);
+    assert_string_equal(f.at("model").string.c_str(), "fastsim");
+    assert_int_equal(static_cast<int>(f.num("iterations")), 0);
+    assert_true(f.num("residual") == 0.0);
+    assert_string_equal(f.at("input").at("grid").string.c_str(), "strips");
+    // Text output names the model and the normal problem's results.
+    const Run text = run_ok(with({"solve", "--model", "exact"}, c.args));
+    assert_non_null(std::strstr(text.out.c_str(), "model      exact"));
+    assert_non_null(std::strstr(text.out.c_str(), "p_max = "));
+}
+
+struct Bad {
+    std::vector<std::string> args;
+    const char* names; // must appear in the one stderr line
+};
+
+void model_bad_inputs_fail_cleanly(void**)
+{
+    const std::vector<std::string> contact = {"--a", "0.007", "--b", "0.005", "--N", "90000"};
+    const std::vector<Bad> bad = {
+        {{"solve", "--model", "foo"}, "--model"},
+        {{"solve", "--model", "exct"}, "did you mean exact?"},
+        {{"solve", "--model", "exact", "--grid", "strips"}, "--grid"},
+        {{"solve", "--model", "exact", "--L1", "1e-11", "--L2", "1e-11", "--L3", "1e-11"}, "--L1"},
+        {{"solve", "--model", "exact", "--pressure", "elliptic"}, "--pressure"},
+        {{"solve", "--model", "exact", "--flexibility-blending"}, "--flexibility-blending"},
+        {{"solve", "--tolerance", "1e-6"}, "--tolerance"},
+        {{"solve", "--max-iterations", "9"}, "--max-iterations"},
+        {{"solve", "--model", "exact", "--tolerance", "0"}, "--tolerance"},
+        {{"solve", "--model", "exact", "--tolerance", "1"}, "--tolerance"},
+        {{"solve", "--model", "exact", "--max-iterations", "0"}, "--max-iterations"},
+        {{"solve", "--model", "exact", "--nx", "300"}, "--nx"},
+        {{"solve", "--model", "exact", "--ny", "257"}, "--ny"},
+        // The library's own error, relayed with the options it concerns.
+        {{"solve", "--model", "calibrated"}, "--model"},
+        {{"solve", "--model", "exact", "--max-iterations", "1", "--tolerance", "1e-13", "--xi-x",
+          "1e-3", "--spin", "1"},
+         "--max-iterations"},
+        {{"sweep", "--model", "exact", "--grid", "strips", "--out", g_scratch + "/never"},
+         "--grid"},
+        {{"compare", "--grid", "strips"}, "--grid"},
+        {{"compare", "--L1", "1e-11", "--L2", "1e-11", "--L3", "1e-11"}, "--L1"},
+        {{"compare", "--pressure", "elliptic"}, "--pressure"},
+        {{"compare", "--nx", "300"}, "--nx"},
+        {{"compare", "--model", "exact"}, "--model"},
+        {{"compar"}, "did you mean compare?"},
+    };
+    for (const Bad& b : bad) {
+        std::vector<std::string> args = b.args;
+        if (args[0] == "solve") args.insert(args.end(), contact.begin(), contact.end());
+        const Run r = run_cli(args);
+        std::string shown;
+        for (const std::string& a : args) shown += a + " ";
+        if (r.status != 2 || std::count(r.err.begin(), r.err.end(), '\n') != 1 ||
+            r.err.find(b.names) == std::string::npos || !r.out.empty())
+            print_error("creepwork %s-> exit %d, stderr '%s'\n", shown.c_str(), r.status,
+                        r.err.c_str());
+        assert_int_equal(r.status, 2);
+        assert_int_equal(std::count(r.err.begin(), r.err.end(), '\n'), 1);
+        assert_true(r.err.rfind("creepwork: ", 0) == 0);
+        assert_true(r.err.find(b.names) != std::string::npos);
+        assert_true(r.out.empty());
+    }
+    assert_false(fs::exists(g_scratch + "/never"));
+    // The calibrated model's message is the library's, not a crash or a guess.
+    const Run cal = run_cli(with({"solve", "--model", "calibrated"}, contact));
+    assert_non_null(std::strstr(cal.err.c_str(), "library rejected the input"));
+    assert_non_null(std::strstr(cal.err.c_str(), "calibrated"));
+}
+
+// Adhesion where material enters (leading edge), slip where it leaves,
+// frictional work only in slip: the exact model's fields as written, and
+// the pictures drawn from them without the exterior elements.
+void solve_exact_writes_fields_and_pictures(void**)
+{
+    const std::string dir = g_scratch + "/exact_out";
+    const Contact c = spin_contact(CW_MODEL_EXACT);
+    std::vector<std::string> args = with({"solve", "--model", "exact", "--out", dir}, c.args);
+    const bool pictures = !std::getenv("CW_TEST_NO_GNUPLOT");
+    if (!pictures) args.push_back("--no-plots");
+    run_ok(args);
+    const auto rows = read_numbers(dir + "/fields.csv"); // i,j,x,y,area,state,...,work_consistent
+    assert_int_equal(rows.size(), 24u * 24u);
+    const int nx = 24, ny = 24;
+    int slip = 0, adhesion = 0;
+    for (const auto& r : rows) {
+        const int state = static_cast<int>(r[5]);
+        if (state == CW_STATE_EXTERIOR) assert_true(r[4] == 0.0); // area
+        if (state == CW_STATE_ADHESION) {
+            ++adhesion;
+            assert_true(r[13] == 0.0); // energy-consistent work
+            assert_true(r[12] == 0.0); // frictional power
+        }
+        if (state == CW_STATE_SLIP) {
+            ++slip;
+            assert_true(r[13] >= 0.0);
+        }
+    }
+    assert_true(slip > 0 && adhesion > 0);
+    // Middle rows: the trailing contact element slips, and the leading part
+    // adheres -- the element at x = +a/2 (the very edge elements, with almost
+    // no pressure, may slip).
+    for (int j = ny / 2 - 2; j < ny / 2 + 2; ++j) {
+        int trail = -1, half = -1;
+        for (int i = 0; i < nx; ++i) {
+            const auto& r = rows[i + j * nx];
+            if (r[5] != CW_STATE_EXTERIOR && trail < 0) trail = i;
+            if (half < 0 && r[2] >= 0.5 * 0.007) half = i;
+        }
+        assert_int_equal(static_cast<int>(rows[trail + j * nx][5]), CW_STATE_SLIP);
+        assert_int_equal(static_cast<int>(rows[half + j * nx][5]), CW_STATE_ADHESION);
+    }
+    if (!pictures) return;
+    for (const char* png : {"patch.png", "slip_adhesion.png", "work.png", "profile.png"}) {
+        const std::string data = slurp(dir + "/" + png);
+        assert_true(data.size() > 5000 && data.compare(0, 4, "\x89PNG") == 0);
+    }
+    // Only contact elements are drawn: one patch.dat row per contact
+    // element, and the area field is 0 outside the contact (creepwork.h).
+    std::ifstream dat(dir + "/gnuplot/patch.dat");
+    std::string line;
+    int drawn = 0;
+    while (std::getline(dat, line))
+        if (!line.empty() && line[0] != '#') ++drawn;
+    assert_int_equal(drawn, slip + adhesion);
+}
+
+// sweep --model exact: the exact model on the uniform grid the CLI documents
+// (--nx/--ny given, so 12 x 12 over 1.2 a x 1.2 b), from almost full
+// adhesion to full slip; a panel's forces equal a cold C ABI solve to the
+// solver tolerance (the sweep warm-starts one handle: README "Exact model",
+// warm and cold agree to ~1e-10 of |F|).
+void sweep_exact_model(void**)
+{
+    const std::string dir = g_scratch + "/sweep";
+    const Json j = parse_or_fail(run_ok({"sweep", "--model", "exact", "--nx", "12", "--ny", "12",
+                                         "--format", "json", "--no-plots", "--out", dir})
+                                     .out);
+    const auto& cases = j.at("cases").array;
+    assert_true(cases.size() >= 24);
+    assert_true(cases.front().num("adhesion_fraction") > 0.9);
+    double last_fig2 = 1;
+    const Json* probe = nullptr;
+    for (const Json& c : cases)
+        if (c.at("figure").string == "fig2") {
+            last_fig2 = c.num("adhesion_fraction");
+            if (!probe && last_fig2 < 0.6) probe = &c; // a partial-slip panel
+        }
+    assert_true(last_fig2 == 0.0);
+    assert_non_null(probe);
+    // sweep's default contact (its --help): the paper's Fig. 6 contact.
+    cw_params p;
+    cw_params_init(&p);
+    p.model = CW_MODEL_EXACT;
+    p.a = 6.6323e-3, p.b = p.a / 2, p.normal_force = 10000 * 4.4482216152605, p.mu = 0.6;
+    p.G = 82e9, p.nu = 0.3;
+    p.xi_x = probe->num("xi_x"), p.xi_y = probe->num("xi_y"), p.phi = probe->num("spin");
+    cw_grid g;
+    cw_grid_init(&g);
+    g.kind = CW_GRID_UNIFORM, g.nx = 12, g.ny = 12, g.box_scale = 1.2;
+    const cw_result r = library_solve(g, p);
+    const double F = std::hypot(r.Fx, r.Fy);
+    assert_close(probe->num("Fx"), r.Fx, 0.0, 1e-7 * F);
+    assert_close(probe->num("Fy"), r.Fy, 0.0, 1e-7 * F);
+    assert_close(probe->num("adhesion_fraction"), r.adhesion_fraction, 0.0, 1e-12);
+}
+
+/* ---------------------------------------------------------------- compare */
+
+double sum(const std::vector<double>& v)
+{
+    double s = 0;
+    for (double x : v) s += x;
+    return s;
+}
+
+double l1(const std::vector<double>& a, const std::vector<double>& b)
+{
+    const double ta = sum(a), tb = sum(b);
+    double d = 0;
+    for (size_t k = 0; k < a.size(); ++k) d += std::fabs(a[k] / ta - b[k] / tb);
+    return d;
+}
+
+void compare_metrics_from_its_files(void**)
+{
+    const std::string dir = g_scratch + "/compare";
+    const Contact c = spin_contact(CW_MODEL_EXACT);
+    const Json j = parse_or_fail(run_ok(with({"compare", "--nx", "20", "--ny", "18",
+                                              "--box-scale", "1.15", "--format", "json",
+                                              "--no-plots", "--out", dir},
+                                             c.args)).out);
+    // Totals: the C ABI's for each model on the same grid.
+    cw_grid g;
+    cw_grid_init(&g);
+    g.kind = CW_GRID_UNIFORM, g.nx = 20, g.ny = 18, g.box_scale = 1.15;
+    cw_params pf = c.params;
+    pf.model = CW_MODEL_FASTSIM;
+    const cw_result rf = library_solve(g, pf), re = library_solve(g, c.params);
+    const Json &jf = j.at("fastsim"), &je = j.at("exact");
+    for (const auto& [key, lf, le] :
+         {std::tuple<const char*, double, double>{"Fx", rf.Fx, re.Fx}, {"Fy", rf.Fy, re.Fy},
+          {"Mz", rf.Mz, re.Mz}, {"W_macro", rf.W_macro, re.W_macro}, {"K", rf.K, re.K}}) {
+        same(jf.num(key), lf, key);
+        same(je.num(key), le, key);
+    }
+    assert_string_equal(jf.at("model").string.c_str(), "fastsim");
+    assert_string_equal(je.at("model").string.c_str(), "exact");
+    // totals.csv: the same numbers, one row per model.
+    const auto totals = read_numbers(dir + "/totals.csv");
+    assert_int_equal(totals.size(), 2);
+    same(totals[0][1], rf.Fx, "totals.csv FASTSIM Fx");
+    same(totals[1][3], re.Mz, "totals.csv exact Mz");
+    same(totals[1][6], re.K, "totals.csv exact K");
+    // Every metric again from the fields and profiles compare wrote.
+    const auto ff = read_numbers(dir + "/fastsim/fields.csv");
+    const auto fe = read_numbers(dir + "/exact/fields.csv");
+    const auto pfp = read_numbers(dir + "/fastsim/profile.csv");
+    const auto pep = read_numbers(dir + "/exact/profile.csv");
+    assert_int_equal(ff.size(), 360);
+    assert_int_equal(fe.size(), 360);
+    std::vector<double> wf, we, df, de, prof_f, prof_e;
+    double in_f_adh = 0, f_in_e_adh = 0, mf = 0, me = 0;
+    int differ = 0;
+    for (size_t k = 0; k < ff.size(); ++k) {
+        // One grid: the same element centres (each model computes its own, to rounding).
+        assert_close(ff[k][2], fe[k][2], 1e-14, 0.0);
+        assert_close(ff[k][3], fe[k][3], 1e-14, 0.0);
+        wf.push_back(ff[k][13]), we.push_back(fe[k][13]);
+        df.push_back(ff[k][12]), de.push_back(fe[k][12]);
+        const int sf = static_cast<int>(ff[k][5]), se = static_cast<int>(fe[k][5]);
+        if (sf == CW_STATE_ADHESION) in_f_adh += fe[k][12];
+        if (se == CW_STATE_ADHESION) f_in_e_adh += ff[k][13];
+        if (sf != 0 && se != 0 && sf != se) ++differ;
+        mf += ff[k][13] * ff[k][2];
+        me += fe[k][13] * fe[k][2];
+    }
+    for (const auto& r : pfp) prof_f.push_back(r[2]);
+    for (const auto& r : pep) prof_e.push_back(r[2]);
+    const Json& m = j.at("metrics");
+    const double a = je.num("a");
+    const struct {
+        const char* key;
+        double independent;
+    } expect[] = {{"map_l1_consistent", l1(wf, we)},
+                  {"map_l1_paper", l1(df, de)},
+                  {"profile_l1", l1(prof_f, prof_e)},
+                  {"exact_power_in_fastsim_adhesion", in_f_adh / sum(de)},
+                  {"fastsim_work_in_exact_adhesion", f_in_e_adh / sum(wf)},
+                  {"centroid_fastsim", mf / (sum(wf) * a)},
+                  {"centroid_exact", me / (sum(we) * a)}};
+    for (const auto& e : expect) {
+        if (!(std::fabs(m.num(e.key) - e.independent) <= 1e-12 * (1 + std::fabs(e.independent))))
+            print_error("%s: CLI %.17g, independent %.17g\n", e.key, m.num(e.key), e.independent);
+        assert_close(m.num(e.key), e.independent, 1e-12, 1e-12);
+    }
+    assert_int_equal(static_cast<int>(m.num("state_differences")), differ);
+    // The energy-consistent maps sum to each model's W_macro (README "Work").
+    assert_close(sum(wf), rf.W_macro, 1e-12, 0.0);
+    assert_close(sum(we), re.W_macro, 1e-12, 0.0);
+    // Metrics in range: L1 of unit-total maps lies in [0, 2], shares in [0, 1].
+    for (const char* key : {"map_l1_consistent", "map_l1_paper", "profile_l1"})
+        assert_true(m.num(key) > 0.0 && m.num(key) < 2.0);
+    assert_true(m.num("exact_power_in_fastsim_adhesion") >= 0.0 &&
+                m.num("exact_power_in_fastsim_adhesion") <= 1.0);
+}
+
+// README "Exact model" quotes compare's numbers for the paper's Fig. 6
+// contact on CONTACT's 20-across layout (24 x 24, box 1.2): held to the
+// digits printed there.
+constexpr double README_L1_CONSISTENT = 0.456, README_L1_PAPER = 0.534,
+                 README_L1_PROFILE = 0.136, README_EXACT_IN_FASTSIM_ADHESION = 13.7, // %
+    README_MZ_RATIO = 0.851; // FASTSIM's Mz / exact Mz
+
+void compare_fig6_readme_numbers(void**)
+{
+    std::vector<std::string> args = {"compare", "--nx", "24", "--ny", "24", "--format", "json"};
+    const std::string dir = g_scratch + "/fig6";
+    if (!std::getenv("CW_TEST_NO_GNUPLOT")) args.insert(args.end(), {"--out", dir});
+    const Json j = parse_or_fail(run_ok(args).out);
+    const Json& m = j.at("metrics");
+    const auto held = [](double ours, double readme, double half_unit) {
+        if (!(std::fabs(ours - readme) <= half_unit * (1 + 1e-9)))
+            print_error("%.17g is not %g to the printed digits\n", ours, readme);
+        assert_close(ours, readme, 0.0, half_unit * (1 + 1e-9));
+    };
+    held(m.num("map_l1_consistent"), README_L1_CONSISTENT, 5e-3);
+    held(m.num("map_l1_paper"), README_L1_PAPER, 5e-3);
+    held(m.num("profile_l1"), README_L1_PROFILE, 5e-3);
+    held(100 * m.num("exact_power_in_fastsim_adhesion"), README_EXACT_IN_FASTSIM_ADHESION, 0.05);
+    held(j.at("fastsim").num("Mz") / j.at("exact").num("Mz"), README_MZ_RATIO, 5e-3);
+    if (std::getenv("CW_TEST_NO_GNUPLOT")) return;
+    for (const char* png : {"compare.png", "slip_adhesion_fastsim.png", "slip_adhesion_exact.png",
+                            "work_fastsim.png", "work_exact.png", "work_difference.png",
+                            "profile.png"}) {
+        const std::string data = slurp(dir + "/" + png);
+        if (!(data.size() > 5000 && data.compare(0, 4, "\x89PNG") == 0))
+            print_error("%s is not a PNG picture\n", png);
+        assert_true(data.size() > 5000 && data.compare(0, 4, "\x89PNG") == 0);
+    }
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+    if (argc < 3) {
+        std::fprintf(stderr, "usage: test_cli_models <creepwork> <scratch dir> [filter]\n");
+        return 2;
+    }
+    g_cli = argv[1];
+    g_scratch = argv[2];
+    fs::remove_all(g_scratch);
+    fs::create_directories(g_scratch);
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(solve_exact_matches_library),
+        cmocka_unit_test(model_bad_inputs_fail_cleanly),
+        cmocka_unit_test(solve_exact_writes_fields_and_pictures),
+        cmocka_unit_test(sweep_exact_model),
+        cmocka_unit_test(compare_metrics_from_its_files),
+        cmocka_unit_test(compare_fig6_readme_numbers),
+    };
+    return cw_run_tests(tests, argc > 3 ? argv[3] : nullptr);
+}
