@@ -462,9 +462,10 @@ CW_API int cw_fastsim_normalised(double ux, double uy, double fx, double fy, int
  * CW_MODEL_EXACT: influence tables, FFT plans and spectra, Krylov basis and
  * every workspace of the grid and of its coarser levels (README "Exact
  * model": about 2 kB per element); without prepare the first exact solve
- * makes them. Idempotent. Errors: CW_ERR_NULL_POINTER,
+ * makes them. CW_MODEL_CALIBRATED: its FASTSIM march workspace (every
+ * grid). Idempotent. Errors: CW_ERR_NULL_POINTER,
  * CW_ERR_UNKNOWN_OPTION (model), CW_ERR_INVALID_INPUT (CW_MODEL_EXACT on
- * CW_GRID_KALKER_STRIPS; CW_MODEL_CALIBRATED, not in this build),
+ * CW_GRID_KALKER_STRIPS),
  * CW_ERR_GRID_OUT_OF_RANGE (exact: nx or ny > CW_MAX_EXACT_CELLS),
  * CW_ERR_OUT_OF_MEMORY. */
 CW_API int cw_solver_prepare(cw_solver* solver, int model);

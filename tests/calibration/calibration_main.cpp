@@ -1,0 +1,156 @@
+// creepwork_calibration: measures the simplified models against the exact
+// model over the training or evaluation set (issue 10's error measures), and
+// fits the calibrated model's table on the training set.
+//
+//   creepwork_calibration evaluate training|evaluation [cache-dir]
+//       median and worst of each error for FASTSIM (parabolic, elliptic),
+//       the calibrated model and the exact model at 20 x 20 and 40 x 40
+//   creepwork_calibration cases training|evaluation [cache-dir]
+//       the same errors per case (CSV)
+//   creepwork_calibration fit [cache-dir]
+//       the calibrated table from the training set (calibration_fit.cpp)
+//
+// The exact references are cached in cache-dir (default: the current
+// directory) as exact_<set>.txt; the first run of a set solves them
+// (~1 minute per 100 cases on one core).
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "calibration_cases.hpp"
+#include "calibration_fit.hpp"
+#include "calibration_metrics.hpp"
+#include "calibration_reference.hpp"
+#include "solver.hpp"
+
+namespace cw = creepwork;
+using namespace cwcal;
+
+namespace {
+
+struct Stats {
+    std::vector<double> v;
+    void add(double x) { v.push_back(x); }
+    double median() const
+    {
+        if (v.empty()) return NAN;
+        std::vector<double> s = v;
+        std::sort(s.begin(), s.end());
+        return s.size() % 2 ? s[s.size() / 2] : 0.5 * (s[s.size() / 2 - 1] + s[s.size() / 2]);
+    }
+    double worst() const { return v.empty() ? NAN : *std::max_element(v.begin(), v.end()); }
+};
+
+struct Summary {
+    Stats fx, fy, mz_rel, mz_abs, w, map, profile;
+    void add(const CaseErrors& e)
+    {
+        fx.add(e.dFx);
+        fy.add(e.dFy);
+        (e.mz_relative ? mz_rel : mz_abs).add(e.dMz);
+        if (e.has_spin) w.add(e.dW);
+        if (e.partial_slip) {
+            map.add(e.map_L1);
+            profile.add(e.profile_L1);
+        }
+    }
+};
+
+void print_row(const char* name, const Summary& s)
+{
+    std::printf("| %-20s | %5.2f / %5.2f | %5.2f / %5.2f | %5.1f / %5.1f | %5.2f | %5.1f / %5.1f "
+                "| %4.2f / %4.2f | %5.3f / %5.3f |\n",
+                name, s.fx.median(), s.fx.worst(), s.fy.median(), s.fy.worst(),
+                s.mz_rel.median(), s.mz_rel.worst(), s.mz_abs.worst(), s.w.median(),
+                s.w.worst(), s.map.median(), s.map.worst(), s.profile.median(),
+                s.profile.worst());
+}
+
+CaseSet parse_set(const char* s)
+{
+    if (!std::strcmp(s, "training")) return CaseSet::training;
+    if (!std::strcmp(s, "evaluation")) return CaseSet::evaluation;
+    std::fprintf(stderr, "set must be training or evaluation, not '%s'\n", s);
+    std::exit(2);
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+    if (argc < 2) {
+        std::fprintf(stderr, "usage: creepwork_calibration evaluate|cases <set> [cache-dir] | "
+                             "fit [cache-dir]\n");
+        return 2;
+    }
+    const std::string cmd = argv[1];
+    if (cmd == "fit") {
+        const std::string dir = argc > 2 ? argv[2] : ".";
+        const std::vector<CalibrationCase> cases = make_cases(CaseSet::training);
+        const std::vector<CaseReference> refs =
+            exact_references(cases, dir + "/exact_training.txt");
+        return fit_table(cases, refs);
+    }
+    if (argc < 3 || (cmd != "evaluate" && cmd != "cases")) {
+        std::fprintf(stderr, "unknown command '%s'\n", cmd.c_str());
+        return 2;
+    }
+    const CaseSet set = parse_set(argv[2]);
+    const std::string dir = argc > 3 ? argv[3] : ".";
+    const std::vector<CalibrationCase> cases = make_cases(set);
+    const std::vector<CaseReference> refs =
+        exact_references(cases, dir + "/exact_" + set_name(set) + ".txt");
+
+    struct Model {
+        const char* name;
+        std::function<ModelResult(const CalibrationCase&, const CaseReference&)> run;
+    };
+    cw::GridSpec g;
+    g.kind = cw::GridKind::uniform;
+    g.nx = g.ny = kMapN;
+    cw::Solver solver(g);
+    auto simplified = [&](cw::ModelKind kind, cw::PressureKind p) {
+        return [&solver, kind, p](const CalibrationCase& c, const CaseReference&) {
+            cw::ContactInput in = c.input;
+            in.model = kind;
+            in.pressure = p;
+            return solved_result(solver, in);
+        };
+    };
+    const Model models[] = {
+        {"FASTSIM parabolic", simplified(cw::ModelKind::fastsim, cw::PressureKind::parabolic)},
+        {"FASTSIM elliptic", simplified(cw::ModelKind::fastsim, cw::PressureKind::elliptic)},
+        {"calibrated", simplified(cw::ModelKind::calibrated, cw::PressureKind::parabolic)},
+        {"exact 20 x 20", [](const CalibrationCase&, const CaseReference& r) { return r.exact20; }},
+        {"exact 40 x 40", [](const CalibrationCase&, const CaseReference& r) { return r.exact40; }},
+    };
+    if (cmd == "cases")
+        std::printf("model,case,a_over_b,nu,level,combo,dFx,dFy,mz_relative,dMz,dW,partial_slip,"
+                    "map_L1,profile_L1\n");
+    else
+        std::printf("%s set, %zu cases; reference: exact model %d x %d\n\n"
+                    "| model | dFx %%muN med / max | dFy %%muN med / max | dMz %% med / max | "
+                    "dMz small, max %%muNc | dW %% med / max (spin) | map L1 med / max | "
+                    "profile L1 med / max |\n|---|---|---|---|---|---|---|---|\n",
+                    set_name(set), cases.size(), kRefN, kRefN);
+    for (const Model& m : models) {
+        Summary s;
+        for (size_t k = 0; k < cases.size(); ++k) {
+            const ModelResult r = m.run(cases[k], refs[k]);
+            const CaseErrors e = case_errors(cases[k].input, r, refs[k].ref, refs[k].exact40,
+                                             kMapN, kMapN);
+            s.add(e);
+            if (cmd == "cases")
+                std::printf("%s,%s,%g,%g,%g,%d,%.4g,%.4g,%d,%.4g,%.4g,%d,%.4g,%.4g\n", m.name,
+                            cases[k].id.c_str(), cases[k].a_over_b, cases[k].nu, cases[k].level,
+                            cases[k].combo, e.dFx, e.dFy, int(e.mz_relative), e.dMz,
+                            e.has_spin ? e.dW : NAN, int(e.partial_slip), e.map_L1, e.profile_L1);
+        }
+        if (cmd == "evaluate") print_row(m.name, s);
+    }
+    return 0;
+}
