@@ -1,5 +1,13 @@
 // The fitted table of the calibrated model: its parameters as functions of
-// a/b, nu and the creepages normalised by their saturation values.
+// a/b and of the creepages normalised by their saturation values.
+//
+// Form: every factor of CalibrationParams is k = 1 + alpha g(s), with
+// s = |(s_long, s_lat, s_spin)| the normalised creepage and g(s) = s/(1+s),
+// so the linear limit (s -> 0) is untouched (Kalker's C11, C22, C23 and,
+// through L_M, C33), and alpha from the table, linear in ln(a/b) between
+// its nodes and constant beyond them. The pressure and bound are parabolic.
+// The alphas were fitted by creepwork_calibration fit (tests/calibration/)
+// on the training set only; calibration_table_data.cpp is its output.
 #pragma once
 
 #include "calibrated/calibration_params.hpp"
@@ -14,6 +22,19 @@ struct NormalisedCreepage {
     double s_long = 0, s_lat = 0, s_spin = 0;
 };
 NormalisedCreepage normalised_creepage(const ContactInput& in);
+
+// One node of the table.
+struct CalibrationNode {
+    double a_over_b;
+    double alpha_long, alpha_lat, alpha_spin_x, alpha_spin_y;
+};
+constexpr int kCalibrationNodes = 5;
+extern const CalibrationNode kCalibrationTable[kCalibrationNodes]; // ascending a/b
+
+// The parameters of one node's alphas at normalised creepage s.
+CalibrationParams calibration_params(const CalibrationNode& alphas, const NormalisedCreepage& s);
+// The table's alphas at a/b (interpolated).
+CalibrationNode calibration_node(double a_over_b);
 
 // The parameters for one contact (a valid input, flexibilities from G, nu).
 CalibrationParams calibration_for(const ContactInput& in);

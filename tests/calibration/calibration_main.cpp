@@ -14,8 +14,10 @@
 // directory) as exact_<set>.txt; the first run of a set solves them
 // (~1 minute per 100 cases on one core).
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <functional>
 #include <string>
@@ -78,6 +80,49 @@ CaseSet parse_set(const char* s)
     std::exit(2);
 }
 
+// ns per contact element of a full-mode solve (totals and work sums, no
+// field copied), best of many short samples as creepwork_bench does, for the
+// bench's partial-slip contact on its Kalker strip grid and on the uniform
+// map grid.
+int time_models()
+{
+    cw::ContactInput in;
+    in.a = 7.169984332e-3;
+    in.b = 5.416941278e-3;
+    in.normal_force = 100e3;
+    in.mu = 0.3;
+    in.G = 82e9;
+    in.nu = 0.28;
+    in.xi_x = 6e-4;
+    in.xi_y = 3e-4;
+    in.phi = 0.2;
+    std::printf("| grid | FASTSIM parabolic ns/element | calibrated ns/element | ratio |\n"
+                "|---|---|---|---|\n");
+    for (int kind = 0; kind < 2; ++kind)
+        for (int n : {20, 40}) {
+            cw::GridSpec g;
+            g.kind = kind ? cw::GridKind::uniform : cw::GridKind::kalker_strips;
+            g.nx = g.ny = n;
+            cw::Solver s(g);
+            double best[2] = {1e30, 1e30};
+            for (int sample = 0; sample < 200; ++sample)
+                for (int m = 0; m < 2; ++m) {
+                    in.model = m ? cw::ModelKind::calibrated : cw::ModelKind::fastsim;
+                    const int reps = 50;
+                    const auto t0 = std::chrono::steady_clock::now();
+                    for (int r = 0; r < reps; ++r) s.solve(in, cw::SolveMode::full);
+                    const double ns = std::chrono::duration<double, std::nano>(
+                                          std::chrono::steady_clock::now() - t0)
+                                          .count() /
+                                      (reps * double(s.grid().n_contact()));
+                    best[m] = std::min(best[m], ns);
+                }
+            std::printf("| %s %d x %d | %.1f | %.1f | %.2f |\n", kind ? "uniform" : "Kalker strips",
+                        n, n, best[0], best[1], best[1] / best[0]);
+        }
+    return 0;
+}
+
 } // namespace
 
 int main(int argc, char** argv)
@@ -88,6 +133,7 @@ int main(int argc, char** argv)
         return 2;
     }
     const std::string cmd = argv[1];
+    if (cmd == "time") return time_models();
     if (cmd == "fit") {
         const std::string dir = argc > 2 ? argv[2] : ".";
         const std::vector<CalibrationCase> cases = make_cases(CaseSet::training);
@@ -121,13 +167,30 @@ int main(int argc, char** argv)
             return solved_result(solver, in);
         };
     };
-    const Model models[] = {
+    // CW_CALIBRATION_TRY="pressure k_long k_lat k_spin_x k_spin_y" (pressure
+    // 0 parabolic, 1 elliptic): one more row with these parameters for every
+    // case, to explore before fitting.
+    cw::CalibrationParams trial;
+    const char* try_env = std::getenv("CW_CALIBRATION_TRY");
+    if (try_env) {
+        int p = 1;
+        std::sscanf(try_env, "%d %lf %lf %lf %lf", &p, &trial.k_long, &trial.k_lat,
+                    &trial.k_spin_x, &trial.k_spin_y);
+        trial.pressure = p ? cw::PressureKind::elliptic : cw::PressureKind::parabolic;
+    }
+    std::vector<Model> models = {
         {"FASTSIM parabolic", simplified(cw::ModelKind::fastsim, cw::PressureKind::parabolic)},
         {"FASTSIM elliptic", simplified(cw::ModelKind::fastsim, cw::PressureKind::elliptic)},
         {"calibrated", simplified(cw::ModelKind::calibrated, cw::PressureKind::parabolic)},
         {"exact 20 x 20", [](const CalibrationCase&, const CaseReference& r) { return r.exact20; }},
         {"exact 40 x 40", [](const CalibrationCase&, const CaseReference& r) { return r.exact40; }},
     };
+    if (try_env)
+        models.push_back({"trial", [&](const CalibrationCase& c, const CaseReference&) {
+                              cw::ContactInput in = c.input;
+                              in.model = cw::ModelKind::calibrated;
+                              return calibrated_result(solver.calibrated_model(), in, trial);
+                          }});
     if (cmd == "cases")
         std::printf("model,case,a_over_b,nu,level,combo,dFx,dFy,mz_relative,dMz,dW,partial_slip,"
                     "map_L1,profile_L1\n");
