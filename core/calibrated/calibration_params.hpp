@@ -17,6 +17,16 @@ struct CalibrationParams {
     double k_lat = 1.0;    // uy: a eta / (L2 mu p0)
     double k_spin_x = 1.0; // cx: a b phi / (L_M mu p0)
     double k_spin_y = 1.0; // cy: a^2 phi / (L3 mu p0)
+    // Exponent h of the flexibility equalisation: each component's
+    // flexibility L_i (L1, L2, L_M, L3) is replaced by L_i^(1-h) Lc^h, Lc
+    // the creepage-weighted geometric mean, so that towards full sliding the
+    // tractions oppose the rigid slip, not the rigid slip over flexibility
+    // (FASTSIM's direction error when L1 != L2). 0: off.
+    double equalise = 0.0;
+    // Weight of the x-slip term that gives Kalker's C23 moment for the
+    // lateral creepage (calibrated_model.cpp): 1 in the linear limit, faded
+    // towards saturation by the table; 0 leaves FASTSIM's Mz(eta).
+    double lateral_moment = 1.0;
 };
 
 } // namespace creepwork

@@ -31,6 +31,9 @@ CalibrationParams calibration_params(const CalibrationNode& n, const NormalisedC
     p.k_lat = 1.0 + n.alpha_lat * g;
     p.k_spin_x = 1.0 + n.alpha_spin_x * g;
     p.k_spin_y = 1.0 + n.alpha_spin_y * g;
+    const double fs = std::isfinite(size) ? n.fade * size : 1e300;
+    p.lateral_moment = fs < 1e150 ? 1.0 / (1.0 + fs * fs) : 0.0;
+    p.equalise = n.equalise * g;
     return p;
 }
 
@@ -48,6 +51,8 @@ CalibrationNode calibration_node(double a_over_b)
     n.alpha_lat = (1 - w) * t[k].alpha_lat + w * t[k + 1].alpha_lat;
     n.alpha_spin_x = (1 - w) * t[k].alpha_spin_x + w * t[k + 1].alpha_spin_x;
     n.alpha_spin_y = (1 - w) * t[k].alpha_spin_y + w * t[k + 1].alpha_spin_y;
+    n.fade = (1 - w) * t[k].fade + w * t[k + 1].fade;
+    n.equalise = (1 - w) * t[k].equalise + w * t[k + 1].equalise;
     return n;
 }
 

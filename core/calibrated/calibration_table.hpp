@@ -4,7 +4,9 @@
 // Form: every factor of CalibrationParams is k = 1 + alpha g(s), with
 // s = |(s_long, s_lat, s_spin)| the normalised creepage and g(s) = s/(1+s),
 // so the linear limit (s -> 0) is untouched (Kalker's C11, C22, C23 and,
-// through L_M, C33), and alpha from the table, linear in ln(a/b) between
+// through L_M and the lateral-moment term, both moments); the lateral-moment
+// term fades as 1/(1 + (fade s)^2) and the flexibilities are equalised with
+// h = equalise g(s); alpha, fade and equalise from the table, linear in ln(a/b) between
 // its nodes and constant beyond them. The pressure and bound are parabolic.
 // The alphas were fitted by creepwork_calibration fit (tests/calibration/)
 // on the training set only; calibration_table_data.cpp is its output.
@@ -27,6 +29,8 @@ NormalisedCreepage normalised_creepage(const ContactInput& in);
 struct CalibrationNode {
     double a_over_b;
     double alpha_long, alpha_lat, alpha_spin_x, alpha_spin_y;
+    double fade;     // lateral-moment weight 1/(1 + (fade s)^2)
+    double equalise; // flexibility equalisation h = equalise g(s)
 };
 constexpr int kCalibrationNodes = 5;
 extern const CalibrationNode kCalibrationTable[kCalibrationNodes]; // ascending a/b

@@ -6,12 +6,12 @@
 namespace creepwork {
 
 const CalibrationNode kCalibrationTable[kCalibrationNodes] = {
-    // node a/b, alpha_long, alpha_lat, alpha_spin_x, alpha_spin_y (weighted cost before -> after)
-    {0.2, -0.2125, -0.1250, -0.1750, -0.1250}, // 72 cases, cost 513.4 -> 497.0
-    {0.5, -0.0500, -0.0500, -0.1125, -0.0375}, // 139 cases, cost 1039.4 -> 1028.7
-    {1, 0.1000, 0.2000, -0.1125, 0.0625},      // 153 cases, cost 906.4 -> 852.4
-    {2, 0.0000, 0.1000, -0.2375, 0.0000},      // 126 cases, cost 815.0 -> 749.8
-    {5, -0.0500, 0.0875, -0.5500, -0.0750},    // 66 cases, cost 464.5 -> 345.4
+    // node a/b, alpha_long, alpha_lat, alpha_spin_x, alpha_spin_y, fade, equalise (weighted cost before -> after)
+    {0.2, 0.1500, 0.3250, 0.1375, 0.2625, 0.6250, 0.3875}, // 72 cases, cost 303.4 -> 266.2
+    {0.5, 0.1875, 0.2000, 0.1750, 0.2375, 0.7500, 0.6125}, // 139 cases, cost 617.2 -> 559.2
+    {1, 0.1750, 0.1500, 0.1625, 0.2000, 0.9875, 0.6375}, // 153 cases, cost 588.3 -> 507.1
+    {2, 0.0750, 0.1250, 0.0750, 0.1375, 1.3875, 0.6000}, // 126 cases, cost 644.6 -> 445.6
+    {5, -0.0125, 0.0750, -0.3125, 0.1000, 1.8625, 0.6125}, // 66 cases, cost 360.6 -> 251.1
 };
 
 } // namespace creepwork
