@@ -78,6 +78,7 @@ SolveTotals CalibratedModel::solve_with(const ContactInput& input, SolveMode mod
     s.kin.uy *= params.k_lat;
     s.kin.cx *= params.k_spin_x;
     s.kin.cy *= params.k_spin_y;
+    s.kin.edge_gain = params.edge_gain;
     SolveTotals t = march_.solve_setup(s, in, mode);
     t.model = ModelKind::calibrated;
     return t;

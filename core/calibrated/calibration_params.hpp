@@ -27,6 +27,10 @@ struct CalibrationParams {
     // lateral creepage (calibrated_model.cpp): 1 in the linear limit, faded
     // towards saturation by the table; 0 leaves FASTSIM's Mz(eta).
     double lateral_moment = 1.0;
+    // Lateral modulation of the rigid slip (NormalisedKinematics::edge_gain):
+    // exact theory's slip zone reaches further in near y = +-b than
+    // FASTSIM's. 0: none.
+    double edge_gain = 0.0;
 };
 
 } // namespace creepwork

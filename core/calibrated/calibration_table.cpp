@@ -1,5 +1,6 @@
 #include "calibrated/calibration_table.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "contact/kalker_coefficients.hpp"
@@ -33,7 +34,8 @@ CalibrationParams calibration_params(const CalibrationNode& n, const NormalisedC
     p.k_spin_y = 1.0 + n.alpha_spin_y * g;
     const double fs = std::isfinite(size) ? n.fade * size : 1e300;
     p.lateral_moment = fs < 1e150 ? 1.0 / (1.0 + fs * fs) : 0.0;
-    p.equalise = n.equalise * g;
+    p.equalise = std::min(1.0, n.equalise * g);
+    p.edge_gain = n.edge * g;
     return p;
 }
 
@@ -53,6 +55,7 @@ CalibrationNode calibration_node(double a_over_b)
     n.alpha_spin_y = (1 - w) * t[k].alpha_spin_y + w * t[k + 1].alpha_spin_y;
     n.fade = (1 - w) * t[k].fade + w * t[k + 1].fade;
     n.equalise = (1 - w) * t[k].equalise + w * t[k + 1].equalise;
+    n.edge = (1 - w) * t[k].edge + w * t[k + 1].edge;
     return n;
 }
 

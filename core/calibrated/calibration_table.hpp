@@ -6,7 +6,8 @@
 // so the linear limit (s -> 0) is untouched (Kalker's C11, C22, C23 and,
 // through L_M and the lateral-moment term, both moments); the lateral-moment
 // term fades as 1/(1 + (fade s)^2) and the flexibilities are equalised with
-// h = equalise g(s); alpha, fade and equalise from the table, linear in ln(a/b) between
+// h = equalise g(s), the rigid slip modulated across the strips with
+// edge_gain = edge g(s); alpha, fade, equalise and edge from the table, linear in ln(a/b) between
 // its nodes and constant beyond them. The pressure and bound are parabolic.
 // The alphas were fitted by creepwork_calibration fit (tests/calibration/)
 // on the training set only; calibration_table_data.cpp is its output.
@@ -31,6 +32,7 @@ struct CalibrationNode {
     double alpha_long, alpha_lat, alpha_spin_x, alpha_spin_y;
     double fade;     // lateral-moment weight 1/(1 + (fade s)^2)
     double equalise; // flexibility equalisation h = equalise g(s)
+    double edge;     // lateral modulation edge_gain = edge g(s)
 };
 constexpr int kCalibrationNodes = 5;
 extern const CalibrationNode kCalibrationTable[kCalibrationNodes]; // ascending a/b

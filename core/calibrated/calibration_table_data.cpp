@@ -6,12 +6,13 @@
 namespace creepwork {
 
 const CalibrationNode kCalibrationTable[kCalibrationNodes] = {
-    // node a/b, alpha_long, alpha_lat, alpha_spin_x, alpha_spin_y, fade, equalise (weighted cost before -> after)
-    {0.2, 0.1500, 0.3250, 0.1375, 0.2625, 0.6250, 0.3875}, // 72 cases, cost 303.4 -> 266.2
-    {0.5, 0.1875, 0.2000, 0.1750, 0.2375, 0.7500, 0.6125}, // 139 cases, cost 617.2 -> 559.2
-    {1, 0.1750, 0.1500, 0.1625, 0.2000, 0.9875, 0.6375}, // 153 cases, cost 588.3 -> 507.1
-    {2, 0.0750, 0.1250, 0.0750, 0.1375, 1.3875, 0.6000}, // 126 cases, cost 644.6 -> 445.6
-    {5, -0.0125, 0.0750, -0.3125, 0.1000, 1.8625, 0.6125}, // 66 cases, cost 360.6 -> 251.1
+    // node a/b, alpha_long, alpha_lat, alpha_spin_x, alpha_spin_y, fade, equalise, edge
+    // (weighted training cost with all alphas, equalise and edge 0 and fade 1 -> fitted)
+    {0.2, 0.3000, 0.5000, 0.2000, 0.2250, 0.6375, 0.3875, 1.8875}, // 72 cases, 303.4 -> 220.8
+    {0.5, 0.3250, 0.3375, 0.1875, 0.2625, 0.7875, 0.6500, 1.8375}, // 139 cases, 617.2 -> 443.0
+    {1, 0.3000, 0.2875, 0.0875, 0.2375, 1.0500, 0.5750, 1.6125},   // 153 cases, 588.3 -> 406.1
+    {2, 0.1375, 0.2250, 0.0000, 0.1625, 1.3875, 0.6000, 0.9750},   // 126 cases, 644.6 -> 399.0
+    {5, 0.0000, 0.1125, -0.3875, 0.1250, 1.9000, 0.6625, 0.5000},  // 66 cases, 360.6 -> 243.4
 };
 
 } // namespace creepwork

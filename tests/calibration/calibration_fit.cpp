@@ -65,7 +65,7 @@ int fit_table(const std::vector<CalibrationCase>& cases, const std::vector<CaseR
     // Each node is fitted on the training cases near it: weight
     // exp(-(ln(ab/ab_node))^2 / (2 w^2)), w = 0.45 (about a factor 1.6).
     const double nodes[cw::kCalibrationNodes] = {0.2, 0.5, 1.0, 2.0, 5.0};
-    std::printf("    // node a/b, alpha_long, alpha_lat, alpha_spin_x, alpha_spin_y, fade, equalise "
+    std::printf("    // node a/b, alpha_long, alpha_lat, alpha_spin_x, alpha_spin_y, fade, equalise, edge "
                 "(weighted cost before -> after)\n");
     for (double ab : nodes) {
         std::vector<size_t> near;
@@ -77,9 +77,9 @@ int fit_table(const std::vector<CalibrationCase>& cases, const std::vector<CaseR
             near.push_back(k);
             weight.push_back(w);
         }
-        constexpr int kParams = 6;
+        constexpr int kParams = 7;
         auto cost = [&](const double alpha[kParams]) {
-            const cw::CalibrationNode n{ab, alpha[0], alpha[1], alpha[2], alpha[3], alpha[4], alpha[5]};
+            const cw::CalibrationNode n{ab, alpha[0], alpha[1], alpha[2], alpha[3], alpha[4], alpha[5], alpha[6]};
             double total = 0;
             for (size_t q = 0; q < near.size(); ++q) {
                 const CalibrationCase& c = cases[near[q]];
@@ -95,7 +95,7 @@ int fit_table(const std::vector<CalibrationCase>& cases, const std::vector<CaseR
         };
         // Coordinate search: each alpha up or down by the step while that
         // lowers the cost, the step halved when nothing does.
-        double alpha[kParams] = {0, 0, 0, 0, 1, 0};
+        double alpha[kParams] = {0, 0, 0, 0, 1, 0, 0};
         const double start = cost(alpha);
         double best = start;
         for (double step = 0.4; step >= 0.01; step *= 0.5) {
@@ -108,8 +108,8 @@ int fit_table(const std::vector<CalibrationCase>& cases, const std::vector<CaseR
                         std::copy(alpha, alpha + kParams, trial);
                         trial[q] += dir * step;
                         // Factors stay positive; fade and equalise in [0, ..], h <= 1.
-                        if (q < 4 ? trial[q] <= -0.9 : trial[q] < 0.0) continue;
-                        if (q == 5 && trial[q] > 1.0) continue;
+                        if (q < 4 ? trial[q] <= -0.9 : q < 6 ? trial[q] < 0.0 : trial[q] <= -0.9) continue;
+                        if (q == 5 && trial[q] > 4.0) continue;
                         const double c = cost(trial);
                         if (c < best) {
                             best = c;
@@ -119,8 +119,8 @@ int fit_table(const std::vector<CalibrationCase>& cases, const std::vector<CaseR
                     }
             }
         }
-        std::printf("    {%g, %.4f, %.4f, %.4f, %.4f, %.4f, %.4f}, // %zu cases, cost %.1f -> %.1f\n",
-                    ab, alpha[0], alpha[1], alpha[2], alpha[3], alpha[4], alpha[5], near.size(),
+        std::printf("    {%g, %.4f, %.4f, %.4f, %.4f, %.4f, %.4f, %.4f}, // %zu cases, cost %.1f -> %.1f\n",
+                    ab, alpha[0], alpha[1], alpha[2], alpha[3], alpha[4], alpha[5], alpha[6], near.size(),
                     start, best);
         std::fflush(stdout);
     }

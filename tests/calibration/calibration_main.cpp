@@ -167,15 +167,16 @@ int main(int argc, char** argv)
             return solved_result(solver, in);
         };
     };
-    // CW_CALIBRATION_TRY="pressure k_long k_lat k_spin_x k_spin_y equalise lateral" (pressure
+    // CW_CALIBRATION_TRY="pressure k_long k_lat k_spin_x k_spin_y equalise lateral edge_gain" (pressure
     // 0 parabolic, 1 elliptic): one more row with these parameters for every
     // case, to explore before fitting.
     cw::CalibrationParams trial;
     const char* try_env = std::getenv("CW_CALIBRATION_TRY");
     if (try_env) {
         int p = 1;
-        std::sscanf(try_env, "%d %lf %lf %lf %lf %lf %lf", &p, &trial.k_long, &trial.k_lat,
-                    &trial.k_spin_x, &trial.k_spin_y, &trial.equalise, &trial.lateral_moment);
+        std::sscanf(try_env, "%d %lf %lf %lf %lf %lf %lf %lf", &p, &trial.k_long, &trial.k_lat,
+                    &trial.k_spin_x, &trial.k_spin_y, &trial.equalise, &trial.lateral_moment,
+                    &trial.edge_gain);
         trial.pressure = p ? cw::PressureKind::elliptic : cw::PressureKind::parabolic;
     }
     std::vector<Model> models = {
