@@ -197,7 +197,10 @@ typedef struct cw_params {
     double phi;            /* spin creepage [1/m] */
     int rolling_direction; /* +1 (default): leading edge at x = +a; -1: at x = -a */
     /* ---- appended in 1.1 ---- */
-    int model;             /* CW_MODEL_FASTSIM (default), CW_MODEL_EXACT, CW_MODEL_CALIBRATED */
+    int model;             /* CW_MODEL_FASTSIM (default), CW_MODEL_EXACT, CW_MODEL_CALIBRATED
+                              (README "Calibrated model": needs CW_FLEX_FROM_MATERIAL; uses
+                              its own fitted pressure law and flexibilities, so pressure and
+                              flexibility_blending are not used) */
     double tolerance;      /* exact model: relative tolerance of the tangential solve;
                               0 (default) = 1e-8; else in [1e-13, 1) (README "Exact model") */
     int max_iterations;    /* exact model: bound on Newton steps per grid; 0 (default) =
