@@ -46,6 +46,10 @@ namespace {
 double case_cost(const CaseErrors& e)
 {
     double c = (e.dFx / 3.0) * (e.dFx / 3.0) + (e.dFy / 3.0) * (e.dFy / 3.0);
+    // Beyond the bound, a force error costs ten times more: the bound holds
+    // in every case, the others are medians.
+    for (double f : {e.dFx, e.dFy})
+        if (f > 3.0) c += 10.0 * (f / 3.0 - 1.0) * (f / 3.0 - 1.0);
     const double mz = e.mz_relative ? e.dMz / 8.0 : e.dMz / 0.5;
     c += mz * mz;
     if (e.has_spin) c += (e.dW / 5.0) * (e.dW / 5.0);

@@ -39,7 +39,8 @@ CaseErrors case_errors(const creepwork::ContactInput& in, const ModelResult& m,
     e.has_spin = in.phi != 0.0;
     e.dW = 100.0 * std::fabs(m.W - ref.W) / std::fabs(ref.W);
     e.partial_slip = exact40.adhesion_fraction >= 0.05 && exact40.adhesion_fraction <= 0.95;
-    if (e.partial_slip && !m.work_map.empty()) {
+    e.has_map = !m.work_map.empty();
+    if (e.partial_slip && e.has_map) {
         e.map_L1 = unit_l1(m.work_map, exact40.work_map);
         e.profile_L1 = profile_l1(m.work_map, exact40.work_map, nx, ny);
     }

@@ -23,6 +23,7 @@ struct CaseErrors {
     bool has_spin = false;
     double dW = 0;                // % of W_ref (spin cases)
     bool partial_slip = false;    // exact 40 x 40: 5 % .. 95 % of the patch adheres
+    bool has_map = false;         // the model gave a map on the map grid
     double map_L1 = 0, profile_L1 = 0;
 };
 

