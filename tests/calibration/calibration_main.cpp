@@ -14,6 +14,11 @@
 //   creepwork_calibration spin-sweep
 //       Mz and W against normalised spin, a/b = 1 and 2, every model (CSV)
 //
+// Exploration before a fit (rows for evaluate and cases):
+//   CW_CALIBRATION_TRY="pressure k_long k_lat k_spin_x k_spin_y equalise lateral edge_gain"
+//       adds a row "trial" with these parameters in every case;
+//   CW_TRY_OFFSET=s  solves the calibrated row with spin_offset s.
+//
 // The exact references are cached in cache-dir (default: the current
 // directory) as exact_<set>.txt; the first run of a set solves them
 // (~1 minute per 100 cases on one core).
@@ -222,6 +227,8 @@ int main(int argc, char** argv)
             cw::ContactInput in = c.input;
             in.model = kind;
             in.pressure = p;
+            if (kind == cw::ModelKind::calibrated && std::getenv("CW_TRY_OFFSET"))
+                in.spin_offset = std::atof(std::getenv("CW_TRY_OFFSET"));
             return solved_result(solver, in);
         };
     };
