@@ -13,13 +13,12 @@ const SolveTotals& Solver::solve(const ContactInput& input, SolveMode mode)
 {
     solved_ = false;
     mode_ = mode;
-    if (input.model == ModelKind::calibrated)
-        throw Error(ErrorKind::invalid_input,
-                    "model = calibrated is not available in this build");
     SolveTotals t;
     if (input.model == ModelKind::exact) {
         prepare(ModelKind::exact);
         t = exact_->solve(input, mode);
+    } else if (input.model == ModelKind::calibrated) {
+        t = calibrated_model().solve(input, mode);
     } else {
         t = fastsim_.solve(input, mode);
     }
@@ -41,20 +40,31 @@ void Solver::prepare(ModelKind model)
     if (model == ModelKind::exact) {
         if (!exact_) exact_ = std::make_unique<ExactModel>(fastsim_.grid().spec());
     } else if (model == ModelKind::calibrated) {
-        throw Error(ErrorKind::invalid_input,
-                    "model = calibrated is not available in this build");
+        if (!calibrated_) calibrated_ = std::make_unique<CalibratedModel>(fastsim_.grid().spec());
     } else if (model != ModelKind::fastsim) {
         throw Error(ErrorKind::invalid_input,
                     "model = " + std::to_string(static_cast<int>(model)) + " is unknown");
     }
 }
 
+CalibratedModel& Solver::calibrated_model()
+{
+    prepare(ModelKind::calibrated);
+    return *calibrated_;
+}
+
 bool Solver::exact_last() const { return last_model_ == ModelKind::exact && exact_; }
+bool Solver::calibrated_last() const
+{
+    return last_model_ == ModelKind::calibrated && calibrated_;
+}
 
 void Solver::copy_field(Field f, double* out) const
 {
     if (exact_last())
         exact_->copy_field(f, out);
+    else if (calibrated_last())
+        calibrated_->copy_field(f, out);
     else
         fastsim_.copy_field(f, out);
 }
@@ -63,6 +73,8 @@ void Solver::add_field(Field f, double scale, double* out) const
 {
     if (exact_last())
         exact_->add_field(f, scale, out);
+    else if (calibrated_last())
+        calibrated_->add_field(f, scale, out);
     else
         fastsim_.add_field(f, scale, out);
 }
@@ -71,6 +83,8 @@ void Solver::copy_state(int* out) const
 {
     if (exact_last())
         exact_->copy_state(out);
+    else if (calibrated_last())
+        calibrated_->copy_state(out);
     else
         fastsim_.copy_state(out);
 }
@@ -79,6 +93,8 @@ void Solver::copy_profile(double* y, double* work, double* parabola) const
 {
     if (exact_last())
         exact_->copy_profile(totals_.W_consistent, y, work, parabola);
+    else if (calibrated_last())
+        calibrated_->copy_profile(totals_.W_consistent, y, work, parabola);
     else
         fastsim_.copy_profile(totals_.W_consistent, y, work, parabola);
 }

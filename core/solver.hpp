@@ -8,6 +8,7 @@
 #include <memory>
 
 #include "contact/fields.hpp"
+#include "calibrated/calibrated_model.hpp"
 #include "contact/params.hpp"
 #include "exact/exact_model.hpp"
 #include "fastsim/fastsim_model.hpp"
@@ -30,6 +31,9 @@ public:
     void prepare(ModelKind model);
     // The exact model, if made (diagnostics of its last solve: info()).
     const ExactModel* exact_model() const { return exact_.get(); }
+    // The calibrated model, made on first use (the fitting tool solves it
+    // with its own parameters).
+    CalibratedModel& calibrated_model();
 
     const ContactGrid& grid() const { return fastsim_.grid(); }
     const SolveTotals& totals() const { return totals_; }
@@ -59,7 +63,9 @@ public:
 private:
     FastsimModel fastsim_;
     std::unique_ptr<ExactModel> exact_;
+    std::unique_ptr<CalibratedModel> calibrated_;
     bool exact_last() const; // the last solve (and so the fields) is the exact model's
+    bool calibrated_last() const;
     ModelKind last_model_ = ModelKind::fastsim;
     SolveTotals totals_;
     SolveMode mode_ = SolveMode::full;

@@ -27,7 +27,13 @@ void FastsimModel::set_kernel_isa(KernelIsa isa)
 
 SolveTotals FastsimModel::solve(const ContactInput& input, SolveMode mode)
 {
-    setup_ = make_model_setup(input);
+    return solve_setup(make_model_setup(input), input, mode);
+}
+
+SolveTotals FastsimModel::solve_setup(const ModelSetup& setup, const ContactInput& input,
+                                      SolveMode mode)
+{
+    setup_ = setup;
     if (mode == SolveMode::full)
         march_with_work(geometry_, grid_, setup_, march_, work_, isa_); // work accounted
     else

@@ -24,6 +24,12 @@ public:
 
     // Throws Error(invalid_input) naming a bad input.
     SolveTotals solve(const ContactInput& input, SolveMode mode);
+    // The same march for a setup made (and possibly adjusted) by the caller:
+    // models built on FASTSIM's march (calibrated/) change the kinematics
+    // and the traction bound and keep everything else. setup comes from
+    // make_model_setup(input); solve(input, mode) is
+    // solve_setup(make_model_setup(input), input, mode).
+    SolveTotals solve_setup(const ModelSetup& setup, const ContactInput& input, SolveMode mode);
 
     const ContactGrid& grid() const { return grid_; }
     KernelIsa kernel_isa() const { return isa_; }

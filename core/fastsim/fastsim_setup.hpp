@@ -20,6 +20,12 @@ struct NormalisedKinematics {
     // leading edge: uy + cy (X + spin_offset dX), dX the strip's element
     // length (x/a). 0 is Kalker's FASTSIM.
     double spin_offset = 0;
+    // The calibrated model's lateral modulation of the rigid slip over
+    // flexibility: both components of strip Y multiplied by
+    // (1 + edge_gain Y^2) / (1 + edge_gain / 5), which leaves the linear
+    // forces unchanged and moves slip towards the lateral edges. 0 (plain
+    // FASTSIM): not applied, so its results are unchanged to the bit.
+    double edge_gain = 0;
 };
 
 struct ModelSetup {

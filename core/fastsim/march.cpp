@@ -212,6 +212,12 @@ void set_rigid_slip(const ContactGrid& grid, const NormalisedKinematics& kin, Ma
         // to the bit (uy + cy * 0 could flip the sign of a zero).
         s.wy[j] = kin.spin_offset > 0.0 ? kin.uy + kin.cy * (kin.spin_offset * grid.x_length()[j])
                                         : kin.uy;
+        if (kin.edge_gain != 0.0) {
+            const double Y = grid.y_centre()[j];
+            const double m = (1.0 + kin.edge_gain * Y * Y) / (1.0 + kin.edge_gain / 5.0);
+            s.wx[j] *= m;
+            s.wy[j] *= m;
+        }
     }
 }
 

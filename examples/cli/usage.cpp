@@ -60,8 +60,9 @@ model:
                     1.2 times the semi-axes (20 elements across the ellipse,
                     two guard cells on each side); --nx, --ny, --box-scale
                     override (at most 256 per direction); --grid strips is an
-                    error. calibrated: passed to the library, which says
-                    whether this build has it.
+                    error. calibrated: the simplified theory calibrated to
+                    the exact one (README "Calibrated model"): needs G and nu,
+                    its own parabolic pressure.
   --tolerance T     exact model: relative residual at which the tangential
                     solve stops, in [1e-13, 1) (default 1e-8)
   --max-iterations N

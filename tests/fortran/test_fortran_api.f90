@@ -161,6 +161,19 @@ contains
       call check_same(r2%Fx, r%Fx, 'get_result Fx')
       call check_same(r2%W_micro_paper, r%W_micro_paper, 'get_result W_micro_paper')
 
+      ! The calibrated model through the same params type (issue 10): it
+      ! solves, says so, and its map sums to W_macro; then back to FASTSIM.
+      p%model = CW_MODEL_CALIBRATED
+      call s%solve(p, CW_SOLVE_FULL, r2, stat=stat)
+      call check_int(stat, int(CW_OK), 'calibrated solve')
+      call check_int(r2%model, int(CW_MODEL_CALIBRATED), 'result names the calibrated model')
+      call check_true(r2%Fx < 0 .and. r2%Fy > 0, 'calibrated: force opposes the creepage')
+      call check_close(r2%W_consistent, r2%W_macro, 1e-10_c_double, 0.0_c_double, &
+                       'calibrated: W_consistent = W_macro')
+      p%model = CW_MODEL_FASTSIM
+      call s%solve(p, CW_SOLVE_FULL, r2, stat=stat)
+      call check_same(r2%Fx, r%Fx, 'FASTSIM after calibrated: same Fx')
+
       ! Layout: i along x (increasing), j along y (increasing).
       call s%get_field(CW_FIELD_X, x)
       call s%get_field(CW_FIELD_Y, y)

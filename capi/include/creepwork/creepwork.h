@@ -197,7 +197,10 @@ typedef struct cw_params {
     double phi;            /* spin creepage [1/m] */
     int rolling_direction; /* +1 (default): leading edge at x = +a; -1: at x = -a */
     /* ---- appended in 1.1 ---- */
-    int model;             /* CW_MODEL_FASTSIM (default), CW_MODEL_EXACT, CW_MODEL_CALIBRATED */
+    int model;             /* CW_MODEL_FASTSIM (default), CW_MODEL_EXACT, CW_MODEL_CALIBRATED
+                              (README "Calibrated model": needs CW_FLEX_FROM_MATERIAL; uses
+                              its own fitted pressure law and flexibilities, so pressure and
+                              flexibility_blending are not used) */
     double tolerance;      /* exact model: relative tolerance of the tangential solve;
                               0 (default) = 1e-8; else in [1e-13, 1) (README "Exact model") */
     int max_iterations;    /* exact model: bound on Newton steps per grid; 0 (default) =
@@ -462,9 +465,10 @@ CW_API int cw_fastsim_normalised(double ux, double uy, double fx, double fy, int
  * CW_MODEL_EXACT: influence tables, FFT plans and spectra, Krylov basis and
  * every workspace of the grid and of its coarser levels (README "Exact
  * model": about 2 kB per element); without prepare the first exact solve
- * makes them. Idempotent. Errors: CW_ERR_NULL_POINTER,
+ * makes them. CW_MODEL_CALIBRATED: its FASTSIM march workspace (every
+ * grid). Idempotent. Errors: CW_ERR_NULL_POINTER,
  * CW_ERR_UNKNOWN_OPTION (model), CW_ERR_INVALID_INPUT (CW_MODEL_EXACT on
- * CW_GRID_KALKER_STRIPS; CW_MODEL_CALIBRATED, not in this build),
+ * CW_GRID_KALKER_STRIPS),
  * CW_ERR_GRID_OUT_OF_RANGE (exact: nx or ny > CW_MAX_EXACT_CELLS),
  * CW_ERR_OUT_OF_MEMORY. */
 CW_API int cw_solver_prepare(cw_solver* solver, int model);

@@ -1,0 +1,67 @@
+#include "calibrated/calibration_table.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "contact/kalker_coefficients.hpp"
+
+namespace creepwork {
+
+NormalisedCreepage normalised_creepage(const ContactInput& in)
+{
+    NormalisedCreepage s;
+    const double muN = in.mu * in.normal_force;
+    if (!(muN > 0.0)) return s;
+    const CreepCoefficients C = kalker_coefficients(in.a / in.b, in.nu);
+    const double c2 = in.a * in.b, c = std::sqrt(c2);
+    // Divided step by step: extreme but valid inputs must not overflow.
+    s.s_long = in.xi_x * (in.G / muN) * c2 * C.C11;
+    s.s_lat = in.xi_y * (in.G / muN) * c2 * C.C22;
+    s.s_spin = in.phi * (in.G / muN) * c2 * c * C.C23;
+    return s;
+}
+
+CalibrationParams calibration_params(const CalibrationNode& n, const NormalisedCreepage& s)
+{
+    const double size = std::hypot(std::hypot(s.s_long, s.s_lat), s.s_spin);
+    // s/(1+s), 1 for huge or non-finite s (sliding: the factors' full effect).
+    const double g = std::isfinite(size) ? size / (1.0 + size) : 1.0;
+    CalibrationParams p;
+    p.pressure = PressureKind::parabolic;
+    p.k_long = 1.0 + n.alpha_long * g;
+    p.k_lat = 1.0 + n.alpha_lat * g;
+    p.k_spin_x = 1.0 + n.alpha_spin_x * g;
+    p.k_spin_y = 1.0 + n.alpha_spin_y * g;
+    const double fs = std::isfinite(size) ? n.fade * size : 1e300;
+    p.lateral_moment = fs < 1e150 ? 1.0 / (1.0 + fs * fs) : 0.0;
+    p.equalise = std::min(1.0, n.equalise * g);
+    p.edge_gain = n.edge * g;
+    return p;
+}
+
+CalibrationNode calibration_node(double a_over_b)
+{
+    const CalibrationNode* t = kCalibrationTable;
+    if (!(a_over_b > t[0].a_over_b)) return t[0];
+    if (!(a_over_b < t[kCalibrationNodes - 1].a_over_b)) return t[kCalibrationNodes - 1];
+    int k = 0;
+    while (a_over_b > t[k + 1].a_over_b) ++k;
+    const double w = std::log(a_over_b / t[k].a_over_b) / std::log(t[k + 1].a_over_b / t[k].a_over_b);
+    CalibrationNode n;
+    n.a_over_b = a_over_b;
+    n.alpha_long = (1 - w) * t[k].alpha_long + w * t[k + 1].alpha_long;
+    n.alpha_lat = (1 - w) * t[k].alpha_lat + w * t[k + 1].alpha_lat;
+    n.alpha_spin_x = (1 - w) * t[k].alpha_spin_x + w * t[k + 1].alpha_spin_x;
+    n.alpha_spin_y = (1 - w) * t[k].alpha_spin_y + w * t[k + 1].alpha_spin_y;
+    n.fade = (1 - w) * t[k].fade + w * t[k + 1].fade;
+    n.equalise = (1 - w) * t[k].equalise + w * t[k + 1].equalise;
+    n.edge = (1 - w) * t[k].edge + w * t[k + 1].edge;
+    return n;
+}
+
+CalibrationParams calibration_for(const ContactInput& in)
+{
+    return calibration_params(calibration_node(in.a / in.b), normalised_creepage(in));
+}
+
+} // namespace creepwork

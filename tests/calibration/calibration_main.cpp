@@ -1,0 +1,291 @@
+// creepwork_calibration: measures the simplified models against the exact
+// model over the training or evaluation set (issue 10's error measures), and
+// fits the calibrated model's table on the training set.
+//
+//   creepwork_calibration evaluate training|evaluation [cache-dir]
+//       median and worst of each error for FASTSIM (parabolic, elliptic),
+//       the calibrated model and the exact model at 20 x 20 and 40 x 40
+//   creepwork_calibration cases training|evaluation [cache-dir]
+//       the same errors per case (CSV)
+//   creepwork_calibration fit [cache-dir]
+//       the calibrated table from the training set (calibration_fit.cpp)
+//   creepwork_calibration time
+//       ns per element, FASTSIM and calibrated, full mode
+//   creepwork_calibration spin-sweep
+//       Mz and W against normalised spin, a/b = 1 and 2, every model (CSV)
+//
+// Exploration before a fit (rows for evaluate and cases):
+//   CW_CALIBRATION_TRY="pressure k_long k_lat k_spin_x k_spin_y equalise lateral edge_gain"
+//       adds a row "trial" with these parameters in every case;
+//   CW_TRY_OFFSET=s  solves the calibrated row with spin_offset s.
+//
+// The exact references are cached in cache-dir (default: the current
+// directory) as exact_<set>.txt; the first run of a set solves them
+// (~1 minute per 100 cases on one core).
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "calibration_cases.hpp"
+#include "calibration_fit.hpp"
+#include "calibration_metrics.hpp"
+#include "calibration_reference.hpp"
+#include "contact/kalker_coefficients.hpp"
+#include "solver.hpp"
+
+namespace cw = creepwork;
+using namespace cwcal;
+
+namespace {
+
+struct Stats {
+    std::vector<double> v;
+    void add(double x) { v.push_back(x); }
+    double median() const
+    {
+        if (v.empty()) return NAN;
+        std::vector<double> s = v;
+        std::sort(s.begin(), s.end());
+        return s.size() % 2 ? s[s.size() / 2] : 0.5 * (s[s.size() / 2 - 1] + s[s.size() / 2]);
+    }
+    double worst() const { return v.empty() ? NAN : *std::max_element(v.begin(), v.end()); }
+};
+
+struct Summary {
+    Stats fx, fy, mz_rel, mz_abs, w, map, profile;
+    // Force errors over the cases where the force is not zero by symmetry
+    // (Fx: xi_x given; Fy: xi_y or spin given); the worst is the same.
+    void add(const CaseErrors& e, const cw::ContactInput& in)
+    {
+        if (in.xi_x != 0.0) fx.add(e.dFx);
+        if (in.xi_y != 0.0 || in.phi != 0.0) fy.add(e.dFy);
+        (e.mz_relative ? mz_rel : mz_abs).add(e.dMz);
+        if (e.has_spin) w.add(e.dW);
+        if (e.partial_slip && e.has_map) {
+            map.add(e.map_L1);
+            profile.add(e.profile_L1);
+        }
+    }
+};
+
+void print_row(const char* name, const Summary& s)
+{
+    std::printf("| %-20s | %5.2f / %5.2f | %5.2f / %5.2f | %5.1f / %5.1f | %5.2f | %5.1f / %5.1f ",
+                name, s.fx.median(), s.fx.worst(), s.fy.median(), s.fy.worst(),
+                s.mz_rel.median(), s.mz_rel.worst(), s.mz_abs.worst(), s.w.median(),
+                s.w.worst());
+    if (s.map.v.empty())
+        std::printf("| - | - |\n");
+    else
+        std::printf("| %4.2f / %4.2f | %5.3f / %5.3f |\n", s.map.median(), s.map.worst(),
+                    s.profile.median(), s.profile.worst());
+}
+
+CaseSet parse_set(const char* s)
+{
+    if (!std::strcmp(s, "training")) return CaseSet::training;
+    if (!std::strcmp(s, "evaluation")) return CaseSet::evaluation;
+    std::fprintf(stderr, "set must be training or evaluation, not '%s'\n", s);
+    std::exit(2);
+}
+
+// ns per contact element of a full-mode solve (totals and work sums, no
+// field copied), best of many short samples as creepwork_bench does, for the
+// bench's partial-slip contact on its Kalker strip grid and on the uniform
+// map grid.
+int time_models()
+{
+    cw::ContactInput in;
+    in.a = 7.169984332e-3;
+    in.b = 5.416941278e-3;
+    in.normal_force = 100e3;
+    in.mu = 0.3;
+    in.G = 82e9;
+    in.nu = 0.28;
+    in.xi_x = 6e-4;
+    in.xi_y = 3e-4;
+    in.phi = 0.2;
+    std::printf("| grid | FASTSIM parabolic | FASTSIM elliptic | calibrated | calibrated / "
+                "parabolic |\n|---|---|---|---|---|\n");
+    for (int kind = 0; kind < 2; ++kind)
+        for (int n : {20, 40}) {
+            cw::GridSpec g;
+            g.kind = kind ? cw::GridKind::uniform : cw::GridKind::kalker_strips;
+            g.nx = g.ny = n;
+            cw::Solver s(g);
+            double best[3] = {1e30, 1e30, 1e30};
+            for (int sample = 0; sample < 200; ++sample)
+                for (int m = 0; m < 3; ++m) {
+                    in.model = m == 2 ? cw::ModelKind::calibrated : cw::ModelKind::fastsim;
+                    in.pressure = m == 1 ? cw::PressureKind::elliptic : cw::PressureKind::parabolic;
+                    const int reps = 50;
+                    const auto t0 = std::chrono::steady_clock::now();
+                    for (int r = 0; r < reps; ++r) s.solve(in, cw::SolveMode::full);
+                    const double ns = std::chrono::duration<double, std::nano>(
+                                          std::chrono::steady_clock::now() - t0)
+                                          .count() /
+                                      (reps * double(s.grid().n_contact()));
+                    best[m] = std::min(best[m], ns);
+                }
+            std::printf("| %s %d x %d | %.1f | %.1f | %.1f | %.2f |\n",
+                        kind ? "uniform" : "Kalker strips", n, n, best[0], best[1], best[2],
+                        best[2] / best[0]);
+        }
+    return 0;
+}
+
+// Pure spin from 2 % to 300 % of saturation (s = phi G c^3 C23 / (mu N)),
+// a/b = 1 and 2, nu = 0.28: Mz / (mu N c) and W_macro / (mu N) of each
+// model (CSV, for README's picture; the exact model on 80 x 80).
+int spin_sweep()
+{
+    std::printf("a_over_b,s_spin,model,Mz_over_muNc,W_over_muN\n");
+    cw::GridSpec g40, g80;
+    g40.kind = g80.kind = cw::GridKind::uniform;
+    g40.nx = g40.ny = kMapN;
+    g80.nx = g80.ny = kRefN;
+    cw::Solver s40(g40), s80(g80);
+    for (double ab : {1.0, 2.0})
+        for (int q = 0; q <= 24; ++q) {
+            const double level = 0.02 * std::pow(150.0, q / 24.0);
+            cw::ContactInput in;
+            const double c = 6e-3;
+            in.a = c * std::sqrt(ab);
+            in.b = c / std::sqrt(ab);
+            in.normal_force = 10e3;
+            in.mu = 0.3;
+            in.G = 82e9;
+            in.nu = 0.28;
+            const double muN = in.mu * in.normal_force;
+            in.phi = level * muN / (in.G * c * c * c * cw::kalker_coefficients(ab, in.nu).C23);
+            struct Row {
+                const char* name;
+                cw::ModelKind model;
+                cw::PressureKind pressure;
+                cw::Solver* solver;
+            } rows[] = {{"FASTSIM parabolic", cw::ModelKind::fastsim, cw::PressureKind::parabolic, &s40},
+                        {"FASTSIM elliptic", cw::ModelKind::fastsim, cw::PressureKind::elliptic, &s40},
+                        {"calibrated", cw::ModelKind::calibrated, cw::PressureKind::parabolic, &s40},
+                        {"exact 80 x 80", cw::ModelKind::exact, cw::PressureKind::elliptic, &s80}};
+            for (const Row& r : rows) {
+                in.model = r.model;
+                in.pressure = r.pressure;
+                in.warm_start = false;
+                const cw::SolveTotals& t = r.solver->solve(in, cw::SolveMode::forces_only);
+                std::printf("%g,%.5g,%s,%.6g,%.6g\n", ab, level, r.name, t.Mz / (muN * c),
+                            t.W_macro / muN);
+            }
+        }
+    return 0;
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+    if (argc < 2) {
+        std::fprintf(stderr, "usage: creepwork_calibration evaluate|cases <set> [cache-dir] | "
+                             "fit [cache-dir]\n");
+        return 2;
+    }
+    const std::string cmd = argv[1];
+    if (cmd == "time") return time_models();
+    if (cmd == "spin-sweep") return spin_sweep();
+    if (cmd == "fit") {
+        const std::string dir = argc > 2 ? argv[2] : ".";
+        const std::vector<CalibrationCase> cases = make_cases(CaseSet::training);
+        const std::vector<CaseReference> refs =
+            exact_references(cases, dir + "/exact_training.txt");
+        return fit_table(cases, refs);
+    }
+    if (argc < 3 || (cmd != "evaluate" && cmd != "cases")) {
+        std::fprintf(stderr, "unknown command '%s'\n", cmd.c_str());
+        return 2;
+    }
+    const CaseSet set = parse_set(argv[2]);
+    const std::string dir = argc > 3 ? argv[3] : ".";
+    const std::vector<CalibrationCase> cases = make_cases(set);
+    const std::vector<CaseReference> refs =
+        exact_references(cases, dir + "/exact_" + set_name(set) + ".txt");
+
+    struct Model {
+        const char* name;
+        std::function<ModelResult(const CalibrationCase&, const CaseReference&)> run;
+    };
+    cw::GridSpec g;
+    g.kind = cw::GridKind::uniform;
+    g.nx = g.ny = kMapN;
+    cw::Solver solver(g);
+    auto simplified = [&](cw::ModelKind kind, cw::PressureKind p) {
+        return [&solver, kind, p](const CalibrationCase& c, const CaseReference&) {
+            cw::ContactInput in = c.input;
+            in.model = kind;
+            in.pressure = p;
+            if (kind == cw::ModelKind::calibrated && std::getenv("CW_TRY_OFFSET"))
+                in.spin_offset = std::atof(std::getenv("CW_TRY_OFFSET"));
+            return solved_result(solver, in);
+        };
+    };
+    // CW_CALIBRATION_TRY="pressure k_long k_lat k_spin_x k_spin_y equalise lateral edge_gain" (pressure
+    // 0 parabolic, 1 elliptic): one more row with these parameters for every
+    // case, to explore before fitting.
+    cw::CalibrationParams trial;
+    const char* try_env = std::getenv("CW_CALIBRATION_TRY");
+    if (try_env) {
+        int p = 1;
+        std::sscanf(try_env, "%d %lf %lf %lf %lf %lf %lf %lf", &p, &trial.k_long, &trial.k_lat,
+                    &trial.k_spin_x, &trial.k_spin_y, &trial.equalise, &trial.lateral_moment,
+                    &trial.edge_gain);
+        trial.pressure = p ? cw::PressureKind::elliptic : cw::PressureKind::parabolic;
+    }
+    std::vector<Model> models = {
+        {"FASTSIM parabolic", simplified(cw::ModelKind::fastsim, cw::PressureKind::parabolic)},
+        {"FASTSIM elliptic", simplified(cw::ModelKind::fastsim, cw::PressureKind::elliptic)},
+        {"calibrated", simplified(cw::ModelKind::calibrated, cw::PressureKind::parabolic)},
+        {"exact 20 x 20", [](const CalibrationCase&, const CaseReference& r) { return r.exact20; }},
+        // Its map is the map reference itself: no map error to report.
+        {"exact 40 x 40",
+         [](const CalibrationCase&, const CaseReference& r) {
+             ModelResult m = r.exact40;
+             m.work_map.clear();
+             return m;
+         }},
+    };
+    if (try_env)
+        models.push_back({"trial", [&](const CalibrationCase& c, const CaseReference&) {
+                              cw::ContactInput in = c.input;
+                              in.model = cw::ModelKind::calibrated;
+                              return calibrated_result(solver.calibrated_model(), in, trial);
+                          }});
+    if (cmd == "cases")
+        std::printf("model,case,a_over_b,nu,level,combo,dFx,dFy,mz_relative,dMz,dW,partial_slip,"
+                    "map_L1,profile_L1\n");
+    else
+        std::printf("%s set, %zu cases; reference: exact model %d x %d\n\n"
+                    "| model | dFx %%muN med / max | dFy %%muN med / max | dMz %% med / max | "
+                    "dMz small, max %%muNc | dW %% med / max (spin) | map L1 med / max | "
+                    "profile L1 med / max |\n|---|---|---|---|---|---|---|---|\n",
+                    set_name(set), cases.size(), kRefN, kRefN);
+    for (const Model& m : models) {
+        Summary s;
+        for (size_t k = 0; k < cases.size(); ++k) {
+            const ModelResult r = m.run(cases[k], refs[k]);
+            const CaseErrors e = case_errors(cases[k].input, r, refs[k].ref, refs[k].exact40,
+                                             kMapN, kMapN);
+            s.add(e, cases[k].input);
+            if (cmd == "cases")
+                std::printf("%s,%s,%g,%g,%g,%d,%.4g,%.4g,%d,%.4g,%.4g,%d,%.4g,%.4g\n", m.name,
+                            cases[k].id.c_str(), cases[k].a_over_b, cases[k].nu, cases[k].level,
+                            cases[k].combo, e.dFx, e.dFy, int(e.mz_relative), e.dMz,
+                            e.has_spin ? e.dW : NAN, int(e.partial_slip), e.map_L1, e.profile_L1);
+        }
+        if (cmd == "evaluate") print_row(m.name, s);
+    }
+    return 0;
+}
