@@ -11,10 +11,12 @@
 
 #include "contact/contact_grid.hpp"
 #include "contact/fields.hpp"
+#include "contact/jacobian.hpp"
 #include "contact/params.hpp"
 #include "fastsim/fastsim_setup.hpp"
 #include "fastsim/fastsim_work.hpp"
 #include "fastsim/march.hpp"
+#include "fastsim/march_tangent.hpp"
 
 namespace creepwork {
 
@@ -22,8 +24,11 @@ class FastsimModel {
 public:
     explicit FastsimModel(const GridSpec& grid);
 
-    // Throws Error(invalid_input) naming a bad input.
-    SolveTotals solve(const ContactInput& input, SolveMode mode);
+    // Throws Error(invalid_input) naming a bad input. With jacobian, the
+    // march also carries its tangents (march_tangent.hpp) and *jacobian
+    // receives rows Fx, Fy, Mz (fastsim_jacobian.hpp; the W_macro row is the
+    // solver's); the totals are bitwise those of a solve without it.
+    SolveTotals solve(const ContactInput& input, SolveMode mode, Jacobian* jacobian = nullptr);
 
     const ContactGrid& grid() const { return grid_; }
     KernelIsa kernel_isa() const { return isa_; }
@@ -44,6 +49,7 @@ private:
     ContactGrid grid_;
     MarchGeometry geometry_; // the grid in the kernels' layout
     MarchState march_;
+    TangentState tangent_;
     WorkState work_;
     ModelSetup setup_;
     KernelIsa isa_ = KernelIsa::baseline;
