@@ -14,7 +14,7 @@ FastsimModel::FastsimModel(const GridSpec& grid)
 {
     march_.resize(grid_.size(), grid_.ny());
     work_.resize(grid_.size(), grid_.ny());
-    tangent_.resize(grid_.ny());
+    tangent_.resize(geometry_);
     max_shape_parabolic_ = grid_.pressure_shape(PressureKind::parabolic).maxCoeff();
     max_shape_elliptic_ = grid_.pressure_shape(PressureKind::elliptic).maxCoeff();
 }

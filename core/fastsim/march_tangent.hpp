@@ -10,7 +10,9 @@
 //   dq = inside (dp_prev - h dw_k)
 //   adhesion (|q| <= g):  dp = dq
 //   slip     (|q| >  g):  dp = f (dq - q (q.dq)/|q|^2),   f = g/|q|
-// i.e. the derivative of the projection onto the disc of radius g, with the
+//                        = f dq - (f/g^2) (p.dq) p        (p = f q, |p| = g)
+// (the second form needs no division: 1/g^2 is made once per grid), i.e.
+// the derivative of the projection onto the disc of radius g, with the
 // element's state (adhesion or slip) taken as the primal march found it. At
 // an element exactly on the bound (|q| = g) the march takes adhesion and so
 // does its derivative: the one-sided derivative from inside the disc. The
@@ -36,16 +38,18 @@ constexpr int kTangents = 3; // ux, uy, kappa
 // over the strip of dp'_x, dp'_y and X dp'_y, at [k * stride + j].
 struct TangentState {
     int stride = 0;
+    // Per element: 1/g^2 of each pressure law (0 where g = 0), made once.
+    Eigen::ArrayXd inv_bound2_parabolic, inv_bound2_elliptic;
     Eigen::ArrayXd sum_px, sum_py, sum_x_py;
     // Per strip: dwx/dkappa = -b Y and the strip part of dwy/dkappa, a
     // spin_offset dX (scratch, set by march_tangent()).
     Eigen::ArrayXd kappa_wx, kappa_wy;
 
-    void resize(int ny);
+    void resize(const MarchGeometry& geometry);
 };
 
 // The march (as march(), bitwise the same state) and its tangents. Writes
-// state (sized by MarchState::resize) and tangents (sized by resize(ny));
+// state (sized by MarchState::resize) and tangents (sized by resize());
 // allocates nothing.
 void march_tangent(const MarchGeometry& geometry, const ContactGrid& grid,
                    const ModelSetup& setup, MarchState& state, TangentState& tangents,
