@@ -102,6 +102,32 @@ double step_study(const char* label, cw::Solver& s, const cw::ContactInput& in,
     return best;
 }
 
+// CONTACT's Jacobian for comparison (measured, printed for README
+// "Jacobians"): one-sided differences with step 1e-4 of the characteristic
+// creepage mu N / (G c^2 C11) (of the spin: that over c), re-solved.
+void contact_style_error(cw::Solver& s, const cw::ContactInput& in, const cw::Jacobian& J)
+{
+    const cw::SolveTotals base = s.solve(in, cw::SolveMode::forces_only);
+    const double F0[3] = {base.Fx, base.Fy, base.Mz};
+    const double c = std::sqrt(in.a * in.b);
+    const double C11 = base.C11 > 0.0 ? base.C11 : 4.12; // given L's: a/b = 1 value
+    const double ch = in.mu * in.normal_force / (in.G > 0.0 ? in.G : 82e9) / (c * c * C11);
+    const auto scale = input_scales(in);
+    double worst = 0.0;
+    for (int col = 0; col < 3; ++col) {
+        cw::ContactInput up = in;
+        const double h = 1e-4 * (col == 2 ? ch / c : ch);
+        input_column(up, col) += h;
+        const Totals4 fu = totals(s, up);
+        for (int r = 0; r < 3; ++r) {
+            double row = 0.0;
+            for (int k = 0; k < 4; ++k) row += std::fabs(J.d[r][k]) * scale[k];
+            worst = std::max(worst, std::fabs((fu[r] - F0[r]) / h - J.d[r][col]) * scale[col] / row);
+        }
+    }
+    printf("  %-34s CONTACT-style one-sided differences (step 1e-4 ch): error %.1e\n", "", worst);
+}
+
 cw::ContactInput partial_slip(double a_over_b = 1.0)
 {
     cw::ContactInput in = cwtest::steel_contact(a_over_b);
@@ -169,6 +195,7 @@ void against_central_differences(void**)
         // Smooth between state switches: the central difference agrees to
         // truncation and roundoff (measured 1e-9 ... 1e-11 at the best step).
         assert_true(step_study(c.label, s, c.in, J) <= 1e-6);
+        contact_style_error(s, c.in, J);
     }
 }
 
