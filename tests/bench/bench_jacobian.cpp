@@ -4,8 +4,8 @@
 //   jacobian  cw_solver_solve_jacobian(CW_SOLVE_FORCES): the same totals and
 //             the 4 x 4 Jacobian
 // and prints ns per contact element and the ratio (target: <= 3). The exact
-// model is timed the same way (warm-started sequence, small grids), and with
-// the Jacobian by central differences (6 more warm solves) for comparison.
+// model is timed the same way (warm-started sequence, small grids), beside
+// the Jacobian by central differences (6 more warm solves) and a cold solve.
 // Each number is the best of many short samples of thread CPU time, the
 // calls sampled in turn (other work on the machine only ever adds time). Not
 // a test: nothing here asserts a speed.
@@ -129,8 +129,8 @@ int main(int argc, char** argv)
     std::printf("\nExact model, uniform grid N x N over the ellipse, warm-started; ms per "
                 "solve (best of %d)\n\n", quick ? 3 : 15);
     std::printf("| grid | regime | forces ms | jacobian (implicit) ms | ratio | central "
-                "differences ms | ratio |\n");
-    std::printf("|---|---|---:|---:|---:|---:|---:|\n");
+                "differences ms | ratio | cold solve ms |\n");
+    std::printf("|---|---|---:|---:|---:|---:|---:|---:|\n");
     for (int n : {16, 24, 40}) {
         cw_grid g;
         cw_grid_init(&g);
@@ -163,6 +163,12 @@ int main(int argc, char** argv)
                  [&] {
                      next();
                      cw_params q = p;
+                     q.warm_start = 0;
+                     check(cw_solver_solve(s, &q, CW_SOLVE_FORCES, &res), "exact cold solve");
+                 },
+                 [&] {
+                     next();
+                     cw_params q = p;
                      check(cw_solver_solve(s, &q, CW_SOLVE_FORCES, &res), "exact solve");
                      const double steps[3] = {1e-6, 1e-6, 1e-6 / kA};
                      double* fields[3] = {&q.xi_x, &q.xi_y, &q.phi};
@@ -176,8 +182,9 @@ int main(int argc, char** argv)
                      }
                  }},
                 0.0, quick ? 3 : 15);
-            std::printf("| %dx%d | %s | %.3f | %.3f | %.2f | %.3f | %.2f |\n", n, n, r.name,
-                        t[0] * 1e3, t[1] * 1e3, t[1] / t[0], t[2] * 1e3, t[2] / t[0]);
+            std::printf("| %dx%d | %s | %.3f | %.3f | %.2f | %.3f | %.2f | %.3f |\n", n, n,
+                        r.name, t[0] * 1e3, t[1] * 1e3, t[1] / t[0], t[3] * 1e3, t[3] / t[0],
+                        t[2] * 1e3);
         }
         cw_solver_destroy(s);
     }

@@ -496,8 +496,9 @@ CW_API int cw_batch_prepare(cw_batch* batch, int model);
  * pressure scale and so the traction bound (and, with
  * flexibility_blending, the blended L1..L3).
  *   CW_MODEL_FASTSIM  exact derivatives of the discrete march by forward
- *                     mode in the same pass (about 2x a CW_SOLVE_FORCES
- *                     solve; with CW_SOLVE_FULL the work pass comes on top).
+ *                     mode in the same pass (1.7-2.9x a CW_SOLVE_FORCES
+ *                     solve, measured; with CW_SOLVE_FULL the work pass
+ *                     comes on top).
  *                     Every grid, pressure, spin_offset and
  *                     flexibility_blending.
  *   CW_MODEL_EXACT    derivatives of the converged discrete system (implicit
