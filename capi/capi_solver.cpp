@@ -85,6 +85,31 @@ int cw_solver_solve(cw_solver* solver, const cw_params* params, int mode, cw_res
     return status;
 }
 
+int cw_solver_solve_jacobian(cw_solver* solver, const cw_params* params, int mode,
+                             cw_result* result, double* jacobian, size_t jacobian_len)
+{
+    if (!solver) return CW_ERR_NULL_POINTER;
+    const int status = guarded(&solver->last_error, [&] {
+        require(params, "params");
+        require(jacobian, "jacobian");
+        require_length(jacobian_len, CW_JACOBIAN_LEN, "jacobian");
+        if (result && (result->struct_size < sizeof(size_t) || result->struct_size > kMaxStructSize))
+            fail(CW_ERR_STRUCT_SIZE, "result->struct_size = " +
+                                         std::to_string(result->struct_size) +
+                                         " is invalid (call cw_result_init first)");
+        const cw::ContactInput in = to_input(params);
+        const cw::SolveMode m = to_mode(mode);
+        cw::Jacobian J;
+        const cw::SolveTotals& t = solver->solver.solve_jacobian(in, m, J);
+        if (result) write_struct(result, to_result(t));
+        for (int r = 0; r < 4; ++r)
+            for (int c = 0; c < 4; ++c) jacobian[4 * r + c] = J.d[r][c];
+        return CW_OK;
+    });
+    if (status != CW_OK) solver->solver.discard();
+    return status;
+}
+
 int cw_solver_prepare(cw_solver* solver, int model)
 {
     if (!solver) return CW_ERR_NULL_POINTER;

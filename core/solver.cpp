@@ -11,16 +11,44 @@ Solver::Solver(const GridSpec& grid) : fastsim_(grid) {}
 
 const SolveTotals& Solver::solve(const ContactInput& input, SolveMode mode)
 {
+    return solve_impl(input, mode, nullptr);
+}
+
+const SolveTotals& Solver::solve_jacobian(const ContactInput& input, SolveMode mode,
+                                          Jacobian& jacobian)
+{
+    Jacobian J;
+    solve_impl(input, mode, &J);
+    jacobian_work_row(J, totals_.Fx, totals_.Fy, totals_.Mz, input.xi_x, input.xi_y, input.phi);
+    for (const auto& row : J.d)
+        for (double v : row)
+            if (!std::isfinite(v)) {
+                solved_ = false;
+                throw Error(ErrorKind::numeric_failure,
+                            "a Jacobian entry overflowed: the inputs are too extreme for double "
+                            "precision");
+            }
+    jacobian = J;
+    return totals_;
+}
+
+const SolveTotals& Solver::solve_impl(const ContactInput& input, SolveMode mode,
+                                      Jacobian* jacobian)
+{
     solved_ = false;
     mode_ = mode;
     SolveTotals t;
     if (input.model == ModelKind::exact) {
         prepare(ModelKind::exact);
-        t = exact_->solve(input, mode);
+        t = jacobian ? exact_->solve_jacobian(input, mode, *jacobian) : exact_->solve(input, mode);
     } else if (input.model == ModelKind::calibrated) {
+        if (jacobian)
+            throw Error(ErrorKind::invalid_input,
+                        "model = calibrated has no Jacobian yet (FASTSIM and exact have; "
+                        "README \"Jacobians\")");
         t = calibrated_model().solve(input, mode);
     } else {
-        t = fastsim_.solve(input, mode);
+        t = fastsim_.solve(input, mode, jacobian);
     }
     last_model_ = input.model;
 

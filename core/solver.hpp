@@ -9,6 +9,7 @@
 
 #include "contact/fields.hpp"
 #include "calibrated/calibrated_model.hpp"
+#include "contact/jacobian.hpp"
 #include "contact/params.hpp"
 #include "exact/exact_model.hpp"
 #include "fastsim/fastsim_model.hpp"
@@ -23,6 +24,13 @@ public:
     // absent. The exact model is made on its first solve unless prepare()
     // made it before.
     const SolveTotals& solve(const ContactInput& input, SolveMode mode = SolveMode::full);
+    // The same solve and the Jacobian of its Fx, Fy, Mz, W_macro with
+    // respect to xi_x, xi_y, phi, N (contact/jacobian.hpp; README
+    // "Jacobians"). FASTSIM: forward mode through the march; exact:
+    // exact_model.hpp; calibrated: Error(invalid_input). *jacobian is
+    // written only on success.
+    const SolveTotals& solve_jacobian(const ContactInput& input, SolveMode mode,
+                                      Jacobian& jacobian);
 
     // Makes a model's memory now, so that its solves allocate nothing
     // (FASTSIM's is made with the solver). Throws Error(invalid_input) when
@@ -61,6 +69,7 @@ public:
     void copy_profile(double* y, double* work, double* parabola) const;
 
 private:
+    const SolveTotals& solve_impl(const ContactInput& input, SolveMode mode, Jacobian* jacobian);
     FastsimModel fastsim_;
     std::unique_ptr<ExactModel> exact_;
     std::unique_ptr<CalibratedModel> calibrated_;

@@ -126,6 +126,7 @@ module creepwork
       procedure :: grid_size => solver_grid_size
       procedure :: prepare => solver_prepare
       procedure :: solve => solver_solve
+      procedure :: solve_jacobian => solver_solve_jacobian
       procedure :: get_result => solver_get_result
       procedure, private :: solver_get_field_2d, solver_get_field_1d
       generic :: get_field => solver_get_field_2d, solver_get_field_1d
@@ -279,6 +280,19 @@ module creepwork
          type(c_ptr), value :: result ! cw_result*, may be NULL
          integer(c_int) :: status
       end function capi_solver_solve
+
+      function capi_solver_solve_jacobian(solver, params, mode, result, jacobian, &
+                                          jacobian_len) &
+         bind(c, name='cw_solver_solve_jacobian') result(status)
+         import :: c_int, c_ptr, c_double, c_size_t, cw_params
+         type(c_ptr), value :: solver
+         type(cw_params), intent(in) :: params
+         integer(c_int), value :: mode
+         type(c_ptr), value :: result ! cw_result*, may be NULL
+         real(c_double), intent(inout) :: jacobian(*)
+         integer(c_size_t), value :: jacobian_len
+         integer(c_int) :: status
+      end function capi_solver_solve_jacobian
 
       function capi_solver_get_result(solver, result) bind(c, name='cw_solver_get_result') &
          result(status)
@@ -1151,6 +1165,47 @@ contains
       if (present(errmsg)) errmsg = error_text(o)
       call deliver(o, stat)
    end subroutine solver_solve
+
+   ! solve, plus the Jacobian of the reported totals (README "Jacobians"):
+   ! jacobian(r, c) = d(total r)/d(input c), r = 1..4: Fx, Fy, Mz, W_macro;
+   ! c = 1..4: xi_x, xi_y, phi, normal_force; SI units. (The C ABI's
+   ! row-major [4*(r-1) + (c-1)] transposed to Fortran's natural (r, c).)
+   ! jacobian is written only on success.
+   subroutine solver_solve_jacobian(self, params, jacobian, mode, result, stat, errmsg)
+      class(cw_solver_type), intent(inout) :: self
+      type(cw_params), intent(in) :: params
+      real(c_double), intent(inout) :: jacobian(4, 4)
+      integer, intent(in), optional :: mode
+      type(cw_result), intent(inout), optional, target :: result
+      integer, intent(out), optional :: stat
+      character(len=:), allocatable, intent(out), optional :: errmsg
+      integer(c_int) :: m, status
+      type(c_ptr) :: r
+      type(outcome) :: o
+      real(c_double) :: row_major(4, 4)
+      if (.not. c_associated(self%handle)) then
+         o = not_created('solver')
+      else
+         m = CW_SOLVE_FORCES
+         if (present(mode)) m = int(mode, c_int)
+         r = c_null_ptr
+         if (present(result)) then
+            if (result%struct_size == 0) call cw_result_init(result)
+            r = c_loc(result)
+         end if
+         status = capi_solver_solve_jacobian(self%handle, params, m, r, row_major, &
+                                             int(CW_JACOBIAN_LEN, c_size_t))
+         if (status == CW_OK) then ! no outcome on success: no allocation
+            jacobian = transpose(row_major)
+            if (present(stat)) stat = CW_OK
+            if (present(errmsg)) errmsg = ''
+            return
+         end if
+         o = solver_outcome(self, status)
+      end if
+      if (present(errmsg)) errmsg = error_text(o)
+      call deliver(o, stat)
+   end subroutine solver_solve_jacobian
 
    ! Totals of the last successful solve.
    subroutine solver_get_result(self, result, stat, errmsg)

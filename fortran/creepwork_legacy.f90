@@ -15,6 +15,7 @@
 !   CWSOLX  dimensional contact on CONTACT's uniform grid with a model
 !           switch: FASTSIM or Kalker's exact theory (pressure, p_max and
 !           approach of its normal problem too)
+!   CWJACO  forces, moment, macro work and their 4 x 4 Jacobian (FASTSIM)
 !   CWACCU  adds one time step's work into running totals (paper eqs. 35, 37)
 !   CWKALK  Kalker's creepage and spin coefficients C11, C22, C23, C33
 !   CWFLEX  Kalker's flexibilities L1, L2, L3 (for CWSOLL and CWFSIM)
@@ -317,6 +318,61 @@ subroutine CWSOLX(MODEL, A, B, FN, FMU, G, PNU, XI, ETA, PHI, NX, NY, BOX, FX, F
    call legacy_solve(p, NX, NY, FX, FY, FMZ, WMAC, WMIC, CK, PX, PY, SX, SY, ZMAP, WPAP, WCON, &
                      ISTATE, IERR, BOX, PZ, PMAX, APPR)
 end subroutine CWSOLX
+
+! Forces, moment and macro work of one contact (as CWSOLM: Kalker's strip
+! grid, parabolic pressure, flexibilities from G and PNU) and their
+! Jacobian for implicit integrators (README "Jacobians"):
+!   DFJ(I, J) = d(output I)/d(input J), I = 1..4: FX, FY, FMZ, WMAC;
+!               J = 1..4: XI, ETA, PHI, FN  (SI units: N, N m, J/m per
+!               unit creepage, per 1/m of spin, per N)
+! exact derivatives of the discrete FASTSIM march (a, b, mu, G, nu held
+! fixed). FN must be > 0 when FMU > 0. IERR as CWSOLM; on error nothing is
+! written.
+subroutine CWJACO(A, B, FN, FMU, G, PNU, XI, ETA, PHI, NX, NY, FX, FY, FMZ, WMAC, DFJ, IERR)
+   use, intrinsic :: iso_c_binding, only: c_double, c_int
+   use creepwork, only: cw_params, cw_params_init, cw_result, cw_solver_type, &
+                        CW_FLEX_FROM_MATERIAL, CW_SOLVE_FORCES, CW_OK, CW_ERR_INVALID_INPUT
+   use creepwork_legacy_support, only: any_subnormal
+   implicit none
+   real(c_double), intent(in) :: A, B, FN, FMU, G, PNU, XI, ETA, PHI
+   integer(c_int), intent(in) :: NX, NY
+   real(c_double), intent(inout) :: FX, FY, FMZ, WMAC
+   real(c_double), intent(inout) :: DFJ(4, 4)
+   integer(c_int), intent(out) :: IERR
+   type(cw_params) :: p
+   type(cw_result) :: r
+   type(cw_solver_type) :: solver
+   real(c_double) :: jac(4, 4)
+   integer :: stat
+   if (any_subnormal([A, B, FN, FMU, G, PNU, XI, ETA, PHI])) then
+      IERR = CW_ERR_INVALID_INPUT
+      return
+   end if
+   call cw_params_init(p)
+   p%a = A
+   p%b = B
+   p%normal_force = FN
+   p%mu = FMU
+   p%flexibility = CW_FLEX_FROM_MATERIAL
+   p%G = G
+   p%nu = PNU
+   p%xi_x = XI
+   p%xi_y = ETA
+   p%phi = PHI
+   call solver%create(nx=NX, ny=NY, stat=stat)
+   IERR = int(stat, c_int)
+   if (IERR /= CW_OK) return
+   call solver%solve_jacobian(p, jac, CW_SOLVE_FORCES, r, stat=stat)
+   if (stat == CW_OK) then
+      FX = r%Fx
+      FY = r%Fy
+      FMZ = r%Mz
+      WMAC = r%W_macro
+      DFJ = jac
+   end if
+   IERR = int(stat, c_int)
+   call solver%destroy()
+end subroutine CWJACO
 
 ! Time accumulation for a simulation loop (paper eqs. 35 and 37), on the
 ! caller's arrays: adds one step of length DIST = V*dt [m] (finite, >= 0).

@@ -72,6 +72,7 @@ ExactModel::ExactModel(const GridSpec& grid)
     const size_t n = static_cast<size_t>(nx_) * ny_;
     for (auto& h : history_q_) h.assign(n, SteadyRolling::Complex(0.0, 0.0));
     paper_.assign(n, 0.0);
+    tangent_w_.assign(n, SteadyRolling::Complex(0.0, 0.0));
     consistent_.assign(n, 0.0);
     profile_.assign(ny_, 0.0);
     row_d_.assign(ny_, 0.0);

@@ -28,6 +28,7 @@
 #include <vector>
 
 #include "contact/fields.hpp"
+#include "contact/jacobian.hpp"
 #include "contact/params.hpp"
 #include "exact/exact_geometry.hpp"
 #include "exact/grid_convolution.hpp"
@@ -64,6 +65,8 @@ public:
 
     // Throws Error naming a bad input, or Error(not_converged).
     SolveTotals solve(const ContactInput& input, SolveMode mode);
+    // solve(), then rows Fx, Fy, Mz of the Jacobian (exact_jacobian.cpp).
+    SolveTotals solve_jacobian(const ContactInput& input, SolveMode mode, Jacobian& jacobian);
 
     const ExactSolveInfo& info() const { return info_; }
     int nx() const { return nx_; }
@@ -118,6 +121,7 @@ private:
         bool full = false;
     } setup_;
     std::vector<double> paper_, consistent_, profile_, row_d_, row_pool_;
+    std::vector<SteadyRolling::Complex> tangent_w_; // solve_jacobian's rigid-slip derivative
     // The last solutions (normalised tractions, newest first) and their
     // normalised creepages, for the warm start's prediction.
     std::vector<SteadyRolling::Complex> history_q_[3];

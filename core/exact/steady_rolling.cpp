@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "contact/error.hpp"
+
 namespace creepwork {
 namespace {
 
@@ -253,6 +255,54 @@ SteadyRollingInfo SteadyRolling::solve(GridConvolution& conv, double tolerance, 
     }
     info.products = products_;
     return info;
+}
+
+void SteadyRolling::rigid_slip_sweep(const Complex* dw, Complex* out) const
+{
+    // The sweep of sweep() with q held: c = w + (B q - own diagonal) + b1
+    // (change ahead), so dc = dw + b1 (dG ahead).
+    for (int j = 0; j < ny_; ++j) {
+        Complex ahead(0.0, 0.0);
+        for (int i = nx_ - 1; i >= 0; --i) {
+            const int k = i + nx_ * j;
+            if (!(g_[k] > 0.0)) {
+                out[k] = 0.0;
+                ahead = 0.0;
+                continue;
+            }
+            const double cx = dw[k].real() + b1x_ * ahead.real();
+            const double cy = dw[k].imag() + b1y_ * ahead.imag();
+            const LocalJacobian& J = jac_[k];
+            const Complex d(J.j11 * cx + J.j12 * cy, J.j21 * cx + J.j22 * cy);
+            out[k] = d;
+            ahead = d;
+        }
+    }
+}
+
+const std::vector<SteadyRolling::Complex>& SteadyRolling::tangent(GridConvolution& conv,
+                                                                  const std::vector<Complex>& dw,
+                                                                  double tolerance,
+                                                                  int max_iterations)
+{
+    std::vector<Complex>& rhs = gt_; // scratch after solve()
+    std::vector<Complex>& dq = qt_;
+    rigid_slip_sweep(dw.data(), rhs.data());
+    gmres(conv, rhs, dq, tolerance, max_iterations);
+    // The true residual of the linear system, checked rather than trusted.
+    std::vector<Complex>& r = ft_;
+    linear_sweep(conv, dq.data(), r.data());
+    double r2 = 0.0;
+    for (int t = 0; t < n_; ++t) {
+        r[t] = rhs[t] - (dq[t] - r[t]);
+        r2 += std::norm(r[t]);
+    }
+    const double b2 = dot(rhs, rhs);
+    if (!(r2 <= 100.0 * tolerance * tolerance * b2))
+        throw Error(ErrorKind::not_converged,
+                    "model = exact: the Jacobian's linear solve did not reach the tolerance "
+                    "in max_iterations GMRES iterations; raise max_iterations or tolerance");
+    return dq;
 }
 
 } // namespace creepwork

@@ -69,11 +69,26 @@ public:
     // Clips q to the bound (and zero outside the contact set).
     void project(std::vector<Complex>& q) const;
 
+    // The derivative of the solution with respect to the rigid slip along
+    // dw, by the implicit function theorem at the last solve's traction q
+    // (q = G(q; w), so (I - G'(q)) dq = G_w dw), with each element's state
+    // and local Jacobian as the last sweep found them (at the returned q).
+    // The same GMRES and linearised sweep (the preconditioner) as Newton's
+    // steps, to relative residual tolerance. Returns dq (valid until the
+    // next call); the traction, slip and states are untouched. Throws
+    // Error(not_converged) when GMRES does not reach the tolerance in
+    // max_iterations.
+    const std::vector<Complex>& tangent(GridConvolution& conv, const std::vector<Complex>& dw,
+                                        double tolerance, int max_iterations);
+
 private:
     // out = G(q); also s_, state_, jac_ at q. One FFT product.
     void sweep(GridConvolution& conv, const std::vector<Complex>& q, std::vector<Complex>& out);
     // out = G'(q) v at the q of the last sweep. One FFT product.
     void linear_sweep(GridConvolution& conv, const Complex* v, Complex* out);
+    // out = G_w dw at the q of the last sweep (the sweep's response to a
+    // change of the rigid slip alone). No FFT product.
+    void rigid_slip_sweep(const Complex* dw, Complex* out) const;
     // Solves (I - G') x = b to relative residual eta; returns the iterations.
     int gmres(GridConvolution& conv, const std::vector<Complex>& b, std::vector<Complex>& x,
               double eta, int max_iterations);

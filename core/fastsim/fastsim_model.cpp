@@ -5,6 +5,7 @@
 #include "contact/error.hpp"
 #include "contact/fp_safe.hpp"
 #include "contact/hertz.hpp"
+#include "fastsim/fastsim_jacobian.hpp"
 
 namespace creepwork {
 
@@ -13,6 +14,7 @@ FastsimModel::FastsimModel(const GridSpec& grid)
 {
     march_.resize(grid_.size(), grid_.ny());
     work_.resize(grid_.size(), grid_.ny());
+    tangent_.resize(geometry_);
     max_shape_parabolic_ = grid_.pressure_shape(PressureKind::parabolic).maxCoeff();
     max_shape_elliptic_ = grid_.pressure_shape(PressureKind::elliptic).maxCoeff();
 }
@@ -25,19 +27,30 @@ void FastsimModel::set_kernel_isa(KernelIsa isa)
     isa_ = isa;
 }
 
-SolveTotals FastsimModel::solve(const ContactInput& input, SolveMode mode)
+SolveTotals FastsimModel::solve(const ContactInput& input, SolveMode mode, Jacobian* jacobian)
 {
-    return solve_setup(make_model_setup(input), input, mode);
+    return march_and_total(make_model_setup(input), input, mode, jacobian);
 }
 
 SolveTotals FastsimModel::solve_setup(const ModelSetup& setup, const ContactInput& input,
                                       SolveMode mode)
 {
+    return march_and_total(setup, input, mode, nullptr);
+}
+
+SolveTotals FastsimModel::march_and_total(const ModelSetup& setup, const ContactInput& input,
+                                          SolveMode mode, Jacobian* jacobian)
+{
     setup_ = setup;
     if (mode == SolveMode::full)
         march_with_work(geometry_, grid_, setup_, march_, work_, isa_); // work accounted
-    else
+    // With work, the tangent march repeats the march: the same state, bitwise.
+    if (jacobian) {
+        march_tangent(geometry_, grid_, setup_, march_, tangent_, isa_);
+        *jacobian = fastsim_jacobian(input, setup_, grid_, march_, tangent_);
+    } else if (mode != SolveMode::full) {
         march(geometry_, grid_, setup_.kin, setup_.pressure, march_, isa_);
+    }
 
     // Totals in the rolling frame: F = T a b sum(p' A'), A' per strip.
     const double T = setup_.traction_scale, a = setup_.a, b = setup_.b;

@@ -11,10 +11,12 @@
 
 #include "contact/contact_grid.hpp"
 #include "contact/fields.hpp"
+#include "contact/jacobian.hpp"
 #include "contact/params.hpp"
 #include "fastsim/fastsim_setup.hpp"
 #include "fastsim/fastsim_work.hpp"
 #include "fastsim/march.hpp"
+#include "fastsim/march_tangent.hpp"
 
 namespace creepwork {
 
@@ -22,13 +24,18 @@ class FastsimModel {
 public:
     explicit FastsimModel(const GridSpec& grid);
 
-    // Throws Error(invalid_input) naming a bad input.
-    SolveTotals solve(const ContactInput& input, SolveMode mode);
+    // Throws Error(invalid_input) naming a bad input. With jacobian, the
+    // march also carries its tangents (march_tangent.hpp) and *jacobian
+    // receives rows Fx, Fy, Mz (fastsim_jacobian.hpp; the W_macro row is the
+    // solver's); the totals are bitwise those of a solve without it.
+    SolveTotals solve(const ContactInput& input, SolveMode mode, Jacobian* jacobian = nullptr);
     // The same march for a setup made (and possibly adjusted) by the caller:
     // models built on FASTSIM's march (calibrated/) change the kinematics
     // and the traction bound and keep everything else. setup comes from
     // make_model_setup(input); solve(input, mode) is
-    // solve_setup(make_model_setup(input), input, mode).
+    // solve_setup(make_model_setup(input), input, mode). The Jacobian is
+    // FASTSIM's own (fastsim_jacobian differentiates make_model_setup), so
+    // only solve() offers it.
     SolveTotals solve_setup(const ModelSetup& setup, const ContactInput& input, SolveMode mode);
 
     const ContactGrid& grid() const { return grid_; }
@@ -44,12 +51,16 @@ public:
     void copy_profile(double W, double* y, double* work, double* parabola) const;
 
 private:
+    // The march from setup, its totals and (jacobian != nullptr) its tangents.
+    SolveTotals march_and_total(const ModelSetup& setup, const ContactInput& input,
+                                SolveMode mode, Jacobian* jacobian);
     template <class Op>
     void export_field(Field f, const Op& op, double* out) const;
 
     ContactGrid grid_;
     MarchGeometry geometry_; // the grid in the kernels' layout
     MarchState march_;
+    TangentState tangent_;
     WorkState work_;
     ModelSetup setup_;
     KernelIsa isa_ = KernelIsa::baseline;

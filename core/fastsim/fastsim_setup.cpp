@@ -67,6 +67,7 @@ ModelSetup make_model_setup(const ContactInput& in)
                     "xi_x, xi_y or phi is so large that the rigid slip overflows");
     double divisor = s.traction_scale;
     if (largest > kMaxNormalisedCreepage * divisor) divisor = largest / kMaxNormalisedCreepage;
+    s.kin_divisor = divisor;
     if (divisor > 0.0) {
         s.kin.ux = n[0] / divisor;
         s.kin.uy = n[1] / divisor;

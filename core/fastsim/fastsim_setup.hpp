@@ -39,6 +39,10 @@ struct ModelSetup {
     // Creepages in the rolling frame (x' = direction * x).
     double xi = 0, eta = 0, phi = 0;
     NormalisedKinematics kin;
+    // kin = (rigid slip over flexibility) / kin_divisor: traction_scale,
+    // or larger for creepages beyond kMaxNormalisedCreepage (0 when
+    // traction_scale is 0).
+    double kin_divisor = 0;
 };
 
 // Throws Error(invalid_input) naming the first offending input.

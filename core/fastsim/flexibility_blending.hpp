@@ -32,4 +32,14 @@ namespace creepwork {
 Flexibilities blend_flexibilities(const Flexibilities& L, double a, double b, double mu,
                                   double normal_force, double xi, double eta, double phi);
 
+// Derivatives of blend_flexibilities' L1, L2, L3 (index i) with respect to
+// xi, eta, phi and normal_force (index k), d[i][k], on the branch the
+// function takes at these inputs (the kinks of w = min(1, max(1e-10, f)/3)
+// give the derivative of the side the value is taken from). At zero
+// creepage the blend is constant (w = 1e-10/3, L_crss read as 0) and so are
+// its derivatives, zero; they only ever multiply creepages in the chain rule.
+void blend_flexibilities_derivatives(const Flexibilities& L, double a, double b, double mu,
+                                     double normal_force, double xi, double eta, double phi,
+                                     double d[3][4]);
+
 } // namespace creepwork

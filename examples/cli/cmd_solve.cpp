@@ -26,14 +26,42 @@ void write_json_file(const std::string& path, const JsonObject& j)
     if (!f) throw CliError(kExitFailure, "cannot write " + path);
 }
 
+// "jacobian": {"Fx": {"xi_x": .., "xi_y": .., "phi": .., "N": ..}, ...} in SI,
+// rows and columns of cw_solver_solve_jacobian (README "Jacobians").
+JsonObject jacobian_json(const double J[CW_JACOBIAN_LEN])
+{
+    const char* rows[4] = {"Fx", "Fy", "Mz", "W_macro"};
+    const char* cols[4] = {"xi_x", "xi_y", "phi", "N"};
+    JsonObject j;
+    for (int r = 0; r < 4; ++r) {
+        JsonObject row;
+        for (int c = 0; c < 4; ++c) row.number(cols[c], J[4 * r + c]);
+        j.object(rows[r], row);
+    }
+    return j;
+}
+
+void print_jacobian_text(std::ostream& os, const double J[CW_JACOBIAN_LEN])
+{
+    os << "jacobian   (SI)        d/dxi_x        d/dxi_y        d/dphi         d/dN\n";
+    const char* rows[4] = {"Fx", "Fy", "Mz", "W_macro"};
+    for (int r = 0; r < 4; ++r) {
+        char line[160];
+        std::snprintf(line, sizeof line, "  %-19s %14.6g %14.6g %14.6g %14.6g\n", rows[r],
+                      J[4 * r], J[4 * r + 1], J[4 * r + 2], J[4 * r + 3]);
+        os << line;
+    }
+}
+
 } // namespace
 
 int command_solve(int argc, char** argv, int first)
 {
-    const auto specs =
+    auto specs =
         join(join(join(join(material_and_load_options(), model_options()), creepage_options()),
                   grid_options()),
              output_options());
+    specs.push_back({"jacobian", OptionKind::flag, {}});
     ParsedOptions opts;
     if (parse_or_help(specs, argc, argv, first, usage_solve(), opts)) return kExitOk;
     const ContactSetup c = read_contact(opts, library_default_params(), library_default_grid(),
@@ -44,7 +72,16 @@ int command_solve(int argc, char** argv, int first)
     ContactSolver solver(c.grid);
     const Solution s = solver.solve_full(c.params);
     print_notes(c);
-    const JsonObject json = result_json(s.result, s.params, s.grid, c.units);
+    JsonObject json = result_json(s.result, s.params, s.grid, c.units);
+    double J[CW_JACOBIAN_LEN] = {};
+    const bool jacobian = opts.has("jacobian");
+    if (jacobian) {
+        solver.jacobian(c.params, J);
+        json.object("jacobian", jacobian_json(J))
+            .text("jacobian_units",
+                  "SI whatever --units: rows Fx [N], Fy [N], Mz [N m], W_macro [J/m] per "
+                  "xi_x [-], xi_y [-], phi [1/m], N [N]");
+    }
 
     if (!out.empty()) {
         const bool plots = should_plot(opts, static_cast<long>(s.size()));
@@ -60,8 +97,10 @@ int command_solve(int argc, char** argv, int first)
     }
     if (opts.text("format", "text") == "json")
         std::cout << json.str(true) << "\n";
-    else
+    else {
         print_result_text(std::cout, s.result, s.params, s.grid, c.units);
+        if (jacobian) print_jacobian_text(std::cout, J);
+    }
     return kExitOk;
 }
 

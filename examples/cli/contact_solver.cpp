@@ -77,6 +77,13 @@ cw_result ContactSolver::solve_states(const cw_params& params, std::vector<int>&
     return r;
 }
 
+void ContactSolver::jacobian(const cw_params& params, double out[CW_JACOBIAN_LEN])
+{
+    check(cw_solver_solve_jacobian(solver_, &params, CW_SOLVE_FORCES, nullptr, out,
+                                   CW_JACOBIAN_LEN),
+          "cw_solver_solve_jacobian");
+}
+
 Solution ContactSolver::solve_full(const cw_params& params)
 {
     Solution s;

@@ -37,6 +37,8 @@ public:
     cw_result solve_states(const cw_params& params, std::vector<int>& state);
     // Everything (CW_SOLVE_FULL).
     Solution solve_full(const cw_params& params);
+    // The 4 x 4 Jacobian of the totals (cw_solver_solve_jacobian, row-major).
+    void jacobian(const cw_params& params, double out[CW_JACOBIAN_LEN]);
 
     int nx() const { return nx_; }
     int ny() const { return ny_; }

@@ -61,6 +61,7 @@ void test_solver_solve_allocates_nothing(void**)
         const size_t n = static_cast<size_t>(g.nx) * g.ny;
         std::vector<double> out(n), y(g.ny), w(g.ny), parabola(g.ny);
         std::vector<int> states(n);
+        cw::Jacobian jacobian;
         long allocations = 0;
         for (int k = 0; k < 8; ++k) {
             const cw::ContactInput in = contact(k);
@@ -77,6 +78,12 @@ void test_solver_solve_allocates_nothing(void**)
             }
             solver.copy_state(states.data());
             solver.copy_profile(y.data(), w.data(), parabola.data());
+            // The Jacobian (forward mode in the march): needs N > 0.
+            cw::ContactInput jin = in;
+            jin.normal_force = 80e3;
+            jin.flexibility_blending = k % 2 == 0;
+            solver.solve_jacobian(jin, k % 2 ? cw::SolveMode::full : cw::SolveMode::forces_only,
+                                  jacobian);
             allocations += cw_count_stop();
         }
         assert_int_equal(allocations, 0);
@@ -99,6 +106,7 @@ void test_exact_solve_allocates_nothing_after_prepare(void**)
     const size_t n = static_cast<size_t>(g.nx) * g.ny;
     std::vector<double> out(n), y(g.ny), w(g.ny), parabola(g.ny);
     std::vector<int> states(n);
+    cw::Jacobian jacobian;
     long allocations = 0;
     for (int k = 0; k < 10; ++k) {
         cw::ContactInput in = contact(k % 8);
@@ -120,6 +128,9 @@ void test_exact_solve_allocates_nothing_after_prepare(void**)
         }
         solver.copy_state(states.data());
         solver.copy_profile(y.data(), w.data(), parabola.data());
+        // The Jacobian: three more linear solves in the prepared workspaces.
+        in.normal_force = 80e3;
+        solver.solve_jacobian(in, cw::SolveMode::forces_only, jacobian);
         allocations += cw_count_stop();
     }
     assert_int_equal(allocations, 0);

@@ -476,6 +476,50 @@ CW_API int cw_solver_prepare(cw_solver* solver, int model);
 /* cw_solver_prepare for the solver of every thread of a batch. */
 CW_API int cw_batch_prepare(cw_batch* batch, int model);
 
+/* -------------------------------------------------------------- Jacobians */
+
+/* The 4 x 4 Jacobian of a solve for implicit integrators (README
+ * "Jacobians"), row-major: jacobian[4*r + c] = d(row r)/d(column c). */
+#define CW_JACOBIAN_LEN 16
+#define CW_JAC_FX 0      /* rows: Fx [N], Fy [N], Mz [N m], W_macro [J/m] */
+#define CW_JAC_FY 1
+#define CW_JAC_MZ 2
+#define CW_JAC_W_MACRO 3
+#define CW_JAC_XI_X 0    /* columns: xi_x [-], xi_y [-], phi [1/m], normal_force [N] */
+#define CW_JAC_XI_Y 1
+#define CW_JAC_PHI 2
+#define CW_JAC_N 3
+
+/* Solves as cw_solver_solve (same result, fields and errors; the totals are
+ * bitwise those of cw_solver_solve) and writes the derivatives of exactly
+ * the Fx, Fy, Mz, W_macro it reports, in the caller's frame and sign
+ * convention (any rolling_direction), with respect to the params fields
+ * xi_x, xi_y, phi and normal_force, in SI units: e.g. jacobian[4*CW_JAC_FX
+ * + CW_JAC_XI_X] = dFx/dxi_x [N], [4*CW_JAC_MZ + CW_JAC_PHI] = dMz/dphi
+ * [N m^2]. Held fixed: a, b, mu, G, nu, L1..L3 as given; N moves the
+ * pressure scale and so the traction bound (and, with
+ * flexibility_blending, the blended L1..L3).
+ *   CW_MODEL_FASTSIM  exact derivatives of the discrete march by forward
+ *                     mode in the same pass (1.7-2.9x a CW_SOLVE_FORCES
+ *                     solve, measured; with CW_SOLVE_FULL the work pass
+ *                     comes on top).
+ *                     Every grid, pressure, spin_offset and
+ *                     flexibility_blending.
+ *   CW_MODEL_EXACT    derivatives of the converged discrete system (implicit
+ *                     function theorem, states fixed at the solution), three
+ *                     extra linear solves with the Newton-GMRES machinery,
+ *                     each to the solve's tolerance.
+ *   CW_MODEL_CALIBRATED  CW_ERR_INVALID_INPUT (no Jacobian for this model yet).
+ * Where an element sits exactly on the traction bound the derivative is the
+ * one of the state the solve found (README "Jacobians"). Needs
+ * normal_force > 0 when mu > 0 (the forces are not differentiable in N at
+ * N = 0): CW_ERR_INVALID_INPUT. Allocates nothing (FASTSIM; exact as
+ * cw_solver_solve). Errors: those of cw_solver_solve, and
+ * CW_ERR_NULL_POINTER (jacobian), CW_ERR_BUFFER_TOO_SMALL (jacobian_len <
+ * CW_JACOBIAN_LEN). On error nothing is written to jacobian or result. */
+CW_API int cw_solver_solve_jacobian(cw_solver* solver, const cw_params* params, int mode,
+                                    cw_result* result, double* jacobian, size_t jacobian_len);
+
 /* ------------------------------------------------------------------- wear */
 
 /* Wear of a solved contact (any model) by the USFD or Archard law applied

@@ -1,0 +1,87 @@
+// The Jacobian of the exact model: derivatives of the converged discrete
+// system by the implicit function theorem (SteadyRolling::tangent), not by
+// re-solving. The solution q solves q = G(q; w) with w the rigid slip, linear
+// in the normalised creepages c = (c_xi, c_eta, c_phi); with the element
+// states (adhesion, slip and the slip directions) held as the solve found
+// them, dq/dc_k solves (I - G'(q)) dq = G_w dw_k: one GMRES solve per
+// creepage with the Newton steps' operator and preconditioner.
+//
+// N: the normal problem's pressure is p0 times a shape that does not depend
+// on N (a, b fixed), tractions scale with mu p0 and the rigid slip with
+// mu p0 / G, so the forces are homogeneous of degree 1 in (N, xi_x, xi_y,
+// phi) and dF/dN = (F - xi_x dF/dxi_x - xi_y dF/dxi_y - phi dF/dphi) / N
+// (Euler), exactly for the discrete system.
+#include <string>
+
+#include "contact/error.hpp"
+#include "exact/exact_model.hpp"
+
+namespace creepwork {
+namespace {
+
+// GMRES iterations per derivative (each one FFT product); the linear systems
+// are those of a Newton step near convergence, which take 10-40.
+constexpr int kMaxJacobianIterations = 2000;
+
+} // namespace
+
+SolveTotals ExactModel::solve_jacobian(const ContactInput& in, SolveMode mode, Jacobian& J)
+{
+    const SolveTotals t = solve(in, mode);
+    Jacobian out;
+    if (in.mu == 0.0) { // no traction whatever the inputs
+        J = out;
+        return t;
+    }
+    if (in.normal_force == 0.0)
+        throw Error(ErrorKind::invalid_input,
+                    "normal_force = 0: the forces are not differentiable in N there (they "
+                    "grow as mu N from N = 0); the Jacobian needs normal_force > 0");
+
+    Level& fine = *levels_[0];
+    const Setup& s = setup_;
+    const double tolerance = in.tolerance > 0.0 ? in.tolerance : kExactDefaultTolerance;
+    // d(rolling-frame sums of q: x, y, x qy - y qx)/d(c_xi, c_eta, c_phi)
+    double dS[3][3] = {};
+    for (int k = 0; k < 3; ++k) {
+        for (int j = 0; j < ny_; ++j)
+            for (int i = 0; i < nx_; ++i) {
+                const double X = fine.geom.X(i), Y = fine.geom.Y(j);
+                tangent_w_[i + nx_ * j] = k == 0   ? SteadyRolling::Complex(1.0, 0.0)
+                                          : k == 1 ? SteadyRolling::Complex(0.0, 1.0)
+                                                   : SteadyRolling::Complex(-Y, X + s.spin_offset);
+            }
+        const std::vector<SteadyRolling::Complex>& dq =
+            fine.tangential.tangent(fine.conv, tangent_w_, tolerance, kMaxJacobianIterations);
+        for (int j = 0; j < ny_; ++j) {
+            const double y = fine.geom.Y(j) * s.dx;
+            for (int i = 0; i < nx_; ++i) {
+                const SteadyRolling::Complex v = dq[i + nx_ * j];
+                const double x = fine.geom.X(i) * s.dx;
+                dS[0][k] += v.real();
+                dS[1][k] += v.imag();
+                dS[2][k] += x * v.imag() - y * v.real();
+            }
+        }
+    }
+
+    // c = rolling-frame creepage / slip_scale (phi per element length dx);
+    // the caller's Fx = d T area S_x, Fy = T area S_y, Mz = d T area S_mz.
+    const double d = s.direction, area = s.dx * s.dy, T = s.traction_scale;
+    const double dc[3] = {d / s.slip_scale, 1.0 / s.slip_scale, d * s.dx / s.slip_scale};
+    const double frame[3] = {d, 1.0, d};
+    const double F[3] = {t.Fx, t.Fy, t.Mz};
+    const double inputs[3] = {in.xi_x, in.xi_y, in.phi};
+    for (int r = 0; r < 3; ++r) {
+        double euler = F[r];
+        for (int c = 0; c < 3; ++c) {
+            out.d[r][c] = frame[r] * T * area * dS[r][c] * dc[c];
+            euler -= inputs[c] * out.d[r][c];
+        }
+        out.d[r][3] = euler / in.normal_force;
+    }
+    J = out;
+    return t;
+}
+
+} // namespace creepwork
