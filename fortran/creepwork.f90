@@ -937,7 +937,7 @@ contains
       v = int(capi_abi_version())
    end function cw_library_abi_version
 
-   ! "1.0.0"
+   ! "1.1.0"
    function cw_version_string() result(s)
       character(len=:), allocatable :: s
       s = f_string(capi_version_string())

@@ -66,7 +66,7 @@ extern "C" {
 /* ---------------------------------------------------------------- version */
 
 #define CW_VERSION_MAJOR 1
-#define CW_VERSION_MINOR 0
+#define CW_VERSION_MINOR 1
 #define CW_VERSION_PATCH 0
 /* 10000*major + 100*minor + patch */
 #define CW_VERSION_NUMBER (CW_VERSION_MAJOR * 10000 + CW_VERSION_MINOR * 100 + CW_VERSION_PATCH)
@@ -77,7 +77,7 @@ extern "C" {
  * that the loaded library is the one the program was built against. */
 CW_API int cw_version_number(void);
 CW_API int cw_abi_version(void);
-CW_API const char* cw_version_string(void); /* "1.0.0", static */
+CW_API const char* cw_version_string(void); /* "1.1.0", static */
 
 /* ------------------------------------------------------------ status codes */
 
