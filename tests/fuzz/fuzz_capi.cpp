@@ -1065,7 +1065,7 @@ void op_wear(Session& z, WearSession& w, Bytes& in)
                                   (orientation == 1 || orientation == -1) &&
                                   std::isfinite(angle) &&
                                   std::fabs(angle) <= CW_WEAR_MAX_CONTACT_ANGLE &&
-                                  std::isfinite(passes) && passes >= 0.0 &&
+                                  std::isfinite(passes) && as_seen(passes) >= 0.0 &&
                                   passes <= CW_WEAR_MAX_PASSES;
         if (what == 5) {
             st = cw_wear_profile_add(w.profile, w.wear, s0, orientation, angle, passes);
@@ -1081,7 +1081,7 @@ void op_wear(Session& z, WearSession& w, Bytes& in)
                 strips_ok = strips_ok && std::isfinite(y[k]) && std::fabs(y[k]) <= 1e6 &&
                             std::isfinite(width[k]) && as_seen(width[k]) > 0.0 &&
                             width[k] <= 1e6 &&
-                            std::isfinite(depth[k]) && depth[k] >= 0.0;
+                            std::isfinite(depth[k]) && as_seen(depth[k]) >= 0.0;
             }
             st = cw_wear_profile_add_strips(w.profile, y.data(), width.data(), depth.data(), count,
                                             s0, orientation, angle, passes);
@@ -1151,7 +1151,7 @@ void op_wear(Session& z, WearSession& w, Bytes& in)
                                           msg.ptr, msg.len);
     FUZZ_CHECK(known_status(st));
     msg.check(st);
-    bool inputs_ok = n >= 1 && nodes_valid(s) && std::isfinite(smoothing) && smoothing >= 0.0 &&
+    bool inputs_ok = n >= 1 && nodes_valid(s) && std::isfinite(smoothing) && as_seen(smoothing) >= 0.0 &&
                      smoothing <= 1e6 && std::min(len, n + kGuard) >= n;
     for (size_t k = 0; k < n; ++k)
         inputs_ok = inputs_ok && std::isfinite(old[k]) && std::isfinite(dep[k]);
