@@ -23,6 +23,7 @@
 
 #include <creepwork/creepwork.h>
 
+#include "cli_runner.hpp"
 #include "json_reader.hpp"
 // Last: cmocka defines macros (fail, skip) that clash with the C++ library.
 #include "test_support.h"
@@ -35,49 +36,16 @@ namespace {
 
 std::string g_cli, g_scratch;
 
-struct Run {
-    int status = -1;
-    std::string out, err;
-};
-
-std::string slurp(const std::string& path)
-{
-    std::ifstream f(path);
-    std::stringstream s;
-    s << f.rdbuf();
-    return s.str();
-}
-
+using cli_test::Run;
+using cli_test::slurp;
 Run run_cli(const std::vector<std::string>& args)
 {
-    const std::string out = g_scratch + "/stdout.txt", err = g_scratch + "/stderr.txt";
-    posix_spawn_file_actions_t fa;
-    posix_spawn_file_actions_init(&fa);
-    posix_spawn_file_actions_addopen(&fa, 1, out.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    posix_spawn_file_actions_addopen(&fa, 2, err.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    std::vector<char*> argv;
-    argv.push_back(const_cast<char*>(g_cli.c_str()));
-    for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
-    argv.push_back(nullptr);
-    pid_t pid = 0;
-    Run r;
-    if (posix_spawn(&pid, g_cli.c_str(), &fa, nullptr, argv.data(), environ) == 0) {
-        int status = 0;
-        waitpid(pid, &status, 0);
-        r.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    }
-    posix_spawn_file_actions_destroy(&fa);
-    r.out = slurp(out);
-    r.err = slurp(err);
-    return r;
+    return cli_test::run_program(g_cli, g_scratch, args);
 }
 
 Run run_ok(const std::vector<std::string>& args)
 {
-    Run r = run_cli(args);
-    if (r.status != 0) print_error("exit %d, stderr: %s\n", r.status, r.err.c_str());
-    assert_int_equal(r.status, 0);
-    return r;
+    return cli_test::run_program_ok(g_cli, g_scratch, args);
 }
 
 std::vector<std::vector<std::string>> read_csv(const std::string& path)
