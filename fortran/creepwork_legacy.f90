@@ -60,7 +60,7 @@ module creepwork_legacy_support
    use creepwork
    implicit none
    private
-   public :: legacy_solve, subnormal, any_subnormal, flushed
+   public :: legacy_solve, subnormal, any_subnormal, flushed, material_params
 
 contains
 
@@ -86,6 +86,24 @@ contains
       flushed = x
       if (subnormal(x)) flushed = 0.0_c_double
    end function flushed
+
+   ! The parameters of a dimensional legacy call with flexibilities from G
+   ! and PNU (CWSOLM, CWSOLX, CWJACO, CWWEAR): every other field at its default.
+   function material_params(a, b, fn, fmu, g, pnu, xi, eta, phi) result(p)
+      real(c_double), intent(in) :: a, b, fn, fmu, g, pnu, xi, eta, phi
+      type(cw_params) :: p
+      call cw_params_init(p)
+      p%a = a
+      p%b = b
+      p%normal_force = fn
+      p%mu = fmu
+      p%flexibility = CW_FLEX_FROM_MATERIAL
+      p%G = g
+      p%nu = pnu
+      p%xi_x = xi
+      p%xi_y = eta
+      p%phi = phi
+   end function material_params
 
    ! Kalker's strip grid, or with box present CONTACT's uniform grid over
    ! [-box a, box a] x [-box b, box b]; pz, pmax, appr (all or none) receive
@@ -210,8 +228,8 @@ end subroutine CWFSIM
 subroutine CWSOLM(A, B, FN, FMU, G, PNU, XI, ETA, PHI, NX, NY, FX, FY, FMZ, WMAC, WMIC, CK, &
                   PX, PY, SX, SY, ZMAP, WPAP, WCON, ISTATE, IERR)
    use, intrinsic :: iso_c_binding, only: c_double, c_int
-   use creepwork, only: cw_params, cw_params_init, CW_FLEX_FROM_MATERIAL
-   use creepwork_legacy_support, only: legacy_solve
+   use creepwork, only: cw_params
+   use creepwork_legacy_support, only: legacy_solve, material_params
    implicit none
    real(c_double), intent(in) :: A, B, FN, FMU, G, PNU, XI, ETA, PHI
    integer(c_int), intent(in) :: NX, NY
@@ -220,17 +238,7 @@ subroutine CWSOLM(A, B, FN, FMU, G, PNU, XI, ETA, PHI, NX, NY, FX, FY, FMZ, WMAC
    integer(c_int), intent(inout) :: ISTATE(NX, NY)
    integer(c_int), intent(out) :: IERR
    type(cw_params) :: p
-   call cw_params_init(p)
-   p%a = A
-   p%b = B
-   p%normal_force = FN
-   p%mu = FMU
-   p%flexibility = CW_FLEX_FROM_MATERIAL
-   p%G = G
-   p%nu = PNU
-   p%xi_x = XI
-   p%xi_y = ETA
-   p%phi = PHI
+   p = material_params(A, B, FN, FMU, G, PNU, XI, ETA, PHI)
    call legacy_solve(p, NX, NY, FX, FY, FMZ, WMAC, WMIC, CK, PX, PY, SX, SY, ZMAP, WPAP, WCON, &
                      ISTATE, IERR)
 end subroutine CWSOLM
@@ -292,8 +300,8 @@ end subroutine CWSOLL
 subroutine CWSOLX(MODEL, A, B, FN, FMU, G, PNU, XI, ETA, PHI, NX, NY, BOX, FX, FY, FMZ, WMAC, &
                   WMIC, CK, PMAX, APPR, PX, PY, PZ, SX, SY, ZMAP, WPAP, WCON, ISTATE, IERR)
    use, intrinsic :: iso_c_binding, only: c_double, c_int
-   use creepwork, only: cw_params, cw_params_init, CW_FLEX_FROM_MATERIAL
-   use creepwork_legacy_support, only: legacy_solve
+   use creepwork, only: cw_params
+   use creepwork_legacy_support, only: legacy_solve, material_params
    implicit none
    integer(c_int), intent(in) :: MODEL
    real(c_double), intent(in) :: A, B, FN, FMU, G, PNU, XI, ETA, PHI, BOX
@@ -303,18 +311,8 @@ subroutine CWSOLX(MODEL, A, B, FN, FMU, G, PNU, XI, ETA, PHI, NX, NY, BOX, FX, F
    integer(c_int), intent(inout) :: ISTATE(NX, NY)
    integer(c_int), intent(out) :: IERR
    type(cw_params) :: p
-   call cw_params_init(p)
+   p = material_params(A, B, FN, FMU, G, PNU, XI, ETA, PHI)
    p%model = MODEL
-   p%a = A
-   p%b = B
-   p%normal_force = FN
-   p%mu = FMU
-   p%flexibility = CW_FLEX_FROM_MATERIAL
-   p%G = G
-   p%nu = PNU
-   p%xi_x = XI
-   p%xi_y = ETA
-   p%phi = PHI
    call legacy_solve(p, NX, NY, FX, FY, FMZ, WMAC, WMIC, CK, PX, PY, SX, SY, ZMAP, WPAP, WCON, &
                      ISTATE, IERR, BOX, PZ, PMAX, APPR)
 end subroutine CWSOLX
@@ -330,9 +328,9 @@ end subroutine CWSOLX
 ! written.
 subroutine CWJACO(A, B, FN, FMU, G, PNU, XI, ETA, PHI, NX, NY, FX, FY, FMZ, WMAC, DFJ, IERR)
    use, intrinsic :: iso_c_binding, only: c_double, c_int
-   use creepwork, only: cw_params, cw_params_init, cw_result, cw_solver_type, &
-                        CW_FLEX_FROM_MATERIAL, CW_SOLVE_FORCES, CW_OK, CW_ERR_INVALID_INPUT
-   use creepwork_legacy_support, only: any_subnormal
+   use creepwork, only: cw_params, cw_result, cw_solver_type, CW_SOLVE_FORCES, CW_OK, &
+                        CW_ERR_INVALID_INPUT
+   use creepwork_legacy_support, only: any_subnormal, material_params
    implicit none
    real(c_double), intent(in) :: A, B, FN, FMU, G, PNU, XI, ETA, PHI
    integer(c_int), intent(in) :: NX, NY
@@ -348,17 +346,7 @@ subroutine CWJACO(A, B, FN, FMU, G, PNU, XI, ETA, PHI, NX, NY, FX, FY, FMZ, WMAC
       IERR = CW_ERR_INVALID_INPUT
       return
    end if
-   call cw_params_init(p)
-   p%a = A
-   p%b = B
-   p%normal_force = FN
-   p%mu = FMU
-   p%flexibility = CW_FLEX_FROM_MATERIAL
-   p%G = G
-   p%nu = PNU
-   p%xi_x = XI
-   p%xi_y = ETA
-   p%phi = PHI
+   p = material_params(A, B, FN, FMU, G, PNU, XI, ETA, PHI)
    call solver%create(nx=NX, ny=NY, stat=stat)
    IERR = int(stat, c_int)
    if (IERR /= CW_OK) return
@@ -607,11 +595,10 @@ end subroutine CWHERT
 subroutine CWWEAR(A, B, FN, FMU, G, PNU, XI, ETA, PHI, NX, NY, LAW, V, YS, DYS, DEPTH, WMASS, &
                   IERR)
    use, intrinsic :: iso_c_binding, only: c_double, c_int
-   use creepwork, only: cw_params, cw_params_init, cw_solver_type, cw_wear_type, &
-                        cw_wear_params, cw_wear_params_init, cw_wear_result, &
-                        CW_FLEX_FROM_MATERIAL, CW_SOLVE_FULL, CW_OK, CW_ERR_INVALID_INPUT, &
-                        CW_ERR_GRID_OUT_OF_RANGE, CW_MAX_GRID_CELLS
-   use creepwork_legacy_support, only: any_subnormal
+   use creepwork, only: cw_params, cw_solver_type, cw_wear_type, cw_wear_params, &
+                        cw_wear_params_init, cw_wear_result, CW_SOLVE_FULL, CW_OK, &
+                        CW_ERR_INVALID_INPUT, CW_ERR_GRID_OUT_OF_RANGE, CW_MAX_GRID_CELLS
+   use creepwork_legacy_support, only: any_subnormal, material_params
    implicit none
    real(c_double), intent(in) :: A, B, FN, FMU, G, PNU, XI, ETA, PHI, V
    integer(c_int), intent(in) :: NX, NY, LAW
@@ -633,17 +620,7 @@ subroutine CWWEAR(A, B, FN, FMU, G, PNU, XI, ETA, PHI, NX, NY, LAW, V, YS, DYS, 
       IERR = CW_ERR_INVALID_INPUT
       return
    end if
-   call cw_params_init(p)
-   p%a = A
-   p%b = B
-   p%normal_force = FN
-   p%mu = FMU
-   p%flexibility = CW_FLEX_FROM_MATERIAL
-   p%G = G
-   p%nu = PNU
-   p%xi_x = XI
-   p%xi_y = ETA
-   p%phi = PHI
+   p = material_params(A, B, FN, FMU, G, PNU, XI, ETA, PHI)
    call cw_wear_params_init(wp)
    wp%law = LAW
    wp%rolling_speed = V
