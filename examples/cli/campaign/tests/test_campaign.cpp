@@ -26,6 +26,7 @@
 #include <creepwork/creepwork.h>
 
 #include "../../tests/json_reader.hpp"
+#include "campaign_test_checks.hpp"
 #include "campaign_test_support.hpp"
 // Last: cmocka defines macros (fail, skip) that clash with the C++ library.
 #include "test_support.h"
@@ -34,29 +35,6 @@ namespace fs = std::filesystem;
 using namespace cwctest;
 
 namespace {
-
-std::string path(const std::string& name) { return g_tools.scratch + "/" + name; }
-
-bool contains(const std::string& text, const std::string& part)
-{
-    return text.find(part) != std::string::npos;
-}
-
-void expect_contains(const std::string& text, const std::string& part)
-{
-    if (!contains(text, part)) {
-        print_error("expected to find\n  %s\nin\n  %s\n", part.c_str(), text.c_str());
-        fail();
-    }
-}
-
-Run expect_status(const Run& r, int status)
-{
-    if (r.status != status)
-        print_error("exit status %d, expected %d; stderr:\n%s\n", r.status, status, r.err.c_str());
-    assert_int_equal(r.status, status);
-    return r;
-}
 
 // Every row of results.csv against a one-by-one solve of its input row:
 // the same status, the same message, the same digits in every column.

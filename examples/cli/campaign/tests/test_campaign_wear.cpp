@@ -26,6 +26,7 @@
 #include <creepwork/creepwork.h>
 
 #include "../../tests/json_reader.hpp"
+#include "campaign_test_checks.hpp"
 #include "campaign_test_support.hpp"
 // Last: cmocka defines macros (fail, skip) that clash with the C++ library.
 #include "test_support.h"
@@ -40,29 +41,6 @@ constexpr double kRadius = 0.46; // --wheel-radius of these tests [m]
 // The profile grid of these tests: -20 .. 20 mm every 0.25 mm (161 nodes).
 const std::vector<std::string> kGrid = {"--profile-from", "-0.02", "--profile-to", "0.02",
                                         "--profile-step", "0.00025"};
-
-std::string path(const std::string& name) { return g_tools.scratch + "/" + name; }
-
-bool contains(const std::string& text, const std::string& part)
-{
-    return text.find(part) != std::string::npos;
-}
-
-void expect_contains(const std::string& text, const std::string& part)
-{
-    if (!contains(text, part)) {
-        print_error("expected to find\n  %s\nin\n  %s\n", part.c_str(), text.c_str());
-        fail();
-    }
-}
-
-Run expect_status(const Run& r, int status)
-{
-    if (r.status != status)
-        print_error("exit status %d, expected %d; stderr:\n%s\n", r.status, status, r.err.c_str());
-    assert_int_equal(r.status, status);
-    return r;
-}
 
 std::string fmt(double v)
 {

@@ -1,0 +1,31 @@
+#include "campaign_test_checks.hpp"
+
+// Last: cmocka defines macros (fail, skip) that clash with the C++ library.
+#include "test_support.h"
+
+namespace cwctest {
+
+std::string path(const std::string& name) { return g_tools.scratch + "/" + name; }
+
+bool contains(const std::string& text, const std::string& part)
+{
+    return text.find(part) != std::string::npos;
+}
+
+void expect_contains(const std::string& text, const std::string& part)
+{
+    if (!contains(text, part)) {
+        print_error("expected to find\n  %s\nin\n  %s\n", part.c_str(), text.c_str());
+        fail();
+    }
+}
+
+Run expect_status(const Run& r, int status)
+{
+    if (r.status != status)
+        print_error("exit status %d, expected %d; stderr:\n%s\n", r.status, status, r.err.c_str());
+    assert_int_equal(r.status, status);
+    return r;
+}
+
+} // namespace cwctest
