@@ -266,6 +266,23 @@ int discretisation_study(const std::string& cache_dir)
                     order_text(st.order[kW]).c_str(), st.richardson, st.finest_used,
                     st.resolved);
     }
+    // Per case: n for all totals within 1 % and the worst error at 40 across.
+    std::printf("\nper case: n for all totals within 1 %% (worst total error at 40 across, %%)\n\n"
+                "| case |");
+    for (const ModelSpec& m : kModels) std::printf(" %s |", m.name);
+    std::printf("\n|---|---|---|---|---|\n");
+    for (size_t c = 0; c < subset.size(); ++c) {
+        std::printf("| %s |", cases[subset[c]].id.c_str());
+        for (size_t mi = 0; mi < studies.size(); ++mi) {
+            const int g = studies[mi].n_needed[0][c];
+            if (g >= kGridCount)
+                std::printf(" > %d", kGrids[kGridCount - 1]);
+            else
+                std::printf(" %d", kGrids[g]);
+            std::printf(" (%.2f) |", studies[mi].err40[c]);
+        }
+        std::printf("\n");
+    }
     return 0;
 }
 
