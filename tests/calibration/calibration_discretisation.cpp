@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "calibration_cases.hpp"
+#include "calibration_limit.hpp"
 #include "calibration_metrics.hpp"
 #include "calibration_reference.hpp"
 #include "solver.hpp"
@@ -38,44 +39,6 @@ const ModelSpec kModels[] = {
 };
 
 enum Quantity { kFx, kFy, kMz, kW, kQuantities };
-
-// One quantity's continuum limit from its three finest grids (h = 1/n):
-// Q(h) = Q0 + C h^p. The order p solves
-// (Q3 - Q2)/(Q2 - Q1) = (h3^p - h2^p)/(h2^p - h1^p); the estimate is "clean"
-// when the two differences have one sign, shrink, and give 0.5 <= p <= 4.
-// Otherwise the finest value is taken as the limit.
-struct Limit {
-    double value = 0, order = NAN;
-    bool richardson = false;
-    bool resolved = false; // the differences are at rounding level: no order to see
-};
-
-Limit continuum_limit(const double h[3], const double q[3], double scale)
-{
-    Limit L;
-    L.value = q[2];
-    const double d1 = q[1] - q[0], d2 = q[2] - q[1];
-    if (std::fabs(d1) + std::fabs(d2) <= 1e-10 * scale) {
-        L.resolved = true;
-        return L;
-    }
-    if (!(d1 * d2 > 0.0) || !(std::fabs(d2) < std::fabs(d1))) return L;
-    const double ratio = d2 / d1;
-    const auto model_ratio = [&](double p) {
-        return (std::pow(h[1], p) - std::pow(h[2], p)) / (std::pow(h[0], p) - std::pow(h[1], p));
-    };
-    double lo = 0.5, hi = 4.0; // model_ratio decreases with p
-    if (ratio > model_ratio(lo) || ratio < model_ratio(hi)) return L;
-    for (int it = 0; it < 100; ++it) {
-        const double mid = 0.5 * (lo + hi);
-        (model_ratio(mid) > ratio ? lo : hi) = mid;
-    }
-    L.order = 0.5 * (lo + hi);
-    L.value = q[2] + d2 * std::pow(h[2], L.order) /
-                         (std::pow(h[1], L.order) - std::pow(h[2], L.order));
-    L.richardson = true;
-    return L;
-}
 
 // The measured partial-slip subset: for each of the 7 creepage combinations,
 // the two evaluation cases whose exact 40 x 40 adhesion fraction is nearest
@@ -219,7 +182,7 @@ int discretisation_study(const std::string& cache_dir)
                                        : kFy;
             for (int Q = 0; Q < kQuantities; ++Q) {
                 const double v[3] = {q[grids - 3][Q], q[grids - 2][Q], q[grids - 1][Q]};
-                const Limit L = continuum_limit(h, v, scale[Q]);
+                const ContinuumLimit L = continuum_limit(h, v, scale[Q]);
                 lim[Q] = L.value;
                 if (Q == main_force || Q == kMz || Q == kW) {
                     if (L.resolved)
