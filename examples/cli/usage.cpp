@@ -23,9 +23,10 @@ commands:
              paper's parabola assumption, as CSV and a picture
   campaign   many contacts from a CSV file, or a creep-force table, over MPI
              ranks and threads (built with MPI; creepwork campaign --help)
-  compare    one contact by FASTSIM and by the exact theory on one grid:
-             both models' totals, how far FASTSIM's work distribution is
-             from the exact one, pictures side by side
+  compare    one contact by FASTSIM (or --simplified: its elliptic bound,
+             the calibrated model, all three) and by the exact theory on
+             one grid: the totals, how far each work distribution is from
+             the exact one, pictures side by side
   --version  program and library versions
 
 exit status: 0 success, 1 environment failure (cannot write, gnuplot failed),
