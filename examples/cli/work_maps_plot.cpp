@@ -62,7 +62,9 @@ std::string panel_commands(const MapPanel& p, int state_column, bool outline,
     g << "set title " << gp_quote(title) << "\n"
       << "plot 'gnuplot/work_maps.dat' using ($" << s << " == 1 ? $1 : NaN):2:3:4 "
       << "with boxxyerror fs solid 1.0 noborder lc rgb '#deebf7' notitle, \\\n"
-      << "     '' using ($" << s << " == 2 ? $1 : NaN):2:3:4:" << w
+      // Slip elements, and any element with work: when no element slips the
+      // library puts the (unresolved) work at the trailing edge anyway.
+      << "     '' using ($" << s << " == 2 || $" << w << " > 0 ? $1 : NaN):2:3:4:" << w
       << " with boxxyerror fs solid 1.0 noborder fc palette z notitle";
     if (outline)
         g << ", \\\n     '' using ($" << s

@@ -1,7 +1,9 @@
 // The paper's Fig. 6 for every model at once (creepwork compare --simplified
 // all): each model's energy-consistent work per unit area over the patch,
 // side by side on one colour scale, adhesion elements shaded light blue and
-// slip elements outlined, axes x/a and y/b. Equal colours are equal work in
+// slip elements outlined, axes x/a and y/b (work is drawn wherever there is
+// some: with no slip at all the library puts it at the trailing edge,
+// CW_WORK_UNRESOLVED). Equal colours are equal work in
 // every panel, so a reader sees both where each model puts its work and how
 // much there is.
 #pragma once
