@@ -1,12 +1,16 @@
-// creepwork compare: one contact solved with FASTSIM and with Kalker's exact
-// theory on the same uniform grid; both models' totals, how far FASTSIM's
-// work distribution is from the exact one (compare_metrics.hpp), and the
-// pictures side by side (compare_plots.hpp).
+// creepwork compare: one contact solved with a simplified model (FASTSIM by
+// default; --simplified picks FASTSIM elliptic, the calibrated model, or all
+// three) and with Kalker's exact theory on the same uniform grid; the
+// models' totals, how far each simplified model's work distribution is from
+// the exact one (compare_metrics.hpp), and the pictures side by side
+// (compare_plots.hpp; with all three, work_maps_plot.hpp).
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <functional>
 #include <fstream>
 #include <iostream>
+#include <vector>
 
 #include "cli_error.hpp"
 #include "command_common.hpp"
@@ -21,6 +25,7 @@
 #include "patch_plots.hpp"
 #include "report.hpp"
 #include "units.hpp"
+#include "work_maps_plot.hpp"
 
 namespace cwcli {
 
@@ -72,8 +77,9 @@ void write_compare_file(const std::string& path, const std::string& text)
     if (!f) throw CliError(kExitFailure, "cannot write " + path);
 }
 
-// One row per model; every column names its unit.
-std::string totals_csv(const Solution& f, const Solution& e, const Units& u)
+// One row per model, named by its label; every column names its unit.
+std::string totals_csv(const std::vector<const Solution*>& models,
+                       const std::vector<std::string>& labels, const Units& u)
 {
     using Q = Quantity;
     std::string out = "model,Fx_wheel_" + u.csv_suffix(Q::force) + ",Fy_wheel_" +
@@ -81,9 +87,9 @@ std::string totals_csv(const Solution& f, const Solution& e, const Units& u)
                       ",W_macro_" + u.csv_suffix(Q::work) + ",W_micro_paper_" +
                       u.csv_suffix(Q::work) + ",K,adhesion_fraction,n_contact,n_adhesion,n_slip," +
                       "p_max_" + u.csv_suffix(Q::stress) + "\n";
-    for (const Solution* s : {&f, &e}) {
-        const cw_result& r = s->result;
-        out += model_name(r.model);
+    for (size_t k = 0; k < models.size(); ++k) {
+        const cw_result& r = models[k]->result;
+        out += labels[k];
         for (double v : {u.from_si(Q::force, r.Fx), u.from_si(Q::force, r.Fy),
                          u.from_si(Q::moment, r.Mz), u.from_si(Q::work, r.W_macro),
                          u.from_si(Q::work, r.W_micro_paper), r.K, r.adhesion_fraction})
@@ -100,58 +106,129 @@ std::string shown_metric(double v, int digits = 4)
     return std::isfinite(v) ? fmt(v, digits) : std::string("undefined");
 }
 
-void print_text(std::ostream& os, const Solution& f, const Solution& e, const WorkComparison& m,
-                const Units& u)
+// The simplified models compare solves, in the order of --simplified all.
+struct Simplified {
+    const char* option;  // --simplified value
+    const char* label;   // JSON key, totals.csv row and sub-directory
+    const char* display; // in text and pictures
+    int model, pressure;
+};
+
+const Simplified kSimplified[] = {
+    {"fastsim", "fastsim", "FASTSIM", CW_MODEL_FASTSIM, CW_PRESSURE_PARABOLIC},
+    {"fastsim-elliptic", "fastsim_elliptic", "FASTSIM elliptic", CW_MODEL_FASTSIM,
+     CW_PRESSURE_ELLIPTIC},
+    {"calibrated", "calibrated", "calibrated", CW_MODEL_CALIBRATED, CW_PRESSURE_PARABOLIC},
+};
+
+std::vector<Simplified> chosen_simplified(const std::string& option)
+{
+    std::vector<Simplified> out;
+    for (const Simplified& s : kSimplified)
+        if (option == "all" || option == s.option) out.push_back(s);
+    // Beside the elliptic variant, plain FASTSIM is named by its bound.
+    if (option == "all") out.front().display = "FASTSIM parabolic";
+    return out;
+}
+
+// One column per simplified model, then exact, then each simplified model
+// relative to exact; with FASTSIM alone the table compare always printed.
+void print_text(std::ostream& os, const std::vector<Simplified>& names,
+                const std::vector<Solution>& sims, const Solution& e,
+                const std::vector<WorkComparison>& ms, const Units& u)
 {
     using Q = Quantity;
     const auto val = [&u](double si, Q q) { return u.from_si(q, si); };
-    char line[200];
-    os << "one contact, two models on the same uniform grid " << f.nx << " x " << f.ny
-       << " (box " << fmt(f.grid.box_scale, 4) << " a x " << fmt(f.grid.box_scale, 4)
-       << " b); forces on the wheel\n";
-    std::snprintf(line, sizeof line, "  %-26s %14s %14s %16s\n", "", "FASTSIM", "exact",
-                  "FASTSIM/exact-1");
-    os << line;
+    char cell[64];
+    const Solution& f = sims.front();
+    os << "one contact, " << (sims.size() + 1) << " models on the same uniform grid " << f.nx
+       << " x " << f.ny << " (box " << fmt(f.grid.box_scale, 4) << " a x "
+       << fmt(f.grid.box_scale, 4) << " b); forces on the wheel\n";
+    std::snprintf(cell, sizeof cell, "  %-26s", "");
+    os << cell;
+    for (const Simplified& n : names) {
+        std::snprintf(cell, sizeof cell, " %16s", n.display);
+        os << cell;
+    }
+    std::snprintf(cell, sizeof cell, " %14s", "exact");
+    os << cell;
+    for (const Simplified& n : names) {
+        std::snprintf(cell, sizeof cell, " %18s", (std::string(n.display) + "/exact-1").c_str());
+        os << cell;
+    }
+    os << "\n";
     const struct {
         const char* name;
-        double fv, ev;
-        std::string unit;
+        Q quantity;
+        bool has_unit;
+        double cw_result::*field;
     } rows[] = {
-        {"Fx", val(f.result.Fx, Q::force), val(e.result.Fx, Q::force), u.label(Q::force)},
-        {"Fy", val(f.result.Fy, Q::force), val(e.result.Fy, Q::force), u.label(Q::force)},
-        {"Mz", val(f.result.Mz, Q::moment), val(e.result.Mz, Q::moment), u.label(Q::moment)},
-        {"W_macro", val(f.result.W_macro, Q::work), val(e.result.W_macro, Q::work),
-         u.label(Q::work)},
-        {"W_micro_paper", val(f.result.W_micro_paper, Q::work),
-         val(e.result.W_micro_paper, Q::work), u.label(Q::work)},
-        {"K", f.result.K, e.result.K, ""},
-        {"adhesion_fraction", f.result.adhesion_fraction, e.result.adhesion_fraction, ""},
+        {"Fx", Q::force, true, &cw_result::Fx},
+        {"Fy", Q::force, true, &cw_result::Fy},
+        {"Mz", Q::moment, true, &cw_result::Mz},
+        {"W_macro", Q::work, true, &cw_result::W_macro},
+        {"W_micro_paper", Q::work, true, &cw_result::W_micro_paper},
+        {"K", Q::force, false, &cw_result::K},
+        {"adhesion_fraction", Q::force, false, &cw_result::adhesion_fraction},
     };
     for (const auto& r : rows) {
-        const std::string name = r.unit.empty() ? r.name : std::string(r.name) + " [" + r.unit + "]";
-        const double rel = r.ev != 0.0 ? r.fv / r.ev - 1.0 : NAN;
-        std::snprintf(line, sizeof line, "  %-26s %14.6g %14.6g %+14.1f %%\n", name.c_str(), r.fv,
-                      r.ev, 100.0 * rel);
-        os << line;
+        const auto shown = [&](const Solution& s) {
+            return r.has_unit ? val(s.result.*r.field, r.quantity) : s.result.*r.field;
+        };
+        const std::string name =
+            r.has_unit ? std::string(r.name) + " [" + u.label(r.quantity) + "]" : r.name;
+        std::snprintf(cell, sizeof cell, "  %-26s", name.c_str());
+        os << cell;
+        for (const Solution& s : sims) {
+            std::snprintf(cell, sizeof cell, " %16.6g", shown(s));
+            os << cell;
+        }
+        const double ev = shown(e);
+        std::snprintf(cell, sizeof cell, " %14.6g", ev);
+        os << cell;
+        for (const Solution& s : sims) {
+            const double rel = ev != 0.0 ? shown(s) / ev - 1.0 : NAN;
+            std::snprintf(cell, sizeof cell, " %+16.1f %%", 100.0 * rel);
+            os << cell;
+        }
+        os << "\n";
     }
     os << "work distribution (each map scaled to unit total; 0 = same shape, 2 = disjoint):\n";
-    const auto metric = [&os](const char* what, const std::string& value) {
-        char buf[160];
-        std::snprintf(buf, sizeof buf, "  %-58s %s\n", what, value.c_str());
-        os << buf;
+    // One line per metric; "@S" in its text names the simplified model.
+    const bool one = names.size() == 1;
+    const auto metric = [&](std::string what, const std::function<std::string(size_t)>& value) {
+        const std::string who = one ? names[0].display : "the model";
+        for (size_t at; (at = what.find("@S")) != std::string::npos;) what.replace(at, 2, who);
+        std::string values;
+        for (size_t k = 0; k < names.size(); ++k)
+            values += (k ? "; " : "") + (one ? "" : std::string(names[k].display) + " ") + value(k);
+        char line[200];
+        std::snprintf(line, sizeof line, "  %-58s ", what.c_str());
+        os << line << values << "\n";
     };
-    metric("L1 distance of the energy-consistent work maps", shown_metric(m.map_l1_consistent));
-    metric("L1 distance of FASTSIM's eq. 36 map and the exact D_I", shown_metric(m.map_l1_paper));
-    metric("L1 distance of the lateral work profiles", shown_metric(m.profile_l1));
-    metric("exact dissipation in elements FASTSIM calls adhesion",
-           shown_metric(100.0 * m.exact_power_in_fastsim_adhesion, 3) + " %");
-    metric("FASTSIM work in elements the exact theory calls adhesion",
-           shown_metric(100.0 * m.fastsim_work_in_exact_adhesion, 3) + " %");
-    metric("elements in contact for both whose states differ",
-           std::to_string(m.state_differences) + " of " + std::to_string(e.result.n_contact));
-    metric("work centroid along rolling, x/a (+1 leading edge)",
-           "FASTSIM " + shown_metric(m.centroid_fastsim, 3) + ", exact " +
-               shown_metric(m.centroid_exact, 3));
+    metric("L1 distance of the energy-consistent work maps",
+           [&](size_t k) { return shown_metric(ms[k].map_l1_consistent); });
+    metric("L1 distance of @S's eq. 36 map and the exact D_I",
+           [&](size_t k) { return shown_metric(ms[k].map_l1_paper); });
+    metric("L1 distance of the lateral work profiles",
+           [&](size_t k) { return shown_metric(ms[k].profile_l1); });
+    metric("exact dissipation in elements @S calls adhesion", [&](size_t k) {
+        return shown_metric(100.0 * ms[k].exact_power_in_fastsim_adhesion, 3) + " %";
+    });
+    metric("@S's work in elements exact calls adhesion", [&](size_t k) {
+        return shown_metric(100.0 * ms[k].fastsim_work_in_exact_adhesion, 3) + " %";
+    });
+    metric("elements in contact for both whose states differ", [&](size_t k) {
+        return std::to_string(ms[k].state_differences) + " of " +
+               std::to_string(e.result.n_contact);
+    });
+    std::string centroids;
+    for (size_t k = 0; k < names.size(); ++k)
+        centroids += (k ? "; " : "") + std::string(names[k].display) + " " +
+                     shown_metric(ms[k].centroid_fastsim, 3);
+    char line[200];
+    std::snprintf(line, sizeof line, "  %-58s ", "work centroid along rolling, x/a (+1 leading edge)");
+    os << line << centroids << ", exact " << shown_metric(ms[0].centroid_exact, 3) << "\n";
 }
 
 } // namespace
@@ -161,7 +238,9 @@ int command_compare(int argc, char** argv, int first)
     const auto specs =
         join(join(join(join(material_and_load_options(), creepage_options()), grid_options()),
                   {{"tolerance", OptionKind::number, {}},
-                   {"max-iterations", OptionKind::integer, {}}}),
+                   {"max-iterations", OptionKind::integer, {}},
+                   {"simplified", OptionKind::choice,
+                    {"fastsim", "fastsim-elliptic", "calibrated", "all"}}}),
              output_options());
     ParsedOptions opts;
     if (parse_or_help(specs, argc, argv, first, usage_compare(), opts)) return kExitOk;
@@ -173,42 +252,72 @@ int command_compare(int argc, char** argv, int first)
     const std::string out = opts.text("out", "");
     if (!out.empty()) check_output_target(out, "--out", opts.has("force"));
 
-    cw_params fastsim = c.params;
-    fastsim.model = CW_MODEL_FASTSIM;
-    fastsim.tolerance = 0.0;
-    fastsim.max_iterations = 0;
+    const std::vector<Simplified> names = chosen_simplified(opts.text("simplified", "fastsim"));
     ContactSolver solver(c.grid);
-    const Solution f = solver.solve_full(fastsim);
+    std::vector<Solution> sims;
+    for (const Simplified& n : names) {
+        cw_params p = c.params;
+        p.model = n.model;
+        p.pressure = n.pressure;
+        p.tolerance = 0.0;
+        p.max_iterations = 0;
+        sims.push_back(solver.solve_full(p));
+    }
     const Solution e = solver.solve_full(c.params);
     print_notes(c);
-    const WorkComparison m = compare_work(f, e);
+    std::vector<WorkComparison> ms;
+    for (const Solution& s : sims) ms.push_back(compare_work(s, e));
     const Units& u = c.units;
-    const JsonObject json = JsonObject()
-                                .text("units", u.name())
-                                .object("fastsim", result_json(f.result, f.params, f.grid, u))
-                                .object("exact", result_json(e.result, e.params, e.grid, u))
-                                .object("metrics", metrics_json(m));
+    JsonObject json;
+    json.text("units", u.name());
+    for (size_t k = 0; k < sims.size(); ++k)
+        json.object(names[k].label,
+                    result_json(sims[k].result, sims[k].params, sims[k].grid, u));
+    json.object("exact", result_json(e.result, e.params, e.grid, u));
+    if (names.size() == 1)
+        json.object("metrics", metrics_json(ms[0]));
+    else {
+        JsonObject by_model;
+        for (size_t k = 0; k < ms.size(); ++k) by_model.object(names[k].label, metrics_json(ms[k]));
+        json.object("metrics", by_model);
+    }
 
     if (!out.empty()) {
-        const bool plots = should_plot(opts, static_cast<long>(f.size()));
+        const bool plots = should_plot(opts, static_cast<long>(e.size()));
         StagedOutput dir(out, "--out", opts.has("force"));
         write_compare_file(dir.path("summary.json"), json.str(true) + "\n");
-        write_compare_file(dir.path("totals.csv"), totals_csv(f, e, u));
-        for (const Solution* s : {&f, &e}) {
-            const std::string sub = dir.path(model_name(s->result.model));
-            std::filesystem::create_directories(sub);
-            write_fields_csv(sub + "/fields.csv", *s, u);
-            write_profile_csv(sub + "/profile.csv", *s, u);
+        std::vector<const Solution*> all;
+        std::vector<std::string> labels;
+        for (size_t k = 0; k < sims.size(); ++k) {
+            all.push_back(&sims[k]);
+            labels.push_back(names[k].label);
         }
-        if (plots)
-            write_compare_pictures(dir.path(), f, e, m, u, describe_case(e, u),
-                                   read_plot_style(opts, ForceSign::wheel));
+        all.push_back(&e);
+        labels.push_back("exact");
+        write_compare_file(dir.path("totals.csv"), totals_csv(all, labels, u));
+        for (size_t k = 0; k < all.size(); ++k) {
+            const std::string sub = dir.path(labels[k]);
+            std::filesystem::create_directories(sub);
+            write_fields_csv(sub + "/fields.csv", *all[k], u);
+            write_profile_csv(sub + "/profile.csv", *all[k], u);
+        }
+        const PlotStyle style = read_plot_style(opts, ForceSign::wheel);
+        if (plots && names.size() == 1)
+            write_compare_pictures(dir.path(), sims[0], e, ms[0], u, describe_case(e, u), style,
+                                   names[0].display, names[0].label);
+        else if (plots) {
+            std::vector<MapPanel> panels;
+            for (size_t k = 0; k < sims.size(); ++k)
+                panels.push_back({names[k].display, &sims[k], ms[k].map_l1_consistent});
+            panels.push_back({"exact", &e, NAN}); // the reference: no distance to show
+            write_work_maps_picture(dir.path(), panels, u, describe_case(e, u));
+        }
         dir.commit();
     }
     if (opts.text("format", "text") == "json")
         std::cout << json.str(true) << "\n";
     else
-        print_text(std::cout, f, e, m, u);
+        print_text(std::cout, names, sims, e, ms, u);
     return kExitOk;
 }
 

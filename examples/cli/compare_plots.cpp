@@ -96,7 +96,7 @@ void write_compare_profile(const std::string& path, const Solution& f, const Sol
                         const Units& u, const PatchAxes& axes)
 {
     std::ofstream out(path);
-    out << "# " << axes.ylabel << ", w of FASTSIM and of the exact theory ("
+    out << "# " << axes.ylabel << ", w of the simplified model and of the exact theory ("
         << u.plot_label(Quantity::profile) << ")\n";
     const double k = u.plot_factor(Quantity::profile);
     for (int j = 0; j < e.ny; ++j)
@@ -142,7 +142,7 @@ std::string compare_work_map(const std::string& title, int column, int state_col
 }
 
 std::string compare_profile_plot(const Solution& f, const Solution& e, const WorkComparison& m,
-                         const Units& u, const PatchAxes& axes)
+                         const Units& u, const PatchAxes& axes, const std::string& name)
 {
     const double b = axes.by;
     std::ostringstream g;
@@ -154,13 +154,13 @@ std::string compare_profile_plot(const Solution& f, const Solution& e, const Wor
       << gp_quote("work per unit width [" + u.plot_label(Quantity::profile) + "]")
       << "\nset key top right\nset grid\n"
       << "set title "
-      << gp_quote("Lateral work profile: FASTSIM W = " +
+      << gp_quote("Lateral work profile: " + name + " W = " +
                   fmt(f.result.W_consistent * u.plot_factor(Quantity::work), 5) + ", exact W = " +
                   fmt(e.result.W_consistent * u.plot_factor(Quantity::work), 5) + " " +
                   u.plot_label(Quantity::work) + "; L1 of the shapes " +
                   (std::isfinite(m.profile_l1) ? fmt(m.profile_l1, 3) : std::string("undefined")))
       << "\nplot 'gnuplot/compare_profile.dat' using 1:2 with histeps lw 2 lc rgb '#2166ac' "
-         "title 'FASTSIM', \\\n"
+         "title " << gp_quote(name) << ", \\\n"
       << "     '' using 1:3 with histeps lw 2 lc rgb '#b2182b' title 'exact theory'\n"
       << "unset grid\n";
     return g.str();
@@ -170,7 +170,8 @@ std::string compare_profile_plot(const Solution& f, const Solution& e, const Wor
 
 void write_compare_pictures(const std::string& dir, const Solution& f, const Solution& e,
                             const WorkComparison& m, const Units& u, const std::string& caption,
-                            const PlotStyle& style)
+                            const PlotStyle& style, const std::string& name,
+                            const std::string& label)
 {
     std::filesystem::create_directories(dir + "/gnuplot");
     const PatchAxes axes = compare_axes(e, u, style);
@@ -189,35 +190,35 @@ void write_compare_pictures(const std::string& dir, const Solution& f, const Sol
     const struct {
         std::string png, text;
     } panels[] = {
-        {"slip_adhesion_fastsim.png", compare_state_map("FASTSIM", f.result, kStateFastsim, borders)},
+        {"slip_adhesion_" + label + ".png", compare_state_map(name, f.result, kStateFastsim, borders)},
         {"slip_adhesion_exact.png", compare_state_map("Exact theory", e.result, kStateExact, borders)},
-        {"work_fastsim.png",
-         compare_work_map("FASTSIM: work per unit area (energy-consistent), W = " + fmt(wf, 5) + wunit,
+        {"work_" + label + ".png",
+         compare_work_map(name + ": work per unit area (energy-consistent), W = " + fmt(wf, 5) + wunit,
                   kWorkFastsim, kStateFastsim, both, unit, outline)},
         {"work_exact.png",
          compare_work_map("Exact theory: work per unit area (energy-consistent), W = " + fmt(we, 5) +
                       wunit,
                   kWorkExact, kStateExact, both, unit, outline)},
         {"work_difference.png",
-         compare_work_map("Work share FASTSIM minus exact (maps scaled to unit totals), L1 = " +
+         compare_work_map("Work share " + name + " minus exact (maps scaled to unit totals), L1 = " +
                       (std::isfinite(m.map_l1_consistent) ? fmt(m.map_l1_consistent, 3)
                                                           : std::string("undefined")),
                   kShareDifference, 0, cols[kShareDifference - 1], share_unit, false)},
     };
     std::ostringstream g;
-    g << "# creepwork compare: FASTSIM beside the exact theory. Run from the output directory:\n"
+    g << "# creepwork compare: " << name << " beside the exact theory. Run from the output directory:\n"
       << "#   gnuplot gnuplot/compare.gp\n"
       << "set datafile missing NaN\nset style fill solid 1.0 noborder\n";
     g << gp_png("compare.png", 1400, 1600) << "set multiplot layout 3,2 title "
-      << gp_text_lines({caption, "FASTSIM (left) and Kalker's exact theory (right) on one " +
+      << gp_text_lines({caption, name + " (left) and Kalker's exact theory (right) on one " +
                                      std::to_string(e.nx) + " x " + std::to_string(e.ny) +
                                      " uniform grid; rolling towards " +
                                      (e.params.rolling_direction > 0 ? "+x" : "-x")})
       << " font ',12'\n";
     for (const auto& p : panels) g << frame << p.text;
-    g << compare_profile_plot(f, e, m, u, axes) << "unset multiplot\n";
+    g << compare_profile_plot(f, e, m, u, axes, name) << "unset multiplot\n";
     for (const auto& p : panels) g << gp_png(p.png, 800, 700) << frame << p.text;
-    g << gp_png("profile.png", 900, 600) << compare_profile_plot(f, e, m, u, axes) << "unset output\n";
+    g << gp_png("profile.png", 900, 600) << compare_profile_plot(f, e, m, u, axes, name) << "unset output\n";
     run_gnuplot(dir, "gnuplot/compare.gp", g.str());
 }
 

@@ -23,9 +23,10 @@ commands:
              paper's parabola assumption, as CSV and a picture
   campaign   many contacts from a CSV file, or a creep-force table, over MPI
              ranks and threads (built with MPI; creepwork campaign --help)
-  compare    one contact by FASTSIM and by the exact theory on one grid:
-             both models' totals, how far FASTSIM's work distribution is
-             from the exact one, pictures side by side
+  compare    one contact by FASTSIM (or --simplified: its elliptic bound,
+             the calibrated model, all three) and by the exact theory on
+             one grid: the totals, how far each work distribution is from
+             the exact one, pictures side by side
   --version  program and library versions
 
 exit status: 0 success, 1 environment failure (cannot write, gnuplot failed),
@@ -344,6 +345,12 @@ half-space theory (README "Exact model"). Prints both models' totals and how
 far FASTSIM's frictional-work distribution is from the exact one -- what the
 paper could not check. Distances compare shapes: each map is scaled to unit
 total first.
+  --simplified fastsim|fastsim-elliptic|calibrated|all
+                     the simplified side (default fastsim): FASTSIM with the
+                     paper's parabolic traction bound, with the elliptic
+                     one, the calibrated model (README "Calibrated model"),
+                     or all three at once. "fastsim" in the metric names
+                     below stands for the simplified model compared.
   map_l1_consistent  sum |f/F - e/E| over the elements of the two energy-
                      consistent work maps (0 same shape, 2 disjoint)
   map_l1_paper       the same for FASTSIM's eq. 36 map against the exact
@@ -375,23 +382,30 @@ output: --format text|json (the summary on stdout; forces on the wheel),
 --out DIR, --force, --no-plots, --plot-axes normalised|physical
 (--plot-sign changes nothing here: states and work have no sign).
 
-files with --out:
-  summary.json   units, fastsim{}, exact{} (solve's JSON keys each), metrics{}
+files with --out (<label>: fastsim, fastsim_elliptic or calibrated):
+  summary.json   units, <label>{}, exact{} (solve's JSON keys each),
+                 metrics{}; with --simplified all one object per model and
+                 metrics{<label>{}} for each
   totals.csv     one row per model: model,Fx_wheel_N,Fy_wheel_N,Mz_wheel_N_m,
                  W_macro_J_per_m,W_micro_paper_J_per_m,K,adhesion_fraction,
                  n_contact,n_adhesion,n_slip,p_max_Pa
-  fastsim/fields.csv fastsim/profile.csv exact/fields.csv exact/profile.csv
+  <label>/fields.csv <label>/profile.csv exact/fields.csv exact/profile.csv
                  each model's fields and lateral profile, as solve writes them
                  (every metric can be recomputed from them)
   compare.png    FASTSIM (left) beside exact (right): slip/adhesion maps,
                  energy-consistent work per unit area on one colour scale
                  (slip elements outlined), the lateral work profiles of both,
                  and the work-share difference FASTSIM minus exact
-  slip_adhesion_fastsim.png slip_adhesion_exact.png work_fastsim.png
+  slip_adhesion_<label>.png slip_adhesion_exact.png work_<label>.png
   work_exact.png work_difference.png profile.png, gnuplot/ (the scripts)
+  work_maps.png  with --simplified all, instead of the above: the paper's
+                 Fig. 6 for every model, energy-consistent work per unit area
+                 side by side on one colour scale, adhesion light blue, slip
+                 elements outlined, axes x/a and y/b
 
-example (the paper's Fig. 6 contact):
+examples (the paper's Fig. 6 contact):
   creepwork compare --out fig6-compare
+  creepwork compare --simplified all --out fig6-all
 )";
 }
 

@@ -13,6 +13,9 @@
 //       ns per element, FASTSIM and calibrated, full mode
 //   creepwork_calibration spin-sweep
 //       Mz and W against normalised spin, a/b = 1 and 2, every model (CSV)
+//   creepwork_calibration discretisation [cache-dir]
+//       elements needed for 1 % discretisation error, every model
+//       (calibration_discretisation.hpp)
 //
 // Exploration before a fit (rows for evaluate and cases):
 //   CW_CALIBRATION_TRY="pressure k_long k_lat k_spin_x k_spin_y equalise lateral edge_gain"
@@ -33,6 +36,7 @@
 #include <vector>
 
 #include "calibration_cases.hpp"
+#include "calibration_discretisation.hpp"
 #include "calibration_fit.hpp"
 #include "calibration_metrics.hpp"
 #include "calibration_reference.hpp"
@@ -197,6 +201,7 @@ int main(int argc, char** argv)
     const std::string cmd = argv[1];
     if (cmd == "time") return time_models();
     if (cmd == "spin-sweep") return spin_sweep();
+    if (cmd == "discretisation") return discretisation_study(argc > 2 ? argv[2] : ".");
     if (cmd == "fit") {
         const std::string dir = argc > 2 ? argv[2] : ".";
         const std::vector<CalibrationCase> cases = make_cases(CaseSet::training);

@@ -1,5 +1,6 @@
 #include "calibration_metrics.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace cwcal {
@@ -45,6 +46,18 @@ CaseErrors case_errors(const creepwork::ContactInput& in, const ModelResult& m,
         e.profile_L1 = profile_l1(m.work_map, exact40.work_map, nx, ny);
     }
     return e;
+}
+
+} // namespace cwcal
+
+namespace cwcal {
+
+double median_of(std::vector<double> v)
+{
+    if (v.empty()) return NAN;
+    std::sort(v.begin(), v.end());
+    const size_t n = v.size();
+    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
 
 } // namespace cwcal

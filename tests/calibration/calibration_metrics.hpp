@@ -38,3 +38,10 @@ double unit_l1(const std::vector<double>& a, const std::vector<double>& b);
 double profile_l1(const std::vector<double>& a, const std::vector<double>& b, int nx, int ny);
 
 } // namespace cwcal
+
+namespace cwcal {
+
+// The median of v (NaN when empty).
+double median_of(std::vector<double> v);
+
+} // namespace cwcal
