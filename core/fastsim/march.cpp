@@ -1,5 +1,9 @@
 #include "fastsim/march.hpp"
 
+#include <algorithm>
+
+#include "fastsim/bound_shape.hpp"
+
 namespace creepwork {
 
 bool kernel_isa_supported(KernelIsa isa)
@@ -62,6 +66,18 @@ MarchGeometry::MarchGeometry(const ContactGrid& grid)
             shape_parabolic[p] = grid.pressure_shape(PressureKind::parabolic)[k];
             shape_elliptic[p] = grid.pressure_shape(PressureKind::elliptic)[k];
         }
+}
+
+void MarchGeometry::set_blend(double bound_blend)
+{
+    if (shape_blended.size() == shape_parabolic.size() && bound_blend == blend) return;
+    shape_blended.resize(shape_parabolic.size());
+    blend_max = 0.0;
+    for (Eigen::Index k = 0; k < shape_parabolic.size(); ++k) {
+        shape_blended[k] = blended_bound_shape(shape_parabolic[k], shape_elliptic[k], bound_blend);
+        blend_max = std::max(blend_max, shape_blended[k]);
+    }
+    blend = bound_blend;
 }
 
 void MarchState::resize(int n_elements, int ny_)
@@ -182,7 +198,7 @@ void march_strips(const MarchGeometry& geo, const NormalisedKinematics& kin, Pre
                       geo.x_slip.data(),
                       geo.step.data(),
                       geo.inside.data(),
-                      geo.bound(pressure).data(),
+                      geo.bound(pressure, kin.bound_blend).data(),
                       s.wx.data(),
                       s.wy.data(),
                       s.qx.data(),
