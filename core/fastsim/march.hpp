@@ -66,6 +66,7 @@ struct MarchGeometry {
     // set_blend() last made, in units of the parabolic p0; empty until then.
     Eigen::ArrayXd shape_blended;
     double blend = 0.0, blend_max = 0.0; // blend_max: largest shape_blended
+    double max_parabolic = 0.0;          // largest shape_parabolic
 
     MarchGeometry() = default;
     explicit MarchGeometry(const ContactGrid& grid);
