@@ -51,7 +51,10 @@ void equalise_flexibilities(ModelSetup& s, const ContactInput& in, double L_M, d
 
 } // namespace
 
-CalibratedModel::CalibratedModel(const GridSpec& grid) : march_(grid) {}
+CalibratedModel::CalibratedModel(const GridSpec& grid) : march_(grid)
+{
+    march_.reserve_blended_bound(); // its solves allocate nothing
+}
 
 SolveTotals CalibratedModel::solve(const ContactInput& input, SolveMode mode)
 {

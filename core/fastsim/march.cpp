@@ -69,6 +69,15 @@ MarchGeometry::MarchGeometry(const ContactGrid& grid)
     max_parabolic = shape_parabolic.size() > 0 ? shape_parabolic.maxCoeff() : 0.0;
 }
 
+void MarchGeometry::reserve_blend()
+{
+    if (shape_blended.size() != shape_parabolic.size()) {
+        shape_blended = shape_parabolic; // blend 0
+        blend = 0.0;
+        blend_max = max_parabolic;
+    }
+}
+
 void MarchGeometry::set_blend(double bound_blend)
 {
     const Eigen::Index n = shape_parabolic.size();

@@ -78,8 +78,11 @@ struct MarchGeometry {
         if (bound_blend != 0.0) return shape_blended;
         return kind == PressureKind::parabolic ? shape_parabolic : shape_elliptic;
     }
+    // Allocates shape_blended (models that blend call it when they are made,
+    // so that their solves allocate nothing).
+    void reserve_blend();
     // Makes shape_blended for this blend (nothing to do when it is the last
-    // one); allocates only the first time.
+    // one); allocates only if reserve_blend() was not called.
     void set_blend(double bound_blend);
 };
 
