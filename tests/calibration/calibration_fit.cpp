@@ -46,7 +46,10 @@ namespace {
 // units of its required bound.
 double case_cost(const CaseErrors& e)
 {
-    // CW_FIT_PENALTY explores other weights (the committed table: 10).
+    // CW_FIT_PENALTY and CW_FIT_MAPW explore other weights (the committed
+    // table: 10 and 1).
+    static const double kMapWeight =
+        std::getenv("CW_FIT_MAPW") ? std::atof(std::getenv("CW_FIT_MAPW")) : 1.0;
     static const double kOverPenalty =
         std::getenv("CW_FIT_PENALTY") ? std::atof(std::getenv("CW_FIT_PENALTY")) : 10.0;
     double c = (e.dFx / 3.0) * (e.dFx / 3.0) + (e.dFy / 3.0) * (e.dFy / 3.0);
@@ -58,7 +61,8 @@ double case_cost(const CaseErrors& e)
     c += mz * mz;
     if (e.has_spin) c += (e.dW / 5.0) * (e.dW / 5.0);
     if (e.partial_slip)
-        c += (e.map_L1 / 0.3) * (e.map_L1 / 0.3) + (e.profile_L1 / 0.08) * (e.profile_L1 / 0.08);
+        c += kMapWeight * ((e.map_L1 / 0.3) * (e.map_L1 / 0.3) +
+                           (e.profile_L1 / 0.08) * (e.profile_L1 / 0.08));
     return c;
 }
 

@@ -21,7 +21,8 @@
 //   CW_TRY_BLEND=b   the calibrated row with the table's parameters but the
 //                    traction bound blend b (fastsim/bound_shape.hpp);
 //   CW_FIT_PENALTY=w the fit's weight of force errors beyond 3 % of mu N
-//                    (default 10, calibration_fit.cpp).
+//                    (default 10, calibration_fit.cpp);
+//   CW_FIT_MAPW=w    the fit's weight of the map and profile terms (default 1).
 //
 // The exact references are cached in cache-dir (default: the current
 // directory) as exact_<set>.txt; the first run of a set solves them
