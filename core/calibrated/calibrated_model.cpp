@@ -1,11 +1,13 @@
 #include "calibrated/calibrated_model.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "calibrated/calibration_table.hpp"
 #include "calibrated/moment_flexibility.hpp"
 #include "contact/contact_input.hpp"
 #include "contact/error.hpp"
+#include "fastsim/bound_shape.hpp"
 #include "fastsim/fastsim_setup.hpp"
 
 namespace creepwork {
@@ -49,7 +51,10 @@ void equalise_flexibilities(ModelSetup& s, const ContactInput& in, double L_M, d
 
 } // namespace
 
-CalibratedModel::CalibratedModel(const GridSpec& grid) : march_(grid) {}
+CalibratedModel::CalibratedModel(const GridSpec& grid) : march_(grid)
+{
+    march_.reserve_blended_bound(); // its solves allocate nothing
+}
 
 SolveTotals CalibratedModel::solve(const ContactInput& input, SolveMode mode)
 {
@@ -79,6 +84,8 @@ SolveTotals CalibratedModel::solve_with(const ContactInput& input, SolveMode mod
     s.kin.cx *= params.k_spin_x;
     s.kin.cy *= params.k_spin_y;
     s.kin.edge_gain = params.edge_gain;
+    if (in.pressure == PressureKind::parabolic)
+        s.kin.bound_blend = std::max(-kMaxBoundBlend, std::min(kMaxBoundBlend, params.bound_blend));
     SolveTotals t = march_.solve_setup(s, in, mode);
     t.model = ModelKind::calibrated;
     return t;

@@ -31,6 +31,11 @@ struct CalibrationParams {
     // exact theory's slip zone reaches further in near y = +-b than
     // FASTSIM's. 0: none.
     double edge_gain = 0.0;
+    // Traction bound (and reported pressure) between the laws
+    // (fastsim/bound_shape.hpp): with the parabolic pressure, blended
+    // towards the elliptic law (> 0) or the quartic one (< 0), N unchanged.
+    // 0: the parabolic law.
+    double bound_blend = 0.0;
 };
 
 } // namespace creepwork

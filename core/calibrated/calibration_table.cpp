@@ -36,6 +36,11 @@ CalibrationParams calibration_params(const CalibrationNode& n, const NormalisedC
     p.lateral_moment = fs < 1e150 ? 1.0 / (1.0 + fs * fs) : 0.0;
     p.equalise = std::min(1.0, n.equalise * g);
     p.edge_gain = n.edge * g;
+    // s^2/(h^2 + s^2): 1 for huge or non-finite s, 0 at s = 0 (the bound
+    // does not matter in the linear limit: no element slips).
+    const double s2 = std::isfinite(size) && size < 1e150 ? size * size : 1e300;
+    const double h2 = n.blend_half * n.blend_half;
+    p.bound_blend = s2 > 0.0 ? n.blend * (s2 / (h2 + s2)) : 0.0;
     return p;
 }
 
@@ -56,6 +61,8 @@ CalibrationNode calibration_node(double a_over_b)
     n.fade = (1 - w) * t[k].fade + w * t[k + 1].fade;
     n.equalise = (1 - w) * t[k].equalise + w * t[k + 1].equalise;
     n.edge = (1 - w) * t[k].edge + w * t[k + 1].edge;
+    n.blend = (1 - w) * t[k].blend + w * t[k + 1].blend;
+    n.blend_half = (1 - w) * t[k].blend_half + w * t[k + 1].blend_half;
     return n;
 }
 

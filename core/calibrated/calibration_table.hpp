@@ -7,8 +7,11 @@
 // through L_M and the lateral-moment term, both moments); the lateral-moment
 // term fades as 1/(1 + (fade s)^2) and the flexibilities are equalised with
 // h = equalise g(s), the rigid slip modulated across the strips with
-// edge_gain = edge g(s); alpha, fade, equalise and edge from the table, linear in ln(a/b) between
-// its nodes and constant beyond them. The pressure and bound are parabolic.
+// edge_gain = edge g(s), and the traction bound blended from the parabolic
+// law towards the elliptic one by blend s^2/(blend_half^2 + s^2); alpha,
+// fade, equalise, edge, blend and blend_half from the table, linear in
+// ln(a/b) between its nodes and constant beyond them. The pressure scale is
+// the parabolic law's.
 // The alphas were fitted by creepwork_calibration fit (tests/calibration/)
 // on the training set only; calibration_table_data.cpp is its output.
 #pragma once
@@ -33,6 +36,10 @@ struct CalibrationNode {
     double fade;     // lateral-moment weight 1/(1 + (fade s)^2)
     double equalise; // flexibility equalisation h = equalise g(s)
     double edge;     // lateral modulation edge_gain = edge g(s)
+    // Traction bound blend (fastsim/bound_shape.hpp) blend s^2/(blend_half^2
+    // + s^2): the parabolic law at small slip, towards the elliptic law as
+    // the slip zone grows.
+    double blend, blend_half;
 };
 constexpr int kCalibrationNodes = 5;
 extern const CalibrationNode kCalibrationTable[kCalibrationNodes]; // ascending a/b

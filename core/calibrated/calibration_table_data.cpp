@@ -6,13 +6,14 @@
 namespace creepwork {
 
 const CalibrationNode kCalibrationTable[kCalibrationNodes] = {
-    // node a/b, alpha_long, alpha_lat, alpha_spin_x, alpha_spin_y, fade, equalise, edge
-    // (weighted training cost with all alphas, equalise and edge 0 and fade 1 -> fitted)
-    {0.2, 0.2625, 0.4000, 0.1750, 0.1250, 0.6750, 0.4000, 1.7375}, // 72 cases, 358.1 -> 224.9
-    {0.5, 0.3250, 0.3125, 0.2000, 0.2500, 0.8125, 0.6625, 1.8000}, // 139 cases, 708.4 -> 445.0
-    {1, 0.3000, 0.2750, 0.1125, 0.2375, 1.0625, 0.6250, 1.5875}, // 153 cases, 674.5 -> 404.2
-    {2, 0.1250, 0.2000, 0.0250, 0.1500, 1.4500, 0.6000, 0.9000}, // 126 cases, 681.6 -> 400.1
-    {5, 0.0000, 0.1125, -0.2875, 0.1125, 1.8750, 0.6500, 0.4750}, // 66 cases, 379.6 -> 245.9
+    // node a/b, alpha_long, alpha_lat, alpha_spin_x, alpha_spin_y, fade, equalise, edge,
+    // blend, blend_half (weighted training cost with all alphas, equalise, edge and blend 0,
+    // fade 1 and blend_half 0.35 -> fitted)
+    {0.2, 0.2000, 0.2500, -0.0875, 0.1000, 0.8625, 0.4500, 1.7125, 0.6625, 0.6500}, // 72 cases, cost 358.1 -> 195.1
+    {0.5, 0.1000, 0.1250, -0.2000, 0.0750, 1.1875, 0.4875, 1.5125, 0.6625, 0.3875}, // 139 cases, cost 708.4 -> 366.3
+    {1, 0.1250, 0.1500, -0.2250, 0.0750, 1.7625, 0.4125, 1.4125, 0.5625, 0.4000}, // 153 cases, cost 674.5 -> 329.9
+    {2, 0.0625, 0.1375, -0.2750, 0.0125, 2.3375, 0.2875, 0.7375, 0.4750, 0.5000}, // 126 cases, cost 681.6 -> 336.5
+    {5, -0.0125, 0.1000, -0.5750, -0.0125, 2.9750, 0.1125, 0.4000, 0.7000, 1.0250}, // 66 cases, cost 379.6 -> 208.4
 };
 
 } // namespace creepwork

@@ -267,7 +267,7 @@ ExportArgs export_args(const MarchGeometry& geo, const ContactGrid& g, const Mod
                       s.pressure_scale,
                       geo.x_centre.data(),
                       geo.inside.data(),
-                      geo.bound(s.pressure).data(),
+                      geo.bound(s.pressure, s.kin.bound_blend).data(),
                       g.y_centre().data(),
                       g.x_length().data(),
                       g.y_width().data(),

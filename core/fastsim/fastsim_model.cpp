@@ -42,6 +42,15 @@ SolveTotals FastsimModel::march_and_total(const ModelSetup& setup, const Contact
                                           SolveMode mode, Jacobian* jacobian)
 {
     setup_ = setup;
+    // The calibrated model's blended bound (parabolic units), made before the
+    // march reads it.
+    if (setup_.kin.bound_blend != 0.0) {
+        if (setup_.pressure != PressureKind::parabolic || jacobian)
+            throw Error(ErrorKind::invalid_input,
+                        "a blended traction bound needs the parabolic pressure scale and has no "
+                        "Jacobian");
+        geometry_.set_blend(setup_.kin.bound_blend);
+    }
     if (mode == SolveMode::full)
         march_with_work(geometry_, grid_, setup_, march_, work_, isa_); // work accounted
     // With work, the tangent march repeats the march: the same state, bitwise.
@@ -89,7 +98,8 @@ SolveTotals FastsimModel::march_and_total(const ModelSetup& setup, const Contact
     t.C23 = setup_.C.C23;
     t.C33 = setup_.C.C33;
     t.model = ModelKind::fastsim;
-    t.p_max = setup_.pressure_scale * (setup_.pressure == PressureKind::parabolic
+    t.p_max = setup_.pressure_scale * (setup_.kin.bound_blend != 0.0 ? geometry_.blend_max
+                                       : setup_.pressure == PressureKind::parabolic
                                            ? max_shape_parabolic_
                                            : max_shape_elliptic_);
     if (input.flexibility == FlexibilitySource::kalker_from_material)

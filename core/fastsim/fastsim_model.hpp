@@ -39,6 +39,9 @@ public:
     SolveTotals solve_setup(const ModelSetup& setup, const ContactInput& input, SolveMode mode);
 
     const ContactGrid& grid() const { return grid_; }
+    // Allocates the workspace of a blended traction bound
+    // (NormalisedKinematics::bound_blend), for models that use one.
+    void reserve_blended_bound() { geometry_.reserve_blend(); }
     KernelIsa kernel_isa() const { return isa_; }
     void set_kernel_isa(KernelIsa isa); // throws when the CPU cannot run it
 

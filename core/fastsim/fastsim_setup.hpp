@@ -26,6 +26,11 @@ struct NormalisedKinematics {
     // forces unchanged and moves slip towards the lateral edges. 0 (plain
     // FASTSIM): not applied, so its results are unchanged to the bit.
     double edge_gain = 0;
+    // The calibrated model's traction bound (bound_shape.hpp): 0 is the
+    // pressure law's own shape; otherwise the parabolic law blended towards
+    // the elliptic (> 0) or quartic (< 0) one, which is also the pressure the
+    // fields report. Only with PressureKind::parabolic (p0 = 2N/(pi a b)).
+    double bound_blend = 0;
 };
 
 struct ModelSetup {

@@ -62,9 +62,12 @@ JsonObject input_json(const cw_params& p, const cw_grid& g, const Units& u)
     in.text("model", model_name(p.model));
     if (p.model == CW_MODEL_EXACT)
         in.number("tolerance", p.tolerance).integer("max_iterations", p.max_iterations);
-    // The exact model ignores params.pressure: it solves its own normal problem.
-    in.text("pressure", p.model == CW_MODEL_EXACT ? "discrete_normal_problem"
-                                                  : pressure_name(p.pressure))
+    // The exact model ignores params.pressure: it solves its own normal
+    // problem; the calibrated model uses its own law (README "Calibrated
+    // model": parabolic blended towards Hertz's as the slip grows).
+    in.text("pressure", p.model == CW_MODEL_EXACT        ? "discrete_normal_problem"
+                        : p.model == CW_MODEL_CALIBRATED ? "calibrated_blend"
+                                                         : pressure_name(p.pressure))
         .integer("rolling_direction", p.rolling_direction)
         .text("grid", grid_kind_name(g.kind))
         .integer("nx", g.nx)

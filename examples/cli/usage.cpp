@@ -63,7 +63,8 @@ model:
                     override (at most 256 per direction); --grid strips is an
                     error. calibrated: the simplified theory calibrated to
                     the exact one (README "Calibrated model"): needs G and nu,
-                    its own parabolic pressure.
+                    its own pressure law (parabolic, blended towards Hertz's
+                    as the slip grows; no --pressure).
   --tolerance T     exact model: relative residual at which the tangential
                     solve stops, in [1e-13, 1) (default 1e-8)
   --max-iterations N

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 
 #include "calibrated/calibration_table.hpp"
 
@@ -45,16 +46,23 @@ namespace {
 // units of its required bound.
 double case_cost(const CaseErrors& e)
 {
+    // CW_FIT_PENALTY and CW_FIT_MAPW explore other weights (the committed
+    // table: 10 and 1).
+    static const double kMapWeight =
+        std::getenv("CW_FIT_MAPW") ? std::atof(std::getenv("CW_FIT_MAPW")) : 1.0;
+    static const double kOverPenalty =
+        std::getenv("CW_FIT_PENALTY") ? std::atof(std::getenv("CW_FIT_PENALTY")) : 10.0;
     double c = (e.dFx / 3.0) * (e.dFx / 3.0) + (e.dFy / 3.0) * (e.dFy / 3.0);
     // Beyond the bound, a force error costs ten times more: the bound holds
     // in every case, the others are medians.
     for (double f : {e.dFx, e.dFy})
-        if (f > 3.0) c += 10.0 * (f / 3.0 - 1.0) * (f / 3.0 - 1.0);
+        if (f > 3.0) c += kOverPenalty * (f / 3.0 - 1.0) * (f / 3.0 - 1.0);
     const double mz = e.mz_relative ? e.dMz / 8.0 : e.dMz / 0.5;
     c += mz * mz;
     if (e.has_spin) c += (e.dW / 5.0) * (e.dW / 5.0);
     if (e.partial_slip)
-        c += (e.map_L1 / 0.3) * (e.map_L1 / 0.3) + (e.profile_L1 / 0.08) * (e.profile_L1 / 0.08);
+        c += kMapWeight * ((e.map_L1 / 0.3) * (e.map_L1 / 0.3) +
+                           (e.profile_L1 / 0.08) * (e.profile_L1 / 0.08));
     return c;
 }
 
@@ -69,8 +77,8 @@ int fit_table(const std::vector<CalibrationCase>& cases, const std::vector<CaseR
     // Each node is fitted on the training cases near it: weight
     // exp(-(ln(ab/ab_node))^2 / (2 w^2)), w = 0.45 (about a factor 1.6).
     const double nodes[cw::kCalibrationNodes] = {0.2, 0.5, 1.0, 2.0, 5.0};
-    std::printf("    // node a/b, alpha_long, alpha_lat, alpha_spin_x, alpha_spin_y, fade, equalise, edge "
-                "(weighted cost before -> after)\n");
+    std::printf("    // node a/b, alpha_long, alpha_lat, alpha_spin_x, alpha_spin_y, fade, equalise, edge, "
+                "blend, blend_half (weighted cost before -> after)\n");
     for (double ab : nodes) {
         std::vector<size_t> near;
         std::vector<double> weight;
@@ -81,9 +89,10 @@ int fit_table(const std::vector<CalibrationCase>& cases, const std::vector<CaseR
             near.push_back(k);
             weight.push_back(w);
         }
-        constexpr int kParams = 7;
+        constexpr int kParams = 9;
         auto cost = [&](const double alpha[kParams]) {
-            const cw::CalibrationNode n{ab, alpha[0], alpha[1], alpha[2], alpha[3], alpha[4], alpha[5], alpha[6]};
+            const cw::CalibrationNode n{ab,       alpha[0], alpha[1], alpha[2], alpha[3],
+                                         alpha[4], alpha[5], alpha[6], alpha[7], alpha[8]};
             double total = 0;
             for (size_t q = 0; q < near.size(); ++q) {
                 const CalibrationCase& c = cases[near[q]];
@@ -99,7 +108,7 @@ int fit_table(const std::vector<CalibrationCase>& cases, const std::vector<CaseR
         };
         // Coordinate search: each alpha up or down by the step while that
         // lowers the cost, the step halved when nothing does.
-        double alpha[kParams] = {0, 0, 0, 0, 1, 0, 0};
+        double alpha[kParams] = {0, 0, 0, 0, 1, 0, 0, 0, 0.35};
         const double start = cost(alpha);
         double best = start;
         for (double step = 0.4; step >= 0.01; step *= 0.5) {
@@ -114,6 +123,10 @@ int fit_table(const std::vector<CalibrationCase>& cases, const std::vector<CaseR
                         // Factors stay positive; fade and equalise in [0, ..], h <= 1.
                         if (q < 4 ? trial[q] <= -0.9 : q < 6 ? trial[q] < 0.0 : trial[q] <= -0.9) continue;
                         if (q == 5 && trial[q] > 4.0) continue;
+                        // The blend stays in [0, 1] (parabolic .. elliptic),
+                        // its half-way creepage in [0.05, 3].
+                        if (q == 7 && (trial[q] < 0.0 || trial[q] > 1.0)) continue;
+                        if (q == 8 && (trial[q] < 0.05 || trial[q] > 3.0)) continue;
                         const double c = cost(trial);
                         if (c < best) {
                             best = c;
@@ -123,9 +136,9 @@ int fit_table(const std::vector<CalibrationCase>& cases, const std::vector<CaseR
                     }
             }
         }
-        std::printf("    {%g, %.4f, %.4f, %.4f, %.4f, %.4f, %.4f, %.4f}, // %zu cases, cost %.1f -> %.1f\n",
-                    ab, alpha[0], alpha[1], alpha[2], alpha[3], alpha[4], alpha[5], alpha[6], near.size(),
-                    start, best);
+        std::printf("    {%g, %.4f, %.4f, %.4f, %.4f, %.4f, %.4f, %.4f, %.4f, %.4f}, // %zu cases, cost %.1f -> %.1f\n",
+                    ab, alpha[0], alpha[1], alpha[2], alpha[3], alpha[4], alpha[5], alpha[6], alpha[7],
+                    alpha[8], near.size(), start, best);
         std::fflush(stdout);
     }
     return 0;
