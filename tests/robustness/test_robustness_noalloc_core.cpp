@@ -37,6 +37,30 @@ cw::ContactInput contact(int k)
     return in;
 }
 
+// Buffers for every export of a solver's grid, made before counting.
+struct Exports {
+    std::vector<double> out, y, w, parabola;
+    std::vector<int> states;
+    explicit Exports(const cw::GridSpec& g)
+        : out(static_cast<size_t>(g.nx) * g.ny), y(g.ny), w(g.ny), parabola(g.ny),
+          states(static_cast<size_t>(g.nx) * g.ny)
+    {
+    }
+};
+
+// A full solve and every field (copied and added), the states and the
+// profile: what a wear code reads after each contact.
+void solve_full_and_export_all(cw::Solver& solver, const cw::ContactInput& in, Exports& e)
+{
+    solver.solve(in, cw::SolveMode::full);
+    for (int f = 0; f <= static_cast<int>(cw::Field::work_consistent); ++f) {
+        solver.copy_field(static_cast<cw::Field>(f), e.out.data());
+        solver.add_field(static_cast<cw::Field>(f), 0.5, e.out.data());
+    }
+    solver.copy_state(e.states.data());
+    solver.copy_profile(e.y.data(), e.w.data(), e.parabola.data());
+}
+
 void test_counter_works(void**)
 {
     cw_count_start();
@@ -58,9 +82,7 @@ void test_solver_solve_allocates_nothing(void**)
         cw::Solver solver(g);
         assert_true(cw_count_stop() > 0);
 
-        const size_t n = static_cast<size_t>(g.nx) * g.ny;
-        std::vector<double> out(n), y(g.ny), w(g.ny), parabola(g.ny);
-        std::vector<int> states(n);
+        Exports e(g);
         cw::Jacobian jacobian;
         long allocations = 0;
         for (int k = 0; k < 8; ++k) {
@@ -69,15 +91,9 @@ void test_solver_solve_allocates_nothing(void**)
             solver.solve(in, cw::SolveMode::forces_only);
             for (cw::Field f : {cw::Field::x, cw::Field::y, cw::Field::area, cw::Field::pz,
                                 cw::Field::px, cw::Field::py, cw::Field::mz})
-                solver.copy_field(f, out.data());
-            solver.copy_state(states.data());
-            solver.solve(in, cw::SolveMode::full);
-            for (int f = 0; f <= static_cast<int>(cw::Field::work_consistent); ++f) {
-                solver.copy_field(static_cast<cw::Field>(f), out.data());
-                solver.add_field(static_cast<cw::Field>(f), 0.5, out.data());
-            }
-            solver.copy_state(states.data());
-            solver.copy_profile(y.data(), w.data(), parabola.data());
+                solver.copy_field(f, e.out.data());
+            solver.copy_state(e.states.data());
+            solve_full_and_export_all(solver, in, e);
             // The Jacobian (forward mode in the march): needs N > 0.
             cw::ContactInput jin = in;
             jin.normal_force = 80e3;
@@ -103,9 +119,7 @@ void test_exact_solve_allocates_nothing_after_prepare(void**)
     cw::Solver solver(g);
     solver.prepare(cw::ModelKind::exact);
     assert_true(cw_count_stop() > 0);
-    const size_t n = static_cast<size_t>(g.nx) * g.ny;
-    std::vector<double> out(n), y(g.ny), w(g.ny), parabola(g.ny);
-    std::vector<int> states(n);
+    Exports e(g);
     cw::Jacobian jacobian;
     long allocations = 0;
     for (int k = 0; k < 10; ++k) {
@@ -119,15 +133,9 @@ void test_exact_solve_allocates_nothing_after_prepare(void**)
         solver.solve(in, cw::SolveMode::forces_only);
         for (cw::Field f : {cw::Field::x, cw::Field::y, cw::Field::area, cw::Field::pz,
                             cw::Field::px, cw::Field::py, cw::Field::mz})
-            solver.copy_field(f, out.data());
-        solver.copy_state(states.data());
-        solver.solve(in, cw::SolveMode::full);
-        for (int f = 0; f <= static_cast<int>(cw::Field::work_consistent); ++f) {
-            solver.copy_field(static_cast<cw::Field>(f), out.data());
-            solver.add_field(static_cast<cw::Field>(f), 0.5, out.data());
-        }
-        solver.copy_state(states.data());
-        solver.copy_profile(y.data(), w.data(), parabola.data());
+            solver.copy_field(f, e.out.data());
+        solver.copy_state(e.states.data());
+        solve_full_and_export_all(solver, in, e);
         // The Jacobian: three more linear solves in the prepared workspaces.
         in.normal_force = 80e3;
         solver.solve_jacobian(in, cw::SolveMode::forces_only, jacobian);
@@ -148,9 +156,7 @@ void test_calibrated_solve_allocates_nothing_after_prepare(void**)
         g.ny = 29;
         cw::Solver solver(g);
         solver.prepare(cw::ModelKind::calibrated);
-        const size_t n = static_cast<size_t>(g.nx) * g.ny;
-        std::vector<double> out(n), y(g.ny), w(g.ny), parabola(g.ny);
-        std::vector<int> states(n);
+        Exports e(g);
         long allocations = 0;
         for (int k = 0; k < 8; ++k) {
             if (k == 5) continue; // given flexibilities: refused by this model
@@ -158,14 +164,8 @@ void test_calibrated_solve_allocates_nothing_after_prepare(void**)
             in.model = cw::ModelKind::calibrated;
             cw_count_start();
             solver.solve(in, cw::SolveMode::forces_only);
-            solver.copy_field(cw::Field::pz, out.data());
-            solver.solve(in, cw::SolveMode::full);
-            for (int f = 0; f <= static_cast<int>(cw::Field::work_consistent); ++f) {
-                solver.copy_field(static_cast<cw::Field>(f), out.data());
-                solver.add_field(static_cast<cw::Field>(f), 0.5, out.data());
-            }
-            solver.copy_state(states.data());
-            solver.copy_profile(y.data(), w.data(), parabola.data());
+            solver.copy_field(cw::Field::pz, e.out.data());
+            solve_full_and_export_all(solver, in, e);
             allocations += cw_count_stop();
         }
         assert_int_equal(allocations, 0);
