@@ -134,9 +134,7 @@ std::string compare_work_map(const std::string& title, int column, int state_col
     g << ":2:3:4:" << column
       << " with boxxyerror fs solid 1.0 noborder fc palette z notitle";
     if (outline)
-        g << ", \\\n     '' using ($" << state_column
-          << " == 2 ? $1 : NaN):2:3:4 with boxxyerror lw 0.5 lc rgb '#505050' fs empty border "
-             "notitle";
+        g << gp_slip_outline(state_column);
     g << "\n";
     return g.str();
 }

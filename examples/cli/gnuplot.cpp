@@ -164,4 +164,11 @@ std::string gp_patch_frame(int rolling_direction, const PatchAxes& axes)
     return s.str();
 }
 
+std::string gp_slip_outline(int state_column)
+{
+    return ", \\\n     '' using ($" + std::to_string(state_column) +
+           " == 2 ? $1 : NaN):2:3:4 with boxxyerror lw 0.5 lc rgb '#505050' fs empty border "
+           "notitle";
+}
+
 } // namespace cwcli

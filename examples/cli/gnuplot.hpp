@@ -36,6 +36,11 @@ std::string gp_colour_scale(const std::vector<double>& values, const std::string
 // (moire) between elements.
 extern const char* const kPaddedBoxes;
 
+// A further plot element (it starts with a comma and a line continuation)
+// that outlines the slip elements (state 2 in data column state_column) of
+// the current data file in grey, over a heat map.
+std::string gp_slip_outline(int state_column);
+
 // Two-colour scale for element states: adhesion (1) blue, slip (2) orange.
 std::string gp_state_scale();
 

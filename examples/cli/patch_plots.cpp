@@ -185,8 +185,7 @@ std::string heat_commands(const Panel& p, const std::vector<double>& values, boo
       << "plot 'gnuplot/patch.dat' using 1:2:3:4:" << p.column
       << " with boxxyerror fs solid 1.0 noborder fc palette z notitle";
     if (p.outline_slip && outline)
-        g << ", \\\n     '' using ($5 == 2 ? $1 : NaN):2:3:4 with boxxyerror lw 0.5 "
-             "lc rgb '#505050' fs empty border notitle";
+        g << gp_slip_outline(5);
     g << "\n";
     return g.str();
 }

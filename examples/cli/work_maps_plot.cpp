@@ -67,9 +67,7 @@ std::string panel_commands(const MapPanel& p, int state_column, bool outline,
       << "     '' using ($" << s << " == 2 || $" << w << " > 0 ? $1 : NaN):2:3:4:" << w
       << " with boxxyerror fs solid 1.0 noborder fc palette z notitle";
     if (outline)
-        g << ", \\\n     '' using ($" << s
-          << " == 2 ? $1 : NaN):2:3:4 with boxxyerror lw 0.5 lc rgb '#505050' fs empty border "
-             "notitle";
+        g << gp_slip_outline(s);
     g << "\n";
     return g.str();
 }
