@@ -55,8 +55,10 @@ double case_cost(const CaseErrors& e)
     double c = (e.dFx / 3.0) * (e.dFx / 3.0) + (e.dFy / 3.0) * (e.dFy / 3.0);
     // Beyond the bound, a force error costs ten times more: the bound holds
     // in every case, the others are medians.
+    static const double kLimit =
+        std::getenv("CW_FIT_FORCE_LIMIT") ? std::atof(std::getenv("CW_FIT_FORCE_LIMIT")) : 3.0;
     for (double f : {e.dFx, e.dFy})
-        if (f > 3.0) c += kOverPenalty * (f / 3.0 - 1.0) * (f / 3.0 - 1.0);
+        if (f > kLimit) c += kOverPenalty * (f / 3.0 - kLimit / 3.0) * (f / 3.0 - kLimit / 3.0);
     const double mz = e.mz_relative ? e.dMz / 8.0 : e.dMz / 0.5;
     c += mz * mz;
     if (e.has_spin) c += (e.dW / 5.0) * (e.dW / 5.0);
