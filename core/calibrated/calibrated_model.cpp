@@ -32,21 +32,28 @@ double lateral_moment_term(const ModelSetup& s, double L_M)
     return -b * kappa * s.kin.uy * (s.L2 / L_M);
 }
 
-// Each rigid-slip component's flexibility L_i -> L_i^(1-h) Lc^h
-// (calibration_params.hpp): the component is multiplied by (L_i / Lc)^h.
-void equalise_flexibilities(ModelSetup& s, const ContactInput& in, double L_M, double h)
+// Each rigid-slip component's effective flexibility L_i / k_i (k_i its
+// saturation factor) -> (L_i / k_i)^(1-h) Lc^h (calibration_params.hpp): the
+// component, already multiplied by k_i, is multiplied by (L_i / (k_i Lc))^h.
+// The factors are equalised with the flexibilities because towards full
+// sliding any difference between components turns the traction away from
+// the rigid slip, whichever its origin.
+void equalise_flexibilities(ModelSetup& s, const ContactInput& in, double L_M,
+                            const CalibrationParams& p)
 {
+    const double h = p.equalise;
+    const double L[4] = {s.L1 / p.k_long, s.L2 / p.k_lat, L_M / p.k_spin_x, s.L3 / p.k_spin_y};
     const NormalisedCreepage n = normalised_creepage(in);
     const double w[3] = {std::fabs(n.s_long), std::fabs(n.s_lat), std::fabs(n.s_spin)};
     const double total = w[0] + w[1] + w[2];
     if (!(total > 0.0) || !std::isfinite(total)) return;
-    const double log_c = (w[0] * std::log(s.L1) + w[1] * std::log(s.L2) +
-                          w[2] * 0.5 * (std::log(L_M) + std::log(s.L3))) / total;
-    auto factor = [&](double L) { return std::exp(h * (std::log(L) - log_c)); };
-    s.kin.ux *= factor(s.L1);
-    s.kin.uy *= factor(s.L2);
-    s.kin.cx *= factor(L_M);
-    s.kin.cy *= factor(s.L3);
+    const double log_c = (w[0] * std::log(L[0]) + w[1] * std::log(L[1]) +
+                          w[2] * 0.5 * (std::log(L[2]) + std::log(L[3]))) / total;
+    auto factor = [&](double Li) { return std::exp(h * (std::log(Li) - log_c)); };
+    s.kin.ux *= factor(L[0]);
+    s.kin.uy *= factor(L[1]);
+    s.kin.cx *= factor(L[2]);
+    s.kin.cy *= factor(L[3]);
 }
 
 } // namespace
@@ -73,16 +80,18 @@ SolveTotals CalibratedModel::solve_with(const ContactInput& input, SolveMode mod
     in.pressure = params.pressure;
     in.flexibility_blending = false; // the table replaces CONTACT's blending
     ModelSetup s = make_model_setup(in);
+    double L_M = s.L3;
     if (in.flexibility == FlexibilitySource::kalker_from_material) {
-        const double L_M = moment_consistent_flexibility(s.b, in.G, s.C.C33);
+        L_M = moment_consistent_flexibility(s.b, in.G, s.C.C33);
         s.kin.cx *= s.L3 / L_M;
         s.kin.cx += params.lateral_moment * lateral_moment_term(s, L_M);
-        if (params.equalise > 0.0) equalise_flexibilities(s, in, L_M, params.equalise);
     }
     s.kin.ux *= params.k_long;
     s.kin.uy *= params.k_lat;
     s.kin.cx *= params.k_spin_x;
     s.kin.cy *= params.k_spin_y;
+    if (in.flexibility == FlexibilitySource::kalker_from_material && params.equalise > 0.0)
+        equalise_flexibilities(s, in, L_M, params);
     s.kin.edge_gain = params.edge_gain;
     if (in.pressure == PressureKind::parabolic)
         s.kin.bound_blend = std::max(-kMaxBoundBlend, std::min(kMaxBoundBlend, params.bound_blend));

@@ -34,7 +34,10 @@ CalibrationParams calibration_params(const CalibrationNode& n, const NormalisedC
     p.k_spin_y = 1.0 + n.alpha_spin_y * g;
     const double fs = std::isfinite(size) ? n.fade * size : 1e300;
     p.lateral_moment = fs < 1e150 ? 1.0 / (1.0 + fs * fs) : 0.0;
-    p.equalise = std::min(1.0, n.equalise * g);
+    // Linear in s, not g(s) = s/(1+s): e g(s) stays below e < 1, so the
+    // direction error of unequal flexibilities stayed near full sliding
+    // (a/b 0.2, xi_x + xi_y at 276 % of saturation: 7.0 % of mu N in Fx).
+    p.equalise = std::isfinite(size) ? std::min(1.0, n.equalise * size) : 1.0;
     p.edge_gain = n.edge * g;
     // s^2/(h^2 + s^2): 1 for huge or non-finite s, 0 at s = 0 (the bound
     // does not matter in the linear limit: no element slips).

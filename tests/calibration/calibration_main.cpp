@@ -23,9 +23,13 @@
 //   CW_TRY_OFFSET=s  solves the calibrated row with spin_offset s;
 //   CW_TRY_BLEND=b   the calibrated row with the table's parameters but the
 //                    traction bound blend b (fastsim/bound_shape.hpp);
-//   CW_FIT_PENALTY=w the fit's weight of force errors beyond 3 % of mu N
-//                    (default 10, calibration_fit.cpp);
-//   CW_FIT_MAPW=w    the fit's weight of the map and profile terms (default 1).
+//   CW_FIT_PENALTY=w the fit's weight of force errors beyond the limit
+//                    (default 20, calibration_fit.cpp);
+//   CW_FIT_FORCE_LIMIT=f where that penalty starts, in % of mu N (default 2.5);
+//   CW_FIT_MAPW=w    the fit's weight of the map and profile terms (default 1.5);
+//   CW_TRY_H=h, CW_TRY_KEQ=1, CW_TRY_KSCALE=k (with CW_TRY_BLEND set, maybe
+//                    empty): the calibrated row with equalisation h, all
+//                    four factors 1, or the factors times 1 + k * blend.
 //
 // The exact references are cached in cache-dir (default: the current
 // directory) as exact_<set>.txt; the first run of a set solves them
@@ -273,7 +277,13 @@ int main(int argc, char** argv)
              cw::ContactInput in = c.input;
              in.model = cw::ModelKind::calibrated;
              cw::CalibrationParams p = cw::calibration_for(in);
-             p.bound_blend = std::atof(blend_env);
+             if (*blend_env) p.bound_blend = std::atof(blend_env);
+             if (const char* x = std::getenv("CW_TRY_KSCALE")) {
+                 const double f = 1.0 + std::atof(x) * p.bound_blend;
+                 p.k_long *= f; p.k_lat *= f; p.k_spin_x *= f; p.k_spin_y *= f;
+             }
+             if (const char* x = std::getenv("CW_TRY_H")) p.equalise = std::atof(x);
+             if (std::getenv("CW_TRY_KEQ")) p.k_long = p.k_lat = p.k_spin_x = p.k_spin_y = 1.0;
              return calibrated_result(solver.calibrated_model(), in, p);
          })
                    : Model::Run(simplified(cw::ModelKind::calibrated, cw::PressureKind::parabolic))},
@@ -294,7 +304,7 @@ int main(int argc, char** argv)
                           }});
     if (cmd == "cases")
         std::printf("model,case,a_over_b,nu,level,combo,dFx,dFy,mz_relative,dMz,dW,partial_slip,"
-                    "map_L1,profile_L1\n");
+                    "map_L1,profile_L1,Fx_ref,Fy_ref,Fx,Fy,adhesion_ref,adhesion,Mz_ref,Mz\n");
     else
         std::printf("%s set, %zu cases; reference: exact model %d x %d\n\n"
                     "| model | dFx %%muN med / max | dFy %%muN med / max | dMz %% med / max | "
@@ -308,11 +318,19 @@ int main(int argc, char** argv)
             const CaseErrors e = case_errors(cases[k].input, r, refs[k].ref, refs[k].exact40,
                                              kMapN, kMapN);
             s.add(e, cases[k].input);
+            // The signed forces (in mu N) and adhesion fractions show whether
+            // a force error is one of magnitude or of direction.
+            const double muN = cases[k].input.mu * cases[k].input.normal_force;
+            const double c = std::sqrt(cases[k].input.a * cases[k].input.b);
             if (cmd == "cases")
-                std::printf("%s,%s,%g,%g,%g,%d,%.4g,%.4g,%d,%.4g,%.4g,%d,%.4g,%.4g\n", m.name,
-                            cases[k].id.c_str(), cases[k].a_over_b, cases[k].nu, cases[k].level,
-                            cases[k].combo, e.dFx, e.dFy, int(e.mz_relative), e.dMz,
-                            e.has_spin ? e.dW : NAN, int(e.partial_slip), e.map_L1, e.profile_L1);
+                std::printf("%s,%s,%g,%g,%g,%d,%.4g,%.4g,%d,%.4g,%.4g,%d,%.4g,%.4g,%.5f,%.5f,%.5f,"
+                            "%.5f,%.3f,%.3f,%.5f,%.5f\n",
+                            m.name, cases[k].id.c_str(), cases[k].a_over_b, cases[k].nu,
+                            cases[k].level, cases[k].combo, e.dFx, e.dFy, int(e.mz_relative),
+                            e.dMz, e.has_spin ? e.dW : NAN, int(e.partial_slip), e.map_L1,
+                            e.profile_L1, refs[k].ref.Fx / muN, refs[k].ref.Fy / muN, r.Fx / muN,
+                            r.Fy / muN, refs[k].exact40.adhesion_fraction, r.adhesion_fraction,
+                            refs[k].ref.Mz / (muN * c), r.Mz / (muN * c));
         }
         if (cmd == "evaluate") print_row(m.name, s);
     }

@@ -7,7 +7,8 @@
 //    Table E.3, via kalker_coefficients; see test_core_linear_theory for
 //    FASTSIM's own closed forms).
 //  - Accuracy against the exact model, solved here on a 24 x 24 uniform
-//    grid, for evaluation cases (never training cases).
+//    grid, for evaluation cases (never training cases), in partial slip
+//    and near full sliding.
 //  - Plain FASTSIM is not changed by the model's presence (bitwise).
 #include <algorithm>
 #include <cmath>
@@ -72,8 +73,8 @@ void linear_limit_is_kalkers(void**)
 // CW_MODEL_EXACT). The calibrated model's force errors are held to issue
 // 10's bound (3 % of mu N; measured <= 0.5 %); its Mz and W errors and the
 // L1 distance of its energy-consistent work map from the exact one to what
-// was measured with the committed table plus 10-20 % (Mz 1.1, 2.9, 4.6 %;
-// W 1.3, 2.9, 4.0 %; map 0.345, 0.485, 0.246), and all of them to below
+// was measured with the committed table plus 10-20 % (Mz 1.2, 2.9, 4.8 %;
+// W 1.0, 2.9, 5.1 %; map 0.351, 0.477, 0.247), and all of them to below
 // FASTSIM's (Mz 10.5-11.3 %, W 6.6-13.1 %, map 0.42-0.69).
 struct AccuracyCase {
     const char* name;
@@ -97,9 +98,9 @@ double unit_l1(const std::vector<double>& a, const std::vector<double>& b)
 void closer_to_exact_than_fastsim(void**)
 {
     const AccuracyCase cases[] = {
-        {"a/b 1, xi + spin", 1.0, 0.28, 0.4, 0.0, 0.3, 1.4, 1.6, 0.38},
+        {"a/b 1, xi + spin", 1.0, 0.28, 0.4, 0.0, 0.3, 1.4, 1.2, 0.40},
         {"a/b 2, spin", 2.0, 0.28, 0.0, 0.0, 0.35, 3.5, 3.5, 0.53},
-        {"a/b 0.5, eta + spin", 0.5, 0.5, 0.0, -0.5, 0.4, 5.5, 4.8, 0.27},
+        {"a/b 0.5, eta + spin", 0.5, 0.5, 0.0, -0.5, 0.4, 5.7, 6.0, 0.28},
     };
     cw::Solver s(cwtest::uniform_grid(24, 24));
     printf("  case                   model       dFx %%muN dFy %%muN  dMz %%   dW %%  map L1\n");
@@ -253,6 +254,54 @@ void given_flexibilities_rejected(void**)
     }
 }
 
+// Near full sliding the force points nearly along the rigid slip, so with
+// L1 != L2 (or spin) the direction is what goes wrong: the flexibility
+// equalisation (calibration_table.hpp, h = min(1, e s), the factors
+// equalised too) must turn the calibrated force to the exact one. Two
+// contacts beyond 250 % of saturation, the exact model on the same 24 x 24
+// uniform grid as the yardstick; before that form of the equalisation the
+// evaluation set's worst cases of this kind were 7.0 and 4.5 % of mu N off
+// (README "Calibrated model", item 4). Held to issue 10's bound, 3 % of
+// mu N, per component (measured: 1.8 and 0.7, 0.2 and 1.7; the previous
+// form gave 6.2 % in Fx in the first case, FASTSIM 14.2 %); FASTSIM is
+// printed beside it.
+void saturated_force_direction(void**)
+{
+    struct SlidingCase {
+        const char* name;
+        double a_over_b, nu, xi_sat, eta_sat, phi_sat;
+    };
+    const SlidingCase cases[] = {
+        {"a/b 0.2, xi + eta", 0.2, 0.5, 1.3, -2.4, 0.0},
+        {"a/b 1, xi + spin", 1.0, 0.5, -1.9, 0.0, 1.8},
+    };
+    cw::Solver s(cwtest::uniform_grid(24, 24));
+    printf("  case                 exact Fx, Fy /muN   model       Fx, Fy /muN\n");
+    for (const SlidingCase& k : cases) {
+        cw::ContactInput in = cwtest::steel_contact(k.a_over_b);
+        in.nu = k.nu;
+        const cw::CreepCoefficients C = cw::kalker_coefficients(k.a_over_b, k.nu);
+        const double c = std::sqrt(in.a * in.b), muN = in.mu * in.normal_force;
+        in.xi_x = k.xi_sat * muN / (in.G * c * c * C.C11);
+        in.xi_y = k.eta_sat * muN / (in.G * c * c * C.C22);
+        in.phi = k.phi_sat * muN / (in.G * c * c * c * C.C23);
+        in.model = cw::ModelKind::exact;
+        in.pressure = cw::PressureKind::elliptic;
+        const cw::SolveTotals ex = s.solve(in, cw::SolveMode::forces_only);
+        for (int m = 0; m < 2; ++m) {
+            in.model = m ? cw::ModelKind::calibrated : cw::ModelKind::fastsim;
+            in.pressure = cw::PressureKind::parabolic;
+            const cw::SolveTotals t = s.solve(in, cw::SolveMode::forces_only);
+            printf("  %-20s %7.4f %7.4f   %-10s %7.4f %7.4f\n", k.name, ex.Fx / muN, ex.Fy / muN,
+                   m ? "calibrated" : "FASTSIM", t.Fx / muN, t.Fy / muN);
+            if (m) {
+                assert_true(100 * std::fabs(t.Fx - ex.Fx) / muN <= 3.0);
+                assert_true(100 * std::fabs(t.Fy - ex.Fy) / muN <= 3.0);
+            }
+        }
+    }
+}
+
 } // namespace
 
 int main()
@@ -260,6 +309,7 @@ int main()
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(linear_limit_is_kalkers),
         cmocka_unit_test(closer_to_exact_than_fastsim),
+        cmocka_unit_test(saturated_force_direction),
         cmocka_unit_test(fastsim_unchanged_by_calibrated),
         cmocka_unit_test(blended_bound_carries_normal_force),
         cmocka_unit_test(reported_pressure_is_the_bound),
