@@ -1,8 +1,10 @@
 // Fitting the calibrated model's table on the training set.
 #pragma once
 
+#include <array>
 #include <vector>
 
+#include "calibrated/calibration_table.hpp"
 #include "calibration_cases.hpp"
 #include "calibration_reference.hpp"
 #include "solver.hpp"
@@ -16,7 +18,40 @@ ModelResult solved_result(creepwork::Solver& solver, const creepwork::ContactInp
 ModelResult calibrated_result(creepwork::CalibratedModel& model, const creepwork::ContactInput& in,
                               const creepwork::CalibrationParams& params);
 
-// Fits and prints the table (C++ source for core/calibrated/); returns 0.
+// The weights of the fit's objective (calibration_fit.cpp, case_cost). The
+// defaults are the ones `select-weights` chose by cross-validation on the
+// training set (calibration_select.cpp; README "How the table was generated").
+struct FitWeights {
+    double force_limit = 2.5; // % of mu N where the extra force penalty starts
+    double penalty = 20.0;    // its weight
+    double map_weight = 1.5;  // weight of the map and profile terms
+};
+// The defaults, each replaced by CW_FIT_FORCE_LIMIT, CW_FIT_PENALTY or
+// CW_FIT_MAPW when set.
+FitWeights fit_weights_from_env();
+
+// One case's share of the objective: each of issue 10's errors in units of
+// its bound, squared, plus the force penalty and the map weight of w.
+double case_cost(const CaseErrors& e, const FitWeights& w);
+
+using CalibrationTable = std::array<creepwork::CalibrationNode, creepwork::kCalibrationNodes>;
+
+struct FitResult {
+    CalibrationTable table;
+    // Per node: cases used and weighted cost before -> after.
+    std::array<size_t, creepwork::kCalibrationNodes> cases{};
+    std::array<double, creepwork::kCalibrationNodes> cost_start{}, cost_fitted{};
+};
+
+// Fits the table on the cases whose indices are in use (into cases/refs).
+FitResult fit_nodes(const std::vector<CalibrationCase>& cases, const std::vector<CaseReference>& refs,
+                    const std::vector<size_t>& use, const FitWeights& w);
+
+// table interpolated at a/b as core's calibration_node does for the built-in one.
+creepwork::CalibrationNode interpolated_node(const CalibrationTable& table, double a_over_b);
+
+// Fits on the whole training set and prints the table (C++ source for
+// core/calibrated/); returns 0.
 int fit_table(const std::vector<CalibrationCase>& cases, const std::vector<CaseReference>& refs);
 
 } // namespace cwcal

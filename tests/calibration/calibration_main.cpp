@@ -9,6 +9,9 @@
 //       the same errors per case (CSV)
 //   creepwork_calibration fit [cache-dir]
 //       the calibrated table from the training set (calibration_fit.cpp)
+//   creepwork_calibration select-weights [cache-dir]
+//       the fit's objective weights chosen by 3-fold cross-validation on
+//       the training set (calibration_select.cpp)
 //   creepwork_calibration time
 //       ns per element, FASTSIM and calibrated, full mode
 //   creepwork_calibration spin-sweep
@@ -23,10 +26,10 @@
 //   CW_TRY_OFFSET=s  solves the calibrated row with spin_offset s;
 //   CW_TRY_BLEND=b   the calibrated row with the table's parameters but the
 //                    traction bound blend b (fastsim/bound_shape.hpp);
-//   CW_FIT_PENALTY=w the fit's weight of force errors beyond the limit
-//                    (default 20, calibration_fit.cpp);
-//   CW_FIT_FORCE_LIMIT=f where that penalty starts, in % of mu N (default 2.5);
-//   CW_FIT_MAPW=w    the fit's weight of the map and profile terms (default 1.5);
+//   CW_FIT_PENALTY=w the fit's weight of force errors beyond the limit;
+//   CW_FIT_FORCE_LIMIT=f where that penalty starts, in % of mu N;
+//   CW_FIT_MAPW=w    the fit's weight of the map and profile terms
+//                    (defaults: FitWeights in calibration_fit.hpp);
 //   CW_TRY_H=h, CW_TRY_KEQ=1, CW_TRY_KSCALE=k (with CW_TRY_BLEND set, maybe
 //                    empty): the calibrated row with equalisation h, all
 //                    four factors 1, or the factors times 1 + k * blend.
@@ -50,6 +53,7 @@
 #include "calibration_fit.hpp"
 #include "calibration_metrics.hpp"
 #include "calibration_reference.hpp"
+#include "calibration_select.hpp"
 #include "contact/kalker_coefficients.hpp"
 #include "solver.hpp"
 
@@ -211,19 +215,19 @@ int main(int argc, char** argv)
 {
     if (argc < 2) {
         std::fprintf(stderr, "usage: creepwork_calibration evaluate|cases <set> [cache-dir] | "
-                             "fit [cache-dir]\n");
+                             "fit [cache-dir] | select-weights [cache-dir]\n");
         return 2;
     }
     const std::string cmd = argv[1];
     if (cmd == "time") return time_models();
     if (cmd == "spin-sweep") return spin_sweep();
     if (cmd == "discretisation") return discretisation_study(argc > 2 ? argv[2] : ".");
-    if (cmd == "fit") {
+    if (cmd == "fit" || cmd == "select-weights") {
         const std::string dir = argc > 2 ? argv[2] : ".";
         const std::vector<CalibrationCase> cases = make_cases(CaseSet::training);
         const std::vector<CaseReference> refs =
             exact_references(cases, dir + "/exact_training.txt");
-        return fit_table(cases, refs);
+        return cmd == "fit" ? fit_table(cases, refs) : select_weights(cases, refs);
     }
     if (argc < 3 || (cmd != "evaluate" && cmd != "cases")) {
         std::fprintf(stderr, "unknown command '%s'\n", cmd.c_str());
