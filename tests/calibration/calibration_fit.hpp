@@ -23,7 +23,7 @@ ModelResult calibrated_result(creepwork::CalibratedModel& model, const creepwork
 // training set (calibration_select.cpp; README "How the table was generated").
 struct FitWeights {
     double force_limit = 2.5; // % of mu N where the extra force penalty starts
-    double penalty = 20.0;    // its weight
+    double penalty = 40.0;    // its weight
     double map_weight = 1.5;  // weight of the map and profile terms
 };
 // The defaults, each replaced by CW_FIT_FORCE_LIMIT, CW_FIT_PENALTY or
