@@ -10,14 +10,9 @@ namespace cwcal {
 
 namespace cw = creepwork;
 
-namespace {
-
-constexpr int kFolds = 3;
-
-// Fold of each case: within each combination of creepages (the training set
-// cycles through them by index), the cases sorted by a/b are dealt to the
-// folds in turn, so every fold spans a/b 0.2 .. 5 and holds all seven
-// combinations (10 cases of each). Deterministic: depends on the set only.
+// The training set cycles through the combinations by index; sorting by a/b
+// within each and dealing in turn gives each fold 1/kSelectFolds of every
+// combination across the whole a/b range. Deterministic: depends on the set only.
 std::vector<int> fold_of_cases(const std::vector<CalibrationCase>& cases)
 {
     std::vector<int> fold(cases.size(), 0);
@@ -31,10 +26,12 @@ std::vector<int> fold_of_cases(const std::vector<CalibrationCase>& cases)
         std::stable_sort(members.begin(), members.end(), [&](size_t a, size_t b) {
             return cases[a].a_over_b < cases[b].a_over_b;
         });
-        for (size_t r = 0; r < members.size(); ++r) fold[members[r]] = int(r % kFolds);
+        for (size_t r = 0; r < members.size(); ++r) fold[members[r]] = int(r % kSelectFolds);
     }
     return fold;
 }
+
+namespace {
 
 // Held-out cases beyond each of issue 10's per-case bounds, and how many
 // cases each bound applies to. (Its Mz median target, 8 %, is met by every
@@ -81,28 +78,10 @@ struct TargetCounts {
     }
 };
 
-// The fitted table must be read as core reads the built-in one.
-bool interpolation_matches_core()
-{
-    CalibrationTable t;
-    std::copy(cw::kCalibrationTable, cw::kCalibrationTable + cw::kCalibrationNodes, t.begin());
-    for (double ab : {0.1, 0.2, 0.37, 1.0, 1.9, 3.3, 5.0, 7.0}) {
-        const cw::CalibrationNode a = interpolated_node(t, ab), b = cw::calibration_node(ab);
-        if (std::fabs(a.alpha_long - b.alpha_long) > 1e-14 || std::fabs(a.blend_half - b.blend_half) > 1e-14 ||
-            std::fabs(a.edge - b.edge) > 1e-14 || std::fabs(a.fade - b.fade) > 1e-14)
-            return false;
-    }
-    return true;
-}
-
 } // namespace
 
 int select_weights(const std::vector<CalibrationCase>& cases, const std::vector<CaseReference>& refs)
 {
-    if (!interpolation_matches_core()) {
-        std::fprintf(stderr, "select-weights: interpolated_node disagrees with core's calibration_node\n");
-        return 1;
-    }
     const std::vector<int> fold = fold_of_cases(cases);
     cw::GridSpec g;
     g.kind = cw::GridKind::uniform;
@@ -114,7 +93,7 @@ int select_weights(const std::vector<CalibrationCase>& cases, const std::vector<
                 "| force limit %%muN | penalty | map weight | F > 3 %% | Mz > 20 %% | small Mz > 0.5 | "
                 "W > 5 %% | map > 0.3 | profile > 0.08 | score | neutral cost |\n"
                 "|---|---|---|---|---|---|---|---|---|---|---|\n",
-                cases.size(), kFolds);
+                cases.size(), kSelectFolds);
     FitWeights best;
     double best_score = INFINITY, best_cost = INFINITY;
     for (double limit : {2.0, 2.5, 3.0})
@@ -122,7 +101,7 @@ int select_weights(const std::vector<CalibrationCase>& cases, const std::vector<
             for (double map_weight : {1.0, 1.5, 2.0}) {
                 const FitWeights w{limit, penalty, map_weight};
                 TargetCounts counts;
-                for (int f = 0; f < kFolds; ++f) {
+                for (int f = 0; f < kSelectFolds; ++f) {
                     std::vector<size_t> train, held_out;
                     for (size_t k = 0; k < cases.size(); ++k) (fold[k] == f ? held_out : train).push_back(k);
                     const FitResult fit = fit_nodes(cases, refs, train, w);

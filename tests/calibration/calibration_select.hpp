@@ -10,11 +10,18 @@
 
 namespace cwcal {
 
+constexpr int kSelectFolds = 3;
+
+// Fold (0 .. kSelectFolds-1) of each case: within each combination of
+// creepages, the cases sorted by a/b are dealt to the folds in turn, so
+// every fold spans the a/b range and holds every combination.
+std::vector<int> fold_of_cases(const std::vector<CalibrationCase>& cases);
+
 // For each candidate of a 3 x 3 x 3 grid (force limit 2, 2.5, 3 % of mu N;
 // penalty 10, 20, 40; map weight 1, 1.5, 2): fits on two folds, counts the
 // held-out fold's cases beyond issue 10's bounds, sums over the three folds
 // and prints one row; the best score last. cases must be the training set.
-// Returns 0, or 1 when the table interpolation disagrees with core's.
+// Returns 0.
 int select_weights(const std::vector<CalibrationCase>& cases, const std::vector<CaseReference>& refs);
 
 } // namespace cwcal

@@ -1,0 +1,109 @@
+// The pieces of `creepwork_calibration select-weights` that decide what it
+// measures (README "How the table was generated"), without its solves:
+//  - the folds: every training case in exactly one fold, each fold a third of
+//    every combination of creepages, spread over the whole a/b range;
+//  - the table a fold's fit makes is read exactly as core reads the built-in
+//    one (interpolated_node against core's calibration_node, every member);
+//  - the objective's weights mean what FitWeights says (case_cost of errors
+//    chosen so that each term is known by hand).
+#include <algorithm>
+#include <cmath>
+
+#include "calibration_fit.hpp"
+#include "calibration_select.hpp"
+#include "test_support.h"
+
+namespace {
+
+namespace cw = creepwork;
+
+void folds_split_each_combination_across_a_over_b(void**)
+{
+    const std::vector<cwcal::CalibrationCase> cases = cwcal::make_cases(cwcal::CaseSet::training);
+    const std::vector<int> fold = cwcal::fold_of_cases(cases);
+    assert_int_equal(fold.size(), 210);
+    assert_true(fold == cwcal::fold_of_cases(cases)); // deterministic
+    for (int combo : {1, 2, 3, 4, 5, 6, 7}) {
+        std::vector<std::pair<double, int>> members; // (a/b, fold)
+        int per_fold[cwcal::kSelectFolds] = {};
+        for (size_t k = 0; k < cases.size(); ++k)
+            if (cases[k].combo == combo) {
+                assert_in_range(fold[k], 0, cwcal::kSelectFolds - 1);
+                ++per_fold[fold[k]];
+                members.push_back({cases[k].a_over_b, fold[k]});
+            }
+        // 30 cases of each combination: 10 in each fold.
+        for (int n : per_fold) assert_int_equal(n, 10);
+        // Neighbours in a/b are in different folds, and each fold holds one
+        // of the three smallest and one of the three largest a/b.
+        std::sort(members.begin(), members.end());
+        for (size_t r = 1; r < members.size(); ++r)
+            assert_int_not_equal(members[r].second, members[r - 1].second);
+        for (int f = 0; f < cwcal::kSelectFolds; ++f) {
+            size_t first = members.size(), last = 0;
+            for (size_t r = 0; r < members.size(); ++r)
+                if (members[r].second == f) {
+                    first = std::min(first, r);
+                    last = r;
+                }
+            assert_true(first < size_t(cwcal::kSelectFolds));
+            assert_true(last >= members.size() - cwcal::kSelectFolds);
+        }
+    }
+}
+
+void interpolation_reads_the_table_as_core(void**)
+{
+    cwcal::CalibrationTable t;
+    std::copy(cw::kCalibrationTable, cw::kCalibrationTable + cw::kCalibrationNodes, t.begin());
+    // Below, on, between and beyond the nodes.
+    for (double ab : {0.1, 0.2, 0.37, 0.5, 1.0, 1.9, 2.0, 3.3, 5.0, 7.0}) {
+        const cw::CalibrationNode a = cwcal::interpolated_node(t, ab), b = cw::calibration_node(ab);
+        const double got[] = {a.alpha_long, a.alpha_lat, a.alpha_spin_x, a.alpha_spin_y, a.fade,
+                              a.equalise,   a.edge,      a.blend,        a.blend_half};
+        const double want[] = {b.alpha_long, b.alpha_lat, b.alpha_spin_x, b.alpha_spin_y, b.fade,
+                               b.equalise,   b.edge,      b.blend,        b.blend_half};
+        for (int m = 0; m < 9; ++m) assert_close(got[m], want[m], 1e-14, 1e-15);
+    }
+}
+
+// Each error at its bound costs 1 (times the map weight for map and
+// profile); a force error beyond the limit costs penalty ((dF - limit)/3)^2
+// more. dFx 4 % with the limit at 2.5 and penalty 40: (4/3)^2 + 40 (1.5/3)^2
+// = 16/9 + 10; Mz 8 % (relative) 1, W 5 % 1, map 0.3 and profile 0.08 at
+// weight 1.5: 3.
+void case_cost_weights_each_term(void**)
+{
+    cwcal::CaseErrors e;
+    e.dFx = 4.0;
+    e.dFy = 0.0;
+    e.mz_relative = true;
+    e.dMz = 8.0;
+    e.has_spin = true;
+    e.dW = 5.0;
+    e.partial_slip = true;
+    e.map_L1 = 0.3;
+    e.profile_L1 = 0.08;
+    assert_close(cwcal::case_cost(e, cwcal::FitWeights{2.5, 40.0, 1.5}), 16.0 / 9.0 + 10.0 + 2.0 + 3.0,
+                 1e-14, 0.0);
+    // No penalty below the limit; map weight 1; a small moment in units of
+    // 0.5 % of mu N c; no spin, no partial slip: those terms drop.
+    e.dFx = 2.4;
+    e.mz_relative = false;
+    e.dMz = 0.25;
+    e.has_spin = false;
+    e.partial_slip = false;
+    assert_close(cwcal::case_cost(e, cwcal::FitWeights{2.5, 40.0, 1.0}), 0.64 + 0.25, 1e-14, 0.0);
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(folds_split_each_combination_across_a_over_b),
+        cmocka_unit_test(interpolation_reads_the_table_as_core),
+        cmocka_unit_test(case_cost_weights_each_term),
+    };
+    return cw_run_tests(tests, argc > 1 ? argv[1] : nullptr);
+}
