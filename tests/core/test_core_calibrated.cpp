@@ -95,6 +95,22 @@ double unit_l1(const std::vector<double>& a, const std::vector<double>& b)
     return d;
 }
 
+// A steel contact (cwtest::steel_contact) whose creepages are the given
+// fractions of their saturation values, xi_sat = xi G c^2 C11 / (mu N) etc.
+// (the normalisation of calibration_table.cpp).
+cw::ContactInput contact_at(double a_over_b, double nu, double xi_sat, double eta_sat,
+                      double phi_sat)
+{
+    cw::ContactInput in = cwtest::steel_contact(a_over_b);
+    in.nu = nu;
+    const cw::CreepCoefficients C = cw::kalker_coefficients(a_over_b, nu);
+    const double c = std::sqrt(in.a * in.b), muN = in.mu * in.normal_force;
+    in.xi_x = xi_sat * muN / (in.G * c * c * C.C11);
+    in.xi_y = eta_sat * muN / (in.G * c * c * C.C22);
+    in.phi = phi_sat * muN / (in.G * c * c * c * C.C23);
+    return in;
+}
+
 void closer_to_exact_than_fastsim(void**)
 {
     const AccuracyCase cases[] = {
@@ -105,13 +121,8 @@ void closer_to_exact_than_fastsim(void**)
     cw::Solver s(cwtest::uniform_grid(24, 24));
     printf("  case                   model       dFx %%muN dFy %%muN  dMz %%   dW %%  map L1\n");
     for (const AccuracyCase& k : cases) {
-        cw::ContactInput in = cwtest::steel_contact(k.a_over_b);
-        in.nu = k.nu;
-        const cw::CreepCoefficients C = cw::kalker_coefficients(k.a_over_b, k.nu);
-        const double c = std::sqrt(in.a * in.b), muN = in.mu * in.normal_force;
-        in.xi_x = k.xi_sat * muN / (in.G * c * c * C.C11);
-        in.xi_y = k.eta_sat * muN / (in.G * c * c * C.C22);
-        in.phi = k.phi_sat * muN / (in.G * c * c * c * C.C23);
+        cw::ContactInput in = contact_at(k.a_over_b, k.nu, k.xi_sat, k.eta_sat, k.phi_sat);
+        const double muN = in.mu * in.normal_force;
         in.model = cw::ModelKind::exact;
         in.pressure = cw::PressureKind::elliptic;
         const cw::SolveTotals ex = s.solve(in, cw::SolveMode::full);
@@ -200,12 +211,8 @@ void blended_bound_carries_normal_force(void**)
 void reported_pressure_is_the_bound(void**)
 {
     cw::Solver s(cwtest::uniform_grid(40, 40));
-    cw::ContactInput in = cwtest::steel_contact(1.5);
+    cw::ContactInput in = contact_at(1.5, cwtest::steel_contact(1.5).nu, 0.5, 0.0, 0.3);
     in.model = cw::ModelKind::calibrated;
-    const cw::CreepCoefficients C = cw::kalker_coefficients(1.5, in.nu);
-    const double c = std::sqrt(in.a * in.b), muN = in.mu * in.normal_force;
-    in.xi_x = 0.5 * muN / (in.G * c * c * C.C11);
-    in.phi = 0.3 * muN / (in.G * c * c * c * C.C23);
     const double blend = cw::calibration_for(in).bound_blend;
     printf("  blend at this contact: %.4f\n", blend);
     assert_true(blend > 0.1);
@@ -278,13 +285,8 @@ void saturated_force_direction(void**)
     cw::Solver s(cwtest::uniform_grid(24, 24));
     printf("  case                 exact Fx, Fy /muN   model       Fx, Fy /muN\n");
     for (const SlidingCase& k : cases) {
-        cw::ContactInput in = cwtest::steel_contact(k.a_over_b);
-        in.nu = k.nu;
-        const cw::CreepCoefficients C = cw::kalker_coefficients(k.a_over_b, k.nu);
-        const double c = std::sqrt(in.a * in.b), muN = in.mu * in.normal_force;
-        in.xi_x = k.xi_sat * muN / (in.G * c * c * C.C11);
-        in.xi_y = k.eta_sat * muN / (in.G * c * c * C.C22);
-        in.phi = k.phi_sat * muN / (in.G * c * c * c * C.C23);
+        cw::ContactInput in = contact_at(k.a_over_b, k.nu, k.xi_sat, k.eta_sat, k.phi_sat);
+        const double muN = in.mu * in.normal_force;
         in.model = cw::ModelKind::exact;
         in.pressure = cw::PressureKind::elliptic;
         const cw::SolveTotals ex = s.solve(in, cw::SolveMode::forces_only);
