@@ -11,33 +11,35 @@ namespace cwcal {
 
 namespace cw = creepwork;
 
-ModelResult solved_result(cw::Solver& solver, const cw::ContactInput& in)
+namespace {
+
+// The totals of a full solve and the energy-consistent map that solved
+// (a Solver or a CalibratedModel: both have grid() and copy_field()).
+template <class Solved>
+ModelResult result_of(const cw::SolveTotals& t, const Solved& solved)
 {
-    const cw::SolveTotals& t = solver.solve(in, cw::SolveMode::full);
     ModelResult r;
     r.Fx = t.Fx;
     r.Fy = t.Fy;
     r.Mz = t.Mz;
     r.W = t.W_macro;
     r.adhesion_fraction = t.adhesion_fraction;
-    r.work_map.resize(size_t(solver.grid().nx()) * solver.grid().ny());
-    solver.copy_field(cw::Field::work_consistent, r.work_map.data());
+    r.work_map.resize(size_t(solved.grid().nx()) * solved.grid().ny());
+    solved.copy_field(cw::Field::work_consistent, r.work_map.data());
     return r;
+}
+
+} // namespace
+
+ModelResult solved_result(cw::Solver& solver, const cw::ContactInput& in)
+{
+    return result_of(solver.solve(in, cw::SolveMode::full), solver);
 }
 
 ModelResult calibrated_result(cw::CalibratedModel& model, const cw::ContactInput& in,
                               const cw::CalibrationParams& params)
 {
-    const cw::SolveTotals t = model.solve_with(in, cw::SolveMode::full, params);
-    ModelResult r;
-    r.Fx = t.Fx;
-    r.Fy = t.Fy;
-    r.Mz = t.Mz;
-    r.W = t.W_macro;
-    r.adhesion_fraction = t.adhesion_fraction;
-    r.work_map.resize(size_t(model.grid().nx()) * model.grid().ny());
-    model.copy_field(cw::Field::work_consistent, r.work_map.data());
-    return r;
+    return result_of(model.solve_with(in, cw::SolveMode::full, params), model);
 }
 
 FitWeights fit_weights_from_env()

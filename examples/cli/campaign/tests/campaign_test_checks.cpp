@@ -1,9 +1,26 @@
 #include "campaign_test_checks.hpp"
 
+#include <cstdio>
+#include <filesystem>
+
 // Last: cmocka defines macros (fail, skip) that clash with the C++ library.
 #include "test_support.h"
 
 namespace cwctest {
+
+bool set_up_tools(int argc, char** argv, const char* program)
+{
+    if (argc < 5) {
+        std::fprintf(stderr, "usage: %s <creepwork> <mpirun> <scratch dir> <test>\n", program);
+        return false;
+    }
+    g_tools.creepwork = argv[1];
+    g_tools.mpirun = argv[2];
+    g_tools.scratch = argv[3];
+    std::filesystem::remove_all(g_tools.scratch);
+    std::filesystem::create_directories(g_tools.scratch);
+    return true;
+}
 
 std::string path(const std::string& name) { return g_tools.scratch + "/" + name; }
 

@@ -9,6 +9,11 @@
 
 namespace cwctest {
 
+// Reads main's arguments <creepwork> <mpirun> <scratch dir> <test> into
+// g_tools and makes the scratch directory empty; false (usage printed) when
+// they are missing.
+bool set_up_tools(int argc, char** argv, const char* program);
+
 // A file in this test's scratch directory.
 std::string path(const std::string& name);
 

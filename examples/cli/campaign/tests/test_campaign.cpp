@@ -565,15 +565,7 @@ void table_entries_match_direct_solves(void** state)
 
 int main(int argc, char** argv)
 {
-    if (argc < 5) {
-        std::fprintf(stderr, "usage: test_campaign <creepwork> <mpirun> <scratch dir> <test>\n");
-        return 2;
-    }
-    g_tools.creepwork = argv[1];
-    g_tools.mpirun = argv[2];
-    g_tools.scratch = argv[3];
-    fs::remove_all(g_tools.scratch);
-    fs::create_directories(g_tools.scratch);
+    if (!set_up_tools(argc, argv, "test_campaign")) return 2;
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(ranks_and_threads_bitwise),
         cmocka_unit_test(matches_creepwork_solve),

@@ -529,15 +529,7 @@ void wear_bad_inputs_fail_cleanly(void** state)
 
 int main(int argc, char** argv)
 {
-    if (argc < 5) {
-        std::fprintf(stderr, "usage: test_campaign_wear <creepwork> <mpirun> <scratch> <test>\n");
-        return 2;
-    }
-    g_tools.creepwork = argv[1];
-    g_tools.mpirun = argv[2];
-    g_tools.scratch = argv[3];
-    fs::remove_all(g_tools.scratch);
-    fs::create_directories(g_tools.scratch);
+    if (!set_up_tools(argc, argv, "test_campaign_wear")) return 2;
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(wear_ranks_bitwise),
         cmocka_unit_test(wear_matches_creepwork_wear),
