@@ -30,6 +30,23 @@ struct FitWeights {
 // CW_FIT_MAPW when set.
 FitWeights fit_weights_from_env();
 
+// The calibrated model as the fit sees it, against the exact model's
+// continuum estimate (CaseReference::limit), on the map grid kMapN and on
+// kFineN (its map summed onto the kMapN cells): a table fitted on one grid
+// alone absorbs that grid's discretisation error and is worse on others.
+class FitModel {
+public:
+    FitModel();
+    CaseErrors errors(const CalibrationCase& c, const CaseReference& ref,
+                      const creepwork::CalibrationParams& params, bool fine_grid);
+    // case_cost on both grids, averaged.
+    double cost(const CalibrationCase& c, const CaseReference& ref,
+                const creepwork::CalibrationParams& params, const FitWeights& w);
+
+private:
+    creepwork::CalibratedModel map_grid_, fine_grid_;
+};
+
 // One case's share of the objective: each of issue 10's errors in units of
 // its bound, squared, plus the force penalty and the map weight of w.
 double case_cost(const CaseErrors& e, const FitWeights& w);

@@ -1,9 +1,11 @@
 #include "calibration_reference.hpp"
 
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <sstream>
 
+#include "calibration_limit.hpp"
 #include "solver.hpp"
 
 namespace cwcal {
@@ -56,44 +58,105 @@ bool read_result(std::istream& in, ModelResult& r)
     return true;
 }
 
+// Reads one line per case of the cache (id, then the results picked by
+// slots); true when every case was there.
+template <class Slots>
+bool read_cache(const std::vector<CalibrationCase>& cases, std::vector<CaseReference>& refs,
+                const std::string& path, Slots slots)
+{
+    std::ifstream in(path);
+    std::string line;
+    size_t k = 0;
+    while (k < cases.size() && std::getline(in, line)) {
+        std::istringstream row(line);
+        std::string id;
+        row >> id;
+        if (id != cases[k].id) break;
+        bool ok = true;
+        for (ModelResult* r : slots(refs[k])) ok = ok && read_result(row, *r);
+        if (!ok) break;
+        ++k;
+    }
+    return k == cases.size();
+}
+
+// Solves every case (solve(case, ref) fills the slots) and writes the cache.
+template <class Slots, class Solve>
+void write_cache(const std::vector<CalibrationCase>& cases, std::vector<CaseReference>& refs,
+                 const std::string& path, Slots slots, Solve solve)
+{
+    std::ofstream out(path);
+    out.precision(17);
+    for (size_t k = 0; k < cases.size(); ++k) {
+        solve(cases[k], refs[k]);
+        out << cases[k].id;
+        for (ModelResult* r : slots(refs[k])) write_result(out, *r);
+        out << '\n';
+        std::fprintf(stderr, "\rexact references: %zu/%zu", k + 1, cases.size());
+    }
+    std::fprintf(stderr, "\n");
+}
+
+ModelResult continuum_estimate(const CaseReference& r, const cw::ContactInput& in)
+{
+    const double h[3] = {1.0 / kMapN, 1.0 / kRefN, 1.0 / kFineN};
+    const double muN = in.mu * in.normal_force, c = std::sqrt(in.a * in.b);
+    const auto limit = [&](double ModelResult::*q, double scale) {
+        const double v[3] = {r.exact40.*q, r.ref.*q, r.fine.*q};
+        return continuum_limit(h, v, scale).value;
+    };
+    ModelResult L = r.fine;
+    L.Fx = limit(&ModelResult::Fx, muN);
+    L.Fy = limit(&ModelResult::Fy, muN);
+    L.Mz = limit(&ModelResult::Mz, muN * c);
+    L.W = limit(&ModelResult::W, muN);
+    return L;
+}
+
 } // namespace
+
+std::vector<double> summed_onto_map_grid(const std::vector<double>& fine)
+{
+    constexpr int f = kFineN / kMapN;
+    static_assert(f * kMapN == kFineN, "the fine grid must nest in the map grid");
+    std::vector<double> map(size_t(kMapN) * kMapN, 0.0);
+    for (int j = 0; j < kFineN; ++j)
+        for (int i = 0; i < kFineN; ++i)
+            map[size_t(i / f) + size_t(j / f) * kMapN] += fine[size_t(i) + size_t(j) * kFineN];
+    return map;
+}
 
 std::vector<CaseReference> exact_references(const std::vector<CalibrationCase>& cases,
                                             const std::string& cache_path)
 {
     std::vector<CaseReference> refs(cases.size());
-    {
-        std::ifstream in(cache_path);
-        std::string line;
-        size_t k = 0;
-        while (k < cases.size() && std::getline(in, line)) {
-            std::istringstream row(line);
-            std::string id;
-            row >> id;
-            if (id != cases[k].id) break;
-            if (!read_result(row, refs[k].exact20) || !read_result(row, refs[k].exact40) ||
-                !read_result(row, refs[k].ref))
-                break;
-            ++k;
-        }
-        if (k == cases.size()) return refs;
-    }
+    const auto slots = [](CaseReference& r) {
+        return std::vector<ModelResult*>{&r.exact20, &r.exact40, &r.ref};
+    };
+    if (read_cache(cases, refs, cache_path, slots)) return refs;
     cw::Solver s20(uniform(20)), s40(uniform(kMapN)), sref(uniform(kRefN));
-    std::ofstream out(cache_path);
-    out.precision(17);
-    for (size_t k = 0; k < cases.size(); ++k) {
-        refs[k].exact20 = solve_exact(s20, cases[k].input, false);
-        refs[k].exact40 = solve_exact(s40, cases[k].input, true);
-        refs[k].ref = solve_exact(sref, cases[k].input, false);
-        out << cases[k].id;
-        write_result(out, refs[k].exact20);
-        write_result(out, refs[k].exact40);
-        write_result(out, refs[k].ref);
-        out << '\n';
-        std::fprintf(stderr, "\rexact references: %zu/%zu", k + 1, cases.size());
-    }
-    std::fprintf(stderr, "\n");
+    write_cache(cases, refs, cache_path, slots, [&](const CalibrationCase& c, CaseReference& r) {
+        r.exact20 = solve_exact(s20, c.input, false);
+        r.exact40 = solve_exact(s40, c.input, true);
+        r.ref = solve_exact(sref, c.input, false);
+    });
     return refs;
+}
+
+void continuum_references(const std::vector<CalibrationCase>& cases,
+                          std::vector<CaseReference>& refs, const std::string& cache_path)
+{
+    const auto slots = [](CaseReference& r) { return std::vector<ModelResult*>{&r.fine}; };
+    if (!read_cache(cases, refs, cache_path, slots)) {
+        cw::Solver sfine(uniform(kFineN));
+        write_cache(cases, refs, cache_path, slots,
+                    [&](const CalibrationCase& c, CaseReference& r) {
+                        r.fine = solve_exact(sfine, c.input, true);
+                        r.fine.work_map = summed_onto_map_grid(r.fine.work_map);
+                    });
+    }
+    for (size_t k = 0; k < cases.size(); ++k)
+        refs[k].limit = continuum_estimate(refs[k], cases[k].input);
 }
 
 } // namespace cwcal

@@ -83,10 +83,7 @@ struct TargetCounts {
 int select_weights(const std::vector<CalibrationCase>& cases, const std::vector<CaseReference>& refs)
 {
     const std::vector<int> fold = fold_of_cases(cases);
-    cw::GridSpec g;
-    g.kind = cw::GridKind::uniform;
-    g.nx = g.ny = kMapN;
-    cw::CalibratedModel model(g);
+    FitModel model;
 
     std::printf("training set, %zu cases, %d folds (by a/b within each combination); held-out "
                 "counts summed over the folds\n\n"
@@ -106,12 +103,11 @@ int select_weights(const std::vector<CalibrationCase>& cases, const std::vector<
                     for (size_t k = 0; k < cases.size(); ++k) (fold[k] == f ? held_out : train).push_back(k);
                     const FitResult fit = fit_nodes(cases, refs, train, w);
                     for (size_t k : held_out) {
-                        cw::ContactInput in = cases[k].input;
-                        in.model = cw::ModelKind::calibrated;
                         const cw::CalibrationParams p = cw::calibration_params(
-                            interpolated_node(fit.table, cases[k].a_over_b), cw::normalised_creepage(in));
-                        const ModelResult r = calibrated_result(model, in, p);
-                        counts.add(case_errors(in, r, refs[k].ref, refs[k].exact40, kMapN, kMapN));
+                            interpolated_node(fit.table, cases[k].a_over_b),
+                            cw::normalised_creepage(cases[k].input));
+                        // Both grids, as the fit's objective.
+                        for (bool fine : {false, true}) counts.add(model.errors(cases[k], refs[k], p, fine));
                     }
                 }
                 const double score = counts.score();

@@ -5,7 +5,9 @@
 //  - the table a fold's fit makes is read exactly as core reads the built-in
 //    one (interpolated_node against core's calibration_node, every member);
 //  - the objective's weights mean what FitWeights says (case_cost of errors
-//    chosen so that each term is known by hand).
+//    chosen so that each term is known by hand);
+//  - the fine reference map is summed onto the map grid cell by cell (the
+//    fit compares 160 x 160 maps on the 40 x 40 cells).
 #include <algorithm>
 #include <cmath>
 
@@ -96,6 +98,23 @@ void case_cost_weights_each_term(void**)
     assert_close(cwcal::case_cost(e, cwcal::FitWeights{2.5, 40.0, 1.0}), 0.64 + 0.25, 1e-14, 0.0);
 }
 
+// A 160 x 160 map f(i, j) = i + 1000 j summed over 4 x 4 blocks: coarse
+// cell (I, J) holds sum over i = 4I..4I+3, j = 4J..4J+3 of f
+// = 16 (4I + 1.5) + 16000 (4J + 1.5), exactly (integers below 2^53).
+void fine_map_sums_onto_map_cells(void**)
+{
+    const int n = cwcal::kFineN, m = cwcal::kMapN;
+    std::vector<double> fine(size_t(n) * n);
+    for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i) fine[size_t(i) + size_t(j) * n] = i + 1000.0 * j;
+    const std::vector<double> map = cwcal::summed_onto_map_grid(fine);
+    assert_int_equal(map.size(), size_t(m) * m);
+    for (int J = 0; J < m; ++J)
+        for (int I = 0; I < m; ++I)
+            assert_close(map[size_t(I) + size_t(J) * m], 16.0 * (4 * I + 1.5) + 16000.0 * (4 * J + 1.5),
+                         0.0, 0.0);
+}
+
 } // namespace
 
 int main(int argc, char** argv)
@@ -104,6 +123,7 @@ int main(int argc, char** argv)
         cmocka_unit_test(folds_split_each_combination_across_a_over_b),
         cmocka_unit_test(interpolation_reads_the_table_as_core),
         cmocka_unit_test(case_cost_weights_each_term),
+        cmocka_unit_test(fine_map_sums_onto_map_cells),
     };
     return cw_run_tests(tests, argc > 1 ? argv[1] : nullptr);
 }
