@@ -33,7 +33,8 @@ CalibrationParams calibration_params(const CalibrationNode& n, const NormalisedC
     p.k_spin_x = 1.0 + n.alpha_spin_x * g;
     p.k_spin_y = 1.0 + n.alpha_spin_y * g;
     const double fs = std::isfinite(size) ? n.fade * size : 1e300;
-    p.lateral_moment = fs < 1e150 ? 1.0 / (1.0 + fs * fs) : 0.0;
+    const double fade = fs < 1e75 ? 1.0 / (1.0 + fs * fs) : 0.0;
+    p.lateral_moment = fade * fade;
     // Linear in s, not g(s) = s/(1+s): e g(s) stays below e < 1, so the
     // direction error of unequal flexibilities stayed near full sliding
     // (a/b 0.2, xi_x + xi_y at 276 % of saturation: 7.0 % of mu N in Fx).

@@ -5,7 +5,7 @@
 // s = |(s_long, s_lat, s_spin)| the normalised creepage and g(s) = s/(1+s),
 // so the linear limit (s -> 0) is untouched (Kalker's C11, C22, C23 and,
 // through L_M and the lateral-moment term, both moments); the lateral-moment
-// term fades as 1/(1 + (fade s)^2) and the flexibilities are equalised with
+// term fades as 1/(1 + (fade s)^2)^2 and the flexibilities are equalised with
 // h = min(1, equalise s) (linear in s, so that it reaches 1 towards full
 // sliding, where the tractions oppose the rigid slip), the rigid slip modulated across the strips with
 // edge_gain = edge g(s), and the traction bound blended from the parabolic
@@ -34,7 +34,7 @@ NormalisedCreepage normalised_creepage(const ContactInput& in);
 struct CalibrationNode {
     double a_over_b;
     double alpha_long, alpha_lat, alpha_spin_x, alpha_spin_y;
-    double fade;     // lateral-moment weight 1/(1 + (fade s)^2)
+    double fade;     // lateral-moment weight 1/(1 + (fade s)^2)^2
     double equalise; // flexibility equalisation h = min(1, equalise s)
     double edge;     // lateral modulation edge_gain = edge g(s)
     // Traction bound blend (fastsim/bound_shape.hpp) blend s^2/(blend_half^2

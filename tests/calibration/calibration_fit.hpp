@@ -22,9 +22,9 @@ ModelResult calibrated_result(creepwork::CalibratedModel& model, const creepwork
 // defaults are the ones `select-weights` chose by cross-validation on the
 // training set (calibration_select.cpp; README "How the table was generated").
 struct FitWeights {
-    double force_limit = 2.5; // % of mu N where the extra force penalty starts
+    double force_limit = 3.0; // % of mu N where the extra force penalty starts
     double penalty = 40.0;    // its weight
-    double map_weight = 1.5;  // weight of the map and profile terms
+    double map_weight = 1.0;  // weight of the map and profile terms
 };
 // The defaults, each replaced by CW_FIT_FORCE_LIMIT, CW_FIT_PENALTY or
 // CW_FIT_MAPW when set.
