@@ -61,6 +61,7 @@ void equalise_flexibilities(ModelSetup& s, const ContactInput& in, double L_M,
 CalibratedModel::CalibratedModel(const GridSpec& grid) : march_(grid)
 {
     march_.reserve_blended_bound(); // its solves allocate nothing
+    march_.march_from_leading_edge();
 }
 
 SolveTotals CalibratedModel::solve(const ContactInput& input, SolveMode mode)

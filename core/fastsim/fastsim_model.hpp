@@ -42,6 +42,9 @@ public:
     // Allocates the workspace of a blended traction bound
     // (NormalisedKinematics::bound_blend), for models that use one.
     void reserve_blended_bound() { geometry_.reserve_blend(); }
+    // The march's steps from the leading edge (MarchGeometry::
+    // march_from_leading_edge), for models that use them.
+    void march_from_leading_edge() { geometry_.march_from_leading_edge(grid_); }
     KernelIsa kernel_isa() const { return isa_; }
     void set_kernel_isa(KernelIsa isa); // throws when the CPU cannot run it
 

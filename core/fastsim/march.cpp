@@ -1,5 +1,6 @@
 #include "fastsim/march.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "fastsim/bound_shape.hpp"
@@ -98,6 +99,22 @@ void MarchGeometry::set_blend(double bound_blend)
     // Every blend increases with P, so the largest is at the largest P.
     blend_max = blended_bound_shape(max_parabolic, std::sqrt(max_parabolic), bound_blend);
     blend = bound_blend;
+}
+
+void MarchGeometry::march_from_leading_edge(const ContactGrid& grid)
+{
+    if (grid.spec().kind != GridKind::uniform) return;
+    for (int j = 0; j < ny; ++j) {
+        const double Y = grid.y_centre()[j];
+        double previous = std::sqrt(std::max(0.0, 1.0 - Y * Y)); // where the strip enters
+        for (int m = 0; m < nx; ++m) {
+            const Eigen::Index p = static_cast<Eigen::Index>(m) * stride + j;
+            if (inside[p] == 0.0) continue; // before the ellipse, or after it
+            step[p] = previous - x_centre[p];
+            x_slip[p] = 0.5 * (previous + x_centre[p]);
+            previous = x_centre[p];
+        }
+    }
 }
 
 void MarchState::resize(int n_elements, int ny_)

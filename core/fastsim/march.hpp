@@ -84,6 +84,13 @@ struct MarchGeometry {
     // Makes shape_blended for this blend (nothing to do when it is the last
     // one); allocates only if reserve_blend() was not called.
     void set_blend(double bound_blend);
+    // On the uniform grid, each strip's first step from where the strip
+    // enters the ellipse (X = sqrt(1 - Y^2)), not a full element, and the
+    // rigid slip at each step's midpoint, as Kalker's strip grid does: both
+    // of CONTACT's choices (a full first step, the slip at the element
+    // centre) are first-order errors. Used by the calibrated model; plain
+    // FASTSIM keeps CONTACT's. Nothing to do on the strip grid.
+    void march_from_leading_edge(const ContactGrid& grid);
 };
 
 // Per-element state of one solve, [m * stride + j] (see MarchGeometry): the

@@ -24,7 +24,7 @@ ModelResult calibrated_result(creepwork::CalibratedModel& model, const creepwork
 struct FitWeights {
     double force_limit = 3.0; // % of mu N where the extra force penalty starts
     double penalty = 40.0;    // its weight
-    double map_weight = 1.0;  // weight of the map and profile terms
+    double map_weight = 1.5;  // weight of the map and profile terms
 };
 // The defaults, each replaced by CW_FIT_FORCE_LIMIT, CW_FIT_PENALTY or
 // CW_FIT_MAPW when set.
