@@ -48,25 +48,21 @@ CalibrationParams calibration_params(const CalibrationNode& n, const NormalisedC
     return p;
 }
 
-CalibrationNode calibration_node(double a_over_b)
+CalibrationNode calibration_node(const CalibrationNode* t, double a_over_b)
 {
-    const CalibrationNode* t = kCalibrationTable;
+    const int last = kCalibrationNodes - 1;
     if (!(a_over_b > t[0].a_over_b)) return t[0];
-    if (!(a_over_b < t[kCalibrationNodes - 1].a_over_b)) return t[kCalibrationNodes - 1];
+    if (!(a_over_b < t[last].a_over_b)) return t[last];
     int k = 0;
     while (a_over_b > t[k + 1].a_over_b) ++k;
     const double w = std::log(a_over_b / t[k].a_over_b) / std::log(t[k + 1].a_over_b / t[k].a_over_b);
-    CalibrationNode n;
+    static constexpr double CalibrationNode::*kMembers[] = {
+        &CalibrationNode::alpha_long, &CalibrationNode::alpha_lat, &CalibrationNode::alpha_spin_x,
+        &CalibrationNode::alpha_spin_y, &CalibrationNode::fade,    &CalibrationNode::equalise,
+        &CalibrationNode::edge,       &CalibrationNode::blend,     &CalibrationNode::blend_half};
+    CalibrationNode n = t[k];
     n.a_over_b = a_over_b;
-    n.alpha_long = (1 - w) * t[k].alpha_long + w * t[k + 1].alpha_long;
-    n.alpha_lat = (1 - w) * t[k].alpha_lat + w * t[k + 1].alpha_lat;
-    n.alpha_spin_x = (1 - w) * t[k].alpha_spin_x + w * t[k + 1].alpha_spin_x;
-    n.alpha_spin_y = (1 - w) * t[k].alpha_spin_y + w * t[k + 1].alpha_spin_y;
-    n.fade = (1 - w) * t[k].fade + w * t[k + 1].fade;
-    n.equalise = (1 - w) * t[k].equalise + w * t[k + 1].equalise;
-    n.edge = (1 - w) * t[k].edge + w * t[k + 1].edge;
-    n.blend = (1 - w) * t[k].blend + w * t[k + 1].blend;
-    n.blend_half = (1 - w) * t[k].blend_half + w * t[k + 1].blend_half;
+    for (auto m : kMembers) n.*m = (1 - w) * (t[k].*m) + w * (t[k + 1].*m);
     return n;
 }
 

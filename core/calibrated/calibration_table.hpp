@@ -47,8 +47,15 @@ extern const CalibrationNode kCalibrationTable[kCalibrationNodes]; // ascending 
 
 // The parameters of one node's alphas at normalised creepage s.
 CalibrationParams calibration_params(const CalibrationNode& alphas, const NormalisedCreepage& s);
-// The table's alphas at a/b (interpolated).
-CalibrationNode calibration_node(double a_over_b);
+// The alphas of table (kCalibrationNodes nodes, ascending a/b) at a/b:
+// every member linear in ln(a/b) between nodes, constant beyond them. The
+// fit (tests/calibration/) reads its trial tables through this too.
+CalibrationNode calibration_node(const CalibrationNode* table, double a_over_b);
+// The built-in table's alphas at a/b.
+inline CalibrationNode calibration_node(double a_over_b)
+{
+    return calibration_node(kCalibrationTable, a_over_b);
+}
 
 // The parameters for one contact (a valid input, flexibilities from G, nu).
 CalibrationParams calibration_for(const ContactInput& in);

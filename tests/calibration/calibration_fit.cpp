@@ -103,27 +103,6 @@ double case_cost(const CaseErrors& e, const FitWeights& w)
     return c;
 }
 
-cw::CalibrationNode interpolated_node(const CalibrationTable& t, double a_over_b)
-{
-    const int last = cw::kCalibrationNodes - 1;
-    if (!(a_over_b > t[0].a_over_b)) return t[0];
-    if (!(a_over_b < t[last].a_over_b)) return t[last];
-    int k = 0;
-    while (a_over_b > t[k + 1].a_over_b) ++k;
-    const double w = std::log(a_over_b / t[k].a_over_b) / std::log(t[k + 1].a_over_b / t[k].a_over_b);
-    // Every member after a_over_b, linear in ln(a/b).
-    static constexpr double cw::CalibrationNode::*kMembers[] = {
-        &cw::CalibrationNode::alpha_long, &cw::CalibrationNode::alpha_lat,
-        &cw::CalibrationNode::alpha_spin_x, &cw::CalibrationNode::alpha_spin_y,
-        &cw::CalibrationNode::fade,       &cw::CalibrationNode::equalise,
-        &cw::CalibrationNode::edge,       &cw::CalibrationNode::blend,
-        &cw::CalibrationNode::blend_half};
-    cw::CalibrationNode n = t[k];
-    n.a_over_b = a_over_b;
-    for (auto m : kMembers) n.*m = (1 - w) * (t[k].*m) + w * (t[k + 1].*m);
-    return n;
-}
-
 FitResult fit_nodes(const std::vector<CalibrationCase>& cases, const std::vector<CaseReference>& refs,
                     const std::vector<size_t>& use, const FitWeights& weights)
 {

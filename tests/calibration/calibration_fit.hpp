@@ -64,9 +64,6 @@ struct FitResult {
 FitResult fit_nodes(const std::vector<CalibrationCase>& cases, const std::vector<CaseReference>& refs,
                     const std::vector<size_t>& use, const FitWeights& w);
 
-// table interpolated at a/b as core's calibration_node does for the built-in one.
-creepwork::CalibrationNode interpolated_node(const CalibrationTable& table, double a_over_b);
-
 // Fits on the whole training set and prints the table (C++ source for
 // core/calibrated/); returns 0.
 int fit_table(const std::vector<CalibrationCase>& cases, const std::vector<CaseReference>& refs);

@@ -104,7 +104,7 @@ int select_weights(const std::vector<CalibrationCase>& cases, const std::vector<
                     const FitResult fit = fit_nodes(cases, refs, train, w);
                     for (size_t k : held_out) {
                         const cw::CalibrationParams p = cw::calibration_params(
-                            interpolated_node(fit.table, cases[k].a_over_b),
+                            cw::calibration_node(fit.table.data(), cases[k].a_over_b),
                             cw::normalised_creepage(cases[k].input));
                         // Both grids, as the fit's objective.
                         for (bool fine : {false, true}) counts.add(model.errors(cases[k], refs[k], p, fine));

@@ -2,8 +2,8 @@
 // measures (README "How the table was generated"), without its solves:
 //  - the folds: every training case in exactly one fold, each fold a third of
 //    every combination of creepages, spread over the whole a/b range;
-//  - the table a fold's fit makes is read exactly as core reads the built-in
-//    one (interpolated_node against core's calibration_node, every member);
+//  - the table a fold's fit makes is read by core's calibration_node(table,
+//    a/b), linear in ln(a/b) between nodes (values known by hand);
 //  - the objective's weights mean what FitWeights says (case_cost of errors
 //    chosen so that each term is known by hand);
 //  - the fine reference map is summed onto the map grid cell by cell (the
@@ -54,18 +54,33 @@ void folds_split_each_combination_across_a_over_b(void**)
     }
 }
 
-void interpolation_reads_the_table_as_core(void**)
+// A fold's table is read by core's calibration_node(table, a/b), as the
+// built-in one is: every member linear in ln(a/b) between the nodes and
+// constant beyond them. A table whose members are known functions of the
+// node: member m of node k is 10 m + k, so between nodes k and k + 1 at
+// weight w = ln(ab/ab_k)/ln(ab_k+1/ab_k) it is 10 m + k + w.
+void fold_table_interpolates_in_ln_a_over_b(void**)
 {
+    const double nodes[cw::kCalibrationNodes] = {0.2, 0.5, 1.0, 2.0, 5.0};
     cwcal::CalibrationTable t;
-    std::copy(cw::kCalibrationTable, cw::kCalibrationTable + cw::kCalibrationNodes, t.begin());
-    // Below, on, between and beyond the nodes.
-    for (double ab : {0.1, 0.2, 0.37, 0.5, 1.0, 1.9, 2.0, 3.3, 5.0, 7.0}) {
-        const cw::CalibrationNode a = cwcal::interpolated_node(t, ab), b = cw::calibration_node(ab);
-        const double got[] = {a.alpha_long, a.alpha_lat, a.alpha_spin_x, a.alpha_spin_y, a.fade,
-                              a.equalise,   a.edge,      a.blend,        a.blend_half};
-        const double want[] = {b.alpha_long, b.alpha_lat, b.alpha_spin_x, b.alpha_spin_y, b.fade,
-                               b.equalise,   b.edge,      b.blend,        b.blend_half};
-        for (int m = 0; m < 9; ++m) assert_close(got[m], want[m], 1e-14, 1e-15);
+    for (int k = 0; k < cw::kCalibrationNodes; ++k)
+        t[k] = {nodes[k], 0 + k * 1.0, 10.0 + k, 20.0 + k, 30.0 + k, 40.0 + k,
+                50.0 + k, 60.0 + k, 70.0 + k, 80.0 + k};
+    struct Probe {
+        double ab, position; // position: k + w, clamped to [0, 4]
+    } probes[] = {{0.1, 0.0},
+                  {0.2, 0.0},
+                  {std::sqrt(0.2 * 0.5), 0.5},
+                  {1.0, 2.0},
+                  {std::sqrt(2.0), 2.5},
+                  {2.0 * std::pow(2.5, 0.25), 3.25},
+                  {5.0, 4.0},
+                  {7.0, 4.0}};
+    for (const Probe& q : probes) {
+        const cw::CalibrationNode n = cw::calibration_node(t.data(), q.ab);
+        const double got[] = {n.alpha_long, n.alpha_lat, n.alpha_spin_x, n.alpha_spin_y, n.fade,
+                              n.equalise,   n.edge,      n.blend,        n.blend_half};
+        for (int m = 0; m < 9; ++m) assert_close(got[m], 10.0 * m + q.position, 0.0, 1e-12);
     }
 }
 
@@ -121,7 +136,7 @@ int main(int argc, char** argv)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(folds_split_each_combination_across_a_over_b),
-        cmocka_unit_test(interpolation_reads_the_table_as_core),
+        cmocka_unit_test(fold_table_interpolates_in_ln_a_over_b),
         cmocka_unit_test(case_cost_weights_each_term),
         cmocka_unit_test(fine_map_sums_onto_map_cells),
     };
