@@ -136,11 +136,7 @@ int discretisation_study(const std::string& cache_dir)
     std::vector<std::unique_ptr<cw::Solver>> solvers;
     std::vector<int> n_contact;
     for (int n : kGrids) {
-        cw::GridSpec g;
-        g.kind = cw::GridKind::uniform;
-        g.nx = g.ny = n;
-        g.box_scale = 1.0;
-        solvers.push_back(std::make_unique<cw::Solver>(g));
+        solvers.push_back(std::make_unique<cw::Solver>(uniform_grid(n)));
         n_contact.push_back(solvers.back()->grid().n_contact());
     }
 

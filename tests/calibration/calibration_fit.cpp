@@ -42,16 +42,6 @@ ModelResult calibrated_result(cw::CalibratedModel& model, const cw::ContactInput
     return result_of(model.solve_with(in, cw::SolveMode::full, params), model);
 }
 
-namespace {
-cw::GridSpec uniform_grid(int n)
-{
-    cw::GridSpec g;
-    g.kind = cw::GridKind::uniform;
-    g.nx = g.ny = n;
-    return g;
-}
-} // namespace
-
 FitModel::FitModel() : map_grid_(uniform_grid(kMapN)), fine_grid_(uniform_grid(kFineN)) {}
 
 CaseErrors FitModel::errors(const CalibrationCase& c, const CaseReference& ref,

@@ -170,11 +170,7 @@ int time_models()
 int spin_sweep()
 {
     std::printf("a_over_b,s_spin,model,Mz_over_muNc,W_over_muN\n");
-    cw::GridSpec g40, g80;
-    g40.kind = g80.kind = cw::GridKind::uniform;
-    g40.nx = g40.ny = kMapN;
-    g80.nx = g80.ny = kRefN;
-    cw::Solver s40(g40), s80(g80);
+    cw::Solver s40(uniform_grid(kMapN)), s80(uniform_grid(kRefN));
     for (double ab : {1.0, 2.0})
         for (int q = 0; q <= 24; ++q) {
             const double level = 0.02 * std::pow(150.0, q / 24.0);
@@ -297,10 +293,7 @@ int main(int argc, char** argv)
     std::vector<CaseReference> refs =
         exact_references(cases, dir + "/exact_" + set_name(set) + ".txt");
 
-    cw::GridSpec g;
-    g.kind = cw::GridKind::uniform;
-    g.nx = g.ny = kMapN;
-    cw::Solver solver(g);
+    cw::Solver solver(uniform_grid(kMapN));
     auto simplified = [&](cw::ModelKind kind, cw::PressureKind p) {
         return [&solver, kind, p](const CalibrationCase& c, const CaseReference&) {
             cw::ContactInput in = c.input;
@@ -367,9 +360,7 @@ int main(int argc, char** argv)
     // cells), with the simplified models also on 160 x 160 (maps summed the
     // same way): the models' own error, without the grid's.
     continuum_references(cases, refs, dir + "/exact_" + set_name(set) + "_160.txt");
-    cw::GridSpec gfine = g;
-    gfine.nx = gfine.ny = kFineN;
-    cw::Solver fine_solver(gfine);
+    cw::Solver fine_solver(uniform_grid(kFineN));
     const auto on_fine_grid = [&fine_solver](cw::ModelKind kind, cw::PressureKind p) {
         return [&fine_solver, kind, p](const CalibrationCase& c, const CaseReference&) {
             cw::ContactInput in = c.input;

@@ -5,6 +5,17 @@
 
 namespace cwcal {
 
+std::vector<double> summed_onto_coarse_grid(const std::vector<double>& fine, int n_fine,
+                                            int n_coarse)
+{
+    const int f = n_fine / n_coarse;
+    std::vector<double> map(size_t(n_coarse) * n_coarse, 0.0);
+    for (int j = 0; j < n_fine; ++j)
+        for (int i = 0; i < n_fine; ++i)
+            map[size_t(i / f) + size_t(j / f) * n_coarse] += fine[size_t(i) + size_t(j) * n_fine];
+    return map;
+}
+
 double unit_l1(const std::vector<double>& a, const std::vector<double>& b)
 {
     double sa = 0, sb = 0;

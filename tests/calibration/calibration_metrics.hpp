@@ -32,6 +32,12 @@ struct CaseErrors {
 CaseErrors case_errors(const creepwork::ContactInput& in, const ModelResult& model,
                        const ModelResult& ref, const ModelResult& exact40, int nx, int ny);
 
+// An n_fine x n_fine map [i + j*n_fine] summed over the blocks of each cell
+// of the n_coarse x n_coarse grid whose cells it nests in (n_fine a
+// multiple of n_coarse).
+std::vector<double> summed_onto_coarse_grid(const std::vector<double>& fine, int n_fine,
+                                            int n_coarse);
+
 // L1 distance of two maps each scaled to unit total (0 .. 2).
 double unit_l1(const std::vector<double>& a, const std::vector<double>& b);
 // The same for their lateral profiles (sums over i per row j).

@@ -13,14 +13,6 @@ namespace {
 
 namespace cw = creepwork;
 
-cw::GridSpec uniform(int n)
-{
-    cw::GridSpec g;
-    g.kind = cw::GridKind::uniform;
-    g.nx = g.ny = n;
-    g.box_scale = 1.0;
-    return g;
-}
 
 ModelResult solve_exact(cw::Solver& s, cw::ContactInput in, bool with_map)
 {
@@ -115,15 +107,19 @@ ModelResult continuum_estimate(const CaseReference& r, const cw::ContactInput& i
 
 } // namespace
 
+cw::GridSpec uniform_grid(int n)
+{
+    cw::GridSpec g;
+    g.kind = cw::GridKind::uniform;
+    g.nx = g.ny = n;
+    g.box_scale = 1.0;
+    return g;
+}
+
 std::vector<double> summed_onto_map_grid(const std::vector<double>& fine)
 {
-    constexpr int f = kFineN / kMapN;
-    static_assert(f * kMapN == kFineN, "the fine grid must nest in the map grid");
-    std::vector<double> map(size_t(kMapN) * kMapN, 0.0);
-    for (int j = 0; j < kFineN; ++j)
-        for (int i = 0; i < kFineN; ++i)
-            map[size_t(i / f) + size_t(j / f) * kMapN] += fine[size_t(i) + size_t(j) * kFineN];
-    return map;
+    static_assert(kFineN % kMapN == 0, "the fine grid must nest in the map grid");
+    return summed_onto_coarse_grid(fine, kFineN, kMapN);
 }
 
 std::vector<CaseReference> exact_references(const std::vector<CalibrationCase>& cases,
@@ -134,7 +130,7 @@ std::vector<CaseReference> exact_references(const std::vector<CalibrationCase>& 
         return std::vector<ModelResult*>{&r.exact20, &r.exact40, &r.ref};
     };
     if (read_cache(cases, refs, cache_path, slots)) return refs;
-    cw::Solver s20(uniform(20)), s40(uniform(kMapN)), sref(uniform(kRefN));
+    cw::Solver s20(uniform_grid(20)), s40(uniform_grid(kMapN)), sref(uniform_grid(kRefN));
     write_cache(cases, refs, cache_path, slots, [&](const CalibrationCase& c, CaseReference& r) {
         r.exact20 = solve_exact(s20, c.input, false);
         r.exact40 = solve_exact(s40, c.input, true);
@@ -148,7 +144,7 @@ void continuum_references(const std::vector<CalibrationCase>& cases,
 {
     const auto slots = [](CaseReference& r) { return std::vector<ModelResult*>{&r.fine}; };
     if (!read_cache(cases, refs, cache_path, slots)) {
-        cw::Solver sfine(uniform(kFineN));
+        cw::Solver sfine(uniform_grid(kFineN));
         write_cache(cases, refs, cache_path, slots,
                     [&](const CalibrationCase& c, CaseReference& r) {
                         r.fine = solve_exact(sfine, c.input, true);

@@ -33,6 +33,10 @@ struct CaseReference {
 std::vector<CaseReference> exact_references(const std::vector<CalibrationCase>& cases,
                                             const std::string& cache_path);
 
+// The uniform grid of the references and of the simplified models: n x n
+// elements over the ellipse's bounding box (box scale 1).
+creepwork::GridSpec uniform_grid(int n);
+
 // A kFineN x kFineN map summed onto the kMapN x kMapN grid (its cells nest).
 std::vector<double> summed_onto_map_grid(const std::vector<double>& fine);
 

@@ -17,6 +17,7 @@
 
 #include "calibrated/calibration_table.hpp"
 #include "calibration_limit.hpp"
+#include "calibration_metrics.hpp"
 #include "contact/error.hpp"
 #include "contact/kalker_coefficients.hpp"
 #include "fastsim/bound_shape.hpp"
@@ -89,18 +90,6 @@ struct AccuracyCase {
     double max_map_L1;                             // unit-total work maps [-]
 };
 
-// L1 distance of two maps, each scaled to unit total.
-double unit_l1(const std::vector<double>& a, const std::vector<double>& b)
-{
-    double sa = 0.0, sb = 0.0, d = 0.0;
-    for (size_t k = 0; k < a.size(); ++k) {
-        sa += a[k];
-        sb += b[k];
-    }
-    for (size_t k = 0; k < a.size(); ++k) d += std::fabs(a[k] / sa - b[k] / sb);
-    return d;
-}
-
 // A steel contact (cwtest::steel_contact) whose creepages are the given
 // fractions of their saturation values, xi_sat = xi G c^2 C11 / (mu N) etc.
 // (the normalisation of calibration_table.cpp).
@@ -143,10 +132,8 @@ ExactContinuum exact_continuum(cw::ContactInput in)
         q[3][g] = t.W_macro;
         if (g == 2) {
             e.partial_slip = t.n_slip > 0 && t.n_adhesion > 0;
-            const std::vector<double> fine = cwtest::field(s, cw::Field::work_consistent);
-            e.map48.assign(48 * 48, 0.0);
-            for (int j = 0; j < 96; ++j)
-                for (int i = 0; i < 96; ++i) e.map48[i / 2 + (j / 2) * 48] += fine[i + j * 96];
+            e.map48 = cwcal::summed_onto_coarse_grid(
+                cwtest::field(s, cw::Field::work_consistent), 96, 48);
         }
     }
     const double h[3] = {1.0 / 24, 1.0 / 48, 1.0 / 96};
@@ -179,7 +166,7 @@ void closer_to_exact_than_fastsim(void**)
             err[m][1] = 100 * std::fabs(t.Fy - ex.Fy) / muN;
             err[m][2] = 100 * std::fabs(t.Mz - ex.Mz) / std::fabs(ex.Mz);
             err[m][3] = 100 * std::fabs(t.W_macro - ex.W) / ex.W;
-            err[m][4] = unit_l1(cwtest::field(s, cw::Field::work_consistent), ex.map48);
+            err[m][4] = cwcal::unit_l1(cwtest::field(s, cw::Field::work_consistent), ex.map48);
             printf("  %-22s %-10s %8.2f %8.2f %7.1f %6.1f %6.3f\n", k.name,
                    m ? "calibrated" : "FASTSIM", err[m][0], err[m][1], err[m][2], err[m][3],
                    err[m][4]);
