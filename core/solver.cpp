@@ -42,11 +42,8 @@ const SolveTotals& Solver::solve_impl(const ContactInput& input, SolveMode mode,
         prepare(ModelKind::exact);
         t = jacobian ? exact_->solve_jacobian(input, mode, *jacobian) : exact_->solve(input, mode);
     } else if (input.model == ModelKind::calibrated) {
-        if (jacobian)
-            throw Error(ErrorKind::invalid_input,
-                        "model = calibrated has no Jacobian yet (FASTSIM and exact have; "
-                        "README \"Jacobians\")");
-        t = calibrated_model().solve(input, mode);
+        t = jacobian ? calibrated_model().solve_jacobian(input, mode, *jacobian)
+                     : calibrated_model().solve(input, mode);
     } else {
         t = fastsim_.solve(input, mode, jacobian);
     }

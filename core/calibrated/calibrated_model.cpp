@@ -56,26 +56,17 @@ void equalise_flexibilities(ModelSetup& s, const ContactInput& in, double L_M,
     s.kin.cy *= factor(L[3]);
 }
 
-} // namespace
-
-CalibratedModel::CalibratedModel(const GridSpec& grid) : march_(grid)
-{
-    march_.reserve_blended_bound(); // its solves allocate nothing
-    march_.march_from_leading_edge();
-}
-
-SolveTotals CalibratedModel::solve(const ContactInput& input, SolveMode mode)
+void validate_calibrated_input(const ContactInput& input)
 {
     validate_contact_input(input);
     if (input.flexibility != FlexibilitySource::kalker_from_material)
         throw Error(ErrorKind::invalid_input,
                     "model = calibrated needs flexibility = kalker_from_material (G and nu): "
                     "its table is fitted in Kalker's normalisation");
-    return solve_with(input, mode, calibration_for(input));
 }
 
-SolveTotals CalibratedModel::solve_with(const ContactInput& input, SolveMode mode,
-                                        const CalibrationParams& params)
+// FASTSIM's setup of input with the calibrated changes of params.
+ModelSetup calibrated_setup(const ContactInput& input, const CalibrationParams& params)
 {
     ContactInput in = input;
     in.pressure = params.pressure;
@@ -96,9 +87,98 @@ SolveTotals CalibratedModel::solve_with(const ContactInput& input, SolveMode mod
     s.kin.edge_gain = params.edge_gain;
     if (in.pressure == PressureKind::parabolic)
         s.kin.bound_blend = std::max(-kMaxBoundBlend, std::min(kMaxBoundBlend, params.bound_blend));
-    SolveTotals t = march_.solve_setup(s, in, mode);
+    return s;
+}
+
+} // namespace
+
+CalibratedModel::CalibratedModel(const GridSpec& grid) : march_(grid)
+{
+    // Its solves, with or without the Jacobian, allocate nothing.
+    march_.reserve_blended_bound();
+    march_.march_from_leading_edge();
+    directions_.resize(march_.grid().ny());
+    scratch_wx_.setZero(directions_.stride);
+    scratch_wy_.setZero(directions_.stride);
+}
+
+SolveTotals CalibratedModel::solve(const ContactInput& input, SolveMode mode)
+{
+    validate_calibrated_input(input);
+    return solve_with(input, mode, calibration_for(input));
+}
+
+SolveTotals CalibratedModel::solve_with(const ContactInput& input, SolveMode mode,
+                                        const CalibrationParams& params)
+{
+    SolveTotals t = march_.solve_setup(calibrated_setup(input, params), input, mode);
     t.model = ModelKind::calibrated;
     return t;
+}
+
+SolveTotals CalibratedModel::solve_jacobian(const ContactInput& input, SolveMode mode,
+                                            Jacobian& jacobian)
+{
+    validate_calibrated_input(input);
+    if (input.normal_force == 0.0 && input.mu > 0.0)
+        throw Error(ErrorKind::invalid_input,
+                    "normal_force = 0: the forces are not differentiable in N there (they "
+                    "grow as mu N from N = 0); the Jacobian needs normal_force > 0");
+    if (input.mu == 0.0) { // no traction whatever the inputs: all derivatives 0
+        jacobian = Jacobian{};
+        return solve(input, mode);
+    }
+    const ModelSetup setup = calibrated_setup(input, calibration_for(input));
+    set_directions(input, setup);
+    SolveTotals t = march_.solve_setup_directional(setup, input, mode, directions_, jacobian);
+    t.model = ModelKind::calibrated;
+    return t;
+}
+
+// The setup's derivatives by central differences of calibrated_setup(): an
+// O(1) chain of smooth closed forms (the table's factors, equalisation, fade,
+// edge gain, blend, T), differenced at 1e-6 of each input's scale (its
+// saturation creepage, or N), so truncation (~1e-12) and rounding (~1e-10)
+// stay far below what the march's own derivative carries. The march is then
+// differentiated exactly along them (march_directional.hpp). Kinks of the
+// closed forms (|creepage| in the equalisation weights, its cap at 1) get the
+// mean of their one-sided slopes.
+void CalibratedModel::set_directions(const ContactInput& in, const ModelSetup& setup)
+{
+    const ContactGrid& grid = march_.grid();
+    const int ny = grid.ny(), stride = directions_.stride;
+    const double muN = in.mu * in.normal_force, c2 = in.a * in.b, c = std::sqrt(c2);
+    const CreepCoefficients& C = setup.C;
+    // Saturation creepages (normalised creepage 1), the inputs' scales.
+    const double scale[kMarchDirections] = {muN / (in.G * c2 * C.C11), muN / (in.G * c2 * C.C22),
+                                            muN / (in.G * c2 * c * C.C23), in.normal_force};
+    double ContactInput::*const member[kMarchDirections] = {&ContactInput::xi_x, &ContactInput::xi_y,
+                                                            &ContactInput::phi,
+                                                            &ContactInput::normal_force};
+    for (int k = 0; k < kMarchDirections; ++k) {
+        const double value = in.*member[k];
+        // A normal number (hosts may flush subnormals to zero, README
+        // "Guarantees"), so that value +- h differ and the quotient is finite.
+        const double h =
+            std::max(1e-6 * (k == 3 ? value : std::max(std::fabs(value), scale[k])), 1e-290);
+        ContactInput plus = in, minus = in;
+        plus.*member[k] = value + h;
+        minus.*member[k] = value - h;
+        const ModelSetup sp = calibrated_setup(plus, calibration_for(plus));
+        const ModelSetup sm = calibrated_setup(minus, calibration_for(minus));
+        const double inv = 1.0 / ((value + h) - (value - h)); // the step as represented
+        double* dwx = directions_.wx.data() + k * stride;
+        double* dwy = directions_.wy.data() + k * stride;
+        rigid_slip_of_strips(grid, sp.kin, dwx, dwy, 0, ny);
+        rigid_slip_of_strips(grid, sm.kin, scratch_wx_.data(), scratch_wy_.data(), 0, ny);
+        for (int j = 0; j < ny; ++j) {
+            dwx[j] = (dwx[j] - scratch_wx_[j]) * inv;
+            dwy[j] = (dwy[j] - scratch_wy_[j]) * inv;
+        }
+        directions_.cy[k] = (sp.kin.cy - sm.kin.cy) * inv;
+        directions_.blend[k] = (sp.kin.bound_blend - sm.kin.bound_blend) * inv;
+        directions_.traction_scale[k] = (sp.traction_scale - sm.traction_scale) * inv;
+    }
 }
 
 } // namespace creepwork

@@ -13,8 +13,10 @@
 
 #include "calibrated/calibration_params.hpp"
 #include "contact/fields.hpp"
+#include "contact/jacobian.hpp"
 #include "contact/params.hpp"
 #include "fastsim/fastsim_model.hpp"
+#include "fastsim/march_directional.hpp"
 
 namespace creepwork {
 
@@ -28,8 +30,16 @@ public:
     // With given parameters instead of the table's (the fitting tool).
     SolveTotals solve_with(const ContactInput& input, SolveMode mode,
                            const CalibrationParams& params);
+    // solve() and the derivatives of Fx, Fy, Mz (rows jac_Fx..jac_Mz; the
+    // W_macro row is the solver's) by xi_x, xi_y, phi, N, with the table's
+    // parameters moving with them: the march differentiated exactly along
+    // the setup's derivatives (set_directions). Totals bitwise those of
+    // solve(). Throws Error(invalid_input) for normal_force = 0 with mu > 0.
+    SolveTotals solve_jacobian(const ContactInput& input, SolveMode mode, Jacobian& jacobian);
 
     const ContactGrid& grid() const { return march_.grid(); }
+    // The march's kernel (tests: every kernel gives bitwise the same results).
+    void set_kernel_isa(KernelIsa isa) { march_.set_kernel_isa(isa); }
     void copy_field(Field f, double* out) const { march_.copy_field(f, out); }
     void add_field(Field f, double scale, double* out) const { march_.add_field(f, scale, out); }
     void copy_state(int* out) const { march_.copy_state(out); }
@@ -39,7 +49,11 @@ public:
     }
 
 private:
+    void set_directions(const ContactInput& input, const ModelSetup& setup);
+
     FastsimModel march_;
+    MarchDirections directions_;
+    Eigen::ArrayXd scratch_wx_, scratch_wy_; // per strip, set_directions()
 };
 
 } // namespace creepwork

@@ -2,6 +2,7 @@
 
 #include "contact/error.hpp"
 #include "fastsim/flexibility_blending.hpp"
+#include "fastsim/march_directional.hpp"
 
 namespace creepwork {
 namespace {
@@ -23,21 +24,10 @@ Jacobian fastsim_jacobian(const ContactInput& in, const ModelSetup& s, const Con
     // Forces over the traction scale T in the rolling frame, Phi = F / T, and
     // their derivatives by the march parameters k = ux, uy, kappa.
     const double a = s.a, b = s.b, T = s.traction_scale;
-    const int stride = tangents.stride;
-    double Phi[3] = {0, 0, 0}, dPhi[3][kTangents] = {};
-    for (int j = 0; j < grid.ny(); ++j) {
-        const double area = a * b * grid.x_length()[j] * grid.y_width()[j];
-        const double y = b * grid.y_centre()[j];
-        Phi[0] += area * march.sum_px[j];
-        Phi[1] += area * march.sum_py[j];
-        Phi[2] += area * (a * march.sum_x_py[j] - y * march.sum_px[j]);
-        for (int k = 0; k < kTangents; ++k) {
-            const long e = static_cast<long>(k) * stride + j;
-            dPhi[0][k] += area * tangents.sum_px[e];
-            dPhi[1][k] += area * tangents.sum_py[e];
-            dPhi[2][k] += area * (a * tangents.sum_x_py[e] - y * tangents.sum_px[e]);
-        }
-    }
+    double Phi[3], dPhi[3][4];
+    scaled_forces_and_derivatives(grid, a, b, march, tangents.sum_px.data(),
+                                  tangents.sum_py.data(), tangents.sum_x_py.data(),
+                                  tangents.stride, kTangents, Phi, dPhi);
 
     // dT/dc: only N moves T = mu p0, p0 proportional to N.
     const double p0_per_N = s.pressure == PressureKind::parabolic ? 2.0 / (kPi * a * b)

@@ -38,14 +38,24 @@ SolveTotals FastsimModel::solve_setup(const ModelSetup& setup, const ContactInpu
     return march_and_total(setup, input, mode, nullptr);
 }
 
+SolveTotals FastsimModel::solve_setup_directional(const ModelSetup& setup,
+                                                  const ContactInput& input, SolveMode mode,
+                                                  MarchDirections& directions, Jacobian& jacobian)
+{
+    if (directions.stride != geometry_.stride)
+        throw Error(ErrorKind::invalid_input, "directions: sized for another grid");
+    return march_and_total(setup, input, mode, &jacobian, &directions);
+}
+
 SolveTotals FastsimModel::march_and_total(const ModelSetup& setup, const ContactInput& input,
-                                          SolveMode mode, Jacobian* jacobian)
+                                          SolveMode mode, Jacobian* jacobian,
+                                          MarchDirections* directions)
 {
     setup_ = setup;
     // The calibrated model's blended bound (parabolic units), made before the
     // march reads it.
     if (setup_.kin.bound_blend != 0.0) {
-        if (setup_.pressure != PressureKind::parabolic || jacobian)
+        if (setup_.pressure != PressureKind::parabolic || (jacobian && !directions))
             throw Error(ErrorKind::invalid_input,
                         "a blended traction bound needs the parabolic pressure scale and has no "
                         "Jacobian");
@@ -54,7 +64,10 @@ SolveTotals FastsimModel::march_and_total(const ModelSetup& setup, const Contact
     if (mode == SolveMode::full)
         march_with_work(geometry_, grid_, setup_, march_, work_, isa_); // work accounted
     // With work, the tangent march repeats the march: the same state, bitwise.
-    if (jacobian) {
+    if (directions) {
+        march_directional(geometry_, grid_, setup_, march_, *directions, isa_);
+        *jacobian = directional_jacobian(setup_, grid_, march_, *directions);
+    } else if (jacobian) {
         march_tangent(geometry_, grid_, setup_, march_, tangent_, isa_);
         *jacobian = fastsim_jacobian(input, setup_, grid_, march_, tangent_);
     } else if (mode != SolveMode::full) {

@@ -16,6 +16,7 @@
 #include "fastsim/fastsim_setup.hpp"
 #include "fastsim/fastsim_work.hpp"
 #include "fastsim/march.hpp"
+#include "fastsim/march_directional.hpp"
 #include "fastsim/march_tangent.hpp"
 
 namespace creepwork {
@@ -37,6 +38,14 @@ public:
     // FASTSIM's own (fastsim_jacobian differentiates make_model_setup), so
     // only solve() offers it.
     SolveTotals solve_setup(const ModelSetup& setup, const ContactInput& input, SolveMode mode);
+    // The same march differentiated along directions of the setup that the
+    // caller gives (march_directional.hpp: the derivatives of each strip's
+    // rigid slip, cy, the bound blend and T by each of its inputs); *jacobian
+    // receives rows Fx, Fy, Mz with one column per direction. The totals are
+    // bitwise those of solve_setup().
+    SolveTotals solve_setup_directional(const ModelSetup& setup, const ContactInput& input,
+                                        SolveMode mode, MarchDirections& directions,
+                                        Jacobian& jacobian);
 
     const ContactGrid& grid() const { return grid_; }
     // Allocates the workspace of a blended traction bound
@@ -59,7 +68,8 @@ public:
 private:
     // The march from setup, its totals and (jacobian != nullptr) its tangents.
     SolveTotals march_and_total(const ModelSetup& setup, const ContactInput& input,
-                                SolveMode mode, Jacobian* jacobian);
+                                SolveMode mode, Jacobian* jacobian,
+                                MarchDirections* directions = nullptr);
     template <class Op>
     void export_field(Field f, const Op& op, double* out) const;
 

@@ -256,22 +256,28 @@ void march_strips(const MarchGeometry& geo, const NormalisedKinematics& kin, Pre
     }
 }
 
-void set_rigid_slip(const ContactGrid& grid, const NormalisedKinematics& kin, MarchState& s,
-                    int first, int last)
+void rigid_slip_of_strips(const ContactGrid& grid, const NormalisedKinematics& kin, double* wx,
+                          double* wy, int first, int last)
 {
     for (int j = first; j < last; ++j) {
-        s.wx[j] = kin.ux - kin.cx * grid.y_centre()[j];
+        wx[j] = kin.ux - kin.cx * grid.y_centre()[j];
         // Without an offset exactly uy, so that plain FASTSIM is unchanged
         // to the bit (uy + cy * 0 could flip the sign of a zero).
-        s.wy[j] = kin.spin_offset > 0.0 ? kin.uy + kin.cy * (kin.spin_offset * grid.x_length()[j])
-                                        : kin.uy;
+        wy[j] = kin.spin_offset > 0.0 ? kin.uy + kin.cy * (kin.spin_offset * grid.x_length()[j])
+                                      : kin.uy;
         if (kin.edge_gain != 0.0) {
             const double Y = grid.y_centre()[j];
             const double m = (1.0 + kin.edge_gain * Y * Y) / (1.0 + kin.edge_gain / 5.0);
-            s.wx[j] *= m;
-            s.wy[j] *= m;
+            wx[j] *= m;
+            wy[j] *= m;
         }
     }
+}
+
+void set_rigid_slip(const ContactGrid& grid, const NormalisedKinematics& kin, MarchState& s,
+                    int first, int last)
+{
+    rigid_slip_of_strips(grid, kin, s.wx.data(), s.wy.data(), first, last);
 }
 
 void march(const MarchGeometry& geo, const ContactGrid& grid, const NormalisedKinematics& kin,

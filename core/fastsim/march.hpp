@@ -116,6 +116,9 @@ struct MarchState {
 // The per-strip rigid slip of kin (state.wx, state.wy) for strips [first, last).
 void set_rigid_slip(const ContactGrid& grid, const NormalisedKinematics& kin, MarchState& state,
                     int first, int last);
+// The same into wx[j], wy[j] (callers that differentiate it).
+void rigid_slip_of_strips(const ContactGrid& grid, const NormalisedKinematics& kin, double* wx,
+                          double* wy, int first, int last);
 
 // Advance every strip from the leading edge (m = 0) to the trailing edge.
 // Writes state (sized by resize(nx * ny, ny)); allocates nothing.

@@ -1,5 +1,6 @@
 // creepwork_bench_jacobian: the cost of the Jacobian (README "Jacobians"),
-// through the C ABI on one core. For each grid and regime it times
+// through the C ABI on one core. For FASTSIM and the calibrated model, each
+// grid and regime it times
 //   forces    cw_solver_solve(CW_SOLVE_FORCES)
 //   jacobian  cw_solver_solve_jacobian(CW_SOLVE_FORCES): the same totals and
 //             the 4 x 4 Jacobian
@@ -93,35 +94,37 @@ int main(int argc, char** argv)
     const double min_time = quick ? 0.001 : 0.003;
     const int samples = quick ? 7 : 61;
 
-    std::printf("FASTSIM, Kalker strip grid, C ABI, one core; ns per contact element "
-                "(best of %d samples)\n\n", samples);
-    std::printf("| grid | regime | forces ns/elem | jacobian ns/elem | ratio |\n");
-    std::printf("|---|---|---:|---:|---:|\n");
-    for (int n : {20, 40, 100, 200}) {
-        cw_grid g;
-        cw_grid_init(&g);
-        g.nx = g.ny = n;
-        cw_solver* s = nullptr;
-        check(cw_solver_create(&g, &s, nullptr, 0), "cw_solver_create");
-        for (const Regime& r : kRegimes) {
-            const cw_params p = params_of(r, CW_MODEL_FASTSIM);
-            cw_result res;
-            cw_result_init(&res);
-            double jac[CW_JACOBIAN_LEN];
-            check(cw_solver_solve(s, &p, CW_SOLVE_FORCES, &res), "solve");
-            const int elements = res.n_contact;
-            check(cw_solver_solve_jacobian(s, &p, CW_SOLVE_FORCES, &res, jac, CW_JACOBIAN_LEN),
-                  "solve_jacobian");
-            const std::vector<double> t = best_times(
-                {[&] { cw_solver_solve(s, &p, CW_SOLVE_FORCES, &res); },
-                 [&] { cw_solver_solve_jacobian(s, &p, CW_SOLVE_FORCES, &res, jac,
-                                                CW_JACOBIAN_LEN); }},
-                min_time, samples);
-            std::printf("| %dx%d | %s | %.2f | %.2f | %.2f |\n", n, n, r.name,
-                        t[0] / elements * 1e9, t[1] / elements * 1e9, t[1] / t[0]);
+    std::printf("FASTSIM and the calibrated model, Kalker strip grid, C ABI, one core; ns per "
+                "contact element (best of %d samples)\n\n", samples);
+    std::printf("| model | grid | regime | forces ns/elem | jacobian ns/elem | ratio |\n");
+    std::printf("|---|---|---|---:|---:|---:|\n");
+    for (int model : {CW_MODEL_FASTSIM, CW_MODEL_CALIBRATED})
+        for (int n : {20, 40, 100, 200}) {
+            cw_grid g;
+            cw_grid_init(&g);
+            g.nx = g.ny = n;
+            cw_solver* s = nullptr;
+            check(cw_solver_create(&g, &s, nullptr, 0), "cw_solver_create");
+            for (const Regime& r : kRegimes) {
+                const cw_params p = params_of(r, model);
+                cw_result res;
+                cw_result_init(&res);
+                double jac[CW_JACOBIAN_LEN];
+                check(cw_solver_solve(s, &p, CW_SOLVE_FORCES, &res), "solve");
+                const int elements = res.n_contact;
+                check(cw_solver_solve_jacobian(s, &p, CW_SOLVE_FORCES, &res, jac, CW_JACOBIAN_LEN),
+                      "solve_jacobian");
+                const std::vector<double> t = best_times(
+                    {[&] { cw_solver_solve(s, &p, CW_SOLVE_FORCES, &res); },
+                     [&] { cw_solver_solve_jacobian(s, &p, CW_SOLVE_FORCES, &res, jac,
+                                                    CW_JACOBIAN_LEN); }},
+                    min_time, samples);
+                std::printf("| %s | %dx%d | %s | %.2f | %.2f | %.2f |\n",
+                            model == CW_MODEL_FASTSIM ? "FASTSIM" : "calibrated", n, n, r.name,
+                            t[0] / elements * 1e9, t[1] / elements * 1e9, t[1] / t[0]);
+            }
+            cw_solver_destroy(s);
         }
-        cw_solver_destroy(s);
-    }
 
     // The exact model: a warm-started sequence (the vehicle-dynamics use), so
     // each solve starts from the last one; the creepage alternates between

@@ -1,9 +1,10 @@
 /* cw_solver_solve_jacobian through the public header (README "Jacobians"):
  * the layout and frame of the 4 x 4 matrix against central differences of
- * cw_solver_solve itself (both rolling directions, SI units; 1e-6 relative
- * to the row's scale at a step that flips no element), the totals bitwise
- * cw_solver_solve's, and every error: NULL pointers, a short buffer, a bad
- * mode, the calibrated model, no load -- each with nothing written. */
+ * cw_solver_solve itself (FASTSIM and the calibrated model, both rolling
+ * directions, SI units; 1e-6 relative to the row's scale at a step that
+ * flips no element), the totals bitwise cw_solver_solve's, and every error:
+ * NULL pointers, a short buffer, a bad mode, the calibrated model without
+ * G and nu, no load -- each with nothing written. */
 #include "capi_test.h"
 
 #include <math.h>
@@ -45,9 +46,11 @@ static void matches_central_differences(void** state)
 {
     (void)state;
     cw_solver* s = cw_test_solver(CW_GRID_UNIFORM, 24, 20, 1.0);
-    for (int direction = -1; direction <= 1; direction += 2) {
+    for (int run = 0; run < 4; ++run) {
+        const int direction = run % 2 ? 1 : -1;
         cw_params p = partial_slip(direction);
         p.pressure = CW_PRESSURE_ELLIPTIC;
+        p.model = run < 2 ? CW_MODEL_FASTSIM : CW_MODEL_CALIBRATED;
         double J[CW_JACOBIAN_LEN];
         cw_result r;
         cw_result_init(&r);
@@ -121,11 +124,14 @@ static void errors_write_nothing(void** state)
     assert_int_equal(cw_solver_solve_jacobian(s, &p, 7, NULL, J, 16), CW_ERR_UNKNOWN_OPTION);
     assert_untouched(J, CW_JACOBIAN_LEN + 1);
 
-    p.model = CW_MODEL_CALIBRATED;
+    p.model = CW_MODEL_CALIBRATED; /* its table needs Kalker's flexibilities */
+    p.flexibility = CW_FLEX_GIVEN;
+    p.L1 = p.L2 = p.L3 = 1e-11;
     assert_int_equal(cw_solver_solve_jacobian(s, &p, CW_SOLVE_FORCES, NULL, J, 16),
                      CW_ERR_INVALID_INPUT);
     assert_names(cw_solver_last_error(s), "calibrated");
     assert_untouched(J, CW_JACOBIAN_LEN + 1);
+    p.flexibility = CW_FLEX_FROM_MATERIAL;
 
     p.model = CW_MODEL_EXACT; /* needs the uniform grid */
     assert_int_equal(cw_solver_solve_jacobian(s, &p, CW_SOLVE_FORCES, NULL, J, 16),

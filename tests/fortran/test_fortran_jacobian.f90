@@ -73,10 +73,23 @@ program test_fortran_jacobian
                fx, fy, fmz, wmac, dfj, ierr)
    call check_int(int(ierr), CW_ERR_INVALID_INPUT, 'CWJACO with FN = 0')
    call check_true(all(dfj == sentinel) .and. fx == sentinel, 'CWJACO error writes nothing')
-   jac = sentinel
+   ! The calibrated model: the same call, its own derivatives (Fx, Fy oppose
+   ! their creepages; totals bitwise its plain solve's).
    p%model = CW_MODEL_CALIBRATED
+   call solver%solve_jacobian(p, jac, CW_SOLVE_FORCES, r, stat=stat)
+   call check_int(stat, CW_OK, 'calibrated solve_jacobian')
+   call check_true(jac(1, 1) < 0 .and. jac(2, 2) < 0, 'calibrated: forces oppose creepage')
+   call totals(0, 0.0_c_double, up)
+   call check_same(up(1), r%Fx, 'calibrated Fx = its plain solve')
+   call check_same(up(3), r%Mz, 'calibrated Mz = its plain solve')
+   ! Its table needs G and nu: given flexibilities are refused, nothing written.
+   jac = sentinel
+   p%flexibility = CW_FLEX_GIVEN
+   p%L1 = 1e-11_c_double
+   p%L2 = 1e-11_c_double
+   p%L3 = 1e-11_c_double
    call solver%solve_jacobian(p, jac, stat=stat)
-   call check_int(stat, CW_ERR_INVALID_INPUT, 'calibrated model')
+   call check_int(stat, CW_ERR_INVALID_INPUT, 'calibrated model, given flexibilities')
    call check_true(all(jac == sentinel), 'module error writes nothing')
    call check_true(index(solver%last_error(), 'calibrated') > 0, 'message names the model')
 
