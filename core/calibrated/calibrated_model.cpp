@@ -159,8 +159,9 @@ void CalibratedModel::set_directions(const ContactInput& in, const ModelSetup& s
         const double value = in.*member[k];
         // A normal number (hosts may flush subnormals to zero, README
         // "Guarantees"), so that value +- h differ and the quotient is finite.
-        const double h =
-            std::max(1e-6 * (k == 3 ? value : std::max(std::fabs(value), scale[k])), 1e-290);
+        // For N also below N itself, which must stay positive.
+        double h = std::max(1e-6 * (k == 3 ? value : std::max(std::fabs(value), scale[k])), 1e-290);
+        if (k == 3) h = std::min(h, 0.5 * value);
         ContactInput plus = in, minus = in;
         plus.*member[k] = value + h;
         minus.*member[k] = value - h;

@@ -1,8 +1,8 @@
 /* Hosts that trap floating-point exceptions are safe (README "Guarantees"),
  * through the whole C ABI: with invalid, divide-by-zero, overflow and
  * denormal-operand traps on, no call raises one -- valid input of every
- * kind, in both modes, every getter, batches, the accumulator, the helpers,
- * the wear calls,
+ * kind, in both modes, every getter, the Jacobians (FASTSIM, calibrated),
+ * batches, the accumulator, the helpers, the wear calls,
  * and hostile or absurd input (NaN, Inf, 1e300 loads, subnormal creepages),
  * which gets a status or zeros, never a trap. And a call leaves no trace:
  * the caller's exception flags, masks and rounding mode are as before, and
@@ -99,6 +99,23 @@ static void test_contact_sweep(void** state)
             cw_result_init(&r);
             assert_status(cw_solver_solve(s, &p, CW_SOLVE_FORCES, &r), CW_OK);
             expect_no_trace("cw_solver_solve(FORCES)");
+            {
+                /* The Jacobian of both simplified models (the contacts have
+                 * N > 0; given flexibilities: FASTSIM's only). */
+                double J[CW_JACOBIAN_LEN];
+                assert_status(cw_solver_solve_jacobian(s, &p, CW_SOLVE_FORCES, &r, J,
+                                                       CW_JACOBIAN_LEN),
+                              CW_OK);
+                expect_no_trace("cw_solver_solve_jacobian(FASTSIM)");
+                cw_params q = p;
+                q.model = CW_MODEL_CALIBRATED;
+                if (q.flexibility == CW_FLEX_FROM_MATERIAL) {
+                    assert_status(cw_solver_solve_jacobian(s, &q, CW_SOLVE_FORCES, &r, J,
+                                                           CW_JACOBIAN_LEN),
+                                  CW_OK);
+                    expect_no_trace("cw_solver_solve_jacobian(calibrated)");
+                }
+            }
             assert_status(cw_solver_solve(s, &p, CW_SOLVE_FULL, &r), CW_OK);
             expect_no_trace("cw_solver_solve(FULL)");
             assert_true(rob_result_finite(&r));
@@ -237,6 +254,23 @@ static void test_hostile_and_absurd_inputs(void** state)
                     } else {
                         assert_true(st == CW_ERR_INVALID_INPUT || st == CW_ERR_NUMERIC);
                         ++rejected;
+                    }
+                    /* The Jacobian, FASTSIM's and the calibrated model's. */
+                    const int models[2] = {CW_MODEL_FASTSIM, CW_MODEL_CALIBRATED};
+                    for (int m = 0; m < 2; ++m) {
+                        cw_params q = p;
+                        q.model = models[m];
+                        double J[CW_JACOBIAN_LEN];
+                        TRAPPED(st = cw_solver_solve_jacobian(s, &q, mode, &r, J, CW_JACOBIAN_LEN),
+                                "cw_solver_solve_jacobian");
+                        if (st == CW_OK) {
+                            assert_true(rob_result_finite(&r));
+                            for (int k = 0; k < CW_JACOBIAN_LEN; ++k) assert_true(isfinite(J[k]));
+                            ++solved;
+                        } else {
+                            assert_true(st == CW_ERR_INVALID_INPUT || st == CW_ERR_NUMERIC);
+                            ++rejected;
+                        }
                     }
                 }
             }
