@@ -17,10 +17,13 @@
  * derivative from cw_solver_solve_jacobian. Reference: classical RK4 with
  * h = 2e-5 s. The program prints both trajectories' difference and the
  * number of contact solves, and fails (exit 1) if the implicit trajectory
- * is off by more than 1 % of the initial displacement. */
+ * is off by more than 1 % of the initial displacement. The argument
+ * "calibrated" runs the same with CW_MODEL_CALIBRATED (README "Calibrated
+ * model"), whose Jacobian also follows its table's knobs. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include <creepwork/creepwork.h>
 
@@ -80,8 +83,9 @@ static void rk4(double h, long steps, long every, double* out)
     }
 }
 
-int main(void)
+int main(int argc, char** argv)
 {
+    const int calibrated = argc > 1 && strcmp(argv[1], "calibrated") == 0;
     cw_grid grid;
     cw_grid_init(&grid); /* Kalker strips 20 x 20 */
     char message[256];
@@ -92,6 +96,7 @@ int main(void)
     }
     cw_params_init(&g_params); /* steel, a = b = 6 mm, N = 80 kN, mu = 0.3 */
     g_params.xi_x = kXiX;
+    if (calibrated) g_params.model = CW_MODEL_CALIBRATED;
 
     /* Implicit Euler, h = 2 ms: 500 steps. */
     const double h = 2e-3;
@@ -128,8 +133,8 @@ int main(void)
 
     double worst = 0.0;
     for (long n = 0; n <= steps; ++n) worst = fmax(worst, fabs(implicit_y[n] - reference_y[n]));
-    printf("single wheelset, lateral: y(0) = %.1f mm, V = %.0f m/s, t = 0 .. %.1f s\n",
-           kY0 * 1e3, kSpeed, kEnd);
+    printf("single wheelset, lateral, %s model: y(0) = %.1f mm, V = %.0f m/s, t = 0 .. %.1f s\n",
+           calibrated ? "calibrated" : "FASTSIM", kY0 * 1e3, kSpeed, kEnd);
     printf("  y(0.1 s) = %.4f mm, y(0.5 s) = %.4f mm, y(1 s) = %.4f mm (reference)\n",
            reference_y[steps / 10] * 1e3, reference_y[steps / 2] * 1e3, reference_y[steps] * 1e3);
     printf("implicit Euler, h = %.0f ms: %ld steps, %ld contact solves (at most %d Newton "
