@@ -131,14 +131,24 @@ SolveTotals CalibratedModel::solve_jacobian(const ContactInput& input, SolveMode
     const ModelSetup setup = calibrated_setup(input, calibration_for(input));
     set_directions(input, setup);
     SolveTotals t = march_.solve_setup_directional(setup, input, mode, directions_, jacobian);
+    // N: the model is homogeneous of degree 1 in (xi_x, xi_y, phi, N) -- T is
+    // proportional to N, and the march and the table see only creepage / N
+    // (normalised_creepage, kin = a xi / (L mu p0)) -- so by Euler's identity
+    // N dF/dN = F - xi_x dF/dxi_x - xi_y dF/dxi_y - phi dF/dphi, exactly.
+    const double F[3] = {t.Fx, t.Fy, t.Mz};
+    for (int i = 0; i < 3; ++i)
+        jacobian.d[i][jac_N] = (F[i] - input.xi_x * jacobian.d[i][jac_xi_x] -
+                                input.xi_y * jacobian.d[i][jac_xi_y] -
+                                input.phi * jacobian.d[i][jac_phi]) /
+                               input.normal_force;
     t.model = ModelKind::calibrated;
     return t;
 }
 
-// The setup's derivatives by central differences of calibrated_setup(): an
-// O(1) chain of smooth closed forms (the table's factors, equalisation, fade,
-// edge gain, blend, T), differenced at 1e-6 of each input's scale (its
-// saturation creepage, or N), so truncation (~1e-12) and rounding (~1e-10)
+// The setup's derivatives by the creepages, by central differences of
+// calibrated_setup(): an O(1) chain of smooth closed forms (the table's
+// factors, equalisation, fade, edge gain, blend), differenced at 1e-6 of each
+// creepage's scale (its saturation creepage), so truncation (~1e-12) and rounding (~1e-10)
 // stay far below what the march's own derivative carries. The march is then
 // differentiated exactly along them (march_directional.hpp). Kinks of the
 // closed forms (|creepage| in the equalisation weights, its cap at 1) get the
@@ -151,17 +161,14 @@ void CalibratedModel::set_directions(const ContactInput& in, const ModelSetup& s
     const CreepCoefficients& C = setup.C;
     // Saturation creepages (normalised creepage 1), the inputs' scales.
     const double scale[kMarchDirections] = {muN / (in.G * c2 * C.C11), muN / (in.G * c2 * C.C22),
-                                            muN / (in.G * c2 * c * C.C23), in.normal_force};
+                                            muN / (in.G * c2 * c * C.C23)};
     double ContactInput::*const member[kMarchDirections] = {&ContactInput::xi_x, &ContactInput::xi_y,
-                                                            &ContactInput::phi,
-                                                            &ContactInput::normal_force};
+                                                            &ContactInput::phi};
     for (int k = 0; k < kMarchDirections; ++k) {
         const double value = in.*member[k];
         // A normal number (hosts may flush subnormals to zero, README
         // "Guarantees"), so that value +- h differ and the quotient is finite.
-        // For N also below N itself, which must stay positive.
-        double h = std::max(1e-6 * (k == 3 ? value : std::max(std::fabs(value), scale[k])), 1e-290);
-        if (k == 3) h = std::min(h, 0.5 * value);
+        const double h = std::max(1e-6 * std::max(std::fabs(value), scale[k]), 1e-290);
         ContactInput plus = in, minus = in;
         plus.*member[k] = value + h;
         minus.*member[k] = value - h;

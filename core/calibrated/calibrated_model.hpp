@@ -33,7 +33,8 @@ public:
     // solve() and the derivatives of Fx, Fy, Mz (rows jac_Fx..jac_Mz; the
     // W_macro row is the solver's) by xi_x, xi_y, phi, N, with the table's
     // parameters moving with them: the march differentiated exactly along
-    // the setup's derivatives (set_directions). Totals bitwise those of
+    // the setup's derivatives by the creepages (set_directions), N by the
+    // model's homogeneity. Totals bitwise those of
     // solve(). Throws Error(invalid_input) for normal_force = 0 with mu > 0.
     SolveTotals solve_jacobian(const ContactInput& input, SolveMode mode, Jacobian& jacobian);
 

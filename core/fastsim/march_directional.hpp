@@ -32,7 +32,9 @@
 
 namespace creepwork {
 
-constexpr int kMarchDirections = 4; // one per caller input: xi_x, xi_y, phi, N
+// One per creepage: xi_x, xi_y, phi. Models homogeneous in (creepages, N)
+// get the N column from Euler's identity (calibrated_model.cpp).
+constexpr int kMarchDirections = 3;
 
 struct MarchDirections {
     int stride = 0;
@@ -58,7 +60,8 @@ void march_directional(const MarchGeometry& geometry, const ContactGrid& grid,
 
 // Fx, Fy, Mz (caller's frame) differentiated along the directions, from the
 // state and sums march_directional() left: column k of rows jac_Fx..jac_Mz
-// (jacobian.hpp) is direction k; row jac_W is left 0 (the caller's).
+// (jacobian.hpp) is direction k; column jac_N and row jac_W are left 0 (the
+// caller's).
 Jacobian directional_jacobian(const ModelSetup& setup, const ContactGrid& grid,
                               const MarchState& march, const MarchDirections& directions);
 

@@ -513,7 +513,8 @@ CW_API int cw_batch_prepare(cw_batch* batch, int model);
  *                     directions in which each input moves its setup (the
  *                     table's knobs depend on the saturation level: those
  *                     closed forms are differenced centrally, the march
- *                     exactly); 2.4-5.5x a CW_SOLVE_FORCES solve, measured.
+ *                     exactly; N by homogeneity); 2.1-3.8x a
+ *                     CW_SOLVE_FORCES solve, measured.
  *                     Needs CW_FLEX_FROM_MATERIAL, as its solves.
  * Where an element sits exactly on the traction bound the derivative is the
  * one of the state the solve found (README "Jacobians"). Needs
