@@ -25,29 +25,12 @@
 #include "contact/error.hpp"
 #include "contact/kalker_coefficients.hpp"
 #include "core_test_support.hpp"
+#include "jacobian_step_study.hpp"
 #include "test_support.h"
 
 namespace cw = creepwork;
 
 namespace {
-
-using Totals4 = std::array<double, 4>;
-
-Totals4 totals(cw::Solver& s, const cw::ContactInput& in)
-{
-    const cw::SolveTotals& t = s.solve(in, cw::SolveMode::forces_only);
-    return {t.Fx, t.Fy, t.Mz, t.W_macro};
-}
-
-double& input_column(cw::ContactInput& in, int c)
-{
-    switch (c) {
-    case 0: return in.xi_x;
-    case 1: return in.xi_y;
-    case 2: return in.phi;
-    default: return in.normal_force;
-    }
-}
 
 // Each input's scale: its saturation creepage (normalised creepage 1), N.
 std::array<double, 4> input_scales(const cw::ContactInput& in)
@@ -58,47 +41,13 @@ std::array<double, 4> input_scales(const cw::ContactInput& in)
             in.normal_force};
 }
 
-// Worst error over rows and columns of the central difference with relative
-// step rel, each entry relative to its row's scale sum_c |J[r][c]| scale_c.
-double central_difference_error(cw::Solver& s, const cw::ContactInput& in, const cw::Jacobian& J,
-                                double rel, bool& states_changed)
-{
-    const auto scale = input_scales(in);
-    const int slips = s.solve(in, cw::SolveMode::forces_only).n_slip;
-    double worst = 0.0;
-    states_changed = false;
-    for (int c = 0; c < 4; ++c) {
-        const double h = rel * scale[c];
-        cw::ContactInput up = in, down = in;
-        input_column(up, c) += h;
-        input_column(down, c) -= h;
-        const Totals4 fu = totals(s, up);
-        states_changed |= s.totals().n_slip != slips;
-        const Totals4 fd = totals(s, down);
-        states_changed |= s.totals().n_slip != slips;
-        for (int r = 0; r < 4; ++r) {
-            double row = 0.0;
-            for (int k = 0; k < 4; ++k) row += std::fabs(J.d[r][k]) * scale[k];
-            const double fdiff = (fu[r] - fd[r]) / (2.0 * h);
-            worst = std::max(worst, std::fabs(fdiff - J.d[r][c]) * scale[c] / row);
-        }
-    }
-    return worst;
-}
-
+// The step study (jacobian_step_study.hpp), steps 1e-2 ... 1e-8 of the
+// input scale.
 double step_study(const char* label, cw::Solver& s, const cw::ContactInput& in,
                   const cw::Jacobian& J)
 {
-    printf("  %-40s", label);
-    double best = 1e300;
-    for (double rel = 1e-2; rel >= 1e-8; rel /= 10) {
-        bool changed = false;
-        const double e = central_difference_error(s, in, J, rel, changed);
-        printf(" %8.1e%s", e, changed ? "*" : " ");
-        if (!changed) best = std::min(best, e);
-    }
-    printf("  best %.1e\n", best);
-    return best;
+    const int slips = s.solve(in, cw::SolveMode::forces_only).n_slip;
+    return cwtest::jacobian_step_study(label, 40, s, in, J, input_scales(in), slips, 1e-2, 1e-8);
 }
 
 cw::ContactInput calibrated_contact(double a_over_b, double sx, double sy, double sphi)

@@ -18,13 +18,12 @@
 
 #include "contact/error.hpp"
 #include "exact_test_support.hpp"
+#include "jacobian_step_study.hpp"
 #include "test_support.h"
 
 namespace cw = creepwork;
 
 namespace {
-
-using Totals4 = std::array<double, 4>;
 
 cw::ContactInput exact_contact(double a_over_b)
 {
@@ -35,53 +34,15 @@ cw::ContactInput exact_contact(double a_over_b)
     return in;
 }
 
-Totals4 totals(cw::Solver& s, const cw::ContactInput& in, int& slips)
-{
-    const cw::SolveTotals& t = s.solve(in, cw::SolveMode::forces_only);
-    slips = t.n_slip;
-    return {t.Fx, t.Fy, t.Mz, t.W_macro};
-}
-
-double& input_column(cw::ContactInput& in, int c)
-{
-    switch (c) {
-    case 0: return in.xi_x;
-    case 1: return in.xi_y;
-    case 2: return in.phi;
-    default: return in.normal_force;
-    }
-}
-
+// The step study (jacobian_step_study.hpp), steps 1e-3 ... 1e-7 of each
+// input's scale (a creepage near saturation, the spin with the same edge
+// slip, N); slips: the solution's.
 double step_study(const char* label, cw::Solver& s, const cw::ContactInput& in,
                   const cw::Jacobian& J, int slips)
 {
     const double c = std::sqrt(in.a * in.b);
-    const double scale[4] = {1e-3, 1e-3, 1e-3 / c, in.normal_force};
-    printf("  %-30s", label);
-    double best = 1e300;
-    for (double rel = 1e-3; rel >= 1e-7; rel /= 10) {
-        double worst = 0.0;
-        bool changed = false;
-        for (int col = 0; col < 4; ++col) {
-            const double h = rel * scale[col];
-            cw::ContactInput up = in, down = in;
-            input_column(up, col) += h;
-            input_column(down, col) -= h;
-            int su = 0, sd = 0;
-            const Totals4 fu = totals(s, up, su), fd = totals(s, down, sd);
-            changed |= su != slips || sd != slips;
-            for (int r = 0; r < 4; ++r) {
-                double row = 0.0;
-                for (int k = 0; k < 4; ++k) row += std::fabs(J.d[r][k]) * scale[k];
-                const double fdiff = (fu[r] - fd[r]) / (2.0 * h);
-                worst = std::max(worst, std::fabs(fdiff - J.d[r][col]) * scale[col] / row);
-            }
-        }
-        printf(" %8.1e%s", worst, changed ? "*" : " ");
-        if (!changed) best = std::min(best, worst);
-    }
-    printf("  best %.1e\n", best);
-    return best;
+    return cwtest::jacobian_step_study(label, 30, s, in, J, {1e-3, 1e-3, 1e-3 / c, in.normal_force},
+                                       slips, 1e-3, 1e-7);
 }
 
 void against_central_differences(void**)
