@@ -148,7 +148,7 @@ SolveTotals CalibratedModel::solve_jacobian(const ContactInput& input, SolveMode
 // The setup's derivatives by the creepages, by central differences of
 // calibrated_setup(): an O(1) chain of smooth closed forms (the table's
 // factors, equalisation, fade, edge gain, blend), differenced at 1e-6 of each
-// creepage's scale (its saturation creepage), so truncation (~1e-12) and rounding (~1e-10)
+// creepage's saturation value, so truncation (~1e-12) and rounding (~1e-10)
 // stay far below what the march's own derivative carries. The march is then
 // differentiated exactly along them (march_directional.hpp). Kinks of the
 // closed forms (|creepage| in the equalisation weights, its cap at 1) get the

@@ -34,9 +34,10 @@ public:
     // models built on FASTSIM's march (calibrated/) change the kinematics
     // and the traction bound and keep everything else. setup comes from
     // make_model_setup(input); solve(input, mode) is
-    // solve_setup(make_model_setup(input), input, mode). The Jacobian is
-    // FASTSIM's own (fastsim_jacobian differentiates make_model_setup), so
-    // only solve() offers it.
+    // solve_setup(make_model_setup(input), input, mode). FASTSIM's own
+    // Jacobian (fastsim_jacobian differentiates make_model_setup) is
+    // solve()'s; an adjusted setup is differentiated by
+    // solve_setup_directional() along the caller's directions.
     SolveTotals solve_setup(const ModelSetup& setup, const ContactInput& input, SolveMode mode);
     // The same march differentiated along directions of the setup that the
     // caller gives (march_directional.hpp: the derivatives of each strip's
