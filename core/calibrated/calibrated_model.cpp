@@ -185,7 +185,6 @@ void CalibratedModel::set_directions(const ContactInput& in, const ModelSetup& s
         }
         directions_.cy[k] = (sp.kin.cy - sm.kin.cy) * inv;
         directions_.blend[k] = (sp.kin.bound_blend - sm.kin.bound_blend) * inv;
-        directions_.traction_scale[k] = (sp.traction_scale - sm.traction_scale) * inv;
     }
 }
 

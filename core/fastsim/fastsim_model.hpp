@@ -41,7 +41,7 @@ public:
     SolveTotals solve_setup(const ModelSetup& setup, const ContactInput& input, SolveMode mode);
     // The same march differentiated along directions of the setup that the
     // caller gives (march_directional.hpp: the derivatives of each strip's
-    // rigid slip, cy, the bound blend and T by each of its inputs); *jacobian
+    // rigid slip, cy and the bound blend by each creepage); *jacobian
     // receives rows Fx, Fy, Mz with one column per direction. The totals are
     // bitwise those of solve_setup().
     SolveTotals solve_setup_directional(const ModelSetup& setup, const ContactInput& input,

@@ -182,14 +182,14 @@ Jacobian directional_jacobian(const ModelSetup& setup, const ContactGrid& grid,
     double Phi[3], dPhi[3][4];
     scaled_forces_and_derivatives(grid, setup.a, setup.b, march, d.sum_px.data(), d.sum_py.data(),
                                   d.sum_x_py.data(), d.stride, K, Phi, dPhi);
-    // Rolling-frame forces f_i = T Phi_i; the caller's Fx = d fx, Fy = fy,
-    // Mz = d mz (fastsim_model.cpp).
+    // Rolling-frame forces f_i = T Phi_i, T fixed along the creepages; the
+    // caller's Fx = d fx, Fy = fy, Mz = d mz (fastsim_model.cpp).
     const double T = setup.traction_scale, dir = setup.direction;
     const double frame[3] = {dir, 1.0, dir};
     Jacobian J;
     for (int i = 0; i < 3; ++i)
         for (int k = 0; k < K; ++k)
-            J.d[i][k] = frame[i] * (d.traction_scale[k] * Phi[i] + T * dPhi[i][k]);
+            J.d[i][k] = frame[i] * T * dPhi[i][k];
     return J;
 }
 

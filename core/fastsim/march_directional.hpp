@@ -32,8 +32,9 @@
 
 namespace creepwork {
 
-// One per creepage: xi_x, xi_y, phi. Models homogeneous in (creepages, N)
-// get the N column from Euler's identity (calibrated_model.cpp).
+// One per creepage: xi_x, xi_y, phi. The traction scale T = mu p0 does not
+// move along them (it depends on N only); models homogeneous in (creepages,
+// N) get the N column from Euler's identity (calibrated_model.cpp).
 constexpr int kMarchDirections = 3;
 
 struct MarchDirections {
@@ -41,8 +42,6 @@ struct MarchDirections {
     // Inputs (see above), [k * stride + j] and per direction.
     Eigen::ArrayXd wx, wy;
     double cy[kMarchDirections] = {}, blend[kMarchDirections] = {};
-    // The derivative of the traction scale T = mu p0 (forces = T x sums).
-    double traction_scale[kMarchDirections] = {};
     // Outputs: per direction and strip, the derivatives of the strip's sums
     // of p'_x, p'_y and X p'_y (MarchState's sums), [k * stride + j].
     Eigen::ArrayXd sum_px, sum_py, sum_x_py;
