@@ -107,8 +107,8 @@ CreepCoefficients coefficients_of(double a_over_b, double nu)
 CreepCoefficients kalker_coefficients(double a_over_b, double nu)
 {
     // The last answer of this thread, returned as computed (bitwise): the
-    // calibrated Jacobian asks for one contact's coefficients for each of its
-    // eight differenced setups (they were 22 % of its time on 20 x 20).
+    // calibrated Jacobian asks for one contact's coefficients in each of its
+    // differenced setups (they were 22 % of its time on 20 x 20).
     thread_local double last_a_over_b = std::nan(""), last_nu = std::nan("");
     thread_local CreepCoefficients last{};
     if (a_over_b == last_a_over_b && nu == last_nu) return last;

@@ -13,7 +13,6 @@ namespace {
 
 namespace cw = creepwork;
 
-
 ModelResult solve_exact(cw::Solver& s, cw::ContactInput in, bool with_map)
 {
     in.model = cw::ModelKind::exact;
