@@ -16,6 +16,9 @@
 //       ns per element, FASTSIM and calibrated, full mode
 //   creepwork_calibration spin-sweep
 //       Mz and W against normalised spin, a/b = 1 and 2, every model (CSV)
+//   creepwork_calibration oracle training|evaluation [cache-dir]
+//       the floor of the model's form: per partial-slip case the best map
+//       and profile L1 any choice of its knobs gives (calibration_oracle.hpp)
 //   creepwork_calibration discretisation [cache-dir]
 //       elements needed for 1 % discretisation error, every model
 //       (calibration_discretisation.hpp)
@@ -52,6 +55,7 @@
 #include "calibration_discretisation.hpp"
 #include "calibration_fit.hpp"
 #include "calibration_metrics.hpp"
+#include "calibration_oracle.hpp"
 #include "calibration_reference.hpp"
 #include "calibration_select.hpp"
 #include "contact/kalker_coefficients.hpp"
@@ -268,7 +272,7 @@ void report(const std::string& cmd, CaseSet set, const std::vector<CalibrationCa
 int main(int argc, char** argv)
 {
     if (argc < 2) {
-        std::fprintf(stderr, "usage: creepwork_calibration evaluate|cases <set> [cache-dir] | "
+        std::fprintf(stderr, "usage: creepwork_calibration evaluate|cases|oracle <set> [cache-dir] | "
                              "fit [cache-dir] | select-weights [cache-dir]\n");
         return 2;
     }
@@ -283,6 +287,7 @@ int main(int argc, char** argv)
         continuum_references(cases, refs, dir + "/exact_training_160.txt");
         return cmd == "fit" ? fit_table(cases, refs) : select_weights(cases, refs);
     }
+    if (cmd == "oracle" && argc > 2) return oracle_study(parse_set(argv[2]), argc > 3 ? argv[3] : ".");
     if (argc < 3 || (cmd != "evaluate" && cmd != "cases")) {
         std::fprintf(stderr, "unknown command '%s'\n", cmd.c_str());
         return 2;
