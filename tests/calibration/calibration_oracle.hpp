@@ -27,8 +27,9 @@ double search_knobs(const std::function<double(const creepwork::CalibrationParam
 
 // Prints per case and in summary the best map L1 (model on 40 x 40 and on
 // 160 x 160 summed onto 40 x 40), the best profile L1 (40 x 40), and the
-// best map L1 (40 x 40) among knobs that keep the forces within 3 % of mu N
-// and, with spin, W within 5 %. Returns 0.
+// best map L1 (both grids) among knobs that keep the forces within 3 % of
+// mu N and, with spin, W within 5 % (2, the largest distance, where the
+// search found no such knobs). Returns 0.
 int oracle_study(CaseSet set, const std::string& dir);
 
 } // namespace cwcal
