@@ -5,7 +5,7 @@ extern "C" {
 
 int cw_version_number(void) { return CW_VERSION_NUMBER; }
 int cw_abi_version(void) { return CW_ABI_VERSION; }
-const char* cw_version_string(void) { return "1.1.0"; }
+const char* cw_version_string(void) { return "1.2.0"; }
 
 const char* cw_status_string(int status)
 {

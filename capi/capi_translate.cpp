@@ -138,6 +138,10 @@ cw::ContactInput to_input(const cw_params* params)
                                        std::to_string(p.flexibility_blending) +
                                        " must be 0 or 1");
     in.flexibility_blending = p.flexibility_blending == 1;
+    if (p.exact_load != 0 && p.exact_load != 1)
+        fail(CW_ERR_INVALID_INPUT,
+             "params->exact_load = " + std::to_string(p.exact_load) + " must be 0 or 1");
+    in.exact_load = p.exact_load == 1;
     return in;
 }
 

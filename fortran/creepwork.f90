@@ -73,6 +73,8 @@ module creepwork
       integer(c_int) :: warm_start = 0    ! exact model: 1 start from the last solution
       real(c_double) :: spin_offset = 0   ! CONTACT's facphi (CW_SPIN_OFFSET_DEFAULT: model's own)
       integer(c_int) :: flexibility_blending = 0 ! FASTSIM: 1 = CONTACT's blending of L1..L3
+      ! appended in 1.2
+      integer(c_int) :: exact_load = 0    ! FASTSIM, calibrated: 1 = sum(pz area) = N exactly
    end type cw_params
 
    ! Totals of a solve (cw_result); see the header for each field.
@@ -937,7 +939,7 @@ contains
       v = int(capi_abi_version())
    end function cw_library_abi_version
 
-   ! "1.1.0"
+   ! "1.2.0"
    function cw_version_string() result(s)
       character(len=:), allocatable :: s
       s = f_string(capi_version_string())

@@ -65,13 +65,41 @@ void validate_calibrated_input(const ContactInput& input)
                     "its table is fitted in Kalker's normalisation");
 }
 
-// FASTSIM's setup of input with the calibrated changes of params.
-ModelSetup calibrated_setup(const ContactInput& input, const CalibrationParams& params)
+// The grid's load per unit pressure scale under the traction bound of the
+// blend (bound_shape.hpp: linear in the blend on each side), and its
+// derivative by the blend.
+double blended_load(const DiscreteLoad& load, double blend)
+{
+    return blend >= 0.0 ? (1.0 - blend) * load.parabolic + blend * 0.75 * load.elliptic
+                        : (1.0 + blend) * load.parabolic - blend * 1.5 * load.quartic;
+}
+double blended_load_slope(const DiscreteLoad& load, double blend)
+{
+    return blend >= 0.0 ? 0.75 * load.elliptic - load.parabolic
+                        : load.parabolic - 1.5 * load.quartic;
+}
+
+// The bound blend the setup of params uses (0: the pressure law's own).
+double bound_blend_of(const ContactInput& in, const CalibrationParams& params)
+{
+    return in.pressure == PressureKind::parabolic
+               ? std::max(-kMaxBoundBlend, std::min(kMaxBoundBlend, params.bound_blend))
+               : 0.0;
+}
+
+// FASTSIM's setup of input with the calibrated changes of params; load is the
+// grid's (read with exact_load: the pressure scale then makes the blended
+// bound carry N exactly).
+ModelSetup calibrated_setup(const ContactInput& input, const CalibrationParams& params,
+                            const DiscreteLoad& load)
 {
     ContactInput in = input;
     in.pressure = params.pressure;
     in.flexibility_blending = false; // the table replaces CONTACT's blending
-    ModelSetup s = make_model_setup(in);
+    const double blend = bound_blend_of(in, params);
+    ModelSetup s = make_model_setup(in, in.pressure == PressureKind::parabolic
+                                            ? blended_load(load, blend)
+                                            : load.elliptic);
     double L_M = s.L3;
     if (in.flexibility == FlexibilitySource::kalker_from_material) {
         L_M = moment_consistent_flexibility(s.b, in.G, s.C.C33);
@@ -85,8 +113,7 @@ ModelSetup calibrated_setup(const ContactInput& input, const CalibrationParams& 
     if (in.flexibility == FlexibilitySource::kalker_from_material && params.equalise > 0.0)
         equalise_flexibilities(s, in, L_M, params);
     s.kin.edge_gain = params.edge_gain;
-    if (in.pressure == PressureKind::parabolic)
-        s.kin.bound_blend = std::max(-kMaxBoundBlend, std::min(kMaxBoundBlend, params.bound_blend));
+    s.kin.bound_blend = blend;
     return s;
 }
 
@@ -111,7 +138,8 @@ SolveTotals CalibratedModel::solve(const ContactInput& input, SolveMode mode)
 SolveTotals CalibratedModel::solve_with(const ContactInput& input, SolveMode mode,
                                         const CalibrationParams& params)
 {
-    SolveTotals t = march_.solve_setup(calibrated_setup(input, params), input, mode);
+    SolveTotals t =
+        march_.solve_setup(calibrated_setup(input, params, march_.discrete_load()), input, mode);
     t.model = ModelKind::calibrated;
     return t;
 }
@@ -128,9 +156,22 @@ SolveTotals CalibratedModel::solve_jacobian(const ContactInput& input, SolveMode
         jacobian = Jacobian{};
         return solve(input, mode);
     }
-    const ModelSetup setup = calibrated_setup(input, calibration_for(input));
+    const ModelSetup setup = calibrated_setup(input, calibration_for(input), march_.discrete_load());
     set_directions(input, setup);
     SolveTotals t = march_.solve_setup_directional(setup, input, mode, directions_, jacobian);
+    if (input.exact_load) {
+        // The march's directions hold the creepages' effect on the kinematics
+        // and on the bound; with exact_load the traction scale T moves too,
+        // as 1 / (the blended bound's load), so F = T Phi gains
+        // (dT/T) F = -(dI/I) F along each direction.
+        const DiscreteLoad& load = march_.discrete_load();
+        const double blend = setup.kin.bound_blend;
+        const double dlog_load = blended_load_slope(load, blend) / blended_load(load, blend);
+        const double F[3] = {t.Fx, t.Fy, t.Mz};
+        for (int k = 0; k < kMarchDirections; ++k)
+            for (int i = 0; i < 3; ++i)
+                jacobian.d[i][k] -= dlog_load * directions_.blend[k] * F[i];
+    }
     // N: the model is homogeneous of degree 1 in (xi_x, xi_y, phi, N) -- T is
     // proportional to N, and the march and the table see only creepage / N
     // (normalised_creepage, kin = a xi / (L mu p0)) -- so by Euler's identity
@@ -172,8 +213,8 @@ void CalibratedModel::set_directions(const ContactInput& in, const ModelSetup& s
         ContactInput plus = in, minus = in;
         plus.*member[k] = value + h;
         minus.*member[k] = value - h;
-        const ModelSetup sp = calibrated_setup(plus, calibration_for(plus));
-        const ModelSetup sm = calibrated_setup(minus, calibration_for(minus));
+        const ModelSetup sp = calibrated_setup(plus, calibration_for(plus), march_.discrete_load());
+        const ModelSetup sm = calibrated_setup(minus, calibration_for(minus), march_.discrete_load());
         const double inv = 1.0 / ((value + h) - (value - h)); // the step as represented
         double* dwx = directions_.wx.data() + k * stride;
         double* dwy = directions_.wy.data() + k * stride;

@@ -67,6 +67,12 @@ struct ContactInput {
     double spin_offset = -1.0;
     // FASTSIM: CONTACT's blending of L1, L2, L3 for combined creepages.
     bool flexibility_blending = false;
+    // FASTSIM, calibrated: the pressure scale set so that the discrete load
+    // sum pz dA equals normal_force exactly (false: the analytic scale of the
+    // pressure law, which the grid integrates to within a few tenths of a per
+    // cent). The exact model's discrete normal problem carries N exactly
+    // either way.
+    bool exact_load = false;
 };
 
 // Flags in SolveTotals::work_flags.

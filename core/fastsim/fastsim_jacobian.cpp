@@ -5,11 +5,6 @@
 #include "fastsim/march_directional.hpp"
 
 namespace creepwork {
-namespace {
-
-constexpr double kPi = 3.14159265358979323846;
-
-} // namespace
 
 Jacobian fastsim_jacobian(const ContactInput& in, const ModelSetup& s, const ContactGrid& grid,
                           const MarchState& march, const TangentState& tangents)
@@ -30,9 +25,7 @@ Jacobian fastsim_jacobian(const ContactInput& in, const ModelSetup& s, const Con
                                   tangents.stride, kTangents, Phi, dPhi);
 
     // dT/dc: only N moves T = mu p0, p0 proportional to N.
-    const double p0_per_N = s.pressure == PressureKind::parabolic ? 2.0 / (kPi * a * b)
-                                                                  : 3.0 / (2.0 * kPi * a * b);
-    const double dT[4] = {0.0, 0.0, 0.0, in.mu * p0_per_N};
+    const double dT[4] = {0.0, 0.0, 0.0, in.mu * s.pressure_per_force};
 
     // dL_i/dc: only blending moves the flexibilities.
     double dL[3][4] = {};

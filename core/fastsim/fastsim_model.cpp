@@ -10,7 +10,7 @@
 namespace creepwork {
 
 FastsimModel::FastsimModel(const GridSpec& grid)
-    : grid_(grid), geometry_(grid_), isa_(best_kernel_isa())
+    : grid_(grid), geometry_(grid_), isa_(best_kernel_isa()), load_(creepwork::discrete_load(grid_))
 {
     march_.resize(grid_.size(), grid_.ny());
     work_.resize(grid_.size(), grid_.ny());
@@ -29,7 +29,8 @@ void FastsimModel::set_kernel_isa(KernelIsa isa)
 
 SolveTotals FastsimModel::solve(const ContactInput& input, SolveMode mode, Jacobian* jacobian)
 {
-    return march_and_total(make_model_setup(input), input, mode, jacobian);
+    return march_and_total(make_model_setup(input, discrete_load_of(load_, input.pressure)), input,
+                           mode, jacobian);
 }
 
 SolveTotals FastsimModel::solve_setup(const ModelSetup& setup, const ContactInput& input,

@@ -49,6 +49,8 @@ public:
                                         Jacobian& jacobian);
 
     const ContactGrid& grid() const { return grid_; }
+    // The load the grid carries per unit pressure scale (exact_load).
+    const DiscreteLoad& discrete_load() const { return load_; }
     // Allocates the workspace of a blended traction bound
     // (NormalisedKinematics::bound_blend), for models that use one.
     void reserve_blended_bound() { geometry_.reserve_blend(); }
@@ -82,6 +84,7 @@ private:
     ModelSetup setup_;
     KernelIsa isa_ = KernelIsa::baseline;
     double max_shape_parabolic_ = 0, max_shape_elliptic_ = 0; // largest pz / p0 on the grid
+    DiscreteLoad load_;
 };
 
 } // namespace creepwork

@@ -16,15 +16,53 @@ constexpr double kPi = 3.14159265358979323846;
 
 } // namespace
 
-ModelSetup make_model_setup(const ContactInput& in)
+DiscreteLoad discrete_load(const ContactGrid& grid)
+{
+    DiscreteLoad load;
+    const Eigen::ArrayXd& P = grid.pressure_shape(PressureKind::parabolic);
+    const Eigen::ArrayXd& E = grid.pressure_shape(PressureKind::elliptic);
+    const int ny = grid.ny();
+    for (int j = 0; j < ny; ++j) {
+        double p = 0.0, e = 0.0, q = 0.0;
+        for (int m = 0; m < grid.nx(); ++m) {
+            const Eigen::Index k = static_cast<Eigen::Index>(m) * ny + j;
+            p += P[k];
+            e += E[k];
+            q += P[k] * P[k];
+        }
+        const double area = grid.x_length()[j] * grid.y_width()[j];
+        load.parabolic += area * p;
+        load.elliptic += area * e;
+        load.quartic += area * q;
+    }
+    return load;
+}
+
+double discrete_load_of(const DiscreteLoad& load, PressureKind pressure)
+{
+    return pressure == PressureKind::parabolic ? load.parabolic : load.elliptic;
+}
+
+ModelSetup make_model_setup(const ContactInput& in, double load)
 {
     validate_contact_input(in);
     ModelSetup s;
     s.a = in.a;
     s.b = in.b;
-    const double p0 = in.pressure == PressureKind::parabolic
-                          ? 2.0 * in.normal_force / (kPi * in.a * in.b)
-                          : 3.0 * in.normal_force / (2.0 * kPi * in.a * in.b);
+    double p0 = 0.0;
+    if (in.exact_load) {
+        if (!(load > 0.0))
+            throw Error(ErrorKind::invalid_input,
+                        "exact_load = 1: the grid has no contact element to carry the load");
+        s.pressure_per_force = 1.0 / (in.a * in.b * load);
+        p0 = in.normal_force * s.pressure_per_force;
+    } else if (in.pressure == PressureKind::parabolic) {
+        s.pressure_per_force = 2.0 / (kPi * in.a * in.b);
+        p0 = 2.0 * in.normal_force / (kPi * in.a * in.b);
+    } else {
+        s.pressure_per_force = 3.0 / (2.0 * kPi * in.a * in.b);
+        p0 = 3.0 * in.normal_force / (2.0 * kPi * in.a * in.b);
+    }
     s.pressure = in.pressure;
     s.pressure_scale = p0;
     s.traction_scale = in.mu * p0;

@@ -3,6 +3,7 @@
 // creepages in the rolling frame.
 #pragma once
 
+#include "contact/contact_grid.hpp"
 #include "contact/kalker_coefficients.hpp"
 #include "contact/params.hpp"
 
@@ -36,7 +37,9 @@ struct NormalisedKinematics {
 struct ModelSetup {
     double a = 0, b = 0;
     PressureKind pressure = PressureKind::parabolic;
-    double pressure_scale = 0;   // p0 = 2N/(pi a b) (parabolic) or 3N/(2 pi a b) (elliptic) [Pa]
+    double pressure_scale = 0;   // p0 = 2N/(pi a b) (parabolic) or 3N/(2 pi a b) (elliptic),
+                                 // or N/(a b I) with exact_load (DiscreteLoad) [Pa]
+    double pressure_per_force = 0; // p0 / N [1/m^2]: the derivative the Jacobian needs
     double traction_scale = 0;   // mu * p0 [Pa]
     double L1 = 0, L2 = 0, L3 = 0; // in use: Kalker's or given, blended on request
     CreepCoefficients C{0, 0, 0, 0}; // zero when flexibilities were given
@@ -50,8 +53,24 @@ struct ModelSetup {
     double kin_divisor = 0;
 };
 
-// Throws Error(invalid_input) naming the first offending input.
-ModelSetup make_model_setup(const ContactInput& in);
+// The load a grid carries per unit pressure scale: over the contact elements
+// of the grid, the sum of each pressure shape times the element area in
+// units of a b. Over the unit disc the shapes integrate to pi/2 (parabolic
+// P = 1 - X^2 - Y^2), 2 pi/3 (elliptic, sqrt(P)) and pi/3 (P^2); a grid's
+// midpoint sums differ from these by up to a few tenths of a per cent, so the
+// analytic scale p0 = N/(a b int) gives sum pz dA != N. With exact_load the
+// scale is N/(a b sum) instead.
+struct DiscreteLoad {
+    double parabolic = 0, elliptic = 0, quartic = 0;
+};
+DiscreteLoad discrete_load(const ContactGrid& grid);
+// The sum of DiscreteLoad for the pressure law (unblended).
+double discrete_load_of(const DiscreteLoad& load, PressureKind pressure);
+
+// Throws Error(invalid_input) naming the first offending input. load: the
+// grid's sum for in.pressure (or for the bound in use), read only when
+// in.exact_load is set; it must then be > 0.
+ModelSetup make_model_setup(const ContactInput& in, double load = 0.0);
 
 // Largest magnitude of a normalised creepage; larger ones are scaled down
 // together (direction kept) so that no intermediate can overflow. Such a

@@ -66,7 +66,7 @@ extern "C" {
 /* ---------------------------------------------------------------- version */
 
 #define CW_VERSION_MAJOR 1
-#define CW_VERSION_MINOR 1
+#define CW_VERSION_MINOR 2
 #define CW_VERSION_PATCH 0
 /* 10000*major + 100*minor + patch */
 #define CW_VERSION_NUMBER (CW_VERSION_MAJOR * 10000 + CW_VERSION_MINOR * 100 + CW_VERSION_PATCH)
@@ -77,7 +77,7 @@ extern "C" {
  * that the loaded library is the one the program was built against. */
 CW_API int cw_version_number(void);
 CW_API int cw_abi_version(void);
-CW_API const char* cw_version_string(void); /* "1.1.0", static */
+CW_API const char* cw_version_string(void); /* "1.2.0", static */
 
 /* ------------------------------------------------------------ status codes */
 
@@ -219,6 +219,15 @@ typedef struct cw_params {
                                  flexibility as the creepage grows (CONTACT's default;
                                  with spin_offset = 1/6 on the uniform grid it reproduces
                                  CONTACT's FASTSIM), 0 (default) = Kalker's L1, L2, L3 */
+    /* ---- appended in 1.2 ---- */
+    int exact_load;        /* FASTSIM, calibrated: 1 = pressure scaled so that the discrete
+                              load sum(pz * area) equals normal_force exactly, so that
+                              |F| <= mu * normal_force to rounding on every grid; 0 (default)
+                              = the pressure law's analytic scale (2N/(pi a b) parabolic,
+                              3N/(2 pi a b) elliptic), whose sum over the grid differs from
+                              N by up to a few tenths of a per cent (the original algorithm:
+                              FASTSIM and CONTACT comparisons use it). The exact model's
+                              discrete normal problem carries N exactly either way. */
 } cw_params;
 
 /* Defaults: steel (G = 82e9 Pa, nu = 0.28), mu = 0.3, a = b = 6e-3 m,
