@@ -231,6 +231,48 @@ void print_text(std::ostream& os, const std::vector<Simplified>& names,
     os << line << centroids << ", exact " << shown_metric(ms[0].centroid_exact, 3) << "\n";
 }
 
+// --format markdown: one table row per simplified model with its distances
+// and ratios to exact (the tables of doc/validation/fastsim-vs-exact.md);
+// the grid is named by the elements across the ellipse.
+void print_markdown(std::ostream& os, const std::vector<Simplified>& names,
+                    const std::vector<Solution>& sims, const Solution& e,
+                    const std::vector<WorkComparison>& ms)
+{
+    os << "| model | elements across | L1 work maps (energy-consistent) | L1 eq. 36 map vs "
+          "exact D_I | L1 lateral profiles | exact dissipation in the model's adhesion | "
+          "model's work in exact adhesion | Mz model / exact - 1 | W_macro model / exact - 1 | "
+          "adhesion model / exact |\n|---|---|---|---|---|---|---|---|---|---|\n";
+    const auto metric = [](double v) {
+        char b[32];
+        std::snprintf(b, sizeof b, "%.3f", v);
+        return std::isfinite(v) ? std::string(b) : std::string("-");
+    };
+    // Shares of 1 % and more to 0.1 %, smaller ones to two digits.
+    const auto share = [](double v) {
+        char b[32];
+        std::snprintf(b, sizeof b, std::fabs(v) >= 0.01 ? "%.1f %%" : "%.2g %%", 100.0 * v);
+        return std::isfinite(v) ? std::string(b) : std::string("-");
+    };
+    const auto ratio = [](double m, double x) {
+        char b[32];
+        std::snprintf(b, sizeof b, "%+.1f %%", 100.0 * (m / x - 1.0));
+        return x != 0.0 ? std::string(b) : std::string("-");
+    };
+    for (size_t k = 0; k < sims.size(); ++k) {
+        const cw_result& r = sims[k].result;
+        char across[32], adhesion[64];
+        std::snprintf(across, sizeof across, "%.0f", e.nx / e.grid.box_scale);
+        std::snprintf(adhesion, sizeof adhesion, "%.1f %% / %.1f %%",
+                      100.0 * r.adhesion_fraction, 100.0 * e.result.adhesion_fraction);
+        os << "| " << names[k].display << " | " << across << " | "
+           << metric(ms[k].map_l1_consistent) << " | " << metric(ms[k].map_l1_paper) << " | "
+           << metric(ms[k].profile_l1) << " | " << share(ms[k].exact_power_in_fastsim_adhesion)
+           << " | " << share(ms[k].fastsim_work_in_exact_adhesion) << " | "
+           << ratio(r.Mz, e.result.Mz) << " | " << ratio(r.W_macro, e.result.W_macro) << " | "
+           << adhesion << " |\n";
+    }
+}
+
 } // namespace
 
 int command_compare(int argc, char** argv, int first)
@@ -241,7 +283,7 @@ int command_compare(int argc, char** argv, int first)
                    {"max-iterations", OptionKind::integer, {}},
                    {"simplified", OptionKind::choice,
                     {"fastsim", "fastsim-elliptic", "calibrated", "all"}}}),
-             output_options());
+             output_options_with_markdown());
     ParsedOptions opts;
     if (parse_or_help(specs, argc, argv, first, usage_compare(), opts)) return kExitOk;
     cw_params defaults;
@@ -316,6 +358,8 @@ int command_compare(int argc, char** argv, int first)
     }
     if (opts.text("format", "text") == "json")
         std::cout << json.str(true) << "\n";
+    else if (opts.text("format", "text") == "markdown")
+        print_markdown(std::cout, names, sims, e, ms);
     else
         print_text(std::cout, names, sims, e, ms, u);
     return kExitOk;

@@ -57,8 +57,10 @@ CaseRun run_case(const PaperCase& paper, const FitChoices& choices, ContactSolve
 std::string pct(double ours, double printed)
 {
     if (printed == 0.0) return "";
+    const double diff = 100.0 * (ours - printed) / std::fabs(printed);
+    if (std::fabs(diff) < 0.005) return "0"; // no "-0.00 %" for an exact fit
     char buf[32];
-    std::snprintf(buf, sizeof buf, "%+.2f %%", 100.0 * (ours - printed) / std::fabs(printed));
+    std::snprintf(buf, sizeof buf, "%+.2f %%", diff);
     return buf;
 }
 
@@ -222,6 +224,55 @@ std::vector<JsonObject> table1_json(const std::vector<Table1Result>& table)
     return rows;
 }
 
+// The comparison as Markdown tables (--format markdown), the tables of the
+// documentation's doc/validation/paper.md: forces on the rail in the
+// paper's units, as the paper prints them.
+void print_case_markdown(std::ostream& os, const CaseRun& run)
+{
+    const PaperCase& p = run.paper;
+    const cw_result& r = run.solution.result;
+    const double lbf = kNewtonPerLbf, ft = kMetrePerFoot;
+    const auto clean = [&](double v) { return std::fabs(v) < 1e-9 * p.N_lbf ? 0.0 : v; };
+    char buf[240];
+    std::snprintf(buf, sizeof buf,
+                  "| %s (xi_x %g, xi_y %g, spin %g 1/ft, a/b %g, mu %g, N %g lbf), a = %.3f mm "
+                  "| paper | creepwork | diff |\n|---|---|---|---|\n",
+                  p.name.c_str(), p.xi_x, p.xi_y, p.spin_per_ft, p.a_over_b, p.mu, p.N_lbf,
+                  r.a * 1e3);
+    os << buf;
+    const auto line = [&](const char* name, double printed_value, double ours) {
+        std::snprintf(buf, sizeof buf, "| %s | %.3f | %.3f | %s |\n", name, printed_value,
+                      clean(ours), pct(clean(ours), printed_value).c_str());
+        os << buf;
+    };
+    const bool fitted_x = p.Fx_lbf != 0.0;
+    if (fitted_x) line("Fx on the rail [lbf] (fitted)", p.Fx_lbf, -r.Fx / lbf);
+    line("Fy on the rail [lbf] (fitted)", p.Fy_lbf, -r.Fy / lbf);
+    line("Mz on the rail [lbf ft]", p.Mz_lbf_ft, -r.Mz / (lbf * ft));
+    line("Wd = W_macro [lbf ft per ft]", p.Wd, r.W_macro / lbf);
+    std::snprintf(buf, sizeof buf, "| K | %.3f | %.3f | %s |\n", p.K, r.K, pct(r.K, p.K).c_str());
+    os << buf;
+    std::snprintf(buf, sizeof buf, "| slip region | %s | %.0f %% adhesion | |\n", p.slip.c_str(),
+                  100 * r.adhesion_fraction);
+    os << buf;
+}
+
+void print_table1_markdown(std::ostream& os, const std::vector<Table1Result>& table)
+{
+    os << "| xi_x | xi_y | spin [1/ft] | contact | paper K | creepwork K | diff | slip: paper / "
+          "creepwork |\n|---|---|---|---|---|---|---|---|\n";
+    char buf[200];
+    for (const Table1Result& t : table) {
+        std::snprintf(buf, sizeof buf, "| %g | %g | %g | %s | %.3f | %.4f | %s | %s / %.0f %% "
+                      "adhesion |\n",
+                      t.row.xi_x, t.row.xi_y, t.row.spin_per_ft,
+                      t.row.fig7_contact ? "Fig. 7" : "Fig. 6", t.row.K, t.result.K,
+                      pct(t.result.K, t.row.K).c_str(), t.row.slip,
+                      100 * t.result.adhesion_fraction);
+        os << buf;
+    }
+}
+
 // Hertz scaling for comparison: a ~ N^(1/3) at fixed curvatures.
 double hertz_scaled_a(const CaseRun& from, const PaperCase& to)
 {
@@ -255,7 +306,7 @@ int command_fit_fig6(int argc, char** argv, int first)
                              {"nx", K::integer, {}},
                              {"ny", K::integer, {}},
                              {"units", K::choice, {"si", "SI", "paper"}}},
-                            output_options());
+                            output_options_with_markdown());
     ParsedOptions opts;
     if (parse_or_help(specs, argc, argv, first, usage_fit_fig6(), opts)) return kExitOk;
     const Units units = Units::named(opts.text("units", "si"));
@@ -304,6 +355,14 @@ int command_fit_fig6(int argc, char** argv, int first)
         return kExitOk;
     }
     std::ostream& os = std::cout;
+    if (opts.text("format", "text") == "markdown") {
+        print_case_markdown(os, fig6);
+        os << "\n";
+        print_case_markdown(os, fig7);
+        os << "\n";
+        print_table1_markdown(os, table1);
+        return kExitOk;
+    }
     os << "The paper's Figs. 6 and 7 reproduced. The paper gives neither the semi-axes nor the\n"
           "material. Choices (see creepwork fit-fig6 --help for why): steel G = "
        << fmt(choices.G / 1e9, 4) << " GPa = " << fmt(choices.G / kPascalPerPsi, 8)

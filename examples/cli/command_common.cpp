@@ -18,6 +18,14 @@ std::vector<OptionSpec> output_options()
                 plot_options());
 }
 
+std::vector<OptionSpec> output_options_with_markdown()
+{
+    std::vector<OptionSpec> specs = output_options();
+    for (OptionSpec& s : specs)
+        if (s.name == "format") s.choices.push_back("markdown");
+    return specs;
+}
+
 std::vector<OptionSpec> join(std::vector<OptionSpec> a, const std::vector<OptionSpec>& b)
 {
     a.insert(a.end(), b.begin(), b.end());

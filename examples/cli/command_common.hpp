@@ -11,6 +11,10 @@ namespace cwcli {
 // --format text|json, --out DIR, --force, --no-plots, --help, and the
 // picture options --plot-sign, --plot-axes (plot_style.hpp)
 std::vector<OptionSpec> output_options();
+// output_options() whose --format also takes "markdown": the tables the
+// documentation shows, printed by the command that computes them
+// (scripts/doc-tables.sh pastes them into doc/).
+std::vector<OptionSpec> output_options_with_markdown();
 
 // Appends b to a.
 std::vector<OptionSpec> join(std::vector<OptionSpec> a, const std::vector<OptionSpec>& b);
