@@ -44,14 +44,14 @@ targets_for_label() { # targets_for_label <dir> <label>
     done | sort -u
 }
 
-stage "Release build and tests (README \"Building without ./run\", as printed)"
-# The very commands README.md prints (scripts/readme-block.sh), so the README
+stage "Release build and tests (README's recipe-ci block, as printed)"
+# The very commands README.md prints (scripts/doc-block.sh), so the README
 # cannot drift from CI. A stale cache goes first: the block relies on the
 # options' defaults (every part on), which an earlier configure could have
 # changed; object files stay, so nothing is rebuilt needlessly.
 rm -f build/CMakeCache.txt
 mkdir -p build
-bash scripts/readme-block.sh README.md recipe-ci build-and-test >build/readme-build-and-test.sh
+bash scripts/doc-block.sh README.md recipe-ci build-and-test >build/readme-build-and-test.sh
 bash -euo pipefail build/readme-build-and-test.sh
 
 # The whole suite with ASan + UBSan (gcc: one compiler family for C, C++ and
@@ -66,7 +66,7 @@ build build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo "-DCREEPWORK_SANITIZE=address
 # built with ASan (the install-and-consume test) may still run.
 # CREEPWORK_ASAN_EXCLUDE (a CTest label regex) can leave out more tests that
 # cannot run under ASan; none needs it today.
-# The README recipes (label "recipes") build their own plain library from a
+# The recipes of README.md and doc/ (label "recipes") build their own plain library from a
 # fresh copy: under this stage they would only repeat the Release stage's run.
 asan_exclude=(-LE "recipes${CREEPWORK_ASAN_EXCLUDE:+|$CREEPWORK_ASAN_EXCLUDE}")
 ASAN_OPTIONS="detect_leaks=1:abort_on_error=1:detect_stack_use_after_return=1:strict_string_checks=1:verify_asan_link_order=0" \
