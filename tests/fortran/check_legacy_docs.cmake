@@ -2,9 +2,10 @@
 # subroutine of fortran/creepwork_legacy.f90 must appear with the same
 # argument list in the installed include files (creepwork_legacy.inc, as a
 # "! CALL NAME(...)" comment and an EXTERNAL line; creepwork_legacy.fi, as an
-# interface body) and in README.md (a "`CALL NAME(...)`" line followed by a
-# table row for every argument), and nothing else may be documented there.
-# usage: cmake -DSOURCE=... -DINC=... -DFI=... -DREADME=... -P check_legacy_docs.cmake
+# interface body) and in the manual's page doc/fortran-legacy.md (a
+# "`CALL NAME(...)`" line followed by a table row for every argument), and
+# nothing else may be documented there.
+# usage: cmake -DSOURCE=... -DINC=... -DFI=... -DDOC=... -P check_legacy_docs.cmake
 cmake_minimum_required(VERSION 3.25)
 
 # Joins Fortran continuation lines ('&' at the end, optional '&' or '!' at the
@@ -45,11 +46,11 @@ string(REGEX REPLACE ",[ \t]*\n![ \t]*" ", " inc_joined "${inc_text}")
 signatures("${inc_joined}" "! CALL CW[A-Z]+\\([^)]*\\)" inc_sigs)
 string(REGEX MATCHALL "\n      EXTERNAL CW[A-Z]+" inc_externals "${inc_text}")
 
-file(READ ${README} readme)
-signatures("${readme}" "`CALL CW[A-Z]+\\([^)]*\\)`" readme_sigs)
+file(READ ${DOC} doc)
+signatures("${doc}" "`CALL CW[A-Z]+\\([^)]*\\)`" doc_sigs)
 
 set(problems "")
-foreach(where fi inc readme)
+foreach(where fi inc doc)
   foreach(sig IN LISTS ${where}_sigs)
     if(NOT sig IN_LIST source_sigs)
       string(APPEND problems "\n  ${where}: ${sig} matches no subroutine of the source")
@@ -58,7 +59,7 @@ foreach(where fi inc readme)
 endforeach()
 foreach(sig IN LISTS source_sigs)
   string(REGEX REPLACE "\\|.*" "" name "${sig}")
-  foreach(where fi inc readme)
+  foreach(where fi inc doc)
     if(NOT sig IN_LIST ${where}_sigs)
       string(APPEND problems "\n  ${where}: ${name} missing or with other arguments than ${sig}")
     endif()
@@ -66,10 +67,10 @@ foreach(sig IN LISTS source_sigs)
   if(NOT "\n      EXTERNAL ${name}" IN_LIST inc_externals)
     string(APPEND problems "\n  inc: no EXTERNAL ${name}")
   endif()
-  # README: each argument in a table row of this routine's section.
-  string(FIND "${readme}" "`CALL ${name}(" start)
+  # The page: each argument in a table row of this routine's section.
+  string(FIND "${doc}" "`CALL ${name}(" start)
   if(start GREATER -1)
-    string(SUBSTRING "${readme}" ${start} -1 section)
+    string(SUBSTRING "${doc}" ${start} -1 section)
     string(SUBSTRING "${section}" 1 -1 rest)
     string(FIND "${rest}" "`CALL CW" next)
     if(next GREATER -1)
@@ -79,7 +80,7 @@ foreach(sig IN LISTS source_sigs)
     string(REPLACE "," ";" args "${args}")
     foreach(arg IN LISTS args)
       if(NOT section MATCHES "\n\\|[^\n]*`${arg}`")
-        string(APPEND problems "\n  README: no table row for ${name} argument ${arg}")
+        string(APPEND problems "\n  doc: no table row for ${name} argument ${arg}")
       endif()
     endforeach()
   endif()
@@ -87,4 +88,4 @@ endforeach()
 if(problems)
   message(FATAL_ERROR "legacy layer documentation drifted:${problems}")
 endif()
-message(STATUS "${count} legacy routines documented alike in source, .inc, .fi and README")
+message(STATUS "${count} legacy routines documented alike in source, .inc, .fi and ${DOC}")
