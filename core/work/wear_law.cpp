@@ -18,7 +18,7 @@ constexpr double kMaxCoefficient = 1e6;
 void require_coefficient(const char* name, double v)
 {
     require_non_negative(name, v);
-    if (v > kMaxCoefficient) reject_input(name, v, "must be <= 1e6 (SI units, README \"Wear\")");
+    if (v > kMaxCoefficient) reject_input(name, v, "must be <= 1e6 (SI units, doc/theory/wear.md)");
 }
 
 } // namespace

@@ -40,7 +40,7 @@ int command_campaign(int argc, char** argv, int first)
         throw CliError(kExitFailure,
                        "campaign: this creepwork was built without MPI, so creepwork-campaign "
                        "is not beside it; install Open MPI (Debian: libopenmpi-dev openmpi-bin) "
-                       "and rebuild (README \"Campaigns\")");
+                       "and rebuild (doc/campaigns.md)");
     std::vector<char*> args;
     args.push_back(const_cast<char*>(program.c_str()));
     for (int k = first; k < argc; ++k) args.push_back(argv[k]);

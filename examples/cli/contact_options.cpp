@@ -158,7 +158,7 @@ cw_grid read_grid(const ParsedOptions& o, const cw_grid& defaults, int model)
             throw usage_error("--grid", "the exact model needs the uniform grid (give --grid "
                                         "uniform, or no --grid: it is then the default)");
         if (g.kind != CW_GRID_UNIFORM) {
-            // CONTACT's layout (README "Exact model"): the ellipse inside a
+            // CONTACT's layout (doc/theory/exact.md): the ellipse inside a
             // box 1.2 times larger, two guard cells on each side at 20 across.
             g.kind = CW_GRID_UNIFORM;
             g.nx = static_cast<int>(std::lround(kExactBoxScale * g.nx));
@@ -234,8 +234,8 @@ void require_given(const ParsedOptions& o)
     if (!missing.empty())
         throw usage_error(missing, "missing: the contact's semi-axes and load have no sensible "
                                    "default (e.g. --a 6e-3 --b 6e-3 --N 80e3: a 6 mm circle "
-                                   "under 80 kN; a, b from wheel and rail radii: README "
-                                   "\"From profile radii to a solve\")");
+                                   "under 80 kN; a, b from wheel and rail radii: "
+                                   "doc/tutorial.md)");
 }
 
 // The library's material and friction defaults, named when they are used.
@@ -333,7 +333,7 @@ ContactSetup read_contact(const ParsedOptions& o, const cw_params& defaults,
             o.text("pressure", "") == "elliptic" ? CW_PRESSURE_ELLIPTIC : CW_PRESSURE_PARABOLIC;
     if (o.has("rolling-direction"))
         p.rolling_direction = o.text("rolling-direction", "+1") == "-1" ? -1 : 1;
-    // CONTACT's FASTSIM defaults (README "Coming from other FASTSIM codes").
+    // CONTACT's FASTSIM defaults (doc/migrating.md).
     if (o.has("spin-offset")) {
         p.spin_offset = o.number("spin-offset", 0.0);
         if (!(p.spin_offset >= 0.0 && p.spin_offset <= 1.0))

@@ -9,8 +9,9 @@ const char* usage_main()
     return R"(usage: creepwork <command> [options]      (creepwork <command> --help for details)
 
 Creep forces, creep moment and frictional-work distributions of a wheel
-rolling on a rail (Kalker's simplified theory, FASTSIM, or his exact
-half-space theory: --model exact), via libcreepwork.
+rolling on a rail, via libcreepwork: Kalker's simplified theory (FASTSIM, the
+default), his exact half-space theory (--model exact) or the simplified
+theory calibrated to the exact one (--model calibrated).
 
 commands:
   solve      one contact: totals (text or JSON), and with --out every field
@@ -37,6 +38,10 @@ wheel-rail contact never has (a semi-axis of 7.2 m, G = 82000 Pa, a creepage
 of 0.7), notes naming defaults taken, and where --out wrote; exit status 0.
 Option names are exact (--N is the load, --nx the grid); values of
 enumerations are not case sensitive (--units SI, --grid Uniform).
+
+documentation: man creepwork; the manual under PREFIX/share/doc/creepwork,
+where doc/index.md says what to read first and doc/cli.md covers this
+program (doc/ paths in the help texts are relative to that directory).
 )";
 }
 
@@ -54,7 +59,7 @@ model:
   --model fastsim|exact|calibrated
                     fastsim (default): Kalker's simplified theory. exact:
                     Kalker's exact half-space theory on CONTACT's
-                    discretisation (README "Exact model"): needs G and nu
+                    discretisation (doc/theory/exact.md): needs G and nu
                     (not --L1..--L3) and the uniform grid, and solves its own
                     normal problem (no --pressure). Without --grid it gets
                     CONTACT's layout: the uniform grid, 24 x 24 elements over
@@ -62,7 +67,7 @@ model:
                     two guard cells on each side); --nx, --ny, --box-scale
                     override (at most 256 per direction); --grid strips is an
                     error. calibrated: the simplified theory calibrated to
-                    the exact one (README "Calibrated model"): needs G and nu,
+                    the exact one (doc/theory/calibrated.md): needs G and nu,
                     its own pressure law (parabolic, blended towards Hertz's
                     as the slip grows; no --pressure).
   --tolerance T     exact model: relative residual at which the tangential
@@ -121,7 +126,7 @@ output:
   --no-plots        with --out: data files only
   --jacobian        also the 4 x 4 Jacobian of Fx, Fy, Mz, W_macro by xi_x,
                     xi_y, phi, N (SI, whatever --units): "jacobian" in the
-                    JSON, a table in the text (README "Jacobians")
+                    JSON, a table in the text (doc/theory/jacobians.md)
   --plot-sign wheel|rail
                     the body the pictures' tractions, forces and moment act
                     on; default wheel, the sign of solve's text, JSON and CSV
@@ -243,7 +248,9 @@ Table 1: every row's K, rows 1-4, 6, 7 on Fig. 6's fitted contact (the
 paper does not say which contact they used), row 5 on Fig. 7's.
 
 options: --G --nu --nx --ny --units si|paper (units of --G, the JSON, the
-files and the pictures; the text shows both), --format text|json, --out DIR
+files and the pictures; the text shows both), --format text|json|markdown
+(markdown: the comparison and Table 1 as the tables of the documentation's
+doc/validation/paper.md), --out DIR
 (pictures of Fig. 6 in DIR, of Fig. 7 in DIR/fig7, plus fields.csv,
 profile.csv, result.json in each), --force, --no-plots, --plot-sign
 wheel|rail (default rail: the comparison above is on the rail, as the paper
@@ -257,9 +264,9 @@ const char* usage_wear()
     return R"(usage: creepwork wear --in STATES.csv --out DIR [options]
 
 A wear loop: each contact state of STATES.csv is solved, its wear computed
-element by element from the frictional work (README "Wear"), and its lateral
-wear profile added, the state's number of passes times, to a profile grid at
-the state's position s0. The same is done with the paper's assumption that
+element by element from the frictional work (doc/theory/wear.md), and its
+lateral wear profile added, the state's number of passes times, to a profile
+grid at the state's position s0. The same is done with the paper's assumption that
 the work (and so the wear) is spread laterally as a parabola (Figs. 8-9):
 the same worn volume per pass, (3V/4b)(1 - y^2/b^2) over [-b, b].
 A pass is one passage of the body's material through the contact: an axle
@@ -342,14 +349,14 @@ const char* usage_compare()
 
 One contact solved twice on the same uniform grid: by FASTSIM (Kalker's
 simplified theory, parabolic pressure, the paper's) and by Kalker's exact
-half-space theory (README "Exact model"). Prints both models' totals and how
+half-space theory (doc/theory/exact.md). Prints both models' totals and how
 far FASTSIM's frictional-work distribution is from the exact one -- what the
 paper could not check. Distances compare shapes: each map is scaled to unit
 total first.
   --simplified fastsim|fastsim-elliptic|calibrated|all
                      the simplified side (default fastsim): FASTSIM with the
                      paper's parabolic traction bound, with the elliptic
-                     one, the calibrated model (README "Calibrated model"),
+                     one, the calibrated model (doc/theory/calibrated.md),
                      or all three at once. "fastsim" in the metric names
                      below stands for the simplified model compared.
   map_l1_consistent  sum |f/F - e/E| over the elements of the two energy-
@@ -379,7 +386,9 @@ the comparison is of the two theories as Kalker states them: --L1..--L3,
 grid: uniform (--grid strips is an error), default 48 x 48 over 1.2 times the
 semi-axes (40 elements across the ellipse, two guard cells on each side,
 CONTACT's layout); --nx --ny (at most 256) --box-scale.
-output: --format text|json (the summary on stdout; forces on the wheel),
+output: --format text|json|markdown (the summary on stdout; forces on the
+wheel; markdown: one table row per simplified model, the distances and ratios
+to exact, as doc/validation/fastsim-vs-exact.md shows them),
 --out DIR, --force, --no-plots, --plot-axes normalised|physical
 (--plot-sign changes nothing here: states and work have no sign).
 

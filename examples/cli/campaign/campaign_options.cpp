@@ -24,7 +24,7 @@ load balancing, and writes DIR/results.csv (DIR/table.csv) in input order.
 The results are bitwise the same for any number of ranks and threads. A
 row that cannot be read or solved gets a status and a message on its line;
 the campaign goes on. Killed, it resumes with --resume, without redoing
-finished chunks. README "Campaigns" describes the files.
+finished chunks. doc/campaigns.md describes the files.
 
 input (--in): a CSV file with a header; columns (SI units)
   required  id,model,grid,nx,ny,a,b,N,mu,G,nu,xi_x,xi_y,phi
@@ -41,15 +41,15 @@ input (--in): a CSV file with a header; columns (SI units)
   an empty optional cell takes the library's default, as `creepwork solve`
 
 output:
-  --out DIR         the campaign's directory (created; see README for the
-                    rules on an existing one)
+  --out DIR         the campaign's directory (created; doc/campaigns.md has
+                    the rules on an existing one)
   --resume          continue the unfinished campaign in DIR (or start one)
   --force           start over in a DIR an earlier campaign wrote
 
 wear (--wear): each row's USFD or Archard/KTH wear from its work map, per
 row in results.csv (wear_* columns) and accumulated on a profile grid per
-body, DIR/wear_profile_rail.csv and/or wear_profile_wheel.csv (README
-"Campaigns", "Wear"); the options of `creepwork wear`:
+body, DIR/wear_profile_rail.csv and/or wear_profile_wheel.csv
+(doc/campaigns.md, doc/theory/wear.md); the options of `creepwork wear`:
   --law usfd|archard  --source consistent|paper|slip  --speed V (m/s, Archard)
   --density RHO  --hardness H (Archard)  --body rail|wheel (default rail)
   --wheel-radius R (m)  --orientation +1|-1

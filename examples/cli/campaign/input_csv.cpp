@@ -236,7 +236,7 @@ std::map<std::string, size_t> column_index(const std::vector<std::string>& heade
                              std::to_string(k + 1) + ") is unknown" +
                              (hint.empty() ? std::string("")
                                            : "; did you mean " + hint + "?") +
-                             " (README \"Campaigns\" lists the columns)");
+                             " (doc/campaigns.md lists the columns)");
         }
         if (!index.emplace(name, k).second)
             throw InputError(path + ": column '" + name + "' appears twice in the header");

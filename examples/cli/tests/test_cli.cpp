@@ -518,11 +518,11 @@ void fit_fig6_reproduces_the_paper(void**)
 {
     const Json j = parse_or_fail(run_ok({"fit-fig6", "--units", "paper", "--format", "json"}).out);
     // The paper's printed numbers (on the rail; ours on the wheel), with the
-    // agreement README "The paper, checked" claims; our values themselves to
+    // agreement doc/validation/paper.md claims; our values themselves to
     // the digits it prints (half a unit of the last one). Fit: nu = 0.3,
     // Kalker strip grid 10 x 10 (paper_cases.hpp).
-    const auto held = [](double ours, double readme, double half_unit) {
-        assert_close(ours, readme, 0.0, half_unit * (1 + 1e-9));
+    const auto held = [](double ours, double shown, double half_unit) {
+        assert_close(ours, shown, 0.0, half_unit * (1 + 1e-9));
     };
     const Json& r6 = j.at("fig6").at("result");
     assert_close(-r6.num("Fx"), 2780.880, 0.012, 0.0); // fitted: +1.04 %
@@ -548,7 +548,7 @@ void fit_fig6_reproduces_the_paper(void**)
     held(r7.num("W_macro"), 12.920, 5e-4);
     held(r7.num("K"), 1.414, 5e-4);
     assert_true(r7.num("adhesion_fraction") == 0.0); // "full slip example"
-    // Table 1, every row: our K to the four decimals the README prints, and
+    // Table 1, every row: our K to the four decimals doc/validation/paper.md prints, and
     // the paper's slip condition (full slip: no adhesion element).
     const double K_ours[7] = {1.0125, 1.0170, 1.0659, 1.0062, 1.4140, 1.6266, 2.0669};
     const Json& table = j.at("table1");
@@ -563,9 +563,10 @@ void fit_fig6_reproduces_the_paper(void**)
     }
 }
 
-// README "The paper, checked" also says why nu = 0.3 and 10 x 10: the other
-// choices it quotes, each held to the digits it prints, and Fig. 6's second
-// local minimum that the printed Mz rules out.
+// Why nu = 0.3 and 10 x 10 (paper_cases.hpp, fit-fig6 --help,
+// doc/validation/paper.md): the other choices, each held to the digits
+// quoted there, and Fig. 6's second local minimum that the printed Mz rules
+// out.
 void fit_fig6_choices(void**)
 {
     const double mm = 1e-3 / 0.3048; // JSON lengths in ft with --units paper

@@ -10,7 +10,7 @@
  *   - compare: both models' totals equal the C ABI's, and every distribution
  *     metric equals an independent computation from the fields and profiles
  *     it writes; the Fig. 6 contact on CONTACT's 20-across layout holds the
- *     numbers README "Exact model" quotes;
+ *     numbers doc/theory/exact.md quotes;
  *   - compare --simplified: the calibrated model's totals are solve --model
  *     calibrated's on the same grid to the bit, its map distances equal the
  *     ones recomputed from the fields it writes; --simplified all gives each
@@ -148,7 +148,7 @@ void solve_calibrated_matches_library(void**)
     same(j.num("Fy"), lib.Fy, "Fy");
     same(j.num("Mz"), lib.Mz, "Mz");
     same(j.num("W_macro"), lib.W_macro, "W_macro");
-    // Not FASTSIM's answer: the calibrated moment differs (README "Calibrated model").
+    // Not FASTSIM's answer: the calibrated moment differs (doc/theory/calibrated.md).
     c.params.model = CW_MODEL_FASTSIM;
     assert_true(library_solve(c.grid, c.params).Mz != lib.Mz);
 }
@@ -182,7 +182,7 @@ void solve_exact_matches_library(void**)
     assert_true(in.num("box_scale") == 1.2);
     assert_string_equal(in.at("model").string.c_str(), "exact");
     // The exact pressure is near Hertz's peak 3N/(2 pi a b) (Kalker 1990;
-    // CONTACT: 1226.8 of 1229.3 N/mm^2 at 20 across, README "Exact model").
+    // CONTACT: 1226.8 of 1229.3 N/mm^2 at 20 across, doc/theory/exact.md).
     const double p0 = 1.5 * 70000 / (M_PI * 0.007 * 0.004);
     assert_close(j.num("p_max"), p0, 0.01, 0.0);
     // Given options reach the library: tolerance, iteration bound, grid.
@@ -336,7 +336,7 @@ void solve_exact_writes_fields_and_pictures(void**)
 // sweep --model exact: the exact model on the uniform grid the CLI documents
 // (--nx/--ny given, so 12 x 12 over 1.2 a x 1.2 b), from almost full
 // adhesion to full slip; a panel's forces equal a cold C ABI solve to the
-// solver tolerance (the sweep warm-starts one handle: README "Exact model",
+// solver tolerance (the sweep warm-starts one handle: doc/theory/exact.md,
 // warm and cold agree to ~1e-10 of |F|).
 void sweep_exact_model(void**)
 {
@@ -463,7 +463,7 @@ void compare_metrics_from_its_files(void**)
         assert_close(m.num(e.key), e.independent, 1e-12, 1e-12);
     }
     assert_int_equal(static_cast<int>(m.num("state_differences")), differ);
-    // The energy-consistent maps sum to each model's W_macro (README "Work").
+    // The energy-consistent maps sum to each model's W_macro (doc/theory/work.md).
     assert_close(sum(wf), rf.W_macro, 1e-12, 0.0);
     assert_close(sum(we), re.W_macro, 1e-12, 0.0);
     // Metrics in range: L1 of unit-total maps lies in [0, 2], shares in [0, 1].
@@ -547,7 +547,7 @@ void compare_simplified_calibrated(void**)
     assert_non_null(std::strstr(totals.c_str(), "\nexact,"));
     same(read_numbers(dir + "/totals.csv")[0][3], lib.Mz, "totals.csv calibrated Mz");
     metrics_match_files(j.at("metrics"), dir, "calibrated");
-    // Not FASTSIM's distribution (README "Calibrated model": its moment differs).
+    // Not FASTSIM's distribution (doc/theory/calibrated.md: its moment differs).
     const Json f = parse_or_fail(
         run_ok(with(with({"compare", "--format", "json"}, kCompareGrid), c.args)).out);
     assert_true(f.at("fastsim").num("Mz") != jc.num("Mz"));
@@ -598,8 +598,9 @@ void compare_simplified_all(void**)
             same(mine.num(key), alone.at("metrics").num(key), key);
         metrics_match_files(mine, dir, m.label);
     }
-    // The elliptic bound changes FASTSIM's distribution (README: map L1 0.78
-    // against 0.46 over the evaluation set): not the parabolic one's metrics.
+    // The elliptic bound changes FASTSIM's distribution (its map median over
+    // the evaluation set differs, doc/validation/calibrated.md): not the
+    // parabolic one's metrics.
     assert_true(j.at("metrics").at("fastsim").num("map_l1_consistent") !=
                 j.at("metrics").at("fastsim_elliptic").num("map_l1_consistent"));
     assert_int_equal(read_numbers(dir + "/totals.csv").size(), 4);
@@ -625,12 +626,12 @@ void compare_simplified_all(void**)
     assert_true(rows >= exact.n_contact);
 }
 
-// README "Exact model" quotes compare's numbers for the paper's Fig. 6
+// doc/theory/exact.md quotes compare's numbers for the paper's Fig. 6
 // contact on CONTACT's 20-across layout (24 x 24, box 1.2): held to the
 // digits printed there.
-constexpr double README_L1_CONSISTENT = 0.456, README_L1_PAPER = 0.534,
-                 README_L1_PROFILE = 0.136, README_EXACT_IN_FASTSIM_ADHESION = 13.7, // %
-    README_MZ_RATIO = 0.851; // FASTSIM's Mz / exact Mz
+constexpr double DOC_L1_CONSISTENT = 0.456, DOC_L1_PAPER = 0.534,
+                 DOC_L1_PROFILE = 0.136, DOC_EXACT_IN_FASTSIM_ADHESION = 13.7, // %
+    DOC_MZ_RATIO = 0.851; // FASTSIM's Mz / exact Mz
 
 void compare_fig6_readme_numbers(void**)
 {
@@ -639,16 +640,16 @@ void compare_fig6_readme_numbers(void**)
     if (!std::getenv("CW_TEST_NO_GNUPLOT")) args.insert(args.end(), {"--out", dir});
     const Json j = parse_or_fail(run_ok(args).out);
     const Json& m = j.at("metrics");
-    const auto held = [](double ours, double readme, double half_unit) {
-        if (!(std::fabs(ours - readme) <= half_unit * (1 + 1e-9)))
-            print_error("%.17g is not %g to the printed digits\n", ours, readme);
-        assert_close(ours, readme, 0.0, half_unit * (1 + 1e-9));
+    const auto held = [](double ours, double shown, double half_unit) {
+        if (!(std::fabs(ours - shown) <= half_unit * (1 + 1e-9)))
+            print_error("%.17g is not %g to the printed digits\n", ours, shown);
+        assert_close(ours, shown, 0.0, half_unit * (1 + 1e-9));
     };
-    held(m.num("map_l1_consistent"), README_L1_CONSISTENT, 5e-3);
-    held(m.num("map_l1_paper"), README_L1_PAPER, 5e-3);
-    held(m.num("profile_l1"), README_L1_PROFILE, 5e-3);
-    held(100 * m.num("exact_power_in_fastsim_adhesion"), README_EXACT_IN_FASTSIM_ADHESION, 0.05);
-    held(j.at("fastsim").num("Mz") / j.at("exact").num("Mz"), README_MZ_RATIO, 5e-3);
+    held(m.num("map_l1_consistent"), DOC_L1_CONSISTENT, 5e-3);
+    held(m.num("map_l1_paper"), DOC_L1_PAPER, 5e-3);
+    held(m.num("profile_l1"), DOC_L1_PROFILE, 5e-3);
+    held(100 * m.num("exact_power_in_fastsim_adhesion"), DOC_EXACT_IN_FASTSIM_ADHESION, 0.05);
+    held(j.at("fastsim").num("Mz") / j.at("exact").num("Mz"), DOC_MZ_RATIO, 5e-3);
     if (std::getenv("CW_TEST_NO_GNUPLOT")) return;
     for (const char* png : {"compare.png", "slip_adhesion_fastsim.png", "slip_adhesion_exact.png",
                             "work_fastsim.png", "work_exact.png", "work_difference.png",
