@@ -1,5 +1,5 @@
-// creepwork_bench: time per solve and per contact element (issue 5,
-// "Benchmarks"), for Kalker strip grids 10x10 .. 200x200, partial and full
+// creepwork_bench: time per solve and per contact element (the tables of
+// doc/performance.md), for Kalker strip grids 10x10 .. 200x200, partial and full
 // slip, three amounts of output:
 //   forces  CW_SOLVE_FORCES, totals only
 //   full    CW_SOLVE_FULL, totals including the work sums (no field copied)
@@ -7,7 +7,7 @@
 //           maps, the state map and the lateral profile
 // through three layers (C++ core, C ABI, Fortran module when built), on one
 // core, and batched over many contacts with all cores (cw_batch_solve).
-// Prints a Markdown table for the README. Each time is the best of many short
+// Prints Markdown tables for doc/performance.md. Each time is the best of many short
 // samples: other work on the machine only ever adds time, and a short sample
 // has a fair chance to run undisturbed on a busy machine. The layers are
 // sampled in turn so that drift hits them alike.
@@ -46,7 +46,7 @@ namespace {
 
 // ------------------------------------------------------------------ inputs
 
-// A steel wheel on a rail head: the Hertz example of issue 2 (wheel radius
+// A steel wheel on a rail head: the Hertz example of doc/validation/index.md (wheel radius
 // 457 mm, crown radius 300 mm, N = 100 kN, G = 82 GPa, nu = 0.28).
 constexpr double kA = 7.169984332e-3, kB = 5.416941278e-3, kN = 100e3;
 constexpr double kMu = 0.3, kG = 82e9, kNu = 0.28;
@@ -473,8 +473,8 @@ std::string percent(double layer, double core)
 
 // ------------------------------------------------------------ exact model
 //
-// Kalker's exact theory (issue 9) on CONTACT's grid: N elements across the
-// ellipse, MX = MY = N + 4, box scale (N + 4)/N, the contact of issue 9
+// Kalker's exact theory on CONTACT's grid: N elements across the
+// ellipse, MX = MY = N + 4, box scale (N + 4)/N, the benchmark contact
 // (a = 7.17 mm, b = 5.42 mm, N = 100 kN, mu = 0.3, G = 82 GPa, nu = 0.28).
 //  cold: create a solver and solve once (CW_SOLVE_FULL), as a CONTACT call
 //        recomputes its coefficients: influence coefficients, FFT plans and
