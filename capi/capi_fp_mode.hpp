@@ -21,8 +21,8 @@
 // state (no IEEE_DENORMAL or IEEE_UNDERFLOW_FLAG note at a Fortran STOP).
 // Rounding is round-to-nearest, as the core assumes, whatever the caller set.
 //
-// Cost: one STMXCSR and two LDMXCSR per call, about 8 ns (README
-// "Benchmarks"). Other architectures: no change of mode; layer 1 holds.
+// Cost: one STMXCSR and two LDMXCSR per call, about 8 ns (doc/performance.md).
+// Other architectures: no change of mode; layer 1 holds.
 #pragma once
 
 #if defined(__x86_64__) || defined(_M_X64)

@@ -25,10 +25,10 @@ public:
     // made it before.
     const SolveTotals& solve(const ContactInput& input, SolveMode mode = SolveMode::full);
     // The same solve and the Jacobian of its Fx, Fy, Mz, W_macro with
-    // respect to xi_x, xi_y, phi, N (contact/jacobian.hpp; README
-    // "Jacobians"). FASTSIM: forward mode through the march; exact:
-    // exact_model.hpp; calibrated: Error(invalid_input). *jacobian is
-    // written only on success.
+    // respect to xi_x, xi_y, phi, N (contact/jacobian.hpp; doc/theory/jacobians.md).
+    // FASTSIM: forward mode through the march; exact: exact_model.hpp;
+    // calibrated: forward mode along the directions its setup moves in
+    // (calibrated_model.hpp). *jacobian is written only on success.
     const SolveTotals& solve_jacobian(const ContactInput& input, SolveMode mode,
                                       Jacobian& jacobian);
 

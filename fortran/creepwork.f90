@@ -505,7 +505,7 @@ module creepwork
 
    ! ================================================================ wear
    ! Wear laws on the work map and wear accumulated on a profile grid
-   ! (header section "wear", README "Wear"). A pass is one axle passage
+   ! (header section "wear", doc/theory/wear.md). A pass is one axle passage
    ! (rail) or one wheel revolution (wheel); depths per pass [m].
 
    ! Wear law and its coefficients (cw_wear_params), SI units. Call
@@ -1168,7 +1168,7 @@ contains
       call deliver(o, stat)
    end subroutine solver_solve
 
-   ! solve, plus the Jacobian of the reported totals (README "Jacobians"):
+   ! solve, plus the Jacobian of the reported totals (doc/theory/jacobians.md):
    ! jacobian(r, c) = d(total r)/d(input c), r = 1..4: Fx, Fy, Mz, W_macro;
    ! c = 1..4: xi_x, xi_y, phi, normal_force; SI units. (The C ABI's
    ! row-major [4*(r-1) + (c-1)] transposed to Fortran's natural (r, c).)

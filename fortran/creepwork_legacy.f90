@@ -49,7 +49,7 @@
 !
 ! Floating-point traps: every routine is safe in a program built with
 ! -ffpe-trap=invalid,zero,overflow,denormal. The library's calls mask and
-! restore the floating-point state themselves (README "Guarantees"); the
+! restore the floating-point state themselves (doc/reference/guarantees.md); the
 ! arithmetic done here (CWACCU) runs with halting off and restores the
 ! caller's halting modes and flags (IEEE_GET_STATUS/IEEE_SET_STATUS), and
 ! reads no subnormal number: such inputs are rejected, such results are 0.
@@ -172,7 +172,7 @@ end module creepwork_legacy_support
 !            (so FX/FY = b/a); rigid slip (UX - Y*FX, UY + X*FY) on the unit disk.
 !            With Kalker's three flexibilities (CWFLEX) put L1 in UX, L2 in UY
 !            and L3 in FX, FY: that is exactly the simplified theory CWSOLM
-!            solves (README "Legacy Fortran").
+!            solves (doc/fortran-legacy.md).
 !   MX, MY   elements per strip and strips (1..1000)
 !   TOL      strip-refinement tolerance: when the spin pole (-UY/FY, UX/FX)
 !            lies in the contact, the strips are cut at Y = UX/FX and the two
@@ -279,7 +279,7 @@ end subroutine CWSOLL
 ! half-space from G and PNU, rolling towards +x:
 !   MODEL     0 FASTSIM (CW_MODEL_FASTSIM: Kalker's simplified theory,
 !             parabolic traction bound, CONTACT's FASTSIM grid), 1 Kalker's
-!             exact half-space theory (CW_MODEL_EXACT, README "Exact model":
+!             exact half-space theory (CW_MODEL_EXACT, doc/theory/exact.md:
 !             its own discrete normal problem, tolerance 1e-8, at most 50
 !             Newton steps, else IERR = CW_ERR_NOT_CONVERGED), 2 the
 !             calibrated model (CW_MODEL_CALIBRATED; IERR says whether this
@@ -319,7 +319,7 @@ end subroutine CWSOLX
 
 ! Forces, moment and macro work of one contact (as CWSOLM: Kalker's strip
 ! grid, parabolic pressure, flexibilities from G and PNU) and their
-! Jacobian for implicit integrators (README "Jacobians"):
+! Jacobian for implicit integrators (doc/theory/jacobians.md):
 !   DFJ(I, J) = d(output I)/d(input J), I = 1..4: FX, FY, FMZ, WMAC;
 !               J = 1..4: XI, ETA, PHI, FN  (SI units: N, N m, J/m per
 !               unit creepage, per 1/m of spin, per N)
@@ -576,7 +576,7 @@ subroutine CWHERT(GA, GB, FN, ESTAR, A, B, P0, APPR, IERR)
    APPR = h(4)
 end subroutine CWHERT
 
-! Wear of one contact (README "Wear"), flexibilities from the material as in
+! Wear of one contact (doc/theory/wear.md), flexibilities from the material as in
 ! CWSOLM, USFD or Archard's law with the KTH map on the energy-consistent
 ! work map, with the library's default coefficients (Braghin et al. 2006 for
 ! R8T/900A; Jendel 2002; steel 7800 kg/m^3). Other coefficients, the

@@ -1,5 +1,5 @@
 # Generates the Fortran named constants of module creepwork from the C header,
-# so that the two cannot drift (STYLE.md, Fortran):
+# so that the two cannot drift (CONTRIBUTING.md, house rules):
 #   - every X(CW_NAME, value, "message") of CW_STATUS_LIST becomes
 #     integer(c_int), parameter :: CW_NAME = value, plus the arrays
 #     CW_STATUS_CODES and CW_STATUS_MESSAGES (same order as the list);

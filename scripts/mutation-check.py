@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Mutation check: do the tests catch deliberate single-line bugs?
 
-Part of the development routine (issue 14), not of CI: it builds a copy of
+Part of the development routine (CONTRIBUTING.md), not of CI: it builds a copy of
 the working tree, then for each mutant below applies one single-line edit,
 rebuilds only the executables of the tests that could catch it, runs those
 tests and records which failed. Every mutant must be caught by at least two
@@ -84,7 +84,7 @@ MUTANTS = [
          new="        if (result) write_struct(result, to_result(t)); __builtin_printf(\"K %g\\n\", t.K);",
          tests=["test_robustness_silent", "test_capi_solver", "cli_json_matches_library"],
          min_caught=1),  # only the silent test can see output: one catcher is all there is
-    # Wear (issue 11): the laws, the depth of a pass, the remap, the exact sums
+    # Wear: the laws, the depth of a pass, the remap, the exact sums
     # and the update helper, against closed forms and published values.
     dict(id="usfd-plateau-end", what="USFD's severe plateau ends before 77.2 N/mm^2",
          file="core/work/wear_law.hpp", old="    if (t <= c.t2) {", new="    if (t < c.t2) {",

@@ -207,8 +207,8 @@ void CalibratedModel::set_directions(const ContactInput& in, const ModelSetup& s
                                                             &ContactInput::phi};
     for (int k = 0; k < kMarchDirections; ++k) {
         const double value = in.*member[k];
-        // A normal number (hosts may flush subnormals to zero, README
-        // "Guarantees"), so that value +- h differ and the quotient is finite.
+        // A normal number (hosts may flush subnormals to zero, doc/reference/guarantees.md),
+        // so that value +- h differ and the quotient is finite.
         const double h = std::max(1e-6 * std::max(std::fabs(value), scale[k]), 1e-290);
         ContactInput plus = in, minus = in;
         plus.*member[k] = value + h;

@@ -6,7 +6,7 @@
 //    (moment_flexibility.hpp);
 //  - the pressure, traction bound and factors on the normalised creepages
 //    taken from a small table fitted to this library's exact model over a
-//    training set (calibration_table.hpp; README "Calibrated model").
+//    training set (calibration_table.hpp; doc/theory/calibrated.md).
 // Everything else -- grids, fields, both work maps, the lateral profile --
 // is FASTSIM's, so it costs what FASTSIM costs. Plain FASTSIM is untouched.
 #pragma once

@@ -3,7 +3,7 @@
 // vectorise), which lets the compiler evaluate both sides of `c ? x / y : 0`
 // -- in vector lanes it then discards, or in a branch-free scalar select --
 // and so divide by zero, or 0 by 0, in a host that traps FP exceptions
-// (README "Guarantees"). It even folds a guarded operand back:
+// (doc/reference/guarantees.md). It even folds a guarded operand back:
 // `d > 0 ? p / (d > 0 ? d : 1) : 0` was compiled as a packed p / d. Here the
 // divisor passes through an empty asm, which hides its value from the
 // optimiser, so the division can only ever see the safe operand.

@@ -71,8 +71,8 @@ CreepCoefficients thin_across(double g, double nu)
     c.C23 = kPi * std::sqrt(g) / (3.0 * (1.0 - nu)) * (1.0 + nu * (std::log(16.0 / g) - 5.0));
     // C33: no published asymptote could be confirmed here. C33 grows like 1/g
     // as a/b -> 0 (table rows 0.1, 0.2 and the form pi^2/(16 (1-nu) g)), so
-    // the g = 0.1 row is continued with that 1/g law. Reported only; the
-    // solver never uses C33.
+    // the g = 0.1 row is continued with that 1/g law. FASTSIM does not use
+    // C33; the calibrated model's moment flexibility does.
     c.C33 = table_value(0, 3, 0.1, nu) * (0.1 / g);
     return c;
 }

@@ -1,5 +1,5 @@
 // Plain parameter and result types of the core. Units are consistent
-// (SI recommended: m, N, Pa, 1/m); see README "Units and sign conventions".
+// (SI recommended: m, N, Pa, 1/m); see doc/reference/conventions.md.
 #pragma once
 
 namespace creepwork {

@@ -1,5 +1,5 @@
 // The uniform grid as the exact model sees it (CONTACT's potential contact
-// area, exact_discretisation.md rule 1): nx x ny elements over the box
+// area, doc/theory/exact-discretisation.md rule 1): nx x ny elements over the box
 // [-S a, S a] x [-S b, S b], element (i, j) at [i + nx j], i along x in the
 // rolling frame (leading edge at +x). Lengths are in units of the element
 // length dx = 2 S a / nx, so the normalised problems depend only on the

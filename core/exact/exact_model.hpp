@@ -1,6 +1,6 @@
 // Kalker's exact half-space theory of steady rolling on CONTACT's uniform
 // grid, as one model of the contact (../shared/reference/
-// exact_discretisation.md lists the discretisation; CONTACT's method a).
+// doc/theory/exact-discretisation.md lists the discretisation; CONTACT's method a).
 // Made once per grid -- it owns every workspace, FFT plan and coefficient
 // table -- then solve() many times without allocating.
 //

@@ -58,7 +58,7 @@ public:
     // (same layout). steady = false: u = A z, the displacement difference.
     // steady = true: the steady-rolling shift per element length,
     //   (A z)(I) - (A z)(I + e_x), i.e. the kernel B(k, l) = A(k, l) - A(k + 1, l)
-    // (exact_discretisation.md rule 5: the particle now at x_I was at x_I + dq).
+    // (doc/theory/exact-discretisation.md rule 5: the particle now at x_I was at x_I + dq).
     void apply_tangential(const Complex* z, Complex* s, bool steady);
 
     // The coefficients at one offset, tabulated (|k| <= max(nx, fft_nx/2),

@@ -3,7 +3,7 @@
 // unit traction spread uniformly over another element (the Boussinesq and
 // Cerruti solutions integrated over a rectangle; Kalker 1990, section 1.5;
 // CONTACT's m_visc.f90:elascf_pcwcns, see
-// ../shared/reference/exact_discretisation.md rule 3).
+// doc/theory/exact-discretisation.md rule 3).
 //
 // For an observation element at offset (k, l) elements from the loaded one
 // (k along x, l along y; "observation minus load"), quasi-identical bodies

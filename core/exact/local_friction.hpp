@@ -1,5 +1,5 @@
 // Coulomb's law for one element of the steady-rolling problem, solved
-// exactly (exact_discretisation.md rule 7). In normalised units (tractions
+// exactly (doc/theory/exact-discretisation.md rule 7). In normalised units (tractions
 // per mu p0) the element's slip is s = c + diag(b1, b2) q, where c holds the
 // rigid slip and everything the other elements contribute and b1, b2 > 0
 // are the element's own (diagonal) coefficients. Find q with

@@ -1,5 +1,5 @@
 // The discrete normal contact problem of Kalker's exact theory with the
-// normal force prescribed (exact_discretisation.md rule 4; CONTACT's
+// normal force prescribed (doc/theory/exact-discretisation.md rule 4; CONTACT's
 // m_solvpn.f90:normcg): pressures pn >= 0 and the approach pen such that
 //   h_I - pen + sum_J cf33(I - J) pn_J / G  = 0 where pn_I > 0, >= 0 elsewhere,
 //   dx dy sum pn = N,

@@ -1,5 +1,5 @@
 // The tangential problem of steady rolling on one uniform grid
-// (exact_discretisation.md rules 5-7). In normalised units -- lengths in
+// (doc/theory/exact-discretisation.md rules 5-7). In normalised units -- lengths in
 // element lengths dx, tractions q = p / (mu p0), slips s = (S / dq) G / (mu p0)
 // -- the shift of element I per step dq = dx is
 //   s_I = w_I + sum_J B(I - J) q_J,   B(k, l) = A(k, l) - A(k + 1, l),

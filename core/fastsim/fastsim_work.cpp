@@ -63,7 +63,8 @@ struct WorkArgs {
 //    with s_spin the model's scaled-spin slip at the slip point x' and r the
 //    element centre. On Kalker's strip grid x' is half a step ahead of the
 //    centre; taking the spin there instead changes W_micro by tens of per
-//    cent on coarse grids (issue 11). In adhesion s = 0 and the same formula
+//    cent on coarse grids and does not reproduce the paper's Table 1. In
+//    adhesion s = 0 and the same formula
 //    holds (the translational slip is then minus the model's spin slip).
 // Exterior elements never slip (q' = g = 0), so "slip" means inside, f < 1.
 // Nothing here feeds the next element but p', so the steps overlap freely.

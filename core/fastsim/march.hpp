@@ -225,7 +225,7 @@ CREEPWORK_INLINE double min_lane(const Vec<8>& v)
 // exactly as the full test gives. It applies to adhesion zones, exterior
 // elements and the padding strips.
 //
-// Floating-point exceptions (hosts may trap them, README "Guarantees"): no
+// Floating-point exceptions (hosts may trap them, doc/reference/guarantees.md): no
 // lane, live or masked, divides by zero (safe_norm), takes the root of a
 // negative number, or meets a subnormal constant (the test for g = 0 is
 // |q|^2 <= 0, not a comparison with the smallest subnormal). g is 0

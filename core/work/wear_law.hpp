@@ -25,7 +25,7 @@
 //    volume = k N s / H, k from the element's sliding velocity v and its
 //    pressure p: p > 0.8 H (seizure) k = 300-400e-4; otherwise v < 0.2 m/s
 //    k = 1-10e-4, 0.2 <= v <= 0.7 m/s k = 30-40e-4, v > 0.7 m/s k =
-//    1-10e-4. Defaults are the middles of these bands (README "Wear").
+//    1-10e-4. Defaults are the middles of these bands (doc/theory/wear.md).
 //    Per element, during a rolled distance D the element carries the normal
 //    force N_e = p A_e and the two surfaces slide over s_e D relative to
 //    each other (s_e = sliding per rolled distance, the dimensionless

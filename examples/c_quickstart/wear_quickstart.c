@@ -1,5 +1,5 @@
 /* creepwork wear quickstart: the rail wear of one contact state, 1000 axle
- * passages, accumulated on a rail profile grid (README "Wear"). */
+ * passages, accumulated on a rail profile grid (doc/theory/wear.md). */
 #include <stdio.h>
 #include <creepwork/creepwork.h>
 

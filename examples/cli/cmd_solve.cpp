@@ -27,7 +27,7 @@ void write_json_file(const std::string& path, const JsonObject& j)
 }
 
 // "jacobian": {"Fx": {"xi_x": .., "xi_y": .., "phi": .., "N": ..}, ...} in SI,
-// rows and columns of cw_solver_solve_jacobian (README "Jacobians").
+// rows and columns of cw_solver_solve_jacobian (doc/theory/jacobians.md).
 JsonObject jacobian_json(const double J[CW_JACOBIAN_LEN])
 {
     const char* rows[4] = {"Fx", "Fy", "Mz", "W_macro"};

@@ -43,7 +43,7 @@ struct Table1Row {
 std::vector<Table1Row> paper_table1();
 
 // The fit's fixed choices; the paper gives no material and no grid. Measured
-// with creepwork fit-fig6 (paper's K as eq. 36 prints it, issue 11):
+// with creepwork fit-fig6 (the paper's K as eq. 36 prints it):
 // - G = 82 GPa: steel (the library's default, as CONTACT's).
 // - nu = 0.3, steel's textbook value. It reproduces the printed numbers the
 //   fit does not use best: on the 10 x 10 grid Mz, Wd and K of Figs. 6 and 7

@@ -63,8 +63,8 @@ JsonObject input_json(const cw_params& p, const cw_grid& g, const Units& u)
     if (p.model == CW_MODEL_EXACT)
         in.number("tolerance", p.tolerance).integer("max_iterations", p.max_iterations);
     // The exact model ignores params.pressure: it solves its own normal
-    // problem; the calibrated model uses its own law (README "Calibrated
-    // model": parabolic blended towards Hertz's as the slip grows).
+    // problem; the calibrated model uses its own law (doc/theory/calibrated.md:
+    // parabolic blended towards Hertz's as the slip grows).
     in.text("pressure", p.model == CW_MODEL_EXACT        ? "discrete_normal_problem"
                         : p.model == CW_MODEL_CALIBRATED ? "calibrated_blend"
                                                          : pressure_name(p.pressure))

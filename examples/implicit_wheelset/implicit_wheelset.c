@@ -1,5 +1,5 @@
 /* A single-wheelset lateral model integrated with implicit Euler using the
- * creep-force Jacobian (README "Jacobians"), against an explicit reference
+ * creep-force Jacobian (doc/theory/jacobians.md), against an explicit reference
  * with a tiny step.
  *
  * One mass m (the wheelset) on a lateral spring k (primary suspension plus
@@ -18,8 +18,8 @@
  * h = 2e-5 s. The program prints both trajectories' difference and the
  * number of contact solves, and fails (exit 1) if the implicit trajectory
  * is off by more than 1 % of the initial displacement. The argument
- * "calibrated" runs the same with CW_MODEL_CALIBRATED (README "Calibrated
- * model"), whose Jacobian also follows its table's knobs. */
+ * "calibrated" runs the same with CW_MODEL_CALIBRATED
+ * (doc/theory/calibrated.md), whose Jacobian also follows its table's knobs. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>

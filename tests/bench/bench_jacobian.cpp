@@ -1,4 +1,4 @@
-// creepwork_bench_jacobian: the cost of the Jacobian (README "Jacobians"),
+// creepwork_bench_jacobian: the cost of the Jacobian (doc/theory/jacobians.md),
 // through the C ABI on one core. For FASTSIM and the calibrated model, each
 // grid and regime it times
 //   forces    cw_solver_solve(CW_SOLVE_FORCES)
@@ -23,7 +23,7 @@
 namespace {
 
 // The contact of creepwork_bench: wheel radius 457 mm on a 300 mm crown,
-// N = 100 kN, steel (issue 2's Hertz example).
+// N = 100 kN, steel (the Hertz example of doc/validation/index.md).
 constexpr double kA = 7.169984332e-3, kB = 5.416941278e-3, kN = 100e3;
 
 struct Regime {

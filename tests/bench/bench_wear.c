@@ -1,4 +1,4 @@
-/* Cost of wear on top of a solve, through the C ABI (README "Wear"): per
+/* Cost of wear on top of a solve, through the C ABI (doc/theory/wear.md): per
  * contact, cw_solver_solve (CW_SOLVE_FULL), cw_wear_compute (USFD and
  * Archard/KTH), cw_wear_profile_add onto a 400-node profile, and
  * cw_wear_profile_get_depth. The partial-slip contact of creepwork_bench,

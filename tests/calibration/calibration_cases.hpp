@@ -1,5 +1,5 @@
-// The training and evaluation sets of the calibrated model (README
-// "Calibrated model"): contacts spanning a/b 0.2-5, nu 0-0.5, creepages from
+// The training and evaluation sets of the calibrated model (doc/theory/calibrated.md):
+// contacts spanning a/b 0.2-5, nu 0-0.5, creepages from
 // 1 % to 300 % of saturation, each creepage alone and combined, both signs.
 // Both sets are drawn by a fixed pseudo-random generator with different
 // seeds and different stratifications, so they share no case (checked when

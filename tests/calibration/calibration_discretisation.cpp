@@ -66,7 +66,7 @@ std::vector<size_t> pick_subset(const std::vector<CalibrationCase>& cases,
 // The errors of one grid's totals against the limit (fractions):
 // forces max(|dFx|, |dFy|)/max(|F|, 0.1 mu N) (with xi_y and spin the two
 // parts of Fy can cancel, and a force near zero has no relative error worth
-// the name); moment |dMz|/max(|Mz|, 0.01 mu N c) (issue 10's threshold for a
+// the name); moment |dMz|/max(|Mz|, 0.01 mu N c) (the accuracy targets' threshold for a
 // moment measured relatively); work |dW|/W.
 struct GridErrors {
     double F = 0, Mz = 0, W = 0;

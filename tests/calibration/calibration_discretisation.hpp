@@ -1,9 +1,8 @@
-// Elements needed for 1 % discretisation error (issue 10, "Show it"): each
+// Elements needed for 1 % discretisation error: each
 // model is solved on uniform n x n grids for a small subset of the
 // evaluation set, its own continuum limit is estimated from its finest
 // grids, and the smallest n whose totals stay within 1 % of that limit is
-// reported with the observed order of convergence (README "Elements for 1 %
-// discretisation error").
+// reported with the observed order of convergence (doc/validation/calibrated.md).
 #pragma once
 
 #include <string>

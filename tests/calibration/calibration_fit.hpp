@@ -20,7 +20,7 @@ ModelResult calibrated_result(creepwork::CalibratedModel& model, const creepwork
 
 // The weights of the fit's objective (calibration_fit.cpp, case_cost). The
 // defaults are the ones `select-weights` chose by cross-validation on the
-// training set (calibration_select.cpp; README "How the table was generated").
+// training set (calibration_select.cpp; doc/dev/calibration.md).
 struct FitWeights {
     double force_limit = 3.0; // % of mu N where the extra force penalty starts
     double penalty = 40.0;    // its weight
@@ -47,7 +47,7 @@ private:
     creepwork::CalibratedModel map_grid_, fine_grid_;
 };
 
-// One case's share of the objective: each of issue 10's errors in units of
+// One case's share of the objective: each of the targeted errors in units of
 // its bound, squared, plus the force penalty and the map weight of w.
 double case_cost(const CaseErrors& e, const FitWeights& w);
 

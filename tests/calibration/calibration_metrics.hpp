@@ -1,4 +1,4 @@
-// The error measures of issue 10, of one model's solve against the exact
+// The error measures of the accuracy targets, of one model's solve against the exact
 // reference of the same contact.
 #pragma once
 

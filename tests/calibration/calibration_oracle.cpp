@@ -86,7 +86,7 @@ cw::CalibrationParams best_of_starts(const Objective& f, const cw::CalibrationPa
     return best;
 }
 
-// Force and (with spin) W errors beyond issue 10's bounds, in % summed.
+// Force and (with spin) W errors beyond the accuracy targets' bounds, in % summed.
 double beyond_force_and_work_bounds(const CaseErrors& e)
 {
     double over = std::max(0.0, std::max(e.dFx, e.dFy) - 3.0);

@@ -1,9 +1,9 @@
-// The floor of the calibrated model's form (README "Calibrated model", "What
+// The floor of the calibrated model's form (doc/theory/calibrated.md, "What
 // the form can reach"): for each partial-slip case, the knobs of
 // CalibrationParams chosen for that case alone, by coordinate search against
 // the continuum reference, to minimise one error. No table of the form --
 // which gives every case of an a/b and creepage the same knobs -- can do
-// better than these per-case optima, so where they miss one of issue 10's
+// better than these per-case optima, so where they miss one of the accuracy targets'
 // bounds that bound is out of the form's reach. Fitted to the very cases it
 // measures, on purpose: a bound, not a model.
 #pragma once

@@ -33,7 +33,7 @@ std::vector<int> fold_of_cases(const std::vector<CalibrationCase>& cases)
 
 namespace {
 
-// Held-out cases beyond each of issue 10's per-case bounds, and how many
+// Held-out cases beyond each of the per-case accuracy bounds, and how many
 // cases each bound applies to. (Its Mz median target, 8 %, is met by every
 // fit with a wide margin and does not separate the candidates.)
 struct TargetCounts {
@@ -68,7 +68,7 @@ struct TargetCounts {
         neutral_cost += case_cost(e, FitWeights{3.0, 0.0, 1.0});
     }
     // Each target's fraction of its cases violated; the force target (every
-    // case within 3 % of mu N, the one issue 10 states without exception and
+    // case within 3 % of mu N, the one target that admits no exception and
     // the one the weights are for) counts three times.
     double score() const
     {

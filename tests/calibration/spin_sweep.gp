@@ -1,5 +1,5 @@
-# Mz and W against normalised spin, a/b = 1 and 2, every model (README
-# "Calibrated model"). Data: creepwork_calibration spin-sweep > spin_sweep.csv
+# Mz and W against normalised spin, a/b = 1 and 2, every model (doc/theory/calibrated.md).
+# Data: creepwork_calibration spin-sweep > spin_sweep.csv
 #   gnuplot -e "data='spin_sweep.csv'; out='calibrated_spin.png'" spin_sweep.gp
 set datafile separator ','
 set terminal pngcairo size 1100,800 font ',10'

@@ -1,4 +1,4 @@
-// The continuum limit behind README "Elements for 1 % discretisation error"
+// The continuum limit behind doc/validation/calibrated.md
 // (calibration_limit.hpp), on sequences whose limit and order are known by
 // construction: Q(h) = Q0 + C h^p on the study's grids 80, 112, 160 (not in
 // a constant ratio), and the sequences it must refuse to extrapolate.

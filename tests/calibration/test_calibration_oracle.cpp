@@ -2,7 +2,7 @@
 // objectives whose minimum is known by hand: it must reach it, so that the
 // per-case floors it reports are the knobs' best and not the search's
 // shortfall (on these separable quadratics; on the real errors it is a
-// local search, as the README says).
+// local search, as doc/dev/calibration.md says).
 #include <cmath>
 
 #include "calibration_oracle.hpp"

@@ -1,5 +1,5 @@
 // The pieces of `creepwork_calibration select-weights` that decide what it
-// measures (README "How the table was generated"), without its solves:
+// measures (doc/dev/calibration.md), without its solves:
 //  - the folds: every training case in exactly one fold, each fold a third of
 //    every combination of creepages, spread over the whole a/b range;
 //  - the table a fold's fit makes is read by core's calibration_node(table,

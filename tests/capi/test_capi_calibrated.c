@@ -1,4 +1,4 @@
-/* CW_MODEL_CALIBRATED through the C ABI (issue 10): it solves on both grid
+/* CW_MODEL_CALIBRATED through the C ABI: it solves on both grid
  * kinds, every field, the state map and the profile are finite and
  * consistent with the totals, the result names the model, the energy-
  * consistent map sums to W_macro, given flexibilities are refused with a

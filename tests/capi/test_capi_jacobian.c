@@ -1,4 +1,4 @@
-/* cw_solver_solve_jacobian through the public header (README "Jacobians"):
+/* cw_solver_solve_jacobian through the public header (doc/theory/jacobians.md):
  * the layout and frame of the 4 x 4 matrix against central differences of
  * cw_solver_solve itself (FASTSIM and the calibrated model, both rolling
  * directions, SI units; 1e-6 relative to the row's scale at a step that

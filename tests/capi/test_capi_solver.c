@@ -238,7 +238,7 @@ static void kalker_grid_geometry(void** state)
 
 /* CONTACT's uniform grid: box [-S a, S a] x [-S b, S b] of equal cells; a
  * cell is in contact when its centre is inside the ellipse (reference
- * README); exterior cells have zero area, pressure and traction. */
+ * data's README); exterior cells have zero area, pressure and traction. */
 static void check_uniform_geometry(cw_solver* s, const grid_case* g, const cw_params* p,
                                    const solution* sol)
 {
@@ -656,7 +656,7 @@ static void longer_buffers_keep_their_tail(void** state)
 /* CONTACT (Vollebregt & Kalker, reference/contact_fastsim_dev.csv), through
  * the ABI in CONTACT's own units (mm, N, N/mm^2): uniform grid, flexibilities
  * given, rolling towards +x. Rows whose FASTSIM variant is exactly specified
- * (shared/README): b, c without spin; b0, bk. FX, FY, MZ to 1e-9 of |F|
+ * (the reference data's README): b, c without spin; b0, bk. FX, FY, MZ to 1e-9 of |F|
  * (MZ / a), adhesion/slip counts exactly, and W_macro = -FRIC_POWER_macro
  * (V = 1000 mm/s and /1000 cancel). */
 enum { CSV_COLUMNS = 29 };

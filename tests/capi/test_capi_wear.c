@@ -1,4 +1,4 @@
-/* Wear through the C ABI (issue 11): cw_wear_* on a solved contact and
+/* Wear through the C ABI: cw_wear_* on a solved contact and
  * cw_wear_profile_* on a host profile grid. What the numbers must be, and
  * every invalid input: a named status, nothing written, the handle usable. */
 #include "capi_test.h"
@@ -600,7 +600,7 @@ static void update_keeps_volume_on_uneven_nodes(void** state)
 }
 
 /* Wear of the exact model (Kalker's theory on the uniform 12 x 12 grid,
- * box 1.2; issue 11: "for every model"), partial and full slip, both
+ * box 1.2; the wear of every model), partial and full slip, both
  * laws: mass per distance = sum of rate x area (1e-12); the energy-
  * consistent source feeds the law the model's own W_macro (1e-12: the
  * exact model's consistent map sums to its W_macro, test_capi_exact); each

@@ -1,4 +1,4 @@
-// CONTACT's own FASTSIM example, reproduced (issue 12, item 7). A CONTACT
+// CONTACT's own FASTSIM example, reproduced. A CONTACT
 // user who runs its shipped examples/fastsim.inp and then creepwork with the
 // two compatibility options -- spin_offset = 1/6 (CONTACT's facphi) and
 // flexibility_blending = 1 -- must see the same output: every number CONTACT
@@ -141,7 +141,7 @@ void test_contact_default_fastsim_output_reproduced(void**)
     print_message("CONTACT example: 5 cases, %d map cells identical\n", cells);
 }
 
-// Without the options the same cases differ as the issue reported: other
+// Without the options the same cases differ: other
 // slip counts in every case, FY by up to 2.3 %. The options are what the
 // match rests on.
 void test_plain_fastsim_differs_from_contact_default(void**)
@@ -160,7 +160,7 @@ void test_plain_fastsim_differs_from_contact_default(void**)
 // CONTACT's blended L1, L2, L3 of every FASTSIM row of the shared reference
 // (contact_fastsim_dev.csv: methods b, c and b0 blend, bk does not), from a,
 // b, G, nu, mu, N and the creepages alone. 2e-7: CONTACT holds Kalker's
-// table in single precision (README "Validation", flexibilities 4e-8).
+// table in single precision (doc/validation/index.md, flexibilities 4e-8).
 void test_blended_flexibilities_match_contact_rows(void**)
 {
     const compat::CsvTable t =

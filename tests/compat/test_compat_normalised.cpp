@@ -1,4 +1,4 @@
-// The README's mapping for codes normalised like Kalker's FASTSIM but with
+// doc/migrating.md's mapping for codes normalised like Kalker's FASTSIM but with
 // the peak Hertz pressure p0 = 3N/(2 pi a b) and the elliptic bound
 // sqrt(1 - X^2 - Y^2): the dimensional call with a = 1, b = b/a, mu = 1,
 // N = 2 pi b/3 (p0 = 1), L1 = L2 = L3 = 1 given, elliptic pressure,

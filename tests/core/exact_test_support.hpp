@@ -60,9 +60,9 @@ inline std::vector<ExactRow> exact_rows(int only_N = 0)
     return rows;
 }
 
-// The benchmark contact of issue 9 (SI units): a = 7.17 mm, b = 5.42 mm,
+// The benchmark contact of doc/performance.md (SI units): a = 7.17 mm, b = 5.42 mm,
 // N = 100 kN, mu = 0.3, G = 82 GPa, nu = 0.28, partial slip.
-inline creepwork::ContactInput issue9_contact()
+inline creepwork::ContactInput bench_contact()
 {
     creepwork::ContactInput in;
     in.model = creepwork::ModelKind::exact;

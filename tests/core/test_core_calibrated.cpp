@@ -1,4 +1,4 @@
-// The calibrated model (issue 10, core/calibrated/).
+// The calibrated model.
 //  - Linear limit: it keeps Kalker's C11, C22, C23 for the forces (its
 //    factors are 1 at vanishing creepage) and, through the moment-consistent
 //    spin term L_M = 8b/(15 G C33) and the lateral-moment term, also gives
@@ -74,15 +74,15 @@ void linear_limit_is_kalkers(void**)
 // the exact model's continuum estimate (exact_continuum below: 24, 48, 96
 // across; maps of the 96 x 96 solve summed onto the 48 x 48 cells). Not the
 // exact model on the same coarse grid: since the calibrated model marches
-// from the leading edge (item 7) it is near its own continuum limit there,
+// from the leading edge (its leading-edge march) it is near its own continuum limit there,
 // while the exact 24 x 24 moment of the a/b 2 case is 12 % from its own.
-// The calibrated model's force errors are held to issue 10's bound (3 % of
+// The calibrated model's force errors are held to the accuracy target's bound (3 % of
 // mu N; measured <= 1.4 %); its Mz and W errors and the L1 distance of its
 // energy-consistent work map to what was measured with the committed table
 // plus 10-20 % (Mz 2.7, 1.7, 4.4 %; W 1.4, 1.7, 5.4 %, the last beyond
-// issue 10's 5 %; map 0.352, 0.470, 0.226), and all of them to below
-// FASTSIM's (Mz 8.8-11.0 %, W 6.1-13.5 %, map 0.43-0.68). A refit moves
-// them: the limits follow the committed table.
+// the W target's 5 %; map 0.352, 0.470, 0.226), and all of them to below
+// FASTSIM's (Mz 8.8-11.0 %, W 6.1-13.5 %, map 0.43-0.68). A new fit of the
+// table moves them: the limits follow the committed table.
 struct AccuracyCase {
     const char* name;
     double a_over_b, nu, xi_sat, eta_sat, phi_sat; // creepages in units of saturation
@@ -346,13 +346,12 @@ void given_flexibilities_rejected(void**)
 // equalisation (calibration_table.hpp, h = min(1, e s), the factors
 // equalised too) must turn the calibrated force to the exact one. Two
 // contacts beyond 250 % of saturation, the exact model on the same 24 x 24
-// uniform grid as the yardstick; before that form of the equalisation the
-// evaluation set's worst cases of this kind were 7.0 and 4.5 % of mu N off
-// (README "Calibrated model", item 4). Held to issue 10's bound, 3 % of
-// mu N, per component (measured with the committed table: 1.0 and 1.0, 0.6
-// and 0.2; a table of an earlier stop gave 3.03 in the second case's Fy and
-// was not shipped; the previous form of the equalisation gave 6.2 % in Fx in
-// the first case, FASTSIM 14.2 %); FASTSIM is printed beside it.
+// uniform grid as the yardstick; without the equalisation of the factors
+// such cases are direction errors of several per cent of mu N
+// (doc/theory/calibrated.md, "Flexibility equalisation"; doc/dev/decisions.md).
+// Held to the force target's bound, 3 % of mu N, per component (measured
+// with the committed table: 1.0 and 1.0, 0.6 and 0.2; FASTSIM 14.2 % in Fx
+// in the first case); FASTSIM is printed beside it.
 void saturated_force_direction(void**)
 {
     struct SlidingCase {

@@ -1,4 +1,4 @@
-// Kalker's coefficients, flexibilities, elliptic integrals and Hertz (issue 2).
+// Kalker's coefficients, flexibilities, elliptic integrals and Hertz.
 #include "core_test_support.hpp"
 #include "test_support.h"
 
@@ -53,7 +53,7 @@ void quadratic_in_inverse_nu(void**)
 }
 
 // Kalker's asymptotes below g = 0.1 meet the table row g = 0.1 within 6 %
-// (README; largest gap 6.0 % for C23 at nu = 0.5, a < b).
+// (doc/validation/index.md; largest gap 6.0 % for C23 at nu = 0.5, a < b).
 // C33 has no confirmed published asymptote: it is continued from the row
 // g = 0.1 (see kalker_coefficients.cpp), so it is continuous there.
 void asymptotes_meet_the_table(void**)
@@ -92,7 +92,7 @@ void flexibilities_match_contact(void**)
         const cw::Flexibilities L = cw::kalker_flexibilities(
             a, b, t.number(r, "G_N_per_mm2"),
             cw::kalker_coefficients(a / b, t.number(r, "nu")));
-        assert_close(L.L1, t.number(r, "L1_mm3_per_N"), 4.1e-8, 0.0); // README: within 4.1e-8
+        assert_close(L.L1, t.number(r, "L1_mm3_per_N"), 4.1e-8, 0.0); // doc/validation/index.md: within 4.1e-8
         assert_close(L.L2, t.number(r, "L2_mm3_per_N"), 4.1e-8, 0.0);
         assert_close(L.L3, t.number(r, "L3_mm3_per_N"), 4.1e-8, 0.0);
         ++checked;
@@ -117,7 +117,7 @@ void elliptic_integrals(void**)
     assert_close(cw::complete_elliptic_integrals(k).K_minus_E, M_PI / 4 * k * k, 1e-11, 0.0);
 }
 
-// Issue 2's Hertz check: wheel radius 457 mm, rail crown 300 mm, N = 100 kN,
+// The Hertz example of doc/validation/index.md: wheel radius 457 mm, rail crown 300 mm, N = 100 kN,
 // G = 82 GPa, nu = 0.28 (E* = G/(1-nu)).
 void hertz_wheel_on_rail(void**)
 {

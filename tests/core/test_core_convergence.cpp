@@ -1,4 +1,4 @@
-// Grid convergence (issue 2): totals converge as nx, ny grow (observed order
+// Grid convergence: totals converge as nx, ny grow (observed order
 // printed per case), the paper's K tends to 1, and the energy-consistent
 // work map meets its four properties on every grid of a sweep and converges
 // to one density.
@@ -68,7 +68,7 @@ void totals_converge(void**)
 
 // K = W_macro / W_micro_paper (paper eq. 39): >= 1, near 1 in full slip,
 // large at small creepage, and -> 1 roughly as 1/n (paper Table 1 trend).
-// README "Validation" quotes the Kalker-strip partial-slip sequence.
+// doc/validation/index.md quotes the Kalker-strip partial-slip sequence.
 void paper_K_tends_to_one(void**)
 {
     const double readme[6] = {2.13, 1.83, 1.34, 1.16, 1.08, 1.04};
@@ -141,7 +141,7 @@ void consistent_map_properties_sweep(void**)
 // Convergence to one density: the map is binned on a fixed 8 x 8 partition
 // of the normalised patch; the L1 distance to a 512 x 512 solution, relative
 // to W, falls as the grid is refined: below 1 % at 256 x 256 in every case
-// (README "Validation"), at most half the 16 x 16 value.
+// (doc/validation/index.md), at most half the 16 x 16 value.
 std::vector<double> binned(const cw::Solver& s, const cw::ContactInput& in)
 {
     const auto w = cwtest::field(s, cw::Field::work_consistent);

@@ -1,5 +1,4 @@
-// Grid convergence of Kalker's exact theory on CONTACT's discretisation
-// (issue 9, "Checks"):
+// Grid convergence of Kalker's exact theory on CONTACT's discretisation:
 //  - linear theory: C11, C22, C23, C33 at vanishing creepage (full
 //    adhesion), extrapolated to zero element size from N = 40, 80, 160
 //    elements across the ellipse, within 2 % of Kalker's Table E.3

@@ -1,4 +1,4 @@
-// The exact model's energy bookkeeping (issue 9, "Outputs"): the discrete
+// The exact model's energy bookkeeping: the discrete
 // energy identity of exact_work.hpp, checked with the traction field the
 // model returns and influence coefficients summed directly (no FFT):
 //   W_macro = sum_I D_I + (dx dy / (G dq)) 1/2 dp^T A dp + phi s dq Fy,
@@ -101,7 +101,7 @@ std::vector<std::pair<std::string, cw::ContactInput>> cases(std::vector<cw::Grid
             out.push_back({row.id, row.input});
             grids.push_back(row.grid);
         }
-    out.push_back({"issue 9, 24x24", cwtest::issue9_contact()});
+    out.push_back({"bench contact, 24x24", cwtest::bench_contact()});
     grids.push_back(cwtest::guarded_grid(20));
     return out;
 }
@@ -183,7 +183,7 @@ void work_maps(void**)
 void unresolved_slip_zone_is_flagged(void**)
 {
     cw::Solver s(cwtest::guarded_grid(20));
-    cw::ContactInput in = cwtest::issue9_contact();
+    cw::ContactInput in = cwtest::bench_contact();
     in.xi_x = 1e-9;
     in.xi_y = 5e-10;
     in.phi = 0.0;

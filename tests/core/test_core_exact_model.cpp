@@ -1,4 +1,4 @@
-// The exact model's behaviour as a solver (issue 9, "Robustness"): named
+// The exact model's behaviour as a solver: named
 // errors, the iteration bound, warm start = cold start to the tolerance
 // (across failed solves, changes of a/b and extreme creepage jumps),
 // degenerate contacts, consistency of totals and fields, determinism.
@@ -30,7 +30,7 @@ void expect_error(F f, cw::ErrorKind kind, const char* needle)
 
 cw::ContactInput partial_slip()
 {
-    cw::ContactInput in = cwtest::issue9_contact(); // SI units, 75 % adhesion
+    cw::ContactInput in = cwtest::bench_contact(); // SI units, 75 % adhesion
     in.xi_x = 1e-3;
     in.xi_y = -4e-4;
     in.phi = 0.8;

@@ -1,6 +1,6 @@
 // The exact model's building blocks against direct computation: the batched
 // FFT against the DFT sum, the influence coefficients against CONTACT's
-// logarithm form (m_visc.f90:elascf_pcwcns, exact_discretisation.md rule 3),
+// logarithm form (m_visc.f90:elascf_pcwcns, doc/theory/exact-discretisation.md rule 3),
 // the FFT products against direct sums over element pairs (odd and even
 // sizes, dy != dx), and the local Coulomb solve against its definition.
 #include <algorithm>

@@ -1,4 +1,4 @@
-// Full slip (issue 2): |F| -> mu N up to the grid's quadrature of the
+// Full slip: |F| -> mu N up to the grid's quadrature of the
 // pressure, and F antiparallel to the rigid slip for pure translation.
 #include "core_test_support.hpp"
 #include "test_support.h"
@@ -67,7 +67,7 @@ void force_opposes_rigid_slip_with_one_flexibility(void**)
 }
 
 // Refining the grid drives the quadrature error, hence |F| - mu N, to zero,
-// as 1/n^2. README "Validation" quotes 3.6e-4 at 40 x 40 and 2.1e-5 at
+// as 1/n^2. doc/validation/index.md quotes 3.6e-4 at 40 x 40 and 2.1e-5 at
 // 160 x 160, held to those digits.
 void saturation_converges_to_mu_n(void**)
 {

@@ -57,8 +57,8 @@ double step_study(const char* label, cw::Solver& s, const cw::ContactInput& in,
     return cwtest::jacobian_step_study(label, 34, s, in, J, input_scales(in), slips, 1e-2, 1e-8);
 }
 
-// CONTACT's Jacobian for comparison (measured, printed for README
-// "Jacobians"): one-sided differences with step 1e-4 of the characteristic
+// CONTACT's Jacobian for comparison (measured, printed for doc/validation/jacobians.md):
+// one-sided differences with step 1e-4 of the characteristic
 // creepage mu N / (G c^2 C11) (of the spin: that over c), re-solved.
 void contact_style_error(cw::Solver& s, const cw::ContactInput& in, const cw::Jacobian& J)
 {
@@ -171,8 +171,8 @@ void linear_theory_limit(void**)
                "dFy/dphi / (-G c^3 C23) = %.6f\n",
                ratio, J.d[0][0] / (-G * c * c * t.C11), J.d[1][1] / (-G * c * c * t.C22),
                J.d[1][2] / (-G * c * c * c * t.C23));
-        // The grid's discretisation error at 50 x 50 is 2.0e-4 (README
-        // "Validation"); held to 5e-4.
+        // The grid's discretisation error at 50 x 50 is 2.0e-4 (doc/validation/index.md);
+        // held to 5e-4.
         assert_close(J.d[0][0], Fx_xi, 5e-4, 0.0);
         assert_close(J.d[1][1], Fy_eta, 5e-4, 0.0);
         assert_close(J.d[1][2], Fy_phi, 5e-4, 0.0);

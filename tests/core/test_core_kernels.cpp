@@ -1,7 +1,7 @@
 // The kernels (core/fastsim/march.hpp): the march and the work pass are compiled
 // for SSE2, AVX2 and AVX-512 and a solver picks one per CPU. Each wider
 // kernel must give bitwise the baseline's totals, fields, states and profile
-// (issue 2, "results must be bitwise reproducible"); and the march, with its
+// (results are bitwise reproducible whatever the CPU); and the march, with its
 // exact adhesion shortcut, must give bitwise what the plain one-element-at-
 // a-time FASTSIM step of Kalker 1982 gives.
 //

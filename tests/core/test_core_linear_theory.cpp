@@ -1,4 +1,4 @@
-// Linear theory (issue 2): with three flexibilities and vanishing creepage
+// Linear theory: with three flexibilities and vanishing creepage
 // the simplified theory reproduces Kalker's linear coefficients, because
 // Kalker 1982 chose L1, L2, L3 for exactly that:
 //   Fx = -G c^2 C11 xi,  Fy = -G c^2 C22 eta,  Fy = -G c^3 C23 phi  (c = sqrt(ab)).
@@ -44,7 +44,7 @@ void coefficients_within_one_percent(void**)
 
         printf("  %.1f  %.5f %.5f %.5f | %.4f (closed form %.4f)  %.4f (closed form %.4f)\n", ratio,
                r11, r22, r23, m_eta, m_eta_theory, m_phi, m_phi_theory);
-        // README "Validation": ratios 1.0002 on this grid (discretisation
+        // doc/validation/index.md: ratios 1.0002 on this grid (discretisation
         // error, second order: next test), held to 5e-5.
         assert_close(r11, 1.0002, 0.0, 5e-5);
         assert_close(r22, 1.0002, 0.0, 5e-5);

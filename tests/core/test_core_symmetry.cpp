@@ -1,4 +1,4 @@
-// Symmetries and units (issue 2). Sources: mirror symmetry of the contact
+// Symmetries and units. Sources: mirror symmetry of the contact
 // problem (the ellipse, the pressure and the grids are symmetric in x and y)
 // and dimensional analysis.
 #include "core_test_support.hpp"

@@ -1,4 +1,4 @@
-// Wear (issue 11, parts 2-3): the USFD and Archard/KTH laws on the work map
+// Wear: the USFD and Archard/KTH laws on the work map
 // (work/wear_map), the exact sums (work/exact_sum) and the accumulation on
 // profile grids with the update helper (work/wear_profile).
 #include <algorithm>
@@ -92,7 +92,7 @@ ww::WearLaw archard_one_k(double k)
 // to rounding. Against the continuum, sum pz A -> N (the grid's midpoint
 // quadrature of the paraboloid), and the model's own micro-slip (source
 // slip) converges to the same k xi N / H as O(1/n): the energy a coarse
-// grid's force x slip misses (README "Work").
+// grid's force x slip misses (doc/theory/work.md).
 void archard_full_slip_closed_form(void**)
 {
     const double k = 1e-3, xi = 0.05;
@@ -161,7 +161,7 @@ struct Synthetic {
 // (10.4..77.2), 61.9 T/A - 4778.7 above, in ug/(m mm^2) = 1e-3 kg/m^3.
 // At the boundaries: 5.3 x 10.4 = 55.12 just below t1; 55.0 at t1 and t2;
 // 61.9 x 77.2 - 4778.7 = -0.02 just above t2, clamped to 0 (the published
-// law's drop, README "Wear").
+// law's drop, doc/theory/wear.md).
 void usfd_regime_boundaries(void**)
 {
     const ww::UsfdCoefficients c;

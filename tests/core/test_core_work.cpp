@@ -1,4 +1,4 @@
-// Work bookkeeping (issue 2): the macro work of paper eq. 34, the paper's
+// Work bookkeeping: the macro work of paper eq. 34, the paper's
 // local work and K (eqs. 36-39), the energy-consistent map and its exact
 // discrete energy identity, and the lateral profile of paper Figs. 8-9.
 #include "core_test_support.hpp"
@@ -64,7 +64,7 @@ void spin_defect_is_a_model_property(void**)
     }
     printf("  W_macro / model power, spin case: %.5f %.5f %.5f\n", factor[0], factor[1], factor[2]);
     assert_close(factor[1], factor[2], 2e-4, 0.0);
-    // README "Work": 0.905 for this case (measured 0.90494, 0.90474, 0.90470).
+    // doc/validation/index.md: 0.905 for this case (measured 0.90494, 0.90474, 0.90470).
     for (double f : factor) assert_close(f, 0.905, 0.0, 5e-4);
 }
 
@@ -247,8 +247,8 @@ void balance_factor_limits(void**)
     }
     printf("\n");
     // With spin the strip grid's slip points sit half a step ahead of the
-    // centres: its factor approaches the uniform grid's like 1/n (README
-    // "Work"; measured ratios of successive distances 1.8, 1.9).
+    // centres: its factor approaches the uniform grid's like 1/n (doc/theory/work.md;
+    // measured ratios of successive distances 1.8, 1.9).
     cw::Solver fine(cwtest::uniform_grid(320, 320));
     const cw::ContactInput spin = contact(0.01, 0.0, 2.0, 0.5);
     const double limit = fine.solve(spin).balance_factor;
@@ -263,7 +263,7 @@ void balance_factor_limits(void**)
 }
 
 // The energy-consistent map on a 3 x 3 Kalker strip grid, computed here
-// directly from its definition (fastsim_work.hpp, README "Work"), one scalar
+// directly from its definition (fastsim_work.hpp, doc/theory/work.md), one scalar
 // element at a time: the FASTSIM march (Kalker 1982), the friction
 // dissipation D = -p.(u - u*) dy of each slip element, each strip's
 // numerical (1/2 dp L dp dy) and trailing-edge (1/2 p L p dy) losses shared
@@ -369,8 +369,8 @@ void consistent_map_by_hand_3x3(void**)
 
 // With spin, eq. 36 as printed is not zero in adhesion: there s = 0 but the
 // element force times the translational slip (minus the model's L/L3-scaled
-// spin slip) plus its moment times the true spin does not cancel. README
-// "Work" quotes the paper's Fig. 6 contact as fit-fig6 fits it (a = 6.6323 mm,
+// spin slip) plus its moment times the true spin does not cancel.
+// doc/validation/index.md quotes the paper's Fig. 6 contact as fit-fig6 fits it (a = 6.6323 mm,
 // nu = 0.3, 10 x 10 strips): adhesion elements from -0.102 to -0.001 of the
 // slip peak, together -22.1 % of W_micro.
 void paper_map_in_adhesion_fig6(void**)

@@ -161,7 +161,7 @@ contains
       call check_same(r2%Fx, r%Fx, 'get_result Fx')
       call check_same(r2%W_micro_paper, r%W_micro_paper, 'get_result W_micro_paper')
 
-      ! The calibrated model through the same params type (issue 10): it
+      ! The calibrated model through the same params type: it
       ! solves, says so, and its map sums to W_macro; then back to FASTSIM.
       p%model = CW_MODEL_CALIBRATED
       call s%solve(p, CW_SOLVE_FULL, r2, stat=stat)

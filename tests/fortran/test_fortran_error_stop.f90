@@ -1,4 +1,4 @@
-! Without stat, an error stops the program with the message (STYLE.md,
+! Without stat, an error stops the program with the message (CONTRIBUTING.md,
 ! Fortran): CTest runs this program once per case and looks for the message.
 !   invalid  a solve with a = -1: "creepwork: an input value is invalid ... a = -1"
 !   copy     assigning a live solver: "creepwork: a cw_solver_type cannot be copied"

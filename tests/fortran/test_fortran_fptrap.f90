@@ -6,7 +6,7 @@
 ! "IEEE_DENORMAL"; CTest fails on such a note). Both run the module and the
 ! legacy layer over a sweep of contacts and grids, hostile inputs included
 ! (NaN, Inf, 1e300, subnormal), so neither traps nor flags may come out of
-! the library (README "Guarantees"). The program's own arithmetic is kept
+! the library (doc/reference/guarantees.md). The program's own arithmetic is kept
 ! free of exceptions.
 program fortran_fptrap
    use, intrinsic :: iso_c_binding, only: c_double, c_int

@@ -1,5 +1,4 @@
-! The Jacobian through module creepwork and the legacy layer (README
-! "Jacobians"):
+! The Jacobian through module creepwork and the legacy layer (doc/theory/jacobians.md):
 !   module  cw_solver_type%solve_jacobian: jacobian(r, c) = d(Fx, Fy, Mz,
 !           W_macro)(r)/d(xi_x, xi_y, phi, N)(c) -- checked against central
 !           differences of the module's own solve (step 1e-5 of a

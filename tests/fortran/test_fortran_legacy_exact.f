@@ -1,17 +1,17 @@
 C     CWSOLX, the legacy entry with a model switch, as a FORTRAN 77
 C     user meets it: fixed form, IMPLICIT DOUBLE PRECISION, INCLUDE
-C     'creepwork_legacy.inc'. Issue 9's contact (A 7.17 mm, B 5.42 mm,
+C     'creepwork_legacy.inc'. The benchmark contact (A 7.17 mm, B 5.42 mm,
 C     FN 100 kN, FMU 0.3, G 82 GPa, PNU 0.28; XI 6e-4, ETA 3e-4,
 C     PHI 0.2/m, partial slip) on CONTACT's layout with 16 elements
 C     across the ellipse (NX = NY = 20, BOX = 20/16). Checks, for the
 C     exact model (MODEL = 1) and FASTSIM (MODEL = 0) on that grid:
 C      - WMAC = -(FX XI + FY ETA + FMZ PHI) (paper eq. 34), to 1e-12;
 C      - the energy-consistent map sums to WMAC, is >= 0 and zero in
-C        adhesion (README "Work", "Exact model"), to 1e-12;
+C        adhesion (doc/theory/work.md, doc/theory/exact.md), to 1e-12;
 C      - exact: the discrete normal problem carries the load exactly,
-C        dx dy sum(PZ) = FN (README "Exact model"), PMAX = max(PZ),
+C        dx dy sum(PZ) = FN (doc/theory/exact.md), PMAX = max(PZ),
 C        PMAX within 1 % of Hertz's 3 FN/(2 pi A B) (CONTACT: 1226.8
-C        of 1229.3 N/mm^2 at 20 across, issue 9), WPAP = 0 in adhesion
+C        of 1229.3 N/mm^2 at 20 across), WPAP = 0 in adhesion
 C        and CK = WMAC/sum(WPAP); adhesion at the leading edge, slip at
 C        the trailing edge of the middle strip;
 C      - errors: an unknown MODEL gives IERR = 10, BOX = 0.5 IERR = 3,

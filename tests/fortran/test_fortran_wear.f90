@@ -1,4 +1,4 @@
-! Wear through module creepwork and the legacy layer (issue 11):
+! Wear through module creepwork and the legacy layer:
 !   structs   c_sizeof of the bind(C) mirrors equals the struct_size the C
 !             _init functions write; the defaults land in the right fields
 !   wear      cw_wear_type on a solve: mass per distance = sum rate x area

@@ -1,4 +1,4 @@
-// libFuzzer target for the whole C ABI (issue 6). Arbitrary bytes are
+// libFuzzer target for the whole C ABI. Arbitrary bytes are
 // decoded into grids, parameters (NaN, Inf, negative, huge, denormal, odd
 // struct sizes and enumerations), buffer lengths (short, exact, long, NULL)
 // and a sequence of calls: create, solve, get result/fields/state/profile,
@@ -18,8 +18,8 @@
 // A violation prints what failed and aborts, which libFuzzer reports.
 // Grids stay small (<= 24 x 24) except occasional limit checks (one side
 // up to 1001, the other tiny), so that an execution takes well under 1 ms;
-// the exact model (issue 9) runs on at most 400 elements (a few ms); one
-// solve in ten is the calibrated model's (issue 10).
+// the exact model runs on at most 400 elements (a few ms); one
+// solve in ten is the calibrated model's.
 //
 // Built two ways: with libFuzzer (CREEPWORK_BUILD_FUZZ, clang) and, with any
 // compiler, as fuzz_capi_replay (replay_main.cpp), which runs the committed
@@ -352,7 +352,7 @@ void check_solution(Session& z, const cw_params& p_in, int mode, const cw_result
     FUZZ_CHECK(r.adhesion_fraction >= 0.0 && r.adhesion_fraction <= 1.0);
     if (p.struct_size >= offsetof(cw_params, model) + sizeof p.model && p.model == CW_MODEL_EXACT) {
         // Never an unconverged answer: the residual is within the tolerance.
-        // The ABI reads subnormal inputs as 0 (DAZ, README "Floating point"), so a
+        // The ABI reads subnormal inputs as 0 (DAZ, doc/reference/guarantees.md), so a
         // subnormal tolerance selects the default 1e-8, as 0 does.
         const double tol = p.tolerance >= DBL_MIN ? p.tolerance : 1e-8;
         FUZZ_CHECK(r.model == CW_MODEL_EXACT && r.iterations >= 0 && r.residual <= tol);
@@ -411,7 +411,7 @@ void op_create(Session& z, Bytes& in)
     check_message(cw_solver_last_error(s), false);
 }
 
-// The Jacobian of a FASTSIM or calibrated solve just made (README "Jacobians"), read from
+// The Jacobian of a FASTSIM or calibrated solve just made (doc/theory/jacobians.md), read from
 // no further input bytes so the corpus decodes as before: the same totals
 // bitwise, 16 finite numbers and nothing past them; on an error (no load,
 // overflow) nothing is written, and the solve is redone so the session's
@@ -447,7 +447,7 @@ void op_solve(Session& z, Bytes& in)
     const uint8_t how = in.u8();
     const int mode = how < 250 ? how % 2 : in.small_int();
     const bool with_result = how % 7 != 3;
-    // The exact model (issue 9) on small grids only, so an execution stays
+    // The exact model on small grids only, so an execution stays
     // short: its own options fuzzed too.
     cw_params p = p_decoded;
     if (how < 250 && how % 10 == 5 && z.solver && z.cells <= 400) {
@@ -460,7 +460,7 @@ void op_solve(Session& z, Bytes& in)
         if (e & 16) p.flexibility = CW_FLEX_FROM_MATERIAL;
         if (e & 32) p.model = in.small_int();
     } else if (how < 250 && how % 10 == 7) {
-        // The calibrated model (issue 10) on any grid: FASTSIM's march with
+        // The calibrated model on any grid: FASTSIM's march with
         // its table's blended bound, from the fuzzed creepages and load.
         p.model = CW_MODEL_CALIBRATED;
         p.flexibility = CW_FLEX_FROM_MATERIAL;

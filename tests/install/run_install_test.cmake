@@ -5,7 +5,7 @@
 #      include/creepwork/fortran, both .pc files and bin/creepwork installed;
 #   3. C via find_package(creepwork)            (consumers/c_find_package)
 #   4. C via pkg-config                          (cc consumer.c $(pkg-config ...))
-#   5. Fortran via the plain line of the README:
+#   5. Fortran via the plain line of doc/fortran.md:
 #        gfortran my_code.f90 -I<prefix>/include/creepwork/fortran -L<prefix>/lib
 #                 -lcreepwork_fortran -lcreepwork
 #   6. FORTRAN 77 legacy caller, no module:  gfortran legacy.f -L<prefix>/lib ...
@@ -51,7 +51,7 @@ endfunction()
 run("install" COMMAND ${CMAKE_COMMAND} --install ${BUILD_DIR} --prefix ${prefix} --config ${CONFIG})
 set(libdir ${prefix}/lib)
 
-# 1. Only cw_ symbols leave libcreepwork.so (STYLE.md, C ABI).
+# 1. Only cw_ symbols leave libcreepwork.so (CONTRIBUTING.md, C ABI).
 find_program(NM nm REQUIRED)
 run("exported symbols" COMMAND ${NM} -D --defined-only ${libdir}/libcreepwork.so)
 string(REGEX MATCHALL "[0-9a-fA-F]+ [A-Za-z] [^\n]+" symbols "${run_output}")
@@ -98,7 +98,7 @@ run("C pkg-config build" COMMAND ${C_COMPILER} ${consumers}/consumer.c ${pc_flag
     -Wl,-rpath,${libdir} -o ${WORK_DIR}/c_pkg_config)
 run("C pkg-config run" COMMAND ${WORK_DIR}/c_pkg_config)
 
-# 5. Fortran, the plain command line of the README.
+# 5. Fortran, the plain command line of doc/fortran.md.
 run("Fortran plain build" COMMAND ${Fortran_COMPILER} ${consumers}/my_code.f90
     -I${prefix}/include/creepwork/fortran -L${libdir} -lcreepwork_fortran -lcreepwork
     -o ${WORK_DIR}/my_code)

@@ -1,7 +1,7 @@
 /* Floating-point traps for the FP-trap tests (C and C++): turn on the traps
  * a legacy host turns on (gfortran -ffpe-trap=invalid,zero,overflow,denormal),
  * name the case being solved when one fires, and the sweep of contacts and
- * grids both tests solve. README "Guarantees": hosts that trap
+ * grids both tests solve. doc/reference/guarantees.md: hosts that trap
  * floating-point exceptions are safe. */
 #ifndef CREEPWORK_FPTRAP_SUPPORT_H
 #define CREEPWORK_FPTRAP_SUPPORT_H

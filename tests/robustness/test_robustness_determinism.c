@@ -175,7 +175,7 @@ static void test_batch_thread_counts(void** state)
     }
 }
 
-/* The exact model (issue 9) in a batch: every contact starts cold, so the
+/* The exact model in a batch: every contact starts cold, so the
  * results are those of one-by-one solves with warm_start = 0, bitwise,
  * whatever the thread count and the partition. Small grid: this runs under
  * ThreadSanitizer. */

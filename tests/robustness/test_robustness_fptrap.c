@@ -1,4 +1,4 @@
-/* Hosts that trap floating-point exceptions are safe (README "Guarantees"),
+/* Hosts that trap floating-point exceptions are safe (doc/reference/guarantees.md),
  * through the whole C ABI: with invalid, divide-by-zero, overflow and
  * denormal-operand traps on, no call raises one -- valid input of every
  * kind, in both modes, every getter, the Jacobians (FASTSIM, calibrated),
@@ -7,7 +7,7 @@
  * which gets a status or zeros, never a trap. And a call leaves no trace:
  * the caller's exception flags, masks and rounding mode are as before, and
  * the caller's rounding mode does not change a result. A trap ends the
- * process naming the case (fptrap_support.h). The issue that asked for it
+ * process naming the case (fptrap_support.h). The requirement behind it
  * reported 45 traps in 256 solves (the default contact, xi_x = 1e-3, uniform
  * grid 14 x 16, CW_SOLVE_FULL among them): all of the sweep below runs. */
 #include "fptrap_support.h"

@@ -123,7 +123,7 @@ static void test_accumulator_allocates_nothing(void** state)
     cw_solver_destroy(s);
 }
 
-/* The exact model after cw_solver_prepare / cw_batch_prepare (issue 9). */
+/* The exact model after cw_solver_prepare / cw_batch_prepare. */
 static void test_exact_allocates_nothing_after_prepare(void** state)
 {
     (void)state;

@@ -118,7 +118,7 @@ void test_solver_solve_allocates_nothing(void**)
     }
 }
 
-// The exact model (issue 9): after prepare(), its successful solves (warm or
+// The exact model: after prepare(), its successful solves (warm or
 // cold, forces or full, a new a/b) and every export allocate nothing.
 void test_exact_solve_allocates_nothing_after_prepare(void**)
 {
@@ -156,7 +156,7 @@ void test_exact_solve_allocates_nothing_after_prepare(void**)
     assert_int_equal(allocations, 0);
 }
 
-// The calibrated model (issue 10): once made (prepare), its solves, with a
+// The calibrated model: once made (prepare), its solves, with a
 // blended traction bound that changes from solve to solve, and every export
 // allocate nothing.
 void test_calibrated_solve_allocates_nothing_after_prepare(void**)

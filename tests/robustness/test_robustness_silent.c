@@ -1,4 +1,4 @@
-/* "Prints nothing" (README "Reference: guarantees", header of cw_solver_solve):
+/* "Prints nothing" (doc/reference/guarantees.md, header of cw_solver_solve):
  * file descriptors 1 and 2 are redirected to a temporary file around calls
  * of every public function -- successes and error paths, both grids, the
  * accumulator, the batch on several threads, the helpers and Kalker's

@@ -17,8 +17,8 @@
  *   Forces    Fx, Fy, Mz act on the wheel (body 1), as in Kalker's and
  *             CONTACT's conventions: opposite in sign to the creepages.
  *             The paper (Determination of Creep Force, Moment, and Work
-             Distribution in Rolling Contact With Slip; README "How to
-             cite") prints the force on the rail.
+ *             Distribution in Rolling Contact With Slip; README.md, "How
+ *             to cite") prints the force on the rail.
  *   Work      Positive when dissipated; per unit rolling distance [J/m].
  *             Multiply by V*dt for the work of a time step.
  *   Grids     Element (i, j), i = 0..nx-1 along x (increasing x),
@@ -40,8 +40,8 @@
  *             caller: each runs with exceptions masked and subnormals
  *             flushed to zero, and restores the caller's control and status
  *             word (masks, rounding, flags) on return, so hosts that trap
- *             invalid, zero, overflow or denormal are safe (README
- *             "Guarantees").
+ *             invalid, zero, overflow or denormal are safe
+ *             (doc/reference/guarantees.md).
  *   Threads   Distinct handles may be used concurrently from different
  *             threads; one handle must be used by one thread at a time.
  *             The library has no global mutable state.
@@ -198,11 +198,11 @@ typedef struct cw_params {
     int rolling_direction; /* +1 (default): leading edge at x = +a; -1: at x = -a */
     /* ---- appended in 1.1 ---- */
     int model;             /* CW_MODEL_FASTSIM (default), CW_MODEL_EXACT, CW_MODEL_CALIBRATED
-                              (README "Calibrated model": needs CW_FLEX_FROM_MATERIAL; uses
+                              (doc/theory/calibrated.md: needs CW_FLEX_FROM_MATERIAL; uses
                               its own fitted pressure law and flexibilities, so pressure and
                               flexibility_blending are not used) */
     double tolerance;      /* exact model: relative tolerance of the tangential solve;
-                              0 (default) = 1e-8; else in [1e-13, 1) (README "Exact model") */
+                              0 (default) = 1e-8; else in [1e-13, 1) (doc/theory/exact.md) */
     int max_iterations;    /* exact model: bound on Newton steps per grid; 0 (default) =
                               50; reaching it is CW_ERR_NOT_CONVERGED */
     int warm_start;        /* exact model: 1 (default) starts from the handle's last
@@ -246,7 +246,7 @@ typedef struct cw_result {
     double K;                 /* W_macro / W_micro_paper, paper eq. 39; 0 if undefined (FULL) */
     double W_consistent;      /* sum of the energy-consistent map = W_macro [J/m] (FULL) */
     double balance_factor;    /* W_macro / model energy terms; 1 without spin on the
-                                 uniform grid (see README "Work") (FULL) */
+                                 uniform grid (see doc/theory/work.md) (FULL) */
     double adhesion_fraction; /* n_adhesion / n_contact */
     int n_contact, n_adhesion, n_slip;
     int work_flags;           /* CW_WORK_* bits (FULL) */
@@ -290,7 +290,7 @@ CW_API int cw_solver_grid_size(const cw_solver* solver, int* nx, int* ny);
  * result may be NULL (read fields afterwards). Allocates nothing on success
  * (an error may allocate its message; the first CW_MODEL_EXACT solve makes
  * that model's memory unless cw_solver_prepare did), prints nothing.
- * CW_MODEL_EXACT (README "Exact model"): needs CW_GRID_UNIFORM and
+ * CW_MODEL_EXACT (doc/theory/exact.md): needs CW_GRID_UNIFORM and
  * CW_FLEX_FROM_MATERIAL (G, nu); solves its own normal problem from a, b,
  * normal_force, so params->pressure is ignored; with warm_start = 1 it
  * starts from this handle's last successful exact solution (the answer
@@ -421,8 +421,9 @@ CW_API const char* cw_batch_last_error(const cw_batch* batch);
 /* ------------------------------------------- linear theory and Hertz helpers */
 
 /* Kalker's coefficients (Kalker 1990, Table E.3; interpolated as CONTACT
- * does; asymptotes below min(a/b, b/a) = 0.1; C33 there is not a confirmed
- * published value, see README). coefficients[4] = C11, C22, C23, C33.
+ * does; asymptotes below min(a/b, b/a) = 0.1, where C33, for which no
+ * published asymptote is confirmed, continues the table's 0.1 row).
+ * coefficients[4] = C11, C22, C23, C33.
  * Errors: CW_ERR_NULL_POINTER, CW_ERR_INVALID_INPUT. */
 CW_API int cw_kalker_coefficients(double a_over_b, double nu, double coefficients[4],
                                   char* message, size_t message_len);
@@ -472,8 +473,8 @@ CW_API int cw_fastsim_normalised(double ux, double uy, double fx, double fy, int
 /* Makes one model's memory now, so that its solves allocate nothing
  * afterwards. CW_MODEL_FASTSIM: nothing to do (made by create).
  * CW_MODEL_EXACT: influence tables, FFT plans and spectra, Krylov basis and
- * every workspace of the grid and of its coarser levels (README "Exact
- * model": about 2 kB per element); without prepare the first exact solve
+ * every workspace of the grid and of its coarser levels (memory linear in
+ * nx*ny, doc/theory/exact.md); without prepare the first exact solve
  * makes them. CW_MODEL_CALIBRATED: its FASTSIM march workspace (every
  * grid). Idempotent. Errors: CW_ERR_NULL_POINTER,
  * CW_ERR_UNKNOWN_OPTION (model), CW_ERR_INVALID_INPUT (CW_MODEL_EXACT on
@@ -487,8 +488,9 @@ CW_API int cw_batch_prepare(cw_batch* batch, int model);
 
 /* -------------------------------------------------------------- Jacobians */
 
-/* The 4 x 4 Jacobian of a solve for implicit integrators (README
- * "Jacobians"), row-major: jacobian[4*r + c] = d(row r)/d(column c). */
+/* The 4 x 4 Jacobian of a solve for implicit integrators
+ * (doc/theory/jacobians.md; its cost: doc/performance.md), row-major:
+ * jacobian[4*r + c] = d(row r)/d(column c). */
 #define CW_JACOBIAN_LEN 16
 #define CW_JAC_FX 0      /* rows: Fx [N], Fy [N], Mz [N m], W_macro [J/m] */
 #define CW_JAC_FY 1
@@ -509,9 +511,9 @@ CW_API int cw_batch_prepare(cw_batch* batch, int model);
  * pressure scale and so the traction bound (and, with
  * flexibility_blending, the blended L1..L3).
  *   CW_MODEL_FASTSIM  exact derivatives of the discrete march by forward
- *                     mode in the same pass (1.7-2.9x a CW_SOLVE_FORCES
- *                     solve, measured; with CW_SOLVE_FULL the work pass
- *                     comes on top).
+ *                     mode in the same pass: a small constant times a
+ *                     CW_SOLVE_FORCES solve, linear in the elements (with
+ *                     CW_SOLVE_FULL the work pass comes on top).
  *                     Every grid, pressure, spin_offset and
  *                     flexibility_blending.
  *   CW_MODEL_EXACT    derivatives of the converged discrete system (implicit
@@ -522,11 +524,11 @@ CW_API int cw_batch_prepare(cw_batch* batch, int model);
  *                     directions in which each input moves its setup (the
  *                     table's knobs depend on the saturation level: those
  *                     closed forms are differenced centrally, the march
- *                     exactly; N by homogeneity); 2.1-3.8x a
- *                     CW_SOLVE_FORCES solve, measured.
+ *                     exactly; N by homogeneity): a small constant times a
+ *                     CW_SOLVE_FORCES solve, linear in the elements.
  *                     Needs CW_FLEX_FROM_MATERIAL, as its solves.
  * Where an element sits exactly on the traction bound the derivative is the
- * one of the state the solve found (README "Jacobians"). Needs
+ * one of the state the solve found (doc/theory/jacobians.md). Needs
  * normal_force > 0 when mu > 0 (the forces are not differentiable in N at
  * N = 0): CW_ERR_INVALID_INPUT. Allocates nothing (FASTSIM, calibrated;
  * exact as cw_solver_solve). Errors: those of cw_solver_solve, and
@@ -539,7 +541,7 @@ CW_API int cw_solver_solve_jacobian(cw_solver* solver, const cw_params* params, 
 
 /* Wear of a solved contact (any model) by the USFD or Archard law applied
  * element by element to its frictional work, and its accumulation on the
- * host's wheel or rail profile over many passes (README "Wear").
+ * host's wheel or rail profile over many passes (doc/theory/wear.md).
  *
  * A "pass" is one passage of the body's material through the contact: one
  * axle passage for the rail, one wheel revolution for the wheel. Depths per
@@ -606,7 +608,7 @@ typedef struct cw_wear_params {
     double usfd_t2;       /* [Pa]       default 77.2e6  (77.2 N/mm^2), >= usfd_t1 */
     double usfd_k3;       /* [kg/(N m)] default 61.9e-9 */
     double usfd_c3;       /* [kg/m^3]   default 4.7787  (4778.7 ug/(m mm^2)) */
-    /* Archard with the KTH map: volume = k N s / H per element (README "Wear");
+    /* Archard with the KTH map: volume = k N s / H per element (doc/theory/wear.md);
      * coefficients in [0, 1e6]. Defaults: Jendel's regime boundaries and the
      * middles of his k bands. */
     double hardness;      /* H [Pa] in [1e6, 1e12]; default 2.5e9 (about 255 HB) */
@@ -686,7 +688,7 @@ CW_API const char* cw_wear_last_error(const cw_wear* wear);
  * strip j (centre y_j, width dy_j, depth d_j) on
  *   s = s0 + orientation * (y_j -+ dy_j/2) * cos(contact_angle),
  * and spreads its worn cross-section d_j dy_j uniformly over that interval
- * (README "Wear"). Sums are exact: the depths read do not depend on the
+ * (doc/theory/wear.md). Sums are exact: the depths read do not depend on the
  * order of the calls, on how the same passes are split between calls (pass
  * counts that add up exactly, e.g. integers), or on merging: bitwise (only
  * products passes * depth below about 1e-120 m lose low bits). */

@@ -21,7 +21,7 @@ constexpr int kStatusRowUnreadable = -1;
 constexpr int kRail = 0, kWheel = 1, kWearBodies = 2;
 
 // Where a row's patch sits on its body's profile and how many passes it
-// stands for (issue 11's cw_wear_profile_add arguments), resolved by the
+// stands for (the arguments of cw_wear_profile_add), resolved by the
 // reader from the row's wear columns. Unused without --wear.
 struct RowWear {
     int32_t body = kRail;

@@ -12,7 +12,7 @@
 // fy = -3 eta' (forces on the wheel, as everywhere in creepwork).
 // Each point is solved on a unit contact (c = 1 m, G = 1 Pa, N = 1 N,
 // mu = 1; a = sqrt(a/b), b = 1/sqrt(a/b)), so fx, fy, mz are the solver's
-// Fx, Fy, Mz themselves. README "Creep-force tables" documents the files.
+// Fx, Fy, Mz themselves. doc/campaigns.md documents the files.
 #pragma once
 
 #include <cstdint>

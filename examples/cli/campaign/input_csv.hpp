@@ -1,5 +1,5 @@
 // A campaign's input: a CSV file with a header, one contact state per row,
-// in SI and with the CLI's spellings (README "Campaigns" lists the columns).
+// in SI and with the CLI's spellings (doc/campaigns.md lists the columns).
 // A problem with the file itself (missing, no header, a missing or unknown
 // column) is an InputError naming the file and column; a problem with one
 // row (a value that is not a number, a wrong field count, an unknown model)
@@ -25,7 +25,7 @@ struct CampaignInput {
     std::vector<ContactCase> cases; // one per data row, in file order
     std::vector<std::string> ids;   // the id column, one per row
     std::vector<long> lines;        // line of the file where each row starts
-    // The wear columns (issue 11), carried through to results.csv; NaN where
+    // The wear columns (used with --wear), carried through to results.csv; NaN where
     // a row leaves them empty. Empty vectors when the file has no column.
     std::vector<double> s0, distance;
     bool has_s0 = false, has_distance = false;

@@ -1,4 +1,4 @@
-// What a wear campaign (--wear, issue 11) needs on every rank: the wear law
+// What a wear campaign (--wear) needs on every rank: the wear law
 // and its parameters, the wheel radius, the orientation of the profile
 // coordinate and the profile grid the rows' wear is accumulated on. Every
 // rank reads the same options; only rank 0 reads the input, so it makes the

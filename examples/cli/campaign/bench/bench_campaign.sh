@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Contacts per second of creepwork campaign against ranks and threads on
-# this machine (README "Campaigns", benchmark table). Timing, so not a test.
+# this machine (doc/campaigns.md, benchmark table). Timing, so not a test.
 #   bench_campaign.sh <creepwork> [fastsim rows (100000)] [exact rows (480)] [repeats (3)]
 # For each model it generates contacts (FASTSIM: Kalker strip grid 20 x 20;
 # exact: uniform grid 44 x 44, box scale 1.1, i.e. 40 elements across the

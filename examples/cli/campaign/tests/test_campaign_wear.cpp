@@ -1,4 +1,4 @@
-/* Wear campaigns (`creepwork campaign --wear`, issues 11 and 13): every
+/* Wear campaigns (`creepwork campaign --wear`): every
  * row's wear and the accumulated wear-depth profiles of the rail and the
  * wheel must be bitwise the same for 1, 2 and 3 ranks, threads and chunk
  * sizes; equal, bitwise, to a direct accumulation through the C ABI (each
