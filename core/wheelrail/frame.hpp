@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 
 namespace creepwork::wheelrail {
 

@@ -142,6 +142,22 @@ void Profile::build_pieces()
     }
 }
 
+Profile Profile::placed(const Frame& f) const
+{
+    Profile q(*this);
+    const double ryy = f.r(1, 1), ryz = f.r(1, 2), rzy = f.r(2, 1), rzz = f.r(2, 2);
+    for (int i = 0; i < size(); ++i) {
+        q.y_[i] = f.o(1) + ryy * y_[i] + ryz * z_[i];
+        q.z_[i] = f.o(2) + rzy * y_[i] + rzz * z_[i];
+    }
+    for (size_t k = 0; k < cy_.size(); ++k) { // derivatives rotate, no shift
+        q.cy_[k] = ryy * cy_[k] + ryz * cz_[k];
+        q.cz_[k] = rzy * cy_[k] + rzz * cz_[k];
+    }
+    q.build_pieces();
+    return q;
+}
+
 int Profile::segment_of(double s, int hint) const
 {
     const int nseg = size() - 1;

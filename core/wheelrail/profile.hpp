@@ -19,6 +19,8 @@
 #include <string>
 #include <vector>
 
+#include "wheelrail/frame.hpp"
+
 namespace creepwork::wheelrail {
 
 enum class ProfileKind { rail, wheel };
@@ -77,6 +79,10 @@ public:
     // Lowest/highest y of the curve (the visible range in y).
     double y_min() const { return y_lo_; }
     double y_max() const { return y_hi_; }
+
+    // The same curve placed in a parent frame (p_parent = o + R p, R a roll
+    // about x: only its y-z block is used); s keeps its values.
+    Profile placed(const Frame& f) const;
 
     // s where y(s) = y within [s_a, s_b] (y monotone there, y between the
     // ends); Newton safeguarded by bisection.

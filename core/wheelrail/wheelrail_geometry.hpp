@@ -1,0 +1,94 @@
+// The geometry of one wheel on one rail: made once for a pair of profiles, a
+// track, a wheelset and a side; evaluated for any wheelset position and
+// velocity. It finds the contact patches and gives, per patch, the contact
+// reference point and angle, the undeformed distance on a grid in the
+// patch's tangent plane, the creepages and the rolling radius -- CONTACT's
+// module 1 up to the contact solution (doc/wheelrail.md).
+//
+// Outputs follow CONTACT's module-1 conventions in SI units: track
+// coordinates x forward, y to the right, z down; the patch frame is the
+// track frame rolled about x by the contact angle delta (axes x, s, n: n
+// into the rail); profile coordinates as the profiles are given (on the left
+// side y_r points to the track centre); creepages are those of the rail
+// relative to the wheel (CONTACT's CKSI, CETA, CPHI). doc/wheelrail.md maps
+// them onto creepwork's convention (forces on the wheel, body 1).
+#pragma once
+
+#include <vector>
+
+#include "wheelrail/contact_search.hpp"
+#include "wheelrail/creepages.hpp"
+#include "wheelrail/patch_grid.hpp"
+#include "wheelrail/profile.hpp"
+#include "wheelrail/profile_table.hpp"
+#include "wheelrail/wheelrail_types.hpp"
+
+namespace creepwork::wheelrail {
+
+struct ContactPatch {
+    // the contact reference point (on the rail's surface) and angle
+    double x_tr = 0, y_tr = 0, z_tr = 0; // track coordinates [m]
+    double delta = 0;                    // rotation about x from track z to n [rad]
+    double y_r = 0, z_r = 0, s_r = 0;    // rail profile coordinates, arc length [m]
+    double x_w = 0, y_w = 0, z_w = 0, s_w = 0; // wheel profile coordinates [m]
+    double x_ws = 0, y_ws = 0, z_ws = 0; // wheelset coordinates [m]
+    double rolling_radius = 0;           // depth of the wheel's contact point below the axle [m]
+    // creepages at the reference point, rail relative to wheel
+    double veloc = 0;                    // [m/s]
+    double cksi = 0, ceta = 0;           // [-]
+    double cphi = 0;                     // [1/m]
+    bool forward = true;                 // rolling towards +x
+    // the undeformed distance on the grid of the tangent plane: element
+    // (i, j) is centred at x = x0 + i dx, s = s0 + j ds from the reference
+    // point, h at [i + j nx] [m] (> 0 apart; datum: the given position, so
+    // the approach of that position is 0)
+    int nx = 0, ny = 0;
+    double dx = 0, ds = 0, x0 = 0, s0 = 0;
+    std::vector<double> h;
+    double approach = 0;                 // -min h: the rigid overlap [m]
+    double gap_min = 0;                  // least vertical gap of the region [m]
+    // sub-patches (x_lo, x_hi, y_lo, y_hi, z_lo, z_hi in track coordinates)
+    // and their mutual influence factors (n_sub x n_sub)
+    std::vector<double> sub_extent, sub_factor;
+};
+
+struct WheelRailState {
+    WheelsetPosition position;
+    double gap_min = 0; // least vertical gap between wheel and rail [m] (> 0: no contact)
+    std::vector<ContactPatch> patches; // from the field side to the track centre
+};
+
+class WheelRailGeometry {
+public:
+    // Throws creepwork::Error naming the input when one is out of range.
+    WheelRailGeometry(const Profile& rail, const Profile& wheel, const Track& track,
+                      const Wheelset& wheelset, Side side, const SearchOptions& options = {});
+
+    // The patches at a prescribed wheelset position.
+    const WheelRailState& evaluate(const WheelsetPosition& position, const WheelsetVelocity& velocity);
+    const WheelRailState& state() const { return state_; }
+
+    Side side() const { return side_; }
+    const Track& track() const { return track_; }
+    const Wheelset& wheelset() const { return wheelset_; }
+    const SearchOptions& options() const { return opt_; }
+    // The rail's frame in track coordinates (right-side frame, CONTACT's
+    // rail marker before mirroring).
+    const Frame& rail_frame() const { return rail_frame_; }
+    const ContactSearch& search() const { return search_; }
+
+private:
+    Profile rail_, wheel_, rail_track_;
+    ProfileTable wheel_table_;
+    Track track_;
+    Wheelset wheelset_;
+    Side side_;
+    SearchOptions opt_;
+    Frame rail_frame_, wheel_ws_;
+    ContactSearch search_;
+    std::vector<Region> regions_;
+    PatchGrid grid_;
+    WheelRailState state_;
+};
+
+} // namespace creepwork::wheelrail
