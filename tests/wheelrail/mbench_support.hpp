@@ -22,6 +22,12 @@ inline std::string wheelrail_data(const std::string& name)
     return std::string(CW_WHEELRAIL_DATA) + "/" + name;
 }
 
+// CONTACT's shipped results in the shared reference folder.
+inline std::string shared_path_nonhertz(const std::string& name)
+{
+    return std::string(CW_SHARED_DIR) + "/reference/nonhertz/" + name;
+}
+
 // One row of a CSV file with a header, cells by column name.
 struct Row {
     std::map<std::string, std::string> cell;
