@@ -121,6 +121,7 @@ const WheelRailState& WheelRailGeometry::evaluate(const WheelsetPosition& pos, c
         cp.z_w = in_wheel.o(2);
         if (!wheel_.visible_s_at_y(in_wheel.o(1), cp.s_w))
             cp.s_w = in_wheel.o(1) > wheel_.y_max() ? wheel_.s_first() : wheel_.s_last();
+        cp.wheel_radius = wheelset_.nominal_radius + wheel_.at(cp.s_w).z;
         const Vec3 in_ws = ws.to_local(ref.o);
         cp.x_ws = in_ws(0);
         cp.y_ws = sgn * in_ws(1);

@@ -33,6 +33,7 @@ struct ContactPatch {
     double x_w = 0, y_w = 0, z_w = 0, s_w = 0; // wheel profile coordinates [m]
     double x_ws = 0, y_ws = 0, z_ws = 0; // wheelset coordinates [m]
     double rolling_radius = 0;           // depth of the wheel's contact point below the axle [m]
+    double wheel_radius = 0;             // the wheel's radius at y_w: nominal + profile height [m]
     // creepages at the reference point, rail relative to wheel
     double veloc = 0;                    // [m/s]
     double cksi = 0, ceta = 0;           // [-]
