@@ -135,6 +135,25 @@ void test_spline_on_circle(void**)
     assert_close(p.inclination(s), std::asin(10.0 / r), 0, 1e-6);
 }
 
+// Measured MiniProf wheels from CONTACT's test bank: a clean one reads
+// (664 points in the file, z already downwards); one with stitching
+// zig-zags is refused at the first bad point met in canonical order (the
+// file runs flange back to field side, so from its end): an 82 deg kink at
+// line 227; with kinks up to 86 deg accepted, the zig-zag of lines 222-224
+// (the profile turns back).
+void test_measured_miniprof_wheels(void**)
+{
+    const wr::Profile w = wr::read_profile_file(data("right-wheel-v1-pre-dry.whl"), wr::ProfileKind::wheel);
+    assert_int_equal(w.size(), 664);
+    assert_true(w.knots_y().front() > w.knots_y().back());
+    const std::string e = error_of([] { wr::read_profile_file(data("Car7216_0001r.whl"), wr::ProfileKind::wheel); });
+    assert_mentions(e, "Car7216_0001r.whl line 227: kink");
+    wr::ProfileReadOptions o;
+    o.checks.kink_angle = 1.5; // 86 deg: the turn back remains
+    const std::string e2 = error_of([&] { wr::read_profile_file(data("Car7216_0001r.whl"), wr::ProfileKind::wheel, o); });
+    assert_mentions(e2, "line 223: the profile turns back");
+}
+
 void test_table_reader(void**)
 {
     // comma separated, a header line, comments; reversed order is put right
@@ -192,6 +211,7 @@ int main(int argc, char** argv)
         cmocka_unit_test(test_mbench_profiles),
         cmocka_unit_test(test_miniprof_equals_simpack),
         cmocka_unit_test(test_spline_on_circle),
+        cmocka_unit_test(test_measured_miniprof_wheels),
         cmocka_unit_test(test_table_reader),
         cmocka_unit_test(test_errors_name_the_line),
     };
