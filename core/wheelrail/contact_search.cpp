@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "contact/error.hpp"
+#include "contact/fp_safe.hpp"
 
 namespace creepwork::wheelrail {
 namespace {
@@ -117,17 +118,18 @@ void ContactSearch::sample_wheel(const Frame& f)
     std::fill(gap_.begin(), gap_.end(), kNoGap);
     for (int k = k_end - 1; k >= k_sta; --k) {
         const double ya = ky_[k + 1], yb = ky_[k]; // ya < yb
+        if (!(yb > ya)) continue;
         int i = std::max(0, static_cast<int>(std::ceil((ya - y0_) / dy_)));
         const int i_end = std::min(n_ - 1, static_cast<int>(std::floor((yb - y0_) / dy_)));
         if (i > i_end || kz_[k] <= -kValidGap || kz_[k + 1] <= -kValidGap) continue;
         const double h = ya - yb;
         auto cubic = [&](double fa, double da, double fb, double db, double* c) {
             // f(u), u = y - ya in [0, -h]: values and slopes at both ends
-            const double w = -h, m = (fb - fa) / w;
+            const double w = -h, m = quotient_if_positive(fb - fa, w);
             c[0] = fa;
             c[1] = da;
-            c[2] = (3.0 * m - 2.0 * da - db) / w;
-            c[3] = (da + db - 2.0 * m) / (w * w);
+            c[2] = quotient_if_positive(3.0 * m - 2.0 * da - db, w);
+            c[3] = quotient_if_positive(da + db - 2.0 * m, w * w);
         };
         double cz[4], cx[4];
         cubic(kz_[k + 1], kdz_[k + 1], kz_[k], kdz_[k], cz);
@@ -259,8 +261,8 @@ std::pair<int, int> ContactSearch::add_region(int i, double gap_locmin, std::vec
         auto crossing = [&](int k, int k_in, double& yc, double& zc) {
             const double dg = gap_[k_in] - gap_[k];
             if (gap_[k] * gap_[k_in] <= -1e-18 && std::abs(dg) >= 1e-12) {
-                yc = y_at(k) - gap_[k] * (y_at(k_in) - y_at(k)) / dg;
-                zc = zr_[k] - gap_[k] * (zr_[k_in] - zr_[k]) / dg;
+                yc = y_at(k) - quotient_or_zero(gap_[k] * (y_at(k_in) - y_at(k)), dg);
+                zc = zr_[k] - quotient_or_zero(gap_[k] * (zr_[k_in] - zr_[k]), dg);
             } else {
                 yc = y_at(k);
                 zc = zr_[k];

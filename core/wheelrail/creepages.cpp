@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "contact/fp_safe.hpp"
+
 namespace creepwork::wheelrail {
 
 Creepages creepages_at(const Frame& ref, double approach, const Frame& ws, const WheelsetVelocity& v,
@@ -29,9 +31,9 @@ Creepages creepages_at(const Frame& ref, double approach, const Frame& ws, const
     if (c.veloc < 1e-9) return c; // at rest: no creepage
     const Vec3 dv = ref.r.transpose() * (v_p - v_q);
     const Vec3 dw = ref.r.transpose() * (w_p - w_q);
-    c.cksi = dv(0) / c.veloc;
-    c.ceta = dv(1) / c.veloc;
-    c.cphi = dw(2) / c.veloc;
+    c.cksi = quotient_if_positive(dv(0), c.veloc);
+    c.ceta = quotient_if_positive(dv(1), c.veloc);
+    c.cphi = quotient_if_positive(dw(2), c.veloc);
     return c;
 }
 

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "contact/fp_safe.hpp"
+
 namespace creepwork::wheelrail {
 namespace {
 
@@ -23,7 +25,7 @@ bool solve_wheel(const ProfileTable& tab, double R, const Vec3& q, const Vec3& a
         const double g = pz * pz + p(0) * p(0) - r * r;
         const double dg = 2.0 * (pz * an(2) + p(0) * an(0) - r * dz * an(1));
         if (dg == 0.0) return false;
-        const double step = g / dg;
+        const double step = quotient_or_zero(g, dg);
         t -= step;
         if (std::abs(step) < 1e-14) return std::isfinite(t);
     }
@@ -42,7 +44,7 @@ bool rail_n(const Profile& rail, const Frame& ref, double s, double& sigma, doub
         const double f = es(1) * (p.y - ref.o(1)) + es(2) * (p.z - ref.o(2)) - s;
         const double df = es(1) * p.dy + es(2) * p.dz;
         if (df <= 1e-6) return false; // the rail turns away from the tangent plane
-        const double next = std::clamp(sigma - f / df, rail.s_first(), rail.s_last());
+        const double next = std::clamp(sigma - quotient_if_positive(f, df), rail.s_first(), rail.s_last());
         const bool done = std::abs(next - sigma) < 1e-14;
         sigma = next;
         if (done) {

@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "contact/fp_safe.hpp"
+
 namespace creepwork::wheelrail {
 namespace {
 
@@ -16,7 +18,7 @@ double refine_min(const Profile& p, int k, int coord)
         const Profile::Point q = p.at(s);
         const double d1 = coord == 0 ? q.dy : q.dz, d2 = coord == 0 ? q.d2y : q.d2z;
         if (!(d2 > 0.0)) break;
-        const double next = std::min(hi, std::max(lo, s - d1 / d2));
+        const double next = std::min(hi, std::max(lo, s - quotient_if_positive(d1, d2)));
         if (std::abs(next - s) < 1e-15) return next;
         s = next;
     }

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "contact/error.hpp"
+#include "contact/fp_safe.hpp"
 #include "wheelrail/profile_checks.hpp"
 
 namespace creepwork::wheelrail {
@@ -198,14 +199,16 @@ double Profile::solve_y(double y, double s_a, double s_b) const
     if ((y - ya) * (y - yb) > 0.0) return std::abs(y - ya) < std::abs(y - yb) ? s_a : s_b;
     double lo = s_a, hi = s_b;
     const bool rising = yb > ya;
-    double s = s_a + (s_b - s_a) * (y - ya) / (yb - ya);
+    double s = s_a + (s_b - s_a) * quotient_or_zero(y - ya, yb - ya);
     int seg = -1;
     for (int it = 0; it < 100; ++it) {
         const Point p = at(s, &seg);
         const double f = p.y - y;
         if ((f > 0.0) == rising) hi = s; else lo = s;
         if (f == 0.0) return s;
-        double next = s - f / p.dy;
+        // Newton, or bisection where it would leave the bracket (no division
+        // by a zero slope, even speculated: contact/fp_safe.hpp)
+        double next = s - quotient_or_zero(f, p.dy);
         if (!(next > lo && next < hi) || p.dy == 0.0) next = 0.5 * (lo + hi);
         if (std::abs(next - s) <= 1e-15 * (1.0 + std::abs(s)) || hi - lo <= 1e-15 * (1.0 + std::abs(s)))
             return next;
