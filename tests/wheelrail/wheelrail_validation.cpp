@@ -112,7 +112,8 @@ std::string tables()
         all_new.add(compare(b, r, p));
     }
     std::ostringstream o;
-    o << "**Contact over the lateral shift** (creepwork; CONTACT's values in the next table's differences). "
+    o << "**Contact over the lateral shift** (creepwork's values; the next table gives their differences to "
+         "CONTACT). "
          "y_r: lateral position on the rail profile, y_w: on the wheel profile, delta: contact angle, r: "
          "the wheel's radius at y_w, dr = r_left - r_right.\n\n";
     o << "| y_ws [mm] | yaw [mrad] | left y_r [mm] | left y_w [mm] | left delta [deg] | right y_r [mm] | "
