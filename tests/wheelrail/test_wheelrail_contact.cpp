@@ -1,8 +1,9 @@
 // The geometry against CONTACT's module 1 (v25.1, commit d431cdb) at the
 // same wheelset positions: the Manchester benchmark case A-2.2 (21 lateral
-// shifts x 2 wheels, CONTACT's own example) and 17 patches of new cases
+// shifts x 2 wheels, CONTACT's own example) and 21 patches of 18 new cases
 // with other shifts, yaw, roll, velocities, grids, cant, curvature, rail
-// placement and patch separation (tests/wheelrail/contact_reference). The
+// placement, patch separation and turned contact angles
+// (tests/wheelrail/contact_reference). The
 // vertical position is CONTACT's z_ws for 10-20 kN in full precision, so the
 // comparison is of the geometry alone; CONTACT's reference point is its
 // geometric weighted centre, fixed before its normal solution.

@@ -142,7 +142,7 @@ std::string tables()
     };
     for (const auto& [y, d] : by_shift) row(fmt("%.1f", y), d);
     o << "\n**Worst differences to CONTACT** over the benchmark (42 wheel positions) and over the new "
-         "cases (16 positions, 17 patches, not used to write the code).\n\n";
+         "cases (18 positions, 21 patches, not used to write the code).\n\n";
     o << "| cases | patches equal | location [um] | delta [urad] | cksi | ceta | cphi | grid equal | "
          "approach |\n";
     o << "|---|:---:|---:|---:|---:|---:|---:|:---:|---:|\n";
