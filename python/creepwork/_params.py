@@ -1,0 +1,159 @@
+"""Keyword arguments -> C struct records, for every struct of the header.
+
+Each struct field (but struct_size) is a keyword of the same name, with the
+default its C _init function sets; fields with an enumeration in the header
+(a "/* cw_params.model ..." block of #defines) also take the value's name,
+e.g. model="exact" for CW_MODEL_EXACT. Fields appended to the header become
+keywords without an edit here.
+"""
+
+import difflib
+import textwrap
+
+import numpy as np
+
+from . import _errors
+from ._layout import LAYOUT
+from ._library import DTYPES, defaults
+
+_ENUMS = {}
+for _key, _members in LAYOUT["enums"].items():
+    _struct, _field = _key.split(".")
+    _ENUMS.setdefault(_struct, {})[_field] = _members
+
+# Names a user may type besides the field's own: N is the load's usual symbol
+# (and the CLI's --N); "strips" is the CLI's name for Kalker's strip grid.
+_ALIASES = {"cw_params": {"N": "normal_force"}}
+_VALUE_ALIASES = {("cw_grid", "kind"): {"strips": "kalker_strips"}}
+
+
+class Keywords:
+    """The keywords of one struct: names, defaults, enumerations, docs."""
+
+    def __init__(self, struct):
+        self.struct = struct
+        self.dtype = DTYPES[struct]
+        self.fields = {f["name"]: f for f in LAYOUT["structs"][struct] if f["name"] != "struct_size"}
+        self.aliases = _ALIASES.get(struct, {})
+        self.enums = _ENUMS.get(struct, {})
+
+    def field(self, key, caller):
+        """The field a keyword names; TypeError (as Python's) for an unknown one."""
+        if key in self.fields:
+            return key
+        if key in self.aliases:
+            return self.aliases[key]
+        names = list(self.fields) + list(self.aliases)
+        close = difflib.get_close_matches(key, names, n=1)
+        hint = " (did you mean %r?)" % close[0] if close else ""
+        raise TypeError("%s() got an unexpected keyword argument %r%s; the keywords are the "
+                        "fields of %s: %s" % (caller, key, hint, self.struct, ", ".join(names)))
+
+    def enum_value(self, field, name):
+        members = self.enums[field]
+        name = _VALUE_ALIASES.get((self.struct, field), {}).get(name, name)
+        if name not in members:
+            raise _errors.BY_STATUS[_status("CW_ERR_UNKNOWN_OPTION")](
+                "%s = %r is not one of %s" % (field, name, ", ".join(members)))
+        return members[name]
+
+    def convert(self, field, value):
+        """value as the field's numbers: enumeration names mapped, integers
+        checked (a scalar stays a scalar, an array an array)."""
+        if field in self.enums:
+            if isinstance(value, str):
+                return self.enum_value(field, value)
+            arr = np.asarray(value)
+            if arr.dtype.kind in "US":
+                out = np.empty(arr.shape, np.int64)
+                for name in np.unique(arr):
+                    out[arr == name] = self.enum_value(field, str(name))
+                return out
+        kind = self.dtype.fields[field][0].base.kind
+        if kind in "iu":
+            arr = np.asarray(value)
+            if arr.dtype.kind == "b":
+                return arr.astype(np.int64) if arr.ndim else int(arr)
+            if arr.dtype.kind not in "iu":
+                if arr.dtype.kind != "f" or not np.all(np.isfinite(arr) & (arr == np.round(arr))):
+                    raise TypeError("%s must be an integer, got %r" % (field, value))
+            return arr.astype(np.int64) if arr.ndim else int(arr)
+        return value
+
+    def fill(self, record, keywords, caller, keep=None):
+        """Sets record[field] = value for each keyword (record: a numpy record of
+        this struct, any shape; values broadcast). Pointer fields take a numpy
+        array, whose address is stored; it is appended to keep, so that the
+        caller holds it alive while the library may read it."""
+        for key, value in keywords.items():
+            field = self.field(key, caller)
+            spec = self.fields[field]
+            if spec["pointer"]:
+                if value is None:
+                    record[field] = 0
+                    continue
+                arr = np.ascontiguousarray(value)
+                if keep is not None:
+                    keep.append(arr)
+                record[field] = arr.__array_interface__["data"][0]
+                continue
+            record[field] = self.convert(field, value)
+
+    def record(self, keywords, caller, keep=None):
+        """A fresh record with the C defaults and the keywords set."""
+        rec = defaults(self.struct).copy()
+        self.fill(rec, keywords, caller, keep)
+        return rec
+
+    def doc(self, indent=4):
+        """One entry per keyword: name, its default and the header's comment."""
+        d = defaults(self.struct)
+        lines = []
+        alias_of = {v: k for k, v in self.aliases.items()}
+        for name, f in self.fields.items():
+            label = name if name not in alias_of else "%s (or %s)" % (alias_of[name], name)
+            if f["pointer"]:
+                default = "none"
+            else:
+                default = repr(d[name].tolist())
+            names = ""
+            if name in self.enums:
+                names = "; names: " + ", ".join("%s = %r" % (k, v) for k, v in self.enums[name].items())
+            lines.append(label + " (default %s)" % default)
+            lines += textwrap.wrap(f["doc"] + names, 76 - indent, initial_indent="    ",
+                                   subsequent_indent="    ")
+        return textwrap.indent("\n".join(lines), " " * indent)
+
+
+def _status(name):
+    return LAYOUT["constants"][name]
+
+
+PARAMS = Keywords("cw_params")
+GRID = Keywords("cw_grid")
+WEAR_PARAMS = Keywords("cw_wear_params")
+
+
+def exact_default_grid():
+    """The grid the exact model gets when none is given, as the CLI's
+    (examples/cli/contact_options.hpp, kExactBoxScale): CONTACT's layout, the
+    uniform grid over a box 1.2 times the semi-axes with 1.2 times the
+    library's default element count (24 x 24: 20 elements across the
+    ellipse, two guard cells on each side)."""
+    d = defaults("cw_grid")
+    scale = 1.2
+    return {"kind": "uniform", "nx": int(round(scale * int(d["nx"]))),
+            "ny": int(round(scale * int(d["ny"]))), "box_scale": scale}
+
+
+def grid_record(grid, caller):
+    """A cw_grid record from None (the C default), a dict of cw_grid fields
+    ({"kind": "uniform", "nx": 24, "ny": 24, "box_scale": 1.2}) or a record."""
+    if grid is None:
+        return defaults("cw_grid").copy()
+    if isinstance(grid, np.ndarray) and grid.dtype == DTYPES["cw_grid"]:
+        return grid.copy()
+    if not isinstance(grid, dict):
+        raise TypeError("%s(): grid must be a dict of cw_grid fields such as {'kind': 'uniform', "
+                        "'nx': 24, 'ny': 24}, got %r" % (caller, grid))
+    return GRID.record(grid, caller)

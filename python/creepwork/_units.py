@@ -1,0 +1,65 @@
+"""Warnings for inputs that are valid but implausible for a wheel-rail
+contact: millimetres typed as metres, kN as N, MPa as Pa, per cent as a ratio.
+
+The rules and thresholds are the creepwork CLI's, plausibility_warnings() in
+examples/cli/contact_options.cpp, so every door warns about the same inputs
+(tests/test_units.py runs both on values either side of each threshold).
+The library itself never warns: it works in any consistent units.
+"""
+
+import numpy as np
+
+# (field, condition, what is plausible); conditions take a numpy array (SI)
+# and the flexibility mode (CW_FLEX_FROM_MATERIAL = 0 or CW_FLEX_GIVEN = 1).
+_SEMI_AXIS_HIGH = "semi-axes are 1-20 mm (were millimetres typed as metres?)"
+_SEMI_AXIS_LOW = "semi-axes are 1-20 mm, not below 0.1 mm"
+_FLEX = "Kalker's flexibilities of steel contacts are ~5e-14 m/Pa (mm^3/N are 1e-9 m^3/N)"
+_CREEPAGE = "creepages are ratios, usually below 0.02 (a per cent typed as a ratio?)"
+
+_RULES = [
+    ("a", "m", lambda v, flex: v > 0.1, _SEMI_AXIS_HIGH),
+    ("a", "m", lambda v, flex: v < 1e-4, _SEMI_AXIS_LOW),
+    ("b", "m", lambda v, flex: v > 0.1, _SEMI_AXIS_HIGH),
+    ("b", "m", lambda v, flex: v < 1e-4, _SEMI_AXIS_LOW),
+    ("normal_force", "N", lambda v, flex: v > 1e7, "wheel loads are below 1 MN (kN typed as N?)"),
+    ("normal_force", "N", lambda v, flex: (v > 0.0) & (v < 100.0),
+     "wheel loads are 1-500 kN (kN typed where N are read?)"),
+    ("mu", "", lambda v, flex: v > 1.5, "dry steel on steel is 0.1-0.6"),
+    ("G", "Pa", lambda v, flex: (flex == 0) & (v < 1e6),
+     "steel is 8.2e10 Pa (a modulus in MPa or N/mm^2 typed as Pa?)"),
+    ("G", "Pa", lambda v, flex: (flex == 0) & (v > 1e12),
+     "steel is 8.2e10 Pa, no solid exceeds 1e12 Pa"),
+    ("L1", "m/Pa", lambda v, flex: (flex != 0) & ((v > 1e-10) | (v < 1e-18)), _FLEX),
+    ("L2", "m/Pa", lambda v, flex: (flex != 0) & ((v > 1e-10) | (v < 1e-18)), _FLEX),
+    ("L3", "m/Pa", lambda v, flex: (flex != 0) & ((v > 1e-10) | (v < 1e-18)), _FLEX),
+    ("xi_x", "", lambda v, flex: np.abs(v) > 0.5, _CREEPAGE),
+    ("xi_y", "", lambda v, flex: np.abs(v) > 0.5, _CREEPAGE),
+    ("phi", "1/m", lambda v, flex: np.abs(v) > 50.0,
+     "spin of wheel-rail contacts stays below ~20 1/m (1/mm typed as 1/m?)"),
+]
+
+# The keyword a user types for a cw_params field, where it differs.
+_KEYWORD = {"normal_force": "N"}
+
+#: The fields the rules read.
+FIELDS = frozenset(rule[0] for rule in _RULES) | {"flexibility"}
+
+
+def warnings_for(params):
+    """Messages for the implausible values of params, a numpy record or
+    structured array of cw_params (every element checked; one message per
+    rule, with how many elements break it)."""
+    flex = np.asarray(params["flexibility"])
+    out = []
+    for field, unit, bad, why in _RULES:
+        values = np.asarray(params[field])
+        mask = np.asarray(bad(values, flex))
+        if not mask.any():
+            continue
+        first = values[mask].flat[0] if values.ndim else values
+        count = int(np.count_nonzero(mask))
+        where = "" if values.ndim == 0 or values.size == 1 else \
+            " (%d of %d contacts)" % (count, values.size)
+        out.append("%s = %.10g%s%s is implausible for a wheel-rail contact: %s"
+                   % (_KEYWORD.get(field, field), first, " " + unit if unit else "", where, why))
+    return out

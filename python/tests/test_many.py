@@ -1,0 +1,103 @@
+"""solve_many: one C batch call for many contacts. Its totals are bitwise
+those of solve() one by one (the batch's promise, and the keyword
+broadcasting checked element by element); a bad contact among 10^4 gets its
+own status and message while the others are solved."""
+
+import struct
+
+import numpy as np
+import pytest
+
+import creepwork
+
+BASE = dict(a=7e-3, b=5e-3, N=100e3)
+
+
+def same(a, b):
+    return struct.pack("<d", float(a)) == struct.pack("<d", float(b))
+
+
+def test_one_bad_contact_among_ten_thousand():
+    n, bad = 10_000, 6_789
+    rng = np.random.default_rng(2024)
+    xi_x = rng.uniform(-3e-3, 3e-3, n)
+    xi_y = rng.uniform(-3e-3, 3e-3, n)
+    phi = rng.uniform(-2.0, 2.0, n)
+    nu = np.full(n, 0.28)
+    nu[bad] = 0.6
+    out = creepwork.solve_many(**BASE, xi_x=xi_x, xi_y=xi_y, phi=phi, nu=nu)
+    assert out.shape == (n,) and len(out) == n
+    assert out.status[bad] == creepwork.CW_ERR_INVALID_INPUT
+    assert np.count_nonzero(out.status) == 1 and out.ok.sum() == n - 1
+    assert list(out.messages) == [(bad,)]
+    assert "nu" in out.messages[(bad,)] and "0.5" in out.messages[(bad,)]
+    assert np.isnan(out.Fx[bad]) and np.isnan(out.W_macro[bad])
+    errors = out.errors()
+    assert len(errors) == 1 and isinstance(errors[0][1], creepwork.InvalidInputError)
+    with pytest.raises(creepwork.InvalidInputError, match="contact \\(6789,\\): nu"):
+        out.raise_first()
+    # Contacts on either side of the bad one, and a sample, as solve() gives them.
+    for k in [0, bad - 1, bad + 1, n - 1] + list(rng.integers(0, n, 16)):
+        if k == bad:
+            continue
+        r = creepwork.solve(**BASE, xi_x=xi_x[k], xi_y=xi_y[k], phi=phi[k], fields=False)
+        for name in ("Fx", "Fy", "Mz", "W_macro", "adhesion_fraction"):
+            assert same(getattr(out, name)[k], getattr(r, name)), (k, name)
+
+
+def test_broadcasting_shapes_and_values():
+    xi_x = np.linspace(-2e-3, 2e-3, 3).reshape(3, 1)
+    xi_y = np.array([0.0, 1e-3, -1e-3, 2e-3])
+    out = creepwork.solve_many(**BASE, xi_x=xi_x, xi_y=xi_y, phi=0.3, model="calibrated")
+    assert out.Fx.shape == out.status.shape == (3, 4)
+    for i in range(3):
+        for j in range(4):
+            r = creepwork.solve(**BASE, xi_x=xi_x[i, 0], xi_y=xi_y[j], phi=0.3,
+                                model="calibrated", fields=False)
+            assert same(out.Fx[i, j], r.Fx) and same(out.Mz[i, j], r.Mz)
+
+
+def test_threads_do_not_change_a_bit():
+    xi = np.linspace(-4e-3, 4e-3, 301)
+    one = creepwork.solve_many(**BASE, xi_x=xi, xi_y=xi[::-1], phi=0.7, threads=1)
+    two = creepwork.solve_many(**BASE, xi_x=xi, xi_y=xi[::-1], phi=0.7, threads=2)
+    assert one.results.tobytes() == two.results.tobytes()
+
+
+def test_full_mode_and_exact_model_cold():
+    xi = np.array([5e-4, 1e-3, 2e-3])
+    out = creepwork.solve_many(**BASE, xi_x=xi, model="exact", full=True)
+    assert out.ok.all()
+    for k in range(3):
+        # The batch solves the exact model cold: as solve() with warm_start 0.
+        r = creepwork.solve(**BASE, xi_x=xi[k], model="exact", warm_start=0)
+        assert same(out.Fx[k], r.Fx) and same(out.K[k], r.K) and same(out.W_micro_paper[k],
+                                                                      r.W_micro_paper)
+    forces = creepwork.solve_many(**BASE, xi_x=xi)
+    assert np.all(forces.K == 0.0)  # (FULL) totals need full=True
+
+
+def test_params_array_and_enumeration_names():
+    p = np.empty(4, creepwork.DTYPES["cw_params"])
+    p[...] = creepwork.params(**BASE, xi_y=1e-3)
+    p["xi_x"] = [0.0, 1e-3, 2e-3, 3e-3]
+    model = np.array(["fastsim", "calibrated", "fastsim", "calibrated"])
+    out = creepwork.solve_many(p, model=model)
+    assert out.params["model"].tolist() == [0, 2, 0, 2]
+    for k in range(4):
+        r = creepwork.solve(**BASE, xi_y=1e-3, xi_x=p["xi_x"][k], model=str(model[k]),
+                            fields=False)
+        assert same(out.Fy[k], r.Fy)
+    with pytest.raises(creepwork.UnknownOptionError, match="fastsimm"):
+        creepwork.solve_many(p, model=np.array(["fastsim", "fastsimm", "exact", "exact"]))
+
+
+def test_batch_reuse_and_empty():
+    with creepwork.Batch(threads=2) as batch:
+        a = batch.solve(**BASE, xi_x=np.array([1e-3, 2e-3]))
+        b = batch.solve(**BASE, xi_x=np.array([1e-3, 2e-3]))
+        assert a.results.tobytes() == b.results.tobytes()
+        empty = batch.solve(**BASE, xi_x=np.array([]))
+        assert empty.Fx.shape == (0,)
+    with pytest.raises(ValueError, match="closed"):
+        batch.solve(**BASE)
