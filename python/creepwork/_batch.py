@@ -13,7 +13,7 @@ import ctypes
 import numpy as np
 
 from . import _errors, _units
-from ._library import CONSTANTS, DTYPES, address, defaults, lib
+from ._library import CONSTANTS, DTYPES, address, defaults, filled, lib
 from ._params import PARAMS, grid_record
 from ._solver import Solver, _grid_for
 
@@ -131,13 +131,15 @@ class Batch:
 
     def _solve(self, params_in, keywords, full, warn, caller, stacklevel):
         handle = self._live()
-        recs = _records(params_in, keywords, caller)
+        recs, converted = _records(params_in, keywords, caller)
         if warn:
-            _errors.warn_units(_units.warnings_for(recs), stacklevel)
+            # The keyword values as given (not broadcast: fewer to check), or
+            # every contact when they come in a params array.
+            checked = recs if params_in is not None else converted
+            _errors.warn_units(_units.warnings_for(checked), stacklevel)
         flat = recs.reshape(-1)
         count = flat.size
-        results = np.empty(count, DTYPES["cw_result"])
-        results[...] = defaults("cw_result")
+        results = filled("cw_result", count)
         status = np.zeros(count, np.intc)
         mode = CONSTANTS["CW_SOLVE_FULL"] if full else CONSTANTS["CW_SOLVE_FORCES"]
         if count:
@@ -172,7 +174,8 @@ class Batch:
 
 def _records(params_in, keywords, caller):
     """The cw_params structured array of the broadcast shape of params_in
-    (None or a structured array) and the keyword values."""
+    (None or a structured array) and the keyword values; and those values
+    as numbers (enumeration names mapped), by field."""
     if params_in is None:
         base = defaults("cw_params")
     elif isinstance(params_in, np.ndarray) and params_in.dtype == DTYPES["cw_params"]:
@@ -188,11 +191,14 @@ def _records(params_in, keywords, caller):
                             "params" % (caller, field))
         converted[field] = PARAMS.convert(field, value)
     shape = np.broadcast_shapes(base.shape, *(np.shape(v) for v in converted.values()))
-    recs = np.empty(shape, DTYPES["cw_params"])
-    recs[...] = base
+    if params_in is None:
+        recs = filled("cw_params", shape)
+    else:
+        recs = np.empty(shape, DTYPES["cw_params"])
+        recs[...] = base
     for field, value in converted.items():
         recs[field] = value
-    return recs
+    return recs, converted
 
 
 def solve_many(params=None, *, grid=None, full=False, threads=0, warn=True, **keywords):

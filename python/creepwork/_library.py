@@ -146,6 +146,16 @@ def defaults(struct):
     return _DEFAULTS[struct]
 
 
+def filled(struct, shape):
+    """An array of shape whose every element is the _init function's record
+    (copied as bytes: ten times faster than a structured assignment)."""
+    out = np.empty(shape, DTYPES[struct])
+    raw = np.frombuffer(defaults(struct).tobytes(), np.uint8)
+    out.reshape(-1).view(np.uint8).reshape(-1, raw.size)[...] = raw
+    return out
+
+
 def address(array):
-    """Address of a numpy array's first element."""
-    return array.__array_interface__["data"][0]
+    """Address of a numpy array's first element (ndarray.ctypes.data: fast;
+    __array_interface__ builds a structured dtype's description first)."""
+    return array.ctypes.data

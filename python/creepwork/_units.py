@@ -9,8 +9,9 @@ The library itself never warns: it works in any consistent units.
 
 import numpy as np
 
-# (field, condition, what is plausible); conditions take a numpy array (SI)
-# and the flexibility mode (CW_FLEX_FROM_MATERIAL = 0 or CW_FLEX_GIVEN = 1).
+# (field, unit, condition, what is plausible); conditions take a number or a
+# numpy array (SI) and the flexibility mode (CW_FLEX_FROM_MATERIAL = 0 or
+# CW_FLEX_GIVEN = 1), so only operators both understand (& | abs).
 _SEMI_AXIS_HIGH = "semi-axes are 1-20 mm (were millimetres typed as metres?)"
 _SEMI_AXIS_LOW = "semi-axes are 1-20 mm, not below 0.1 mm"
 _FLEX = "Kalker's flexibilities of steel contacts are ~5e-14 m/Pa (mm^3/N are 1e-9 m^3/N)"
@@ -32,9 +33,9 @@ _RULES = [
     ("L1", "m/Pa", lambda v, flex: (flex != 0) & ((v > 1e-10) | (v < 1e-18)), _FLEX),
     ("L2", "m/Pa", lambda v, flex: (flex != 0) & ((v > 1e-10) | (v < 1e-18)), _FLEX),
     ("L3", "m/Pa", lambda v, flex: (flex != 0) & ((v > 1e-10) | (v < 1e-18)), _FLEX),
-    ("xi_x", "", lambda v, flex: np.abs(v) > 0.5, _CREEPAGE),
-    ("xi_y", "", lambda v, flex: np.abs(v) > 0.5, _CREEPAGE),
-    ("phi", "1/m", lambda v, flex: np.abs(v) > 50.0,
+    ("xi_x", "", lambda v, flex: abs(v) > 0.5, _CREEPAGE),
+    ("xi_y", "", lambda v, flex: abs(v) > 0.5, _CREEPAGE),
+    ("phi", "1/m", lambda v, flex: abs(v) > 50.0,
      "spin of wheel-rail contacts stays below ~20 1/m (1/mm typed as 1/m?)"),
 ]
 
@@ -45,21 +46,41 @@ _KEYWORD = {"normal_force": "N"}
 FIELDS = frozenset(rule[0] for rule in _RULES) | {"flexibility"}
 
 
-def warnings_for(params):
-    """Messages for the implausible values of params, a numpy record or
-    structured array of cw_params (every element checked; one message per
-    rule, with how many elements break it)."""
-    flex = np.asarray(params["flexibility"])
+def warnings_for(values):
+    """Messages for the implausible values among values: a dict field ->
+    number (one contact) or numpy array (many), or a cw_params record or
+    structured array. Fields absent from a dict are not checked (the
+    library's defaults are plausible); "flexibility" decides which of G and
+    L1..L3 is read (absent: from material). One message per rule, with how
+    many values of an array break it."""
+    flex = values["flexibility"] if _has(values, "flexibility") else 0
     out = []
     for field, unit, bad, why in _RULES:
-        values = np.asarray(params[field])
-        mask = np.asarray(bad(values, flex))
-        if not mask.any():
+        if not _has(values, field):
             continue
-        first = values[mask].flat[0] if values.ndim else values
-        count = int(np.count_nonzero(mask))
-        where = "" if values.ndim == 0 or values.size == 1 else \
-            " (%d of %d contacts)" % (count, values.size)
-        out.append("%s = %.10g%s%s is implausible for a wheel-rail contact: %s"
-                   % (_KEYWORD.get(field, field), first, " " + unit if unit else "", where, why))
+        v = values[field]
+        if np.ndim(v) == 0 and np.ndim(flex) == 0:
+            # One value: plain Python numbers, fifty times faster than numpy's.
+            v = float(v)
+            if bad(v, int(flex)):
+                out.append(_message(field, unit, v, "", why))
+            continue
+        v = np.asarray(v)
+        mask = np.asarray(bad(v, np.asarray(flex)))
+        if mask.any():
+            first = np.broadcast_to(v, mask.shape)[mask].flat[0]
+            where = " (%d of %d values)" % (np.count_nonzero(mask), mask.size) \
+                if mask.size > 1 else ""
+            out.append(_message(field, unit, first, where, why))
     return out
+
+
+def _has(values, field):
+    if isinstance(values, dict):
+        return field in values
+    return field in values.dtype.names
+
+
+def _message(field, unit, value, where, why):
+    return "%s = %.10g%s%s is implausible for a wheel-rail contact: %s" % (
+        _KEYWORD.get(field, field), value, " " + unit if unit else "", where, why)

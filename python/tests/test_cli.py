@@ -9,10 +9,8 @@ creepwork._params.exact_default_grid, is checked by the exact cases)."""
 
 import csv
 import json
-import os
 import struct
 
-import numpy as np
 import pytest
 
 import creepwork

@@ -5,7 +5,6 @@ the Jacobian against central differences, params records reused."""
 import struct
 
 import numpy as np
-import pytest
 
 import creepwork
 
