@@ -34,6 +34,7 @@ from ._solver import (FIELDS, JACOBIAN_COLUMNS, JACOBIAN_ROWS, Profile, Result, 
 from ._batch import Batch, ManyResult, solve_many
 from ._wear import (DEPTH_KINDS, WEAR_FIELDS, Accumulator, Strips, Wear, WearProfile,
                     WearResult, wear_profile_update)
+from . import plot
 from ._helpers import (Flexibilities, Hertz, KalkerCoefficients, fastsim_normalised, hertz,
                        kalker_coefficients, kalker_flexibilities, status_string, version,
                        version_number)

@@ -55,10 +55,12 @@ class Result:
     adhesion, 2 slip); profile, a Profile(y, w, parabola) per strip. The
     same arrays are in the dict fields, the totals in the dict totals.
     jacobian: a (4, 4) array after jacobian(), rows JACOBIAN_ROWS, columns
-    JACOBIAN_COLUMNS.
+    JACOBIAN_COLUMNS. params: the cw_params record solved; grid: the grid
+    (a dict of cw_grid fields).
     """
 
-    def __init__(self, totals, fields=None, state=None, profile=None, jacobian=None):
+    def __init__(self, totals, fields=None, state=None, profile=None, jacobian=None,
+                 params=None, grid=None):
         self.__dict__.update(totals)
         self.totals = totals
         self.fields = fields or {}
@@ -66,6 +68,8 @@ class Result:
         self.state = state
         self.profile = profile
         self.jacobian = jacobian
+        self.params = params
+        self.grid = grid
 
     def __repr__(self):
         shape = ", fields %d x %d" % self.state.shape if self.state is not None else ""
@@ -218,8 +222,9 @@ class Solver:
                                                   jacobian.size)
         self._check(status)
         totals = dict(zip(_RESULT_NAMES, self._result.item()[1:]))
+        solved = rec.copy() if rec is params_in else rec
         if not fields:
-            return Result(totals, jacobian=jacobian)
+            return Result(totals, jacobian=jacobian, params=solved, grid=self.grid)
         # One block for every field: one address to look up, each field a view.
         block = np.empty((len(FIELDS), self.ny, self.nx))
         n = self.nx * self.ny
@@ -228,7 +233,7 @@ class Solver:
         for k, (name, field_id) in enumerate(FIELDS.items()):
             self._check(lib.cw_solver_get_field(handle, field_id, base + 8 * n * k, n))
             out[name] = block[k]
-        return Result(totals, out, self.state(), self.profile(), jacobian)
+        return Result(totals, out, self.state(), self.profile(), jacobian, solved, self.grid)
 
     def result(self):
         """The totals of the last successful solve, as a Result without fields."""
