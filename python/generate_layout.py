@@ -340,7 +340,8 @@ C_KIND = {"double": "DOUBLE", "float": "FLOAT", "int": "INT", "unsigned": "UNSIG
 
 def c_fields_source(layout):
     """X(struct, field, kind, count) per field; E(struct, field, "name", value) per
-    enumeration member. kind is CW_KIND_<C type> or CW_KIND_POINTER."""
+    enumeration member; C(name) per constant. kind is CW_KIND_<C type> or
+    CW_KIND_POINTER."""
     out = ["/* Generated from %s by python/generate_layout.py: do not edit. */" % layout["header"],
            "#ifndef CREEPWORK_FIELDS_H", "#define CREEPWORK_FIELDS_H", ""]
     for struct, fields in layout["structs"].items():
@@ -354,6 +355,8 @@ def c_fields_source(layout):
         struct, field = key.split(".")
         for name, value in members.items():
             out.append("    E(%s, %s, \"%s\", %r) \\" % (struct, field, name, value))
+    out += ["", "/* C(CW_NAME) per #define constant and status code. */", "#define CW_CONSTANTS(C) \\"]
+    out += ["    C(%s) \\" % name for name in layout["constants"]]
     out += ["", "#endif", ""]
     return "\n".join(out)
 
@@ -372,9 +375,12 @@ def probe_source(layout):
 
 
 def write_if_changed(path, text):
+    """Writes text to path unless it holds it already; then only touches it
+    (the build compares times: the output must be newer than the header)."""
     try:
         with open(path, encoding="utf-8") as f:
             if f.read() == text:
+                os.utime(path)
                 return
     except OSError:
         pass
