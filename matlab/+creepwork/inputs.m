@@ -1,0 +1,49 @@
+function [p, opt] = inputs(varargin)
+%INPUTS  The inputs of creepwork.solve, solve_many, jacobian and Solver methods.
+%   [P, OPT] = creepwork.inputs(...) splits the arguments into the contact's
+%   parameters P (a struct of cw_params fields: a, b, N or normal_force, mu,
+%   G, nu, xi_x, xi_y, phi, model, ...) and the options OPT (grid, fields,
+%   full, threads). The arguments are an optional struct of parameters
+%   followed by name-value pairs, which override it. Used by the other
+%   functions of the package; users call those.
+%
+%   Without a 'grid', the exact model gets the creepwork CLI's grid
+%   (examples/cli/contact_options.hpp, kExactBoxScale): uniform, 24 x 24
+%   elements over 1.2 times the semi-axes (20 across the ellipse, two guard
+%   cells on each side); the other models the library's (Kalker's strips,
+%   20 x 20).
+  p = struct();
+  first = 1;
+  if nargin >= 1 && isstruct(varargin{1})
+    p = varargin{1};
+    first = 2;
+  end
+  opt = struct('grid', [], 'fields', true, 'full', false, 'threads', 0);
+  rest = varargin(first:end);
+  if mod(numel(rest), 2) ~= 0
+    error('creepwork:usage', 'arguments after the struct come in name-value pairs');
+  end
+  for k = 1:2:numel(rest)
+    name = rest{k};
+    if ~ischar(name)
+      error('creepwork:usage', 'argument %d: expected a parameter name', first + k - 1);
+    end
+    if isfield(opt, name)
+      opt.(name) = rest{k + 1};
+    else
+      p.(name) = rest{k + 1};
+    end
+  end
+  if isempty(opt.grid) && isfield(p, 'model') && is_exact(p.model)
+    opt.grid = struct('kind', 'uniform', 'nx', 24, 'ny', 24, 'box_scale', 1.2);
+  end
+end
+
+function yes = is_exact(model)
+  if ischar(model)
+    yes = strcmp(model, 'exact');
+  else
+    c = creepwork.constants();
+    yes = ~isempty(model) && all(model(:) == c.CW_MODEL_EXACT);
+  end
+end

@@ -1,0 +1,671 @@
+/* MEX gateway of creepwork for MATLAB and GNU Octave: one function,
+ *
+ *   varargout = creepwork_mex(command, ...)
+ *
+ * called by the m-files of the package folder +creepwork, which document
+ * the commands for users (help creepwork.solve, ...). It converts MATLAB
+ * structs to the C structs and back by the field tables of
+ * creepwork_fields.h, generated from creepwork.h (python/generate_layout.py),
+ * so a field appended to the header is an input or output here after the
+ * next build; offsets come from the C compiler (offsetof).
+ *
+ * Arrays: a per-element field is an nx-by-ny matrix, element (i, j) at
+ * f(i+1, j+1), i along x: MATLAB's column-major order is the library's
+ * [i + j*nx], so the library writes straight into the matrix.
+ *
+ * Errors: mexErrMsgIdAndTxt with the identifier creepwork:<CW_ERR_ name> and
+ * the library's message naming the input. Implausible units warn with the
+ * identifier creepwork:implausibleUnits, with the CLI's thresholds
+ * (examples/cli/contact_options.cpp, plausibility_warnings).
+ *
+ * The same source builds as an Octave MEX (mkoctfile --mex) and a MATLAB
+ * MEX (mex); it uses only the MEX API both provide. */
+#include <math.h>
+#include <stddef.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "mex.h"
+
+#include <creepwork/creepwork.h>
+
+#include "creepwork_fields.h"
+
+enum { MESSAGE_LEN = 512, MAX_SOLVERS = 256 };
+
+/* ------------------------------------------------------------ field tables */
+
+enum kind { K_DOUBLE, K_FLOAT, K_INT, K_UNSIGNED, K_SIZE_T, K_INT32, K_UINT32, K_INT64, K_UINT64,
+            K_CHAR, K_POINTER };
+#define CW_KIND_DOUBLE K_DOUBLE
+#define CW_KIND_FLOAT K_FLOAT
+#define CW_KIND_INT K_INT
+#define CW_KIND_UNSIGNED K_UNSIGNED
+#define CW_KIND_SIZE_T K_SIZE_T
+#define CW_KIND_INT32 K_INT32
+#define CW_KIND_UINT32 K_UINT32
+#define CW_KIND_INT64 K_INT64
+#define CW_KIND_UINT64 K_UINT64
+#define CW_KIND_CHAR K_CHAR
+#define CW_KIND_POINTER K_POINTER
+
+typedef struct {
+    const char* name;
+    size_t offset;
+    enum kind kind;
+    int count;
+} field_info;
+
+typedef struct {
+    const char* struct_name;
+    const field_info* fields;
+    size_t n_fields;
+} struct_info;
+
+#define FIELD_ENTRY(s, f, k, n) {#f, offsetof(s, f), k, n},
+static const field_info params_fields[] = {CW_FIELDS_cw_params(FIELD_ENTRY)};
+static const field_info grid_fields[] = {CW_FIELDS_cw_grid(FIELD_ENTRY)};
+static const field_info result_fields[] = {CW_FIELDS_cw_result(FIELD_ENTRY)};
+#undef FIELD_ENTRY
+#define COUNT(a) (sizeof(a) / sizeof((a)[0]))
+static const struct_info PARAMS = {"cw_params", params_fields, COUNT(params_fields)};
+static const struct_info GRID = {"cw_grid", grid_fields, COUNT(grid_fields)};
+static const struct_info RESULT = {"cw_result", result_fields, COUNT(result_fields)};
+
+typedef struct {
+    const char* struct_name;
+    const char* field;
+    const char* name;
+    double value;
+} enum_info;
+#define ENUM_ENTRY(s, f, n, v) {#s, #f, n, v},
+static const enum_info enums[] = {CW_ENUMS(ENUM_ENTRY)};
+#undef ENUM_ENTRY
+
+typedef struct {
+    const char* name;
+    double value;
+} constant_info;
+#define CONSTANT_ENTRY(c) {#c, (double)(c)},
+static const constant_info constants[] = {CW_CONSTANTS(CONSTANT_ENTRY)};
+#undef CONSTANT_ENTRY
+
+#define STATUS_ENTRY(name, value, message) {#name, value},
+static const struct {
+    const char* name;
+    int value;
+} statuses[] = {CW_STATUS_LIST(STATUS_ENTRY)};
+#undef STATUS_ENTRY
+
+/* ----------------------------------------------------------------- errors */
+
+static void fail_status(int status, const char* detail)
+{
+    char id[80] = "creepwork:unknownStatus";
+    for (size_t k = 0; k < COUNT(statuses); ++k)
+        if (statuses[k].value == status) snprintf(id, sizeof id, "creepwork:%s", statuses[k].name);
+    mexErrMsgIdAndTxt(id, "%s", detail && *detail ? detail : cw_status_string(status));
+}
+
+#define FAIL(id, ...) mexErrMsgIdAndTxt("creepwork:" id, __VA_ARGS__)
+
+/* ------------------------------------------------------- MATLAB -> C structs */
+
+static const field_info* find_field(const struct_info* s, const char* name)
+{
+    if (s == &PARAMS && strcmp(name, "N") == 0) name = "normal_force"; /* the load's symbol */
+    for (size_t k = 0; k < s->n_fields; ++k)
+        if (strcmp(s->fields[k].name, name) == 0 && strcmp(name, "struct_size") != 0)
+            return &s->fields[k];
+    return NULL;
+}
+
+static void unknown_field(const struct_info* s, const char* name)
+{
+    char list[1024] = "";
+    for (size_t k = 1; k < s->n_fields; ++k) {
+        strncat(list, s->fields[k].name, sizeof list - strlen(list) - 1);
+        if (k + 1 < s->n_fields) strncat(list, ", ", sizeof list - strlen(list) - 1);
+    }
+    FAIL("unknownField", "'%s' is not a field of %s (%s%s)", name, s->struct_name,
+         s == &PARAMS ? "N, " : "", list);
+}
+
+/* The number an enumeration name stands for, e.g. model 'exact'. */
+static double enum_value(const struct_info* s, const field_info* f, const mxArray* v)
+{
+    char name[64];
+    if (mxGetString(v, name, sizeof name) != 0) name[sizeof name - 1] = '\0';
+    if (strcmp(s->struct_name, "cw_grid") == 0 && strcmp(name, "strips") == 0)
+        strcpy(name, "kalker_strips"); /* the CLI's name */
+    char known[256] = "";
+    for (size_t k = 0; k < COUNT(enums); ++k) {
+        if (strcmp(enums[k].struct_name, s->struct_name) || strcmp(enums[k].field, f->name))
+            continue;
+        if (strcmp(enums[k].name, name) == 0) return enums[k].value;
+        strncat(known, *known ? ", " : "", sizeof known - strlen(known) - 1);
+        strncat(known, enums[k].name, sizeof known - strlen(known) - 1);
+    }
+    mexErrMsgIdAndTxt("creepwork:CW_ERR_UNKNOWN_OPTION", "%s = '%s' is not one of %s", f->name,
+                      name, *known ? known : "(no names: give a number)");
+    return 0.0;
+}
+
+/* Writes value into the struct at f (element k of an array field). */
+static void store(void* base, const field_info* f, double value, int k)
+{
+    char* at = (char*)base + f->offset;
+    if (f->kind != K_DOUBLE && f->kind != K_FLOAT) {
+        if (!(value == floor(value)) || fabs(value) > 9e15)
+            FAIL("notInteger", "%s must be an integer (got %g)", f->name, value);
+    }
+    switch (f->kind) {
+    case K_DOUBLE: ((double*)at)[k] = value; break;
+    case K_FLOAT: ((float*)at)[k] = (float)value; break;
+    case K_INT: ((int*)at)[k] = (int)value; break;
+    case K_UNSIGNED: ((unsigned*)at)[k] = (unsigned)value; break;
+    case K_SIZE_T: ((size_t*)at)[k] = (size_t)value; break;
+    case K_INT32: ((int32_t*)at)[k] = (int32_t)value; break;
+    case K_UINT32: ((uint32_t*)at)[k] = (uint32_t)value; break;
+    case K_INT64: ((int64_t*)at)[k] = (int64_t)value; break;
+    case K_UINT64: ((uint64_t*)at)[k] = (uint64_t)value; break;
+    case K_CHAR: ((char*)at)[k] = (char)value; break;
+    case K_POINTER: break;
+    }
+}
+
+static double load(const void* base, const field_info* f, int k)
+{
+    const char* at = (const char*)base + f->offset;
+    switch (f->kind) {
+    case K_DOUBLE: return ((const double*)at)[k];
+    case K_FLOAT: return ((const float*)at)[k];
+    case K_INT: return ((const int*)at)[k];
+    case K_UNSIGNED: return ((const unsigned*)at)[k];
+    case K_SIZE_T: return (double)((const size_t*)at)[k];
+    case K_INT32: return ((const int32_t*)at)[k];
+    case K_UINT32: return ((const uint32_t*)at)[k];
+    case K_INT64: return (double)((const int64_t*)at)[k];
+    case K_UINT64: return (double)((const uint64_t*)at)[k];
+    case K_CHAR: return ((const char*)at)[k];
+    case K_POINTER: return 0.0;
+    }
+    return 0.0;
+}
+
+/* Element `index` of a MATLAB value given for field f (a scalar stands for
+ * every contact; an array gives one value per contact). */
+static double value_at(const struct_info* s, const field_info* f, const mxArray* v, size_t index)
+{
+    if (mxIsChar(v)) return enum_value(s, f, v);
+    if (!(mxIsNumeric(v) || mxIsLogical(v)) || mxIsComplex(v) || mxIsEmpty(v))
+        FAIL("badValue", "%s must be a real number%s", f->name,
+             mxIsEmpty(v) ? " (got an empty array)" : "");
+    if (mxGetNumberOfElements(v) == 1) return mxGetScalar(v);
+    if (!mxIsDouble(v)) FAIL("badValue", "%s: an array of values must be double", f->name);
+    return mxGetPr(v)[index];
+}
+
+/* The number of contacts a struct of inputs describes: 1, or the number of
+ * elements of its array fields (all the same); dims of the first. */
+static size_t contact_count(const mxArray* in, const mxArray** shape)
+{
+    size_t n = 1;
+    *shape = NULL;
+    if (!in || mxIsEmpty(in)) return 1;
+    for (int k = 0; k < mxGetNumberOfFields(in); ++k) {
+        const mxArray* v = mxGetFieldByNumber(in, 0, k);
+        if (!v || mxIsChar(v)) continue;
+        const size_t m = mxGetNumberOfElements(v);
+        if (m == 1) continue;
+        if (n == 1) {
+            n = m;
+            *shape = v;
+        } else if (m != n) {
+            FAIL("sizeMismatch", "%s has %zu values, another field %zu: array fields must have "
+                 "one value per contact", mxGetFieldNameByNumber(in, k), m, n);
+        }
+    }
+    return n;
+}
+
+/* Fills out (count structs of s's type, each initialised) from in, a 1x1
+ * struct whose fields are scalars or arrays of count values. */
+static void to_structs(const struct_info* s, const mxArray* in, void* out, size_t size,
+                       size_t count)
+{
+    if (!in || mxIsEmpty(in)) return;
+    if (!mxIsStruct(in) || mxGetNumberOfElements(in) != 1)
+        FAIL("badValue", "the %s inputs must be one struct (fields: the C struct's)",
+             s->struct_name);
+    for (int k = 0; k < mxGetNumberOfFields(in); ++k) {
+        const char* name = mxGetFieldNameByNumber(in, k);
+        const field_info* f = find_field(s, name);
+        if (!f) unknown_field(s, name);
+        const mxArray* v = mxGetFieldByNumber(in, 0, k);
+        if (!v) continue;
+        if (f->kind == K_POINTER || f->count > 1) {
+            if (count != 1) FAIL("badValue", "%s: give one value for all contacts", f->name);
+            if (f->kind == K_POINTER) {
+                if (!mxIsDouble(v) || mxIsComplex(v))
+                    FAIL("badValue", "%s must be a real double array", f->name);
+                *(void**)((char*)out + f->offset) = mxGetPr(v);
+                continue;
+            }
+            if (mxGetNumberOfElements(v) != (size_t)f->count || !mxIsDouble(v))
+                FAIL("badValue", "%s must be %d doubles", f->name, f->count);
+            for (int e = 0; e < f->count; ++e) store(out, f, mxGetPr(v)[e], e);
+            continue;
+        }
+        for (size_t c = 0; c < count; ++c) store((char*)out + c * size, f, value_at(s, f, v, c), 0);
+    }
+}
+
+/* --------------------------------------------------------- C -> MATLAB */
+
+static mxArray* shaped(const mxArray* shape, size_t count)
+{
+    if (!shape) return mxCreateDoubleMatrix(count == 1 ? 1 : count, 1, mxREAL);
+    return mxCreateNumericArray(mxGetNumberOfDimensions(shape), mxGetDimensions(shape),
+                                mxDOUBLE_CLASS, mxREAL);
+}
+
+/* A struct of every field of count C structs (scalars, or arrays shaped like shape). */
+static mxArray* from_structs(const struct_info* s, const void* in, size_t size, size_t count,
+                             const mxArray* shape, size_t extra_fields, const char** extra)
+{
+    const char** names = mxMalloc((s->n_fields + extra_fields) * sizeof *names);
+    int n = 0;
+    for (size_t k = 1; k < s->n_fields; ++k) names[n++] = s->fields[k].name;
+    for (size_t k = 0; k < extra_fields; ++k) names[n++] = extra[k];
+    mxArray* out = mxCreateStructMatrix(1, 1, n, names);
+    mxFree(names);
+    for (size_t k = 1; k < s->n_fields; ++k) {
+        const field_info* f = &s->fields[k];
+        mxArray* v;
+        if (f->count > 1) {
+            v = mxCreateDoubleMatrix(1, (size_t)f->count, mxREAL);
+            for (int e = 0; e < f->count; ++e) mxGetPr(v)[e] = load(in, f, e);
+        } else {
+            v = count == 1 ? mxCreateDoubleMatrix(1, 1, mxREAL) : shaped(shape, count);
+            for (size_t c = 0; c < count; ++c) mxGetPr(v)[c] = load((const char*)in + c * size, f, 0);
+        }
+        mxSetField(out, 0, f->name, v);
+    }
+    return out;
+}
+
+/* ------------------------------------------------------- unit plausibility */
+
+/* The CLI's rules (examples/cli/contact_options.cpp, plausibility_warnings):
+ * one warning per rule, with how many contacts break it. */
+typedef struct {
+    const char* field;
+    const char* unit;
+    int (*bad)(double v, int flex);
+    const char* why;
+} unit_rule;
+
+static int too_long(double v, int f) { (void)f; return v > 0.1; }
+static int too_short(double v, int f) { (void)f; return v < 1e-4; }
+static int load_high(double v, int f) { (void)f; return v > 1e7; }
+static int load_low(double v, int f) { (void)f; return v > 0.0 && v < 100.0; }
+static int mu_high(double v, int f) { (void)f; return v > 1.5; }
+static int g_low(double v, int f) { return f == CW_FLEX_FROM_MATERIAL && v < 1e6; }
+static int g_high(double v, int f) { return f == CW_FLEX_FROM_MATERIAL && v > 1e12; }
+static int flex_odd(double v, int f) { return f != CW_FLEX_FROM_MATERIAL && (v > 1e-10 || v < 1e-18); }
+static int creep_high(double v, int f) { (void)f; return fabs(v) > 0.5; }
+static int spin_high(double v, int f) { (void)f; return fabs(v) > 50.0; }
+
+static const char SEMI_HIGH[] = "semi-axes are 1-20 mm (were millimetres typed as metres?)";
+static const char SEMI_LOW[] = "semi-axes are 1-20 mm, not below 0.1 mm";
+static const char FLEX[] =
+    "Kalker's flexibilities of steel contacts are ~5e-14 m/Pa (mm^3/N are 1e-9 m^3/N)";
+static const char CREEP[] = "creepages are ratios, usually below 0.02 (a per cent typed as a ratio?)";
+static const unit_rule unit_rules[] = {
+    {"a", " m", too_long, SEMI_HIGH},
+    {"a", " m", too_short, SEMI_LOW},
+    {"b", " m", too_long, SEMI_HIGH},
+    {"b", " m", too_short, SEMI_LOW},
+    {"normal_force", " N", load_high, "wheel loads are below 1 MN (kN typed as N?)"},
+    {"normal_force", " N", load_low, "wheel loads are 1-500 kN (kN typed where N are read?)"},
+    {"mu", "", mu_high, "dry steel on steel is 0.1-0.6"},
+    {"G", " Pa", g_low, "steel is 8.2e10 Pa (a modulus in MPa or N/mm^2 typed as Pa?)"},
+    {"G", " Pa", g_high, "steel is 8.2e10 Pa, no solid exceeds 1e12 Pa"},
+    {"L1", " m/Pa", flex_odd, FLEX},
+    {"L2", " m/Pa", flex_odd, FLEX},
+    {"L3", " m/Pa", flex_odd, FLEX},
+    {"xi_x", "", creep_high, CREEP},
+    {"xi_y", "", creep_high, CREEP},
+    {"phi", " 1/m", spin_high, "spin of wheel-rail contacts stays below ~20 1/m (1/mm typed as 1/m?)"},
+};
+
+static void warn_units(const cw_params* p, size_t count)
+{
+    const field_info* flex = find_field(&PARAMS, "flexibility");
+    for (size_t r = 0; r < COUNT(unit_rules); ++r) {
+        const field_info* f = find_field(&PARAMS, unit_rules[r].field);
+        size_t bad = 0;
+        double first = 0.0;
+        for (size_t c = 0; c < count; ++c) {
+            const double v = load(&p[c], f, 0);
+            if (unit_rules[r].bad(v, (int)load(&p[c], flex, 0)) && bad++ == 0) first = v;
+        }
+        if (!bad) continue;
+        char where[64] = "";
+        if (count > 1) snprintf(where, sizeof where, " (%zu of %zu contacts)", bad, count);
+        mexWarnMsgIdAndTxt("creepwork:implausibleUnits",
+                           "%s = %.10g%s%s is implausible for a wheel-rail contact: %s",
+                           strcmp(f->name, "normal_force") == 0 ? "N" : f->name, first,
+                           unit_rules[r].unit, where, unit_rules[r].why);
+    }
+}
+
+/* ------------------------------------------------------------- solvers */
+
+static cw_solver* solvers[MAX_SOLVERS]; /* handles of creepwork.Solver objects */
+
+static void destroy_all(void)
+{
+    for (int k = 0; k < MAX_SOLVERS; ++k) {
+        cw_solver_destroy(solvers[k]);
+        solvers[k] = NULL;
+    }
+}
+
+static int solver_id(const mxArray* v)
+{
+    const double id = (v && mxGetNumberOfElements(v) == 1 && mxIsNumeric(v)) ? mxGetScalar(v) : 0;
+    if (!(id >= 1 && id <= MAX_SOLVERS && id == floor(id)) || !solvers[(int)id - 1])
+        FAIL("badHandle", "no such creepwork solver (closed, or not made by creepwork.Solver)");
+    return (int)id - 1;
+}
+
+static cw_solver* make_solver(const mxArray* grid_in)
+{
+    cw_grid grid;
+    cw_grid_init(&grid);
+    to_structs(&GRID, grid_in, &grid, sizeof grid, 1);
+    cw_solver* s = NULL;
+    char message[MESSAGE_LEN] = "";
+    const int status = cw_solver_create(&grid, &s, message, sizeof message);
+    if (status != CW_OK) fail_status(status, message);
+    return s;
+}
+
+static int flag(const mxArray* v)
+{
+    return v && !mxIsEmpty(v) && mxGetScalar(v) != 0.0;
+}
+
+static cw_params params_of(const mxArray* params_in)
+{
+    cw_params p;
+    cw_params_init(&p);
+    to_structs(&PARAMS, params_in, &p, sizeof p, 1);
+    warn_units(&p, 1);
+    return p;
+}
+
+/* One solve of p on s: totals, and with fields the per-element maps,
+ * states and profile; with jacobian the 4 x 4 matrix. On error s is
+ * destroyed first when owned (an error does not return). */
+static mxArray* solve_one(cw_solver* s, int owned, cw_params p, int fields, int jacobian)
+{
+    cw_result r;
+    cw_result_init(&r);
+    double jac[CW_JACOBIAN_LEN];
+    const int mode = fields ? CW_SOLVE_FULL : CW_SOLVE_FORCES;
+    int status = jacobian ? cw_solver_solve_jacobian(s, &p, mode, &r, jac, CW_JACOBIAN_LEN)
+                          : cw_solver_solve(s, &p, mode, &r);
+    if (status != CW_OK) {
+        char message[MESSAGE_LEN];
+        snprintf(message, sizeof message, "%s", cw_solver_last_error(s));
+        if (owned) cw_solver_destroy(s);
+        fail_status(status, message);
+    }
+    static const char* extra_names[] = {"fields", "state", "profile", "jacobian"};
+    mxArray* out = from_structs(&RESULT, &r, sizeof r, 1, NULL, 4, extra_names);
+    if (jacobian) {
+        mxArray* j = mxCreateDoubleMatrix(4, 4, mxREAL);
+        for (int row = 0; row < 4; ++row) /* C row-major -> MATLAB column-major */
+            for (int col = 0; col < 4; ++col) mxGetPr(j)[row + 4 * col] = jac[4 * row + col];
+        mxSetField(out, 0, "jacobian", j);
+    }
+    if (!fields) return out;
+    int nx = 0, ny = 0;
+    cw_solver_grid_size(s, &nx, &ny);
+    const size_t n = (size_t)nx * (size_t)ny;
+    /* The CW_FIELD_* constants of the header, by their lower-case names. */
+    const char* names[64];
+    double ids[64];
+    int nf = 0;
+    char lower[64][48];
+    for (size_t k = 0; k < COUNT(constants) && nf < 64; ++k) {
+        if (strncmp(constants[k].name, "CW_FIELD_", 9) != 0) continue;
+        size_t c = 0;
+        for (const char* t = constants[k].name + 9; *t && c + 1 < sizeof lower[0]; ++t)
+            lower[nf][c++] = (char)(*t >= 'A' && *t <= 'Z' ? *t - 'A' + 'a' : *t);
+        lower[nf][c] = '\0';
+        names[nf] = lower[nf];
+        ids[nf++] = constants[k].value;
+    }
+    mxArray* maps = mxCreateStructMatrix(1, 1, nf, names);
+    for (int k = 0; k < nf; ++k) {
+        mxArray* m = mxCreateDoubleMatrix((size_t)nx, (size_t)ny, mxREAL);
+        status = cw_solver_get_field(s, (int)ids[k], mxGetPr(m), n);
+        if (status != CW_OK) {
+            if (owned) cw_solver_destroy(s);
+            fail_status(status, "reading a field");
+        }
+        mxSetField(maps, 0, names[k], m);
+    }
+    mxSetField(out, 0, "fields", maps);
+    int* state = mxMalloc(n * sizeof *state);
+    status = cw_solver_get_state(s, state, n);
+    mxArray* st = mxCreateDoubleMatrix((size_t)nx, (size_t)ny, mxREAL);
+    for (size_t k = 0; k < n; ++k) mxGetPr(st)[k] = state[k];
+    mxFree(state);
+    mxSetField(out, 0, "state", st);
+    static const char* profile_names[] = {"y", "w", "parabola"};
+    mxArray* prof = mxCreateStructMatrix(1, 1, 3, profile_names);
+    mxArray* y = mxCreateDoubleMatrix((size_t)ny, 1, mxREAL);
+    mxArray* w = mxCreateDoubleMatrix((size_t)ny, 1, mxREAL);
+    mxArray* par = mxCreateDoubleMatrix((size_t)ny, 1, mxREAL);
+    if (status == CW_OK)
+        status = cw_solver_get_profile(s, mxGetPr(y), mxGetPr(w), mxGetPr(par), (size_t)ny);
+    if (status != CW_OK) {
+        if (owned) cw_solver_destroy(s);
+        fail_status(status, "reading the states or the profile");
+    }
+    mxSetField(prof, 0, "y", y);
+    mxSetField(prof, 0, "w", w);
+    mxSetField(prof, 0, "parabola", par);
+    mxSetField(out, 0, "profile", prof);
+    return out;
+}
+
+/* Many contacts in one cw_batch_solve call. */
+static mxArray* solve_many(const mxArray* params_in, const mxArray* grid_in, int full, int threads)
+{
+    const mxArray* shape = NULL;
+    const size_t count = contact_count(params_in, &shape);
+    cw_params* p = mxMalloc(count * sizeof *p);
+    cw_result* r = mxMalloc(count * sizeof *r);
+    int* st = mxMalloc(count * sizeof *st);
+    for (size_t c = 0; c < count; ++c) {
+        cw_params_init(&p[c]);
+        cw_result_init(&r[c]);
+    }
+    to_structs(&PARAMS, params_in, p, sizeof *p, count);
+    warn_units(p, count);
+    cw_grid grid;
+    cw_grid_init(&grid);
+    to_structs(&GRID, grid_in, &grid, sizeof grid, 1);
+    cw_batch* batch = NULL;
+    char message[MESSAGE_LEN] = "";
+    int status = cw_batch_create(&grid, threads, &batch, message, sizeof message);
+    if (status != CW_OK) fail_status(status, message);
+    const int mode = full ? CW_SOLVE_FULL : CW_SOLVE_FORCES;
+    status = cw_batch_solve(batch, count, p, mode, r, st);
+    cw_batch_destroy(batch);
+    static const char* extra_names[] = {"status", "message"};
+    mxArray* out = from_structs(&RESULT, r, sizeof *r, count, shape, 2, extra_names);
+    mxArray* codes = count == 1 ? mxCreateDoubleMatrix(1, 1, mxREAL) : shaped(shape, count);
+    mxArray* messages = mxCreateCellArray(mxGetNumberOfDimensions(codes), mxGetDimensions(codes));
+    /* A failed contact: its own message by solving it again alone (the batch
+     * keeps the first failure's only), and NaN totals. */
+    cw_solver* one = NULL;
+    for (size_t c = 0; c < count; ++c) {
+        mxGetPr(codes)[c] = st[c];
+        const char* text = "";
+        if (st[c] != CW_OK) {
+            if (!one && cw_solver_create(&grid, &one, NULL, 0) != CW_OK) one = NULL;
+            p[c].warm_start = 0;
+            text = one && cw_solver_solve(one, &p[c], mode, NULL) == st[c]
+                       ? cw_solver_last_error(one)
+                       : cw_status_string(st[c]);
+            for (size_t k = 1; k < RESULT.n_fields; ++k)
+                if (RESULT.fields[k].kind == K_DOUBLE && RESULT.fields[k].count <= 1)
+                    mxGetPr(mxGetField(out, 0, RESULT.fields[k].name))[c] = mxGetNaN();
+        }
+        mxSetCell(messages, c, mxCreateString(text));
+    }
+    cw_solver_destroy(one);
+    mxSetField(out, 0, "status", codes);
+    mxSetField(out, 0, "message", messages);
+    mxFree(p);
+    mxFree(r);
+    mxFree(st);
+    (void)status; /* each contact's status is in the output */
+    return out;
+}
+
+/* ------------------------------------------------------------- helpers */
+
+static double scalar(const mxArray* v, const char* name)
+{
+    if (!v || mxGetNumberOfElements(v) != 1 || !(mxIsNumeric(v) || mxIsLogical(v)))
+        FAIL("badValue", "%s must be a real number", name);
+    return mxGetScalar(v);
+}
+
+static mxArray* row(const double* v, int n)
+{
+    mxArray* out = mxCreateDoubleMatrix(1, (size_t)n, mxREAL);
+    memcpy(mxGetPr(out), v, (size_t)n * sizeof *v);
+    return out;
+}
+
+static mxArray* defaults(const char* which)
+{
+    if (strcmp(which, "cw_params") == 0) {
+        cw_params p;
+        cw_params_init(&p);
+        return from_structs(&PARAMS, &p, sizeof p, 1, NULL, 0, NULL);
+    }
+    if (strcmp(which, "cw_grid") == 0) {
+        cw_grid g;
+        cw_grid_init(&g);
+        return from_structs(&GRID, &g, sizeof g, 1, NULL, 0, NULL);
+    }
+    FAIL("badValue", "defaults of cw_params or cw_grid, not '%s'", which);
+    return NULL;
+}
+
+static mxArray* constant_struct(void)
+{
+    const char** names = mxMalloc(COUNT(constants) * sizeof *names);
+    for (size_t k = 0; k < COUNT(constants); ++k) names[k] = constants[k].name;
+    mxArray* out = mxCreateStructMatrix(1, 1, (int)COUNT(constants), names);
+    mxFree(names);
+    for (size_t k = 0; k < COUNT(constants); ++k)
+        mxSetField(out, 0, constants[k].name, mxCreateDoubleScalar(constants[k].value));
+    return out;
+}
+
+/* ------------------------------------------------------------ dispatch */
+
+void mexFunction(int nlhs, mxArray* plhs[], int nrhs, const mxArray* prhs[])
+{
+    static int registered = 0;
+    if (!registered) {
+        mexAtExit(destroy_all);
+        registered = 1;
+    }
+    (void)nlhs;
+    if (nrhs < 1 || !mxIsChar(prhs[0])) FAIL("usage", "creepwork_mex(command, ...)");
+    char command[48];
+    mxGetString(prhs[0], command, sizeof command);
+    const mxArray* a1 = nrhs > 1 ? prhs[1] : NULL;
+    const mxArray* a2 = nrhs > 2 ? prhs[2] : NULL;
+    const mxArray* a3 = nrhs > 3 ? prhs[3] : NULL;
+    const mxArray* a4 = nrhs > 4 ? prhs[4] : NULL;
+    char message[MESSAGE_LEN] = "";
+    int status = CW_OK;
+
+    if (strcmp(command, "solve") == 0) { /* params, grid, fields, jacobian */
+        const cw_params p = params_of(a1); /* errors before anything is made */
+        cw_solver* s = make_solver(a2);
+        plhs[0] = solve_one(s, 1, p, flag(a3), flag(a4));
+        cw_solver_destroy(s);
+    } else if (strcmp(command, "solve_many") == 0) { /* params, grid, full, threads */
+        plhs[0] = solve_many(a1, a2, flag(a3), a4 ? (int)scalar(a4, "threads") : 0);
+    } else if (strcmp(command, "solver_create") == 0) { /* grid -> id */
+        int k = 0;
+        while (k < MAX_SOLVERS && solvers[k]) ++k;
+        if (k == MAX_SOLVERS) FAIL("tooManySolvers", "more than %d solvers open", MAX_SOLVERS);
+        solvers[k] = make_solver(a1);
+        int nx = 0, ny = 0;
+        cw_solver_grid_size(solvers[k], &nx, &ny);
+        plhs[0] = mxCreateDoubleScalar(k + 1);
+        if (nlhs > 1) plhs[1] = mxCreateDoubleScalar(nx);
+        if (nlhs > 2) plhs[2] = mxCreateDoubleScalar(ny);
+    } else if (strcmp(command, "solver_solve") == 0) { /* id, params, fields, jacobian */
+        const int k = solver_id(a1);
+        plhs[0] = solve_one(solvers[k], 0, params_of(a2), flag(a3), flag(a4));
+    } else if (strcmp(command, "solver_destroy") == 0) {
+        const int k = solver_id(a1);
+        cw_solver_destroy(solvers[k]);
+        solvers[k] = NULL;
+    } else if (strcmp(command, "defaults") == 0) {
+        char which[32] = "";
+        if (a1) mxGetString(a1, which, sizeof which);
+        plhs[0] = defaults(which);
+    } else if (strcmp(command, "constants") == 0) {
+        plhs[0] = constant_struct();
+    } else if (strcmp(command, "version") == 0) {
+        plhs[0] = mxCreateString(cw_version_string());
+    } else if (strcmp(command, "status_string") == 0) {
+        plhs[0] = mxCreateString(cw_status_string((int)scalar(a1, "status")));
+    } else if (strcmp(command, "kalker_coefficients") == 0) {
+        double c[4];
+        status = cw_kalker_coefficients(scalar(a1, "a_over_b"), scalar(a2, "nu"), c, message,
+                                        sizeof message);
+        if (status == CW_OK) plhs[0] = row(c, 4);
+    } else if (strcmp(command, "kalker_flexibilities") == 0) {
+        double l[3];
+        status = cw_kalker_flexibilities(scalar(a1, "a"), scalar(a2, "b"), scalar(a3, "G"),
+                                         scalar(a4, "nu"), l, message, sizeof message);
+        if (status == CW_OK) plhs[0] = row(l, 3);
+    } else if (strcmp(command, "hertz") == 0) { /* A, B, N, E_star, as one row */
+        double h[4];
+        if (!a1 || mxGetNumberOfElements(a1) != 4 || !mxIsDouble(a1))
+            FAIL("badValue", "hertz takes [A, B, N, E_star]");
+        const double* v = mxGetPr(a1);
+        status = cw_hertz_solve(v[0], v[1], v[2], v[3], h, message, sizeof message);
+        if (status == CW_OK) plhs[0] = row(h, 4);
+    } else if (strcmp(command, "fastsim_normalised") == 0) { /* [ux uy fx fy mx my tol] */
+        if (!a1 || mxGetNumberOfElements(a1) != 7 || !mxIsDouble(a1))
+            FAIL("badValue", "fastsim_normalised takes [ux, uy, fx, fy, mx, my, tol]");
+        const double* v = mxGetPr(a1);
+        double t[2];
+        status = cw_fastsim_normalised(v[0], v[1], v[2], v[3], (int)v[4], (int)v[5], v[6], &t[0],
+                                       &t[1], message, sizeof message);
+        if (status == CW_OK) plhs[0] = row(t, 2);
+    } else {
+        FAIL("usage", "unknown command '%s'", command);
+    }
+    if (status != CW_OK) fail_status(status, message);
+}
