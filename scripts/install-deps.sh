@@ -4,17 +4,27 @@
 #   install-deps.sh demo   what ./run demo needs: the library, the CLI, gnuplot
 #   install-deps.sh all    everything ./run test needs (default): also
 #                          gfortran, cmocka, clang for fuzzing and TSan,
-#                          valgrind, and Open MPI for creepwork campaign and
-#                          its tests (the demo builds without it)
+#                          valgrind, Open MPI for creepwork campaign and
+#                          its tests (the demo builds without it), numpy,
+#                          pytest, venv and setuptools for the Python
+#                          package and its tests, Octave for the MEX
+#   install-deps.sh python what the Python package needs (doc/python.md)
+#   install-deps.sh octave what the Octave interface needs (doc/octave.md)
 set -euo pipefail
 
 demo=(cmake g++ make libeigen3-dev gnuplot-nox)
+library=(cmake g++ make libeigen3-dev python3)
+python=(python3-numpy)
+octave=(octave liboctave-dev)
 all=("${demo[@]}" gfortran pkg-config libcmocka-dev clang-14 libclang-rt-14-dev libomp-14-dev
-     valgrind libopenmpi-dev openmpi-bin)
+     valgrind libopenmpi-dev openmpi-bin "${python[@]}" python3-pytest python3-venv
+     python3-setuptools "${octave[@]}")
 case "${1:-all}" in
   demo) packages=("${demo[@]}") ;;
   all) packages=("${all[@]}") ;;
-  *) echo "usage: install-deps.sh [demo|all]" >&2; exit 2 ;;
+  python) packages=("${library[@]}" "${python[@]}") ;;
+  octave) packages=("${library[@]}" "${octave[@]}") ;;
+  *) echo "usage: install-deps.sh [demo|all|python|octave]" >&2; exit 2 ;;
 esac
 
 missing=()
