@@ -65,7 +65,10 @@ build build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo "-DCREEPWORK_SANITIZE=address
 # verify_asan_link_order=0: programs that load libcreepwork.so without being
 # built with ASan (the install-and-consume test) may still run.
 # CREEPWORK_ASAN_EXCLUDE (a CTest label regex) can leave out more tests that
-# cannot run under ASan; none needs it today.
+# cannot run under ASan; none needs it today. The Python and Octave tests
+# (labels python, octave) run here too: CTest preloads libasan and the C++
+# runtime into the uninstrumented python3 and octave, with LeakSanitizer off
+# in them (python/CMakeLists.txt, creepwork_interpreter_tests).
 # The recipes of README.md and doc/ (label "recipes") build their own plain
 # library from a fresh copy: under this stage they would only repeat the
 # Release stage's run. The documentation's checks (label "docs") compare
