@@ -9,13 +9,14 @@ are solved again alone to get each one's message.
 """
 
 import ctypes
+from typing import Any, List, Optional, Tuple, Union
 
 import numpy as np
 
 from . import _errors, _units
 from ._library import CONSTANTS, DTYPES, address, defaults, filled, lib
 from ._params import PARAMS, grid_record
-from ._solver import Solver, _grid_for
+from ._solver import GridLike, Solver, _grid_for
 
 _MESSAGE_LEN = 512
 _FLOAT_RESULTS = [n for n in DTYPES["cw_result"].names[1:]
@@ -48,12 +49,12 @@ class ManyResult:
         for name in results.dtype.names[1:]:
             setattr(self, name, results[name])
 
-    def errors(self):
+    def errors(self) -> List[Tuple[Tuple[int, ...], _errors.Error]]:
         """[(index, creepwork.Error), ...] for the failed contacts, in order."""
         return [(i, _errors.error_for(int(self.status[i]), self.messages[i]))
                 for i in sorted(self.messages)]
 
-    def raise_first(self):
+    def raise_first(self) -> None:
         """Raises the first failed contact's exception (with its index); no-op
         when every contact was solved."""
         errors = self.errors()
@@ -81,7 +82,7 @@ class Batch:
     (warm_start is ignored). One Batch must be used by one thread at a time.
     """
 
-    def __init__(self, grid=None, threads=0):
+    def __init__(self, grid: GridLike = None, threads: int = 0) -> None:
         self._handle = ctypes.c_void_p()
         rec = grid_record(grid, "Batch")
         message = ctypes.create_string_buffer(_MESSAGE_LEN)
@@ -91,7 +92,7 @@ class Batch:
         self._grid = rec
         self._solver = None  # made on the first failure, to name its input
 
-    def close(self):
+    def close(self) -> None:
         """Frees the handle; idempotent."""
         if self._solver is not None:
             self._solver.close()
@@ -110,7 +111,7 @@ class Batch:
         if getattr(self, "_handle", None):
             self.close()
 
-    def prepare(self, model):
+    def prepare(self, model: Union[str, int]) -> None:
         """cw_batch_prepare: makes a model's memory for every thread now."""
         status = lib.cw_batch_prepare(self._live(), int(PARAMS.convert("model", model)))
         _errors.check(status, lambda: lib.cw_batch_last_error(self._handle))
@@ -120,7 +121,8 @@ class Batch:
             raise ValueError("creepwork.Batch: the batch is closed")
         return self._handle
 
-    def solve(self, params=None, *, full=False, warn=True, **keywords):
+    def solve(self, params: Optional[np.ndarray] = None, *, full: bool = False, warn: bool = True,
+              **keywords: Any) -> ManyResult:
         """Solves every contact the keywords describe (solve()'s keywords, each
         a scalar or an array; numpy broadcasting) and returns a ManyResult.
         params: a cw_params structured array (any shape) the keywords
@@ -201,7 +203,8 @@ def _records(params_in, keywords, caller):
     return recs, converted
 
 
-def solve_many(params=None, *, grid=None, full=False, threads=0, warn=True, **keywords):
+def solve_many(params: Optional[np.ndarray] = None, *, grid: GridLike = None, full: bool = False,
+               threads: int = 0, warn: bool = True, **keywords: Any) -> ManyResult:
     """Solves many contacts in one call to the C batch API (cw_batch_solve),
     on threads (threads <= 0: every core), with the GIL released, and returns
     a creepwork.ManyResult of arrays (Fx, Fy, Mz, W_macro, ..., status).

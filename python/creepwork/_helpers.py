@@ -1,6 +1,7 @@
 """Linear theory and Hertz helpers, Kalker's normalised FASTSIM, versions."""
 
 import ctypes
+from typing import Tuple
 from collections import namedtuple
 
 import numpy as np
@@ -22,7 +23,7 @@ def _call(function, *args):
     _errors.check(function(*args, message, _MESSAGE_LEN), lambda: message.value)
 
 
-def kalker_coefficients(a_over_b, nu):
+def kalker_coefficients(a_over_b: float, nu: float) -> "KalkerCoefficients":
     """Kalker's creepage coefficients C11, C22, C23, C33 [-] for the semi-axis
     ratio a/b in [1e-3, 1e3] and Poisson's ratio nu in [0, 0.5] (Kalker 1990,
     Table E.3, interpolated as CONTACT does; cw_kalker_coefficients)."""
@@ -31,7 +32,7 @@ def kalker_coefficients(a_over_b, nu):
     return KalkerCoefficients(*out.tolist())
 
 
-def kalker_flexibilities(a, b, G, nu):
+def kalker_flexibilities(a: float, b: float, G: float, nu: float) -> "Flexibilities":
     """The simplified theory's flexibilities L1, L2, L3 [m/Pa] of an a x b [m]
     ellipse, G [Pa], nu [-]: L1 = 8a/(3 C11 G), L2 = 8a/(3 C22 G),
     L3 = pi a sqrt(a/b)/(4 C23 G) (cw_kalker_flexibilities)."""
@@ -40,7 +41,7 @@ def kalker_flexibilities(a, b, G, nu):
     return Flexibilities(*out.tolist())
 
 
-def hertz(A, B, N, E_star):
+def hertz(A: float, B: float, N: float, E_star: float) -> "Hertz":
     """Hertz contact of elastically similar bodies (cw_hertz_solve): A, B > 0
     [1/m] the coefficients of the gap z = A x^2 + B y^2, i.e. HALF the
     relative curvatures, A = (1/R1x + 1/R2x)/2 along x (rolling), B across;
@@ -53,7 +54,8 @@ def hertz(A, B, N, E_star):
     return Hertz(*out.tolist())
 
 
-def fastsim_normalised(ux, uy, fx, fy, mx=20, my=20, tol=0.0):
+def fastsim_normalised(ux: float, uy: float, fx: float, fy: float, mx: int = 20, my: int = 20,
+                       tol: float = 0.0) -> Tuple[float, float]:
     """Kalker's original normalised FASTSIM (1982, his SIM routine;
     cw_fastsim_normalised): normalised creepages ux, uy and spin terms fx, fy
     on the unit disk, mx elements per strip, my strips cut at the spin pole
@@ -65,17 +67,17 @@ def fastsim_normalised(ux, uy, fx, fy, mx=20, my=20, tol=0.0):
     return tx.value, ty.value
 
 
-def version():
+def version() -> str:
     """The loaded library's version string, e.g. "1.1.0"."""
     return lib.cw_version_string().decode()
 
 
-def version_number():
+def version_number() -> int:
     """The loaded library's 10000*major + 100*minor + patch."""
     return lib.cw_version_number()
 
 
-def status_string(status):
+def status_string(status: int) -> str:
     """The static message of a status code (cw_status_string)."""
     return lib.cw_status_string(int(status)).decode()
 

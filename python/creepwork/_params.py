@@ -116,6 +116,9 @@ class Keywords:
                 default = "none"
             else:
                 default = repr(d[name].tolist())
+                for member, value in self.enums.get(name, {}).items():
+                    if value == d[name]:
+                        default = repr(member)
             names = ""
             if name in self.enums:
                 names = "; names: " + ", ".join("%s = %r" % (k, v) for k, v in self.enums[name].items())

@@ -8,6 +8,7 @@ library writes straight into the array: no copy, no transpose.
 
 import ctypes
 from collections import namedtuple
+from typing import TYPE_CHECKING, Any, Dict, Optional, Union
 
 import numpy as np
 
@@ -16,7 +17,14 @@ from ._layout import LAYOUT
 from ._library import CONSTANTS, DTYPES, address, lib
 from ._params import PARAMS, exact_default_grid, grid_record
 
+if TYPE_CHECKING:
+    from ._wear import WearResult
+
 _MESSAGE_LEN = 512
+#: What params= takes: a dict of cw_params fields or a creepwork.params() record.
+ParamsLike = Optional[Union[Dict[str, Any], np.ndarray]]
+#: What grid= takes: a dict of cw_grid fields (or a cw_grid record); None for the default.
+GridLike = Optional[Union[Dict[str, Any], np.ndarray]]
 
 #: Field name -> CW_FIELD_* id, e.g. "pz" -> CW_FIELD_PZ, from the header.
 FIELDS = {name[len("CW_FIELD_"):].lower(): value for name, value in CONSTANTS.items()
@@ -83,7 +91,7 @@ Result.__doc__ += "\n    Totals (cw_result):\n" + "\n".join(
     "\n\n    Fields:\n" + "\n".join("      %-18s %s" % (k, v) for k, v in FIELD_DOCS.items()) + "\n"
 
 
-def params(**keywords):
+def params(**keywords: Any) -> np.ndarray:
     """A cw_params record (a numpy structured scalar) with the C defaults
     (cw_params_init) and the keywords set, to reuse in loops:
 
@@ -137,7 +145,7 @@ class Solver:
     close() (or the end of a with block) frees the handle; it is idempotent.
     """
 
-    def __init__(self, grid=None):
+    def __init__(self, grid: GridLike = None) -> None:
         self._handle = ctypes.c_void_p()
         rec = grid_record(grid, "Solver")
         message = ctypes.create_string_buffer(_MESSAGE_LEN)
@@ -156,7 +164,7 @@ class Solver:
         self._wear = None
 
     # -- life cycle
-    def close(self):
+    def close(self) -> None:
         """Frees the handle (and its wear workspace); further calls raise."""
         if self._wear is not None:
             self._wear.close()
@@ -181,7 +189,7 @@ class Solver:
         return self._handle
 
     @property
-    def last_error(self):
+    def last_error(self) -> str:
         """The library's message about the last error on this handle ("" after success)."""
         return (lib.cw_solver_last_error(self._live()) or b"").decode("utf-8", "replace")
 
@@ -189,7 +197,8 @@ class Solver:
         _errors.check(status, lambda: lib.cw_solver_last_error(self._handle))
 
     # -- solving
-    def solve(self, params=None, *, fields=True, warn=True, **keywords):
+    def solve(self, params: ParamsLike = None, *, fields: bool = True, warn: bool = True,
+              **keywords: Any) -> "Result":
         """Solves one contact on this solver's grid: see creepwork.solve for
         the keywords. params: a dict or a creepwork.params() record; the
         keywords override it. fields=True (CW_SOLVE_FULL) also fills every
@@ -198,7 +207,8 @@ class Solver:
         the unit plausibility check (UnitWarning). Returns a Result."""
         return self._solve(params, keywords, fields, None, warn, "solve", 2)
 
-    def jacobian(self, params=None, *, fields=False, warn=True, **keywords):
+    def jacobian(self, params: ParamsLike = None, *, fields: bool = False, warn: bool = True,
+                 **keywords: Any) -> "Result":
         """As solve(), with result.jacobian the 4 x 4 derivatives of Fx, Fy, Mz,
         W_macro (rows, JACOBIAN_ROWS) with respect to xi_x, xi_y, phi,
         normal_force (columns, JACOBIAN_COLUMNS), SI: e.g. jacobian[0, 0] =
@@ -235,14 +245,14 @@ class Solver:
             out[name] = block[k]
         return Result(totals, out, self.state(), self.profile(), jacobian, solved, self.grid)
 
-    def result(self):
+    def result(self) -> "Result":
         """The totals of the last successful solve, as a Result without fields."""
         rec = np.zeros((), DTYPES["cw_result"])
         lib.cw_result_init(address(rec))
         self._check(lib.cw_solver_get_result(self._live(), address(rec)))
         return Result(dict(zip(_RESULT_NAMES, rec.item()[1:])))
 
-    def field(self, name, out=None):
+    def field(self, name: str, out: Optional[np.ndarray] = None) -> np.ndarray:
         """One field of the last solve as a (ny, nx) array (FIELDS names them;
         sx, sy and the work maps need a solve with fields=True). out: a
         C-contiguous float64 array of nx*ny elements to fill instead."""
@@ -253,13 +263,13 @@ class Solver:
         self._check(lib.cw_solver_get_field(self._live(), FIELDS[name], address(out), out.size))
         return out
 
-    def state(self, out=None):
+    def state(self, out: Optional[np.ndarray] = None) -> np.ndarray:
         """Element states of the last solve, int (ny, nx): 0 exterior, 1 adhesion, 2 slip."""
         out = self._out(out, np.intc)
         self._check(lib.cw_solver_get_state(self._live(), address(out), out.size))
         return out
 
-    def profile(self):
+    def profile(self) -> Profile:
         """The lateral work profile of the last solve (fields=True): a Profile."""
         p = np.empty((3, self.ny))
         base, n = address(p), self.ny
@@ -274,13 +284,13 @@ class Solver:
             raise TypeError("out must be a writeable C-contiguous %s array" % np.dtype(dtype).name)
         return out
 
-    def prepare(self, model):
+    def prepare(self, model: Union[str, int]) -> None:
         """Makes a model's memory now ("exact", "calibrated", "fastsim"), so its
         solves allocate nothing afterwards (cw_solver_prepare)."""
         value = PARAMS.convert("model", model)
         self._check(lib.cw_solver_prepare(self._live(), int(value)))
 
-    def wear(self, **keywords):
+    def wear(self, **keywords: Any) -> "WearResult":
         """The wear of this solver's last solve (fields=True): see
         creepwork.Wear.compute for the keywords. Returns a WearResult."""
         from ._wear import Wear
@@ -309,7 +319,8 @@ def _grid_for(grid, params_in, keywords):
     return None
 
 
-def solve(params=None, *, grid=None, fields=True, warn=True, **keywords):
+def solve(params: ParamsLike = None, *, grid: GridLike = None, fields: bool = True,
+          warn: bool = True, **keywords: Any) -> Result:
     """Solves one wheel-rail contact and returns a creepwork.Result.
 
         r = creepwork.solve(a=7e-3, b=5e-3, N=100e3, xi_x=1e-3, xi_y=5e-4, phi=0.5)
@@ -337,7 +348,8 @@ def solve(params=None, *, grid=None, fields=True, warn=True, **keywords):
         return s._solve(params, keywords, fields, None, warn, "solve", 2)
 
 
-def jacobian(params=None, *, grid=None, fields=False, warn=True, **keywords):
+def jacobian(params: ParamsLike = None, *, grid: GridLike = None, fields: bool = False,
+             warn: bool = True, **keywords: Any) -> Result:
     """solve() with the 4 x 4 Jacobian: returns a Result whose jacobian holds
     d(Fx, Fy, Mz, W_macro)/d(xi_x, xi_y, phi, normal_force), SI, rows
     creepwork.JACOBIAN_ROWS, columns creepwork.JACOBIAN_COLUMNS

@@ -4,6 +4,7 @@ simulation loops (cw_accumulator). Units SI; depths per pass (one axle
 passage for a rail, one wheel revolution for a wheel)."""
 
 import ctypes
+from typing import TYPE_CHECKING, Any, Dict, Sequence, Union
 from collections import namedtuple
 
 import numpy as np
@@ -12,7 +13,11 @@ from . import _errors
 from ._library import CONSTANTS, DTYPES, address, lib
 from ._params import WEAR_PARAMS
 
+if TYPE_CHECKING:
+    from ._solver import Solver
+
 _MESSAGE_LEN = 512
+ArrayLike = Union[np.ndarray, Sequence[float]]
 
 
 def _named(prefix):
@@ -105,7 +110,7 @@ class Wear:
     def _check(self, status):
         _errors.check(status, lambda: lib.cw_wear_last_error(self._handle))
 
-    def compute(self, solver, **keywords):
+    def compute(self, solver: "Solver", **keywords: Any) -> WearResult:
         """The wear of solver's last solve (which needs fields=True), by the
         law and parameters the keywords give (the fields of cw_wear_params,
         with cw_wear_params_init's defaults):
@@ -175,7 +180,8 @@ class WearProfile:
     def _check(self, status):
         _errors.check(status, lambda: lib.cw_wear_profile_last_error(self._handle))
 
-    def add(self, wear, s0=0.0, orientation=1, contact_angle=0.0, passes=1.0):
+    def add(self, wear: Union[Wear, "Solver"], s0: float = 0.0, orientation: int = 1,
+            contact_angle: float = 0.0, passes: float = 1.0) -> None:
         """Adds passes times the lateral profile of wear's last compute (a Wear,
         or a Solver whose wear() was called): s0 [m] the patch centre's
         profile coordinate; orientation +1 when s grows with the contact's y,
@@ -189,7 +195,9 @@ class WearProfile:
                                             int(orientation), float(contact_angle),
                                             float(passes)))
 
-    def add_strips(self, y, width, depth, s0=0.0, orientation=1, contact_angle=0.0, passes=1.0):
+    def add_strips(self, y: ArrayLike, width: ArrayLike, depth: ArrayLike, s0: float = 0.0,
+                   orientation: int = 1, contact_angle: float = 0.0,
+                   passes: float = 1.0) -> None:
         """Adds the caller's strips (centres y [m], widths [m], depths per pass
         [m], arrays of one length), as add() does a wear's."""
         arrays = [np.ascontiguousarray(v, dtype=np.float64) for v in (y, width, depth)]
@@ -199,7 +207,7 @@ class WearProfile:
             self._live(), *(address(a) for a in arrays), arrays[0].size, float(s0),
             int(orientation), float(contact_angle), float(passes)))
 
-    def depth(self, kind="normal"):
+    def depth(self, kind: str = "normal") -> np.ndarray:
         """Accumulated depth per node [m]: "normal" to the surface, or "height"
         along the profile's height axis."""
         if kind not in DEPTH_KINDS:
@@ -209,7 +217,7 @@ class WearProfile:
                                                   out.size))
         return out
 
-    def totals(self):
+    def totals(self) -> Dict[str, Any]:
         """dict of cw_wear_profile_totals: passes, volume [m^2], volume_lost [m^2], adds."""
         rec = np.zeros((), DTYPES["cw_wear_profile_totals"])
         lib.cw_wear_profile_totals_init(address(rec))
@@ -220,11 +228,11 @@ class WearProfile:
         """Back to zero."""
         self._check(lib.cw_wear_profile_reset(self._live()))
 
-    def merge(self, other):
+    def merge(self, other: "WearProfile") -> None:
         """self += other (same nodes), exactly."""
         self._check(lib.cw_wear_profile_merge(self._live(), other._live()))
 
-    def state(self):
+    def state(self) -> np.ndarray:
         """The exact state as a uint64 array, to move between processes."""
         words = ctypes.c_size_t()
         self._check(lib.cw_wear_profile_state_size(self._live(), ctypes.byref(words)))
@@ -232,13 +240,14 @@ class WearProfile:
         self._check(lib.cw_wear_profile_get_state(self._handle, address(out), out.size))
         return out
 
-    def add_state(self, state):
+    def add_state(self, state: ArrayLike) -> None:
         """Adds a state() saved from an accumulator on the same nodes."""
         state = np.ascontiguousarray(state, dtype=np.uint64)
         self._check(lib.cw_wear_profile_add_state(self._live(), address(state), state.size))
 
 
-def wear_profile_update(s, old_profile, depth, smoothing=0.0):
+def wear_profile_update(s: ArrayLike, old_profile: ArrayLike, depth: ArrayLike,
+                        smoothing: float = 0.0) -> np.ndarray:
     """new_profile = old_profile - smooth(depth) on the nodes s [m]; smooth is
     a volume-conserving Gaussian filter of standard deviation smoothing [m]
     (0: none) (cw_wear_profile_update). Returns the new profile."""
@@ -288,11 +297,11 @@ class Accumulator:
     def _check(self, status):
         _errors.check(status, lambda: lib.cw_accumulator_last_error(self._handle))
 
-    def add(self, solver, distance):
+    def add(self, solver: "Solver", distance: float) -> None:
         """Adds the solver's last solve for a step of distance = V dt [m]."""
         self._check(lib.cw_accumulator_add(self._live(), solver._live(), float(distance)))
 
-    def totals(self):
+    def totals(self) -> Dict[str, Any]:
         """dict of cw_accumulation: distance [m], W_macro [J], W_micro_paper [J], K,
         W_consistent [J], steps."""
         rec = np.zeros((), DTYPES["cw_accumulation"])
@@ -300,7 +309,7 @@ class Accumulator:
         self._check(lib.cw_accumulator_get_totals(self._live(), address(rec)))
         return _totals(rec)
 
-    def field(self, name="work_consistent"):
+    def field(self, name: str = "work_consistent") -> np.ndarray:
         """Accumulated work per element [J], (ny, nx): work_paper or work_consistent."""
         if name not in WORK_FIELDS:
             raise _unknown("field", name, WORK_FIELDS)
@@ -309,7 +318,7 @@ class Accumulator:
                                                  out.size))
         return out
 
-    def strip_work(self):
+    def strip_work(self) -> np.ndarray:
         """Accumulated energy-consistent work per strip [J], (ny,)."""
         out = np.empty(self.ny)
         self._check(lib.cw_accumulator_get_strip_work(self._live(), address(out), out.size))

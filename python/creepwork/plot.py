@@ -16,9 +16,14 @@ called: `import creepwork` never needs it.
     fig.savefig("patch.png")
 """
 
+from typing import TYPE_CHECKING, Any
+
 import numpy as np
 
 from ._library import CONSTANTS
+
+if TYPE_CHECKING:
+    from ._solver import Result
 
 # The CLI's palettes (examples/cli/gnuplot.cpp): white to brown for values
 # of one sign, blue-white-red for signed ones, blue adhesion / red slip.
@@ -80,7 +85,7 @@ def _panels(result):
     return panels
 
 
-def patch_maps(result, fig=None):
+def patch_maps(result: "Result", fig: Any = None) -> Any:
     """The eight-panel overview of a Result solved with fields=True:
     slip/adhesion map and seven heat maps. Returns the matplotlib Figure
     (fig: one to draw into, else a new one)."""
@@ -131,7 +136,7 @@ def _draw(ax, corners, values, cmap, limits, PolyCollection, a_mm, b_mm):
     return coll
 
 
-def profile(result, ax=None):
+def profile(result: "Result", ax: Any = None) -> Any:
     """The lateral work profile w(y) per strip against the parabola of equal
     area (the paper's Figs. 8-9). Returns the matplotlib Axes."""
     if result.profile is None:
