@@ -117,20 +117,21 @@ def test_first_field_must_be_struct_size(generator):
 def test_appended_field_of_the_real_header(generator, source_dir):
     """The header's growth rule: fields are appended after a comment. An int
     appended to cw_params becomes the last field, with its doc and an
-    offset after every old one; the old offsets do not move."""
+    offset after every old one; the old offsets do not move. (A name no
+    header will use: the real header grows too.)"""
     with open(os.path.join(source_dir, "capi/include/creepwork/creepwork.h")) as f:
         header = f.read()
     grown = re.sub(r"(\n\} cw_params;)",
-                   "\n    /* ---- appended in 9.9 ---- */\n    int exact_load; /* 1: solve for N [-] */\\1",
+                   "\n    /* ---- appended in 9.9 ---- */\n    int test_appended; /* 1: on [-] */\\1",
                    header, count=1)
     old = generator.parse_header(header)["structs"]["cw_params"]
     new = generator.parse_header(grown)["structs"]["cw_params"]
     assert new[:-1] == old
-    assert new[-1] == {"name": "exact_load", "ctype": "int", "kind": "int", "pointer": 0,
-                       "count": None, "doc": "1: solve for N [-]"}
+    assert new[-1] == {"name": "test_appended", "ctype": "int", "kind": "int", "pointer": 0,
+                       "count": None, "doc": "1: on [-]"}
     d_old, d_new = _library._struct_dtype(old), _library._struct_dtype(new)
     assert all(d_new.fields[n][1] == d_old.fields[n][1] for n in d_old.names)
-    assert d_new.fields["exact_load"][1] >= d_old.fields[d_old.names[-1]][1] + 4
+    assert d_new.fields["test_appended"][1] >= d_old.fields[d_old.names[-1]][1] + 4
 
 
 def test_generated_files_are_deterministic(generator, source_dir, tmp_path):
