@@ -98,8 +98,7 @@ def parse_declaration(decl, constants, where):
     """'double L1, L2, L3' -> [(name, ctype, pointer_depth, count), ...]."""
     decl = " ".join(decl.split())
     parts = [p.strip() for p in decl.split(",")]
-    first = re.findall(r"\[[^\]]*\]|\*|[A-Za-z_]\w*", parts[0])
-    words = [w for w in first if w not in ("const", "volatile")]
+    words = c_words(parts[0])
     # The name is the last identifier; everything before it (minus stars) is the type.
     ids = [k for k, w in enumerate(words) if re.fullmatch(r"[A-Za-z_]\w*", w)]
     if len(ids) < 2:
@@ -109,9 +108,7 @@ def parse_declaration(decl, constants, where):
     out = []
     # First declarator: the stars between type and name, the name, a dimension.
     declarators = [words[len(type_words):]]
-    for p in parts[1:]:
-        declarators.append([w for w in re.findall(r"\[[^\]]*\]|\*|[A-Za-z_]\w*", p)
-                            if w not in ("const", "volatile")])
+    declarators += [c_words(p) for p in parts[1:]]
     for d in declarators:
         name, stars, count = parse_declarator(d, constants, where)
         if stars == 0 and ctype not in SCALAR_KINDS:
@@ -255,6 +252,8 @@ def parse_functions(code):
 
 
 def c_words(declaration):
+    """The tokens of a C declaration that matter here: identifiers, stars,
+    array dimensions; without const and volatile."""
     return [w for w in re.findall(r"\[[^\]]*\]|\*|[A-Za-z_]\w*", declaration)
             if w not in ("const", "volatile")]
 

@@ -166,9 +166,7 @@ class Batch:
             self._solver = Solver(self._grid)
         one = np.array(rec)
         one["warm_start"] = 0
-        self._solver._result["struct_size"] = DTYPES["cw_result"].itemsize
-        code = lib.cw_solver_solve(self._solver._handle, address(one), mode,
-                                   self._solver._result_address)
+        code = lib.cw_solver_solve(self._solver._handle, address(one), mode, None)
         if code == status:
             return self._solver.last_error or _errors.SUMMARIES.get(status, "")
         return _errors.SUMMARIES.get(status, "unknown status code")
