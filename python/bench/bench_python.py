@@ -7,7 +7,8 @@ in one run on the same contacts:
             cw_batch_solve call of the C program bench_batch.c on the same
             contacts (bitwise equal inputs; the results are compared bitwise)
   per call  one contact at a time: Solver.solve and solve() against C's
-            cw_solver_solve, and an empty ctypes call
+            cw_solver_solve, and an empty ctypes call, in CPU time of the
+            calling thread (a busy machine disturbs it far less)
 
 Each timing is the best of its repetitions, and the table gives the best
 of the rounds (and the median of the rounds' best); rounds alternate C and
@@ -26,6 +27,7 @@ import platform
 import subprocess
 import sys
 import tempfile
+import time
 import timeit
 
 import numpy as np
@@ -43,8 +45,8 @@ def contacts(n):
                 phi=-1.5 + 3.0 * (k % 13).astype(float) / 12.0)
 
 
-def best(fn, reps):
-    return min(timeit.repeat(fn, number=1, repeat=reps))
+def best(fn, reps, timer=timeit.default_timer):
+    return min(timeit.repeat(fn, number=1, repeat=reps, timer=timer))
 
 
 def run_c(program, n, threads, reps, path):
@@ -149,22 +151,23 @@ def main():
     one = {k: float(np.asarray(v).flat[0]) if np.ndim(v) else v for k, v in kw.items()}
     rec = creepwork.params(**one)
     calls = 2000
+    cpu = time.thread_time  # CPU time of this thread, as the C program's one-by-one loop
     with creepwork.Solver() as s:
         per = {
             "empty ctypes call (cw_version_number)":
-                best(lambda: [lib.cw_version_number() for _ in range(calls)], args.reps),
+                best(lambda: [lib.cw_version_number() for _ in range(calls)], args.reps, cpu),
             "Solver.solve(record, fields=False, warn=False)":
                 best(lambda: [s.solve(rec, fields=False, warn=False) for _ in range(calls)],
-                     args.reps),
+                     args.reps, cpu),
             "Solver.solve(record, fields=False)":
-                best(lambda: [s.solve(rec, fields=False) for _ in range(calls)], args.reps),
+                best(lambda: [s.solve(rec, fields=False) for _ in range(calls)], args.reps, cpu),
             "Solver.solve(**6 keywords, fields=False)":
-                best(lambda: [s.solve(**one, fields=False) for _ in range(calls)], args.reps),
+                best(lambda: [s.solve(**one, fields=False) for _ in range(calls)], args.reps, cpu),
             "Solver.solve(**6 keywords), fields and profile":
-                best(lambda: [s.solve(**one) for _ in range(calls)], args.reps),
+                best(lambda: [s.solve(**one) for _ in range(calls)], args.reps, cpu),
             "creepwork.solve(**6 keywords, fields=False) (makes a Solver)":
                 best(lambda: [creepwork.solve(**one, fields=False) for _ in range(calls)],
-                     args.reps),
+                     args.reps, cpu),
         }
 
     print()
@@ -189,7 +192,8 @@ def main():
         print("| %d | %.2f | %.2f | %.3f | %.3f |" % (threads, 1e3 * total, 1e3 * c_call, ratio,
                                                      1e3 * own))
     print()
-    print("| one contact at a time | per call [us] | overhead over C's cw_solver_solve [us] |")
+    print("| one contact at a time (CPU time of the thread) | per call [us] | "
+          "overhead over C's cw_solver_solve [us] |")
     print("|---|---:|---:|")
     print("| C: cw_solver_solve | %.2f | 0 |" % (1e6 * c_one))
     for name, t in per.items():
