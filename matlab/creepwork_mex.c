@@ -159,6 +159,16 @@ static void store(void* base, const field_info* f, double value, int k)
     if (f->kind != K_DOUBLE && f->kind != K_FLOAT) {
         if (!(value == floor(value)) || fabs(value) > 9e15)
             FAIL("notInteger", "%s must be an integer (got %g)", f->name, value);
+        /* The C type's range: a cast out of it would be undefined. */
+        const int is_signed = f->kind == K_INT || f->kind == K_INT32 || f->kind == K_INT64 ||
+                              f->kind == K_CHAR;
+        const double top = f->kind == K_INT || f->kind == K_INT32   ? 2147483647.0
+                           : f->kind == K_UNSIGNED || f->kind == K_UINT32 ? 4294967295.0
+                           : f->kind == K_CHAR                          ? 127.0
+                                                                        : 9e15;
+        if (value > top || value < (is_signed ? -top - 1.0 : 0.0))
+            mexErrMsgIdAndTxt("creepwork:CW_ERR_INVALID_INPUT",
+                              "%s = %.17g is outside the range of its C type", f->name, value);
     }
     switch (f->kind) {
     case K_DOUBLE: ((double*)at)[k] = value; break;

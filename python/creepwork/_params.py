@@ -69,16 +69,23 @@ class Keywords:
                 for name in np.unique(arr):
                     out[arr == name] = self.enum_value(field, str(name))
                 return out
-        kind = self.dtype.fields[field][0].base.kind
-        if kind in "iu":
+        base = self.dtype.fields[field][0].base
+        if base.kind in "iu":
             arr = np.asarray(value)
-            if arr.dtype.kind == "b":
-                return arr.astype(np.int64) if arr.ndim else int(arr)
-            if arr.dtype.kind not in "iu":
+            if arr.dtype.kind not in "iub":
                 if arr.dtype.kind != "f" or not np.all(np.isfinite(arr) & (arr == np.round(arr))):
                     raise TypeError("%s must be an integer, got %r" % (field, value))
+            # numpy would wrap a value too large for the C type silently.
+            limits = np.iinfo(base)
+            if arr.size and (arr.min() < limits.min or arr.max() > limits.max):
+                raise _errors.BY_STATUS[_status("CW_ERR_INVALID_INPUT")](
+                    "%s = %s is outside the range of its C type %s" % (
+                        field, value, LAYOUT["structs"][self.struct][self._index(field)]["ctype"]))
             return arr.astype(np.int64) if arr.ndim else int(arr)
         return value
+
+    def _index(self, field):
+        return [f["name"] for f in LAYOUT["structs"][self.struct]].index(field)
 
     def fill(self, record, keywords, caller, keep=None):
         """Sets record[field] = value for each keyword (record: a numpy record of

@@ -82,6 +82,10 @@ def test_python_side_mistakes():
         creepwork.solve(a=7e-3, b=5e-3, N=100e3, xi=1e-3)  # did you mean xi_x?
     with pytest.raises(TypeError, match="max_iterations"):
         creepwork.solve(**OK, model="exact", max_iterations=2.5)
+    with pytest.raises(creepwork.InvalidInputError, match="max_iterations = 10000000000 is outside"):
+        creepwork.solve(**OK, model="exact", max_iterations=10**10)  # would wrap in a C int
+    with pytest.raises(creepwork.InvalidInputError, match="max_iterations"):
+        creepwork.solve_many(**OK, model="exact", max_iterations=np.array([50, 2**31]))
     with pytest.raises(creepwork.UnknownOptionError, match="exakt"):
         creepwork.solve(**OK, model="exakt")
     with pytest.raises(TypeError, match="grid"):
