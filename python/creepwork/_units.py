@@ -54,13 +54,15 @@ def warnings_for(values):
     L1..L3 is read (absent: from material). One message per rule, with how
     many values of an array break it."""
     flex = values["flexibility"] if _has(values, "flexibility") else 0
+    scalar_flex = isinstance(flex, (int, float)) or np.ndim(flex) == 0
     out = []
     for field, unit, bad, why in _RULES:
         if not _has(values, field):
             continue
         v = values[field]
-        if np.ndim(v) == 0 and np.ndim(flex) == 0:
-            # One value: plain Python numbers, fifty times faster than numpy's.
+        if scalar_flex and (isinstance(v, (int, float)) or np.ndim(v) == 0):
+            # One value: plain Python numbers, fifty times faster than numpy's
+            # (isinstance first: np.ndim of a float costs as much as the rule).
             v = float(v)
             if bad(v, int(flex)):
                 out.append(_message(field, unit, v, "", why))
