@@ -30,6 +30,15 @@ fi
 cd "$work/clone"
 export HOME="$work/home"
 
+# The recipes of doc/python.md call `python3`, meaning one with numpy
+# (Debian's /usr/bin/python3 with python3-numpy): when the python3 on PATH
+# lacks numpy (a pyenv or conda one), Debian's is put first on PATH.
+if ! python3 -c 'import numpy' >/dev/null 2>&1 && /usr/bin/python3 -c 'import numpy' >/dev/null 2>&1; then
+  mkdir -p "$work/bin"
+  ln -sf /usr/bin/python3 "$work/bin/python3"
+  export PATH="$work/bin:$PATH"
+fi
+
 # Every block as "FILE KIND NAME", in run order; a name used twice is an
 # error (recipes and outputs pair by name, files would overwrite).
 mapfile -t docs < <(bash "$blocks" files .)
