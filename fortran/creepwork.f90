@@ -39,7 +39,12 @@
 !            (error stop) with the message. On error nothing is written to
 !            the outputs.
 !   Threads  distinct objects may be used concurrently from different
-!            threads; one object by one thread at a time.
+!            threads; one object by one thread at a time. (gfortran 12
+!            keeps the length of a deferred-length character function
+!            result in a static variable where the function is called:
+!            two threads calling last_error, cw_status_string or
+!            cw_version_string at the same moment race in the caller's
+!            code; errmsg= has no such problem.)
 module creepwork
    use creepwork_types
    use creepwork_functions, only: cw_library_version_number, cw_library_abi_version, &

@@ -24,7 +24,7 @@ module creepwork_accumulator
 contains
 
    function accumulator_noun() result(s)
-      character(len=:), allocatable :: s
+      character(len=noun_length) :: s
       s = 'accumulator'
    end function accumulator_noun
 
@@ -44,7 +44,7 @@ contains
          call grid_of(solver, nx, ny)
          call adopt(self, handle, capi_accumulator_destroy, capi_accumulator_last_error, nx, ny)
       end if
-      if (present(errmsg)) errmsg = text(o)
+      if (present(errmsg)) call set_errmsg(o, errmsg)
       call deliver(o, stat)
    end subroutine accumulator_create
 
@@ -56,7 +56,7 @@ contains
       type(outcome) :: o
       o = created(self)
       if (o%status == CW_OK) o = status_outcome(self, capi_accumulator_reset(handle_of(self)))
-      if (present(errmsg)) errmsg = text(o)
+      if (present(errmsg)) call set_errmsg(o, errmsg)
       call deliver(o, stat)
    end subroutine accumulator_reset
 
@@ -73,7 +73,7 @@ contains
       if (o%status == CW_OK) o = created(solver)
       if (o%status == CW_OK) o = status_outcome(self, capi_accumulator_add( &
                                  handle_of(self), handle_of(solver), distance))
-      if (present(errmsg)) errmsg = text(o)
+      if (present(errmsg)) call set_errmsg(o, errmsg)
       call deliver(o, stat)
    end subroutine accumulator_add
 
@@ -90,7 +90,7 @@ contains
          if (totals%struct_size == 0) status = capi_accumulation_init(totals)
          o = status_outcome(self, capi_accumulator_get_totals(handle_of(self), totals))
       end if
-      if (present(errmsg)) errmsg = text(o)
+      if (present(errmsg)) call set_errmsg(o, errmsg)
       call deliver(o, stat)
    end subroutine accumulator_get_totals
 
@@ -106,7 +106,7 @@ contains
       o = created_map(self, shape(out))
       if (o%status == CW_OK) o = status_outcome(self, capi_accumulator_get_field( &
                                  handle_of(self), int(field, c_int), out, size(out, kind=c_size_t)))
-      if (present(errmsg)) errmsg = text(o)
+      if (present(errmsg)) call set_errmsg(o, errmsg)
       call deliver(o, stat)
    end subroutine accumulator_get_field_2d
 
@@ -120,7 +120,7 @@ contains
       o = created(self)
       if (o%status == CW_OK) o = status_outcome(self, capi_accumulator_get_field( &
                                  handle_of(self), int(field, c_int), out, size(out, kind=c_size_t)))
-      if (present(errmsg)) errmsg = text(o)
+      if (present(errmsg)) call set_errmsg(o, errmsg)
       call deliver(o, stat)
    end subroutine accumulator_get_field_1d
 
@@ -134,7 +134,7 @@ contains
       o = created(self)
       if (o%status == CW_OK) o = status_outcome(self, capi_accumulator_get_strip_work( &
                                  handle_of(self), out, size(out, kind=c_size_t)))
-      if (present(errmsg)) errmsg = text(o)
+      if (present(errmsg)) call set_errmsg(o, errmsg)
       call deliver(o, stat)
    end subroutine accumulator_get_strip_work
 

@@ -20,7 +20,7 @@ module creepwork_batch
 contains
 
    function batch_noun() result(s)
-      character(len=:), allocatable :: s
+      character(len=noun_length) :: s
       s = 'batch'
    end function batch_noun
 
@@ -39,11 +39,11 @@ contains
       type(outcome) :: o
       call self%destroy()
       buffer(1) = c_null_char
-      o = make_outcome(capi_batch_create(make_grid(grid, nx, ny, kind, box_scale), &
+      o = buffer_outcome(capi_batch_create(make_grid(grid, nx, ny, kind, box_scale), &
                                          int_or(threads, 0_c_int), handle, buffer, &
-                                         size(buffer, kind=c_size_t)), buffer_string(buffer))
+                                         size(buffer, kind=c_size_t)), buffer)
       if (o%status == CW_OK) call adopt(self, handle, capi_batch_destroy, capi_batch_last_error, 0, 0)
-      if (present(errmsg)) errmsg = text(o)
+      if (present(errmsg)) call set_errmsg(o, errmsg)
       call deliver(o, stat)
    end subroutine batch_create
 
@@ -58,7 +58,7 @@ contains
       o = created(self)
       if (o%status == CW_OK) o = status_outcome(self, capi_batch_prepare(handle_of(self), &
                                                                          int(model, c_int)))
-      if (present(errmsg)) errmsg = text(o)
+      if (present(errmsg)) call set_errmsg(o, errmsg)
       call deliver(o, stat)
    end subroutine batch_prepare
 
@@ -94,7 +94,7 @@ contains
          o = status_outcome(self, capi_batch_solve(handle_of(self), size(params, kind=c_size_t), &
                                                    params, int(mode, c_int), results, ps))
       end if
-      if (present(errmsg)) errmsg = text(o)
+      if (present(errmsg)) call set_errmsg(o, errmsg)
       call deliver(o, stat)
    end subroutine batch_solve
 
@@ -103,8 +103,8 @@ contains
       character(len=*), intent(in) :: name
       integer, intent(in) :: n, count
       type(outcome) :: o
-      o = make_outcome(CW_ERR_BUFFER_TOO_SMALL, name//' holds '//integer_text(n)//' but '// &
-                       integer_text(count)//' are needed')
+      o = make_outcome(CW_ERR_BUFFER_TOO_SMALL, name//' holds '//trim(integer_text(n))//' but '// &
+                       trim(integer_text(count))//' are needed')
    end function too_short
 
 end module creepwork_batch

@@ -5,8 +5,8 @@ module creepwork_functions
    use, intrinsic :: iso_c_binding, only: c_int, c_size_t, c_double, c_char, c_null_char
    use creepwork_types
    use creepwork_capi
-   use creepwork_handle, only: outcome, make_outcome, text, deliver, f_string, buffer_string, &
-                               integer_text, message_capacity
+   use creepwork_handle, only: outcome, make_outcome, buffer_outcome, set_errmsg, deliver, &
+                               c_text, integer_text, message_capacity
    implicit none
    private
    public :: cw_library_version_number, cw_library_abi_version, cw_version_string
@@ -33,14 +33,14 @@ contains
    ! "1.2.0"
    function cw_version_string() result(s)
       character(len=:), allocatable :: s
-      s = f_string(capi_version_string())
+      call c_text(capi_version_string(), s)
    end function cw_version_string
 
    ! Static message of a status code ("unknown status code" if not a CW_*).
    function cw_status_string(status) result(s)
       integer, intent(in) :: status
       character(len=:), allocatable :: s
-      s = f_string(capi_status_string(int(status, c_int)))
+      call c_text(capi_status_string(int(status, c_int)), s)
    end function cw_status_string
 
    ! ===================================================== struct defaults
@@ -110,9 +110,9 @@ contains
       character(kind=c_char) :: buffer(message_capacity)
       type(outcome) :: o
       buffer(1) = c_null_char
-      o = make_outcome(capi_kalker_coefficients(a_over_b, nu, coefficients, buffer, &
-                                                size(buffer, kind=c_size_t)), buffer_string(buffer))
-      if (present(errmsg)) errmsg = text(o)
+      o = buffer_outcome(capi_kalker_coefficients(a_over_b, nu, coefficients, buffer, &
+                                                size(buffer, kind=c_size_t)), buffer)
+      if (present(errmsg)) call set_errmsg(o, errmsg)
       call deliver(o, stat)
    end subroutine cw_kalker_coefficients
 
@@ -125,9 +125,9 @@ contains
       character(kind=c_char) :: buffer(message_capacity)
       type(outcome) :: o
       buffer(1) = c_null_char
-      o = make_outcome(capi_kalker_flexibilities(a, b, G, nu, flexibilities, buffer, &
-                                                 size(buffer, kind=c_size_t)), buffer_string(buffer))
-      if (present(errmsg)) errmsg = text(o)
+      o = buffer_outcome(capi_kalker_flexibilities(a, b, G, nu, flexibilities, buffer, &
+                                                 size(buffer, kind=c_size_t)), buffer)
+      if (present(errmsg)) call set_errmsg(o, errmsg)
       call deliver(o, stat)
    end subroutine cw_kalker_flexibilities
 
@@ -142,9 +142,9 @@ contains
       character(kind=c_char) :: buffer(message_capacity)
       type(outcome) :: o
       buffer(1) = c_null_char
-      o = make_outcome(capi_hertz_solve(A, B, normal_force, E_star, hertz, buffer, &
-                                        size(buffer, kind=c_size_t)), buffer_string(buffer))
-      if (present(errmsg)) errmsg = text(o)
+      o = buffer_outcome(capi_hertz_solve(A, B, normal_force, E_star, hertz, buffer, &
+                                        size(buffer, kind=c_size_t)), buffer)
+      if (present(errmsg)) call set_errmsg(o, errmsg)
       call deliver(o, stat)
    end subroutine cw_hertz_solve
 
@@ -160,10 +160,9 @@ contains
       character(kind=c_char) :: buffer(message_capacity)
       type(outcome) :: o
       buffer(1) = c_null_char
-      o = make_outcome(capi_fastsim_normalised(ux, uy, fx, fy, int(mx, c_int), int(my, c_int), &
-                                               tol, tx, ty, buffer, size(buffer, kind=c_size_t)), &
-                       buffer_string(buffer))
-      if (present(errmsg)) errmsg = text(o)
+      o = buffer_outcome(capi_fastsim_normalised(ux, uy, fx, fy, int(mx, c_int), int(my, c_int), &
+                                               tol, tx, ty, buffer, size(buffer, kind=c_size_t)), buffer)
+      if (present(errmsg)) call set_errmsg(o, errmsg)
       call deliver(o, stat)
    end subroutine cw_fastsim_normalised
 
@@ -180,17 +179,18 @@ contains
       type(outcome) :: o
       if (size(old_profile) /= size(s) .or. size(depth) /= size(s)) then
          o = make_outcome(CW_ERR_INVALID_INPUT, 's, old_profile and depth have sizes '// &
-                          integer_text(size(s))//', '//integer_text(size(old_profile))//', '// &
-                          integer_text(size(depth))//': they must be equal')
+                          trim(integer_text(size(s)))//', '// &
+                          trim(integer_text(size(old_profile)))//', '// &
+                          trim(integer_text(size(depth)))//': they must be equal')
       else
          buffer(1) = c_null_char
-         o = make_outcome(capi_wear_profile_update(s, old_profile, depth, size(s, kind=c_size_t), &
+         o = buffer_outcome(capi_wear_profile_update(s, old_profile, depth, size(s, kind=c_size_t), &
                                                    smoothing, new_profile, &
                                                    size(new_profile, kind=c_size_t), buffer, &
                                                    size(buffer, kind=c_size_t)), &
-                          buffer_string(buffer))
+                          buffer)
       end if
-      if (present(errmsg)) errmsg = text(o)
+      if (present(errmsg)) call set_errmsg(o, errmsg)
       call deliver(o, stat)
    end subroutine cw_wear_profile_update
 

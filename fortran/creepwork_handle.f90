@@ -1,11 +1,11 @@
 ! What every wrapper of module creepwork shares:
 !   outcome     the status and message of a call, delivered at the end of
 !               every public procedure by the same two lines
-!                  if (present(errmsg)) errmsg = text(o)
+!                  if (present(errmsg)) call set_errmsg(o, errmsg)
 !                  call deliver(o, stat)
-!               (errmsg is assigned in the public procedure itself: gfortran
-!               12 passes an optional deferred-length dummy on to another
-!               optional one with its length lost);
+!               (errmsg is passed on only when present: gfortran 12 passes
+!               an optional deferred-length dummy on to another optional one
+!               with its length lost);
 !   cw_handle   the base of the five wrapper types that own a C handle:
 !               the pointer, the grid it was made for, and the C functions
 !               that free it and give its last message, so that destroy,
@@ -13,6 +13,13 @@
 !               net are written once;
 !   helpers     C strings to Fortran, grid settings, shape checks.
 ! Internal to the library: module creepwork re-exports none of it.
+!
+! No procedure of the library calls a function whose result is a
+! deferred-length character: gfortran 12 keeps the length of such a result
+! in a static variable at the call site, so two threads calling it at once
+! race (and may copy past a buffer). Strings come back through subroutine
+! arguments or fixed-length results instead; check_fortran_static_data
+! looks for such statics in the library.
 module creepwork_handle
    use, intrinsic :: iso_c_binding, only: c_int, c_size_t, c_double, c_char, c_ptr, c_null_ptr, &
                                           c_null_char, c_associated, c_f_pointer, c_loc
@@ -20,12 +27,14 @@ module creepwork_handle
    use creepwork_capi, only: c_strlen, capi_status_string, capi_grid_init
    implicit none
    private
-   public :: outcome, make_outcome, text, deliver, f_string, buffer_string, integer_text
+   public :: outcome, make_outcome, buffer_outcome, set_errmsg, deliver, c_text, integer_text
    public :: message_capacity, make_grid, int_or, point_at
    public :: cw_handle, adopt, handle_of, grid_of, created, created_map, status_outcome
 
    ! Size of the message buffers handed to the C functions that take one.
    integer, parameter :: message_capacity = 1024
+   ! Length of the result of noun().
+   integer, parameter, public :: noun_length = 16
 
    ! Status and message of a call: message is "<static message>: <detail>"
    ! on error and left unallocated on success, so that a successful call in
@@ -79,23 +88,38 @@ contains
       integer(c_int), intent(in) :: status
       character(len=*), intent(in) :: detail
       type(outcome) :: o
+      character(len=:), allocatable :: head
       o%status = status
       if (status /= CW_OK) then
-         o%message = f_string(capi_status_string(status))
-         if (len(detail) > 0) o%message = o%message//': '//detail
+         call c_text(capi_status_string(status), head)
+         if (len(detail) > 0) then
+            o%message = head//': '//detail
+         else
+            o%message = head
+         end if
       end if
    end function make_outcome
 
-   ! '' on success, else the message.
-   function text(o) result(s)
+   ! make_outcome with the detail a C function wrote into a message buffer.
+   function buffer_outcome(status, buffer) result(o)
+      integer(c_int), intent(in) :: status
+      character(kind=c_char), intent(in) :: buffer(:)
+      type(outcome) :: o
+      character(len=:), allocatable :: detail
+      call buffer_text(buffer, detail)
+      o = make_outcome(status, detail)
+   end function buffer_outcome
+
+   ! errmsg := '' on success, else the message.
+   subroutine set_errmsg(o, errmsg)
       type(outcome), intent(in) :: o
-      character(len=:), allocatable :: s
+      character(len=:), allocatable, intent(out) :: errmsg
       if (allocated(o%message)) then
-         s = o%message
+         errmsg = o%message
       else
-         s = ''
+         errmsg = ''
       end if
-   end function text
+   end subroutine set_errmsg
 
    ! The status to stat when present; otherwise an error stops the program
    ! with the message (success does nothing).
@@ -110,10 +134,10 @@ contains
 
    ! ============================================================ strings
 
-   ! Copy of a NUL-terminated C string ('' for NULL).
-   function f_string(p) result(s)
+   ! s := copy of the NUL-terminated C string p ('' for NULL).
+   subroutine c_text(p, s)
       type(c_ptr), intent(in) :: p
-      character(len=:), allocatable :: s
+      character(len=:), allocatable, intent(out) :: s
       character(kind=c_char), pointer :: chars(:)
       integer :: n, i
       if (.not. c_associated(p)) then
@@ -126,12 +150,12 @@ contains
       do i = 1, n
          s(i:i) = chars(i)
       end do
-   end function f_string
+   end subroutine c_text
 
-   ! The text of a message buffer filled by C, up to its NUL.
-   function buffer_string(buffer) result(s)
+   ! s := the text of a message buffer filled by C, up to its NUL.
+   subroutine buffer_text(buffer, s)
       character(kind=c_char), intent(in) :: buffer(:)
-      character(len=:), allocatable :: s
+      character(len=:), allocatable, intent(out) :: s
       integer :: n, i
       n = 0
       do while (n < size(buffer))
@@ -142,17 +166,17 @@ contains
       do i = 1, n
          s(i:i) = buffer(i)
       end do
-   end function buffer_string
+   end subroutine buffer_text
 
-   ! Decimal text of an integer. List-directed, so that no format string
-   ! is parsed: libgfortran copies formats with strndup, which
-   ! AddressSanitizer's strict_string_checks reports as an overflow.
+   ! Decimal text of an integer, left-adjusted (use it trimmed).
+   ! List-directed, so that no format string is parsed: libgfortran copies
+   ! formats with strndup, which AddressSanitizer's strict_string_checks
+   ! reports as an overflow.
    function integer_text(n) result(s)
       integer, intent(in) :: n
-      character(len=:), allocatable :: s
-      character(len=32) :: buffer
-      write (buffer, *) n
-      s = trim(adjustl(buffer))
+      character(len=24) :: s
+      write (s, *) n
+      s = adjustl(s)
    end function integer_text
 
    ! ============================================================ arguments
@@ -232,8 +256,8 @@ contains
       class(cw_handle), intent(in) :: self
       type(outcome) :: o
       if (.not. c_associated(self%ptr)) &
-         o = make_outcome(CW_ERR_NULL_POINTER, 'the '//self%noun()//' has not been created '// &
-                          '(call create first)')
+         o = make_outcome(CW_ERR_NULL_POINTER, 'the '//trim(self%noun())//' has not been '// &
+                          'created (call create first)')
    end function created
 
    ! created, and a caller's map of shape out_shape must be the grid's:
@@ -246,8 +270,9 @@ contains
       character(len=:), allocatable :: detail
       o = created(self)
       if (o%status /= CW_OK .or. all(out_shape == [self%nx, self%ny])) return
-      detail = 'out has shape ('//integer_text(out_shape(1))//', '//integer_text(out_shape(2))// &
-               ') but the grid is ('//integer_text(self%nx)//', '//integer_text(self%ny)//')'
+      detail = 'out has shape ('//trim(integer_text(out_shape(1)))//', '// &
+               trim(integer_text(out_shape(2)))//') but the grid is ('// &
+               trim(integer_text(self%nx))//', '//trim(integer_text(self%ny))//')'
       if (product(out_shape) < self%nx*self%ny) then
          o = make_outcome(CW_ERR_BUFFER_TOO_SMALL, detail)
       else
@@ -260,10 +285,12 @@ contains
       class(cw_handle), intent(in) :: self
       integer(c_int), intent(in) :: status
       type(outcome) :: o
+      character(len=:), allocatable :: detail
       if (status == CW_OK) then
          o%status = status
       else
-         o = make_outcome(status, f_string(self%c_last_error(self%ptr)))
+         call c_text(self%c_last_error(self%ptr), detail)
+         o = make_outcome(status, detail)
       end if
    end function status_outcome
 
@@ -287,16 +314,16 @@ contains
       class(cw_handle), intent(in) :: self
       character(len=:), allocatable :: s
       if (c_associated(self%ptr)) then
-         s = f_string(self%c_last_error(self%ptr))
+         call c_text(self%c_last_error(self%ptr), s)
       else
-         s = 'the '//self%noun()//' has not been created'
+         s = 'the '//trim(self%noun())//' has not been created'
       end if
    end function handle_last_error
 
-   ! What the object is, in messages ("the solver has not been created");
-   ! each extension overrides it.
+   ! What the object is, in messages ("the solver has not been created"),
+   ! blank-padded; each extension overrides it.
    function handle_noun() result(s)
-      character(len=:), allocatable :: s
+      character(len=noun_length) :: s
       s = 'object'
    end function handle_noun
 
@@ -306,8 +333,8 @@ contains
       class(cw_handle), intent(in) :: rhs
       character(len=:), allocatable :: message
       if (c_associated(rhs%ptr)) then
-         message = 'creepwork: a cw_'//underscored(rhs%noun())//'_type cannot be copied '// &
-                   '(pass it by reference)'
+         message = 'creepwork: a cw_'//underscored(trim(rhs%noun()))//'_type cannot be '// &
+                   'copied (pass it by reference)'
          error stop message
       end if
       call lhs%destroy()
@@ -315,7 +342,7 @@ contains
 
    function underscored(words) result(s)
       character(len=*), intent(in) :: words
-      character(len=:), allocatable :: s
+      character(len=len(words)) :: s
       integer :: i
       s = words
       do i = 1, len(s)

@@ -778,11 +778,14 @@ end subroutine CWWUPD
 ! message) receives cw_status_string(IERR), blank-padded or cut.
 subroutine CWERRM(IERR, MSG)
    use, intrinsic :: iso_c_binding, only: c_int
-   use creepwork, only: cw_status_string
+   use creepwork_capi, only: capi_status_string
+   use creepwork_handle, only: c_text
    implicit none
    integer(c_int), intent(in) :: IERR
    character(len=*), intent(out) :: MSG
-   MSG = cw_status_string(int(IERR))
+   character(len=:), allocatable :: text
+   call c_text(capi_status_string(IERR), text)
+   MSG = text
 end subroutine CWERRM
 
 ! Checks that the caller's types are the library's. Call it once with

@@ -28,7 +28,7 @@ module creepwork_solver
 contains
 
    function solver_noun() result(s)
-      character(len=:), allocatable :: s
+      character(len=noun_length) :: s
       s = 'solver'
    end function solver_noun
 
@@ -54,8 +54,8 @@ contains
          status = capi_solver_grid_size(handle, gnx, gny)
          call adopt(self, handle, capi_solver_destroy, capi_solver_last_error, int(gnx), int(gny))
       end if
-      o = make_outcome(status, buffer_string(buffer))
-      if (present(errmsg)) errmsg = text(o)
+      o = buffer_outcome(status, buffer)
+      if (present(errmsg)) call set_errmsg(o, errmsg)
       call deliver(o, stat)
    end subroutine solver_create
 
@@ -79,7 +79,7 @@ contains
       o = created(self)
       if (o%status == CW_OK) o = status_outcome(self, capi_solver_prepare(handle_of(self), &
                                                                           int(model, c_int)))
-      if (present(errmsg)) errmsg = text(o)
+      if (present(errmsg)) call set_errmsg(o, errmsg)
       call deliver(o, stat)
    end subroutine solver_prepare
 
@@ -111,7 +111,7 @@ contains
       if (o%status == CW_OK) o = status_outcome(self, capi_solver_solve( &
                                  handle_of(self), params, int_or(mode, CW_SOLVE_FULL), &
                                  result_pointer(result)))
-      if (present(errmsg)) errmsg = text(o)
+      if (present(errmsg)) call set_errmsg(o, errmsg)
       call deliver(o, stat)
    end subroutine solver_solve
 
@@ -135,7 +135,7 @@ contains
                                  handle_of(self), params, int_or(mode, CW_SOLVE_FORCES), &
                                  result_pointer(result), row_major, int(CW_JACOBIAN_LEN, c_size_t)))
       if (o%status == CW_OK) jacobian = transpose(row_major)
-      if (present(errmsg)) errmsg = text(o)
+      if (present(errmsg)) call set_errmsg(o, errmsg)
       call deliver(o, stat)
    end subroutine solver_solve_jacobian
 
@@ -152,7 +152,7 @@ contains
          if (result%struct_size == 0) status = capi_result_init(result)
          o = status_outcome(self, capi_solver_get_result(handle_of(self), result))
       end if
-      if (present(errmsg)) errmsg = text(o)
+      if (present(errmsg)) call set_errmsg(o, errmsg)
       call deliver(o, stat)
    end subroutine solver_get_result
 
@@ -167,7 +167,7 @@ contains
       o = created_map(self, shape(out))
       if (o%status == CW_OK) o = status_outcome(self, capi_solver_get_field( &
                                  handle_of(self), int(field, c_int), out, size(out, kind=c_size_t)))
-      if (present(errmsg)) errmsg = text(o)
+      if (present(errmsg)) call set_errmsg(o, errmsg)
       call deliver(o, stat)
    end subroutine solver_get_field_2d
 
@@ -182,7 +182,7 @@ contains
       o = created(self)
       if (o%status == CW_OK) o = status_outcome(self, capi_solver_get_field( &
                                  handle_of(self), int(field, c_int), out, size(out, kind=c_size_t)))
-      if (present(errmsg)) errmsg = text(o)
+      if (present(errmsg)) call set_errmsg(o, errmsg)
       call deliver(o, stat)
    end subroutine solver_get_field_1d
 
@@ -196,7 +196,7 @@ contains
       o = created_map(self, shape(out))
       if (o%status == CW_OK) o = status_outcome(self, capi_solver_get_state( &
                                  handle_of(self), out, size(out, kind=c_size_t)))
-      if (present(errmsg)) errmsg = text(o)
+      if (present(errmsg)) call set_errmsg(o, errmsg)
       call deliver(o, stat)
    end subroutine solver_get_state_2d
 
@@ -209,7 +209,7 @@ contains
       o = created(self)
       if (o%status == CW_OK) o = status_outcome(self, capi_solver_get_state( &
                                  handle_of(self), out, size(out, kind=c_size_t)))
-      if (present(errmsg)) errmsg = text(o)
+      if (present(errmsg)) call set_errmsg(o, errmsg)
       call deliver(o, stat)
    end subroutine solver_get_state_1d
 
@@ -236,7 +236,7 @@ contains
       o = created(self)
       if (o%status == CW_OK) o = status_outcome(self, capi_solver_get_profile(handle_of(self), &
                                                                               py, pw, pp, n))
-      if (present(errmsg)) errmsg = text(o)
+      if (present(errmsg)) call set_errmsg(o, errmsg)
       call deliver(o, stat)
    end subroutine solver_get_profile
 

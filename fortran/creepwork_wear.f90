@@ -47,7 +47,7 @@ contains
    ! ================================================================ wear
 
    function wear_noun() result(s)
-      character(len=:), allocatable :: s
+      character(len=noun_length) :: s
       s = 'wear'
    end function wear_noun
 
@@ -68,7 +68,7 @@ contains
          call grid_of(solver, nx, ny)
          call adopt(self, handle, capi_wear_destroy, capi_wear_last_error, nx, ny)
       end if
-      if (present(errmsg)) errmsg = text(o)
+      if (present(errmsg)) call set_errmsg(o, errmsg)
       call deliver(o, stat)
    end subroutine wear_create
 
@@ -101,7 +101,7 @@ contains
          end if
          o = status_outcome(self, capi_wear_compute(handle_of(self), handle_of(solver), p, pr))
       end if
-      if (present(errmsg)) errmsg = text(o)
+      if (present(errmsg)) call set_errmsg(o, errmsg)
       call deliver(o, stat)
    end subroutine wear_compute
 
@@ -116,7 +116,7 @@ contains
       o = created_map(self, shape(out))
       if (o%status == CW_OK) o = status_outcome(self, capi_wear_get_field( &
                                  handle_of(self), int(field, c_int), out, size(out, kind=c_size_t)))
-      if (present(errmsg)) errmsg = text(o)
+      if (present(errmsg)) call set_errmsg(o, errmsg)
       call deliver(o, stat)
    end subroutine wear_get_field_2d
 
@@ -130,7 +130,7 @@ contains
       o = created(self)
       if (o%status == CW_OK) o = status_outcome(self, capi_wear_get_field( &
                                  handle_of(self), int(field, c_int), out, size(out, kind=c_size_t)))
-      if (present(errmsg)) errmsg = text(o)
+      if (present(errmsg)) call set_errmsg(o, errmsg)
       call deliver(o, stat)
    end subroutine wear_get_field_1d
 
@@ -144,7 +144,7 @@ contains
       o = created_map(self, shape(out))
       if (o%status == CW_OK) o = status_outcome(self, capi_wear_get_regimes( &
                                  handle_of(self), out, size(out, kind=c_size_t)))
-      if (present(errmsg)) errmsg = text(o)
+      if (present(errmsg)) call set_errmsg(o, errmsg)
       call deliver(o, stat)
    end subroutine wear_get_regimes_2d
 
@@ -157,7 +157,7 @@ contains
       o = created(self)
       if (o%status == CW_OK) o = status_outcome(self, capi_wear_get_regimes( &
                                  handle_of(self), out, size(out, kind=c_size_t)))
-      if (present(errmsg)) errmsg = text(o)
+      if (present(errmsg)) call set_errmsg(o, errmsg)
       call deliver(o, stat)
    end subroutine wear_get_regimes_1d
 
@@ -187,7 +187,7 @@ contains
       o = created(self)
       if (o%status == CW_OK) o = status_outcome(self, capi_wear_get_strips(handle_of(self), &
                                                                            py, pw, pd, pp, n))
-      if (present(errmsg)) errmsg = text(o)
+      if (present(errmsg)) call set_errmsg(o, errmsg)
       call deliver(o, stat)
    end subroutine wear_get_strips
 
@@ -204,14 +204,14 @@ contains
          if (result%struct_size == 0) status = capi_wear_result_init(result)
          o = status_outcome(self, capi_wear_get_result(handle_of(self), result))
       end if
-      if (present(errmsg)) errmsg = text(o)
+      if (present(errmsg)) call set_errmsg(o, errmsg)
       call deliver(o, stat)
    end subroutine wear_get_result
 
    ! ====================================================== wear profile
 
    function profile_noun() result(s)
-      character(len=:), allocatable :: s
+      character(len=noun_length) :: s
       s = 'wear profile'
    end function profile_noun
 
@@ -227,11 +227,11 @@ contains
       type(outcome) :: o
       call self%destroy()
       buffer(1) = c_null_char
-      o = make_outcome(capi_wear_profile_create(s, size(s, kind=c_size_t), handle, buffer, &
-                                                size(buffer, kind=c_size_t)), buffer_string(buffer))
+      o = buffer_outcome(capi_wear_profile_create(s, size(s, kind=c_size_t), handle, buffer, &
+                                                size(buffer, kind=c_size_t)), buffer)
       if (o%status == CW_OK) call adopt(self, handle, capi_wear_profile_destroy, &
                                         capi_wear_profile_last_error, size(s), 1)
-      if (present(errmsg)) errmsg = text(o)
+      if (present(errmsg)) call set_errmsg(o, errmsg)
       call deliver(o, stat)
    end subroutine profile_create
 
@@ -242,7 +242,7 @@ contains
       type(outcome) :: o
       o = created(self)
       if (o%status == CW_OK) o = status_outcome(self, capi_wear_profile_reset(handle_of(self)))
-      if (present(errmsg)) errmsg = text(o)
+      if (present(errmsg)) call set_errmsg(o, errmsg)
       call deliver(o, stat)
    end subroutine profile_reset
 
@@ -263,7 +263,7 @@ contains
       if (o%status == CW_OK) o = status_outcome(self, capi_wear_profile_add( &
                                  handle_of(self), handle_of(wear), s0, int_or(orientation, 1_c_int), &
                                  real_or(contact_angle, 0.0_c_double), real_or(passes, 1.0_c_double)))
-      if (present(errmsg)) errmsg = text(o)
+      if (present(errmsg)) call set_errmsg(o, errmsg)
       call deliver(o, stat)
    end subroutine profile_add
 
@@ -281,13 +281,13 @@ contains
       o = created(self)
       if (o%status == CW_OK .and. (size(width) /= size(y) .or. size(depth) /= size(y))) &
          o = make_outcome(CW_ERR_INVALID_INPUT, 'y, width and depth have sizes '// &
-                          integer_text(size(y))//', '//integer_text(size(width))//', '// &
-                          integer_text(size(depth))//': they must be equal')
+                          trim(integer_text(size(y)))//', '//trim(integer_text(size(width)))// &
+                          ', '//trim(integer_text(size(depth)))//': they must be equal')
       if (o%status == CW_OK) o = status_outcome(self, capi_wear_profile_add_strips( &
                                  handle_of(self), y, width, depth, size(y, kind=c_size_t), s0, &
                                  int_or(orientation, 1_c_int), real_or(contact_angle, 0.0_c_double), &
                                  real_or(passes, 1.0_c_double)))
-      if (present(errmsg)) errmsg = text(o)
+      if (present(errmsg)) call set_errmsg(o, errmsg)
       call deliver(o, stat)
    end subroutine profile_add_strips
 
@@ -302,7 +302,7 @@ contains
       o = created(self)
       if (o%status == CW_OK) o = status_outcome(self, capi_wear_profile_get_depth( &
                                  handle_of(self), int(kind, c_int), out, size(out, kind=c_size_t)))
-      if (present(errmsg)) errmsg = text(o)
+      if (present(errmsg)) call set_errmsg(o, errmsg)
       call deliver(o, stat)
    end subroutine profile_get_depth
 
@@ -318,7 +318,7 @@ contains
          if (totals%struct_size == 0) status = capi_wear_profile_totals_init(totals)
          o = status_outcome(self, capi_wear_profile_get_totals(handle_of(self), totals))
       end if
-      if (present(errmsg)) errmsg = text(o)
+      if (present(errmsg)) call set_errmsg(o, errmsg)
       call deliver(o, stat)
    end subroutine profile_get_totals
 
@@ -333,7 +333,7 @@ contains
       if (o%status == CW_OK) o = created(from)
       if (o%status == CW_OK) o = status_outcome(self, capi_wear_profile_merge(handle_of(self), &
                                                                               handle_of(from)))
-      if (present(errmsg)) errmsg = text(o)
+      if (present(errmsg)) call set_errmsg(o, errmsg)
       call deliver(o, stat)
    end subroutine profile_merge
 
@@ -359,7 +359,7 @@ contains
       o = created(self)
       if (o%status == CW_OK) o = status_outcome(self, capi_wear_profile_get_state( &
                                  handle_of(self), state, size(state, kind=c_size_t)))
-      if (present(errmsg)) errmsg = text(o)
+      if (present(errmsg)) call set_errmsg(o, errmsg)
       call deliver(o, stat)
    end subroutine profile_get_state
 
@@ -373,7 +373,7 @@ contains
       o = created(self)
       if (o%status == CW_OK) o = status_outcome(self, capi_wear_profile_add_state( &
                                  handle_of(self), state, size(state, kind=c_size_t)))
-      if (present(errmsg)) errmsg = text(o)
+      if (present(errmsg)) call set_errmsg(o, errmsg)
       call deliver(o, stat)
    end subroutine profile_add_state
 
