@@ -19,6 +19,9 @@
 !           switch: FASTSIM or Kalker's exact theory (pressure, p_max and
 !           approach of its normal problem too)
 !   CWJACO  forces, moment, macro work and their 4 x 4 Jacobian (FASTSIM)
+!   CWFORC  forces, moment, macro work and adhesion only, on a solver kept
+!           per thread and grid shape: the call for time loops
+!   CWFREE  frees the calling thread's CWFORC solvers
 !   CWACCU  adds one time step's work into running totals (paper eqs. 35, 37)
 !   CWKALK  Kalker's creepage and spin coefficients C11, C22, C23, C33
 !   CWFLEX  Kalker's flexibilities L1, L2, L3 (for CWSOLL and CWFSIM)
@@ -41,6 +44,13 @@
 ! invalid: must lie in [0, 0.5]"); CALL CWLAST(MSG) reads it. Each thread has
 ! its own (legacy_thread_state.cpp), so threads do not see each other's.
 !
+! Cost: CWSOLM, CWSOLL, CWSOLX, CWJACO and CWWEAR make and free a solver in
+! every call and fill every map: no state, any grid from call to call, but
+! several times a forces-only solve on a reused solver (the benchmark
+! creepwork_bench_legacy measures both). CWFORC keeps one solver per grid
+! shape and thread and costs about that solve. Loops that want the maps
+! without the allocation use module creepwork (cw_solver_type).
+!
 ! Types -- the one thing Fortran 77 cannot check for you: every real
 ! argument is DOUBLE PRECISION (REAL*8, real(c_double)), every integer
 ! argument INTEGER*4 (integer(c_int)). A REAL (single precision) argument, or
@@ -53,10 +63,9 @@
 ! typing rule (I-N integer), so IMPLICIT DOUBLE PRECISION (A-H, O-Z) callers
 ! need no declarations except CHARACTER for CWERRM's and CWLAST's message.
 ! Arrays are dimensioned exactly (NX, NY) in the caller (element I along x,
-! the rolling direction, J along y), as in the C layout. Each CWSOLM/CWSOLL
-! call creates and frees its own solver: the routines keep no state but the
-! thread's message, and may be called from several threads at once. Loops
-! that want to avoid that allocation use module creepwork (cw_solver_type).
+! the rolling direction, J along y), as in the C layout. The routines keep no
+! state but the thread's message and CWFORC's solvers, and may be called
+! from several threads at once.
 !
 ! Floating-point traps: every routine is safe in a program built with
 ! -ffpe-trap=invalid,zero,overflow,denormal. The library's calls mask and
@@ -125,6 +134,8 @@ end subroutine CWFSIM
 !   WCON      energy-consistent local work [J/m], sums to WMAC   (NX, NY)
 !   ISTATE    0 exterior, 1 adhesion, 2 slip         (NX, NY)
 !   IERR      0 or a CW_* status
+! Cost: a solver made and freed and every map filled per call, several times
+! a reused solver's solve ("Cost" above); forces in a time loop: CWFORC.
 subroutine CWSOLM(A, B, FN, FMU, G, PNU, XI, ETA, PHI, NX, NY, FX, FY, FMZ, WMAC, WMIC, CK, &
                   PX, PY, SX, SY, ZMAP, WPAP, WCON, ISTATE, IERR)
    use, intrinsic :: iso_c_binding, only: c_double, c_int
@@ -259,3 +270,68 @@ subroutine CWJACO(A, B, FN, FMU, G, PNU, XI, ETA, PHI, NX, NY, FX, FY, FMZ, WMAC
    call remember(message)
    call solver%destroy()
 end subroutine CWJACO
+
+! Forces only, for time loops: the creep force, moment, macro work and
+! adhesion fraction of one contact as CWSOLM computes them (Kalker's strip
+! grid, parabolic pressure, flexibilities from G and PNU; bitwise the same
+! FX, FY, FMZ, WMAC), without the maps, on a solver the calling thread
+! keeps for the grid shape (NX, NY). The first call on a shape makes it (an
+! allocation, as every CWSOLM call does); later calls cost about a
+! forces-only solve on a reused C solver (creepwork_bench_legacy).
+!   A, B, FN, FMU, G, PNU, XI, ETA, PHI, NX, NY   as CWSOLM
+!   LOAD      0: the pressure law's analytic scale 2 FN/(pi A B), as CWSOLM
+!             (Kalker's algorithm; its discrete load differs from FN by up
+!             to a few tenths of a per cent); 1: the pressure scaled so that
+!             the discrete load sum(pz dA) is FN exactly, so that
+!             |F| <= FMU FN to rounding in saturation (cw_params.exact_load)
+! Outputs (on the wheel, as CWSOLM):
+!   FX, FY    creep force [N];  FMZ  creep moment about the centre [N m]
+!   WMAC      macro work -(FX XI + FY ETA + FMZ PHI) [J/m] (paper eq. 34)
+!   ADH       adhesion fraction: adhesion elements / contact elements [-]
+!   IERR      0 or a CW_* status (outputs unchanged)
+! Solvers kept: per thread, the last 4 grid shapes used (a fifth shape frees
+! the least recently used first), so a host that changes shape on every call
+! pays CWSOLM's allocation and never holds more than 4; a solver holds
+! about 0.2 kB per element (86 kB at 20 x 20, 170 MB at 1000 x 1000). They
+! are freed when the thread ends (the main thread's at program exit) or by
+! CALL CWFREE.
+subroutine CWFORC(A, B, FN, FMU, G, PNU, XI, ETA, PHI, NX, NY, LOAD, FX, FY, FMZ, WMAC, ADH, &
+                  IERR)
+   use, intrinsic :: iso_c_binding, only: c_double, c_int
+   use creepwork, only: cw_params, cw_grid, cw_grid_init, cw_result, cw_result_init, &
+                        CW_SOLVE_FORCES, CW_OK
+   use creepwork_legacy_support, only: check_normal, material_params, cwl_solve_cached
+   implicit none
+   real(c_double), intent(in) :: A, B, FN, FMU, G, PNU, XI, ETA, PHI
+   integer(c_int), intent(in) :: NX, NY, LOAD
+   real(c_double), intent(inout) :: FX, FY, FMZ, WMAC, ADH
+   integer(c_int), intent(out) :: IERR
+   type(cw_params) :: p
+   type(cw_grid) :: grid
+   type(cw_result) :: r
+   call check_normal([A, B, FN, FMU, G, PNU, XI, ETA, PHI], 'A B FN FMU G PNU XI ETA PHI', IERR)
+   if (IERR /= CW_OK) return
+   p = material_params(A, B, FN, FMU, G, PNU, XI, ETA, PHI)
+   p%exact_load = LOAD
+   call cw_grid_init(grid)
+   grid%nx = NX
+   grid%ny = NY
+   call cw_result_init(r)
+   ! The solve sets the thread's message (here '' or the detailed one).
+   IERR = cwl_solve_cached(grid, p, CW_SOLVE_FORCES, r)
+   if (IERR /= CW_OK) return
+   FX = r%Fx
+   FY = r%Fy
+   FMZ = r%Mz
+   WMAC = r%W_macro
+   ADH = r%adhesion_fraction
+end subroutine CWFORC
+
+! Frees the solvers CWFORC keeps for the calling thread (the next CWFORC
+! call makes one again): for a thread that is done with CWFORC but lives
+! on, or to give the memory back between the phases of a run.
+subroutine CWFREE()
+   use creepwork_legacy_support, only: cwl_free_solvers
+   implicit none
+   call cwl_free_solvers()
+end subroutine CWFREE

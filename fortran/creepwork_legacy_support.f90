@@ -1,5 +1,5 @@
 ! Shared by the legacy routines (creepwork_legacy*.f90), not for callers:
-!   the calling thread's last message (CWLAST), kept by
+!   the calling thread's last message (CWLAST) and CWFORC's solvers, kept by
 !   legacy_thread_state.cpp; the check that rejects subnormal inputs by
 !   name; the parameters and the solve of the dimensional entries.
 module creepwork_legacy_support
@@ -10,10 +10,10 @@ module creepwork_legacy_support
    private
    public :: legacy_solve, subnormal, flushed, material_params
    public :: check_normal, check_array, check_cells, check_range, remember, remember_error, real_text
-   public :: cwl_copy_message
+   public :: cwl_copy_message, cwl_solve_cached, cwl_free_solvers
 
    interface
-      ! legacy_thread_state.cpp: the calling thread's last message.
+      ! legacy_thread_state.cpp: the calling thread's last message ...
       subroutine cwl_set_message(text, length) bind(c, name='cwl_set_message')
          import :: c_char, c_size_t
          character(kind=c_char), intent(in) :: text(*)
@@ -25,6 +25,20 @@ module creepwork_legacy_support
          integer(c_size_t), value :: capacity
          integer(c_size_t) :: length
       end function cwl_copy_message
+      ! ... and its solvers, one per grid shape (at most 4, the least
+      ! recently used freed first): cw_solver_solve on the one for grid,
+      ! setting the thread's message.
+      function cwl_solve_cached(grid, params, mode, result) bind(c, name='cwl_solve_cached') &
+         result(status)
+         import :: c_int, cw_grid, cw_params, cw_result
+         type(cw_grid), intent(in) :: grid
+         type(cw_params), intent(in) :: params
+         integer(c_int), value :: mode
+         type(cw_result), intent(inout) :: result
+         integer(c_int) :: status
+      end function cwl_solve_cached
+      subroutine cwl_free_solvers() bind(c, name='cwl_free_solvers')
+      end subroutine cwl_free_solvers
    end interface
 
 contains
@@ -149,8 +163,8 @@ contains
    end function flushed
 
    ! The parameters of a dimensional legacy call with flexibilities from G
-   ! and PNU (CWSOLM, CWSOLX, CWJACO, CWWEAR): every other field at its
-   ! default.
+   ! and PNU (CWSOLM, CWSOLX, CWJACO, CWFORC, CWWEAR): every other field at
+   ! its default.
    function material_params(a, b, fn, fmu, g, pnu, xi, eta, phi) result(p)
       real(c_double), intent(in) :: a, b, fn, fmu, g, pnu, xi, eta, phi
       type(cw_params) :: p

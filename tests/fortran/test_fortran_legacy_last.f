@@ -11,6 +11,7 @@ C      - after a success the message is blank; CWERRM and CWLAST leave
 C        it unchanged;
 C      - CWSOLM with PNU = 0.6 names nu and its range, with NX = 0 nx;
 C      - a subnormal A (a REAL passed for DOUBLE PRECISION) names A;
+C      - CWFORC with LOAD = 2 names exact_load (0 or 1), with NY = 0 ny;
 C      - CWACCU with DIST = -1 names DIST.
       PROGRAM LEGLST
       IMPLICIT DOUBLE PRECISION (A-H, O-Z)
@@ -87,6 +88,25 @@ C     1D-300 * 1D-10 is subnormal: the pattern of a REAL argument.
       CALL CWLAST(MSG)
       CALL HAS('CWSOLM subnormal', MSG, 'A is a subnormal', NFAIL)
 C
+      CALL CWFORC(A, B, FN, FMU, G, 0.28D0, XI, ETA, PHI, NX, NY, 2,
+     &            FX, FY, FMZ, WMAC, ADH, IERR)
+      CALL CHECKI('CWFORC LOAD = 2', IERR, 2, NFAIL)
+      CALL CWLAST(MSG)
+      CALL HAS('CWFORC LOAD', MSG, 'exact_load', NFAIL)
+      CALL CWFORC(A, B, FN, FMU, G, 0.28D0, XI, ETA, PHI, NX, 0, 0,
+     &            FX, FY, FMZ, WMAC, ADH, IERR)
+      CALL CHECKI('CWFORC NY = 0', IERR, 3, NFAIL)
+      CALL CWLAST(MSG)
+      CALL HAS('CWFORC ny', MSG, 'ny = 0', NFAIL)
+      CALL CWFORC(A, B, FN, FMU, G, 0.28D0, XI, ETA, PHI, NX, NY, 0,
+     &            FX, FY, FMZ, WMAC, ADH, IERR)
+      CALL CHECKI('CWFORC', IERR, 0, NFAIL)
+      CALL CWLAST(MSG)
+      IF (MSG .NE. ' ') THEN
+         WRITE (*, *) 'CWLAST after CWFORC: ', MSG
+         NFAIL = NFAIL + 1
+      END IF
+      CALL CWFREE
 C
       DSUM = 0
       WMSUM = 0
