@@ -110,6 +110,59 @@ MUTANTS = [
 ]
 
 
+# ---------------------------------------------------------------------------
+# Fortran wrappers (issues 22, 26): module creepwork (fortran/creepwork_*.f90)
+# and the legacy layer (fortran/creepwork_legacy*.f90, legacy_thread_state.cpp).
+# Kept apart from the core's mutants above so that both lists can change
+# independently. The catchers compare against the C ABI bit for bit
+# (test_fortran_cross, test_fortran_legacy_threads), against published or
+# closed-form values, or check the message and the status.
+FORTRAN = [
+    "test_fortran_api", "test_fortran_sweep", "test_fortran_cross", "test_fortran_wear",
+    "test_fortran_exact", "test_fortran_jacobian", "test_fortran_exact_load",
+    "test_fortran_error_stop_invalid", "test_fortran_legacy_f77", "test_fortran_legacy_exact",
+    "test_fortran_legacy_last", "test_fortran_legacy_threads", "test_fortran_kalker1982",
+    "example_wear_loop_f77",
+]
+
+FORTRAN_MUTANTS = [
+    dict(id="f-size-minus-one", what="a wrapper passes size(out) - 1 as the buffer length",
+         file="fortran/creepwork_wear.f90",
+         old="handle_of(self), int(kind, c_int), out, size(out, kind=c_size_t)))",
+         new="handle_of(self), int(kind, c_int), out, size(out, kind=c_size_t) - 1))",
+         tests=FORTRAN),
+    dict(id="f-message-detail", what="errmsg keeps the static text, drops the detail naming the input",
+         file="fortran/creepwork_handle.f90",
+         old="            o%message = head//': '//detail", new="            o%message = head",
+         tests=FORTRAN),
+    dict(id="f-result-dropped", what="solve passes NULL for the caller's result",
+         file="fortran/creepwork_solver.f90",
+         old="                                 result_pointer(result)))",
+         new="                                 c_null_ptr))", tests=FORTRAN),
+    dict(id="f-swapped-creepages", what="legacy entries swap XI and ETA (dummy order)",
+         file="fortran/creepwork_legacy_support.f90",
+         old="function material_params(a, b, fn, fmu, g, pnu, xi, eta, phi) result(p)",
+         new="function material_params(a, b, fn, fmu, g, pnu, eta, xi, phi) result(p)",
+         tests=FORTRAN),
+    dict(id="f-swapped-normalised", what="the normalised FASTSIM wrapper swaps UX and UY",
+         file="fortran/creepwork_functions.f90",
+         old="capi_fastsim_normalised(ux, uy, fx, fy, int(mx, c_int), int(my, c_int), &",
+         new="capi_fastsim_normalised(uy, ux, fx, fy, int(mx, c_int), int(my, c_int), &",
+         tests=FORTRAN),
+    dict(id="f-load-dropped", what="CWFORC ignores LOAD (exact_load)",
+         file="fortran/creepwork_legacy.f90",
+         old="   p%exact_load = LOAD", new="   p%exact_load = 0", tests=FORTRAN),
+    dict(id="f-cache-key", what="CWFORC's solver cache ignores ny in the grid shape",
+         file="fortran/legacy_thread_state.cpp",
+         old="return a.kind == b.kind && a.nx == b.nx && a.ny == b.ny &&",
+         new="return a.kind == b.kind && a.nx == b.nx &&", tests=FORTRAN),
+    dict(id="f-cwlast-padding", what="CWLAST leaves MSG unpadded after the message",
+         file="fortran/creepwork_legacy_tools.f90",
+         old="   if (n < len(MSG)) MSG(n + 1:) = ' '", new="   continue", tests=FORTRAN),
+]
+MUTANTS = MUTANTS + FORTRAN_MUTANTS
+
+
 def run(cmd, cwd=None, quiet=True):
     r = subprocess.run(cmd, cwd=cwd, stdout=subprocess.PIPE if quiet else None,
                        stderr=subprocess.STDOUT if quiet else None, text=True)
