@@ -4,10 +4,8 @@
 # (creepwork_legacy.inc, as a "! CALL NAME(...)" comment and an EXTERNAL line;
 # creepwork_legacy.fi, as an interface body) and in the user documentation
 # (DOCS, the manual's pages: a "`CALL NAME(...)`" line followed by a table
-# row for every argument, in any one of them -- doc/fortran-legacy.md, and
-# doc/fortran-legacy-new-routines.md while its entries wait to be folded in;
-# pages that do not exist are skipped), and nothing else may be documented
-# there.
+# row for every argument, in any one of them; pages that do not exist are
+# skipped), and nothing else may be documented there.
 # usage: cmake -DSOURCE="a.f90;b.f90" -DINC=... -DFI=... -DDOCS="x.md;y.md"
 #              -P check_legacy_docs.cmake
 cmake_minimum_required(VERSION 3.25)
