@@ -18,58 +18,18 @@
 #include <string>
 #include <vector>
 
-#include <fcntl.h>
-#include <spawn.h>
-#include <sys/wait.h>
-#include <unistd.h>
-
 #include <creepwork/creepwork.h>
 
-#include "cli_runner.hpp"
-#include "json_reader.hpp"
+#include "cli_checks.hpp"
 // Last: cmocka defines macros (fail, skip) that clash with the C++ library.
 #include "test_support.h"
 
-extern char** environ;
-
 namespace fs = std::filesystem;
-using cwtest::Json;
+using namespace cwtest;
 
 namespace {
 
-std::string g_cli, g_scratch;
 const double kLbf = 4.4482216152605, kFt = 0.3048, kPsi = 4.4482216152605 / (0.0254 * 0.0254);
-
-using cli_test::Run;
-using cli_test::slurp;
-// Runs the CLI with args, capturing stdout and stderr.
-Run run_cli(const std::vector<std::string>& args)
-{
-    return cli_test::run_program(g_cli, g_scratch, args);
-}
-
-Json parse_or_fail(const std::string& text)
-{
-    try {
-        return cwtest::parse_json(text);
-    } catch (const std::exception& e) {
-        print_error("%s\n--- output ---\n%s\n", e.what(), text.c_str());
-        fail();
-    }
-    return Json();
-}
-
-Run run_ok(const std::vector<std::string>& args)
-{
-    return cli_test::run_program_ok(g_cli, g_scratch, args);
-}
-
-std::string num(double v)
-{
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.17g", v);
-    return buf;
-}
 
 // A case given both as CLI options (SI) and as the C structs the library sees.
 struct Case {
@@ -127,11 +87,6 @@ cw_result library_solve(const Case& c, cw_solver** keep = nullptr)
     return r;
 }
 
-std::vector<std::string> with(std::vector<std::string> a, const std::vector<std::string>& b)
-{
-    a.insert(a.end(), b.begin(), b.end());
-    return a;
-}
 
 // clang-format off
 const char* const kRequiredKeys[] = {
@@ -144,7 +99,7 @@ const char* const kRequiredKeys[] = {
 void json_matches_library(void**)
 {
     for (const Case& c : cases()) {
-        const Run r = run_ok(with({"solve", "--format", "json"}, c.args));
+        const Run r = cli_ok(with({"solve", "--format", "json"}, c.args));
         const Json j = parse_or_fail(r.out);
         const cw_result lib = library_solve(c);
         // %.17g round-trips: the CLI's values are the library's, bit for bit.
@@ -177,7 +132,7 @@ void json_matches_library(void**)
 void json_keys_and_identities(void**)
 {
     for (const Case& c : cases()) {
-        const Json j = parse_or_fail(run_ok(with({"solve", "--format", "json"}, c.args)).out);
+        const Json j = parse_or_fail(cli_ok(with({"solve", "--format", "json"}, c.args)).out);
         for (const char* key : kRequiredKeys) {
             if (!j.has(key)) print_error("missing key %s\n", key);
             assert_true(j.has(key) && j.at(key).type == Json::Type::number);
@@ -195,7 +150,7 @@ void json_keys_and_identities(void**)
                      0.0);
     }
     // Text output is the default and names the sign convention.
-    const Run t = run_ok({"solve", "--a", "0.006", "--b", "0.006", "--N", "80000", "--xi-x", "0.001"});
+    const Run t = cli_ok({"solve", "--a", "0.006", "--b", "0.006", "--N", "80000", "--xi-x", "0.001"});
     assert_non_null(std::strstr(t.out.c_str(), "on the wheel"));
 }
 
@@ -209,10 +164,10 @@ struct Bad {
 
 void bad_inputs_fail_cleanly(void**)
 {
-    const std::string foreign = g_scratch + "/foreign";
+    const std::string foreign = g_tools.scratch + "/foreign";
     fs::create_directories(foreign);
     std::ofstream(foreign + "/precious.txt") << "keep me\n";
-    const std::string a_file = g_scratch + "/a_file";
+    const std::string a_file = g_tools.scratch + "/a_file";
     std::ofstream(a_file) << "x\n";
     const std::vector<Bad> bad = {
         {{"solve", "--bogus", "1"}, "--bogus"},
@@ -267,7 +222,7 @@ void bad_inputs_fail_cleanly(void**)
         {{"fit-fig6", "--ny", "0"}, "--ny"},
         {{"frobnicate"}, "frobnicate", false},
     };
-    const std::string never = g_scratch + "/never";
+    const std::string never = g_tools.scratch + "/never";
     for (const Bad& b : bad) {
         std::vector<std::string> args = b.args;
         // solve needs a size and load: give them unless the case is about
@@ -282,49 +237,26 @@ void bad_inputs_fail_cleanly(void**)
                 if (!given(o)) args.insert(args.end(), {o, std::string(o) == "--N" ? "80000" : "0.006"});
         if (b.add_out && std::find(args.begin(), args.end(), std::string("--out")) == args.end())
             args.insert(args.end(), {"--out", never});
-        const Run r = run_cli(args);
-        std::string shown;
-        for (const std::string& a : args) shown += a + " ";
-        if (r.status != 2 || std::count(r.err.begin(), r.err.end(), '\n') != 1 ||
-            r.err.back() != '\n' || r.err.find(b.names) == std::string::npos || !r.out.empty())
-            print_error("creepwork %s-> exit %d, stderr '%s', stdout '%s'\n", shown.c_str(),
-                        r.status, r.err.c_str(), r.out.c_str());
-        assert_int_equal(r.status, 2);
-        assert_int_equal(std::count(r.err.begin(), r.err.end(), '\n'), 1);
-        assert_true(r.err.rfind("creepwork: ", 0) == 0);
-        assert_true(r.err.find(b.names) != std::string::npos);
-        assert_true(r.out.empty());
+        std::string shown = "creepwork";
+        for (const std::string& a : args) shown += " " + a;
+        expect_refusal(cli(args), 2, b.names, shown);
         assert_false(fs::exists(never));
     }
     // Nothing half-written: no staging directories left behind, the foreign
     // directory untouched.
-    for (const auto& e : fs::directory_iterator(g_scratch))
+    for (const auto& e : fs::directory_iterator(g_tools.scratch))
         assert_true(e.path().filename().string().find(".tmp-") == std::string::npos);
     assert_string_equal(slurp(foreign + "/precious.txt").c_str(), "keep me\n");
 }
 
 /* ---------------------------------------------------------------- --out */
 
-std::vector<std::vector<std::string>> read_csv(const std::string& path)
-{
-    std::vector<std::vector<std::string>> rows;
-    std::ifstream f(path);
-    std::string line;
-    while (std::getline(f, line)) {
-        std::vector<std::string> cells;
-        std::stringstream s(line);
-        std::string cell;
-        while (std::getline(s, cell, ',')) cells.push_back(cell);
-        rows.push_back(cells);
-    }
-    return rows;
-}
 
 void out_writes_every_field(void**)
 {
     const Case c = cases()[0];
-    const std::string dir = g_scratch + "/solve_out";
-    run_ok(with({"solve", "--no-plots", "--out", dir}, c.args));
+    const std::string dir = g_tools.scratch + "/solve_out";
+    cli_ok(with({"solve", "--no-plots", "--out", dir}, c.args));
     const auto rows = read_csv(dir + "/fields.csv");
     // Every column names its unit, and the body the forces act on.
     const std::vector<std::string> header = {
@@ -373,12 +305,12 @@ void out_writes_every_field(void**)
     assert_true(fs::exists(dir + "/.creepwork-output"));
     // A second run does not replace the first's output unless asked to,
     // and says where it wrote.
-    const Run again = run_cli(with({"solve", "--no-plots", "--nx", "5", "--ny", "4", "--out", dir},
+    const Run again = cli(with({"solve", "--no-plots", "--nx", "5", "--ny", "4", "--out", dir},
                                    {c.args.begin(), c.args.begin() + 6}));
     assert_int_equal(again.status, 2);
     assert_non_null(std::strstr(again.err.c_str(), "--force"));
     assert_true(read_csv(dir + "/fields.csv").size() == 1u + static_cast<size_t>(c.grid.nx * c.grid.ny));
-    const Run forced = run_ok(with({"solve", "--no-plots", "--nx", "5", "--ny", "4", "--force",
+    const Run forced = cli_ok(with({"solve", "--no-plots", "--nx", "5", "--ny", "4", "--force",
                                     "--out", dir},
                                    {c.args.begin(), c.args.begin() + 6}));
     assert_int_equal(read_csv(dir + "/fields.csv").size(), 1u + 20u);
@@ -392,16 +324,16 @@ void paper_units_round_trip(void**)
     // The same contact in SI and in the paper's units (ft, lbf, psi, 1/ft).
     const double a = 0.0071, b = 0.0043, N = 52000, G = 8.1e10, spin = 0.9;
     const Json si = parse_or_fail(
-        run_ok({"solve",  "--format", "json",    "--a",  num(a), "--b",    num(b),   "--N",
-                num(N),   "--G",      num(G),    "--mu", "0.5",  "--xi-x", "0.0012", "--xi-y",
-                "0.0007", "--spin",   num(spin), "--nx", "12",   "--ny",   "10"})
+        cli_ok({"solve",  "--format", "json",    "--a",  exact(a), "--b",    exact(b),   "--N",
+                exact(N),   "--G",      exact(G),    "--mu", "0.5",  "--xi-x", "0.0012", "--xi-y",
+                "0.0007", "--spin",   exact(spin), "--nx", "12",   "--ny",   "10"})
             .out);
     const Json us =
-        parse_or_fail(run_ok({"solve",         "--format",   "json",        "--units",    "paper",
-                              "--a",           num(a / kFt), "--b",         num(b / kFt), "--N",
-                              num(N / kLbf),   "--G",        num(G / kPsi), "--mu",       "0.5",
+        parse_or_fail(cli_ok({"solve",         "--format",   "json",        "--units",    "paper",
+                              "--a",           exact(a / kFt), "--b",         exact(b / kFt), "--N",
+                              exact(N / kLbf),   "--G",        exact(G / kPsi), "--mu",       "0.5",
                               "--xi-x",        "0.0012",     "--xi-y",      "0.0007",     "--spin",
-                              num(spin * kFt), "--nx",       "12",          "--ny",       "10"})
+                              exact(spin * kFt), "--nx",       "12",          "--ny",       "10"})
                           .out);
     assert_string_equal(us.at("units").string.c_str(), "paper");
     assert_string_equal(us.at("unit_of").at("G").string.c_str(), "psi");
@@ -436,11 +368,11 @@ bool is_png(const std::string& path)
 void out_writes_pictures(void**)
 {
     if (std::getenv("CW_TEST_NO_GNUPLOT")) cw_skip();
-    const std::string dir = g_scratch + "/pictures";
+    const std::string dir = g_tools.scratch + "/pictures";
     const std::vector<std::string> contact = {"--a", "0.008", "--b", "0.004", "--N", "80000",
                                               "--xi-x", "0.001", "--xi-y", "0.0005", "--spin",
                                               "1", "--nx", "10", "--ny", "10"};
-    run_ok(with({"solve", "--out", dir}, contact));
+    cli_ok(with({"solve", "--out", dir}, contact));
     for (const char* png : {"patch.png", "slip_adhesion.png", "work.png", "traction_x.png",
                             "traction_y.png", "slip_x.png", "slip_y.png", "moment.png",
                             "utilisation.png", "work_paper.png", "profile.png"}) {
@@ -458,7 +390,7 @@ void out_writes_pictures(void**)
     assert_non_null(std::strstr(gp.c_str(), "($5 == 2 ? $1 : NaN)"));
     assert_non_null(std::strstr(gp.c_str(), "ellipse at 0,0 size 2,2 "));
     // On request: the rail's sign, and the 2:1 patch as a 16 x 8 mm ellipse.
-    run_ok(with({"solve", "--out", dir, "--force", "--plot-sign", "rail", "--plot-axes",
+    cli_ok(with({"solve", "--out", dir, "--force", "--plot-sign", "rail", "--plot-axes",
                  "physical"},
                 contact));
     const std::string rail = slurp(dir + "/gnuplot/patch.gp");
@@ -472,18 +404,18 @@ void out_writes_pictures(void**)
 // (exit 0) with one warning each on stderr; choices are not case sensitive.
 void warns_and_accepts_any_case(void**)
 {
-    const Run r = run_ok({"solve", "--a", "7.2", "--b", "5.4", "--N", "100e3", "--xi-x", "1e-3",
+    const Run r = cli_ok({"solve", "--a", "7.2", "--b", "5.4", "--N", "100e3", "--xi-x", "1e-3",
                           "--mu", "0.3", "--G", "8.2e10", "--nu", "0.28"});
     assert_non_null(std::strstr(r.err.c_str(), "warning: --a = 7.2 m is implausible"));
     assert_non_null(std::strstr(r.err.c_str(), "warning: --b = 5.4 m is implausible"));
     assert_null(std::strstr(r.err.c_str(), "note: not given"));
-    const Run g = run_ok({"solve", "--a", "6e-3", "--b", "6e-3", "--N", "80e3", "--G", "82000",
+    const Run g = cli_ok({"solve", "--a", "6e-3", "--b", "6e-3", "--N", "80e3", "--G", "82000",
                           "--xi-x", "0.7", "--spin", "200"});
     for (const char* opt : {"--G = 82000 Pa", "--xi-x = 0.7", "--spin = 200 1/m"})
         assert_non_null(std::strstr(g.err.c_str(), opt));
     // The defaults taken for mu and nu are named.
     assert_non_null(std::strstr(g.err.c_str(), "note: not given, so the library's defaults"));
-    const Json j = parse_or_fail(run_ok({"solve", "--a", "6e-3", "--b", "6e-3", "--N", "80e3",
+    const Json j = parse_or_fail(cli_ok({"solve", "--a", "6e-3", "--b", "6e-3", "--N", "80e3",
                                          "--units", "SI", "--grid", "Uniform", "--pressure",
                                          "Elliptic", "--format", "JSON", "--nx", "8", "--ny", "8"})
                                      .out);
@@ -492,11 +424,11 @@ void warns_and_accepts_any_case(void**)
 
 void sweep_writes_maps(void**)
 {
-    const std::string dir = g_scratch + "/sweep";
+    const std::string dir = g_tools.scratch + "/sweep";
     std::vector<std::string> args = {"sweep",    "--nx", "10",    "--ny", "10",
                                      "--format", "json", "--out", dir};
     if (std::getenv("CW_TEST_NO_GNUPLOT")) args.push_back("--no-plots");
-    const Json j = parse_or_fail(run_ok(args).out);
+    const Json j = parse_or_fail(cli_ok(args).out);
     const size_t n = j.at("cases").array.size();
     assert_true(n >= 24);
     assert_int_equal(read_csv(dir + "/cases.csv").size(), n + 1);
@@ -516,7 +448,7 @@ void sweep_writes_maps(void**)
 
 void fit_fig6_reproduces_the_paper(void**)
 {
-    const Json j = parse_or_fail(run_ok({"fit-fig6", "--units", "paper", "--format", "json"}).out);
+    const Json j = parse_or_fail(cli_ok({"fit-fig6", "--units", "paper", "--format", "json"}).out);
     // The paper's printed numbers (on the rail; ours on the wheel), with the
     // agreement doc/validation/paper.md claims; our values themselves to
     // the digits it prints (half a unit of the last one). Fit: nu = 0.3,
@@ -570,7 +502,7 @@ void fit_fig6_reproduces_the_paper(void**)
 void fit_fig6_choices(void**)
 {
     const double mm = 1e-3 / 0.3048; // JSON lengths in ft with --units paper
-    const Json base = parse_or_fail(run_ok({"fit-fig6", "--units", "paper", "--format", "json"}).out);
+    const Json base = parse_or_fail(cli_ok({"fit-fig6", "--units", "paper", "--format", "json"}).out);
     const Json& f6 = base.at("fig6");
     assert_int_equal(f6.at("minima").array.size(), 2);
     assert_int_equal(static_cast<long>(f6.num("chosen_minimum")), 0);
@@ -595,7 +527,7 @@ void fit_fig6_choices(void**)
     };
     assert_true(worst(base) <= 0.017); // 1.63 %
     const Json nu25 = parse_or_fail(
-        run_ok({"fit-fig6", "--units", "paper", "--format", "json", "--nu", "0.25"}).out);
+        cli_ok({"fit-fig6", "--units", "paper", "--format", "json", "--nu", "0.25"}).out);
     assert_close(nu25.at("fig6").at("minima").array[0].num("rms_misfit_lbf"), 4.5, 0.0, 0.05);
     assert_true(worst(nu25) > 0.03 && worst(nu25) <= 0.031); // 3.07 %
     // The grid: 9 x 9 and 11 x 11 miss the printed K (1.602, 1.424).
@@ -604,7 +536,7 @@ void fit_fig6_choices(void**)
         double K6, K7;
     } grids[] = {{"9", 1.736, 1.462}, {"11", 1.546, 1.369}};
     for (const auto& g : grids) {
-        const Json j = parse_or_fail(run_ok({"fit-fig6", "--units", "paper", "--format", "json",
+        const Json j = parse_or_fail(cli_ok({"fit-fig6", "--units", "paper", "--format", "json",
                                              "--nx", g.n, "--ny", g.n})
                                          .out);
         assert_close(j.at("fig6").at("result").num("K"), g.K6, 0.0, 5e-4);
@@ -616,14 +548,7 @@ void fit_fig6_choices(void**)
 
 int main(int argc, char** argv)
 {
-    if (argc < 3) {
-        std::fprintf(stderr, "usage: test_cli <creepwork> <scratch dir> [filter]\n");
-        return 2;
-    }
-    g_cli = argv[1];
-    g_scratch = argv[2];
-    fs::remove_all(g_scratch);
-    fs::create_directories(g_scratch);
+    if (!set_up(argc, argv, "test_cli", {"creepwork", "scratch"})) return 2;
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(json_matches_library),    cmocka_unit_test(json_keys_and_identities),
         cmocka_unit_test(bad_inputs_fail_cleanly), cmocka_unit_test(out_writes_every_field),
@@ -633,5 +558,5 @@ int main(int argc, char** argv)
     };
     // One test per CTest entry, by exact name (cw_run_tests refuses a name
     // that matches none); a test that cannot run here reports SKIP.
-    return cw_run_tests(tests, argc > 3 ? argv[3] : nullptr);
+    return cw_run_tests(tests, g_tools.test);
 }

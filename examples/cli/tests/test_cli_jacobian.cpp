@@ -17,50 +17,22 @@
 #include <string>
 #include <vector>
 
-#include <fcntl.h>
-#include <spawn.h>
-#include <sys/wait.h>
-#include <unistd.h>
-
 #include <creepwork/creepwork.h>
 
-#include "cli_runner.hpp"
-#include "json_reader.hpp"
+#include "cli_checks.hpp"
 // Last: cmocka defines macros (fail, skip) that clash with the C++ library.
 #include "test_support.h"
 
-extern char** environ;
-
 namespace fs = std::filesystem;
+using namespace cwtest;
 
 namespace {
-
-std::string g_cli, g_scratch;
-
-using cli_test::Run;
-using cli_test::slurp;
-Run run_cli(const std::vector<std::string>& args)
-{
-    return cli_test::run_program(g_cli, g_scratch, args);
-}
-
-Run run_ok(const std::vector<std::string>& args)
-{
-    return cli_test::run_program_ok(g_cli, g_scratch, args);
-}
-
-std::string exact(double v)
-{
-    char s[40];
-    std::snprintf(s, sizeof s, "%.17g", v);
-    return s;
-}
 
 // The contact of the test (SI): partial slip with spin, rolling towards -x,
 // elliptic pressure on the uniform grid.
 const double kXi[3] = {1e-3, -6e-4, 0.3}; // xi_x, xi_y, phi
 
-cwtest::Json solve_json(const double xi[3], double N, bool jacobian)
+Json solve_json(const double xi[3], double N, bool jacobian)
 {
     std::vector<std::string> args = {"solve", "--a", "6e-3", "--b", "5e-3", "--N", exact(N),
                                      "--xi-x", exact(xi[0]), "--xi-y", exact(xi[1]), "--spin",
@@ -68,13 +40,13 @@ cwtest::Json solve_json(const double xi[3], double N, bool jacobian)
                                      "elliptic", "--grid", "uniform", "--nx", "24", "--ny", "20",
                                      "--format", "json"};
     if (jacobian) args.push_back("--jacobian");
-    return cwtest::parse_json(run_ok(args).out);
+    return parse_json(cli_ok(args).out);
 }
 
 void json_matches_library_and_differences(void**)
 {
     const double N = 80e3;
-    const cwtest::Json j = solve_json(kXi, N, true);
+    const Json j = solve_json(kXi, N, true);
     const char* rows[4] = {"Fx", "Fy", "Mz", "W_macro"};
     const char* cols[4] = {"xi_x", "xi_y", "phi", "N"};
 
@@ -119,7 +91,7 @@ void json_matches_library_and_differences(void**)
             Nu += h;
             Nd -= h;
         }
-        const cwtest::Json ju = solve_json(up, Nu, false), jd = solve_json(down, Nd, false);
+        const Json ju = solve_json(up, Nu, false), jd = solve_json(down, Nd, false);
         assert_false(ju.has("jacobian"));
         assert_true(ju.num("n_slip") == j.num("n_slip") && jd.num("n_slip") == j.num("n_slip"));
         for (int row = 0; row < 4; ++row) {
@@ -134,12 +106,12 @@ void json_matches_library_and_differences(void**)
 
 void text_has_a_table(void**)
 {
-    const Run r = run_ok({"solve", "--a", "6e-3", "--b", "6e-3", "--N", "80e3", "--xi-x", "1e-3",
+    const Run r = cli_ok({"solve", "--a", "6e-3", "--b", "6e-3", "--N", "80e3", "--xi-x", "1e-3",
                           "--jacobian"});
     assert_non_null(std::strstr(r.out.c_str(), "jacobian   (SI)"));
     assert_non_null(std::strstr(r.out.c_str(), "W_macro"));
     // No load: the Jacobian is refused with the library's message (status 1).
-    const Run bad = run_cli({"solve", "--a", "6e-3", "--b", "6e-3", "--N", "0", "--xi-x", "1e-3",
+    const Run bad = cli({"solve", "--a", "6e-3", "--b", "6e-3", "--N", "0", "--xi-x", "1e-3",
                              "--jacobian"});
     assert_int_not_equal(bad.status, 0);
     assert_non_null(std::strstr(bad.err.c_str(), "normal_force"));
@@ -149,17 +121,10 @@ void text_has_a_table(void**)
 
 int main(int argc, char** argv)
 {
-    if (argc < 3) {
-        std::fprintf(stderr, "usage: test_cli_jacobian <creepwork> <scratch dir> [filter]\n");
-        return 2;
-    }
-    g_cli = argv[1];
-    g_scratch = argv[2];
-    fs::remove_all(g_scratch);
-    fs::create_directories(g_scratch);
+    if (!set_up(argc, argv, "test_cli_jacobian", {"creepwork", "scratch"})) return 2;
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(json_matches_library_and_differences),
         cmocka_unit_test(text_has_a_table),
     };
-    return cw_run_tests(tests, argc > 3 ? argv[3] : nullptr);
+    return cw_run_tests(tests, g_tools.test);
 }

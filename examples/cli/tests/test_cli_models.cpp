@@ -27,72 +27,16 @@
 #include <string>
 #include <vector>
 
-#include <fcntl.h>
-#include <spawn.h>
-#include <sys/wait.h>
-#include <unistd.h>
-
 #include <creepwork/creepwork.h>
 
-#include "cli_runner.hpp"
-#include "json_reader.hpp"
+#include "cli_checks.hpp"
 // Last: cmocka defines macros (fail, skip) that clash with the C++ library.
 #include "test_support.h"
 
-extern char** environ;
-
 namespace fs = std::filesystem;
-using cwtest::Json;
+using namespace cwtest;
 
 namespace {
-
-std::string g_cli, g_scratch;
-
-using cli_test::Run;
-using cli_test::slurp;
-Run run_cli(const std::vector<std::string>& args)
-{
-    return cli_test::run_program(g_cli, g_scratch, args);
-}
-
-Run run_ok(const std::vector<std::string>& args)
-{
-    return cli_test::run_program_ok(g_cli, g_scratch, args);
-}
-
-Json parse_or_fail(const std::string& text)
-{
-    try {
-        return cwtest::parse_json(text);
-    } catch (const std::exception& e) {
-        print_error("%s\n--- output ---\n%s\n", e.what(), text.c_str());
-        fail();
-    }
-    return Json();
-}
-
-std::vector<std::string> with(std::vector<std::string> a, const std::vector<std::string>& b)
-{
-    a.insert(a.end(), b.begin(), b.end());
-    return a;
-}
-
-// CSV rows as numbers (the header dropped); the CLI writes exact doubles.
-std::vector<std::vector<double>> read_numbers(const std::string& path)
-{
-    std::vector<std::vector<double>> rows;
-    std::ifstream f(path);
-    std::string line;
-    std::getline(f, line);
-    while (std::getline(f, line)) {
-        std::vector<double> row;
-        std::stringstream s(line);
-        std::string cell;
-        while (std::getline(s, cell, ',')) row.push_back(std::strtod(cell.c_str(), nullptr));
-        rows.push_back(row);
-    }
-    return rows;
-}
 
 // One contact given as CLI options and as the structs the library sees.
 struct Contact {
@@ -116,17 +60,6 @@ Contact spin_contact(int model)
     return c;
 }
 
-cw_result library_solve(const cw_grid& g, const cw_params& p)
-{
-    cw_solver* s = nullptr;
-    assert_int_equal(cw_solver_create(&g, &s, nullptr, 0), CW_OK);
-    cw_result r;
-    cw_result_init(&r);
-    assert_int_equal(cw_solver_solve(s, &p, CW_SOLVE_FULL, &r), CW_OK);
-    cw_solver_destroy(s);
-    return r;
-}
-
 void same(double cli, double lib, const char* what)
 {
     if (cli != lib) print_error("%s: CLI %.17g, library %.17g\n", what, cli, lib);
@@ -142,7 +75,7 @@ void solve_calibrated_matches_library(void**)
     Contact c = spin_contact(CW_MODEL_CALIBRATED);
     c.grid.kind = CW_GRID_KALKER_STRIPS, c.grid.nx = 20, c.grid.ny = 20;
     const Json j = parse_or_fail(
-        run_ok(with({"solve", "--model", "calibrated", "--format", "json"}, c.args)).out);
+        cli_ok(with({"solve", "--model", "calibrated", "--format", "json"}, c.args)).out);
     const cw_result lib = library_solve(c.grid, c.params);
     same(j.num("Fx"), lib.Fx, "Fx");
     same(j.num("Fy"), lib.Fy, "Fy");
@@ -158,7 +91,7 @@ void solve_exact_matches_library(void**)
     Contact c = spin_contact(CW_MODEL_EXACT);
     // The documented default grid of --model exact: CONTACT's layout.
     c.grid.kind = CW_GRID_UNIFORM, c.grid.nx = 24, c.grid.ny = 24, c.grid.box_scale = 1.2;
-    const Json j = parse_or_fail(run_ok(with({"solve", "--model", "exact", "--format", "json"},
+    const Json j = parse_or_fail(cli_ok(with({"solve", "--model", "exact", "--format", "json"},
                                              c.args)).out);
     const cw_result lib = library_solve(c.grid, c.params);
     const struct {
@@ -189,7 +122,7 @@ void solve_exact_matches_library(void**)
     Contact t = c;
     t.grid.nx = 16, t.grid.ny = 14, t.grid.box_scale = 1.1;
     t.params.tolerance = 1e-11, t.params.max_iterations = 40;
-    const Json k = parse_or_fail(run_ok(with({"solve", "--model", "exact", "--format", "json",
+    const Json k = parse_or_fail(cli_ok(with({"solve", "--model", "exact", "--format", "json",
                                               "--tolerance", "1e-11", "--max-iterations", "40",
                                               "--grid", "uniform", "--nx", "16", "--ny", "14",
                                               "--box-scale", "1.1"},
@@ -199,14 +132,14 @@ void solve_exact_matches_library(void**)
     same(k.num("Mz"), tight.Mz, "Mz (tolerance 1e-11)");
     assert_true(k.num("residual") <= 1e-11);
     // FASTSIM says so, and has no iterations.
-    const Json f = parse_or_fail(run_ok(with({"solve", "--model", "fastsim", "--format", "json"},
+    const Json f = parse_or_fail(cli_ok(with({"solve", "--model", "fastsim", "--format", "json"},
                                              c.args)).out);
     assert_string_equal(f.at("model").string.c_str(), "fastsim");
     assert_int_equal(static_cast<int>(f.num("iterations")), 0);
     assert_true(f.num("residual") == 0.0);
     assert_string_equal(f.at("input").at("grid").string.c_str(), "strips");
     // Text output names the model and the normal problem's results.
-    const Run text = run_ok(with({"solve", "--model", "exact"}, c.args));
+    const Run text = cli_ok(with({"solve", "--model", "exact"}, c.args));
     assert_non_null(std::strstr(text.out.c_str(), "model      exact"));
     assert_non_null(std::strstr(text.out.c_str(), "p_max = "));
 }
@@ -239,7 +172,7 @@ void model_bad_inputs_fail_cleanly(void**)
         {{"solve", "--model", "exact", "--max-iterations", "1", "--tolerance", "1e-13", "--xi-x",
           "1e-3", "--spin", "1"},
          "--max-iterations"},
-        {{"sweep", "--model", "exact", "--grid", "strips", "--out", g_scratch + "/never"},
+        {{"sweep", "--model", "exact", "--grid", "strips", "--out", g_tools.scratch + "/never"},
          "--grid"},
         {{"compare", "--grid", "strips"}, "--grid"},
         {{"compare", "--L1", "1e-11", "--L2", "1e-11", "--L3", "1e-11"}, "--L1"},
@@ -253,23 +186,14 @@ void model_bad_inputs_fail_cleanly(void**)
     for (const Bad& b : bad) {
         std::vector<std::string> args = b.args;
         if (args[0] == "solve") args.insert(args.end(), contact.begin(), contact.end());
-        const Run r = run_cli(args);
-        std::string shown;
-        for (const std::string& a : args) shown += a + " ";
-        if (r.status != 2 || std::count(r.err.begin(), r.err.end(), '\n') != 1 ||
-            r.err.find(b.names) == std::string::npos || !r.out.empty())
-            print_error("creepwork %s-> exit %d, stderr '%s'\n", shown.c_str(), r.status,
-                        r.err.c_str());
-        assert_int_equal(r.status, 2);
-        assert_int_equal(std::count(r.err.begin(), r.err.end(), '\n'), 1);
-        assert_true(r.err.rfind("creepwork: ", 0) == 0);
-        assert_true(r.err.find(b.names) != std::string::npos);
-        assert_true(r.out.empty());
+        std::string shown = "creepwork";
+        for (const std::string& a : args) shown += " " + a;
+        expect_refusal(cli(args), 2, b.names, shown);
     }
-    assert_false(fs::exists(g_scratch + "/never"));
+    assert_false(fs::exists(g_tools.scratch + "/never"));
     // The calibrated model's refusal is the library's message, not a crash or a guess;
     // with G and nu it solves.
-    const Run cal = run_cli(
+    const Run cal = cli(
         with({"solve", "--model", "calibrated", "--L1", "1e-11", "--L2", "1e-11", "--L3", "1e-11"},
              contact));
     assert_non_null(std::strstr(cal.err.c_str(), "library rejected the input"));
@@ -281,12 +205,12 @@ void model_bad_inputs_fail_cleanly(void**)
 // the pictures drawn from them without the exterior elements.
 void solve_exact_writes_fields_and_pictures(void**)
 {
-    const std::string dir = g_scratch + "/exact_out";
+    const std::string dir = g_tools.scratch + "/exact_out";
     const Contact c = spin_contact(CW_MODEL_EXACT);
     std::vector<std::string> args = with({"solve", "--model", "exact", "--out", dir}, c.args);
     const bool pictures = !std::getenv("CW_TEST_NO_GNUPLOT");
     if (!pictures) args.push_back("--no-plots");
-    run_ok(args);
+    cli_ok(args);
     const auto rows = read_numbers(dir + "/fields.csv"); // i,j,x,y,area,state,...,work_consistent
     assert_int_equal(rows.size(), 24u * 24u);
     const int nx = 24, ny = 24;
@@ -340,8 +264,8 @@ void solve_exact_writes_fields_and_pictures(void**)
 // warm and cold agree to ~1e-10 of |F|).
 void sweep_exact_model(void**)
 {
-    const std::string dir = g_scratch + "/sweep";
-    const Json j = parse_or_fail(run_ok({"sweep", "--model", "exact", "--nx", "12", "--ny", "12",
+    const std::string dir = g_tools.scratch + "/sweep";
+    const Json j = parse_or_fail(cli_ok({"sweep", "--model", "exact", "--nx", "12", "--ny", "12",
                                          "--format", "json", "--no-plots", "--out", dir})
                                      .out);
     const auto& cases = j.at("cases").array;
@@ -392,9 +316,9 @@ double l1(const std::vector<double>& a, const std::vector<double>& b)
 
 void compare_metrics_from_its_files(void**)
 {
-    const std::string dir = g_scratch + "/compare";
+    const std::string dir = g_tools.scratch + "/compare";
     const Contact c = spin_contact(CW_MODEL_EXACT);
-    const Json j = parse_or_fail(run_ok(with({"compare", "--nx", "20", "--ny", "18",
+    const Json j = parse_or_fail(cli_ok(with({"compare", "--nx", "20", "--ny", "18",
                                               "--box-scale", "1.15", "--format", "json",
                                               "--no-plots", "--out", dir},
                                              c.args)).out);
@@ -511,10 +435,10 @@ const std::vector<std::string> kCompareGrid = {"--nx", "20", "--ny", "18", "--bo
 // metrics are recomputed from its files.
 void compare_simplified_calibrated(void**)
 {
-    const std::string dir = g_scratch + "/calibrated";
+    const std::string dir = g_tools.scratch + "/calibrated";
     const Contact c = spin_contact(CW_MODEL_EXACT);
     const Json j = parse_or_fail(
-        run_ok(with(with({"compare", "--simplified", "calibrated", "--format", "json",
+        cli_ok(with(with({"compare", "--simplified", "calibrated", "--format", "json",
                           "--no-plots", "--out", dir},
                          kCompareGrid),
                     c.args))
@@ -523,7 +447,7 @@ void compare_simplified_calibrated(void**)
     const Json& jc = j.at("calibrated");
     assert_string_equal(jc.at("model").string.c_str(), "calibrated");
     const Json solo = parse_or_fail(
-        run_ok(with(with({"solve", "--model", "calibrated", "--grid", "uniform", "--format",
+        cli_ok(with(with({"solve", "--model", "calibrated", "--grid", "uniform", "--format",
                           "json"},
                          kCompareGrid),
                     c.args))
@@ -549,7 +473,7 @@ void compare_simplified_calibrated(void**)
     metrics_match_files(j.at("metrics"), dir, "calibrated");
     // Not FASTSIM's distribution (doc/theory/calibrated.md: its moment differs).
     const Json f = parse_or_fail(
-        run_ok(with(with({"compare", "--format", "json"}, kCompareGrid), c.args)).out);
+        cli_ok(with(with({"compare", "--format", "json"}, kCompareGrid), c.args)).out);
     assert_true(f.at("fastsim").num("Mz") != jc.num("Mz"));
     assert_true(f.at("metrics").num("map_l1_consistent") !=
                 j.at("metrics").num("map_l1_consistent"));
@@ -559,7 +483,7 @@ void compare_simplified_calibrated(void**)
 // each model's metrics are those it gets alone, and the work maps are drawn.
 void compare_simplified_all(void**)
 {
-    const std::string dir = g_scratch + "/all";
+    const std::string dir = g_tools.scratch + "/all";
     const Contact c = spin_contact(CW_MODEL_EXACT);
     std::vector<std::string> args =
         with(with({"compare", "--simplified", "all", "--format", "json", "--out", dir},
@@ -567,7 +491,7 @@ void compare_simplified_all(void**)
              c.args);
     const bool plots = !std::getenv("CW_TEST_NO_GNUPLOT");
     if (!plots) args.push_back("--no-plots");
-    const Json j = parse_or_fail(run_ok(args).out);
+    const Json j = parse_or_fail(cli_ok(args).out);
     const struct {
         const char* option;
         const char* label;
@@ -588,7 +512,7 @@ void compare_simplified_all(void**)
         same(j.at(m.label).num("Mz"), lib.Mz, m.label);
         same(j.at(m.label).num("W_macro"), lib.W_macro, m.label);
         const Json alone = parse_or_fail(
-            run_ok(with(with({"compare", "--simplified", m.option, "--format", "json"},
+            cli_ok(with(with({"compare", "--simplified", m.option, "--format", "json"},
                              kCompareGrid),
                         c.args))
                 .out);
@@ -636,9 +560,9 @@ constexpr double DOC_L1_CONSISTENT = 0.456, DOC_L1_PAPER = 0.534,
 void compare_fig6_readme_numbers(void**)
 {
     std::vector<std::string> args = {"compare", "--nx", "24", "--ny", "24", "--format", "json"};
-    const std::string dir = g_scratch + "/fig6";
+    const std::string dir = g_tools.scratch + "/fig6";
     if (!std::getenv("CW_TEST_NO_GNUPLOT")) args.insert(args.end(), {"--out", dir});
-    const Json j = parse_or_fail(run_ok(args).out);
+    const Json j = parse_or_fail(cli_ok(args).out);
     const Json& m = j.at("metrics");
     const auto held = [](double ours, double shown, double half_unit) {
         if (!(std::fabs(ours - shown) <= half_unit * (1 + 1e-9)))
@@ -665,14 +589,7 @@ void compare_fig6_readme_numbers(void**)
 
 int main(int argc, char** argv)
 {
-    if (argc < 3) {
-        std::fprintf(stderr, "usage: test_cli_models <creepwork> <scratch dir> [filter]\n");
-        return 2;
-    }
-    g_cli = argv[1];
-    g_scratch = argv[2];
-    fs::remove_all(g_scratch);
-    fs::create_directories(g_scratch);
+    if (!set_up(argc, argv, "test_cli_models", {"creepwork", "scratch"})) return 2;
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(solve_exact_matches_library),
         cmocka_unit_test(solve_calibrated_matches_library),
@@ -684,5 +601,5 @@ int main(int argc, char** argv)
         cmocka_unit_test(compare_simplified_calibrated),
         cmocka_unit_test(compare_simplified_all),
     };
-    return cw_run_tests(tests, argc > 3 ? argv[3] : nullptr);
+    return cw_run_tests(tests, g_tools.test);
 }

@@ -16,59 +16,16 @@
 #include <string>
 #include <vector>
 
-#include <fcntl.h>
-#include <spawn.h>
-#include <sys/wait.h>
-#include <unistd.h>
-
 #include <creepwork/creepwork.h>
 
-#include "cli_runner.hpp"
-#include "json_reader.hpp"
+#include "cli_checks.hpp"
 // Last: cmocka defines macros (fail, skip) that clash with the C++ library.
 #include "test_support.h"
 
-extern char** environ;
-
 namespace fs = std::filesystem;
+using namespace cwtest;
 
 namespace {
-
-std::string g_cli, g_scratch;
-
-using cli_test::Run;
-using cli_test::slurp;
-Run run_cli(const std::vector<std::string>& args)
-{
-    return cli_test::run_program(g_cli, g_scratch, args);
-}
-
-Run run_ok(const std::vector<std::string>& args)
-{
-    return cli_test::run_program_ok(g_cli, g_scratch, args);
-}
-
-std::vector<std::vector<std::string>> read_csv(const std::string& path)
-{
-    std::vector<std::vector<std::string>> rows;
-    std::ifstream f(path);
-    std::string line;
-    while (std::getline(f, line)) {
-        std::vector<std::string> cells;
-        std::stringstream s(line);
-        std::string cell;
-        while (std::getline(s, cell, ',')) cells.push_back(cell);
-        rows.push_back(cells);
-    }
-    return rows;
-}
-
-std::string write_file(const std::string& name, const std::string& text)
-{
-    const std::string path = g_scratch + "/" + name;
-    std::ofstream(path) << text;
-    return path;
-}
 
 // Three states: a tread contact, a spin-dominated one on an angle, one with
 // its own mu; on the rail, 200 + 300 + 500 passes.
@@ -91,12 +48,12 @@ const StateRow kRows[3] = {{0.001, 6e-3, 4e-3, 60e3, 1e-3, -5e-4, 0.5, 0.02, 200
 // library's depths; summary.json's totals agree; every file has its units.
 void wear_matches_library(void**)
 {
-    const std::string in = write_file("states.csv", kStates);
-    const std::string out = g_scratch + "/match";
-    const Run r = run_ok({"wear", "--in", in, "--out", out, "--nx", "12", "--ny", "10",
+    const std::string in = scratch_file("states.csv", kStates);
+    const std::string out = g_tools.scratch + "/match";
+    const Run r = cli_ok({"wear", "--in", in, "--out", out, "--nx", "12", "--ny", "10",
                           "--profile-from", "-0.012", "--profile-to", "0.012",
                           "--profile-step", "2e-4", "--no-plots", "--format", "json"});
-    const cwtest::Json j = cwtest::parse_json(r.out);
+    const Json j = parse_json(r.out);
     const auto rows = read_csv(out + "/wear_profile.csv");
     assert_string_equal(rows[0][0].c_str(), "k");
     const std::vector<std::string> header = {"k", "s_m", "depth_normal_m", "depth_height_m",
@@ -175,15 +132,15 @@ void wear_matches_library(void**)
 // per wheel: sum of passes x mass per revolution.
 void wear_wheel_distance(void**)
 {
-    const std::string in = write_file("wheel.csv", "s0,a,b,N,xi_x,spin,distance\n"
+    const std::string in = scratch_file("wheel.csv", "s0,a,b,N,xi_x,spin,distance\n"
                                                    "0.0,6e-3,4e-3,60e3,1e-3,0.5,1000\n"
                                                    "0.002,6e-3,4e-3,60e3,2e-3,0.5,500\n");
-    const Run r = run_ok({"wear", "--in", in, "--out", g_scratch + "/wheel", "--body", "wheel",
+    const Run r = cli_ok({"wear", "--in", in, "--out", g_tools.scratch + "/wheel", "--body", "wheel",
                           "--wheel-radius", "0.46", "--no-plots", "--format", "json"});
-    const cwtest::Json j = cwtest::parse_json(r.out);
+    const Json j = parse_json(r.out);
     const double rev = 2.0 * M_PI * 0.46;
     assert_close(j.num("passes"), 1500.0 / rev, 1e-14, 0.0);
-    const auto st = read_csv(g_scratch + "/wheel/states.csv");
+    const auto st = read_csv(g_tools.scratch + "/wheel/states.csv");
     double mass = 0;
     for (size_t k = 1; k < st.size(); ++k) {
         const double passes = std::stod(st[k][9]);
@@ -203,17 +160,17 @@ struct Bad {
 
 void wear_bad_inputs_fail_cleanly(void**)
 {
-    const std::string good = write_file("good.csv", kStates);
+    const std::string good = scratch_file("good.csv", kStates);
     const auto file = [](const std::string& name, const std::string& text) {
-        return write_file(name, text);
+        return scratch_file(name, text);
     };
-    const std::string never = g_scratch + "/never";
-    const std::string earlier = g_scratch + "/earlier";
-    run_ok({"wear", "--in", good, "--out", earlier, "--no-plots"});
+    const std::string never = g_tools.scratch + "/never";
+    const std::string earlier = g_tools.scratch + "/earlier";
+    cli_ok({"wear", "--in", good, "--out", earlier, "--no-plots"});
     const std::vector<Bad> bad = {
         {{"wear", "--out", never}, "--in"},
         {{"wear", "--in", good}, "--out"},
-        {{"wear", "--in", g_scratch + "/missing.csv", "--out", never}, "cannot open"},
+        {{"wear", "--in", g_tools.scratch + "/missing.csv", "--out", never}, "cannot open"},
         {{"wear", "--in", file("empty.csv", ""), "--out", never}, "no header"},
         {{"wear", "--in", file("head.csv", "s0,a,b,N,passes\n"), "--out", never},
          "no contact states"},
@@ -260,35 +217,26 @@ void wear_bad_inputs_fail_cleanly(void**)
         {{"wear", "--in", good, "--out", earlier}, "--force"},
     };
     for (const Bad& b : bad) {
-        const Run r = run_cli(b.args);
-        std::string shown;
-        for (const std::string& a : b.args) shown += a + " ";
-        if (r.status != 2 || std::count(r.err.begin(), r.err.end(), '\n') != 1 ||
-            r.err.find(b.names) == std::string::npos || !r.out.empty())
-            print_error("creepwork %s-> exit %d, stderr '%s', stdout '%s'\n", shown.c_str(),
-                        r.status, r.err.c_str(), r.out.c_str());
-        assert_int_equal(r.status, 2);
-        assert_int_equal(std::count(r.err.begin(), r.err.end(), '\n'), 1);
-        assert_true(r.err.rfind("creepwork: ", 0) == 0);
-        assert_true(r.err.find(b.names) != std::string::npos);
-        assert_true(r.out.empty());
+        std::string shown = "creepwork";
+        for (const std::string& a : b.args) shown += " " + a;
+        expect_refusal(cli(b.args), 2, b.names, shown);
         assert_false(fs::exists(never));
     }
-    for (const auto& e : fs::directory_iterator(g_scratch))
+    for (const auto& e : fs::directory_iterator(g_tools.scratch))
         assert_true(e.path().filename().string().find(".tmp-") == std::string::npos);
     // --force replaces the earlier output.
-    run_ok({"wear", "--in", good, "--out", earlier, "--no-plots", "--force"});
+    cli_ok({"wear", "--in", good, "--out", earlier, "--no-plots", "--force"});
 }
 
 // Values the library accepts but a wheel-rail contact never has are warned
 // about, naming the line and column; the run succeeds.
 void wear_warns_about_implausible_values(void**)
 {
-    const std::string in = write_file("odd.csv", "s0,a,b,N,passes,contact_angle\n"
+    const std::string in = scratch_file("odd.csv", "s0,a,b,N,passes,contact_angle\n"
                                                  "0,6e-3,4e-3,60,1,0\n"
                                                  "0.5,6e-3,4e-3,6e4,1,0\n"
                                                  "0,6e-3,4e-3,6e4,1,1.4\n");
-    const Run r = run_ok({"wear", "--in", in, "--out", g_scratch + "/odd", "--no-plots"});
+    const Run r = cli_ok({"wear", "--in", in, "--out", g_tools.scratch + "/odd", "--no-plots"});
     assert_non_null(std::strstr(r.err.c_str(), "line 2: column N = 60"));
     assert_non_null(std::strstr(r.err.c_str(), "line 3: column s0 = 0.5"));
     assert_non_null(std::strstr(r.err.c_str(), "line 4: column contact_angle = 1.4"));
@@ -301,9 +249,9 @@ void wear_writes_picture(void**)
         cw_skip();
         return;
     }
-    const std::string in = write_file("pic.csv", kStates);
-    const std::string out = g_scratch + "/pic";
-    run_ok({"wear", "--in", in, "--out", out});
+    const std::string in = scratch_file("pic.csv", kStates);
+    const std::string out = g_tools.scratch + "/pic";
+    cli_ok({"wear", "--in", in, "--out", out});
     assert_true(fs::file_size(out + "/wear.png") > 10000);
     assert_true(fs::exists(out + "/gnuplot/wear.gp"));
     assert_non_null(std::strstr(slurp(out + "/gnuplot/wear.gp").c_str(), "parabol"));
@@ -313,14 +261,7 @@ void wear_writes_picture(void**)
 
 int main(int argc, char** argv)
 {
-    if (argc < 3) {
-        std::fprintf(stderr, "usage: test_cli_wear <creepwork> <scratch dir> [filter]\n");
-        return 2;
-    }
-    g_cli = argv[1];
-    g_scratch = argv[2];
-    fs::remove_all(g_scratch);
-    fs::create_directories(g_scratch);
+    if (!set_up(argc, argv, "test_cli_wear", {"creepwork", "scratch"})) return 2;
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(wear_matches_library),
         cmocka_unit_test(wear_wheel_distance),
@@ -328,5 +269,5 @@ int main(int argc, char** argv)
         cmocka_unit_test(wear_warns_about_implausible_values),
         cmocka_unit_test(wear_writes_picture),
     };
-    return cw_run_tests(tests, argc > 3 ? argv[3] : nullptr);
+    return cw_run_tests(tests, g_tools.test);
 }

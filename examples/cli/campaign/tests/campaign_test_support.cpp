@@ -1,86 +1,19 @@
 #include "campaign_test_support.hpp"
 
+#include <chrono>
+#include <csignal>
 #include <cstdio>
 #include <cstdlib>
-#include <cstring>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
-#include <stdexcept>
+#include <thread>
 
-#include <fcntl.h>
-#include <spawn.h>
-#include <sys/file.h>
-#include <sys/stat.h>
 #include <sys/wait.h>
-#include <unistd.h>
 
 #include "../../json.hpp" // shortest_exact: the digits creepwork prints
+// Last: cmocka defines macros (fail, skip) that clash with the C++ library.
+#include "test_support.h"
 
-extern char** environ;
-
-namespace cwctest {
-
-Tools g_tools;
-
-namespace {
-
-std::vector<char*> c_argv(const std::vector<std::string>& v)
-{
-    std::vector<char*> out;
-    for (const std::string& s : v) out.push_back(const_cast<char*>(s.c_str()));
-    out.push_back(nullptr);
-    return out;
-}
-
-std::vector<std::string> environment(const std::vector<std::string>& extra)
-{
-    std::vector<std::string> env;
-    for (char** e = environ; *e; ++e) env.emplace_back(*e);
-    env.insert(env.end(), extra.begin(), extra.end());
-    return env;
-}
-
-pid_t spawn(const std::vector<std::string>& argv, const std::vector<std::string>& env,
-            const std::string& out_file, const std::string& err_file, bool own_group)
-{
-    posix_spawn_file_actions_t fa;
-    posix_spawn_file_actions_init(&fa);
-    posix_spawn_file_actions_addopen(&fa, 1, out_file.c_str(), O_WRONLY | O_CREAT | O_TRUNC,
-                                     0644);
-    posix_spawn_file_actions_addopen(&fa, 2, err_file.c_str(), O_WRONLY | O_CREAT | O_TRUNC,
-                                     0644);
-    posix_spawnattr_t attr;
-    posix_spawnattr_init(&attr);
-    if (own_group) {
-        posix_spawnattr_setflags(&attr, POSIX_SPAWN_SETPGROUP);
-        posix_spawnattr_setpgroup(&attr, 0);
-    }
-    const std::vector<std::string> full_env = environment(env);
-    std::vector<char*> a = c_argv(argv), e = c_argv(full_env);
-    pid_t pid = -1;
-    if (posix_spawnp(&pid, argv[0].c_str(), &fa, &attr, a.data(), e.data()) != 0) pid = -1;
-    posix_spawn_file_actions_destroy(&fa);
-    posix_spawnattr_destroy(&attr);
-    return pid;
-}
-
-} // namespace
-
-Run run(const std::vector<std::string>& argv, const std::vector<std::string>& env)
-{
-    const std::string out = g_tools.scratch + "/run.out", err = g_tools.scratch + "/run.err";
-    Run r;
-    const pid_t pid = spawn(argv, env, out, err, false);
-    if (pid > 0) {
-        int status = 0;
-        waitpid(pid, &status, 0);
-        r.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    }
-    r.out = slurp(out);
-    r.err = slurp(err);
-    return r;
-}
+namespace cwtest {
 
 std::vector<std::string> campaign_argv(int np, const std::vector<std::string>& args)
 {
@@ -98,124 +31,40 @@ Run campaign(int np, const std::vector<std::string>& args, const std::vector<std
     return run(campaign_argv(np, args), env);
 }
 
-pid_t start_group(const std::vector<std::string>& argv, const std::vector<std::string>& env,
-                  const std::string& out_file, const std::string& err_file)
+size_t kill_midway(int np, const std::vector<std::string>& args, int delay_ms,
+                   const std::string& checkpoint, uintmax_t min_bytes)
 {
-    return spawn(argv, env, out_file, err_file, true);
-}
-
-namespace {
-
-// State and parent of a process from /proc/PID/stat ("pid (comm) state ppid
-// ..."; comm may hold spaces and parentheses, so parse after the last ')').
-bool read_stat(pid_t pid, char& state, long& ppid)
-{
-    const std::string stat = slurp("/proc/" + std::to_string(pid) + "/stat");
-    const size_t close = stat.rfind(')');
-    return close != std::string::npos &&
-           std::sscanf(stat.c_str() + close + 1, " %c %ld", &state, &ppid) == 2;
-}
-
-} // namespace
-
-bool process_alive(pid_t pid)
-{
-    char state = 0;
-    long ppid = 0;
-    return read_stat(pid, state, ppid) && state != 'Z' && state != 'X';
-}
-
-bool file_locked(const std::string& path)
-{
-    const int fd = open(path.c_str(), O_RDONLY | O_CLOEXEC);
-    if (fd < 0) return false;
-    const bool locked = flock(fd, LOCK_EX | LOCK_NB) != 0;
-    close(fd); // releases the lock if this call took it
-    return locked;
-}
-
-std::vector<pid_t> live_descendants(pid_t root)
-{
-    std::vector<std::pair<pid_t, long>> all; // pid, parent
-    for (const auto& entry : std::filesystem::directory_iterator("/proc")) {
-        const std::string name = entry.path().filename().string();
-        if (name.find_first_not_of("0123456789") != std::string::npos) continue;
-        const pid_t pid = static_cast<pid_t>(std::atol(name.c_str()));
-        char state = 0;
-        long ppid = 0;
-        if (read_stat(pid, state, ppid) && state != 'Z' && state != 'X') all.emplace_back(pid, ppid);
+    namespace fs = std::filesystem;
+    const pid_t group = start_group(
+        campaign_argv(np, args), {"CREEPWORK_CAMPAIGN_TEST_CHUNK_DELAY_MS=" + std::to_string(delay_ms)},
+        path("killed.out"), path("killed.err"));
+    assert_true(group > 0);
+    const auto start = std::chrono::steady_clock::now();
+    bool midway = false;
+    while (!midway && std::chrono::steady_clock::now() - start < std::chrono::seconds(120)) {
+        std::error_code ec;
+        midway = fs::exists(checkpoint, ec) && fs::file_size(checkpoint, ec) > min_bytes;
+        if (!midway) std::this_thread::sleep_for(std::chrono::milliseconds(10));
     }
-    std::vector<pid_t> out, frontier = {root};
-    while (!frontier.empty()) {
-        const pid_t parent = frontier.back();
-        frontier.pop_back();
-        for (const auto& [pid, ppid] : all)
-            if (ppid == parent) {
-                out.push_back(pid);
-                frontier.push_back(pid);
-            }
-    }
-    return out;
-}
-
-std::string slurp(const std::string& path)
-{
-    std::ifstream f(path, std::ios::binary);
-    std::stringstream s;
-    s << f.rdbuf();
-    return s.str();
-}
-
-void write_text(const std::string& path, const std::string& text)
-{
-    std::ofstream f(path, std::ios::binary);
-    f << text;
-    if (!f) throw std::runtime_error("cannot write " + path);
-}
-
-bool exists(const std::string& path)
-{
-    struct stat st;
-    return stat(path.c_str(), &st) == 0;
-}
-
-std::vector<std::vector<std::string>> read_csv(const std::string& path)
-{
-    const std::string text = slurp(path);
-    std::vector<std::vector<std::string>> records;
-    std::vector<std::string> record;
-    std::string field;
-    bool quoted = false;
-    for (size_t i = 0; i < text.size(); ++i) {
-        const char c = text[i];
-        if (quoted) {
-            if (c == '"' && i + 1 < text.size() && text[i + 1] == '"') {
-                field += '"';
-                ++i;
-            } else if (c == '"') {
-                quoted = false;
-            } else {
-                field += c;
-            }
-        } else if (c == '"') {
-            quoted = true;
-        } else if (c == ',') {
-            record.push_back(field);
-            field.clear();
-        } else if (c == '\n') {
-            record.push_back(field);
-            field.clear();
-            records.push_back(record);
-            record.clear();
-        } else {
-            field += c;
-        }
-    }
-    if (!field.empty() || !record.empty()) {
-        record.push_back(field);
-        records.push_back(record);
-    }
-    return records;
+    // The ranks: Open MPI starts them in process groups of their own, so
+    // they are found as mpirun's descendants and each killed, then mpirun.
+    const std::vector<pid_t> ranks = live_descendants(group);
+    for (pid_t p : ranks) kill(p, SIGKILL);
+    kill(group, SIGKILL);
+    int status = 0;
+    waitpid(group, &status, 0);
+    if (!midway) print_error("the run never got midway; stderr:\n%s\n", slurp(path("killed.err")).c_str());
+    assert_true(midway);
+    // None of them survives (zombies waiting for a reaper do not count).
+    const auto alive = [&ranks] {
+        size_t n = 0;
+        for (pid_t p : ranks) n += process_alive(p);
+        return n;
+    };
+    for (int k = 0; k < 500 && alive() > 0; ++k)
+        std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    assert_int_equal(alive(), 0);
+    return ranks.size();
 }
 
 const std::vector<std::string>& input_columns()
@@ -228,15 +77,16 @@ const std::vector<std::string>& input_columns()
     return c;
 }
 
-void write_input(const std::string& path, const std::vector<Row>& rows)
+void write_input(const std::string& path, const std::vector<Row>& rows,
+                 const std::vector<std::string>& columns)
 {
     std::string text;
-    for (const std::string& c : input_columns()) text += (text.empty() ? "" : ",") + c;
+    for (const std::string& c : columns) text += (text.empty() ? "" : ",") + c;
     text += "\n";
     for (const Row& r : rows) {
         std::string line;
-        for (size_t k = 0; k < input_columns().size(); ++k) {
-            const auto it = r.find(input_columns()[k]);
+        for (size_t k = 0; k < columns.size(); ++k) {
+            const auto it = r.find(columns[k]);
             line += (k ? "," : "") + (it == r.end() ? std::string() : it->second);
         }
         text += line + "\n";
@@ -393,11 +243,4 @@ Expected solve_directly(const Row& row)
     return e;
 }
 
-std::map<std::string, size_t> header_index(const std::vector<std::string>& header)
-{
-    std::map<std::string, size_t> idx;
-    for (size_t k = 0; k < header.size(); ++k) idx[header[k]] = k;
-    return idx;
-}
-
-} // namespace cwctest
+} // namespace cwtest

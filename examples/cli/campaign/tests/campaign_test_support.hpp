@@ -1,34 +1,18 @@
-// Helpers of the campaign tests: running programs (under mpirun or not),
-// reading CSV independently of the runner's own reader, and a set of input
+// What the campaign tests share beyond the CLI tests' support
+// (cli_checks.hpp): running a campaign (under mpirun or not), and input
 // rows known both as CSV text and as the structs the library sees.
 #pragma once
 
+#include <cstdint>
 #include <map>
 #include <string>
 #include <vector>
 
-#include <sys/types.h>
-
 #include <creepwork/creepwork.h>
 
-namespace cwctest {
+#include "cli_checks.hpp"
 
-struct Run {
-    int status = -1; // exit status; -1 when killed or not started
-    std::string out, err;
-};
-
-// Set by main from the test's arguments.
-struct Tools {
-    std::string creepwork; // the creepwork program
-    std::string mpirun;    // mpirun (Open MPI)
-    std::string scratch;   // this test's directory
-};
-extern Tools g_tools;
-
-// Runs argv[0] with argv, extra environment entries ("NAME=value") added,
-// capturing stdout and stderr; waits for it.
-Run run(const std::vector<std::string>& argv, const std::vector<std::string>& env = {});
+namespace cwtest {
 
 // `creepwork campaign args...` on np ranks (mpirun --oversubscribe), or
 // without mpirun when np == 0 (MPI's singleton start).
@@ -36,31 +20,23 @@ Run campaign(int np, const std::vector<std::string>& args,
              const std::vector<std::string>& env = {});
 std::vector<std::string> campaign_argv(int np, const std::vector<std::string>& args);
 
-// Starts argv in a process group of its own, output to files; returns the
-// pid (= the group id).
-pid_t start_group(const std::vector<std::string>& argv, const std::vector<std::string>& env,
-                  const std::string& out_file, const std::string& err_file);
-
-// The live (not zombie) descendants of pid, from /proc.
-std::vector<pid_t> live_descendants(pid_t pid);
-// Whether pid exists and is not a zombie.
-bool process_alive(pid_t pid);
-// Whether another process holds an exclusive flock on path.
-bool file_locked(const std::string& path);
-
-std::string slurp(const std::string& path);
-void write_text(const std::string& path, const std::string& text);
-bool exists(const std::string& path);
-
-// RFC 4180 records of a whole file (quotes, "" escapes; no trimming).
-std::vector<std::vector<std::string>> read_csv(const std::string& path);
+// Starts `creepwork campaign args...` on np ranks, each chunk slowed by
+// delay_ms, and kills it with SIGKILL -- mpirun and every rank -- once its
+// checkpoint has grown past min_bytes (at most 120 s). Fails the test
+// unless it got that far and no process survives. Returns the number of
+// processes killed under mpirun (0 without it).
+size_t kill_midway(int np, const std::vector<std::string>& args, int delay_ms,
+                   const std::string& checkpoint, uintmax_t min_bytes);
 
 // One input row, as the text of its CSV cells; "" = empty cell.
 using Row = std::map<std::string, std::string>;
 
-// The columns written by write_input: required, then the optional ones.
+// The columns write_input writes by default: every column of the schema
+// but the wear columns.
 const std::vector<std::string>& input_columns();
-void write_input(const std::string& path, const std::vector<Row>& rows);
+// A header of columns, then one line per row (a row's missing cells empty).
+void write_input(const std::string& path, const std::vector<Row>& rows,
+                 const std::vector<std::string>& columns = input_columns());
 
 // The grid and parameters of a row, as the campaign must read it (cells
 // parsed with strtod, defaults from cw_*_init).
@@ -83,7 +59,4 @@ struct Expected {
 };
 Expected solve_directly(const Row& row);
 
-// Index of each name in a header record.
-std::map<std::string, size_t> header_index(const std::vector<std::string>& header);
-
-} // namespace cwctest
+} // namespace cwtest

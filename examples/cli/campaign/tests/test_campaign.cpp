@@ -25,14 +25,12 @@
 
 #include <creepwork/creepwork.h>
 
-#include "../../tests/json_reader.hpp"
-#include "campaign_test_checks.hpp"
 #include "campaign_test_support.hpp"
 // Last: cmocka defines macros (fail, skip) that clash with the C++ library.
 #include "test_support.h"
 
 namespace fs = std::filesystem;
-using namespace cwctest;
+using namespace cwtest;
 
 namespace {
 
@@ -145,7 +143,7 @@ void matches_creepwork_solve(void** state)
         const std::vector<std::string> args = row_to_solve_args(rows[k]);
         argv.insert(argv.end(), args.begin(), args.end());
         const Run r = expect_status(run(argv), 0);
-        const cwtest::Json j = cwtest::parse_json(r.out);
+        const Json j = parse_json(r.out);
         for (const char* key : keys) {
             const std::string& cell = records[k + 1][idx.at(key)];
             // Full precision: the same double, and the same digits.
@@ -387,45 +385,14 @@ void resume_after_kill(void** state)
     const std::string reference = slurp(path("ref/results.csv"));
 
     // A run slowed to 150 ms per chunk of 3 rows (32 chunks on 2 ranks:
-    // seconds), killed with SIGKILL -- mpirun and every rank -- once a few
-    // chunks are in the checkpoint.
+    // seconds), killed once a few chunks are in the checkpoint.
     const std::string checkpoint = path("run/checkpoint.cwj");
-    const pid_t group = start_group(
-        campaign_argv(2, {"--in", path("in.csv"), "--out", path("run"), "--threads", "1",
-                          "--chunk", "3", "--quiet"}),
-        {"CREEPWORK_CAMPAIGN_TEST_CHUNK_DELAY_MS=150"}, path("killed.out"), path("killed.err"));
-    assert_true(group > 0);
-    const auto start = std::chrono::steady_clock::now();
-    bool midway = false;
-    while (std::chrono::steady_clock::now() - start < std::chrono::seconds(120)) {
-        std::error_code ec;
-        if (fs::exists(checkpoint, ec) && fs::file_size(checkpoint, ec) > 3000) {
-            midway = true;
-            break;
-        }
-        std::this_thread::sleep_for(std::chrono::milliseconds(10));
-    }
-    // The ranks: Open MPI starts them in process groups of their own, so
-    // they are found as mpirun's descendants and each killed, then mpirun.
-    const std::vector<pid_t> ranks = live_descendants(group);
-    for (pid_t p : ranks) kill(p, SIGKILL);
-    kill(group, SIGKILL);
-    if (ranks.size() < 2) print_error("%zu processes under mpirun, expected >= 2\n", ranks.size());
-    assert_true(ranks.size() >= 2);
-    int status = 0;
-    waitpid(group, &status, 0);
-    if (!midway) print_error("the run never got midway; stderr:\n%s\n", slurp(path("killed.err")).c_str());
-    assert_true(midway);
+    const size_t ranks = kill_midway(2, {"--in", path("in.csv"), "--out", path("run"), "--threads",
+                                         "1", "--chunk", "3", "--quiet"},
+                                     150, checkpoint, 3000);
+    if (ranks < 2) print_error("%zu processes under mpirun, expected >= 2\n", ranks);
+    assert_true(ranks >= 2);
     assert_false(exists(path("run/results.csv")));
-    // None of them survives (zombies waiting for a reaper do not count).
-    const auto alive = [&ranks] {
-        size_t n = 0;
-        for (pid_t p : ranks) n += process_alive(p);
-        return n;
-    };
-    for (int k = 0; k < 500 && alive() > 0; ++k)
-        std::this_thread::sleep_for(std::chrono::milliseconds(10));
-    assert_int_equal(alive(), 0);
 
     // A kill during an append leaves a torn record: make sure there is one.
     const auto size = fs::file_size(checkpoint);
@@ -441,7 +408,7 @@ void resume_after_kill(void** state)
         print_error("the resumed run's results.csv differs from the uninterrupted run's\n");
         fail();
     }
-    const cwtest::Json j = cwtest::parse_json(slurp(path("run/campaign.json")));
+    const Json j = parse_json(slurp(path("run/campaign.json")));
     const double resumed = j.num("resumed_rows"), solved = j.num("solved_this_run");
     assert_true(resumed >= 3 && resumed < static_cast<double>(rows.size()));
     // Finished chunks were not redone.
@@ -492,7 +459,7 @@ void table_entries_match_direct_solves(void** state)
     const std::vector<std::string> header = {"aob", "nu", "xi", "eta", "psi", "status",
                                              "fx",  "fy", "mz", "message"};
     assert_true(records[0] == header);
-    const cwtest::Json meta = cwtest::parse_json(slurp(path("table/table.json")));
+    const Json meta = parse_json(slurp(path("table/table.json")));
     assert_int_equal(static_cast<int>(meta.num("points")), 144);
     assert_int_equal(meta.at("axes").at("psi").array.size(), 3);
     assert_int_equal(meta.at("axes").at("xi").array.size(), 4);
@@ -551,7 +518,7 @@ void table_entries_match_direct_solves(void** state)
              "0.3", "--G", "82e9", "--nu", "0.3", "--xi-x", buf[2], "--xi-y", buf[3], "--spin",
              buf[4], "--nx", "12", "--ny", "12", "--format", "json"}),
         0);
-    const cwtest::Json j = cwtest::parse_json(r.out);
+    const Json j = parse_json(r.out);
     // Point (a/b 2, nu 0.3, xi 0.3, eta 0.4, psi 0.9): k = 2*48 + 1*24 + 2*6 + 1*3 + 2.
     const auto& rec = records[1 + 2 * 48 + 1 * 24 + 2 * 6 + 1 * 3 + 2];
     assert_true(std::strtod(rec[2].c_str(), nullptr) == 0.3 &&
@@ -565,7 +532,7 @@ void table_entries_match_direct_solves(void** state)
 
 int main(int argc, char** argv)
 {
-    if (!set_up_tools(argc, argv, "test_campaign")) return 2;
+    if (!set_up(argc, argv, "test_campaign", {"creepwork", "mpirun", "scratch"})) return 2;
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(ranks_and_threads_bitwise),
         cmocka_unit_test(matches_creepwork_solve),
@@ -575,5 +542,5 @@ int main(int argc, char** argv)
         cmocka_unit_test(resume_after_kill),
         cmocka_unit_test(table_entries_match_direct_solves),
     };
-    return cw_run_tests(tests, argv[4]);
+    return cw_run_tests(tests, g_tools.test);
 }

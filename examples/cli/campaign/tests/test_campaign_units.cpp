@@ -22,15 +22,15 @@
 #include "../journal.hpp"
 #include "../number_text.hpp"
 #include "../wire.hpp"
+#include "cli_checks.hpp"
 // Last: cmocka defines macros (fail, skip) that clash with the C++ library.
 #include "test_support.h"
 
 namespace fs = std::filesystem;
 using namespace cwcampaign;
+using cwtest::g_tools;
 
 namespace {
-
-std::string g_scratch;
 
 void number_text_equals_shortest_exact(void** state)
 {
@@ -234,7 +234,7 @@ void wire_round_trips_and_rejects_damage(void** state)
 void journal_resumes_and_drops_a_torn_tail(void** state)
 {
     (void)state;
-    const std::string path = g_scratch + "/j.cwj";
+    const std::string path = g_tools.scratch + "/j.cwj";
     const JournalIdentity id{0, 0x1234, 30};
     {
         Journal j = Journal::create(path, id);
@@ -277,10 +277,10 @@ void journal_resumes_and_drops_a_torn_tail(void** state)
         assert_true(refused);
     }
     // Not a checkpoint at all.
-    std::ofstream(g_scratch + "/not.cwj") << "hello";
+    std::ofstream(g_tools.scratch + "/not.cwj") << "hello";
     bool refused = false;
     try {
-        Journal::open_existing(g_scratch + "/not.cwj", id);
+        Journal::open_existing(g_tools.scratch + "/not.cwj", id);
     } catch (const JournalError& e) {
         refused = std::strstr(e.what(), "is not a creepwork checkpoint") != nullptr;
     }
@@ -291,13 +291,7 @@ void journal_resumes_and_drops_a_torn_tail(void** state)
 
 int main(int argc, char** argv)
 {
-    if (argc < 2) {
-        std::fprintf(stderr, "usage: test_campaign_units <scratch dir> [test]\n");
-        return 2;
-    }
-    g_scratch = argv[1];
-    fs::remove_all(g_scratch);
-    fs::create_directories(g_scratch);
+    if (!cwtest::set_up(argc, argv, "test_campaign_units", {"scratch"})) return 2;
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(number_text_equals_shortest_exact),
         cmocka_unit_test(csv_reader_follows_rfc4180),
@@ -305,5 +299,5 @@ int main(int argc, char** argv)
         cmocka_unit_test(wire_round_trips_and_rejects_damage),
         cmocka_unit_test(journal_resumes_and_drops_a_torn_tail),
     };
-    return cw_run_tests(tests, argc > 2 ? argv[2] : nullptr);
+    return cw_run_tests(tests, g_tools.test);
 }

@@ -25,14 +25,12 @@
 
 #include <creepwork/creepwork.h>
 
-#include "../../tests/json_reader.hpp"
-#include "campaign_test_checks.hpp"
 #include "campaign_test_support.hpp"
 // Last: cmocka defines macros (fail, skip) that clash with the C++ library.
 #include "test_support.h"
 
 namespace fs = std::filesystem;
-using namespace cwctest;
+using namespace cwtest;
 
 namespace {
 
@@ -69,18 +67,7 @@ const std::vector<std::string>& wear_input_columns()
 
 void write_wear_input(const std::string& file, const std::vector<Row>& rows)
 {
-    std::string text;
-    for (const std::string& c : wear_input_columns()) text += (text.empty() ? "" : ",") + c;
-    text += "\n";
-    for (const Row& r : rows) {
-        std::string line;
-        for (size_t k = 0; k < wear_input_columns().size(); ++k) {
-            const auto it = r.find(wear_input_columns()[k]);
-            line += (k ? "," : "") + (it == r.end() ? std::string() : it->second);
-        }
-        text += line + "\n";
-    }
-    write_text(file, text);
+    write_input(file, rows, wear_input_columns());
 }
 
 Row exact_row(const std::string& id, double xi_x)
@@ -245,7 +232,7 @@ void expect_equals_direct(const std::string& dir, const std::vector<Row>& rows, 
     }
     // The accumulated cross-section is the rows' passes x worn volume per
     // rolled distance (cw_wear_result, mass / density): the remap keeps it.
-    const cwtest::Json j = cwtest::parse_json(slurp(dir + "/campaign.json"));
+    const Json j = parse_json(slurp(dir + "/campaign.json"));
     assert_close(j.num("wear_rail_volume_m2"), d.volume[0], 1e-12, 0);
     assert_close(j.num("wear_wheel_volume_m2"), d.volume[1], 1e-12, 0);
     assert_true(j.num("wear_rail_volume_lost_m2") == 0 && j.num("wear_wheel_volume_lost_m2") == 0);
@@ -428,36 +415,9 @@ void wear_resume_after_kill(void** state)
     const std::string checkpoint = path("run/checkpoint.cwj");
     args = wear_args(path("in.csv"), path("run"));
     args.insert(args.end(), {"--threads", "1", "--chunk", "3"});
-    const pid_t group = start_group(campaign_argv(2, args),
-                                    {"CREEPWORK_CAMPAIGN_TEST_CHUNK_DELAY_MS=150"},
-                                    path("killed.out"), path("killed.err"));
-    assert_true(group > 0);
-    const auto start = std::chrono::steady_clock::now();
-    bool midway = false;
-    while (std::chrono::steady_clock::now() - start < std::chrono::seconds(120)) {
-        std::error_code ec;
-        // Each chunk's record holds its profile states (~26 kB on 161 nodes).
-        if (fs::exists(checkpoint, ec) && fs::file_size(checkpoint, ec) > 60000) {
-            midway = true;
-            break;
-        }
-        std::this_thread::sleep_for(std::chrono::milliseconds(10));
-    }
-    const std::vector<pid_t> ranks = live_descendants(group);
-    for (pid_t p : ranks) kill(p, SIGKILL);
-    kill(group, SIGKILL);
-    int status = 0;
-    waitpid(group, &status, 0);
-    if (!midway)
-        print_error("the run never got midway; stderr:\n%s\n", slurp(path("killed.err")).c_str());
-    assert_true(midway);
+    // Each chunk's record holds its profile states (~26 kB on 161 nodes).
+    kill_midway(2, args, 150, checkpoint, 60000);
     assert_false(exists(path("run/results.csv")));
-    for (int k = 0; k < 500; ++k) {
-        size_t alive = 0;
-        for (pid_t p : ranks) alive += process_alive(p);
-        if (alive == 0) break;
-        std::this_thread::sleep_for(std::chrono::milliseconds(10));
-    }
     fs::resize_file(checkpoint, fs::file_size(checkpoint) - 5); // a torn last record
 
     // Other wear options are another campaign: refused, nothing lost.
@@ -475,7 +435,7 @@ void wear_resume_after_kill(void** state)
         print_error("the resumed run's outputs differ from the uninterrupted run's\n");
         fail();
     }
-    const cwtest::Json j = cwtest::parse_json(slurp(path("run/campaign.json")));
+    const Json j = parse_json(slurp(path("run/campaign.json")));
     const double resumed = j.num("resumed_rows"), solved = j.num("solved_this_run");
     assert_true(resumed >= 3 && resumed < static_cast<double>(rows.size()));
     assert_true(resumed + solved == static_cast<double>(rows.size()));
@@ -529,12 +489,12 @@ void wear_bad_inputs_fail_cleanly(void** state)
 
 int main(int argc, char** argv)
 {
-    if (!set_up_tools(argc, argv, "test_campaign_wear")) return 2;
+    if (!set_up(argc, argv, "test_campaign_wear", {"creepwork", "mpirun", "scratch"})) return 2;
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(wear_ranks_bitwise),
         cmocka_unit_test(wear_matches_creepwork_wear),
         cmocka_unit_test(wear_resume_after_kill),
         cmocka_unit_test(wear_bad_inputs_fail_cleanly),
     };
-    return cw_run_tests(tests, argv[4]);
+    return cw_run_tests(tests, g_tools.test);
 }
