@@ -21,6 +21,7 @@
 #include "command_common.hpp"
 #include "commands.hpp"
 #include "contact_options.hpp"
+#include "contact_rows.hpp"
 #include "gnuplot.hpp"
 #include "json.hpp"
 #include "output_dir.hpp"
@@ -32,129 +33,17 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-// ------------------------------------------------------------ the input
-
-// One row of the states file, SI.
-struct State {
-    int line = 0;
-    double s0 = 0, a = 0, b = 0, N = 0, xi_x = 0, xi_y = 0, spin = 0, angle = 0;
-    double passes = -1, distance = -1, mu = -1;
-    int model = CW_MODEL_FASTSIM;
-};
-
-const std::vector<std::string> kColumns = {"s0",   "a",             "b",      "N",
-                                           "xi_x", "xi_y",          "spin",   "contact_angle",
-                                           "passes", "distance",    "mu",     "model"};
-
-std::string trim(const std::string& s)
+bool same_grid(const cw_grid& a, const cw_grid& b)
 {
-    size_t b = 0, e = s.size();
-    while (b < e && std::isspace(static_cast<unsigned char>(s[b]))) ++b;
-    while (e > b && std::isspace(static_cast<unsigned char>(s[e - 1]))) --e;
-    return s.substr(b, e - b);
+    return a.kind == b.kind && a.nx == b.nx && a.ny == b.ny &&
+           (a.kind != CW_GRID_UNIFORM || a.box_scale == b.box_scale);
 }
 
-std::vector<std::string> split(const std::string& line)
+std::string grid_text(const cw_grid& g)
 {
-    std::vector<std::string> cells;
-    std::stringstream ss(line);
-    std::string cell;
-    while (std::getline(ss, cell, ',')) cells.push_back(trim(cell));
-    if (!line.empty() && line.back() == ',') cells.push_back("");
-    return cells;
-}
-
-std::string lower(std::string s)
-{
-    for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    return s;
-}
-
-// Reads the states file. Throws usage_error("--in", "FILE line L, column C: ...").
-std::vector<State> read_states(const std::string& path)
-{
-    std::ifstream in(path);
-    if (!in) throw usage_error("--in", "cannot open '" + path + "'");
-    const std::string where = path + " line ";
-    std::vector<std::string> header;
-    std::map<std::string, size_t> column;
-    std::vector<State> states;
-    std::string line;
-    int number = 0;
-    while (std::getline(in, line)) {
-        ++number;
-        if (!line.empty() && line.back() == '\r') line.pop_back();
-        const std::string t = trim(line);
-        if (t.empty() || t[0] == '#') continue;
-        const std::vector<std::string> cells = split(t);
-        if (header.empty()) {
-            header = cells;
-            for (size_t c = 0; c < header.size(); ++c) {
-                const std::string& name = header[c];
-                if (std::find(kColumns.begin(), kColumns.end(), name) == kColumns.end()) {
-                    const std::string hint = nearest(name, kColumns);
-                    throw usage_error("--in", where + std::to_string(number) + ": unknown column '" +
-                                                  name + "'" +
-                                                  (hint.empty() ? "" : "; did you mean " + hint + "?") +
-                                                  " (columns: s0, a, b, N, xi_x, xi_y, spin, "
-                                                  "contact_angle, passes, distance, mu, model)");
-                }
-                if (column.count(name))
-                    throw usage_error("--in", where + std::to_string(number) + ": column '" +
-                                                  name + "' appears twice");
-                column[name] = c;
-            }
-            for (const char* need : {"s0", "a", "b", "N"})
-                if (!column.count(need))
-                    throw usage_error("--in", path + ": no column '" + need +
-                                                  "' (s0, a, b and N are required)");
-            continue;
-        }
-        if (cells.size() != header.size())
-            throw usage_error("--in", where + std::to_string(number) + ": " +
-                                          std::to_string(cells.size()) + " values for " +
-                                          std::to_string(header.size()) + " columns");
-        State s;
-        s.line = number;
-        const auto value = [&](const char* name, double fallback) {
-            const auto it = column.find(name);
-            if (it == column.end()) return fallback;
-            const std::string& text = cells[it->second];
-            double v = 0;
-            if (!parse_finite_double(text, v))
-                throw usage_error("--in", where + std::to_string(number) + ", column " + name +
-                                              ": '" + text + "' is not a finite number");
-            return v;
-        };
-        s.s0 = value("s0", 0);
-        s.a = value("a", 0);
-        s.b = value("b", 0);
-        s.N = value("N", 0);
-        s.xi_x = value("xi_x", 0);
-        s.xi_y = value("xi_y", 0);
-        s.spin = value("spin", 0);
-        s.angle = value("contact_angle", 0);
-        s.passes = value("passes", -1);
-        s.distance = value("distance", -1);
-        s.mu = value("mu", -1);
-        if (column.count("model")) {
-            const std::string m = lower(cells[column["model"]]);
-            if (m == "fastsim" || m.empty())
-                s.model = CW_MODEL_FASTSIM;
-            else if (m == "exact")
-                s.model = CW_MODEL_EXACT;
-            else if (m == "calibrated")
-                s.model = CW_MODEL_CALIBRATED;
-            else
-                throw usage_error("--in", where + std::to_string(number) +
-                                              ", column model: '" + cells[column["model"]] +
-                                              "' is not fastsim, exact or calibrated");
-        }
-        states.push_back(s);
-    }
-    if (header.empty()) throw usage_error("--in", path + " has no header line");
-    if (states.empty()) throw usage_error("--in", path + " has no contact states");
-    return states;
+    return std::string(grid_kind_name(g.kind)) + " " + std::to_string(g.nx) + " x " +
+           std::to_string(g.ny) +
+           (g.kind == CW_GRID_UNIFORM ? " (box " + round_trip_text(g.box_scale) + ")" : "");
 }
 
 // ------------------------------------------------------------ the setup
@@ -163,40 +52,11 @@ struct Setup {
     bool wheel = false;
     double radius = 0;          // wheel radius [m] (0: not given)
     cw_wear_params wear;
-    cw_params base;             // material and friction defaults
-    cw_grid grid;
+    ContactInputs base;         // the options' material, pressure and grid
+    std::vector<Input> base_given; // those the options give
     int orientation = 1;
     std::vector<std::string> notes;
 };
-
-std::string row_text(const State& s) { return "line " + std::to_string(s.line); }
-
-[[noreturn]] void row_error(const std::string& file, const State& s, const std::string& what)
-{
-    throw usage_error("--in", file + " " + row_text(s) + ": " + what);
-}
-
-// The passes a state stands for (validated).
-double passes_of(const State& s, const Setup& u, const std::string& file)
-{
-    if (s.passes >= 0 && s.distance >= 0)
-        row_error(file, s, "give passes or distance, not both");
-    if (s.distance >= 0) {
-        if (!u.wheel)
-            row_error(file, s,
-                      "distance is for --body wheel (passes = distance / (2 pi R)); a rail "
-                      "state needs passes (axle passages)");
-        if (!(u.radius > 0))
-            row_error(file, s, "distance needs --wheel-radius (passes = distance / (2 pi R))");
-        return s.distance / (2.0 * kPi * u.radius);
-    }
-    if (s.passes < 0)
-        row_error(file, s,
-                  u.wheel ? "needs passes (wheel revolutions) or distance (rolled, with "
-                            "--wheel-radius): add a column"
-                          : "needs passes (axle passages): add a column passes");
-    return s.passes;
-}
 
 Setup read_setup(const ParsedOptions& o)
 {
@@ -206,10 +66,6 @@ Setup read_setup(const ParsedOptions& o)
         u.radius = o.number("wheel-radius", 0);
         if (!(u.radius > 0)) throw usage_error("--wheel-radius", "must be > 0 (metres)");
         if (!u.wheel) throw usage_error("--wheel-radius", "only used with --body wheel");
-        if (u.radius > 2.0 || u.radius < 0.1)
-            u.notes.push_back("warning: --wheel-radius = " + fmt(u.radius) +
-                              " m is implausible for a railway wheel: radii are 0.3-0.65 m "
-                              "(mm typed as m?)");
     }
     cw_wear_params_init(&u.wear);
     const std::string law = o.text("law", "usfd");
@@ -221,20 +77,11 @@ Setup read_setup(const ParsedOptions& o)
     if (o.has("speed")) {
         u.wear.rolling_speed = o.number("speed", 0);
         if (!(u.wear.rolling_speed > 0)) throw usage_error("--speed", "must be > 0 (m/s)");
-        if (u.wear.rolling_speed > 150)
-            u.notes.push_back("warning: --speed = " + fmt(u.wear.rolling_speed) +
-                              " m/s is implausible: trains run below 150 m/s (km/h typed as m/s?)");
     }
-    if (u.wear.law == CW_WEAR_ARCHARD_KTH && !o.has("speed"))
-        throw usage_error("--speed", "missing: Archard's KTH map needs the rolling speed V [m/s] "
-                                     "(sliding velocity = slip x V)");
     if (o.has("density")) {
         u.wear.density = o.number("density", 0);
         if (!(u.wear.density >= 1 && u.wear.density <= 1e5))
             throw usage_error("--density", "must lie in [1, 1e5] kg/m^3");
-        if (u.wear.density < 1000 || u.wear.density > 25000)
-            u.notes.push_back("warning: --density = " + fmt(u.wear.density) +
-                              " kg/m^3 is implausible for steel (7800 kg/m^3; g/cm^3 typed?)");
     }
     if (o.has("hardness")) {
         if (u.wear.law != CW_WEAR_ARCHARD_KTH)
@@ -242,91 +89,97 @@ Setup read_setup(const ParsedOptions& o)
         u.wear.hardness = o.number("hardness", 0);
         if (!(u.wear.hardness >= 1e6 && u.wear.hardness <= 1e12))
             throw usage_error("--hardness", "must lie in [1e6, 1e12] Pa");
-        if (u.wear.hardness < 5e8)
-            u.notes.push_back("warning: --hardness = " + fmt(u.wear.hardness) +
-                              " Pa is implausible for rail or wheel steel (2-4e9 Pa; MPa or HB "
-                              "typed as Pa?)");
     }
+    for (const std::string& w : wear_option_warnings(u.wear, u.radius))
+        u.notes.push_back("warning: " + w);
     if (u.wheel && u.radius > 0) u.wear.pass_length = 2.0 * kPi * u.radius;
     u.orientation = o.text("orientation", "+1") == "-1" ? -1 : 1;
-    cw_params_init(&u.base);
-    if (o.has("mu")) u.base.mu = o.number("mu", 0);
-    if (o.has("G")) u.base.G = o.number("G", 0);
-    if (o.has("nu")) u.base.nu = o.number("nu", 0);
-    if (!(u.base.mu >= 0)) throw usage_error("--mu", "must be >= 0");
-    if (!(u.base.G > 0)) throw usage_error("--G", "must be > 0 (Pa)");
-    if (!(u.base.nu >= 0 && u.base.nu <= 0.5)) throw usage_error("--nu", "must lie in [0, 0.5]");
-    if (o.has("pressure"))
-        u.base.pressure =
-            o.text("pressure", "") == "elliptic" ? CW_PRESSURE_ELLIPTIC : CW_PRESSURE_PARABOLIC;
-    u.grid = library_default_grid();
-    if (o.has("grid"))
-        u.grid.kind = o.text("grid", "") == "uniform" ? CW_GRID_UNIFORM : CW_GRID_KALKER_STRIPS;
-    u.grid.nx = o.integer("nx", u.grid.nx);
-    u.grid.ny = o.integer("ny", u.grid.ny);
-    u.grid.box_scale = o.number("box-scale", u.grid.box_scale);
-    if (u.grid.nx < 1 || u.grid.nx > CW_MAX_GRID_CELLS)
-        throw usage_error("--nx", "must lie in 1..1000 (got " + std::to_string(u.grid.nx) + ")");
-    if (u.grid.ny < 1 || u.grid.ny > CW_MAX_GRID_CELLS)
-        throw usage_error("--ny", "must lie in 1..1000 (got " + std::to_string(u.grid.ny) + ")");
-    if (o.has("box-scale") && u.grid.kind != CW_GRID_UNIFORM)
-        throw usage_error("--box-scale", "only used with --grid uniform");
-    if (!(u.grid.box_scale >= 1.0 && u.grid.box_scale <= CW_MAX_BOX_SCALE))
-        throw usage_error("--box-scale", "must lie in [1, 100]");
+    // The options every row takes unless its own cell says otherwise, read
+    // and checked by the rules of every door.
+    const OptionSource options(o);
+    u.base = read_contact_inputs(options, library_default_params(), library_default_grid());
+    for (Input in : {Input::mu, Input::G, Input::nu})
+        if (options.has(in)) u.base_given.push_back(in);
     return u;
 }
 
-// The library's contact for a state, checked here with the file's names.
-cw_params params_of(const State& s, const Setup& u, const std::string& file)
-{
-    cw_params p = u.base;
-    p.a = s.a;
-    p.b = s.b;
-    p.normal_force = s.N;
-    if (s.mu >= 0) p.mu = s.mu;
-    p.xi_x = s.xi_x;
-    p.xi_y = s.xi_y;
-    p.phi = s.spin;
-    p.model = s.model;
-    if (!(s.a > 0)) row_error(file, s, "a = " + fmt(s.a) + " must be > 0 (metres)");
-    if (!(s.b > 0)) row_error(file, s, "b = " + fmt(s.b) + " must be > 0 (metres)");
-    const double ratio = s.a / s.b;
-    if (!(ratio >= CW_MIN_ASPECT && ratio <= CW_MAX_ASPECT))
-        row_error(file, s, "a/b = " + fmt(ratio) + " is outside [1e-3, 1e3]");
-    if (!(s.N >= 0)) row_error(file, s, "N = " + fmt(s.N) + " must be >= 0 (newtons)");
-    if (!(p.mu >= 0)) row_error(file, s, "mu = " + fmt(p.mu) + " must be >= 0");
-    if (!(std::fabs(s.angle) <= CW_WEAR_MAX_CONTACT_ANGLE))
-        row_error(file, s, "contact_angle = " + fmt(s.angle) +
-                               " rad must lie within +-85 degrees (+-1.4835 rad)");
-    if (!(std::fabs(s.s0) <= 1e6)) row_error(file, s, "s0 = " + fmt(s.s0) + " m is out of range");
-    return p;
-}
+// ------------------------------------------------------------ the input
 
-// The CLI's plausibility warnings for a row, with the file's column names.
-void row_warnings(const State& s, const cw_params& p, double passes, Setup& u,
-                  std::set<std::string>& seen)
+// One row of the states file: its contact (SI) and its place on the profile.
+struct State {
+    long line = 0;
+    cw_params params;
+    cw_grid grid;
+    WearPlacement place;
+    double speed = 0; // the row's speed column [m/s]; 0: --speed
+};
+
+// Reads and checks every row before anything is solved. Throws
+// usage_error("--in", "FILE line L, column C: ...").
+std::vector<State> read_states(const std::string& path, const ParsedOptions& o, Setup& u)
 {
-    std::vector<std::string> w = plausibility_warnings(p, Units::si());
-    const std::map<std::string, std::string> names = {{"--xi-x", "xi_x"}, {"--xi-y", "xi_y"},
-                                                      {"--spin", "spin"}, {"--a", "a"},
-                                                      {"--b", "b"},       {"--N", "N"},
-                                                      {"--mu", "mu"}};
-    for (std::string& text : w)
-        for (const auto& [option, column] : names)
-            if (text.rfind(option + " ", 0) == 0) text = "column " + column + text.substr(option.size());
-    if (std::fabs(s.s0) > 0.2)
-        w.push_back("column s0 = " + fmt(s.s0) +
-                    " m is implausible: profile coordinates lie within +-0.1 m (mm typed as m?)");
-    if (std::fabs(s.angle) > 1.3)
-        w.push_back("column contact_angle = " + fmt(s.angle) +
-                    " rad is implausible: flange angles stay below 75 degrees (degrees typed as "
-                    "radians?)");
-    if (passes > 1e9)
-        w.push_back("column passes = " + fmt(passes) +
-                    " is implausible for one state (rails see ~1e7 axles a year)");
-    for (const std::string& text : w)
-        if (seen.insert(text).second)
-            u.notes.push_back("warning: " + row_text(s) + ": " + text);
+    try {
+        RowFileReader file(path, RowFile::wear);
+        const RowHeader& header = file.header();
+        for (const std::string& note : header.notes()) u.notes.push_back(note);
+        const std::string defaults = defaults_note(header, u.base.params, path, u.base_given);
+        if (!defaults.empty()) u.notes.push_back(defaults);
+        if (u.wear.law == CW_WEAR_ARCHARD_KTH && !o.has("speed") && !header.has(Input::speed))
+            throw usage_error("--speed", "missing: Archard's KTH map needs the rolling speed V "
+                                         "[m/s] (sliding velocity = slip x V)");
+        WearRules rules;
+        rules.default_body = u.wheel ? 1 : 0;
+        rules.wheel_radius = u.radius;
+        rules.speed_given = o.has("speed");
+        rules.archard = u.wear.law == CW_WEAR_ARCHARD_KTH;
+        std::vector<State> states;
+        std::set<std::string> seen; // each warning once
+        std::vector<std::string> cells;
+        std::string error;
+        long line = 0;
+        while (file.next(cells, line, error)) {
+            if (!error.empty()) throw RowError{error};
+            const RowSource r(header, cells, line);
+            r.require_values();
+            State s;
+            s.line = line;
+            const ContactInputs c = read_contact_inputs(r, u.base.params, u.base.grid);
+            s.params = c.params;
+            s.grid = c.grid;
+            s.place = read_wear_columns(r, rules);
+            if (s.place.body != rules.default_body)
+                r.fail(r.name(Input::body),
+                       std::string("'") + r.text(Input::body) + "', but this run wears the " +
+                           (u.wheel ? "wheel" : "rail") +
+                           " (--body): creepwork wear wears one body; creepwork campaign --wear "
+                           "wears both",
+                       ContactSource::Refusal::unreadable);
+            // One solver and one profile grid serve every row.
+            if (!states.empty() && !same_grid(s.grid, states.front().grid))
+                r.fail(header.has(Input::grid) || header.has(Input::nx) || header.has(Input::ny)
+                           ? "grid/nx/ny"
+                           : r.name(Input::model),
+                       "gives the grid " + grid_text(s.grid) + ", line " +
+                           std::to_string(states.front().line) + " " +
+                           grid_text(states.front().grid) +
+                           ": creepwork wear solves every state on one grid (give the grid "
+                           "columns or --grid, --nx, --ny)",
+                       ContactSource::Refusal::unreadable);
+            std::vector<std::string> w = plausibility_warnings(s.params, r);
+            for (std::string& text : wear_row_warnings(s.place.s0, s.place.angle, s.place.passes, r))
+                w.push_back(std::move(text));
+            for (const std::string& text : w)
+                if (seen.insert(text).second)
+                    u.notes.push_back("warning: line " + std::to_string(line) + ": " + text);
+            states.push_back(s);
+        }
+        if (states.empty()) throw usage_error("--in", path + ": the file has a header but no rows (no contact states)");
+        return states;
+    } catch (const RowFileError& e) {
+        throw usage_error("--in", e.what());
+    } catch (const RowError& e) {
+        throw usage_error("--in", path + " " + e.message);
+    }
 }
 
 // ------------------------------------------------------------ the loop
@@ -346,7 +199,6 @@ struct Handles {
 
 struct StateResult {
     State s;
-    double passes = 0;
     cw_result contact{};
     cw_wear_result wear{};
 };
@@ -364,10 +216,10 @@ std::vector<double> profile_nodes(const ParsedOptions& o, const std::vector<Stat
 {
     double lo = 1e300, hi = -1e300, step = 1e300;
     for (const State& s : states) {
-        lo = std::min(lo, s.s0 - s.b);
-        hi = std::max(hi, s.s0 + s.b);
-        const double strip = 2.0 * s.b * (grid.kind == CW_GRID_UNIFORM ? grid.box_scale : 1.0) /
-                             grid.ny;
+        lo = std::min(lo, s.place.s0 - s.params.b);
+        hi = std::max(hi, s.place.s0 + s.params.b);
+        const double strip =
+            2.0 * s.params.b * (grid.kind == CW_GRID_UNIFORM ? grid.box_scale : 1.0) / grid.ny;
         step = std::min(step, 0.25 * strip);
     }
     const double margin = 0.2 * (hi - lo);
@@ -417,9 +269,10 @@ void write_states_csv(const std::string& path, const std::vector<StateResult>& r
          "Fy_wheel_N,W_macro_J_per_m,work_J_per_m,mass_per_distance_kg_per_m,mass_per_pass_kg,"
          "max_depth_per_pass_m,area_regime1_m2,area_regime2_m2,area_regime3_m2,area_regime4_m2\n";
     for (const StateResult& r : rows) {
-        f << r.s.line << "," << r.s.s0 << "," << r.s.a << "," << r.s.b << "," << r.s.N << ","
-          << r.s.xi_x << "," << r.s.xi_y << "," << r.s.spin << "," << r.s.angle << "," << r.passes
-          << "," << r.contact.Fx << "," << r.contact.Fy << "," << r.contact.W_macro << ","
+        const cw_params& p = r.s.params;
+        f << r.s.line << "," << r.s.place.s0 << "," << p.a << "," << p.b << "," << p.normal_force
+          << "," << p.xi_x << "," << p.xi_y << "," << p.phi << "," << r.s.place.angle << ","
+          << r.s.place.passes << "," << r.contact.Fx << "," << r.contact.Fy << "," << r.contact.W_macro << ","
           << r.wear.work << "," << r.wear.mass_per_distance << "," << r.wear.mass_per_pass << ","
           << r.wear.max_depth;
         for (double a : r.wear.regime_area) f << "," << a;
@@ -562,67 +415,57 @@ int command_wear(int argc, char** argv, int first)
     const std::string out = opts.text("out", "");
     check_output_target(out, "--out", opts.has("force"));
     Setup u = read_setup(opts);
-    const std::vector<State> states = read_states(file);
-
     // Every state checked before anything is solved or written.
-    struct Prepared {
-        cw_params params;
-        double passes;
-    };
-    std::vector<Prepared> prepared;
-    std::set<std::string> seen;
-    for (const State& s : states) {
-        Prepared q;
-        q.passes = passes_of(s, u, file);
-        if (!(q.passes <= CW_WEAR_MAX_PASSES))
-            row_error(file, s, "passes = " + fmt(q.passes) + " exceeds 1e15");
-        q.params = params_of(s, u, file);
-        row_warnings(s, q.params, q.passes, u, seen);
-        prepared.push_back(q);
-    }
+    const std::vector<State> states = read_states(file, opts, u);
+    const cw_grid grid = states.front().grid;
 
     Handles h;
     char message[512] = "";
     {
-        const int st = cw_solver_create(&u.grid, &h.solver, message, sizeof message);
+        const int st = cw_solver_create(&grid, &h.solver, message, sizeof message);
         if (st != CW_OK) throw usage_error("--nx/--ny", message);
     }
     check(cw_wear_create(h.solver, &h.wear), "cw_wear_create", "");
     Profiles prof;
-    prof.s = profile_nodes(opts, states, u.grid);
+    prof.s = profile_nodes(opts, states, grid);
     for (cw_wear_profile** p : {&h.local, &h.parabola})
         if (cw_wear_profile_create(prof.s.data(), prof.s.size(), p, message, sizeof message) !=
             CW_OK)
             throw usage_error("--profile-from/--profile-to/--profile-step", message);
-    const size_t ny = static_cast<size_t>(u.grid.ny);
+    const size_t ny = static_cast<size_t>(grid.ny);
     std::vector<double> y(ny), width(ny), depth(ny), par(ny);
     std::vector<StateResult> rows;
     double mass = 0.0;
     for (size_t k = 0; k < states.size(); ++k) {
         const State& s = states[k];
-        const cw_params& p = prepared[k].params;
+        const auto row_error = [&](const std::string& what) {
+            throw usage_error("--in", file + " line " + std::to_string(s.line) + ": " + what);
+        };
         StateResult r;
         r.s = s;
-        r.passes = prepared[k].passes;
         cw_result_init(&r.contact);
-        const int st = cw_solver_solve(h.solver, &p, CW_SOLVE_FULL, &r.contact);
+        const int st = cw_solver_solve(h.solver, &s.params, CW_SOLVE_FULL, &r.contact);
         if (st != CW_OK)
-            row_error(file, s, std::string(cw_status_string(st)) + ": " +
-                                   cw_solver_last_error(h.solver));
+            row_error(std::string(cw_status_string(st)) + ": " + cw_solver_last_error(h.solver));
         cw_wear_result_init(&r.wear);
-        const int sw = cw_wear_compute(h.wear, h.solver, &u.wear, &r.wear);
+        cw_wear_params wear = u.wear;
+        if (s.place.speed > 0) wear.rolling_speed = s.place.speed;
+        const int sw = cw_wear_compute(h.wear, h.solver, &wear, &r.wear);
         if (sw != CW_OK)
             throw usage_error(sw == CW_ERR_INVALID_INPUT ? "--law/--speed/--density/--hardness"
                                                          : "--in",
                               std::string(cw_status_string(sw)) + ": " + cw_wear_last_error(h.wear));
         check(cw_wear_get_strips(h.wear, y.data(), width.data(), depth.data(), par.data(), ny),
               "cw_wear_get_strips", cw_wear_last_error(h.wear));
-        const int sa = cw_wear_profile_add(h.local, h.wear, s.s0, u.orientation, s.angle, r.passes);
-        if (sa != CW_OK) row_error(file, s, cw_wear_profile_last_error(h.local));
+        const double passes = s.place.passes;
+        const int sa =
+            cw_wear_profile_add(h.local, h.wear, s.place.s0, u.orientation, s.place.angle, passes);
+        if (sa != CW_OK) row_error(cw_wear_profile_last_error(h.local));
         const int sp = cw_wear_profile_add_strips(h.parabola, y.data(), width.data(), par.data(),
-                                                  ny, s.s0, u.orientation, s.angle, r.passes);
-        if (sp != CW_OK) row_error(file, s, cw_wear_profile_last_error(h.parabola));
-        mass += r.passes * r.wear.mass_per_pass;
+                                                  ny, s.place.s0, u.orientation, s.place.angle,
+                                                  passes);
+        if (sp != CW_OK) row_error(cw_wear_profile_last_error(h.parabola));
+        mass += passes * r.wear.mass_per_pass;
         rows.push_back(r);
     }
     const size_t n = prof.s.size();

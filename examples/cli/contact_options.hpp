@@ -1,7 +1,8 @@
 // The options that describe one contact (geometry, load, material or
 // flexibilities, creepages, grid) and their translation into the C ABI's
-// cw_params / cw_grid in SI. Validation happens here, in the user's units
-// and with the option's name, before anything is solved or written; the
+// cw_params / cw_grid in SI, through the rules every door shares
+// (contact_inputs.hpp). Validation happens here, in the user's units and
+// with the option's name, before anything is solved or written; the
 // library's own checks remain the backstop.
 #pragma once
 
@@ -10,6 +11,7 @@
 
 #include <creepwork/creepwork.h>
 
+#include "contact_inputs.hpp"
 #include "options.hpp"
 #include "units.hpp"
 
@@ -28,6 +30,7 @@ struct ContactSetup {
 void print_notes(const ContactSetup& c);
 
 // --a --b --N --mu --G --nu --L1 --L2 --L3 --pressure --rolling-direction --units
+// --spin-offset --flexibility-blending
 std::vector<OptionSpec> material_and_load_options();
 // --xi-x --xi-y --spin
 std::vector<OptionSpec> creepage_options();
@@ -36,11 +39,28 @@ std::vector<OptionSpec> grid_options();
 // --model fastsim|exact|calibrated --tolerance --max-iterations
 std::vector<OptionSpec> model_options();
 
-// The grid the exact model gets when --grid is not given: CONTACT's layout,
-// the uniform grid over kExactBoxScale times the semi-axes with
-// kExactBoxScale times the command's default element count (solve: 24 x 24,
-// 20 elements across the ellipse and two guard cells on each side).
-constexpr double kExactBoxScale = 1.2;
+// The contact's inputs as a command line gives them: "--a" in messages,
+// values in --units.
+class OptionSource : public ContactSource {
+public:
+    explicit OptionSource(const ParsedOptions& opts);
+    std::string name(Input in) const override;
+    std::string label(Input in) const override { return name(in); }
+    const Units& units() const override { return units_; }
+    std::string units_note() const override { return "the CLI reads SI unless --units paper"; }
+    bool has(Input in) const override;
+    double number(Input in) const override;
+    int integer(Input in) const override;
+    std::string choice(Input in, const std::vector<std::string>& choices) const override;
+    bool flag(Input in) const override { return has(in); }
+
+protected:
+    void raise(const std::string& names, const std::string& problem, Refusal why) const override;
+
+private:
+    const ParsedOptions& opts_;
+    Units units_;
+};
 
 // What read_contact insists on. solve has no sensible default for the size
 // and load of a contact, so it requires --a, --b and --N; sweep and fit-fig6
@@ -48,27 +68,13 @@ constexpr double kExactBoxScale = 1.2;
 enum class SizeAndLoad { required, defaulted };
 
 // Reads the options present in opts over the given defaults (SI structs) and
-// validates the result. With --model exact the grid defaults to the uniform
-// one (kExactBoxScale above), and the options the exact model cannot use
-// (--grid strips, --L1..--L3, --pressure, --flexibility-blending) are errors;
-// --tolerance and --max-iterations need --model exact. Throws CliError(kExitUsage) naming the option.
-// Inputs that are valid but implausible for a wheel-rail contact (semi-axes
-// above 0.1 m, G below 1e6 Pa, creepage above 0.5, ...: plausibility_warnings)
-// get a warning each in notes; with SizeAndLoad::required, the library
-// defaults taken for mu, G and nu are named in a note.
+// validates the result (read_contact_inputs: the rules of every door).
+// Throws CliError(kExitUsage) naming the option. Inputs that are valid but
+// implausible for a wheel-rail contact (plausibility_warnings) get a
+// warning each in notes; with SizeAndLoad::required, the library defaults
+// taken for mu, G and nu are named in a note.
 ContactSetup read_contact(const ParsedOptions& opts, const cw_params& default_params,
                           const cw_grid& default_grid,
                           SizeAndLoad size_and_load = SizeAndLoad::defaulted);
-
-// The warnings for p (SI), each naming the option in the user's units.
-std::vector<std::string> plausibility_warnings(const cw_params& p, const Units& u);
-
-// Library defaults (cw_params_init, cw_grid_init).
-cw_params library_default_params();
-cw_grid library_default_grid();
-
-const char* grid_kind_name(int kind);    // "strips" | "uniform"
-const char* model_name(int model);       // "fastsim" | "exact" | "calibrated"
-const char* pressure_name(int pressure); // "parabolic" | "elliptic"
 
 } // namespace cwcli

@@ -44,4 +44,8 @@ std::string nearest(const std::string& word, const std::vector<std::string>& can
 bool parse_finite_double(const std::string& text, double& value);
 bool parse_int(const std::string& text, int& value);
 
+// A number echoed back to the user: the shortest text that reads back as v
+// (std::to_chars), so 0.6 prints as 0.6 and 1e30 as 1e+30.
+std::string round_trip_text(double v);
+
 } // namespace cwcli

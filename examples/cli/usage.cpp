@@ -273,12 +273,14 @@ A pass is one passage of the body's material through the contact: an axle
 passage for the rail, a wheel revolution for the wheel.
 
 STATES.csv: a header line naming the columns (any order; '#' lines and
-blank lines are skipped), then one state per line, SI units:
+blank lines are skipped), then one state per line, SI units. The columns
+are those of `creepwork campaign` (doc/input-schema.md): a file one command
+reads, the other reads too.
   s0             profile coordinate of the patch centre [m]       required
   a, b           semi-axes along x (rolling) and y [m]            required
   N              normal force [N]                                 required
   xi_x, xi_y     creepages [-]                                    default 0
-  spin           spin creepage [1/m]                              default 0
+  phi (or spin)  spin creepage [1/m]                              default 0
   contact_angle  angle of the contact plane to the s axis [rad]   default 0
                  (0: s runs along the surface; else s is the lateral
                  coordinate and depths are also given vertically/radially)
@@ -286,13 +288,21 @@ blank lines are skipped), then one state per line, SI units:
                  wheel revolutions (wheel)
   distance       instead of passes, --body wheel only: rolled distance [m],
                  passes = distance / (2 pi R) (needs --wheel-radius)
-  mu             friction coefficient [-]                         default --mu
-  model          fastsim (default), exact or calibrated (the models this
-                 library holds; exact needs --grid uniform)
-Every state needs passes (or, for a wheel, distance). Values the library
-accepts but a wheel-rail contact never has (a = 7.2 m, N = 80 for 80 kN,
-a contact angle of 70 read as radians) are warned about on stderr, naming the
-line and column.
+  speed          rolling speed [m/s] (Archard)                    default --speed
+  body           rail|wheel: must be --body's (one body per run)
+  mu, G, nu      friction, shear modulus [Pa], Poisson's ratio    default --mu ...
+  model          fastsim (default), exact or calibrated
+  grid, nx, ny, box_scale
+                 the grid (default --grid, --nx, --ny; the exact model:
+                 uniform 24 x 24 over 1.2 a, 1.2 b): one for every state
+  pressure, rolling_direction, spin_offset, flexibility_blending, L1, L2,
+  L3, tolerance, max_iterations: as the options of `creepwork solve`
+  id             a campaign's row name: ignored (with a note)
+Every state needs passes (or, for a wheel, distance). An empty cell takes
+the default. Values the library accepts but a wheel-rail contact never has
+(a = 7.2 m, N = 80 for 80 kN, a contact angle of 70 read as radians) are
+warned about on stderr, naming the line and column, in the words of
+`creepwork solve` and `creepwork campaign`.
 
 wear law:
   --law usfd|archard

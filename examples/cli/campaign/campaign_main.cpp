@@ -26,6 +26,7 @@
 #include "results_writer.hpp"
 #include "wear_output.hpp"
 #include "wear_setup.hpp"
+#include "wire.hpp"
 #include "worker.hpp"
 
 namespace cwcampaign {
@@ -94,11 +95,14 @@ void prepare(const CampaignOptions& opt, Setup& s)
             rules.archard = opt.wear_setup.params.law == CW_WEAR_ARCHARD_KTH;
         }
         try {
-            s.input = read_campaign_csv(opt.in, opt.wear ? &rules : nullptr);
+            s.input = read_campaign_csv(opt.in, opt.wear ? &rules : nullptr, opt.strict);
         } catch (const InputError& e) {
             throw cwcli::usage_error("--in", e.what());
         }
         s.identity = {0, s.input.hash, s.input.cases.size()};
+        // --strict rejects rows another run solves: part of what the
+        // checkpoint holds, so --resume with the other choice is refused.
+        if (opt.strict) s.identity.input_hash = fnv1a("--strict", 8, s.identity.input_hash);
         if (opt.wear) {
             // The grid and the wear options are part of what the checkpoint
             // holds: --resume with others is refused as another input.
@@ -160,8 +164,8 @@ int finish(const CampaignOptions& opt, Setup& s, const RunStats& run, int ranks,
            int threads_total, int threads_rank0)
 {
     const auto start = std::chrono::steady_clock::now();
-    uint64_t ok = 0, failed = 0;
-    std::string first_failure, written;
+    uint64_t ok = 0, failed = 0, warned = 0;
+    std::string first_failure, first_warning, written;
     cw_wear_profile_totals wear_totals[kWearBodies];
     for (cw_wear_profile_totals& t : wear_totals) cw_wear_profile_totals_init(&t);
     if (opt.table) {
@@ -179,6 +183,9 @@ int finish(const CampaignOptions& opt, Setup& s, const RunStats& run, int ranks,
         failed = m.failed;
         for (const std::string& f : m.first_failures)
             first_failure += (first_failure.empty() ? "" : "; ") + f;
+        warned = m.warned;
+        for (const std::string& w : m.first_warnings)
+            first_warning += (first_warning.empty() ? "" : "; ") + w;
         written = opt.out + "/results.csv";
         if (wear) {
             for (const std::string& name : wear->write(opt.out)) written += ", " + name;
@@ -205,6 +212,11 @@ int finish(const CampaignOptions& opt, Setup& s, const RunStats& run, int ranks,
     say("campaign: " + std::to_string(ok + failed) + " rows: " + std::to_string(ok) +
         " solved, " + std::to_string(failed) + " failed" +
         (failed ? " (" + first_failure + ")" : std::string()) + "; wrote " + written);
+    if (warned > 0)
+        say("campaign: " + std::to_string(warned) +
+            (warned == 1 ? " row was solved with warnings in its message ("
+                         : " rows were solved with warnings in their messages (") +
+            first_warning + "); --strict rejects such rows");
     if (opt.table && failed > 0) {
         say("campaign: a table with failed points cannot be interpolated; table.csv marks them");
         return kExitFailure;
@@ -256,6 +268,10 @@ int run(int argc, char** argv)
     if (status != kExitOk) {
         if (rank == 0) say(message);
         return status;
+    }
+    if (rank == 0) {
+        for (const std::string& note : opt.notes) say(note);
+        for (const std::string& note : setup.input.notes) say(note);
     }
 
     if (opt.wear) {

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "../cli_error.hpp"
+#include "../contact_inputs.hpp"
 #include "../json.hpp"
 #include "../options.hpp"
 
@@ -26,19 +27,27 @@ row that cannot be read or solved gets a status and a message on its line;
 the campaign goes on. Killed, it resumes with --resume, without redoing
 finished chunks. doc/campaigns.md describes the files.
 
-input (--in): a CSV file with a header; columns (SI units)
-  required  id,model,grid,nx,ny,a,b,N,mu,G,nu,xi_x,xi_y,phi
-              model fastsim|exact|calibrated, grid strips|uniform; G and nu
-              may be empty when L1, L2, L3 are given
-  optional  box_scale (uniform grid), pressure (parabolic|elliptic),
+input (--in): a CSV file with a header, one contact per row, SI units;
+the columns of `creepwork wear` and the options of `creepwork solve`
+(doc/input-schema.md lists every column, unit and default):
+  required  id (unique), a, b, N
+  optional  model fastsim|exact|calibrated, grid strips|uniform, nx, ny,
+            box_scale, mu, G, nu, L1, L2, L3 (m/Pa, instead of G and nu),
+            xi_x, xi_y, phi (or spin), pressure (parabolic|elliptic),
             rolling_direction (+1|-1), spin_offset, flexibility_blending
-            (0|1), L1, L2, L3 (m/Pa), tolerance, max_iterations (exact
-            model), s0, distance (m; carried to results.csv)
-  wear      (with --wear; the spellings of `creepwork wear`) s0 (m, required),
+            (0|1), exact_load (0|1), tolerance, max_iterations (exact
+            model); s0, distance (m; carried to results.csv)
+  wear      (with --wear; else ignored with a note) s0 (m, required),
             passes (axle passages or wheel revolutions) or distance (m,
             wheel: passes = distance / (2 pi R)), contact_angle (rad, default
             0), body (rail|wheel, default --body), speed (m/s, default --speed)
-  an empty optional cell takes the library's default, as `creepwork solve`
+  an empty cell takes the default of `creepwork solve` (steel on steel,
+  FASTSIM on Kalker's 20 x 20 strips; the exact model uniform 24 x 24)
+  a row with a value out of range gets CW_ERR_INVALID_INPUT or
+  CW_ERR_GRID_OUT_OF_RANGE, one that cannot be read ROW_UNREADABLE; one
+  with an implausible value (a = 7.2 m, N = 100 for 100 kN, G in MPa) is
+  solved with a warning in its message, counted on stderr
+  --strict          reject those rows instead (status ROW_IMPLAUSIBLE)
 
 output:
   --out DIR         the campaign's directory (created; doc/campaigns.md has
@@ -99,6 +108,7 @@ std::vector<OptionSpec> specs()
             {"chunk", K::integer, {}},
             {"max-grids", K::integer, {}},
             {"quiet", K::flag, {}},
+            {"strict", K::flag, {}},
             {"help", K::flag, {}},
             {"table", K::flag, {}},
             {"aob", K::text, {}},
@@ -258,6 +268,7 @@ CampaignOptions read_campaign_options(int argc, char** argv, int first)
     c.resume = o.has("resume");
     c.force = o.has("force");
     c.quiet = o.has("quiet");
+    c.strict = o.has("strict");
     if (c.resume && c.force)
         throw usage_error("--resume", "and --force contradict each other: continue, or start "
                                       "over?");
@@ -265,6 +276,9 @@ CampaignOptions read_campaign_options(int argc, char** argv, int first)
     if (c.table) {
         if (o.has("in"))
             throw usage_error("--in", "not used with --table (the table makes its own rows)");
+        if (o.has("strict"))
+            throw usage_error("--strict", "not used with --table (its points are Kalker's "
+                                          "normalised contacts)");
         for (const char* name : kWearOnly)
             if (o.has(name)) throw usage_error(std::string("--") + name, "only used with --wear");
         if (o.has("wear"))
@@ -280,6 +294,9 @@ CampaignOptions read_campaign_options(int argc, char** argv, int first)
         c.wear = o.has("wear");
         if (c.wear) {
             read_wear(o, c.wear_setup);
+            for (const std::string& w :
+                 cwcli::wear_option_warnings(c.wear_setup.params, c.wear_setup.wheel_radius))
+                c.notes.push_back("warning: " + w);
         } else {
             for (const char* name : kWearOnly)
                 if (o.has(name))

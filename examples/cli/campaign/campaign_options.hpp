@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include "creep_table.hpp"
 #include "wear_setup.hpp"
@@ -22,8 +23,10 @@ struct CampaignOptions {
     uint64_t chunk = 0;       // --chunk rows; 0 = sized by measured speed
     int max_grids = 8;        // --max-grids: batches (grid shapes) kept per rank
     bool quiet = false;       // --quiet: no progress lines
+    bool strict = false;      // --strict: a row with a plausibility warning is rejected
     bool wear = false;        // --wear: each row's wear, accumulated on profiles
     WearSetup wear_setup;     // --wear's options (nodes made later, on rank 0)
+    std::vector<std::string> notes; // warnings about implausible options, for stderr
 };
 
 // Throws cwcli::CliError(kExitUsage) naming the option.

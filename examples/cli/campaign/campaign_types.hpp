@@ -13,9 +13,12 @@
 
 namespace cwcampaign {
 
-// Status of a row the input reader rejected (never sent to the library).
-// Library statuses are the CW_STATUS_LIST codes, all >= 0.
-constexpr int kStatusRowUnreadable = -1;
+// Statuses of rows the input reader rejected (never sent to the library).
+// Library statuses are the CW_STATUS_LIST codes, all >= 0; the reader also
+// gives a row the library's CW_ERR_INVALID_INPUT or CW_ERR_GRID_OUT_OF_RANGE
+// when a value is out of its range (the checks of `creepwork solve`).
+constexpr int kStatusRowUnreadable = -1;  // a cell or a combination cannot be read
+constexpr int kStatusRowImplausible = -2; // --strict: a plausibility warning
 
 // The bodies whose profiles a wear campaign accumulates (--wear).
 constexpr int kRail = 0, kWheel = 1, kWearBodies = 2;
@@ -33,12 +36,13 @@ struct RowWear {
 };
 
 // One contact, in SI, as cw_batch_solve takes it. A row the reader rejected
-// keeps its reason in `unreadable` and is passed through untouched.
+// keeps its status and reason and is passed through untouched.
 struct ContactCase {
     cw_grid grid;
     cw_params params;
     RowWear wear;
-    std::string unreadable; // non-empty: the row could not be read (the message)
+    std::string rejected; // non-empty: why the reader rejected the row
+    int32_t rejected_status = kStatusRowUnreadable; // its status, when rejected
 };
 
 // A row's wear results (Outcome::wear), in this order; results.csv's wear
@@ -56,7 +60,7 @@ enum WearValue {
 
 // The result of one row: the library's status and totals, or a message.
 struct Outcome {
-    int status = CW_OK; // CW_OK, a CW_ERR_* code, or kStatusRowUnreadable
+    int status = CW_OK; // CW_OK, a CW_ERR_* code, or a kStatusRow* code
     cw_result result;   // valid when status == CW_OK
     std::string message; // why the row failed ("" when it succeeded)
     // With --wear: the row's kWearValues wear results (empty otherwise, and
@@ -87,7 +91,7 @@ struct ChunkResult {
 };
 
 // Human name of a status for results.csv: "ok", "CW_ERR_INVALID_INPUT", ...,
-// or "ROW_UNREADABLE".
+// "ROW_UNREADABLE" or "ROW_IMPLAUSIBLE".
 const char* status_name(int status);
 
 // "rail", "wheel".

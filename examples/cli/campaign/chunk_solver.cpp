@@ -79,9 +79,9 @@ std::vector<Outcome> ChunkSolver::solve(const Chunk& chunk)
     std::map<cw_grid, std::vector<size_t>, GridOrder> groups;
     for (size_t i = 0; i < n; ++i) {
         const ContactCase& c = chunk.cases[i];
-        if (!c.unreadable.empty()) {
-            out[i].status = kStatusRowUnreadable;
-            out[i].message = c.unreadable;
+        if (!c.rejected.empty()) {
+            out[i].status = c.rejected_status;
+            out[i].message = c.rejected;
             cw_result_init(&out[i].result);
             continue;
         }

@@ -6,12 +6,14 @@
 
 #include "../json.hpp"
 #include "atomic_file.hpp"
-#include "csv_text.hpp"
+#include "../csv_text.hpp"
 #include "number_text.hpp"
 #include "results_writer.hpp"
 #include "wire.hpp"
 
 namespace cwcampaign {
+
+using cwcli::csv_quote;
 
 TableSpec usetab_axes()
 {
@@ -77,7 +79,7 @@ std::vector<ContactCase> table_cases(const TableSpec& s)
             p.G = 1.0;
             p.nu = nu;
             if (status != CW_OK)
-                base.unreadable = std::string("a/b = ") + number_text(aob) +
+                base.rejected = std::string("a/b = ") + number_text(aob) +
                                   ", nu = " + number_text(nu) + ": " + message;
             for (double xi : s.xi)
                 for (double eta : s.eta)

@@ -45,7 +45,7 @@ uint64_t table_points(const TableSpec& spec);
 // The identity of a table on resume: every axis value and option.
 uint64_t table_hash(const TableSpec& spec);
 // One case per point, in point order; a/b or nu outside Kalker's table
-// makes that point's row unreadable with the library's message.
+// makes that point's row rejected (ROW_UNREADABLE) with the library's message.
 std::vector<ContactCase> table_cases(const TableSpec& spec);
 
 struct TableSummary {

@@ -4,10 +4,12 @@
 #include <cmath>
 
 #include "atomic_file.hpp"
-#include "csv_text.hpp"
+#include "../csv_text.hpp"
 #include "number_text.hpp" // the digits `creepwork solve --format json` prints
 
 namespace cwcampaign {
+
+using cwcli::csv_quote;
 
 namespace {
 
@@ -115,25 +117,29 @@ MergeSummary write_results_csv(const Journal& journal, const CampaignInput& in,
         if (wear) {
             const ContactCase& c = in.cases[row];
             line += ',';
-            if (c.unreadable.empty()) line += body_name(c.wear.body);
+            if (c.rejected.empty()) line += body_name(c.wear.body);
             for (int k = 0; k < kWearValues; ++k) {
                 line += ',';
                 if (o.status == CW_OK && o.wear.size() == kWearValues)
                     append_number(line, o.wear[k]);
             }
         }
-        line += "," + csv_quote(o.message) + "\n";
+        // A solved row's message holds its plausibility warnings.
+        const std::string& message = o.status == CW_OK ? in.warnings[row] : o.message;
+        line += "," + csv_quote(message) + "\n";
         out.write(line);
+        // Messages of rejected rows already name their line.
+        const std::string where =
+            "id " + in.ids[row] + ": " +
+            (message.compare(0, 5, "line ") == 0 ? ""
+                                                 : "line " + std::to_string(in.lines[row]) + ": ");
         if (o.status == CW_OK) {
             ++summary.ok;
+            if (!message.empty() && ++summary.warned <= 3)
+                summary.first_warnings.push_back(where + message);
         } else {
             ++summary.failed;
-            if (summary.first_failures.size() < 3)
-                summary.first_failures.push_back(
-                    "id " + in.ids[row] + ": " +
-                    (o.status == kStatusRowUnreadable
-                         ? o.message // already names its line and column
-                         : "line " + std::to_string(in.lines[row]) + ": " + o.message));
+            if (summary.first_failures.size() < 3) summary.first_failures.push_back(where + message);
         }
     }, wear ? std::function<void(const ChunkResult&)>(
                   [wear](const ChunkResult& chunk) { wear->add_chunk(chunk); })

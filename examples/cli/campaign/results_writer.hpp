@@ -19,6 +19,8 @@ namespace cwcampaign {
 struct MergeSummary {
     uint64_t rows = 0, ok = 0, failed = 0;
     std::vector<std::string> first_failures; // up to three "id X: line L: message"
+    uint64_t warned = 0;                     // solved rows with warnings
+    std::vector<std::string> first_warnings; // up to three "id X: line L: warning"
 };
 
 // The header of results.csv (the optional s0, distance columns only when

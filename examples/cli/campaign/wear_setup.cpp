@@ -27,7 +27,7 @@ std::vector<double> profile_nodes(const WearSetup& setup, const std::vector<Cont
 {
     double lo = 1e300, hi = -1e300, step = 1e300;
     for (const ContactCase& c : rows) {
-        if (!c.unreadable.empty()) continue;
+        if (!c.rejected.empty()) continue;
         const double box = c.grid.kind == CW_GRID_UNIFORM ? c.grid.box_scale : 1.0;
         const double b = c.params.b * box;
         lo = std::min(lo, c.wear.s0 - b);

@@ -89,7 +89,7 @@ WearChunkSolver::Handles* WearChunkSolver::handles_for(Lane& lane, const cw_grid
 
 void WearChunkSolver::solve_row(Lane& lane, const ContactCase& c, Outcome& out)
 {
-    if (!c.unreadable.empty()) return fail_row(out, kStatusRowUnreadable, c.unreadable);
+    if (!c.rejected.empty()) return fail_row(out, c.rejected_status, c.rejected);
     int status = CW_OK;
     std::string message;
     Handles* h = handles_for(lane, c.grid, status, message);

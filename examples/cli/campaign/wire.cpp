@@ -11,7 +11,7 @@ namespace {
 // Message kinds: the first byte of every encoded buffer.
 constexpr unsigned char kChunkTag = 'C', kStopTag = 'S', kResultTag = 'R';
 // Per-case marker: a contact to solve, or a row the reader rejected.
-constexpr unsigned char kCaseContact = 0, kCaseUnreadable = 1;
+constexpr unsigned char kCaseContact = 0, kCaseRejected = 1;
 
 class Writer {
 public:
@@ -137,9 +137,10 @@ Bytes encode_chunk(const Chunk& chunk)
     w.put<int32_t>(chunk.mode);
     w.put<uint32_t>(static_cast<uint32_t>(chunk.cases.size()));
     for (const ContactCase& c : chunk.cases) {
-        if (!c.unreadable.empty()) {
-            w.put(kCaseUnreadable);
-            w.put_string(c.unreadable);
+        if (!c.rejected.empty()) {
+            w.put(kCaseRejected);
+            w.put(c.rejected_status);
+            w.put_string(c.rejected);
         } else {
             w.put(kCaseContact);
             w.put(c.grid);
@@ -161,9 +162,11 @@ Chunk decode_chunk(const Bytes& bytes)
     chunk.cases.resize(n);
     for (ContactCase& c : chunk.cases) {
         const auto kind = r.get<unsigned char>();
-        if (kind == kCaseUnreadable) {
-            c.unreadable = r.get_string();
-            if (c.unreadable.empty()) throw WireError("chunk message: empty row message");
+        if (kind == kCaseRejected) {
+            c.rejected_status = r.get<int32_t>();
+            c.rejected = r.get_string();
+            if (c.rejected.empty() || c.rejected_status == CW_OK)
+                throw WireError("chunk message: a rejected row without status or message");
         } else if (kind == kCaseContact) {
             c.grid = r.get<cw_grid>();
             c.params = r.get<cw_params>();

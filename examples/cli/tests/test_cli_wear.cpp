@@ -177,23 +177,23 @@ void wear_bad_inputs_fail_cleanly(void**)
         {{"wear", "--in", file("col.csv", "s0,a,b,N,pases\n0,6e-3,4e-3,6e4,1\n"), "--out", never},
          "did you mean passes?"},
         {{"wear", "--in", file("noN.csv", "s0,a,b,passes\n0,6e-3,4e-3,1\n"), "--out", never},
-         "no column 'N'"},
+         "lacks the required column(s) N"},
         {{"wear", "--in", file("num.csv", "s0,a,b,N,passes\n0,6e-3,abc,6e4,1\n"), "--out", never},
          "line 2, column b"},
         {{"wear", "--in", file("nan.csv", "s0,a,b,N,passes\n0,6e-3,nan,6e4,1\n"), "--out", never},
          "column b"},
         {{"wear", "--in", file("cells.csv", "s0,a,b,N,passes\n0,6e-3,4e-3\n"), "--out", never},
-         "line 2: 3 values for 5 columns"},
+         "line 2 has 3 fields, the header 5"},
         {{"wear", "--in", file("nopass.csv", "s0,a,b,N\n0,6e-3,4e-3,6e4\n"), "--out", never},
          "passes"},
         {{"wear", "--in", file("dist.csv", "s0,a,b,N,distance\n0,6e-3,4e-3,6e4,10\n"), "--out",
           never},
-         "distance is for --body wheel"},
+         "column distance: is for a wheel"},
         {{"wear", "--in", file("dist2.csv", "s0,a,b,N,distance\n0,6e-3,4e-3,6e4,10\n"), "--out",
           never, "--body", "wheel"},
          "--wheel-radius"},
         {{"wear", "--in", file("neg.csv", "s0,a,b,N,passes\n0,6e-3,-4e-3,6e4,1\n"), "--out", never},
-         "line 2: b"},
+         "line 2, column b: must be > 0 (got -0.004 m)"},
         {{"wear", "--in", file("ang.csv", "s0,a,b,N,passes,contact_angle\n0,6e-3,4e-3,6e4,1,2\n"),
           "--out", never},
          "contact_angle"},
@@ -242,6 +242,52 @@ void wear_warns_about_implausible_values(void**)
     assert_non_null(std::strstr(r.err.c_str(), "line 4: column contact_angle = 1.4"));
 }
 
+// A campaign's file feeds creepwork wear: the campaign's id (ignored, with
+// a note), its column names (phi for spin) and its grid columns; the
+// profile and the states are those of the same states in wear's own
+// spelling with the grid given as options. A bad value is named with the
+// value as written.
+void wear_reads_campaign_files(void**)
+{
+    const std::string campaign = scratch_file(
+        "campaign.csv", "id,model,grid,nx,ny,a,b,N,mu,G,nu,xi_x,xi_y,phi,s0,passes\n"
+                        "t1,fastsim,strips,12,10,6e-3,4e-3,60e3,0.3,82e9,0.28,1e-3,-5e-4,0.5,0.001,200\n"
+                        "t2,fastsim,strips,12,10,5e-3,3e-3,70e3,0.35,82e9,0.28,5e-4,1e-3,4.0,-0.003,300\n");
+    const std::string own = scratch_file("own.csv", "s0,a,b,N,xi_x,xi_y,spin,passes,mu\n"
+                                                    "0.001,6e-3,4e-3,60e3,1e-3,-5e-4,0.5,200,0.3\n"
+                                                    "-0.003,5e-3,3e-3,70e3,5e-4,1e-3,4.0,300,0.35\n");
+    const Run r = cli_ok({"wear", "--in", campaign, "--out", path("campaign"), "--no-plots"});
+    expect_contains(r.err, "campaign.csv: column id not read by creepwork wear: ignored");
+    cli_ok({"wear", "--in", own, "--out", path("own"), "--nx", "12", "--ny", "10", "--no-plots"});
+    assert_true(slurp(path("campaign/wear_profile.csv")) == slurp(path("own/wear_profile.csv")));
+    assert_true(slurp(path("campaign/states.csv")) == slurp(path("own/states.csv")));
+    // Rows on different grids cannot share one profile solver.
+    const std::string grids = scratch_file(
+        "grids.csv", "s0,a,b,N,nx,passes\n0,6e-3,4e-3,6e4,12,1\n0,6e-3,4e-3,6e4,14,1\n");
+    expect_refusal(cli({"wear", "--in", grids, "--out", path("never"), "--no-plots"}), 2,
+                   "line 3, column grid/nx/ny: gives the grid strips 14 x 20, line 2 strips 12 x 20",
+                   "wear grids.csv");
+    // The value that is wrong, as written.
+    const std::string negative =
+        scratch_file("negative.csv", "s0,a,b,N,xi_x,passes\n0.0,6e-3,4e-3,60e3,0.001,-5\n");
+    expect_refusal(cli({"wear", "--in", negative, "--out", path("never"), "--no-plots"}), 2,
+                   "negative.csv line 2, column passes: must lie in [0, 1e15] (got -5)",
+                   "wear negative.csv");
+    assert_false(exists(path("never")));
+}
+
+// The unit mistakes a campaign warns about get the same words from wear.
+void wear_warns_like_solve(void**)
+{
+    const std::string in = scratch_file("mm.csv", "s0,a,b,N,passes\n0,7.2,5.4,100e3,1\n");
+    const Run r = cli_ok({"wear", "--in", in, "--out", path("mm"), "--no-plots"});
+    expect_contains(r.err, "warning: line 2: column a = 7.2 m is implausible for a wheel-rail "
+                           "contact: semi-axes are 1-20 mm (were millimetres typed as metres?");
+    const Run solve = cli_ok({"solve", "--a", "7.2", "--b", "5.4", "--N", "100e3"});
+    expect_contains(solve.err, "warning: --a = 7.2 m is implausible for a wheel-rail contact: "
+                               "semi-axes are 1-20 mm (were millimetres typed as metres?");
+}
+
 // The picture: written with its script, unless gnuplot is missing.
 void wear_writes_picture(void**)
 {
@@ -268,6 +314,8 @@ int main(int argc, char** argv)
         cmocka_unit_test(wear_bad_inputs_fail_cleanly),
         cmocka_unit_test(wear_warns_about_implausible_values),
         cmocka_unit_test(wear_writes_picture),
+        cmocka_unit_test(wear_reads_campaign_files),
+        cmocka_unit_test(wear_warns_like_solve),
     };
     return cw_run_tests(tests, g_tools.test);
 }

@@ -205,6 +205,15 @@ std::vector<Row> mixed_rows()
     return rows;
 }
 
+const char* status_name(int status)
+{
+#define CW_TEST_STATUS_NAME_(name, value, message) \
+    if (status == value) return #name;
+    CW_STATUS_LIST(CW_TEST_STATUS_NAME_)
+#undef CW_TEST_STATUS_NAME_
+    return "unknown status";
+}
+
 Expected solve_directly(const Row& row)
 {
     cw_grid g;

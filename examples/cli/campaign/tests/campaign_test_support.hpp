@@ -58,5 +58,7 @@ struct Expected {
     std::map<std::string, std::string> cells;
 };
 Expected solve_directly(const Row& row);
+// "CW_ERR_INVALID_INPUT" for a library status.
+const char* status_name(int status);
 
 } // namespace cwtest

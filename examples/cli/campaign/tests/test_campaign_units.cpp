@@ -18,7 +18,7 @@
 
 #include "../../json.hpp"
 #include "../chunk_planner.hpp"
-#include "../csv_text.hpp"
+#include "../../csv_text.hpp"
 #include "../journal.hpp"
 #include "../number_text.hpp"
 #include "../wire.hpp"
@@ -28,6 +28,8 @@
 
 namespace fs = std::filesystem;
 using namespace cwcampaign;
+using cwcli::csv_quote;
+using cwcli::CsvRecordReader;
 using cwtest::g_tools;
 
 namespace {
@@ -164,7 +166,8 @@ Chunk sample_chunk()
     c.cases[0].wear.body = kWheel;
     c.cases[0].wear.s0 = -0.003;
     c.cases[0].wear.passes = 1234.5;
-    c.cases[1].unreadable = "line 9, column nu: 'x' is not a finite number";
+    c.cases[1].rejected = "line 9, column nu: must lie in [0, 0.5] (got 0.7)";
+    c.cases[1].rejected_status = CW_ERR_INVALID_INPUT;
     return c;
 }
 
@@ -198,7 +201,8 @@ void wire_round_trips_and_rejects_damage(void** state)
     assert_int_equal(back.first_row, 40);
     assert_int_equal(back.mode, CW_SOLVE_FORCES);
     assert_true(back.cases[0].params.xi_x == 1e-3);
-    assert_string_equal(back.cases[1].unreadable.c_str(), c.cases[1].unreadable.c_str());
+    assert_string_equal(back.cases[1].rejected.c_str(), c.cases[1].rejected.c_str());
+    assert_int_equal(back.cases[1].rejected_status, CW_ERR_INVALID_INPUT);
     const ChunkResult r = sample_result(10, 5);
     const Bytes bytes = encode_result(r);
     const ChunkResult rb = decode_result(bytes);

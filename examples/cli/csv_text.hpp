@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-namespace cwcampaign {
+namespace cwcli {
 
 class CsvRecordReader {
 public:
@@ -40,4 +40,4 @@ private:
 // comma, quote, CR, LF or leading/trailing space, else as is.
 std::string csv_quote(const std::string& field);
 
-} // namespace cwcampaign
+} // namespace cwcli

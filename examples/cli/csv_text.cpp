@@ -1,6 +1,6 @@
 #include "csv_text.hpp"
 
-namespace cwcampaign {
+namespace cwcli {
 
 int CsvRecordReader::get()
 {
@@ -102,4 +102,4 @@ std::string csv_quote(const std::string& field)
     return out + "\"";
 }
 
-} // namespace cwcampaign
+} // namespace cwcli
