@@ -315,6 +315,7 @@ int run(int argc, char** argv)
     config.target_seconds = std::max(0.25, 0.01 * ranks);
     config.local = worker;
     config.progress = !opt.quiet;
+    if (opt.progress > 0) config.first_report = config.report_every = opt.progress;
     RunStats stats;
     try {
         stats = coordinate(cases, done, *setup.output.journal, config);

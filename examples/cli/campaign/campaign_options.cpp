@@ -86,6 +86,8 @@ running:
                     a node when they are not bound)
   --chunk N         rows per chunk (default: sized to about 0.25 s of work)
   --max-grids N     grid shapes each rank keeps ready (default 8)
+  --progress S      a progress line on stderr every S seconds (default: the
+                    first within 5 s, then every 30 s)
   --quiet           no progress lines on stderr
 
 exit status: 0 done (rows that failed are in the results, counted on
@@ -108,6 +110,7 @@ std::vector<OptionSpec> specs()
             {"chunk", K::integer, {}},
             {"max-grids", K::integer, {}},
             {"quiet", K::flag, {}},
+            {"progress", K::number, {}},
             {"strict", K::flag, {}},
             {"help", K::flag, {}},
             {"table", K::flag, {}},
@@ -269,6 +272,13 @@ CampaignOptions read_campaign_options(int argc, char** argv, int first)
     c.force = o.has("force");
     c.quiet = o.has("quiet");
     c.strict = o.has("strict");
+    if (o.has("progress")) {
+        if (c.quiet) throw usage_error("--progress", "and --quiet contradict each other");
+        c.progress = o.number("progress", 0);
+        if (!(c.progress > 0 && c.progress <= 86400))
+            throw usage_error("--progress", "must lie in (0, 86400] seconds (got " +
+                                                cwcli::round_trip_text(c.progress) + ")");
+    }
     if (c.resume && c.force)
         throw usage_error("--resume", "and --force contradict each other: continue, or start "
                                       "over?");

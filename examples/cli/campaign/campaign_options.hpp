@@ -23,6 +23,7 @@ struct CampaignOptions {
     uint64_t chunk = 0;       // --chunk rows; 0 = sized by measured speed
     int max_grids = 8;        // --max-grids: batches (grid shapes) kept per rank
     bool quiet = false;       // --quiet: no progress lines
+    double progress = 0;      // --progress S: a line every S seconds; 0: 5 s, then 30 s
     bool strict = false;      // --strict: a row with a plausibility warning is rejected
     bool wear = false;        // --wear: each row's wear, accumulated on profiles
     WearSetup wear_setup;     // --wear's options (nodes made later, on rank 0)

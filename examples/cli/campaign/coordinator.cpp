@@ -42,7 +42,8 @@ public:
         local_ = std::make_unique<LocalWorker>(config_.local);
         for (int w = 0; w < static_cast<int>(workers_.size()); ++w) top_up(w);
         mpi::Backoff backoff;
-        Clock::time_point last_sync = Clock::now(), last_report = Clock::now();
+        Clock::time_point last_sync = Clock::now();
+        double next_report = config_.first_report;
         Bytes bytes;
         int source = 0;
         while (!finished()) {
@@ -62,9 +63,9 @@ public:
                 journal_.sync();
                 last_sync = Clock::now();
             }
-            if (config_.progress && since(last_report) >= 30.0) {
+            if (config_.progress && since(start) >= next_report) {
                 report(since(start));
-                last_report = Clock::now();
+                next_report = since(start) + config_.report_every;
             }
             if (progressed)
                 backoff.reset();

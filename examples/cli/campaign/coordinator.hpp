@@ -20,7 +20,9 @@ struct CoordinatorConfig {
     uint64_t fixed_chunk = 0;    // rows per chunk; 0 = sized by measured speed
     double target_seconds = 0.25; // chunk duration aimed at when sized by speed
     WorkerConfig local;          // rank 0's own solver thread
-    bool progress = true;        // a progress line on stderr every 30 s
+    bool progress = true;        // progress lines on stderr:
+    double first_report = 5.0;   //   the first after this many seconds,
+    double report_every = 30.0;  //   then one every this many
 };
 
 struct RunStats {

@@ -573,6 +573,41 @@ void schema_defaults_and_aliases(void** state)
         assert_string_equal(st[k][si.at("Fx")].c_str(), records[k][idx.at("Fx")].c_str());
 }
 
+// Progress on stderr: by default a first line within 5 s, then every 30 s;
+// --progress S every S seconds. Rows slowed to a known time per chunk.
+void progress_lines(void** state)
+{
+    (void)state;
+    const std::vector<Row> all = mixed_rows();
+    write_input(path("three.csv"), std::vector<Row>(all.begin(), all.begin() + 3));
+    const std::vector<std::string> slow = {"--chunk", "1", "--threads", "1"};
+    // 3 rows of 2 s: about 6 s, one line at 5 s.
+    Run r = expect_status(
+        campaign(0, with({"--in", path("three.csv"), "--out", path("default")}, slow),
+                 {"CREEPWORK_CAMPAIGN_TEST_CHUNK_DELAY_MS=2000"}),
+        0);
+    expect_contains(r.err, "creepwork: campaign: ");
+    expect_contains(r.err, " of 3 rows done (");
+    // 2 rows of 1 s with a line every 0.5 s: at least three lines.
+    write_input(path("two.csv"), std::vector<Row>(all.begin(), all.begin() + 2));
+    r = expect_status(campaign(0, with({"--in", path("two.csv"), "--out", path("often"),
+                                        "--progress", "0.5"},
+                                       slow),
+                               {"CREEPWORK_CAMPAIGN_TEST_CHUNK_DELAY_MS=1000"}),
+                      0);
+    size_t lines = 0;
+    for (size_t at = 0; (at = r.err.find(" rows done (", at)) != std::string::npos; ++at) ++lines;
+    if (lines < 3) print_error("%zu progress lines:\n%s\n", lines, r.err.c_str());
+    assert_true(lines >= 3);
+    // Bad values, and --quiet with --progress.
+    for (const auto& [args, message] : std::vector<std::pair<std::vector<std::string>, std::string>>{
+             {{"--progress", "0"}, "--progress: must lie in (0, 86400] seconds (got 0)"},
+             {{"--progress", "x"}, "--progress"},
+             {{"--progress", "5", "--quiet"}, "--progress: and --quiet contradict each other"}})
+        expect_refusal(campaign(0, with({"--in", path("two.csv"), "--out", path("never")}, args)),
+                       2, message, "campaign --progress");
+}
+
 // Direct solve of a table point on a physical contact: Kalker's
 // normalisation undone with c = 6 mm, N = 80 kN, mu = 0.3, G = 82 GPa.
 struct Direct {
@@ -702,6 +737,7 @@ int main(int argc, char** argv)
         cmocka_unit_test(resume_with_one_row_pending),
         cmocka_unit_test(unit_mistakes_are_warned),
         cmocka_unit_test(schema_defaults_and_aliases),
+        cmocka_unit_test(progress_lines),
     };
     return cw_run_tests(tests, g_tools.test);
 }
