@@ -55,6 +55,34 @@ void compare_default_contact(cw_params& p, cw_grid& g)
     g.box_scale = kExactBoxScale;
 }
 
+// "contact: a = ..., b = ...": the contact solved, in --units, and where
+// its values come from when options leave some out.
+std::string contact_line(const ParsedOptions& o, const ContactSetup& c)
+{
+    const OptionSource names(o);
+    const cw_params& p = c.params;
+    std::string line = "contact: ";
+    const auto add = [&](Input in, double si, const char* separator) {
+        line += std::string(info(in).column) + " = " + value_text(names, in, si) + separator;
+    };
+    add(Input::a, p.a, ", ");
+    add(Input::b, p.b, ", ");
+    add(Input::N, p.normal_force, ", ");
+    add(Input::mu, p.mu, ", ");
+    add(Input::G, p.G, ", ");
+    add(Input::nu, p.nu, "; ");
+    add(Input::xi_x, p.xi_x, ", ");
+    add(Input::xi_y, p.xi_y, ", ");
+    line += "spin = " + value_text(names, Input::phi, p.phi);
+    int given = 0;
+    const Input contact[] = {Input::a,  Input::b,    Input::N,    Input::mu,  Input::G,
+                             Input::nu, Input::xi_x, Input::xi_y, Input::phi};
+    for (Input in : contact) given += names.has(in);
+    if (given == 0) line += " (the paper's Fig. 6 contact, compare's default)";
+    else if (given < 9) line += " (options not given take the paper's Fig. 6 values)";
+    return line;
+}
+
 JsonObject metrics_json(const WorkComparison& m)
 {
     JsonObject j;
@@ -133,10 +161,11 @@ std::vector<Simplified> chosen_simplified(const std::string& option)
 
 // One column per simplified model, then exact, then each simplified model
 // relative to exact; with FASTSIM alone the table compare always printed.
-void print_text(std::ostream& os, const std::vector<Simplified>& names,
+void print_text(std::ostream& os, const std::string& contact, const std::vector<Simplified>& names,
                 const std::vector<Solution>& sims, const Solution& e,
                 const std::vector<WorkComparison>& ms, const Units& u)
 {
+    os << contact << "\n";
     using Q = Quantity;
     const auto val = [&u](double si, Q q) { return u.from_si(q, si); };
     char cell[64];
@@ -361,7 +390,7 @@ int command_compare(int argc, char** argv, int first)
     else if (opts.text("format", "text") == "markdown")
         print_markdown(std::cout, names, sims, e, ms);
     else
-        print_text(std::cout, names, sims, e, ms, u);
+        print_text(std::cout, contact_line(opts, c), names, sims, e, ms, u);
     return kExitOk;
 }
 

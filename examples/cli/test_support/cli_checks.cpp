@@ -1,6 +1,7 @@
 #include "cli_checks.hpp"
 
 #include <algorithm>
+#include <charconv>
 #include <cstdio>
 #include <filesystem>
 
@@ -114,6 +115,13 @@ std::string exact(double v)
     char buf[32];
     std::snprintf(buf, sizeof buf, "%.17g", v);
     return buf;
+}
+
+std::string round_trip(double v)
+{
+    char buf[64];
+    const auto r = std::to_chars(buf, buf + sizeof buf, v);
+    return std::string(buf, r.ptr);
 }
 
 cw_result library_solve(const cw_grid& g, const cw_params& p, int mode)

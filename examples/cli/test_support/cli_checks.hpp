@@ -58,8 +58,10 @@ void expect_refusal(const Run& r, int status, const std::string& part, const std
 // The JSON document, or the test fails showing the text.
 Json parse_or_fail(const std::string& text);
 
-// "%.17g": a double as text that reads back exactly.
+// "%.17g": a double as text that reads back exactly; round_trip: the
+// shortest such text (std::to_chars), as creepwork echoes numbers.
 std::string exact(double v);
+std::string round_trip(double v);
 
 // The library's own result for the contact (cw_solver_solve on a new solver);
 // the test fails unless it solves.

@@ -585,6 +585,22 @@ void compare_fig6_readme_numbers(void**)
     }
 }
 
+// compare's text names the contact it solved, the defaults included.
+void compare_names_its_contact(void**)
+{
+    const Run r = cli_ok({"compare", "--nx", "12", "--ny", "12"});
+    // The paper's Fig. 6 contact (a = 6.6323 mm, b = a/2, N = 10000 lbf,
+    // spin 0.144 1/ft) in SI, as the values read back.
+    expect_contains(r.out, "contact: a = 0.0066323 m, b = 0.00331615 m, N = " +
+                               round_trip(10000 * 4.4482216152605) + " N, mu = 0.6, G = " +
+                               round_trip(82e9) + " Pa, nu = 0.3; xi_x = 0.0019, xi_y = 0.0011, "
+                               "spin = " + round_trip(0.144 / 0.3048) + " 1/m (the paper's Fig. 6 "
+                               "contact, compare's default)");
+    const Run some = cli_ok({"compare", "--nx", "12", "--ny", "12", "--a", "0.007"});
+    expect_contains(some.out, "contact: a = 0.007 m, b = 0.00331615 m");
+    expect_contains(some.out, "(options not given take the paper's Fig. 6 values)");
+}
+
 } // namespace
 
 int main(int argc, char** argv)
@@ -600,6 +616,7 @@ int main(int argc, char** argv)
         cmocka_unit_test(compare_fig6_readme_numbers),
         cmocka_unit_test(compare_simplified_calibrated),
         cmocka_unit_test(compare_simplified_all),
+        cmocka_unit_test(compare_names_its_contact),
     };
     return cw_run_tests(tests, g_tools.test);
 }
