@@ -396,6 +396,7 @@ int command_wear(int argc, char** argv, int first)
                                          {"G", K::number, {}},
                                          {"nu", K::number, {}},
                                          {"pressure", K::choice, {"parabolic", "elliptic"}},
+                                         {"exact-load", K::flag, {}},
                                          {"orientation", K::choice, {"+1", "1", "-1"}},
                                          {"profile-from", K::number, {}},
                                          {"profile-to", K::number, {}},

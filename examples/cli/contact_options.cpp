@@ -24,7 +24,8 @@ std::vector<OptionSpec> material_and_load_options()
             {"rolling-direction", K::choice, {"+1", "1", "-1"}},
             {"units", K::choice, {"si", "paper"}},
             {"spin-offset", K::number, {}},
-            {"flexibility-blending", K::flag, {}}};
+            {"flexibility-blending", K::flag, {}},
+            {"exact-load", K::flag, {}}};
 }
 
 std::vector<OptionSpec> creepage_options()

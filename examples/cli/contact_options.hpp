@@ -30,7 +30,7 @@ struct ContactSetup {
 void print_notes(const ContactSetup& c);
 
 // --a --b --N --mu --G --nu --L1 --L2 --L3 --pressure --rolling-direction --units
-// --spin-offset --flexibility-blending
+// --spin-offset --flexibility-blending --exact-load
 std::vector<OptionSpec> material_and_load_options();
 // --xi-x --xi-y --spin
 std::vector<OptionSpec> creepage_options();

@@ -69,6 +69,7 @@ JsonObject input_json(const cw_params& p, const cw_grid& g, const Units& u)
                         : p.model == CW_MODEL_CALIBRATED ? "calibrated_blend"
                                                          : pressure_name(p.pressure))
         .integer("rolling_direction", p.rolling_direction)
+        .integer("exact_load", p.exact_load)
         .text("grid", grid_kind_name(g.kind))
         .integer("nx", g.nx)
         .integer("ny", g.ny)

@@ -104,6 +104,12 @@ contact (lengths, forces, stresses in the --units system):
                     as the creepage grows (CONTACT's FASTSIM default). With
                     --grid uniform --spin-offset 0.1666666666666667 this
                     reproduces CONTACT's FASTSIM output.
+  --exact-load      FASTSIM and the calibrated model: the pressure scaled so
+                    that its sum over the grid, sum(pz dA), is N, and so
+                    |F| <= mu N to rounding (default: the pressure law's
+                    analytic scale, whose sum differs from N by up to a few
+                    tenths of a per cent, the original algorithm; the exact
+                    model carries N exactly either way)
 grid:
   --grid strips|uniform
                     Kalker's strip grid (default) or CONTACT's uniform grid
@@ -205,8 +211,8 @@ phi_c = 2 mu p0 L3 / a^2 the spin at which the centre strip slips.
 contact (defaults: the paper's Fig. 6 contact as fitted by fit-fig6 --
 a = 6.6323 mm, b = a/2, N = 10000 lbf, mu = 0.6, G = 82 GPa, nu = 0.3,
 Kalker strip grid 40 x 40): --a --b --N --mu --G --nu --L1 --L2 --L3
---pressure --rolling-direction --grid --nx --ny --box-scale --units
---model --tolerance --max-iterations (as for solve; --model exact without
+--pressure --rolling-direction --exact-load --grid --nx --ny --box-scale
+--units --model --tolerance --max-iterations (as for solve; --model exact without
 --grid: the uniform grid 48 x 48 over 1.2 times the semi-axes).
 output: --out DIR (required), --force, --format text|json (the table of
 cases on stdout), --no-plots. DIR gets cases.csv (one row per panel: figure,
@@ -323,7 +329,8 @@ wear law:
   --orientation +1|-1
                     +1 (default): s grows with the contact's y
 contact: --mu --G --nu (defaults 0.3, 82e9 Pa, 0.28) --pressure
-  parabolic|elliptic; grid: --grid strips|uniform --nx --ny --box-scale
+  parabolic|elliptic --exact-load (as for solve; the defaults of the
+  columns); grid: --grid strips|uniform --nx --ny --box-scale
   (default Kalker strips 20 x 20)
 profile grid: --profile-from S --profile-to S --profile-step DS [m]
   (default: every patch s0 -+ b plus 20 %, spacing a quarter of the
@@ -389,8 +396,9 @@ contact (defaults: the paper's Fig. 6 contact as fit-fig6 reproduces it --
 a = 6.6323 mm, b = a/2, N = 10000 lbf, mu = 0.6, G = 82 GPa, nu = 0.3,
 xi_x = 0.0019, xi_y = 0.0011, spin = 0.144 1/ft): --a --b --N --mu --G --nu
 --xi-x --xi-y --spin --rolling-direction --spin-offset (both models; default
-each model's own, 0 FASTSIM and 1/6 exact) --tolerance --max-iterations
-(exact) --units si|paper (as for solve). The exact model needs G and nu, and
+each model's own, 0 FASTSIM and 1/6 exact) --exact-load (the simplified
+models) --tolerance --max-iterations (exact) --units si|paper (as for
+solve). The exact model needs G and nu, and
 the comparison is of the two theories as Kalker states them: --L1..--L3,
 --pressure and --flexibility-blending are errors.
 grid: uniform (--grid strips is an error), default 48 x 48 over 1.2 times the

@@ -601,6 +601,75 @@ void compare_names_its_contact(void**)
     expect_contains(some.out, "(options not given take the paper's Fig. 6 values)");
 }
 
+// --exact-load (cw_params.exact_load): in full sliding (xi_x = 0.3) |F| is
+// mu N to rounding for FASTSIM and the calibrated model, and never above
+// it for the exact model; the numbers are the library's with exact_load = 1
+// (bitwise), and without the option FASTSIM's are unchanged (exact_load =
+// 0). Sweep, compare, wear and campaign rows (column exact_load) take it too.
+void exact_load_bounds_the_force(void**)
+{
+    const double mu = 0.3, N = 100e3;
+    const std::vector<std::string> contact = {"--a",  "7.17e-3", "--b",    "5.42e-3", "--N",
+                                              "100e3", "--mu",   "0.3",    "--xi-x",  "0.3",
+                                              "--format", "json"};
+    for (const char* model : {"fastsim", "calibrated", "exact"}) {
+        const Json j = parse_or_fail(
+            cli_ok(with({"solve", "--exact-load", "--model", model}, contact)).out);
+        const double F = std::hypot(j.num("Fx"), j.num("Fy"));
+        if (!(F <= mu * N * (1 + 1e-12))) print_error("%s: |F| = %.17g > mu N\n", model, F);
+        assert_true(F <= mu * N * (1 + 1e-12));
+        if (std::string(model) != "exact") assert_close(F, mu * N, 1e-12, 0.0);
+        assert_int_equal(static_cast<int>(j.at("input").num("exact_load")), 1);
+    }
+    // The library's own numbers, with and without.
+    cw_params p;
+    cw_params_init(&p);
+    p.a = 7.17e-3, p.b = 5.42e-3, p.normal_force = N, p.mu = mu, p.xi_x = 0.3;
+    cw_grid g;
+    cw_grid_init(&g);
+    const cw_result plain = library_solve(g, p);
+    p.exact_load = 1;
+    const cw_result exact = library_solve(g, p);
+    const Json without = parse_or_fail(cli_ok(with({"solve"}, contact)).out);
+    const Json with_option = parse_or_fail(cli_ok(with({"solve", "--exact-load"}, contact)).out);
+    assert_true(without.num("Fx") == plain.Fx && without.num("W_macro") == plain.W_macro);
+    assert_true(with_option.num("Fx") == exact.Fx && with_option.num("W_macro") == exact.W_macro);
+    assert_true(plain.Fx != exact.Fx); // the option does something: 1.0015 mu N before
+    assert_int_equal(static_cast<int>(without.at("input").num("exact_load")), 0);
+
+    // sweep: every panel of Figs. 2-5 within mu N (full-slip panels included).
+    const std::string sweep = path("sweep");
+    cli_ok({"sweep", "--exact-load", "--nx", "12", "--ny", "12", "--out", sweep, "--no-plots"});
+    const auto cases = read_csv(sweep + "/cases.csv");
+    const auto ci = header_index(cases[0]);
+    const double bound = 0.6 * 10000 * 4.4482216152605; // the Fig. 6 contact's mu N
+    double largest = 0;
+    for (size_t k = 1; k < cases.size(); ++k)
+        largest = std::max(largest, std::hypot(std::stod(cases[k][ci.at("Fx")]),
+                                               std::stod(cases[k][ci.at("Fy")])) / bound);
+    if (!(largest <= 1 + 1e-12)) print_error("sweep: |F| / mu N up to %.17g\n", largest);
+    assert_true(largest <= 1 + 1e-12 && largest > 0.999);
+    // compare: the simplified models' |F| within mu N.
+    const Json cmp = parse_or_fail(
+        cli_ok({"compare", "--exact-load", "--xi-x", "0.3", "--nx", "12", "--ny", "12",
+                "--format", "json"})
+            .out);
+    const double fs = std::hypot(cmp.at("fastsim").num("Fx"), cmp.at("fastsim").num("Fy"));
+    assert_true(fs <= bound * (1 + 1e-12) && fs > 0.999 * bound);
+    assert_int_equal(static_cast<int>(cmp.at("fastsim").at("input").num("exact_load")), 1);
+    // wear and a campaign's column: the same forces as solve --exact-load.
+    const std::string states = scratch_file(
+        "states.csv", "s0,a,b,N,mu,xi_x,passes,exact_load\n0,7.17e-3,5.42e-3,100e3,0.3,0.3,1,1\n");
+    cli_ok({"wear", "--in", states, "--out", path("wear"), "--no-plots"});
+    const auto st = read_csv(path("wear/states.csv"));
+    assert_true(std::stod(st[1][header_index(st[0]).at("Fx_wheel_N")]) == exact.Fx);
+    cli_ok({"wear", "--in", scratch_file("plain.csv", "s0,a,b,N,mu,xi_x,passes\n"
+                                                      "0,7.17e-3,5.42e-3,100e3,0.3,0.3,1\n"),
+            "--out", path("wear-option"), "--no-plots", "--exact-load"});
+    const auto so = read_csv(path("wear-option/states.csv"));
+    assert_true(std::stod(so[1][header_index(so[0]).at("Fx_wheel_N")]) == exact.Fx);
+}
+
 } // namespace
 
 int main(int argc, char** argv)
@@ -617,6 +686,7 @@ int main(int argc, char** argv)
         cmocka_unit_test(compare_simplified_calibrated),
         cmocka_unit_test(compare_simplified_all),
         cmocka_unit_test(compare_names_its_contact),
+        cmocka_unit_test(exact_load_bounds_the_force),
     };
     return cw_run_tests(tests, g_tools.test);
 }

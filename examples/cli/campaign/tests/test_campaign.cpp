@@ -550,6 +550,16 @@ void schema_defaults_and_aliases(void** state)
                                  0);
     for (const char* key : {"Fx", "Fy", "Mz", "n_contact"})
         expect_contains(se.out, "\"" + std::string(key) + "\": " + ex[1][header_index(ex[0]).at(key)] + ",");
+    // exact_load: the load scale of `creepwork solve --exact-load`.
+    write_text(path("load.csv"), "id,a,b,N,mu,xi_x,exact_load\nr,7.17e-3,5.42e-3,100e3,0.3,0.3,1\n");
+    expect_status(campaign(0, {"--in", path("load.csv"), "--out", path("load"), "--quiet"}), 0);
+    const auto load = read_csv(path("load/results.csv"));
+    const Run sl = expect_status(run({g_tools.creepwork, "solve", "--a", "7.17e-3", "--b",
+                                      "5.42e-3", "--N", "100e3", "--mu", "0.3", "--xi-x", "0.3",
+                                      "--exact-load", "--format", "json"}),
+                                 0);
+    for (const char* key : {"Fx", "Fy", "W_macro"})
+        expect_contains(sl.out, "\"" + std::string(key) + "\": " + load[1][header_index(load[0]).at(key)] + ",");
     // Columns: both spellings, a misspelling, a wear file without --wear.
     write_text(path("both.csv"), "id,a,b,N,phi,spin\nr,0.006,0.006,8e4,1,1\n");
     Run bad = campaign(0, {"--in", path("both.csv"), "--out", path("never")});
