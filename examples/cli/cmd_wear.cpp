@@ -346,12 +346,13 @@ void write_picture(const std::string& dir, const Profiles& p, const Setup& u)
       << "set ylabel "
       << gp_quote("wear depth along the profile's height axis [µm]") << "\n"
       << "set title "
-      << gp_text_lines({"Wear of the " + body + ": " + fmt(p.local.passes, 6) + " passes, " +
+      << gp_title({"Wear of the " + body + ": " + fmt(p.local.passes, 6) + " passes, " +
                             law,
                         "peak " + fmt(pk * 1e6, 4) + " µm at s = " + fmt(ps * 1e3, 4) +
                             " mm; with the paper's parabola " + fmt(qk * 1e6, 4) + " µm at " +
                             fmt(qs * 1e3, 4) + " mm; worn section " +
-                            fmt(p.local.volume * 1e6, 4) + " mm^2 (both)"})
+                            fmt(p.local.volume * 1e6, 4) + " mm^2 (both)"},
+                  1000, 10)
       << "\n"
       << "plot 'gnuplot/wear.dat' using 1:2 with lines lw 2 lc rgb '#b2182b' title "
       << gp_quote(std::string("from the ") + source_name(u.wear.source)) << ", \\\n"

@@ -124,7 +124,7 @@ std::string compare_work_map(const std::string& title, int column, int state_col
                      bool outline)
 {
     std::ostringstream g;
-    g << "set title " << gp_quote(title) << "\n"
+    g << "set title " << gp_title({title}, 700, 10) << "\n"
       << gp_colour_scale(scale_values, unit) << "plot 'gnuplot/compare.dat' using ";
     // state_column 0: every row (each is in contact for one model at least).
     if (state_column > 0)
@@ -180,11 +180,11 @@ void write_compare_pictures(const std::string& dir, const Solution& f, const Sol
     // One colour scale for both work maps, so equal colours are equal work.
     std::vector<double> both = cols[kWorkFastsim - 1];
     both.insert(both.end(), cols[kWorkExact - 1].begin(), cols[kWorkExact - 1].end());
-    const std::string unit = u.plot_label(Quantity::work_per_area);
+    const std::string unit = "work per unit area [" + u.plot_label(Quantity::work_per_area) + "]";
     const double wf = f.result.W_consistent * u.plot_factor(Quantity::work);
     const double we = e.result.W_consistent * u.plot_factor(Quantity::work);
     const std::string wunit = " " + u.plot_label(Quantity::work);
-    const std::string share_unit = "% of the total, per element";
+    const std::string share_unit = "difference of work shares [% of the total, per element]";
     const struct {
         std::string png, text;
     } panels[] = {
@@ -208,10 +208,11 @@ void write_compare_pictures(const std::string& dir, const Solution& f, const Sol
       << "#   gnuplot gnuplot/compare.gp\n"
       << "set datafile missing NaN\nset style fill solid 1.0 noborder\n";
     g << gp_png("compare.png", 1400, 1600) << "set multiplot layout 3,2 title "
-      << gp_text_lines({caption, name + " (left) and Kalker's exact theory (right) on one " +
-                                     std::to_string(e.nx) + " x " + std::to_string(e.ny) +
-                                     " uniform grid; rolling towards " +
-                                     (e.params.rolling_direction > 0 ? "+x" : "-x")})
+      << gp_title({caption, name + " (left) and Kalker's exact theory (right) on one " +
+                                std::to_string(e.nx) + " x " + std::to_string(e.ny) +
+                                " uniform grid; rolling towards " +
+                                (e.params.rolling_direction > 0 ? "+x" : "-x")},
+                  1400, 12)
       << " font ',12'\n";
     for (const auto& p : panels) g << frame << p.text;
     g << compare_profile_plot(f, e, m, u, axes, name) << "unset multiplot\n";

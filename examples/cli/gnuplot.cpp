@@ -97,6 +97,47 @@ std::string gp_text_lines(const std::vector<std::string>& lines)
     return out + "\"";
 }
 
+namespace {
+
+// Characters as drawn: UTF-8 code points, without enhanced-text markup.
+size_t drawn_width(const std::string& text)
+{
+    size_t n = 0;
+    for (char ch : text) {
+        const unsigned char c = static_cast<unsigned char>(ch);
+        n += (c & 0xC0) != 0x80 && c != '_' && c != '^' && c != '{' && c != '}';
+    }
+    return n;
+}
+
+} // namespace
+
+std::string gp_title(const std::vector<std::string>& lines, int width_px, int font_pt)
+{
+    const size_t limit = static_cast<size_t>((width_px - 40) / (0.7 * font_pt));
+    std::vector<std::string> out;
+    for (std::string rest : lines) {
+        while (drawn_width(rest) > limit) {
+            // The longest head that fits, cut after a separator.
+            size_t cut = std::string::npos;
+            for (const char* separator : {"; ", ", ", " "}) {
+                for (size_t at = rest.find(separator); at != std::string::npos;
+                     at = rest.find(separator, at + 1)) {
+                    const size_t end = at + std::string(separator).size() - 1;
+                    if (drawn_width(rest.substr(0, end)) > limit) break;
+                    cut = end;
+                }
+                if (cut != std::string::npos) break;
+            }
+            if (cut == std::string::npos) break; // one long word: left whole
+            out.push_back(rest.substr(0, cut));
+            rest = rest.substr(cut + 1);
+        }
+        out.push_back(rest);
+    }
+    return gp_text_lines(out);
+}
+
 std::string gp_png(const std::string& file, int width, int height)
 {
     std::ostringstream s;

@@ -24,6 +24,12 @@ std::string gp_quote(const std::string& text);
 // A double-quoted gnuplot string of several lines.
 std::string gp_text_lines(const std::vector<std::string>& lines);
 
+// The same for a title that must fit a picture width_px wide in a font of
+// font_pt points: a line longer than the width holds (DejaVu Sans averages
+// 0.66 font_pt pixels a character in these titles, taken as 0.7; 20 px
+// margins) is broken after its last "; " or ", " (else space) that fits.
+std::string gp_title(const std::vector<std::string>& lines, int width_px, int font_pt);
+
 // "set terminal pngcairo ..." and "set output ..." for a picture.
 std::string gp_png(const std::string& file, int width, int height);
 

@@ -21,7 +21,7 @@ struct Panel {
     std::string png;   // individual picture
     std::string title; // with the total
     int column;        // in patch.dat
-    std::string unit;  // colour-bar label
+    std::string scale; // colour-bar label: quantity [unit]
     bool outline_slip; // draw the slip elements' borders over it
 };
 
@@ -78,7 +78,7 @@ std::vector<std::vector<double>> write_patch_data(const std::string& path, const
     std::ofstream f(path);
     f << "# x y half_dx half_dy (" << axes.xlabel << ", " << axes.ylabel
       << ") state work/area K*work_paper/area px py sx sy mz/area utilisation; px py mz on the "
-      << body_name(sign) << "\n";
+      << body_name(sign) << ", sx sy of the " << body_name(sign) << "\n";
     for (size_t k = 0; k < s.size(); ++k) {
         const double area = s.area[k];
         // Exterior: not part of the patch (area 0; the state says so too).
@@ -94,8 +94,8 @@ std::vector<std::vector<double>> write_patch_data(const std::string& path, const
                                       work * r.K * s.work_paper[k] / area,
                                       stress * on_body(sign, s.px[k]),
                                       stress * on_body(sign, s.py[k]),
-                                      s.sx[k],
-                                      s.sy[k],
+                                      on_body(sign, s.sx[k]),
+                                      on_body(sign, s.sy[k]),
                                       moment * on_body(sign, s.mz[k]) / area,
                                       utilisation};
         char buf[40];
@@ -131,32 +131,36 @@ std::vector<Panel> panels(const Solution& s, const Units& u, ForceSign sign)
     if (std::fabs(r.Fx) < 1e-9 * force_scale) r.Fx = 0.0;
     if (std::fabs(r.Fy) < 1e-9 * force_scale) r.Fy = 0.0;
     if (std::fabs(r.Mz) < 1e-9 * force_scale * r.a) r.Mz = 0.0;
-    const std::string stress = u.plot_label(Quantity::stress);
-    const std::string on = std::string(" on the ") + body_name(sign);
+    const std::string body = body_name(sign);
+    const std::string stress = " [" + u.plot_label(Quantity::stress) + "]";
+    const std::string on = " on the " + body, of = " of the " + body;
+    const std::string per_area = " [" + u.plot_label(Quantity::work_per_area) + "]";
     return {
         {"work.png",
          "Work per unit area (energy-consistent; slip elements outlined), W = " +
              total(r.W_consistent, Quantity::work, u),
-         kWork, u.plot_label(Quantity::work_per_area), true},
+         kWork, "work per unit area" + per_area, true},
         {"traction_x.png",
          "Longitudinal traction" + on + ", Fx = " + total(on_body(sign, r.Fx), Quantity::force, u),
-         kTractionX, stress, false},
-        {"slip_x.png", "Longitudinal micro-slip W_x/V of the wheel (0 in adhesion)", kSlipX, "-",
-         false},
+         kTractionX, "p_x" + on + stress, false},
+        {"slip_x.png", "Longitudinal micro-slip W_x/V" + of + " (0 in adhesion)", kSlipX,
+         "W_x/V" + of + " [-]", false},
         {"traction_y.png",
          "Lateral traction" + on + ", Fy = " + total(on_body(sign, r.Fy), Quantity::force, u),
-         kTractionY, stress, false},
-        {"slip_y.png", "Lateral micro-slip W_y/V of the wheel (0 in adhesion)", kSlipY, "-", false},
+         kTractionY, "p_y" + on + stress, false},
+        {"slip_y.png", "Lateral micro-slip W_y/V" + of + " (0 in adhesion)", kSlipY,
+         "W_y/V" + of + " [-]", false},
         {"moment.png",
          "Creep moment per unit area" + on + ", Mz = " +
              total(on_body(sign, r.Mz), Quantity::moment, u),
-         kMoment, u.plot_label(Quantity::moment_per_area), false},
+         kMoment, "m_z per unit area" + on + " [" + u.plot_label(Quantity::moment_per_area) + "]",
+         false},
         {"utilisation.png", "Traction-bound utilisation |p|/(μ p_z): 1 in slip", kUtilisation,
-         "-", false},
+         "|p|/(μ p_z) [-]", false},
         {"work_paper.png",
          "Paper's local work x K per unit area (slip elements outlined), K = " + fmt(r.K, 4) +
              ", K W_{micro} = " + total(r.K * r.W_micro_paper, Quantity::work, u),
-         kWorkPaperK, u.plot_label(Quantity::work_per_area), true},
+         kWorkPaperK, "K x local work per unit area" + per_area, true},
     };
 }
 
@@ -180,8 +184,8 @@ std::string slip_map_commands(const Solution& s)
 std::string heat_commands(const Panel& p, const std::vector<double>& values, bool outline)
 {
     std::ostringstream g;
-    g << "set title " << gp_quote(p.title) << "\n"
-      << gp_colour_scale(values, p.unit == "-" ? "" : p.unit)
+    g << "set title " << gp_title({p.title}, 700, 10) << "\n"
+      << gp_colour_scale(values, p.scale)
       << "plot 'gnuplot/patch.dat' using 1:2:3:4:" << p.column
       << " with boxxyerror fs solid 1.0 noborder fc palette z notitle";
     if (p.outline_slip && outline)
@@ -246,10 +250,12 @@ void write_patch_pictures(const std::string& dir, const Solution& s, const Units
     const std::string frame = gp_patch_frame(s.params.rolling_direction, axes);
     // Outlines help as long as elements are a few pixels wide.
     const bool outline = std::max(s.nx, s.ny) <= 60;
+    // One body per figure: tractions, forces and moment act on it, micro-slips are its own.
     const std::string sign_note =
         style.sign == ForceSign::wheel
-            ? "tractions, forces and moment on the wheel (creepwork's, Kalker's and CONTACT's sign)"
-            : "tractions, forces and moment on the rail (the paper's sign)";
+            ? "tractions, forces, moment on and micro-slips of the wheel (creepwork's, Kalker's "
+              "and CONTACT's sign)"
+            : "tractions, forces, moment on and micro-slips of the rail (the paper's sign)";
 
     std::ostringstream g;
     g << "# creepwork: pictures of one contact. Run from the output directory:\n"
@@ -258,8 +264,9 @@ void write_patch_pictures(const std::string& dir, const Solution& s, const Units
     // The overview in the paper's layout: slip map | work, then force | slip
     // pairs, then moment | utilisation.
     g << gp_png("patch.png", 1400, 2100) << "set multiplot layout 4,2 title "
-      << gp_text_lines({caption, sign_note + "; rolling towards " +
-                                     (s.params.rolling_direction > 0 ? "+x" : "-x")})
+      << gp_title({caption, sign_note + "; rolling towards " +
+                                (s.params.rolling_direction > 0 ? "+x" : "-x")},
+                  1400, 12)
       << " font ',12'\n"
       << frame << slip_map_commands(s);
     for (size_t k = 0; k < 7; ++k) g << heat_commands(heat[k], cols[heat[k].column - 1], outline);

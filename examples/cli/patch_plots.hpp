@@ -11,8 +11,9 @@
 // the work maps, so a reader sees that the work lives in the slip zone.
 //
 // Signs and units: tractions, forces and moment act on the body PlotStyle
-// names (the run's own convention by default), stated in every title; the
-// picture units are Units::plot_label's (SI: mm, N/mm^2, kN).
+// names (the run's own convention by default) and the micro-slips are that
+// body's, stated in every title; every colour bar names its quantity and
+// unit; the picture units are Units::plot_label's (SI: mm, N/mm^2, kN).
 #pragma once
 
 #include <string>

@@ -96,7 +96,7 @@ void write_sweep_pictures(const std::string& dir, const std::vector<SweepFigure>
         write_data(dir + "/" + data, panels[f], geometry);
         g << gp_png(fig.name + ".png", 360 * fig.cols, 380 * fig.rows + 90)
           << "set multiplot layout " << fig.rows << "," << fig.cols << " title "
-          << gp_text_lines({fig.caption, caption + "; slip orange, adhesion blue"})
+          << gp_title({fig.caption, caption + "; slip orange, adhesion blue"}, 360 * fig.cols, 12)
           << " font ',12'\n"
           << gp_patch_frame(rolling_direction)
           << "unset label 2; unset label 3\n"

@@ -76,8 +76,8 @@ double Units::plot_factor(Quantity q) const
     case Quantity::force: return si ? 1e-3 : 1.0 / newton_;
     case Quantity::stress: return si ? 1e-6 : 1.0 / pascal_;
     case Quantity::work_per_area: return small_length * small_length / newton_;
-    case Quantity::moment_per_area:
-        return si ? 1e-3 : small_length * small_length / (newton_ * metre_); // N mm per mm^2
+    case Quantity::moment_per_area: // the moment's unit (N m, lbf ft) per mm^2 or in^2
+        return small_length * small_length / (newton_ * metre_);
     case Quantity::profile: return small_length / newton_;
     default: return 1.0 / si_per_unit(q);
     }
@@ -91,7 +91,7 @@ std::string Units::plot_label(Quantity q) const
     case Quantity::force: return si ? "kN" : "lbf";
     case Quantity::stress: return si ? "N/mm^2" : "psi";
     case Quantity::work_per_area: return si ? "J/m per mm^2" : "lbf ft/ft per in^2";
-    case Quantity::moment_per_area: return si ? "N mm per mm^2" : "lbf ft per in^2";
+    case Quantity::moment_per_area: return si ? "N m per mm^2" : "lbf ft per in^2";
     case Quantity::profile: return si ? "J/m per mm" : "lbf ft/ft per in";
     default: return label(q);
     }

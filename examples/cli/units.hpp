@@ -56,7 +56,8 @@ public:
     std::string label(Quantity q) const;
 
     // Pictures use the engineer's magnitudes, one set per system: SI as mm,
-    // N/mm^2, kN (moment N m, work J/m, per mm^2 or per mm); paper as in,
+    // N/mm^2, kN (moment N m, work J/m, per mm^2 or per mm, so a density's
+    // unit is its total's per area); paper as in,
     // psi, lbf (moment lbf ft, work lbf ft/ft, per in^2 or per in).
     // Value shown = SI value * factor.
     double plot_factor(Quantity q) const;

@@ -59,7 +59,7 @@ std::string panel_commands(const MapPanel& p, int state_column, bool outline,
     if (std::isfinite(p.map_l1)) title += ", map L1 from exact " + fmt(p.map_l1, 3);
     const int s = state_column, w = state_column + 1;
     std::ostringstream g;
-    g << "set title " << gp_quote(title) << "\n"
+    g << "set title " << gp_title({title}, 700, 10) << "\n"
       << "plot 'gnuplot/work_maps.dat' using ($" << s << " == 1 ? $1 : NaN):2:3:4 "
       << "with boxxyerror fs solid 1.0 noborder lc rgb '#deebf7' notitle, \\\n"
       // Slip elements, and any element with work: when no element slips the
@@ -90,11 +90,12 @@ void write_work_maps_picture(const std::string& dir, const std::vector<MapPanel>
       << "set datafile missing NaN\nset style fill solid 1.0 noborder\n"
       << gp_png("work_maps.png", 1400, 560 * rows + 80) << "set multiplot layout " << rows
       << ",2 title "
-      << gp_text_lines({caption, "energy-consistent work per unit area on one colour scale, " +
-                                     std::to_string(ref.nx) + " x " + std::to_string(ref.ny) +
-                                     " uniform grid; adhesion light blue, slip elements "
-                                     "outlined; rolling towards " +
-                                     (ref.params.rolling_direction > 0 ? "+x" : "-x")})
+      << gp_title({caption, "energy-consistent work per unit area on one colour scale, " +
+                                std::to_string(ref.nx) + " x " + std::to_string(ref.ny) +
+                                " uniform grid; adhesion light blue, slip elements "
+                                "outlined; rolling towards " +
+                                (ref.params.rolling_direction > 0 ? "+x" : "-x")},
+                  1400, 12)
       << " font ',12'\n"
       << gp_colour_scale(drawn, "work per unit area [" +
                                     u.plot_label(Quantity::work_per_area) + "]");

@@ -384,8 +384,8 @@ void out_writes_pictures(void**)
     const std::string gp = slurp(dir + "/gnuplot/patch.gp");
     assert_non_null(std::strstr(gp.c_str(), "Longitudinal traction on the wheel, Fx = -"));
     assert_null(std::strstr(gp.c_str(), "on the rail"));
-    assert_non_null(std::strstr(gp.c_str(), " kN'"));
-    assert_non_null(std::strstr(gp.c_str(), "'N/mm^2'"));
+    assert_non_null(std::strstr(gp.c_str(), " kN\""));
+    assert_non_null(std::strstr(gp.c_str(), "'p_x on the wheel [N/mm^2]'"));
     // The work maps outline the slip elements; the unit disk in x/a, y/b.
     assert_non_null(std::strstr(gp.c_str(), "($5 == 2 ? $1 : NaN)"));
     assert_non_null(std::strstr(gp.c_str(), "ellipse at 0,0 size 2,2 "));
@@ -398,6 +398,82 @@ void out_writes_pictures(void**)
     assert_null(std::strstr(rail.c_str(), "on the wheel,"));
     assert_non_null(std::strstr(rail.c_str(), "ellipse at 0,0 size 16,8 "));
     assert_non_null(std::strstr(rail.c_str(), "set xlabel 'x [mm]'"));
+}
+
+// Every colour bar names its quantity and unit ("quantity [unit]"), a
+// picture's titles fit its width, and a figure speaks of one body: the
+// paper's sign puts tractions, moment and micro-slips on the rail.
+std::vector<std::string> colour_bar_labels(const std::string& gp)
+{
+    std::vector<std::string> labels;
+    const std::string key = "set cblabel '";
+    for (size_t at = 0; (at = gp.find(key, at)) != std::string::npos;) {
+        at += key.size();
+        labels.push_back(gp.substr(at, gp.find('\'', at) - at));
+    }
+    return labels;
+}
+
+// The lines of every multiplot title, in characters as drawn (UTF-8 code
+// points, without gnuplot's enhanced-text markup _ ^ { }).
+std::vector<size_t> title_line_widths(const std::string& gp)
+{
+    std::vector<size_t> widths;
+    const std::string key = "multiplot layout ";
+    for (size_t at = 0; (at = gp.find(key, at)) != std::string::npos;) {
+        const size_t open = gp.find('"', at), close = gp.find("\" font", open);
+        at = close;
+        size_t n = 0;
+        for (size_t k = open + 1; k < close; ++k) {
+            if (gp.compare(k, 2, "\\n") == 0) {
+                widths.push_back(n);
+                n = 0;
+                ++k;
+                continue;
+            }
+            const unsigned char c = static_cast<unsigned char>(gp[k]);
+            n += (c & 0xC0) != 0x80 && c != '_' && c != '^' && c != '{' && c != '}';
+        }
+        widths.push_back(n);
+    }
+    return widths;
+}
+
+void pictures_say_what_they_show(void**)
+{
+    if (std::getenv("CW_TEST_NO_GNUPLOT")) cw_skip();
+    // The demo's SI figure: fit-fig6 draws with the paper's sign (on the rail).
+    const std::string fig6 = path("fig6-si");
+    cli_ok({"fit-fig6", "--units", "si", "--out", fig6});
+    const std::string patch = slurp(fig6 + "/gnuplot/patch.gp");
+    const std::string cmp = path("compare"), all = path("all");
+    cli_ok({"compare", "--nx", "12", "--ny", "12", "--out", cmp});
+    cli_ok({"compare", "--simplified", "all", "--nx", "12", "--ny", "12", "--out", all});
+    for (const std::string& script : {patch, slurp(cmp + "/gnuplot/compare.gp"),
+                                      slurp(all + "/gnuplot/work_maps.gp")}) {
+        const auto labels = colour_bar_labels(script);
+        assert_true(!labels.empty());
+        for (const std::string& label : labels) {
+            const size_t open = label.find(" [");
+            if (open == std::string::npos || open == 0 || label.back() != ']')
+                print_error("colour bar label '%s' is not 'quantity [unit]'\n", label.c_str());
+            assert_true(open != std::string::npos && open > 0 && label.back() == ']');
+        }
+        // DejaVu Sans at 12 pt averages 7.9 px a character in these titles
+        // (the clipped 1400 px title held about 177): 1400 px less 20 px
+        // margins hold 161 at 8.4 px.
+        for (size_t width : title_line_widths(script)) {
+            if (width > 161) print_error("a title line of %zu characters\n", width);
+            assert_true(width <= 161);
+        }
+    }
+    // One body per figure: the rail's tractions, moment and micro-slips.
+    expect_lacks(patch, "wheel");
+    expect_contains(patch, "Longitudinal micro-slip W_x/V of the rail");
+    // The moment's colour bar in the unit of its total (N m) per area.
+    expect_contains(patch, "[N m per mm^2]'");
+    expect_lacks(patch, "N mm per mm^2");
+    expect_contains(patch, "Mz = ");
 }
 
 // Inputs valid for the library but implausible for a wheel-rail contact run
@@ -555,6 +631,7 @@ int main(int argc, char** argv)
         cmocka_unit_test(paper_units_round_trip),  cmocka_unit_test(out_writes_pictures),
         cmocka_unit_test(sweep_writes_maps),       cmocka_unit_test(fit_fig6_reproduces_the_paper),
         cmocka_unit_test(fit_fig6_choices),        cmocka_unit_test(warns_and_accepts_any_case),
+        cmocka_unit_test(pictures_say_what_they_show),
     };
     // One test per CTest entry, by exact name (cw_run_tests refuses a name
     // that matches none); a test that cannot run here reports SKIP.
