@@ -163,6 +163,55 @@ FORTRAN_MUTANTS = [
 MUTANTS = MUTANTS + FORTRAN_MUTANTS
 
 
+# ---------------------------------------------------------------- campaign
+# The campaign's chunk planner (which rows a chunk holds, on a fresh run and
+# on a resume) and results writer (results.csv from the checkpoint's chunks):
+# caught by the unit tests of the parts and by campaigns run through mpirun.
+CAMPAIGN = [
+    "campaign_unit_chunk_planner_covers_each_row_once",
+    "campaign_unit_results_writer_puts_rows_in_order", "campaign_ranks_and_threads_bitwise",
+    "campaign_bad_rows_get_error_lines", "campaign_resume_with_one_row_pending",
+    "campaign_unit_mistakes_are_warned", "campaign_schema_defaults_and_aliases",
+    "campaign_wear_ranks_bitwise",
+]
+CAMPAIGN_MUTANTS = [
+    dict(id="planner-single-row", what="a pending range of one row is dropped (resume of one row)",
+         file="examples/cli/campaign/chunk_planner.cpp",
+         old="[](const auto& r) { return r.second <= r.first; }),",
+         new="[](const auto& r) { return r.second <= r.first + 1; }),", tests=CAMPAIGN),
+    dict(id="planner-range-end", what="a chunk runs one row past its pending range",
+         file="examples/cli/campaign/chunk_planner.cpp",
+         old="    count = std::min(count, end - cursor_);",
+         new="    count = std::min(count, end - cursor_ + 1);", tests=CAMPAIGN),
+    dict(id="planner-last-row", what="the last row of the input is never pending",
+         file="examples/cli/campaign/chunk_planner.cpp",
+         old="        while (j < n && !done[j]) ++j;",
+         new="        while (j + 1 < n && !done[j]) ++j;", tests=CAMPAIGN),
+    dict(id="writer-order", what="results.csv takes the chunks in reverse order",
+         file="examples/cli/campaign/results_writer.cpp",
+         old="                  return x.first_row < y.first_row;",
+         new="                  return x.first_row > y.first_row;", tests=CAMPAIGN),
+    dict(id="writer-failed-numbers", what="numbers written for rows the library or --strict refused",
+         file="examples/cli/campaign/results_writer.cpp",
+         old="            if (o.status != CW_OK) continue;",
+         new="            if (o.status == kStatusRowUnreadable) continue;", tests=CAMPAIGN),
+    dict(id="writer-id-quoting", what="an id with a comma is written unquoted",
+         file="examples/cli/campaign/results_writer.cpp",
+         old='        line = csv_quote(in.ids[row]) + "," + status_name(o.status);',
+         new='        line = in.ids[row] + "," + status_name(o.status);', tests=CAMPAIGN),
+    dict(id="writer-warnings", what="a solved row's warnings are not written to its message",
+         file="examples/cli/campaign/results_writer.cpp",
+         old="        const std::string& message = o.status == CW_OK ? in.warnings[row] : o.message;",
+         new="        const std::string& message = o.message;", tests=CAMPAIGN),
+    dict(id="writer-counts", what="rows the library refused counted as solved",
+         file="examples/cli/campaign/results_writer.cpp",
+         old="        if (o.status == CW_OK) {",
+         new="        if (o.status >= CW_OK) {", tests=CAMPAIGN),
+]
+MUTANTS += CAMPAIGN_MUTANTS
+# ------------------------------------------------------------ end campaign
+
+
 def run(cmd, cwd=None, quiet=True):
     r = subprocess.run(cmd, cwd=cwd, stdout=subprocess.PIPE if quiet else None,
                        stderr=subprocess.STDOUT if quiet else None, text=True)

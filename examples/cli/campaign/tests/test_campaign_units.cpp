@@ -1,8 +1,11 @@
 /* Unit tests of the campaign runner's parts that need no MPI: the number
  * text (the same digits as `creepwork solve`), the CSV record reader, the
- * chunk planner (every pending row exactly once, in order), the wire
- * encoding (round trip; a malformed buffer is an error, never a read past
- * its end) and the checkpoint journal (reopen, torn tail, wrong input).
+ * chunk planner (every pending row exactly once, in order, a single
+ * pending row included), the wire encoding (round trip; a malformed buffer
+ * is an error, never a read past its end), the checkpoint journal (reopen,
+ * torn tail, wrong input) and the results writer (input order from chunks
+ * out of order, what a failed row and a warned row show, gaps and repeats
+ * refused).
  *
  * usage: test_campaign_units <scratch dir> [test name] */
 #include <cstdio>
@@ -21,6 +24,7 @@
 #include "../../csv_text.hpp"
 #include "../journal.hpp"
 #include "../number_text.hpp"
+#include "../results_writer.hpp"
 #include "../wire.hpp"
 #include "cli_checks.hpp"
 // Last: cmocka defines macros (fail, skip) that clash with the C++ library.
@@ -134,6 +138,7 @@ void chunk_planner_covers_each_row_once(void** state)
             const auto [first, count] = p.next(rate);
             assert_true(count >= 1);
             assert_true(first >= last_end); // input order
+            assert_true(first + count <= 1000);
             for (uint64_t k = first; k < first + count; ++k) ++seen[k];
             last_end = first + count;
             last_count = count;
@@ -149,6 +154,23 @@ void chunk_planner_covers_each_row_once(void** state)
             // remaining / (2 x workers).
             assert_int_equal(last_count, 1);
             assert_true(chunks > 10);
+        }
+    }
+    // A resume whose pending work is a single row (first, last, or amid
+    // done rows): one chunk of that row.
+    for (uint64_t row : {uint64_t(0), uint64_t(500), uint64_t(999)}) {
+        std::vector<bool> one(1000, true);
+        one[row] = false;
+        const auto pending = pending_ranges(one);
+        assert_int_equal(pending.size(), 1);
+        for (uint64_t fixed : {uint64_t(0), uint64_t(7)}) {
+            ChunkPlanner p(pending, fixed, 3, 0.25);
+            assert_int_equal(p.remaining(), 1);
+            assert_false(p.empty());
+            const auto [first, count] = p.next(0.0);
+            assert_int_equal(first, row);
+            assert_int_equal(count, 1);
+            assert_true(p.empty());
         }
     }
 }
@@ -235,6 +257,78 @@ void wire_round_trips_and_rejects_damage(void** state)
     }
 }
 
+// results.csv from a checkpoint whose chunks arrived out of order: one line
+// per input row in input order, ids quoted as CSV needs, the numbers only
+// of solved rows, a solved row's warnings in its message, the counts; a
+// checkpoint that misses or repeats rows is refused.
+void results_writer_puts_rows_in_order(void** state)
+{
+    (void)state;
+    const std::string path = g_tools.scratch + "/w.cwj";
+    const JournalIdentity id{0, 0x77, 6};
+    CampaignInput in;
+    in.ids = {"r0", "r,1", "r2", "r3", "r4", "r5"};
+    in.lines = {2, 3, 4, 5, 6, 7};
+    in.cases.resize(6);
+    in.warnings = {"", "", "warning: column a = 7.2 m is implausible", "", "", ""};
+    // Chunks [3, 5), [0, 3), [5, 6) in the order they came back; row 1 failed
+    // in the library, row 4 was rejected by the reader (--strict).
+    ChunkResult late = sample_result(3, 2), first = sample_result(0, 3), last = sample_result(5, 1);
+    for (ChunkResult* c : {&late, &first, &last})
+        for (Outcome& o : c->outcomes) o.status = CW_OK, o.message.clear();
+    first.outcomes[1].status = CW_ERR_INVALID_INPUT;
+    first.outcomes[1].message = "the library's reason";
+    late.outcomes[1].status = kStatusRowImplausible;
+    late.outcomes[1].message = "line 6: column N = 100 N is implausible";
+    {
+        Journal j = Journal::create(path, id);
+        for (const ChunkResult* c : {&late, &first, &last})
+            j.append(c->first_row, c->outcomes.size(), encode_result(*c));
+        const MergeSummary m = write_results_csv(j, in, g_tools.scratch + "/results.csv");
+        assert_int_equal(m.ok, 4);
+        assert_int_equal(m.failed, 2);
+        assert_int_equal(m.warned, 1);
+        assert_string_equal(m.first_failures[0].c_str(), "id r,1: line 3: the library's reason");
+        assert_string_equal(m.first_failures[1].c_str(),
+                            "id r4: line 6: column N = 100 N is implausible");
+        assert_string_equal(m.first_warnings[0].c_str(),
+                            "id r2: line 4: warning: column a = 7.2 m is implausible");
+    }
+    const auto records = cwtest::read_csv(g_tools.scratch + "/results.csv");
+    assert_int_equal(records.size(), 7);
+    const auto idx = cwtest::header_index(records[0]);
+    for (size_t row = 0; row < 6; ++row) {
+        const auto& rec = records[row + 1];
+        assert_string_equal(rec[idx.at("id")].c_str(), in.ids[row].c_str());
+        const bool ok = row != 1 && row != 4;
+        assert_string_equal(rec[idx.at("status")].c_str(),
+                            ok ? "ok" : row == 1 ? "CW_ERR_INVALID_INPUT" : "ROW_IMPLAUSIBLE");
+        // sample_result's Fx is -100 per row number.
+        assert_string_equal(rec[idx.at("Fx")].c_str(),
+                            ok ? number_text(-100.0 * static_cast<double>(row)).c_str() : "");
+        assert_string_equal(rec[idx.at("message")].c_str(),
+                            row == 2   ? in.warnings[2].c_str()
+                            : row == 1 ? "the library's reason"
+                            : row == 4 ? "line 6: column N = 100 N is implausible"
+                                       : "");
+    }
+    // A gap (row 5 missing) and a repeat (rows 3, 4 twice) are refused.
+    for (const std::vector<const ChunkResult*>& chunks :
+         {std::vector<const ChunkResult*>{&first, &late},
+          std::vector<const ChunkResult*>{&first, &late, &late, &last}}) {
+        Journal j = Journal::create(path, id);
+        for (const ChunkResult* c : chunks)
+            j.append(c->first_row, c->outcomes.size(), encode_result(*c));
+        bool refused = false;
+        try {
+            for_each_row_in_order(j, 6, [](uint64_t, const Outcome&) {});
+        } catch (const JournalError&) {
+            refused = true;
+        }
+        assert_true(refused);
+    }
+}
+
 void journal_resumes_and_drops_a_torn_tail(void** state)
 {
     (void)state;
@@ -302,6 +396,7 @@ int main(int argc, char** argv)
         cmocka_unit_test(chunk_planner_covers_each_row_once),
         cmocka_unit_test(wire_round_trips_and_rejects_damage),
         cmocka_unit_test(journal_resumes_and_drops_a_torn_tail),
+        cmocka_unit_test(results_writer_puts_rows_in_order),
     };
     return cw_run_tests(tests, g_tools.test);
 }
