@@ -24,6 +24,7 @@ commands:
              paper's parabola assumption, as CSV and a picture
   campaign   many contacts from a CSV file, or a creep-force table, over MPI
              ranks and threads (built with MPI; creepwork campaign --help)
+             (wear and campaign read the same columns: doc/input-schema.md)
   compare    one contact by FASTSIM (or --simplified: its elliptic bound,
              the calibrated model, all three) and by the exact theory on
              one grid: the totals, how far each work distribution is from
@@ -155,9 +156,10 @@ JSON keys (stable; values in the --units system):
   W_macro = -(Fx xi_x + Fy xi_y + Mz spin) (paper eq. 34); W_micro_paper is
   the paper's summed local work and K = W_macro / W_micro_paper (eq. 39);
   W_consistent sums the energy-consistent work map (= W_macro). model is
-  fastsim or exact; p_max the largest element pressure, approach the normal
-  approach (exact: of its discrete normal problem; FASTSIM: Hertz's);
-  iterations and residual those of the exact model's solve (0 for FASTSIM).
+  fastsim, exact or calibrated; p_max the largest element pressure, approach
+  the normal approach (exact: of its discrete normal problem; FASTSIM:
+  Hertz's); iterations and residual those of the exact model's solve (0 for
+  the simplified models).
   With --model exact, work_paper is the exact frictional power density
   (CONTACT's FRIC_POWER) and K = W_macro over its sum.
 
