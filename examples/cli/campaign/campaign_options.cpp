@@ -4,7 +4,6 @@
 
 #include "../cli_error.hpp"
 #include "../contact_inputs.hpp"
-#include "../json.hpp"
 #include "../options.hpp"
 
 namespace cwcampaign {
@@ -206,7 +205,7 @@ std::vector<double> read_list(const cwcli::ParsedOptions& o, const std::string& 
         if (!values.empty() && !(v > values.back()))
             throw usage_error("--" + name, "values must be strictly increasing ('" + item +
                                                "' follows " +
-                                               cwcli::shortest_exact(values.back()) + ")");
+                                               cwcli::round_trip_text(values.back()) + ")");
         values.push_back(v);
         if (comma == std::string::npos) break;
         pos = comma + 1;
