@@ -16,7 +16,7 @@
  * Errors: mexErrMsgIdAndTxt with the identifier creepwork:<CW_ERR_ name> and
  * the library's message naming the input. Implausible units warn with the
  * identifier creepwork:implausibleUnits, with the CLI's thresholds
- * (examples/cli/contact_options.cpp, plausibility_warnings).
+ * (examples/cli/contact_inputs.cpp, plausibility_warnings).
  *
  * The same source builds as an Octave MEX (mkoctfile --mex) and a MATLAB
  * MEX (mex); it uses only the MEX API both provide. */
@@ -308,7 +308,7 @@ static mxArray* from_structs(const struct_info* s, const void* in, size_t size, 
 
 /* ------------------------------------------------------- unit plausibility */
 
-/* The CLI's rules (examples/cli/contact_options.cpp, plausibility_warnings):
+/* The CLI's rules (examples/cli/contact_inputs.cpp, plausibility_warnings):
  * one warning per rule, with how many contacts break it. */
 typedef struct {
     const char* field;
@@ -320,7 +320,7 @@ typedef struct {
 static int too_long(double v, int f) { (void)f; return v > 0.1; }
 static int too_short(double v, int f) { (void)f; return v < 1e-4; }
 static int load_high(double v, int f) { (void)f; return v > 1e7; }
-static int load_low(double v, int f) { (void)f; return v > 0.0 && v < 100.0; }
+static int load_low(double v, int f) { (void)f; return v > 0.0 && v < 1000.0; }
 static int mu_high(double v, int f) { (void)f; return v > 1.5; }
 static int g_low(double v, int f) { return f == CW_FLEX_FROM_MATERIAL && v < 1e6; }
 static int g_high(double v, int f) { return f == CW_FLEX_FROM_MATERIAL && v > 1e12; }
@@ -339,7 +339,8 @@ static const unit_rule unit_rules[] = {
     {"b", " m", too_long, SEMI_HIGH},
     {"b", " m", too_short, SEMI_LOW},
     {"normal_force", " N", load_high, "wheel loads are below 1 MN (kN typed as N?)"},
-    {"normal_force", " N", load_low, "wheel loads are 1-500 kN (kN typed where N are read?)"},
+    {"normal_force", " N", load_low,
+     "wheel loads are 1-500 kN, not below 1 kN (kN typed where N are read?)"},
     {"mu", "", mu_high, "dry steel on steel is 0.1-0.6"},
     {"G", " Pa", g_low, "steel is 8.2e10 Pa (a modulus in MPa or N/mm^2 typed as Pa?)"},
     {"G", " Pa", g_high, "steel is 8.2e10 Pa, no solid exceeds 1e12 Pa"},

@@ -2,7 +2,7 @@
 contact: millimetres typed as metres, kN as N, MPa as Pa, per cent as a ratio.
 
 The rules and thresholds are the creepwork CLI's, plausibility_warnings() in
-examples/cli/contact_options.cpp, so every door warns about the same inputs
+examples/cli/contact_inputs.cpp, so every door warns about the same inputs
 (tests/test_units.py runs both on values either side of each threshold).
 The library itself never warns: it works in any consistent units.
 """
@@ -23,8 +23,8 @@ _RULES = [
     ("b", "m", lambda v, flex: v > 0.1, _SEMI_AXIS_HIGH),
     ("b", "m", lambda v, flex: v < 1e-4, _SEMI_AXIS_LOW),
     ("normal_force", "N", lambda v, flex: v > 1e7, "wheel loads are below 1 MN (kN typed as N?)"),
-    ("normal_force", "N", lambda v, flex: (v > 0.0) & (v < 100.0),
-     "wheel loads are 1-500 kN (kN typed where N are read?)"),
+    ("normal_force", "N", lambda v, flex: (v > 0.0) & (v < 1000.0),
+     "wheel loads are 1-500 kN, not below 1 kN (kN typed where N are read?)"),
     ("mu", "", lambda v, flex: v > 1.5, "dry steel on steel is 0.1-0.6"),
     ("G", "Pa", lambda v, flex: (flex == 0) & (v < 1e6),
      "steel is 8.2e10 Pa (a modulus in MPa or N/mm^2 typed as Pa?)"),

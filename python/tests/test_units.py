@@ -1,5 +1,5 @@
 """Implausible units warn with creepwork.UnitWarning exactly where the CLI
-warns (its plausibility_warnings, examples/cli/contact_options.cpp): each
+warns (its plausibility_warnings, examples/cli/contact_inputs.cpp): each
 rule is tried just beyond and just inside its threshold, through solve(),
 solve_many() and the CLI, and all three must agree."""
 
@@ -20,7 +20,7 @@ RULES = [
     ("b", "b", 0.11, 0.09, dict(a=0.08)),
     ("b", "b", 0.9e-4, 1.1e-4, {}),
     ("N", "N", 1.1e7, 0.9e7, {}),
-    ("N", "N", 99.0, 101.0, {}),
+    ("N", "N", 999.0, 1001.0, {}),
     ("mu", "mu", 1.6, 1.4, {}),
     ("G", "G", 0.9e6, 1.1e6, {}),
     ("G", "G", 1.1e12, 0.9e12, {}),
