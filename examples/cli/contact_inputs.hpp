@@ -104,7 +104,7 @@ ContactInputs read_contact_inputs(const ContactSource& source, const cw_params& 
                                   const cw_grid& default_grid);
 
 // Values that are valid but implausible for a wheel-rail contact (semi-axes
-// above 0.1 m, N below 100 N, G below 1e6 Pa, creepage above 0.5, ...),
+// above 0.1 m, N below 1000 N, G below 1e6 Pa, creepage above 0.5, ...),
 // one warning each: "<label> = <value> <unit> is implausible ...: <why,
 // with the likely unit mistake>". The one check behind every door: solve,
 // sweep, compare, wear and campaign rows.

@@ -308,7 +308,7 @@ reads, the other reads too.
   id             a campaign's row name: ignored (with a note)
 Every state needs passes (or, for a wheel, distance). An empty cell takes
 the default. Values the library accepts but a wheel-rail contact never has
-(a = 7.2 m, N = 80 for 80 kN, a contact angle of 70 read as radians) are
+(a = 7.2 m, N = 80 for 80 kN, a contact angle of 1.4 rad) are
 warned about on stderr, naming the line and column, in the words of
 `creepwork solve` and `creepwork campaign`.
 
