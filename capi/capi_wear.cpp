@@ -1,14 +1,14 @@
 // Wear: the laws on the work map of a solved contact (cw_wear) and the
 // accumulation on a host's profile grid (cw_wear_profile). The core's
-// work/ functions do the physics; this file reads the solver's fields into
+// wear/ functions do the physics; this file reads the solver's fields into
 // the handle's workspace, checks the inputs and translates errors.
 #include "capi_internal.hpp"
 
 #include <cmath>
 #include <memory>
 
-#include "work/wear_map.hpp"
-#include "work/wear_profile.hpp"
+#include "wear/wear_map.hpp"
+#include "wear/wear_profile.hpp"
 
 namespace cww = creepwork::wear;
 

@@ -1,6 +1,6 @@
 // Wear: the USFD and Archard/KTH laws on the work map
-// (work/wear_map), the exact sums (work/exact_sum) and the accumulation on
-// profile grids with the update helper (work/wear_profile).
+// (wear/wear_map), the exact sums (wear/exact_sum) and the accumulation on
+// profile grids with the update helper (wear/wear_profile).
 #include <algorithm>
 #include <cstring>
 #include <random>
@@ -8,8 +8,8 @@
 #include "contact/error.hpp"
 #include "core_test_support.hpp"
 #include "test_support.h"
-#include "work/wear_map.hpp"
-#include "work/wear_profile.hpp"
+#include "wear/wear_map.hpp"
+#include "wear/wear_profile.hpp"
 
 namespace cw = creepwork;
 namespace ww = creepwork::wear;

@@ -1,4 +1,4 @@
-#include "work/wear_law.hpp"
+#include "wear/wear_law.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -27,7 +27,7 @@
 
 #include <vector>
 
-#include "work/exact_sum.hpp"
+#include "wear/exact_sum.hpp"
 
 namespace creepwork::wear {
 

@@ -22,7 +22,7 @@
 // per wheel revolution (pass_length chooses which the "mass per pass" is).
 #pragma once
 
-#include "work/wear_law.hpp"
+#include "wear/wear_law.hpp"
 
 namespace creepwork::wear {
 

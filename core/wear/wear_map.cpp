@@ -1,4 +1,4 @@
-#include "work/wear_map.hpp"
+#include "wear/wear_map.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "work/wear_profile.hpp"
+#include "wear/wear_profile.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "work/exact_sum.hpp"
+#include "wear/exact_sum.hpp"
 
 #include <cmath>
 #include <cstring>
