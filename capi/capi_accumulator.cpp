@@ -109,8 +109,7 @@ int cw_accumulator_add(cw_accumulator* accumulator, const cw_solver* solver, dou
 int cw_accumulator_get_totals(const cw_accumulator* accumulator, cw_accumulation* totals)
 {
     if (!accumulator) return CW_ERR_NULL_POINTER;
-    auto* self = const_cast<cw_accumulator*>(accumulator);
-    return guarded(&self->last_error, [&] {
+    return guarded(&accumulator->last_error, [&] {
         require(totals, "totals");
         write_struct(totals, accumulator->totals);
         return CW_OK;
@@ -121,8 +120,7 @@ int cw_accumulator_get_field(const cw_accumulator* accumulator, int field, doubl
                              size_t out_len)
 {
     if (!accumulator) return CW_ERR_NULL_POINTER;
-    auto* self = const_cast<cw_accumulator*>(accumulator);
-    return guarded(&self->last_error, [&] {
+    return guarded(&accumulator->last_error, [&] {
         if (field != CW_FIELD_WORK_PAPER && field != CW_FIELD_WORK_CONSISTENT)
             fail(CW_ERR_UNKNOWN_OPTION, "field = " + std::to_string(field) +
                                             " is not CW_FIELD_WORK_PAPER (9) or "
@@ -139,8 +137,7 @@ int cw_accumulator_get_field(const cw_accumulator* accumulator, int field, doubl
 int cw_accumulator_get_strip_work(const cw_accumulator* accumulator, double* out, size_t len)
 {
     if (!accumulator) return CW_ERR_NULL_POINTER;
-    auto* self = const_cast<cw_accumulator*>(accumulator);
-    return guarded(&self->last_error, [&] {
+    return guarded(&accumulator->last_error, [&] {
         require(out, "out");
         require_length(len, accumulator->strips.size(), "out");
         std::copy(accumulator->strips.begin(), accumulator->strips.end(), out);

@@ -69,9 +69,9 @@ int cw_batch_solve(cw_batch* batch, size_t count, const cw_params* params, int m
         const cw::SolveMode m = to_mode(mode);
         const size_t pstride = params[0].struct_size;
         const size_t rstride = results[0].struct_size;
-        if (pstride < sizeof(size_t) || pstride > kMaxStructSize)
+        if (!valid_struct_size(pstride))
             fail(CW_ERR_STRUCT_SIZE, "params[0].struct_size is invalid");
-        if (rstride < sizeof(size_t) || rstride > kMaxStructSize)
+        if (!valid_struct_size(rstride))
             fail(CW_ERR_STRUCT_SIZE, "results[0].struct_size is invalid");
         const auto* pbytes = reinterpret_cast<const unsigned char*>(params);
         auto* rbytes = reinterpret_cast<unsigned char*>(results);

@@ -23,7 +23,7 @@ namespace cw = creepwork;
 struct cw_solver {
     explicit cw_solver(const cw::GridSpec& g) : solver(g) {}
     cw::Solver solver;
-    std::string last_error;
+    mutable std::string last_error; // the last call's message, const getters' included
 };
 
 struct cw_accumulator {
@@ -32,7 +32,7 @@ struct cw_accumulator {
     std::vector<double> paper, consistent, strips;
     std::vector<double> next_paper, next_consistent; // a step is checked here first
     cw_accumulation totals{};
-    std::string last_error;
+    mutable std::string last_error; // the last call's message, const getters' included
 };
 
 struct cw_batch {
@@ -43,7 +43,7 @@ struct cw_batch {
     std::vector<size_t> thread_error_index;
     std::vector<int> thread_error_status;
     std::vector<std::string> thread_errors, thread_scratch;
-    std::string last_error;
+    mutable std::string last_error; // the last call's message, const getters' included
 };
 
 namespace creepwork::capi {
@@ -110,12 +110,30 @@ inline int guarded_free(char* out, size_t len, Body&& body) noexcept
 [[noreturn]] void fail(int status, const std::string& message);
 void require(const void* p, const char* name);
 
+// A versioned struct's struct_size: at least the size field itself, and
+// not garbage.
+inline bool valid_struct_size(size_t size)
+{
+    return size >= sizeof(size_t) && size <= kMaxStructSize;
+}
+
+// The caller's result struct (optional), checked before a solve, so that a
+// bad struct_size fails before any work is done; init names its _init
+// function.
+template <class T>
+void require_result_size(const T* result, const char* init)
+{
+    if (result && !valid_struct_size(result->struct_size))
+        fail(CW_ERR_STRUCT_SIZE, "result->struct_size = " + std::to_string(result->struct_size) +
+                                     " is invalid (call " + init + " first)");
+}
+
 // Reads a versioned struct: defaults for fields beyond the caller's size.
 template <class T>
 T read_struct(const T* caller, const T& defaults, const char* name)
 {
     const size_t size = caller->struct_size;
-    if (size < sizeof(size_t) || size > kMaxStructSize)
+    if (!valid_struct_size(size))
         fail(CW_ERR_STRUCT_SIZE, std::string(name) + "->struct_size = " + std::to_string(size) +
                                      " is invalid (call the _init function first)");
     T value = defaults;
@@ -128,7 +146,7 @@ template <class T>
 void write_struct(T* caller, const T& value)
 {
     const size_t size = caller->struct_size;
-    if (size < sizeof(size_t) || size > kMaxStructSize)
+    if (!valid_struct_size(size))
         fail(CW_ERR_STRUCT_SIZE, "result struct_size = " + std::to_string(size) +
                                      " is invalid (call the _init function first)");
     T copy = value;

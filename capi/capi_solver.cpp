@@ -5,7 +5,15 @@ extern "C" {
 
 int cw_version_number(void) { return CW_VERSION_NUMBER; }
 int cw_abi_version(void) { return CW_ABI_VERSION; }
-const char* cw_version_string(void) { return "1.2.0"; }
+#define CW_STRING_(x) #x
+#define CW_STRING(x) CW_STRING_(x)
+const char* cw_version_string(void)
+{
+    return CW_STRING(CW_VERSION_MAJOR) "." CW_STRING(CW_VERSION_MINOR) "." CW_STRING(
+        CW_VERSION_PATCH);
+}
+#undef CW_STRING
+#undef CW_STRING_
 
 const char* cw_status_string(int status)
 {
@@ -70,10 +78,7 @@ int cw_solver_solve(cw_solver* solver, const cw_params* params, int mode, cw_res
     if (!solver) return CW_ERR_NULL_POINTER;
     const int status = guarded(&solver->last_error, [&] {
         require(params, "params");
-        if (result && (result->struct_size < sizeof(size_t) || result->struct_size > kMaxStructSize))
-            fail(CW_ERR_STRUCT_SIZE, "result->struct_size = " +
-                                         std::to_string(result->struct_size) +
-                                         " is invalid (call cw_result_init first)");
+        require_result_size(result, "cw_result_init");
         const cw::ContactInput in = to_input(params);
         const cw::SolveMode m = to_mode(mode);
         const cw::SolveTotals& t = solver->solver.solve(in, m);
@@ -93,10 +98,7 @@ int cw_solver_solve_jacobian(cw_solver* solver, const cw_params* params, int mod
         require(params, "params");
         require(jacobian, "jacobian");
         require_length(jacobian_len, CW_JACOBIAN_LEN, "jacobian");
-        if (result && (result->struct_size < sizeof(size_t) || result->struct_size > kMaxStructSize))
-            fail(CW_ERR_STRUCT_SIZE, "result->struct_size = " +
-                                         std::to_string(result->struct_size) +
-                                         " is invalid (call cw_result_init first)");
+        require_result_size(result, "cw_result_init");
         const cw::ContactInput in = to_input(params);
         const cw::SolveMode m = to_mode(mode);
         cw::Jacobian J;
@@ -122,8 +124,7 @@ int cw_solver_prepare(cw_solver* solver, int model)
 int cw_solver_get_result(const cw_solver* solver, cw_result* result)
 {
     if (!solver) return CW_ERR_NULL_POINTER;
-    auto* self = const_cast<cw_solver*>(solver);
-    return guarded(&self->last_error, [&] {
+    return guarded(&solver->last_error, [&] {
         require(result, "result");
         require_solution(solver->solver, false);
         write_struct(result, to_result(solver->solver.totals()));
@@ -134,8 +135,7 @@ int cw_solver_get_result(const cw_solver* solver, cw_result* result)
 int cw_solver_get_field(const cw_solver* solver, int field, double* out, size_t out_len)
 {
     if (!solver) return CW_ERR_NULL_POINTER;
-    auto* self = const_cast<cw_solver*>(solver);
-    return guarded(&self->last_error, [&] {
+    return guarded(&solver->last_error, [&] {
         const cw::Field f = to_field(field);
         require(out, "out");
         require_solution(solver->solver, cw::Solver::needs_work(f));
@@ -148,8 +148,7 @@ int cw_solver_get_field(const cw_solver* solver, int field, double* out, size_t 
 int cw_solver_get_state(const cw_solver* solver, int* out, size_t out_len)
 {
     if (!solver) return CW_ERR_NULL_POINTER;
-    auto* self = const_cast<cw_solver*>(solver);
-    return guarded(&self->last_error, [&] {
+    return guarded(&solver->last_error, [&] {
         require(out, "out");
         require_solution(solver->solver, false);
         require_length(out_len, element_count(solver->solver), "out");
@@ -162,8 +161,7 @@ int cw_solver_get_profile(const cw_solver* solver, double* y, double* w, double*
                           size_t len)
 {
     if (!solver) return CW_ERR_NULL_POINTER;
-    auto* self = const_cast<cw_solver*>(solver);
-    return guarded(&self->last_error, [&] {
+    return guarded(&solver->last_error, [&] {
         require_solution(solver->solver, true);
         require_length(len, static_cast<size_t>(solver->solver.grid().ny()), "profile buffers");
         solver->solver.copy_profile(y, w, parabola);

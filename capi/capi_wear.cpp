@@ -22,13 +22,13 @@ struct cw_wear {
     std::vector<int> regime;
     bool computed = false;
     cw_wear_result result{};
-    std::string last_error;
+    mutable std::string last_error; // the last call's message, const getters' included
 };
 
 struct cw_wear_profile {
     explicit cw_wear_profile(const double* s, long n) : acc(s, n) {}
     cww::ProfileAccumulator acc;
-    std::string last_error;
+    mutable std::string last_error; // the last call's message, const getters' included
 };
 
 namespace {
@@ -161,10 +161,7 @@ int cw_wear_compute(cw_wear* wear, const cw_solver* solver, const cw_wear_params
         wear->computed = false;
         require(solver, "solver");
         require(params, "params");
-        if (result && (result->struct_size < sizeof(size_t) || result->struct_size > kMaxStructSize))
-            fail(CW_ERR_STRUCT_SIZE, "result->struct_size = " +
-                                         std::to_string(result->struct_size) +
-                                         " is invalid (call cw_wear_result_init first)");
+        require_result_size(result, "cw_wear_result_init");
         const cw::Solver& s = solver->solver;
         if (!same_grid(s.grid().spec(), wear->grid))
             fail(CW_ERR_GRID_MISMATCH, "the solver's grid differs from the one wear was made for");
@@ -231,8 +228,7 @@ int cw_wear_compute(cw_wear* wear, const cw_solver* solver, const cw_wear_params
 int cw_wear_get_field(const cw_wear* wear, int field, double* out, size_t out_len)
 {
     if (!wear) return CW_ERR_NULL_POINTER;
-    auto* self = const_cast<cw_wear*>(wear);
-    return guarded(&self->last_error, [&] {
+    return guarded(&wear->last_error, [&] {
         const std::vector<double>* src = nullptr;
         switch (field) {
         case CW_WEAR_FIELD_RATE: src = &wear->rate; break;
@@ -255,8 +251,7 @@ int cw_wear_get_field(const cw_wear* wear, int field, double* out, size_t out_le
 int cw_wear_get_regimes(const cw_wear* wear, int* out, size_t out_len)
 {
     if (!wear) return CW_ERR_NULL_POINTER;
-    auto* self = const_cast<cw_wear*>(wear);
-    return guarded(&self->last_error, [&] {
+    return guarded(&wear->last_error, [&] {
         require(out, "out");
         require_computed(wear);
         require_length(out_len, wear->regime.size(), "out");
@@ -269,8 +264,7 @@ int cw_wear_get_strips(const cw_wear* wear, double* y, double* width, double* de
                        double* parabola, size_t len)
 {
     if (!wear) return CW_ERR_NULL_POINTER;
-    auto* self = const_cast<cw_wear*>(wear);
-    return guarded(&self->last_error, [&] {
+    return guarded(&wear->last_error, [&] {
         require_computed(wear);
         const size_t ny = static_cast<size_t>(wear->ny);
         if (y || width || depth || parabola) require_length(len, ny, "len");
@@ -285,8 +279,7 @@ int cw_wear_get_strips(const cw_wear* wear, double* y, double* width, double* de
 int cw_wear_get_result(const cw_wear* wear, cw_wear_result* result)
 {
     if (!wear) return CW_ERR_NULL_POINTER;
-    auto* self = const_cast<cw_wear*>(wear);
-    return guarded(&self->last_error, [&] {
+    return guarded(&wear->last_error, [&] {
         require(result, "result");
         require_computed(wear);
         write_struct(result, wear->result);
@@ -376,8 +369,7 @@ int cw_wear_profile_get_depth(const cw_wear_profile* profile, int kind, double* 
                               size_t out_len)
 {
     if (!profile) return CW_ERR_NULL_POINTER;
-    auto* self = const_cast<cw_wear_profile*>(profile);
-    return guarded(&self->last_error, [&] {
+    return guarded(&profile->last_error, [&] {
         if (kind != CW_WEAR_DEPTH_NORMAL && kind != CW_WEAR_DEPTH_HEIGHT)
             fail(CW_ERR_UNKNOWN_OPTION, "kind = " + std::to_string(kind) +
                                             " is not CW_WEAR_DEPTH_NORMAL (0) or _HEIGHT (1)");
@@ -393,8 +385,7 @@ int cw_wear_profile_get_depth(const cw_wear_profile* profile, int kind, double* 
 int cw_wear_profile_get_totals(const cw_wear_profile* profile, cw_wear_profile_totals* totals)
 {
     if (!profile) return CW_ERR_NULL_POINTER;
-    auto* self = const_cast<cw_wear_profile*>(profile);
-    return guarded(&self->last_error, [&] {
+    return guarded(&profile->last_error, [&] {
         require(totals, "totals");
         const cww::ProfileTotals t = profile->acc.totals();
         cw_wear_profile_totals c{};
@@ -430,8 +421,7 @@ int cw_wear_profile_state_size(const cw_wear_profile* profile, size_t* words)
 int cw_wear_profile_get_state(const cw_wear_profile* profile, uint64_t* state, size_t len)
 {
     if (!profile) return CW_ERR_NULL_POINTER;
-    auto* self = const_cast<cw_wear_profile*>(profile);
-    return guarded(&self->last_error, [&] {
+    return guarded(&profile->last_error, [&] {
         require(state, "state");
         require_length(len, static_cast<size_t>(profile->acc.state_words()), "state");
         profile->acc.save(state);
