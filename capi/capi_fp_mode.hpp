@@ -7,7 +7,7 @@
 // trap inside a library kills the host. Two layers keep them safe:
 //  1. The core's arithmetic raises no invalid, divide-by-zero, overflow or
 //     denormal exception, in any vector lane, for valid inputs of any
-//     practical magnitude (contact/fp_safe.hpp, fastsim/march.hpp; tested
+//     practical magnitude (contact/fp_safe.hpp, march/march.hpp; tested
 //     kernel by kernel with those traps on and without this mode,
 //     tests/robustness/test_robustness_fptrap_kernels.cpp).
 //  2. This mode, for everything else: hostile input (NaN, 1e300 loads) is

@@ -5,7 +5,7 @@
 
 #include "contact/hertz.hpp"
 #include "contact/kalker_coefficients.hpp"
-#include "fastsim/fastsim_setup.hpp"
+#include "march/march_setup.hpp"
 #include "fastsim/kalker_normalised.hpp"
 
 extern "C" {

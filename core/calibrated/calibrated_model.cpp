@@ -7,8 +7,8 @@
 #include "calibrated/moment_flexibility.hpp"
 #include "contact/contact_input.hpp"
 #include "contact/error.hpp"
-#include "fastsim/bound_shape.hpp"
-#include "fastsim/fastsim_setup.hpp"
+#include "calibrated/bound_shape.hpp"
+#include "march/march_setup.hpp"
 
 namespace creepwork {
 namespace {

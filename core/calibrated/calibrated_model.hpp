@@ -16,7 +16,7 @@
 #include "contact/jacobian.hpp"
 #include "contact/params.hpp"
 #include "fastsim/fastsim_model.hpp"
-#include "fastsim/march_directional.hpp"
+#include "calibrated/march_directional.hpp"
 
 namespace creepwork {
 

@@ -10,7 +10,7 @@ namespace creepwork {
 struct CalibrationParams {
     // Pressure and traction bound of the march.
     PressureKind pressure = PressureKind::elliptic;
-    // Factors on the normalised rigid slip over flexibility (fastsim_setup.hpp,
+    // Factors on the normalised rigid slip over flexibility (march/march_setup.hpp,
     // NormalisedKinematics), after the spin part of the x-slip has been put on
     // the moment-consistent flexibility L_M (moment_flexibility.hpp):
     double k_long = 1.0;   // ux: a xi / (L1 mu p0)
@@ -32,7 +32,7 @@ struct CalibrationParams {
     // FASTSIM's. 0: none.
     double edge_gain = 0.0;
     // Traction bound (and reported pressure) between the laws
-    // (fastsim/bound_shape.hpp): with the parabolic pressure, blended
+    // (calibrated/bound_shape.hpp): with the parabolic pressure, blended
     // towards the elliptic law (> 0) or the quartic one (< 0), N unchanged.
     // 0: the parabolic law.
     double bound_blend = 0.0;

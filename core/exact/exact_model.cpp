@@ -26,7 +26,7 @@ constexpr double kCoarseTolerance = 1e-1;
 constexpr double kNormalTolerance = 1e-10;
 constexpr int kNormalMaxIterations = 500;
 // Normalised creepages beyond this slide everywhere; they are scaled down
-// together (as FASTSIM does, fastsim_setup.hpp) so nothing can overflow.
+// together (as FASTSIM does, march/march_setup.hpp) so nothing can overflow.
 constexpr double kMaxNormalisedCreepage = 1e100;
 
 std::string number(double v)

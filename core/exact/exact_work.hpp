@@ -18,7 +18,7 @@
 // translation-invariant; tested.)
 //
 // The energy-consistent map distributes that budget as FASTSIM's does
-// (fastsim_work.hpp), row by row: each row of elements along x does the
+// (march/march_work.hpp), row by row: each row of elements along x does the
 // rigid-slip work W_row = -sum_row p . w dx dy (its share of W_macro less
 // the spin-offset term); its slip elements keep their own D_I and share the
 // rest E_row = W_row - sum_row D_I in proportion to D_I; a row without slip
@@ -67,7 +67,7 @@ ExactWorkTotals exact_work(const ExactWorkInput& in, double* paper, double* cons
                            double* profile, double* row_dissipation, double* row_pool);
 
 // (3 W / 4b)(1 - y^2/b^2) inside |y| < b, else 0: the equal-area parabola of
-// a lateral work profile (paper Figs. 8-9), as fastsim_work.hpp's.
+// a lateral work profile (paper Figs. 8-9), as march/march_work.hpp's.
 double lateral_parabola(double W, double b, double y);
 
 } // namespace creepwork

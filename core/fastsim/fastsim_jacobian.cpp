@@ -1,8 +1,8 @@
 #include "fastsim/fastsim_jacobian.hpp"
 
 #include "contact/error.hpp"
-#include "fastsim/flexibility_blending.hpp"
-#include "fastsim/march_directional.hpp"
+#include "contact/flexibility_blending.hpp"
+#include "calibrated/march_directional.hpp"
 
 namespace creepwork {
 

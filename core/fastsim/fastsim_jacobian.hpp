@@ -9,7 +9,7 @@
 // (inputs of the model, not derived from N), mu, G, nu and Kalker's
 // L1..L3 (functions of a, b, G, nu only) or the given L1..L3.
 //
-// Creepages beyond kMaxNormalisedCreepage (fastsim_setup.hpp): the march
+// Creepages beyond kMaxNormalisedCreepage (march/march_setup.hpp): the march
 // runs on rescaled kinematics and every element slides, so the tractions do
 // not depend on the scale and the rescaling needs no derivative.
 #pragma once
@@ -17,8 +17,8 @@
 #include "contact/contact_grid.hpp"
 #include "contact/jacobian.hpp"
 #include "contact/params.hpp"
-#include "fastsim/fastsim_setup.hpp"
-#include "fastsim/march.hpp"
+#include "march/march_setup.hpp"
+#include "march/march.hpp"
 #include "fastsim/march_tangent.hpp"
 
 namespace creepwork {

@@ -1,22 +1,22 @@
 // Kalker's simplified theory as one model of the contact: the FASTSIM march
-// (march.hpp), its work bookkeeping (fastsim_work.hpp) and the export of its
+// (march/march.hpp), its work bookkeeping (march/march_work.hpp) and the export of its
 // fields. Made once per grid (it owns the grid geometry in the kernels'
 // layout and every workspace, and picks the kernel for this CPU), then
 // solve() many times without allocating.
 //
 // The fields are not stored in the caller's layout: the march keeps the trial
 // traction q' and the factor f (p' = f q') in march order, and each field is
-// computed from them while it is copied out (fastsim_fields.cpp).
+// computed from them while it is copied out (march/march_fields.cpp).
 #pragma once
 
 #include "contact/contact_grid.hpp"
 #include "contact/fields.hpp"
 #include "contact/jacobian.hpp"
 #include "contact/params.hpp"
-#include "fastsim/fastsim_setup.hpp"
-#include "fastsim/fastsim_work.hpp"
-#include "fastsim/march.hpp"
-#include "fastsim/march_directional.hpp"
+#include "march/march_setup.hpp"
+#include "march/march_work.hpp"
+#include "march/march.hpp"
+#include "calibrated/march_directional.hpp"
 #include "fastsim/march_tangent.hpp"
 
 namespace creepwork {

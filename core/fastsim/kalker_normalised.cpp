@@ -5,8 +5,8 @@
 
 #include "contact/contact_grid.hpp"
 #include "contact/error.hpp"
-#include "fastsim/march.hpp"
-#include "fastsim/fastsim_setup.hpp"
+#include "march/march.hpp"
+#include "march/march_setup.hpp"
 
 namespace creepwork {
 namespace {

@@ -1,9 +1,9 @@
-// Forward-mode differentiation of the FASTSIM march (march.hpp) in the same
+// Forward-mode differentiation of the FASTSIM march (march/march.hpp) in the same
 // pass: every strip carries, beside its traction p', the derivatives of p'
 // with respect to the march's three kinematic parameters
 //   k = 0: ux,  k = 1: uy,  k = 2: kappa = a phi / (L3 mu p0)
 // (the spin enters the rigid slip only through cx = b kappa and cy = a kappa,
-// fastsim_setup.hpp). The chain rule from these to the caller's xi_x, xi_y,
+// march/march_setup.hpp). The chain rule from these to the caller's xi_x, xi_y,
 // phi and N is fastsim_jacobian.cpp's.
 //
 // Per element, with q' the elastic predictor and g the traction bound:
@@ -27,8 +27,8 @@
 #include <Eigen/Core>
 
 #include "contact/contact_grid.hpp"
-#include "fastsim/fastsim_setup.hpp"
-#include "fastsim/march.hpp"
+#include "march/march_setup.hpp"
+#include "march/march.hpp"
 
 namespace creepwork {
 

@@ -10,7 +10,7 @@
 #include "calibration_fit.hpp"
 #include "calibration_metrics.hpp"
 #include "calibration_reference.hpp"
-#include "fastsim/bound_shape.hpp"
+#include "calibrated/bound_shape.hpp"
 
 namespace cwcal {
 

@@ -10,7 +10,7 @@
 // solve with an offset must equal a plain solve with that creepage, element
 // by element, for both rolling directions.
 //
-// flexibility_blending: CONTACT's formula (fastsim/flexibility_blending.hpp)
+// flexibility_blending: CONTACT's formula (contact/flexibility_blending.hpp)
 // checked at its two ends: zero creepage (weight 1e-10/3) and full blending
 // (weight 1: every L equals L_crss).
 #include "compat_support.hpp"

@@ -20,7 +20,7 @@
 #include "calibration_metrics.hpp"
 #include "contact/error.hpp"
 #include "contact/kalker_coefficients.hpp"
-#include "fastsim/bound_shape.hpp"
+#include "calibrated/bound_shape.hpp"
 #include "core_test_support.hpp"
 #include "test_support.h"
 
@@ -253,7 +253,7 @@ void fastsim_unchanged_by_calibrated(void**)
     assert_memory_equal(fa.data(), fb.data(), fa.size() * sizeof(double));
 }
 
-// The traction bound blends (fastsim/bound_shape.hpp) carry the normal
+// The traction bound blends (calibrated/bound_shape.hpp) carry the normal
 // force: each of P, (3/4) sqrt(P), (3/2) P^2 (P = 1 - r^2) integrates over
 // the unit disc to pi/2 (= N / p0 / (ab) with the parabolic p0 = 2N/(pi a b)),
 // so every blend does. In polar coordinates with r^2 = 1 - t^2: int_disc f dA = 2 pi int_0^1 f(P = t^2, sqrt P = t) t dt, a

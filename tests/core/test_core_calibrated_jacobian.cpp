@@ -1,5 +1,5 @@
 // The calibrated model's Jacobian (core/calibrated/calibrated_model.cpp,
-// core/fastsim/march_directional.hpp) against independent numbers:
+// core/calibrated/march_directional.hpp) against independent numbers:
 //  - central differences of the solver's own totals, step study 1e-2 ...
 //    1e-8 of each input's scale (truncation falls as h^2, roundoff rises as
 //    eps/h): the best step among those that flip no element is held to 1e-6

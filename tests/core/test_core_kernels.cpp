@@ -1,4 +1,4 @@
-// The kernels (core/fastsim/march.hpp): the march and the work pass are compiled
+// The kernels (core/march/march.hpp): the march and the work pass are compiled
 // for SSE2, AVX2 and AVX-512 and a solver picks one per CPU. Each wider
 // kernel must give bitwise the baseline's totals, fields, states and profile
 // (results are bitwise reproducible whatever the CPU); and the march, with its

@@ -263,7 +263,7 @@ void balance_factor_limits(void**)
 }
 
 // The energy-consistent map on a 3 x 3 Kalker strip grid, computed here
-// directly from its definition (fastsim_work.hpp, doc/theory/work.md), one scalar
+// directly from its definition (march/march_work.hpp, doc/theory/work.md), one scalar
 // element at a time: the FASTSIM march (Kalker 1982), the friction
 // dissipation D = -p.(u - u*) dy of each slip element, each strip's
 // numerical (1/2 dp L dp dy) and trailing-edge (1/2 p L p dy) losses shared

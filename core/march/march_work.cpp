@@ -1,4 +1,4 @@
-#include "fastsim/fastsim_work.hpp"
+#include "march/march_work.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "fastsim/flexibility_blending.hpp"
+#include "contact/flexibility_blending.hpp"
 
 #include <algorithm>
 #include <cmath>

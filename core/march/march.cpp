@@ -1,9 +1,9 @@
-#include "fastsim/march.hpp"
+#include "march/march.hpp"
 
 #include <algorithm>
 #include <cmath>
 
-#include "fastsim/bound_shape.hpp"
+#include "calibrated/bound_shape.hpp"
 
 namespace creepwork {
 

@@ -1,4 +1,4 @@
-#include "fastsim/fastsim_setup.hpp"
+#include "march/march_setup.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -7,7 +7,7 @@
 
 #include "contact/contact_input.hpp"
 #include "contact/error.hpp"
-#include "fastsim/flexibility_blending.hpp"
+#include "contact/flexibility_blending.hpp"
 
 namespace creepwork {
 namespace {

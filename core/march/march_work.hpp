@@ -35,8 +35,8 @@
 #include <Eigen/Core>
 
 #include "contact/contact_grid.hpp"
-#include "fastsim/march.hpp"
-#include "fastsim/fastsim_setup.hpp"
+#include "march/march.hpp"
+#include "march/march_setup.hpp"
 
 namespace creepwork {
 

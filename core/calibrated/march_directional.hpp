@@ -1,4 +1,4 @@
-// Forward-mode differentiation of the FASTSIM march (march.hpp) along
+// Forward-mode differentiation of the FASTSIM march (march/march.hpp) along
 // directions of its whole setup, for models built on the march whose
 // kinematics and traction bound all move with the caller's inputs
 // (calibrated/: its table's factors, flexibility equalisation, edge gain and
@@ -27,8 +27,8 @@
 
 #include "contact/contact_grid.hpp"
 #include "contact/jacobian.hpp"
-#include "fastsim/fastsim_setup.hpp"
-#include "fastsim/march.hpp"
+#include "march/march_setup.hpp"
+#include "march/march.hpp"
 
 namespace creepwork {
 

@@ -20,7 +20,7 @@
 #include <Eigen/Core>
 
 #include "contact/contact_grid.hpp"
-#include "fastsim/fastsim_setup.hpp"
+#include "march/march_setup.hpp"
 
 #if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
 #define CREEPWORK_X86_KERNELS 1

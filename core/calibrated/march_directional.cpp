@@ -1,4 +1,4 @@
-#include "fastsim/march_directional.hpp"
+#include "calibrated/march_directional.hpp"
 
 namespace creepwork {
 
