@@ -1,5 +1,7 @@
 #include "calibrated/march_directional.hpp"
 
+#include "march/march_step.hpp"
+
 namespace creepwork {
 
 void MarchDirections::resize(int ny)
@@ -17,115 +19,92 @@ namespace {
 constexpr int K = kMarchDirections;
 
 struct DirectionalArgs {
-    int nx, ny, stride;
-    double cy;
+    MarchView march;
     // d(shape)/d(blend) = ce sqrt(P) + cp P + cq P^2 (bound_shape.hpp).
-    double ce, cp, cq;
-    const double *x_centre, *x_slip, *step, *inside, *bound, *shape_p, *shape_e; // per element
-    const double *wx, *wy;                                     // per strip
-    const double *dwx, *dwy, *dcy, *dblend;                    // per direction (and strip)
-    double *qx, *qy, *factor;                                  // per element
-    double *px, *py, *sum_px, *sum_py, *sum_x_py, *slip_count; // per strip
-    double *t_sum_px, *t_sum_py, *t_sum_x_py;                  // per direction and strip
+    double ce = 0, cp = 0, cq = 0;
+    const double *shape_p = nullptr, *shape_e = nullptr;          // per element
+    const double *dwx = nullptr, *dwy = nullptr;                  // per direction and strip
+    const double *dcy = nullptr, *dblend = nullptr;               // per direction
+    double *sum_px = nullptr, *sum_py = nullptr, *sum_x_py = nullptr; // per direction and strip
 };
 
-// One vector of W strips: march_group() of march.cpp (the same primal
-// operations in the same order) plus the K directions.
-template <int W>
-CREEPWORK_INLINE void directional_vector(const DirectionalArgs& A, int j0)
-{
-    using V = simd::Vec<W>;
-    const long stride = A.stride;
-    const V zero = simd::broadcast<W>(0.0), tiny = simd::broadcast<W>(2.2250738585072014e-308);
-    V px = zero, py = zero, spx = zero, spy = zero, sxpy = zero, count = zero;
-    const V wx = simd::load<W>(A.wx + j0), wy = simd::load<W>(A.wy + j0);
-    V dwx[K], dwy[K], dcy[K], dblend[K], tpx[K], tpy[K], tspx[K], tspy[K], tsxpy[K];
-    for (int k = 0; k < K; ++k) {
-        dwx[k] = simd::load<W>(A.dwx + k * stride + j0);
-        dwy[k] = simd::load<W>(A.dwy + k * stride + j0);
-        dcy[k] = simd::broadcast<W>(A.dcy[k]);
-        dblend[k] = simd::broadcast<W>(A.dblend[k]);
-        tpx[k] = tpy[k] = tspx[k] = tspy[k] = tsxpy[k] = zero;
-    }
-    const V cy = simd::broadcast<W>(A.cy), ce = simd::broadcast<W>(A.ce),
-            cp = simd::broadcast<W>(A.cp), cq = simd::broadcast<W>(A.cq);
-    for (int m = 0; m < A.nx; ++m) {
-        const long e = m * stride + j0;
-        const V xs = simd::load<W>(A.x_slip + e), h = simd::load<W>(A.step + e),
-                in = simd::load<W>(A.inside + e), xc = simd::load<W>(A.x_centre + e),
-                g = simd::load<W>(A.bound + e);
-        const MarchStep<W> s = march_step<W>(px, py, h, in, g, wx, wy + cy * xs);
-        simd::store<W>(A.qx + e, s.qx);
-        simd::store<W>(A.qy + e, s.qy);
-        simd::store<W>(A.factor + e, s.f);
-        px = s.px;
-        py = s.py;
-        spx += s.px;
-        spy += s.py;
-        sxpy += xc * s.py;
-        count += s.slip;
-
-        const V hin = h * in;
-        V dq[K][2];
+struct DirectionalKernel : KernelWidths {
+    // One vector of W strips: the primal march (PrimalStrip) plus the K
+    // directions.
+    template <int W>
+    CREEPWORK_INLINE static void vector(const DirectionalArgs& A, int j0)
+    {
+        using V = simd::Vec<W>;
+        const MarchView& v = A.march;
+        const MarchRows rows(v, j0);
+        const long stride = v.stride;
+        const double *shape_p = A.shape_p + j0, *shape_e = A.shape_e + j0;
+        const V zero = simd::broadcast<W>(0.0), tiny = simd::broadcast<W>(2.2250738585072014e-308);
+        PrimalStrip<W> strip;
+        strip.start(v, j0);
+        V dwx[K], dwy[K], dcy[K], dblend[K], tpx[K], tpy[K], tspx[K], tspy[K], tsxpy[K];
         for (int k = 0; k < K; ++k) {
-            dq[k][0] = in * tpx[k] - hin * dwx[k];
-            dq[k][1] = in * tpy[k] - hin * (dwy[k] + dcy[k] * xs);
+            dwx[k] = simd::load<W>(A.dwx + k * stride + j0);
+            dwy[k] = simd::load<W>(A.dwy + k * stride + j0);
+            dcy[k] = simd::broadcast<W>(A.dcy[k]);
+            dblend[k] = simd::broadcast<W>(A.dblend[k]);
+            tpx[k] = tpy[k] = tspx[k] = tspy[k] = tsxpy[k] = zero;
         }
-        if (s.any_slip) {
-            // Slip lanes only (r = inv_g = 0 elsewhere); g > 0 there, since
-            // |q| > g >= 0.
-            const V safe_g = g > tiny ? g : tiny;
-            const V inv_g = s.slip / safe_g;
-            const V r = s.f * inv_g * inv_g;
-            const V P = simd::load<W>(A.shape_p + e), E = simd::load<W>(A.shape_e + e);
-            const V dshape_over_g = (ce * E + cp * P + cq * P * P) * inv_g;
-            for (int k = 0; k < K; ++k) {
-                const V c = r * (s.px * dq[k][0] + s.py * dq[k][1]) - dblend[k] * dshape_over_g;
-                tpx[k] = s.f * dq[k][0] - c * s.px;
-                tpy[k] = s.f * dq[k][1] - c * s.py;
-            }
-        } else {
-            for (int k = 0; k < K; ++k) {
-                tpx[k] = dq[k][0];
-                tpy[k] = dq[k][1];
-            }
+        const V cy = simd::broadcast<W>(v.cy), ce = simd::broadcast<W>(A.ce),
+                cp = simd::broadcast<W>(A.cp), cq = simd::broadcast<W>(A.cq);
+        for (int m = 0; m < v.nx; ++m) {
+            const long e = m * stride;
+            strip.advance(rows, e, cy, [&](const MarchElement<W>& el) {
+                const MarchStep<W>& s = el.s;
+                const V in = el.inside, xs = el.x_slip, xc = el.x_centre, g = el.bound;
+
+                const V hin = el.h * in;
+                V dq[K][2];
+                for (int k = 0; k < K; ++k) {
+                    dq[k][0] = in * tpx[k] - hin * dwx[k];
+                    dq[k][1] = in * tpy[k] - hin * (dwy[k] + dcy[k] * xs);
+                }
+                if (s.any_slip) {
+                    // Slip lanes only (r = inv_g = 0 elsewhere); g > 0 there, since
+                    // |q| > g >= 0.
+                    const V safe_g = g > tiny ? g : tiny;
+                    const V inv_g = s.slip / safe_g;
+                    const V r = s.f * inv_g * inv_g;
+                    const V P = simd::load<W>(shape_p + e), E = simd::load<W>(shape_e + e);
+                    const V dshape_over_g = (ce * E + cp * P + cq * P * P) * inv_g;
+                    for (int k = 0; k < K; ++k) {
+                        const V c = r * (s.px * dq[k][0] + s.py * dq[k][1]) -
+                                    dblend[k] * dshape_over_g;
+                        tpx[k] = s.f * dq[k][0] - c * s.px;
+                        tpy[k] = s.f * dq[k][1] - c * s.py;
+                    }
+                } else {
+                    for (int k = 0; k < K; ++k) {
+                        tpx[k] = dq[k][0];
+                        tpy[k] = dq[k][1];
+                    }
+                }
+                for (int k = 0; k < K; ++k) {
+                    tspx[k] += tpx[k];
+                    tspy[k] += tpy[k];
+                    tsxpy[k] += xc * tpy[k];
+                }
+            });
         }
+        strip.finish(v, j0);
         for (int k = 0; k < K; ++k) {
-            tspx[k] += tpx[k];
-            tspy[k] += tpy[k];
-            tsxpy[k] += xc * tpy[k];
+            simd::store<W>(A.sum_px + k * stride + j0, tspx[k]);
+            simd::store<W>(A.sum_py + k * stride + j0, tspy[k]);
+            simd::store<W>(A.sum_x_py + k * stride + j0, tsxpy[k]);
         }
     }
-    simd::store<W>(A.px + j0, px);
-    simd::store<W>(A.py + j0, py);
-    simd::store<W>(A.sum_px + j0, spx);
-    simd::store<W>(A.sum_py + j0, spy);
-    simd::store<W>(A.sum_x_py + j0, sxpy);
-    simd::store<W>(A.slip_count + j0, count);
-    for (int k = 0; k < K; ++k) {
-        simd::store<W>(A.t_sum_px + k * stride + j0, tspx[k]);
-        simd::store<W>(A.t_sum_py + k * stride + j0, tspy[k]);
-        simd::store<W>(A.t_sum_x_py + k * stride + j0, tsxpy[k]);
+
+    template <int W>
+    CREEPWORK_INLINE static void run(const DirectionalArgs& A)
+    {
+        for (int j0 = A.march.first; j0 < A.march.last; j0 += W) vector<W>(A, j0);
     }
-}
-
-template <int W>
-CREEPWORK_INLINE void directional_body(const DirectionalArgs& A)
-{
-    for (int j0 = 0; j0 < A.ny; j0 += W) directional_vector<W>(A, j0);
-}
-
-__attribute__((noinline)) void directional_baseline(const DirectionalArgs& A)
-{
-    directional_body<2>(A);
-}
-#if CREEPWORK_X86_KERNELS
-CREEPWORK_TARGET_AVX2 void directional_avx2(const DirectionalArgs& A) { directional_body<4>(A); }
-CREEPWORK_TARGET_AVX512 void directional_avx512(const DirectionalArgs& A)
-{
-    directional_body<8>(A);
-}
-#endif
+};
 
 } // namespace
 
@@ -135,45 +114,22 @@ void march_directional(const MarchGeometry& geo, const ContactGrid& grid, const 
     const NormalisedKinematics& kin = setup.kin;
     set_rigid_slip(grid, kin, s, 0, grid.ny());
     const bool quartic = kin.bound_blend < 0.0;
-    const DirectionalArgs A{geo.nx,
-                            grid.ny(),
-                            geo.stride,
-                            kin.cy,
-                            quartic ? 0.0 : 0.75,
-                            -1.0,
-                            quartic ? 1.5 : 0.0,
-                            geo.x_centre.data(),
-                            geo.x_slip.data(),
-                            geo.step.data(),
-                            geo.inside.data(),
-                            geo.bound(setup.pressure, kin.bound_blend).data(),
-                            geo.shape_parabolic.data(),
-                            geo.shape_elliptic.data(),
-                            s.wx.data(),
-                            s.wy.data(),
-                            d.wx.data(),
-                            d.wy.data(),
-                            d.cy,
-                            d.blend,
-                            s.qx.data(),
-                            s.qy.data(),
-                            s.factor.data(),
-                            s.px.data(),
-                            s.py.data(),
-                            s.sum_px.data(),
-                            s.sum_py.data(),
-                            s.sum_x_py.data(),
-                            s.slip_count.data(),
-                            d.sum_px.data(),
-                            d.sum_py.data(),
-                            d.sum_x_py.data()};
-    switch (isa) {
-#if CREEPWORK_X86_KERNELS
-    case KernelIsa::avx512: directional_avx512(A); return;
-    case KernelIsa::avx2: directional_avx2(A); return;
-#endif
-    default: directional_baseline(A); return;
-    }
+    DirectionalArgs A;
+    A.march = march_view(geo, geo.bound(setup.pressure, kin.bound_blend).data(), kin.cy, s, 0,
+                         grid.ny());
+    A.ce = quartic ? 0.0 : 0.75;
+    A.cp = -1.0;
+    A.cq = quartic ? 1.5 : 0.0;
+    A.shape_p = geo.shape_parabolic.data();
+    A.shape_e = geo.shape_elliptic.data();
+    A.dwx = d.wx.data();
+    A.dwy = d.wy.data();
+    A.dcy = d.cy;
+    A.dblend = d.blend;
+    A.sum_px = d.sum_px.data();
+    A.sum_py = d.sum_py.data();
+    A.sum_x_py = d.sum_x_py.data();
+    run_kernel<DirectionalKernel>(isa, A);
 }
 
 Jacobian directional_jacobian(const ModelSetup& setup, const ContactGrid& grid,

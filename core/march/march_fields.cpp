@@ -5,6 +5,7 @@
 #include <type_traits>
 
 #include "fastsim/fastsim_model.hpp"
+#include "march/simd.hpp"
 
 // The vector types below never cross a non-inlined call: their ABI is moot.
 #if defined(__GNUC__) || defined(__clang__)
@@ -25,18 +26,7 @@ namespace {
 
 template <int B>
 using Vec = simd::Vec<B>;
-
-template <class V>
-CREEPWORK_INLINE V load(const double* p)
-{
-    if constexpr (std::is_same_v<V, double>) {
-        return *p;
-    } else {
-        V v;
-        std::memcpy(&v, p, sizeof v);
-        return v;
-    }
-}
+using simd::load_as;
 
 // c != 0 ? x : y and c < 1 ? x : y, lane by lane.
 template <class V>
@@ -51,13 +41,14 @@ CREEPWORK_INLINE V select_below_one(const V& c, const V& x, const V& y)
 }
 
 struct ExportArgs {
-    int nx, ny, stride; // per-element arrays are [m * stride + j]
-    bool reverse;
-    double d, a, b, ab, T, dT, p0;
-    const double *x_centre, *inside, *shape;        // per element (MarchGeometry)
-    const double *y_centre, *x_length, *y_width;    // per strip (ContactGrid)
-    const double *qx, *qy, *factor;                 // per element (MarchState)
-    const double *slip_x, *slip_y, *paper, *consistent; // per element (WorkState)
+    int nx = 0, ny = 0, stride = 0; // per-element arrays are [m * stride + j]
+    bool reverse = false;
+    double d = 0, a = 0, b = 0, ab = 0, T = 0, dT = 0, p0 = 0;
+    const double *x_centre = nullptr, *inside = nullptr, *shape = nullptr; // per element (MarchGeometry)
+    const double *y_centre = nullptr, *x_length = nullptr, *y_width = nullptr; // per strip (ContactGrid)
+    const double *qx = nullptr, *qy = nullptr, *factor = nullptr; // per element (MarchState)
+    const double *slip_x = nullptr, *slip_y = nullptr, *paper = nullptr,
+                 *consistent = nullptr; // per element (WorkState)
 };
 
 // Fields: value at kernel index k (first lane) in strip j (first lane).
@@ -66,26 +57,26 @@ struct Scaled { // c * src[k]: x (c = d a), pz (c = p0), sx (c = d)
     const double* src;
     double c;
     template <class V>
-    CREEPWORK_INLINE V operator()(long k, int) const { return c * load<V>(src + k); }
+    CREEPWORK_INLINE V operator()(long k, int) const { return c * load_as<V>(src + k); }
 };
 struct Copied { // src[k]: sy, work_paper, work_consistent
     const double* src;
     template <class V>
-    CREEPWORK_INLINE V operator()(long k, int) const { return load<V>(src + k); }
+    CREEPWORK_INLINE V operator()(long k, int) const { return load_as<V>(src + k); }
 };
 struct StripY { // b * Y_j
     const double* y_centre;
     double b;
     template <class V>
-    CREEPWORK_INLINE V operator()(long, int j) const { return b * load<V>(y_centre + j); }
+    CREEPWORK_INLINE V operator()(long, int j) const { return b * load_as<V>(y_centre + j); }
 };
 struct Area { // a b dX_j dY_j inside, 0 outside
     const ExportArgs* A;
     template <class V>
     CREEPWORK_INLINE V operator()(long k, int j) const
     {
-        const V area = A->ab * load<V>(A->x_length + j) * load<V>(A->y_width + j);
-        return select_nonzero(load<V>(A->inside + k), area, V{});
+        const V area = A->ab * load_as<V>(A->x_length + j) * load_as<V>(A->y_width + j);
+        return select_nonzero(load_as<V>(A->inside + k), area, V{});
     }
 };
 struct Traction { // scale * (f q'): f q' first, T f alone can underflow
@@ -94,7 +85,7 @@ struct Traction { // scale * (f q'): f q' first, T f alone can underflow
     template <class V>
     CREEPWORK_INLINE V operator()(long k, int) const
     {
-        return scale * (load<V>(factor + k) * load<V>(q + k));
+        return scale * (load_as<V>(factor + k) * load_as<V>(q + k));
     }
 };
 struct Moment { // d area (x py - y px), tractions on the wheel
@@ -102,12 +93,12 @@ struct Moment { // d area (x py - y px), tractions on the wheel
     template <class V>
     CREEPWORK_INLINE V operator()(long k, int j) const
     {
-        const V f = load<V>(A->factor + k);
-        const V px = A->T * (f * load<V>(A->qx + k));
-        const V py = A->T * (f * load<V>(A->qy + k));
-        const V area = A->ab * load<V>(A->x_length + j) * load<V>(A->y_width + j);
+        const V f = load_as<V>(A->factor + k);
+        const V px = A->T * (f * load_as<V>(A->qx + k));
+        const V py = A->T * (f * load_as<V>(A->qy + k));
+        const V area = A->ab * load_as<V>(A->x_length + j) * load_as<V>(A->y_width + j);
         return A->d * area *
-               (A->a * load<V>(A->x_centre + k) * py - A->b * load<V>(A->y_centre + j) * px);
+               (A->a * load_as<V>(A->x_centre + k) * py - A->b * load_as<V>(A->y_centre + j) * px);
     }
 };
 struct State { // CW_STATE_*: 0 exterior, 1 adhesion, 2 slip
@@ -116,8 +107,8 @@ struct State { // CW_STATE_*: 0 exterior, 1 adhesion, 2 slip
     CREEPWORK_INLINE V operator()(long k, int) const
     {
         const V one = V{} + 1.0;
-        return select_nonzero(load<V>(A->inside + k),
-                              select_below_one(load<V>(A->factor + k), one + one, one), V{});
+        return select_nonzero(load_as<V>(A->inside + k),
+                              select_below_one(load_as<V>(A->factor + k), one + one, one), V{});
     }
 };
 
@@ -200,84 +191,67 @@ CREEPWORK_INLINE void export_grid(const ExportArgs& A, const F& f, const Op& op,
             op(out + static_cast<long>(j) * nx + i, f.template operator()<double>(row(i) + j, j));
 }
 
-template <int B, class Op>
-CREEPWORK_INLINE void export_body(const ExportArgs& A, Field f, const Op& op, double* out)
-{
-    switch (f) {
-    case Field::x: export_grid<B>(A, Scaled{A.x_centre, A.d * A.a}, op, out); return;
-    case Field::y: export_grid<B>(A, StripY{A.y_centre, A.b}, op, out); return;
-    case Field::area: export_grid<B>(A, Area{&A}, op, out); return;
-    case Field::pz: export_grid<B>(A, Scaled{A.shape, A.p0}, op, out); return;
-    case Field::px: export_grid<B>(A, Traction{A.qx, A.factor, A.dT}, op, out); return;
-    case Field::py: export_grid<B>(A, Traction{A.qy, A.factor, A.T}, op, out); return;
-    case Field::sx: export_grid<B>(A, Scaled{A.slip_x, A.d}, op, out); return;
-    case Field::sy: export_grid<B>(A, Copied{A.slip_y}, op, out); return;
-    case Field::mz: export_grid<B>(A, Moment{&A}, op, out); return;
-    case Field::work_paper: export_grid<B>(A, Copied{A.paper}, op, out); return;
-    case Field::work_consistent: export_grid<B>(A, Copied{A.consistent}, op, out); return;
+// The export kernels: every field (with a store Op) and the state map. Four
+// lanes suffice for AVX-512 too: the export is bound by its stores.
+struct ExportKernel : KernelWidths {
+    static constexpr int avx512 = 4;
+    template <int B, class Op>
+    CREEPWORK_INLINE static void run(const ExportArgs& A, const Field& f, const Op& op,
+                                     double* const& out)
+    {
+        switch (f) {
+        case Field::x: export_grid<B>(A, Scaled{A.x_centre, A.d * A.a}, op, out); return;
+        case Field::y: export_grid<B>(A, StripY{A.y_centre, A.b}, op, out); return;
+        case Field::area: export_grid<B>(A, Area{&A}, op, out); return;
+        case Field::pz: export_grid<B>(A, Scaled{A.shape, A.p0}, op, out); return;
+        case Field::px: export_grid<B>(A, Traction{A.qx, A.factor, A.dT}, op, out); return;
+        case Field::py: export_grid<B>(A, Traction{A.qy, A.factor, A.T}, op, out); return;
+        case Field::sx: export_grid<B>(A, Scaled{A.slip_x, A.d}, op, out); return;
+        case Field::sy: export_grid<B>(A, Copied{A.slip_y}, op, out); return;
+        case Field::mz: export_grid<B>(A, Moment{&A}, op, out); return;
+        case Field::work_paper: export_grid<B>(A, Copied{A.paper}, op, out); return;
+        case Field::work_consistent: export_grid<B>(A, Copied{A.consistent}, op, out); return;
+        }
     }
-}
-
-template <class Op>
-__attribute__((noinline)) void export_baseline(const ExportArgs& A, Field f, const Op& op,
-                                               double* out)
-{
-    export_body<2>(A, f, op, out);
-}
-__attribute__((noinline)) void state_baseline(const ExportArgs& A, int* out)
-{
-    export_grid<2>(A, State{&A}, AssignInt{}, out);
-}
-#if CREEPWORK_X86_KERNELS
-template <class Op>
-CREEPWORK_TARGET_AVX2 void export_avx2(const ExportArgs& A, Field f, const Op& op, double* out)
-{
-    export_body<4>(A, f, op, out);
-}
-template <class Op>
-CREEPWORK_TARGET_AVX512 void export_avx512(const ExportArgs& A, Field f, const Op& op,
-                                           double* out)
-{
-    export_body<4>(A, f, op, out);
-}
-CREEPWORK_TARGET_AVX2 void state_avx2(const ExportArgs& A, int* out)
-{
-    export_grid<4>(A, State{&A}, AssignInt{}, out);
-}
-CREEPWORK_TARGET_AVX512 void state_avx512(const ExportArgs& A, int* out)
-{
-    export_grid<4>(A, State{&A}, AssignInt{}, out);
-}
-#endif
+};
+struct StateKernel : KernelWidths {
+    static constexpr int avx512 = 4;
+    template <int B>
+    CREEPWORK_INLINE static void run(const ExportArgs& A, int* const& out)
+    {
+        export_grid<B>(A, State{&A}, AssignInt{}, out);
+    }
+};
 
 ExportArgs export_args(const MarchGeometry& geo, const ContactGrid& g, const ModelSetup& s,
                        const MarchState& m, const WorkState& w)
 {
-    const double d = s.direction, T = s.traction_scale;
-    return ExportArgs{g.nx(),
-                      g.ny(),
-                      geo.stride,
-                      s.direction > 0,
-                      d,
-                      s.a,
-                      s.b,
-                      s.a * s.b,
-                      T,
-                      d * T,
-                      s.pressure_scale,
-                      geo.x_centre.data(),
-                      geo.inside.data(),
-                      geo.bound(s.pressure, s.kin.bound_blend).data(),
-                      g.y_centre().data(),
-                      g.x_length().data(),
-                      g.y_width().data(),
-                      m.qx.data(),
-                      m.qy.data(),
-                      m.factor.data(),
-                      w.slip_x.data(),
-                      w.slip_y.data(),
-                      w.paper.data(),
-                      w.consistent.data()};
+    ExportArgs A;
+    A.nx = g.nx();
+    A.ny = g.ny();
+    A.stride = geo.stride;
+    A.reverse = s.direction > 0;
+    A.d = s.direction;
+    A.a = s.a;
+    A.b = s.b;
+    A.ab = s.a * s.b;
+    A.T = s.traction_scale;
+    A.dT = A.d * A.T;
+    A.p0 = s.pressure_scale;
+    A.x_centre = geo.x_centre.data();
+    A.inside = geo.inside.data();
+    A.shape = geo.bound(s.pressure, s.kin.bound_blend).data();
+    A.y_centre = g.y_centre().data();
+    A.x_length = g.x_length().data();
+    A.y_width = g.y_width().data();
+    A.qx = m.qx.data();
+    A.qy = m.qy.data();
+    A.factor = m.factor.data();
+    A.slip_x = w.slip_x.data();
+    A.slip_y = w.slip_y.data();
+    A.paper = w.paper.data();
+    A.consistent = w.consistent.data();
+    return A;
 }
 
 } // namespace
@@ -285,14 +259,7 @@ ExportArgs export_args(const MarchGeometry& geo, const ContactGrid& g, const Mod
 template <class Op>
 void FastsimModel::export_field(Field f, const Op& op, double* out) const
 {
-    const ExportArgs A = export_args(geometry_, grid_, setup_, march_, work_);
-    switch (isa_) {
-#if CREEPWORK_X86_KERNELS
-    case KernelIsa::avx512: export_avx512(A, f, op, out); return;
-    case KernelIsa::avx2: export_avx2(A, f, op, out); return;
-#endif
-    default: export_baseline(A, f, op, out); return;
-    }
+    run_kernel<ExportKernel>(isa_, export_args(geometry_, grid_, setup_, march_, work_), f, op, out);
 }
 
 void FastsimModel::copy_field(Field f, double* out) const { export_field(f, Assign{}, out); }
@@ -304,14 +271,7 @@ void FastsimModel::add_field(Field f, double scale, double* out) const
 
 void FastsimModel::copy_state(int* out) const
 {
-    const ExportArgs A = export_args(geometry_, grid_, setup_, march_, work_);
-    switch (isa_) {
-#if CREEPWORK_X86_KERNELS
-    case KernelIsa::avx512: state_avx512(A, out); return;
-    case KernelIsa::avx2: state_avx2(A, out); return;
-#endif
-    default: state_baseline(A, out); return;
-    }
+    run_kernel<StateKernel>(isa_, export_args(geometry_, grid_, setup_, march_, work_), out);
 }
 
 void FastsimModel::copy_profile(double W, double* y, double* work, double* parabola) const

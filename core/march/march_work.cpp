@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "contact/fp_safe.hpp"
+#include "march/march_step.hpp"
 
 namespace creepwork {
 
@@ -38,16 +39,20 @@ double equal_area_parabola(double W, double b, double y)
 
 namespace {
 
-// Everything the work pass reads and writes; per-element pointers point at
-// element 0 of the kernels' layout [m * stride + j].
+// Everything the work pass reads and writes besides the march's view (its
+// geometry and (q', f)); per-element pointers point at element 0 of the
+// kernels' layout [m * stride + j].
 struct WorkArgs {
-    int nx, first, last, stride; // strips [first, last)
-    double a, T, half_T, TL1, TL2, L1T, L2T, eta, spin_y, phi;
-    const double *x_slip, *x_centre, *step, *inside;   // per element (geometry)
-    const double *qx, *qy, *factor;                    // per element (march)
-    const double *width, *rigid_slip_x, *rigid_slip_y, *paper_spin_x, *neg_area_T; // per strip
-    double *slip_x, *slip_y, *paper, *dissipation;     // per element
-    double *loss, *strip_dissipation, *strip_paper;    // per strip
+    MarchView march;
+    double a = 0, T = 0, half_T = 0, TL1 = 0, TL2 = 0, L1T = 0, L2T = 0, eta = 0, spin_y = 0,
+           phi = 0;
+    // Per strip.
+    const double *width = nullptr, *rigid_slip_x = nullptr, *rigid_slip_y = nullptr,
+                 *paper_spin_x = nullptr, *neg_area_T = nullptr;
+    // Per element, out.
+    double *slip_x = nullptr, *slip_y = nullptr, *paper = nullptr, *dissipation = nullptr;
+    // Per strip, out.
+    double *loss = nullptr, *strip_dissipation = nullptr, *strip_paper = nullptr;
 };
 
 // The work of W strips from strip j0, element by element along the march
@@ -73,11 +78,12 @@ CREEPWORK_INLINE void work_strips(const WorkArgs& A, int j0)
 {
     using V = simd::Vec<W>;
     // Locals, not A's fields: the stores below may alias anything.
-    const int nx = A.nx;
-    const long stride = A.stride;
-    const double *x_slip = A.x_slip + j0, *x_centre = A.x_centre + j0, *step = A.step + j0,
-                 *inside = A.inside + j0;
-    const double *qx = A.qx + j0, *qy = A.qy + j0, *factor = A.factor + j0;
+    const int nx = A.march.nx;
+    const long stride = A.march.stride;
+    const MarchRows rows(A.march, j0);
+    const double *x_slip = rows.x_slip, *x_centre = rows.x_centre, *step = rows.step,
+                 *inside = rows.inside;
+    const double *qx = rows.qx, *qy = rows.qy, *factor = rows.factor;
     double *slip_x = A.slip_x + j0, *slip_y = A.slip_y + j0, *paper = A.paper + j0,
            *dissipation = A.dissipation + j0;
     const V zero = simd::broadcast<W>(0.0), one = simd::broadcast<W>(1.0);
@@ -127,28 +133,24 @@ CREEPWORK_INLINE void work_strips(const WorkArgs& A, int j0)
     simd::store<W>(A.strip_paper + j0, spaper);
 }
 
-template <int W>
-CREEPWORK_INLINE void work_body(const WorkArgs& A)
-{
-    for (int j0 = A.first; j0 < A.last; j0 += W) work_strips<W>(A, j0);
-}
-
-__attribute__((noinline)) void work_baseline(const WorkArgs& A) { work_body<2>(A); }
-#if CREEPWORK_X86_KERNELS
-CREEPWORK_TARGET_AVX2 void work_avx2(const WorkArgs& A) { work_body<4>(A); }
-CREEPWORK_TARGET_AVX512 void work_avx512(const WorkArgs& A) { work_body<8>(A); }
-#endif
+struct WorkKernel : KernelWidths {
+    template <int W>
+    CREEPWORK_INLINE static void run(const WorkArgs& A)
+    {
+        for (int j0 = A.march.first; j0 < A.march.last; j0 += W) work_strips<W>(A, j0);
+    }
+};
 
 // The map from D_k: c_k = (D_k ratio_j) balance, and each strip's sum.
 // When balance = W_macro/total is not a normal number (inputs far beyond the
 // creepage cap), it is applied as (D_k ratio_j / total) W_macro instead,
 // which cannot underflow as a whole.
 struct ScaleArgs {
-    int nx, ny, stride;
-    bool divide;
-    double balance, total, W_macro;
-    const double* ratio;
-    double *consistent, *strip_work;
+    int nx = 0, ny = 0, stride = 0;
+    bool divide = false;
+    double balance = 0, total = 0, W_macro = 0;
+    const double* ratio = nullptr;           // per strip
+    double *consistent = nullptr, *strip_work = nullptr; // per element, per strip
 };
 
 template <int W, bool kDivide>
@@ -171,20 +173,16 @@ CREEPWORK_INLINE void scale_strips(const ScaleArgs& A)
     }
 }
 
-template <int W>
-CREEPWORK_INLINE void scale_body(const ScaleArgs& A)
-{
-    if (A.divide)
-        scale_strips<W, true>(A);
-    else
-        scale_strips<W, false>(A);
-}
-
-__attribute__((noinline)) void scale_baseline(const ScaleArgs& A) { scale_body<2>(A); }
-#if CREEPWORK_X86_KERNELS
-CREEPWORK_TARGET_AVX2 void scale_avx2(const ScaleArgs& A) { scale_body<4>(A); }
-CREEPWORK_TARGET_AVX512 void scale_avx512(const ScaleArgs& A) { scale_body<8>(A); }
-#endif
+struct ScaleKernel : KernelWidths {
+    template <int W>
+    CREEPWORK_INLINE static void run(const ScaleArgs& A)
+    {
+        if (A.divide)
+            scale_strips<W, true>(A);
+        else
+            scale_strips<W, false>(A);
+    }
+};
 
 // Each strip's pool: its own dissipation and losses, plus the losses of
 // strips without slip, handed to the nearest strip(s) with slip (split
@@ -301,51 +299,35 @@ void march_with_work(const MarchGeometry& geo, const ContactGrid& grid, const Mo
         const double area = s.a * s.b * grid.x_length()[j] * grid.y_width()[j];
         w.neg_area_T[j] = -area * T;
     }
-    WorkArgs A{geo.nx,
-               0,
-               0,
-               geo.stride,
-               s.a,
-               T,
-               0.5 * T,
-               T * s.L1,
-               T * s.L2,
-               s.L1 * T,
-               s.L2 * T,
-               s.eta,
-               spin_y_model,
-               s.phi,
-               geo.x_slip.data(),
-               geo.x_centre.data(),
-               geo.step.data(),
-               geo.inside.data(),
-               st.qx.data(),
-               st.qy.data(),
-               st.factor.data(),
-               w.width.data(),
-               w.rigid_slip_x.data(),
-               w.rigid_slip_y.data(),
-               w.paper_spin_x.data(),
-               w.neg_area_T.data(),
-               w.slip_x.data(),
-               w.slip_y.data(),
-               w.paper.data(),
-               w.consistent.data(),
-               w.strip_loss.data(),
-               w.strip_dissipation.data(),
-               w.strip_paper.data()};
+    WorkArgs A;
+    A.a = s.a;
+    A.T = T;
+    A.half_T = 0.5 * T;
+    A.TL1 = T * s.L1;
+    A.TL2 = T * s.L2;
+    A.L1T = s.L1 * T;
+    A.L2T = s.L2 * T;
+    A.eta = s.eta;
+    A.spin_y = spin_y_model;
+    A.phi = s.phi;
+    A.width = w.width.data();
+    A.rigid_slip_x = w.rigid_slip_x.data();
+    A.rigid_slip_y = w.rigid_slip_y.data();
+    A.paper_spin_x = w.paper_spin_x.data();
+    A.neg_area_T = w.neg_area_T.data();
+    A.slip_x = w.slip_x.data();
+    A.slip_y = w.slip_y.data();
+    A.paper = w.paper.data();
+    A.dissipation = w.consistent.data();
+    A.loss = w.strip_loss.data();
+    A.strip_dissipation = w.strip_dissipation.data();
+    A.strip_paper = w.strip_paper.data();
+    const double* bound = geo.bound(s.pressure, s.kin.bound_blend).data();
     // Block by block, so that the work pass finds the march's output in cache.
     for (int first = 0; first < ny; first += kStripBlock) {
-        A.first = first;
-        A.last = std::min(ny, first + kStripBlock);
-        march_strips(geo, s.kin, s.pressure, st, isa, A.first, A.last);
-        switch (isa) {
-#if CREEPWORK_X86_KERNELS
-        case KernelIsa::avx512: work_avx512(A); break;
-        case KernelIsa::avx2: work_avx2(A); break;
-#endif
-        default: work_baseline(A); break;
-        }
+        A.march = march_view(geo, bound, s.kin.cy, st, first, std::min(ny, first + kStripBlock));
+        march(A.march, isa);
+        run_kernel<WorkKernel>(isa, A);
     }
     // The elastic energy carried out of the trailing edge.
     for (int j = 0; j < ny; ++j) {
@@ -387,16 +369,18 @@ WorkTotals distribute_work(const MarchGeometry& geo, const ContactGrid& grid,
     }
     const bool divide = balance > 0.0 ? balance < 2.2250738585072014e-308  // DBL_MIN
                                       : W_macro > 0.0 && total > 0.0;
-    const ScaleArgs A{geo.nx,  ny,      geo.stride,     divide,
-                      balance, total,   W_macro,        w.ratio.data(),
-                      w.consistent.data(), w.strip_work.data()};
-    switch (isa) {
-#if CREEPWORK_X86_KERNELS
-    case KernelIsa::avx512: scale_avx512(A); break;
-    case KernelIsa::avx2: scale_avx2(A); break;
-#endif
-    default: scale_baseline(A); break;
-    }
+    ScaleArgs A;
+    A.nx = geo.nx;
+    A.ny = ny;
+    A.stride = geo.stride;
+    A.divide = divide;
+    A.balance = balance;
+    A.total = total;
+    A.W_macro = W_macro;
+    A.ratio = w.ratio.data();
+    A.consistent = w.consistent.data();
+    A.strip_work = w.strip_work.data();
+    run_kernel<ScaleKernel>(isa, A);
     for (int j = 0; j < ny; ++j) t.W_consistent += w.strip_work[j];
     lateral_profile(grid, setup, t.W_consistent, w, t);
     return t;

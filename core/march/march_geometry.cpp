@@ -1,0 +1,100 @@
+#include "march/march_geometry.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "calibrated/bound_shape.hpp"
+
+namespace creepwork {
+
+MarchGeometry::MarchGeometry(const ContactGrid& grid)
+    : nx(grid.nx()), ny(grid.ny()), stride(padded_strips(grid.ny()))
+{
+    const Eigen::Index n = static_cast<Eigen::Index>(nx) * stride;
+    x_centre.setZero(n);
+    x_slip.setZero(n);
+    step.setOnes(n); // padding strips: a harmless step, never used
+    inside.setZero(n);
+    shape_parabolic.setZero(n);
+    shape_elliptic.setZero(n);
+    for (int m = 0; m < nx; ++m)
+        for (int j = 0; j < ny; ++j) {
+            const Eigen::Index k = static_cast<Eigen::Index>(m) * ny + j;
+            const Eigen::Index p = static_cast<Eigen::Index>(m) * stride + j;
+            x_centre[p] = grid.x_centre()[k];
+            x_slip[p] = grid.x_slip()[k];
+            step[p] = grid.step()[k];
+            inside[p] = grid.in_contact()[k];
+            shape_parabolic[p] = grid.pressure_shape(PressureKind::parabolic)[k];
+            shape_elliptic[p] = grid.pressure_shape(PressureKind::elliptic)[k];
+        }
+    max_parabolic = shape_parabolic.size() > 0 ? shape_parabolic.maxCoeff() : 0.0;
+}
+
+void MarchGeometry::reserve_blend()
+{
+    if (shape_blended.size() != shape_parabolic.size()) {
+        shape_blended = shape_parabolic; // blend 0
+        blend = 0.0;
+        blend_max = max_parabolic;
+    }
+}
+
+void MarchGeometry::set_blend(double bound_blend)
+{
+    const Eigen::Index n = shape_parabolic.size();
+    if (shape_blended.size() == n && bound_blend == blend) return;
+    shape_blended.resize(n);
+    // blended_bound_shape with its branch and coefficients taken out of the
+    // loop, so that it vectorises (a vehicle loop remakes it every solve).
+    const double* P = shape_parabolic.data();
+    const double* E = shape_elliptic.data(); // sqrt(P)
+    double* out = shape_blended.data();
+    if (bound_blend >= 0.0) {
+        const double cp = 1.0 - bound_blend, ce = bound_blend * 0.75;
+        for (Eigen::Index k = 0; k < n; ++k) out[k] = cp * P[k] + ce * E[k];
+    } else {
+        const double cp = 1.0 + bound_blend, cq = -bound_blend * 1.5;
+        for (Eigen::Index k = 0; k < n; ++k) out[k] = cp * P[k] + cq * P[k] * P[k];
+    }
+    // Every blend increases with P, so the largest is at the largest P.
+    blend_max = blended_bound_shape(max_parabolic, std::sqrt(max_parabolic), bound_blend);
+    blend = bound_blend;
+}
+
+void MarchGeometry::march_from_leading_edge(const ContactGrid& grid)
+{
+    if (grid.spec().kind != GridKind::uniform) return;
+    for (int j = 0; j < ny; ++j) {
+        const double Y = grid.y_centre()[j];
+        double previous = std::sqrt(std::max(0.0, 1.0 - Y * Y)); // where the strip enters
+        for (int m = 0; m < nx; ++m) {
+            const Eigen::Index p = static_cast<Eigen::Index>(m) * stride + j;
+            if (inside[p] == 0.0) continue; // before the ellipse, or after it
+            step[p] = previous - x_centre[p];
+            x_slip[p] = 0.5 * (previous + x_centre[p]);
+            previous = x_centre[p];
+        }
+    }
+}
+
+void MarchState::resize(int n_elements, int ny_)
+{
+    ny = ny_;
+    nx = ny > 0 ? n_elements / ny : 0;
+    stride = padded_strips(ny);
+    const Eigen::Index n = static_cast<Eigen::Index>(nx) * stride;
+    qx.setZero(n);
+    qy.setZero(n);
+    factor.setZero(n);
+    sum_px.setZero(stride);
+    sum_py.setZero(stride);
+    sum_x_py.setZero(stride);
+    slip_count.setZero(stride);
+    px.setZero(stride);
+    py.setZero(stride);
+    wx.setZero(stride);
+    wy.setZero(stride);
+}
+
+} // namespace creepwork
