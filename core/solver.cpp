@@ -6,8 +6,63 @@
 #include "contact/error.hpp"
 
 namespace creepwork {
+namespace {
 
-Solver::Solver(const GridSpec& grid) : fastsim_(grid) {}
+// The models a solver can make, by ModelKind: a new model is one class
+// implementing ContactModel (contact_model.hpp), one ModelKind value
+// (contact/params.hpp) and one case here.
+std::unique_ptr<ContactModel> make_model(ModelKind kind, const GridSpec& grid)
+{
+    switch (kind) {
+    case ModelKind::fastsim: return std::make_unique<FastsimModel>(grid);
+    case ModelKind::exact: return std::make_unique<ExactModel>(grid);
+    case ModelKind::calibrated: return std::make_unique<CalibratedModel>(grid);
+    }
+    throw Error(ErrorKind::invalid_input,
+                "model = " + std::to_string(static_cast<int>(kind)) + " is unknown");
+}
+
+} // namespace
+
+Solver::Solver(const GridSpec& grid) : grid_(grid)
+{
+    last_ = &model(ModelKind::fastsim);
+    fastsim_ = static_cast<FastsimModel*>(last_);
+}
+
+ContactModel* Solver::find(ModelKind kind) const
+{
+    for (const auto& m : models_)
+        if (m.first == kind) return m.second.get();
+    return nullptr;
+}
+
+ContactModel& Solver::model(ModelKind kind)
+{
+    if (ContactModel* m = find(kind)) return *m;
+    std::unique_ptr<ContactModel> made = make_model(kind, grid_);
+    if (fastsim_) made->set_kernel_isa(fastsim_->kernel_isa());
+    models_.emplace_back(kind, std::move(made));
+    return *models_.back().second;
+}
+
+void Solver::prepare(ModelKind kind) { model(kind); }
+
+const ExactModel* Solver::exact_model() const
+{
+    return static_cast<const ExactModel*>(find(ModelKind::exact));
+}
+
+CalibratedModel& Solver::calibrated_model()
+{
+    return static_cast<CalibratedModel&>(model(ModelKind::calibrated));
+}
+
+void Solver::set_kernel_isa(KernelIsa isa)
+{
+    fastsim_->set_kernel_isa(isa); // throws when this CPU cannot run it
+    for (const auto& m : models_) m.second->set_kernel_isa(isa);
+}
 
 const SolveTotals& Solver::solve(const ContactInput& input, SolveMode mode)
 {
@@ -37,17 +92,9 @@ const SolveTotals& Solver::solve_impl(const ContactInput& input, SolveMode mode,
 {
     solved_ = false;
     mode_ = mode;
-    SolveTotals t;
-    if (input.model == ModelKind::exact) {
-        prepare(ModelKind::exact);
-        t = jacobian ? exact_->solve_jacobian(input, mode, *jacobian) : exact_->solve(input, mode);
-    } else if (input.model == ModelKind::calibrated) {
-        t = jacobian ? calibrated_model().solve_jacobian(input, mode, *jacobian)
-                     : calibrated_model().solve(input, mode);
-    } else {
-        t = fastsim_.solve(input, mode, jacobian);
-    }
-    last_model_ = input.model;
+    ContactModel& m = model(input.model);
+    const SolveTotals t = jacobian ? m.solve_jacobian(input, mode, *jacobian) : m.solve(input, mode);
+    last_ = &m;
 
     const double checks[] = {t.Fx, t.Fy, t.Mz, t.W_macro, t.W_micro_paper, t.K, t.W_consistent,
                              t.balance_factor, t.profile_max_diff, t.profile_rms_diff};
@@ -58,70 +105,6 @@ const SolveTotals& Solver::solve_impl(const ContactInput& input, SolveMode mode,
     totals_ = t;
     solved_ = true;
     return totals_;
-}
-
-void Solver::prepare(ModelKind model)
-{
-    if (model == ModelKind::exact) {
-        if (!exact_) exact_ = std::make_unique<ExactModel>(fastsim_.grid().spec());
-    } else if (model == ModelKind::calibrated) {
-        if (!calibrated_) calibrated_ = std::make_unique<CalibratedModel>(fastsim_.grid().spec());
-    } else if (model != ModelKind::fastsim) {
-        throw Error(ErrorKind::invalid_input,
-                    "model = " + std::to_string(static_cast<int>(model)) + " is unknown");
-    }
-}
-
-CalibratedModel& Solver::calibrated_model()
-{
-    prepare(ModelKind::calibrated);
-    return *calibrated_;
-}
-
-bool Solver::exact_last() const { return last_model_ == ModelKind::exact && exact_; }
-bool Solver::calibrated_last() const
-{
-    return last_model_ == ModelKind::calibrated && calibrated_;
-}
-
-void Solver::copy_field(Field f, double* out) const
-{
-    if (exact_last())
-        exact_->copy_field(f, out);
-    else if (calibrated_last())
-        calibrated_->copy_field(f, out);
-    else
-        fastsim_.copy_field(f, out);
-}
-
-void Solver::add_field(Field f, double scale, double* out) const
-{
-    if (exact_last())
-        exact_->add_field(f, scale, out);
-    else if (calibrated_last())
-        calibrated_->add_field(f, scale, out);
-    else
-        fastsim_.add_field(f, scale, out);
-}
-
-void Solver::copy_state(int* out) const
-{
-    if (exact_last())
-        exact_->copy_state(out);
-    else if (calibrated_last())
-        calibrated_->copy_state(out);
-    else
-        fastsim_.copy_state(out);
-}
-
-void Solver::copy_profile(double* y, double* work, double* parabola) const
-{
-    if (exact_last())
-        exact_->copy_profile(totals_.W_consistent, y, work, parabola);
-    else if (calibrated_last())
-        calibrated_->copy_profile(totals_.W_consistent, y, work, parabola);
-    else
-        fastsim_.copy_profile(totals_.W_consistent, y, work, parabola);
 }
 
 } // namespace creepwork

@@ -51,12 +51,12 @@ WEAR = [
 # ../shared/reference), never tests that recompute the model's own formulas.
 MUTANTS = [
     dict(id="moment-sign", what="creep moment Mz reported with the wrong sign",
-         file="core/fastsim/fastsim_model.cpp",
+         file="core/march/march_model.cpp",
          old="    t.Mz = d * mz;", new="    t.Mz = -d * mz;", tests=CORE),
     dict(id="moment-arm", what="sign of the y px term of Mz (moment about the centre)",
-         file="core/fastsim/fastsim_model.cpp",
-         old="mz += area * (a * march_.sum_x_py[j] - y * march_.sum_px[j]);",
-         new="mz += area * (a * march_.sum_x_py[j] + y * march_.sum_px[j]);", tests=CORE),
+         file="core/march/march.cpp",
+         old="Phi[2] += area * (a * march.sum_x_py[j] - y * march.sum_px[j]);",
+         new="Phi[2] += area * (a * march.sum_x_py[j] + y * march.sum_px[j]);", tests=CORE),
     dict(id="half-first-step", what="Kalker's strips start with a full step, not half a step",
          file="core/contact/contact_grid.cpp",
          old="        double previous = half_chord;",

@@ -7,7 +7,6 @@
 #include "calibrated/moment_flexibility.hpp"
 #include "contact/contact_input.hpp"
 #include "contact/error.hpp"
-#include "calibrated/bound_shape.hpp"
 #include "march/march_setup.hpp"
 
 namespace creepwork {
@@ -66,40 +65,30 @@ void validate_calibrated_input(const ContactInput& input)
 }
 
 // The grid's load per unit pressure scale under the traction bound of the
-// blend (bound_shape.hpp: linear in the blend on each side), and its
-// derivative by the blend.
+// blend (blended_bound.hpp: linear in the blend), and its derivative by the
+// blend.
 double blended_load(const DiscreteLoad& load, double blend)
 {
-    return blend >= 0.0 ? (1.0 - blend) * load.parabolic + blend * 0.75 * load.elliptic
-                        : (1.0 + blend) * load.parabolic - blend * 1.5 * load.quartic;
+    return (1.0 - blend) * load.parabolic + blend * 0.75 * load.elliptic;
 }
-double blended_load_slope(const DiscreteLoad& load, double blend)
-{
-    return blend >= 0.0 ? 0.75 * load.elliptic - load.parabolic
-                        : load.parabolic - 1.5 * load.quartic;
-}
-
-// The bound blend the setup of params uses (0: the pressure law's own).
-double bound_blend_of(const ContactInput& in, const CalibrationParams& params)
-{
-    return in.pressure == PressureKind::parabolic
-               ? std::max(-kMaxBoundBlend, std::min(kMaxBoundBlend, params.bound_blend))
-               : 0.0;
-}
+double blended_load_slope(const DiscreteLoad& load) { return 0.75 * load.elliptic - load.parabolic; }
 
 // FASTSIM's setup of input with the calibrated changes of params; load is the
 // grid's (read with exact_load: the pressure scale then makes the blended
 // bound carry N exactly).
-ModelSetup calibrated_setup(const ContactInput& input, const CalibrationParams& params,
-                            const DiscreteLoad& load)
+CalibratedSetup calibrated_setup(const ContactInput& input, const CalibrationParams& params,
+                                 const DiscreteLoad& load)
 {
     ContactInput in = input;
     in.pressure = params.pressure;
     in.flexibility_blending = false; // the table replaces CONTACT's blending
-    const double blend = bound_blend_of(in, params);
-    ModelSetup s = make_model_setup(in, in.pressure == PressureKind::parabolic
-                                            ? blended_load(load, blend)
-                                            : load.elliptic);
+    CalibratedSetup cs;
+    if (in.pressure == PressureKind::parabolic)
+        cs.bound_blend = std::max(0.0, std::min(kMaxBoundBlend, params.bound_blend));
+    ModelSetup& s = cs.march;
+    s = make_model_setup(in, in.pressure == PressureKind::parabolic
+                                 ? blended_load(load, cs.bound_blend)
+                                 : load.elliptic);
     double L_M = s.L3;
     if (in.flexibility == FlexibilitySource::kalker_from_material) {
         L_M = moment_consistent_flexibility(s.b, in.G, s.C.C33);
@@ -112,21 +101,46 @@ ModelSetup calibrated_setup(const ContactInput& input, const CalibrationParams& 
     s.kin.cy *= params.k_spin_y;
     if (in.flexibility == FlexibilitySource::kalker_from_material && params.equalise > 0.0)
         equalise_flexibilities(s, in, L_M, params);
-    s.kin.edge_gain = params.edge_gain;
-    s.kin.bound_blend = blend;
-    return s;
+    cs.edge_gain = params.edge_gain;
+    return cs;
 }
 
 } // namespace
 
-CalibratedModel::CalibratedModel(const GridSpec& grid) : march_(grid)
+void calibrated_rigid_slip(const ContactGrid& grid, const CalibratedSetup& setup, double* wx,
+                           double* wy, int first, int last)
+{
+    rigid_slip_of_strips(grid, setup.march.kin, wx, wy, first, last);
+    const double g = setup.edge_gain;
+    if (g == 0.0) return;
+    for (int j = first; j < last; ++j) {
+        const double Y = grid.y_centre()[j];
+        const double m = (1.0 + g * Y * Y) / (1.0 + g / 5.0);
+        wx[j] *= m;
+        wy[j] *= m;
+    }
+}
+
+CalibratedModel::CalibratedModel(const GridSpec& grid) : MarchModel(grid), bound_(geometry())
 {
     // Its solves, with or without the Jacobian, allocate nothing.
-    march_.reserve_blended_bound();
-    march_.march_from_leading_edge();
-    directions_.resize(march_.grid().ny());
+    geometry().march_from_leading_edge(this->grid());
+    directions_.resize(this->grid().ny());
     scratch_wx_.setZero(directions_.stride);
     scratch_wy_.setZero(directions_.stride);
+}
+
+void CalibratedModel::begin_calibrated(const CalibratedSetup& s)
+{
+    const PressureKind pressure = s.march.pressure;
+    if (s.bound_blend != 0.0) {
+        bound_.set(geometry(), s.bound_blend);
+        begin(s.march, bound_.data(), bound_.max());
+    } else {
+        begin(s.march, geometry().shape(pressure).data(), geometry().max_shape(pressure));
+    }
+    MarchState& state = march_state();
+    calibrated_rigid_slip(grid(), s, state.wx.data(), state.wy.data(), 0, grid().ny());
 }
 
 SolveTotals CalibratedModel::solve(const ContactInput& input, SolveMode mode)
@@ -138,10 +152,12 @@ SolveTotals CalibratedModel::solve(const ContactInput& input, SolveMode mode)
 SolveTotals CalibratedModel::solve_with(const ContactInput& input, SolveMode mode,
                                         const CalibrationParams& params)
 {
-    SolveTotals t =
-        march_.solve_setup(calibrated_setup(input, params, march_.discrete_load()), input, mode);
-    t.model = ModelKind::calibrated;
-    return t;
+    begin_calibrated(calibrated_setup(input, params, discrete_load()));
+    if (mode == SolveMode::full)
+        march_with_work();
+    else
+        march();
+    return totals(input, mode, ModelKind::calibrated);
 }
 
 SolveTotals CalibratedModel::solve_jacobian(const ContactInput& input, SolveMode mode,
@@ -156,17 +172,22 @@ SolveTotals CalibratedModel::solve_jacobian(const ContactInput& input, SolveMode
         jacobian = Jacobian{};
         return solve(input, mode);
     }
-    const ModelSetup setup = calibrated_setup(input, calibration_for(input), march_.discrete_load());
+    const CalibratedSetup setup = calibrated_setup(input, calibration_for(input), discrete_load());
     set_directions(input, setup);
-    SolveTotals t = march_.solve_setup_directional(setup, input, mode, directions_, jacobian);
+    begin_calibrated(setup);
+    if (mode == SolveMode::full) march_with_work();
+    // With work, the directional march repeats the march: the same state, bitwise.
+    march_directional(view(), geometry(), directions_, kernel_isa());
+    jacobian = directional_jacobian(setup.march, grid(), march_state(), directions_);
+    SolveTotals t = totals(input, mode, ModelKind::calibrated);
     if (input.exact_load) {
         // The march's directions hold the creepages' effect on the kinematics
         // and on the bound; with exact_load the traction scale T moves too,
         // as 1 / (the blended bound's load), so F = T Phi gains
         // (dT/T) F = -(dI/I) F along each direction.
-        const DiscreteLoad& load = march_.discrete_load();
-        const double blend = setup.kin.bound_blend;
-        const double dlog_load = blended_load_slope(load, blend) / blended_load(load, blend);
+        const DiscreteLoad& load = discrete_load();
+        const double dlog_load =
+            blended_load_slope(load) / blended_load(load, setup.bound_blend);
         const double F[3] = {t.Fx, t.Fy, t.Mz};
         for (int k = 0; k < kMarchDirections; ++k)
             for (int i = 0; i < 3; ++i)
@@ -182,7 +203,6 @@ SolveTotals CalibratedModel::solve_jacobian(const ContactInput& input, SolveMode
                                 input.xi_y * jacobian.d[i][jac_xi_y] -
                                 input.phi * jacobian.d[i][jac_phi]) /
                                input.normal_force;
-    t.model = ModelKind::calibrated;
     return t;
 }
 
@@ -194,12 +214,12 @@ SolveTotals CalibratedModel::solve_jacobian(const ContactInput& input, SolveMode
 // differentiated exactly along them (march_directional.hpp). Kinks of the
 // closed forms (|creepage| in the equalisation weights, its cap at 1) get the
 // mean of their one-sided slopes.
-void CalibratedModel::set_directions(const ContactInput& in, const ModelSetup& setup)
+void CalibratedModel::set_directions(const ContactInput& in, const CalibratedSetup& setup)
 {
-    const ContactGrid& grid = march_.grid();
+    const ContactGrid& grid = this->grid();
     const int ny = grid.ny(), stride = directions_.stride;
     const double muN = in.mu * in.normal_force, c2 = in.a * in.b, c = std::sqrt(c2);
-    const CreepCoefficients& C = setup.C;
+    const CreepCoefficients& C = setup.march.C;
     // Saturation creepages (normalised creepage 1), the inputs' scales.
     const double scale[kMarchDirections] = {muN / (in.G * c2 * C.C11), muN / (in.G * c2 * C.C22),
                                             muN / (in.G * c2 * c * C.C23)};
@@ -213,19 +233,19 @@ void CalibratedModel::set_directions(const ContactInput& in, const ModelSetup& s
         ContactInput plus = in, minus = in;
         plus.*member[k] = value + h;
         minus.*member[k] = value - h;
-        const ModelSetup sp = calibrated_setup(plus, calibration_for(plus), march_.discrete_load());
-        const ModelSetup sm = calibrated_setup(minus, calibration_for(minus), march_.discrete_load());
+        const CalibratedSetup sp = calibrated_setup(plus, calibration_for(plus), discrete_load());
+        const CalibratedSetup sm = calibrated_setup(minus, calibration_for(minus), discrete_load());
         const double inv = 1.0 / ((value + h) - (value - h)); // the step as represented
         double* dwx = directions_.wx.data() + k * stride;
         double* dwy = directions_.wy.data() + k * stride;
-        rigid_slip_of_strips(grid, sp.kin, dwx, dwy, 0, ny);
-        rigid_slip_of_strips(grid, sm.kin, scratch_wx_.data(), scratch_wy_.data(), 0, ny);
+        calibrated_rigid_slip(grid, sp, dwx, dwy, 0, ny);
+        calibrated_rigid_slip(grid, sm, scratch_wx_.data(), scratch_wy_.data(), 0, ny);
         for (int j = 0; j < ny; ++j) {
             dwx[j] = (dwx[j] - scratch_wx_[j]) * inv;
             dwy[j] = (dwy[j] - scratch_wy_[j]) * inv;
         }
-        directions_.cy[k] = (sp.kin.cy - sm.kin.cy) * inv;
-        directions_.blend[k] = (sp.kin.bound_blend - sm.kin.bound_blend) * inv;
+        directions_.cy[k] = (sp.march.kin.cy - sm.march.kin.cy) * inv;
+        directions_.blend[k] = (sp.bound_blend - sm.bound_blend) * inv;
     }
 }
 

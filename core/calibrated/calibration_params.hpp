@@ -10,9 +10,10 @@ namespace creepwork {
 struct CalibrationParams {
     // Pressure and traction bound of the march.
     PressureKind pressure = PressureKind::elliptic;
-    // Factors on the normalised rigid slip over flexibility (march/march_setup.hpp,
-    // NormalisedKinematics), after the spin part of the x-slip has been put on
-    // the moment-consistent flexibility L_M (moment_flexibility.hpp):
+    // Factors on the normalised rigid slip over flexibility
+    // (march/march_setup.hpp, NormalisedKinematics), after the spin part of
+    // the x-slip has been put on the moment-consistent flexibility L_M
+    // (moment_flexibility.hpp):
     double k_long = 1.0;   // ux: a xi / (L1 mu p0)
     double k_lat = 1.0;    // uy: a eta / (L2 mu p0)
     double k_spin_x = 1.0; // cx: a b phi / (L_M mu p0)
@@ -27,14 +28,13 @@ struct CalibrationParams {
     // lateral creepage (calibrated_model.cpp): 1 in the linear limit, faded
     // towards saturation by the table; 0 leaves FASTSIM's Mz(eta).
     double lateral_moment = 1.0;
-    // Lateral modulation of the rigid slip (NormalisedKinematics::edge_gain):
-    // exact theory's slip zone reaches further in near y = +-b than
-    // FASTSIM's. 0: none.
+    // Lateral modulation of the rigid slip (calibrated_rigid_slip in
+    // calibrated_model.hpp): exact theory's slip zone reaches further in
+    // near y = +-b than FASTSIM's. 0: none.
     double edge_gain = 0.0;
     // Traction bound (and reported pressure) between the laws
-    // (calibrated/bound_shape.hpp): with the parabolic pressure, blended
-    // towards the elliptic law (> 0) or the quartic one (< 0), N unchanged.
-    // 0: the parabolic law.
+    // (blended_bound.hpp): with the parabolic pressure, blended towards the
+    // elliptic law, N unchanged; clamped to [0, 1]. 0: the parabolic law.
     double bound_blend = 0.0;
 };
 

@@ -37,7 +37,7 @@ struct CalibrationNode {
     double fade;     // lateral-moment weight 1/(1 + (fade s)^2)^2
     double equalise; // flexibility equalisation h = min(1, equalise s)
     double edge;     // lateral modulation edge_gain = edge g(s)
-    // Traction bound blend (calibrated/bound_shape.hpp) blend s^2/(blend_half^2
+    // Traction bound blend (blended_bound.hpp) blend s^2/(blend_half^2
     // + s^2): the parabolic law at small slip, towards the elliptic law as
     // the slip zone grows.
     double blend, blend_half;

@@ -1,7 +1,5 @@
 #include "calibrated/march_directional.hpp"
 
-#include "march/march_step.hpp"
-
 namespace creepwork {
 
 void MarchDirections::resize(int ny)
@@ -20,8 +18,6 @@ constexpr int K = kMarchDirections;
 
 struct DirectionalArgs {
     MarchView march;
-    // d(shape)/d(blend) = ce sqrt(P) + cp P + cq P^2 (bound_shape.hpp).
-    double ce = 0, cp = 0, cq = 0;
     const double *shape_p = nullptr, *shape_e = nullptr;          // per element
     const double *dwx = nullptr, *dwy = nullptr;                  // per direction and strip
     const double *dcy = nullptr, *dblend = nullptr;               // per direction
@@ -50,8 +46,7 @@ struct DirectionalKernel : KernelWidths {
             dblend[k] = simd::broadcast<W>(A.dblend[k]);
             tpx[k] = tpy[k] = tspx[k] = tspy[k] = tsxpy[k] = zero;
         }
-        const V cy = simd::broadcast<W>(v.cy), ce = simd::broadcast<W>(A.ce),
-                cp = simd::broadcast<W>(A.cp), cq = simd::broadcast<W>(A.cq);
+        const V cy = simd::broadcast<W>(v.cy), three_quarters = simd::broadcast<W>(0.75);
         for (int m = 0; m < v.nx; ++m) {
             const long e = m * stride;
             strip.advance(rows, e, cy, [&](const MarchElement<W>& el) {
@@ -71,7 +66,8 @@ struct DirectionalKernel : KernelWidths {
                     const V inv_g = s.slip / safe_g;
                     const V r = s.f * inv_g * inv_g;
                     const V P = simd::load<W>(shape_p + e), E = simd::load<W>(shape_e + e);
-                    const V dshape_over_g = (ce * E + cp * P + cq * P * P) * inv_g;
+                    // d(shape)/d(blend) = (3/4) sqrt(P) - P (blended_bound.hpp).
+                    const V dshape_over_g = (three_quarters * E - P) * inv_g;
                     for (int k = 0; k < K; ++k) {
                         const V c = r * (s.px * dq[k][0] + s.py * dq[k][1]) -
                                     dblend[k] * dshape_over_g;
@@ -108,18 +104,11 @@ struct DirectionalKernel : KernelWidths {
 
 } // namespace
 
-void march_directional(const MarchGeometry& geo, const ContactGrid& grid, const ModelSetup& setup,
-                       MarchState& s, MarchDirections& d, KernelIsa isa)
+void march_directional(const MarchView& view, const MarchGeometry& geo, MarchDirections& d,
+                       KernelIsa isa)
 {
-    const NormalisedKinematics& kin = setup.kin;
-    set_rigid_slip(grid, kin, s, 0, grid.ny());
-    const bool quartic = kin.bound_blend < 0.0;
     DirectionalArgs A;
-    A.march = march_view(geo, geo.bound(setup.pressure, kin.bound_blend).data(), kin.cy, s, 0,
-                         grid.ny());
-    A.ce = quartic ? 0.0 : 0.75;
-    A.cp = -1.0;
-    A.cq = quartic ? 1.5 : 0.0;
+    A.march = view;
     A.shape_p = geo.shape_parabolic.data();
     A.shape_e = geo.shape_elliptic.data();
     A.dwx = d.wx.data();
@@ -135,11 +124,16 @@ void march_directional(const MarchGeometry& geo, const ContactGrid& grid, const 
 Jacobian directional_jacobian(const ModelSetup& setup, const ContactGrid& grid,
                               const MarchState& march, const MarchDirections& d)
 {
-    double Phi[3], dPhi[3][4];
-    scaled_forces_and_derivatives(grid, setup.a, setup.b, march, d.sum_px.data(), d.sum_py.data(),
-                                  d.sum_x_py.data(), d.stride, K, Phi, dPhi);
+    static_assert(K == kStripTangents, "scaled_forces sums three directions");
+    StripTangents sums;
+    sums.sum_px = d.sum_px.data();
+    sums.sum_py = d.sum_py.data();
+    sums.sum_x_py = d.sum_x_py.data();
+    sums.stride = d.stride;
+    double Phi[3], dPhi[3][kStripTangents];
+    scaled_forces(grid, setup.a, setup.b, march, sums, Phi, dPhi);
     // Rolling-frame forces f_i = T Phi_i, T fixed along the creepages; the
-    // caller's Fx = d fx, Fy = fy, Mz = d mz (fastsim_model.cpp).
+    // caller's Fx = d fx, Fy = fy, Mz = d mz (march_model.cpp).
     const double T = setup.traction_scale, dir = setup.direction;
     const double frame[3] = {dir, 1.0, dir};
     Jacobian J;
@@ -147,30 +141,6 @@ Jacobian directional_jacobian(const ModelSetup& setup, const ContactGrid& grid,
         for (int k = 0; k < K; ++k)
             J.d[i][k] = frame[i] * T * dPhi[i][k];
     return J;
-}
-
-void scaled_forces_and_derivatives(const ContactGrid& grid, double a, double b,
-                                   const MarchState& march, const double* t_sum_px,
-                                   const double* t_sum_py, const double* t_sum_x_py, int stride,
-                                   int n, double Phi[3], double dPhi[3][4])
-{
-    for (int i = 0; i < 3; ++i) {
-        Phi[i] = 0.0;
-        for (int k = 0; k < 4; ++k) dPhi[i][k] = 0.0;
-    }
-    for (int j = 0; j < grid.ny(); ++j) {
-        const double area = a * b * grid.x_length()[j] * grid.y_width()[j];
-        const double y = b * grid.y_centre()[j];
-        Phi[0] += area * march.sum_px[j];
-        Phi[1] += area * march.sum_py[j];
-        Phi[2] += area * (a * march.sum_x_py[j] - y * march.sum_px[j]);
-        for (int k = 0; k < n; ++k) {
-            const long e = static_cast<long>(k) * stride + j;
-            dPhi[0][k] += area * t_sum_px[e];
-            dPhi[1][k] += area * t_sum_py[e];
-            dPhi[2][k] += area * (a * t_sum_x_py[e] - y * t_sum_px[e]);
-        }
-    }
 }
 
 } // namespace creepwork

@@ -28,6 +28,7 @@
 #include <vector>
 
 #include "contact/fields.hpp"
+#include "contact_model.hpp"
 #include "contact/jacobian.hpp"
 #include "contact/params.hpp"
 #include "exact/exact_geometry.hpp"
@@ -56,29 +57,30 @@ struct ExactSolveInfo {
     bool retried_cold = false;
 };
 
-class ExactModel {
+class ExactModel : public ContactModel {
 public:
     // Throws Error(invalid_input) unless grid.kind is uniform, and
     // Error(grid_out_of_range) beyond kMaxExactCells.
     explicit ExactModel(const GridSpec& grid);
-    ~ExactModel();
+    ~ExactModel() override;
 
     // Throws Error naming a bad input, or Error(not_converged).
-    SolveTotals solve(const ContactInput& input, SolveMode mode);
+    SolveTotals solve(const ContactInput& input, SolveMode mode) override;
     // solve(), then rows Fx, Fy, Mz of the Jacobian (exact_jacobian.cpp).
-    SolveTotals solve_jacobian(const ContactInput& input, SolveMode mode, Jacobian& jacobian);
+    SolveTotals solve_jacobian(const ContactInput& input, SolveMode mode,
+                               Jacobian& jacobian) override;
 
     const ExactSolveInfo& info() const { return info_; }
     int nx() const { return nx_; }
     int ny() const { return ny_; }
 
     // Of the last successful solve, in the caller's layout [i + nx j].
-    void copy_field(Field f, double* out) const;
-    void add_field(Field f, double scale, double* out) const; // out += scale * field
-    void copy_state(int* out) const;
+    void copy_field(Field f, double* out) const override;
+    void add_field(Field f, double scale, double* out) const override; // out += scale * field
+    void copy_state(int* out) const override;
     // Per row j < ny: centre y [m], energy-consistent work per unit width
     // [J/m per m], and the equal-area parabola of total W at y.
-    void copy_profile(double W, double* y, double* work, double* parabola) const;
+    void copy_profile(double W, double* y, double* work, double* parabola) const override;
 
 private:
     // One grid of the hierarchy with its coefficients and solvers.

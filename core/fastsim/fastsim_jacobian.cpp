@@ -2,7 +2,6 @@
 
 #include "contact/error.hpp"
 #include "contact/flexibility_blending.hpp"
-#include "calibrated/march_directional.hpp"
 
 namespace creepwork {
 
@@ -19,10 +18,14 @@ Jacobian fastsim_jacobian(const ContactInput& in, const ModelSetup& s, const Con
     // Forces over the traction scale T in the rolling frame, Phi = F / T, and
     // their derivatives by the march parameters k = ux, uy, kappa.
     const double a = s.a, b = s.b, T = s.traction_scale;
-    double Phi[3], dPhi[3][4];
-    scaled_forces_and_derivatives(grid, a, b, march, tangents.sum_px.data(),
-                                  tangents.sum_py.data(), tangents.sum_x_py.data(),
-                                  tangents.stride, kTangents, Phi, dPhi);
+    static_assert(kTangents == kStripTangents, "scaled_forces sums three tangents");
+    double Phi[3], dPhi[3][kStripTangents];
+    StripTangents sums;
+    sums.sum_px = tangents.sum_px.data();
+    sums.sum_py = tangents.sum_py.data();
+    sums.sum_x_py = tangents.sum_x_py.data();
+    sums.stride = tangents.stride;
+    scaled_forces(grid, a, b, march, sums, Phi, dPhi);
 
     // dT/dc: only N moves T = mu p0, p0 proportional to N.
     const double dT[4] = {0.0, 0.0, 0.0, in.mu * s.pressure_per_force};

@@ -1,7 +1,5 @@
 #include "fastsim/march_tangent.hpp"
 
-#include "march/march_step.hpp"
-
 namespace creepwork {
 
 void TangentState::resize(const MarchGeometry& geo)
@@ -131,19 +129,18 @@ struct TangentKernel : KernelWidths {
 
 } // namespace
 
-void march_tangent(const MarchGeometry& geo, const ContactGrid& grid, const ModelSetup& setup,
-                   MarchState& s, TangentState& t, KernelIsa isa)
+void march_tangent(const MarchView& view, const ContactGrid& grid, const ModelSetup& setup,
+                   TangentState& t, KernelIsa isa)
 {
     const int ny = grid.ny();
     const NormalisedKinematics& kin = setup.kin;
-    set_rigid_slip(grid, kin, s, 0, ny);
     for (int j = 0; j < ny; ++j) {
         t.kappa_wx[j] = -setup.b * grid.y_centre()[j];
         t.kappa_wy[j] = kin.spin_offset > 0.0 ? setup.a * (kin.spin_offset * grid.x_length()[j])
                                               : 0.0;
     }
     TangentArgs A;
-    A.march = march_view(geo, geo.bound(setup.pressure).data(), kin.cy, s, 0, ny);
+    A.march = view;
     A.a = setup.a;
     A.inv_bound2 = setup.pressure == PressureKind::parabolic ? t.inv_bound2_parabolic.data()
                                                              : t.inv_bound2_elliptic.data();

@@ -29,6 +29,7 @@
 #include "contact/contact_grid.hpp"
 #include "march/march_setup.hpp"
 #include "march/march.hpp"
+#include "march/march_step.hpp"
 
 namespace creepwork {
 
@@ -48,11 +49,10 @@ struct TangentState {
     void resize(const MarchGeometry& geometry);
 };
 
-// The march (as march(), bitwise the same state) and its tangents. Writes
-// state (sized by MarchState::resize) and tangents (sized by resize());
-// allocates nothing.
-void march_tangent(const MarchGeometry& geometry, const ContactGrid& grid,
-                   const ModelSetup& setup, MarchState& state, TangentState& tangents,
-                   KernelIsa isa);
+// The march of view (as march(), bitwise the same state) and its tangents,
+// with FASTSIM's bound for setup.pressure. Writes the view's state and
+// tangents (sized by resize()); allocates nothing.
+void march_tangent(const MarchView& view, const ContactGrid& grid, const ModelSetup& setup,
+                   TangentState& tangents, KernelIsa isa);
 
 } // namespace creepwork

@@ -86,12 +86,6 @@ void rigid_slip_of_strips(const ContactGrid& grid, const NormalisedKinematics& k
         // to the bit (uy + cy * 0 could flip the sign of a zero).
         wy[j] = kin.spin_offset > 0.0 ? kin.uy + kin.cy * (kin.spin_offset * grid.x_length()[j])
                                       : kin.uy;
-        if (kin.edge_gain != 0.0) {
-            const double Y = grid.y_centre()[j];
-            const double m = (1.0 + kin.edge_gain * Y * Y) / (1.0 + kin.edge_gain / 5.0);
-            wx[j] *= m;
-            wy[j] *= m;
-        }
     }
 }
 
@@ -101,19 +95,54 @@ void set_rigid_slip(const ContactGrid& grid, const NormalisedKinematics& kin, Ma
     rigid_slip_of_strips(grid, kin, s.wx.data(), s.wy.data(), first, last);
 }
 
-void march(const MarchGeometry& geo, const ContactGrid& grid, const NormalisedKinematics& kin,
-           PressureKind pressure, MarchState& s, KernelIsa isa)
-{
-    const int ny = grid.ny();
-    set_rigid_slip(grid, kin, s, 0, ny);
-    march(march_view(geo, geo.bound(pressure, kin.bound_blend).data(), kin.cy, s, 0, ny), isa);
-}
-
 void march(const ContactGrid& grid, const NormalisedKinematics& kin, PressureKind pressure,
            MarchState& state, KernelIsa isa)
 {
-    const MarchGeometry geometry(grid);
-    march(geometry, grid, kin, pressure, state, isa);
+    const MarchGeometry geo(grid);
+    const int ny = grid.ny();
+    set_rigid_slip(grid, kin, state, 0, ny);
+    march(march_view(geo, geo.shape(pressure).data(), kin.cy, state, 0, ny), isa);
+}
+
+namespace {
+
+// N = 0: the forces alone, with no per-strip test of the tangent count.
+template <int N>
+void forces_and_tangents(const ContactGrid& grid, double a, double b, const MarchState& march,
+                         const StripTangents* tangents, double Phi[3], double (*dPhi)[3])
+{
+    for (int i = 0; i < 3; ++i) {
+        Phi[i] = 0.0;
+        for (int k = 0; k < N; ++k) dPhi[i][k] = 0.0;
+    }
+    for (int j = 0; j < grid.ny(); ++j) {
+        const double area = a * b * grid.x_length()[j] * grid.y_width()[j];
+        const double y = b * grid.y_centre()[j];
+        Phi[0] += area * march.sum_px[j];
+        Phi[1] += area * march.sum_py[j];
+        Phi[2] += area * (a * march.sum_x_py[j] - y * march.sum_px[j]);
+        for (int k = 0; k < N; ++k) {
+            const long e = static_cast<long>(k) * tangents->stride + j;
+            dPhi[0][k] += area * tangents->sum_px[e];
+            dPhi[1][k] += area * tangents->sum_py[e];
+            dPhi[2][k] += area * (a * tangents->sum_x_py[e] - y * tangents->sum_px[e]);
+        }
+    }
+}
+
+} // namespace
+
+void scaled_forces(const ContactGrid& grid, double a, double b, const MarchState& march,
+                   double Phi[3])
+{
+    forces_and_tangents<0>(grid, a, b, march, nullptr, Phi, nullptr);
+}
+
+void scaled_forces(const ContactGrid& grid, double a, double b, const MarchState& march,
+                   const StripTangents& tangents, double Phi[3],
+                   double dPhi[3][kStripTangents])
+{
+    forces_and_tangents<kStripTangents>(grid, a, b, march, &tangents, Phi, dPhi);
 }
 
 } // namespace creepwork

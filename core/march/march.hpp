@@ -20,26 +20,43 @@
 
 namespace creepwork {
 
-// The per-strip rigid slip of kin (state.wx, state.wy) for strips [first, last).
-void set_rigid_slip(const ContactGrid& grid, const NormalisedKinematics& kin, MarchState& state,
-                    int first, int last);
-// The same into wx[j], wy[j] (callers that differentiate it).
+struct MarchView; // march_step.hpp
+
+// The per-strip rigid slip over flexibility of kin, wx[j] = ux - cx Y_j and
+// the part of the lateral one constant along the strip, wy[j] (uy, plus
+// cy times the spin offset), for strips [first, last).
 void rigid_slip_of_strips(const ContactGrid& grid, const NormalisedKinematics& kin, double* wx,
                           double* wy, int first, int last);
+// The same into state.wx, state.wy.
+void set_rigid_slip(const ContactGrid& grid, const NormalisedKinematics& kin, MarchState& state,
+                    int first, int last);
 
-// Advance every strip from the leading edge (m = 0) to the trailing edge.
-// Writes state (sized by resize(nx * ny, ny)); allocates nothing.
-void march(const MarchGeometry& geometry, const ContactGrid& grid,
-           const NormalisedKinematics& kin, PressureKind pressure, MarchState& state,
-           KernelIsa isa);
-// Only the view's strips [first, last) (march_step.hpp; first a multiple of
-// kStripBlock), the rigid slip of which is set: callers that follow each
-// block with more work while its data are in cache.
+// Advance the view's strips [first, last) from the leading edge (m = 0) to
+// the trailing edge, their rigid slip set: writes q', f and the strip sums
+// (MarchState); allocates nothing. Callers that follow each block of
+// kStripBlock strips with more work do so while its data are in cache.
 constexpr int kStripBlock = 32;
-struct MarchView;
 void march(const MarchView& view, KernelIsa isa);
-// The same for a one-off grid (allocates its MarchGeometry).
+// Every strip of a one-off grid with FASTSIM's bound for pressure (allocates
+// its MarchGeometry; Kalker's normalised interface).
 void march(const ContactGrid& grid, const NormalisedKinematics& kin, PressureKind pressure,
            MarchState& state, KernelIsa isa = best_kernel_isa());
+
+// Rolling-frame forces over the traction scale T, Phi = (fx, fy, mz) / T,
+// from the march's strip sums, summed strip by strip in order.
+void scaled_forces(const ContactGrid& grid, double a, double b, const MarchState& march,
+                   double Phi[3]);
+
+// Derivatives of the march's strip sums along kStripTangents tangents (or
+// directions), [k * stride + j] for tangent k and strip j.
+constexpr int kStripTangents = 3;
+struct StripTangents {
+    const double *sum_px = nullptr, *sum_py = nullptr, *sum_x_py = nullptr;
+    int stride = 0;
+};
+// Phi as above (bitwise) and its derivatives dPhi[i][k] along each tangent.
+void scaled_forces(const ContactGrid& grid, double a, double b, const MarchState& march,
+                   const StripTangents& tangents, double Phi[3],
+                   double dPhi[3][kStripTangents]);
 
 } // namespace creepwork

@@ -1,10 +1,10 @@
-// Field export of the FASTSIM model (fastsim_model.hpp): each field is
-// computed from the march's (q', f) while it is copied into the caller's
-// layout.
+// Field export of the models built on the march (march_model.hpp): each
+// field is computed from the march's (q', f) while it is copied into the
+// caller's layout.
 #include <cstring>
 #include <type_traits>
 
-#include "fastsim/fastsim_model.hpp"
+#include "march/march_model.hpp"
 #include "march/simd.hpp"
 
 // The vector types below never cross a non-inlined call: their ABI is moot.
@@ -223,8 +223,8 @@ struct StateKernel : KernelWidths {
     }
 };
 
-ExportArgs export_args(const MarchGeometry& geo, const ContactGrid& g, const ModelSetup& s,
-                       const MarchState& m, const WorkState& w)
+ExportArgs export_args(const MarchGeometry& geo, const double* bound, const ContactGrid& g,
+                       const ModelSetup& s, const MarchState& m, const WorkState& w)
 {
     ExportArgs A;
     A.nx = g.nx();
@@ -240,7 +240,7 @@ ExportArgs export_args(const MarchGeometry& geo, const ContactGrid& g, const Mod
     A.p0 = s.pressure_scale;
     A.x_centre = geo.x_centre.data();
     A.inside = geo.inside.data();
-    A.shape = geo.bound(s.pressure, s.kin.bound_blend).data();
+    A.shape = bound;
     A.y_centre = g.y_centre().data();
     A.x_length = g.x_length().data();
     A.y_width = g.y_width().data();
@@ -257,31 +257,23 @@ ExportArgs export_args(const MarchGeometry& geo, const ContactGrid& g, const Mod
 } // namespace
 
 template <class Op>
-void FastsimModel::export_field(Field f, const Op& op, double* out) const
+void MarchModel::export_field(Field f, const Op& op, double* out) const
 {
-    run_kernel<ExportKernel>(isa_, export_args(geometry_, grid_, setup_, march_, work_), f, op, out);
+    const ExportArgs A = export_args(geometry_, bound_, grid_, setup_, state_, work_);
+    run_kernel<ExportKernel>(isa_, A, f, op, out);
 }
 
-void FastsimModel::copy_field(Field f, double* out) const { export_field(f, Assign{}, out); }
+void MarchModel::copy_field(Field f, double* out) const { export_field(f, Assign{}, out); }
 
-void FastsimModel::add_field(Field f, double scale, double* out) const
+void MarchModel::add_field(Field f, double scale, double* out) const
 {
     export_field(f, AddScaled{scale}, out);
 }
 
-void FastsimModel::copy_state(int* out) const
+void MarchModel::copy_state(int* out) const
 {
-    run_kernel<StateKernel>(isa_, export_args(geometry_, grid_, setup_, march_, work_), out);
-}
-
-void FastsimModel::copy_profile(double W, double* y, double* work, double* parabola) const
-{
-    for (int j = 0; j < grid_.ny(); ++j) {
-        const double yj = setup_.b * grid_.y_centre()[j];
-        if (y) y[j] = yj;
-        if (work) work[j] = work_.profile[j];
-        if (parabola) parabola[j] = equal_area_parabola(W, setup_.b, yj);
-    }
+    const ExportArgs A = export_args(geometry_, bound_, grid_, setup_, state_, work_);
+    run_kernel<StateKernel>(isa_, A, out);
 }
 
 } // namespace creepwork

@@ -3,8 +3,6 @@
 #include <algorithm>
 #include <cmath>
 
-#include "calibrated/bound_shape.hpp"
-
 namespace creepwork {
 
 MarchGeometry::MarchGeometry(const ContactGrid& grid)
@@ -29,37 +27,7 @@ MarchGeometry::MarchGeometry(const ContactGrid& grid)
             shape_elliptic[p] = grid.pressure_shape(PressureKind::elliptic)[k];
         }
     max_parabolic = shape_parabolic.size() > 0 ? shape_parabolic.maxCoeff() : 0.0;
-}
-
-void MarchGeometry::reserve_blend()
-{
-    if (shape_blended.size() != shape_parabolic.size()) {
-        shape_blended = shape_parabolic; // blend 0
-        blend = 0.0;
-        blend_max = max_parabolic;
-    }
-}
-
-void MarchGeometry::set_blend(double bound_blend)
-{
-    const Eigen::Index n = shape_parabolic.size();
-    if (shape_blended.size() == n && bound_blend == blend) return;
-    shape_blended.resize(n);
-    // blended_bound_shape with its branch and coefficients taken out of the
-    // loop, so that it vectorises (a vehicle loop remakes it every solve).
-    const double* P = shape_parabolic.data();
-    const double* E = shape_elliptic.data(); // sqrt(P)
-    double* out = shape_blended.data();
-    if (bound_blend >= 0.0) {
-        const double cp = 1.0 - bound_blend, ce = bound_blend * 0.75;
-        for (Eigen::Index k = 0; k < n; ++k) out[k] = cp * P[k] + ce * E[k];
-    } else {
-        const double cp = 1.0 + bound_blend, cq = -bound_blend * 1.5;
-        for (Eigen::Index k = 0; k < n; ++k) out[k] = cp * P[k] + cq * P[k] * P[k];
-    }
-    // Every blend increases with P, so the largest is at the largest P.
-    blend_max = blended_bound_shape(max_parabolic, std::sqrt(max_parabolic), bound_blend);
-    blend = bound_blend;
+    max_elliptic = shape_elliptic.size() > 0 ? shape_elliptic.maxCoeff() : 0.0;
 }
 
 void MarchGeometry::march_from_leading_edge(const ContactGrid& grid)

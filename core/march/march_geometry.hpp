@@ -20,29 +20,22 @@ constexpr int padded_strips(int ny) { return (ny + kStripPad - 1) / kStripPad * 
 // The grid's per-element arrays in the kernels' layout. Made once per solver.
 struct MarchGeometry {
     int nx = 0, ny = 0, stride = 0;
-    Eigen::ArrayXd x_centre, x_slip, step, inside, shape_parabolic, shape_elliptic;
-    // The calibrated model's blended bound (bound_shape.hpp) for the blend
-    // set_blend() last made, in units of the parabolic p0; empty until then.
-    Eigen::ArrayXd shape_blended;
-    double blend = 0.0, blend_max = 0.0; // blend_max: largest shape_blended
-    double max_parabolic = 0.0;          // largest shape_parabolic
+    Eigen::ArrayXd x_centre, x_slip, step, inside;
+    // The pressure laws' shapes (pz / p0, 0 outside the contact), the traction
+    // bounds of FASTSIM, and their largest values.
+    Eigen::ArrayXd shape_parabolic, shape_elliptic;
+    double max_parabolic = 0.0, max_elliptic = 0.0;
 
     MarchGeometry() = default;
     explicit MarchGeometry(const ContactGrid& grid);
-    // The bound of the march: the pressure law's shape, or with a blend != 0
-    // (NormalisedKinematics::bound_blend; parabolic units) shape_blended,
-    // which set_blend(blend) must have made.
-    const Eigen::ArrayXd& bound(PressureKind kind, double bound_blend = 0.0) const
+    const Eigen::ArrayXd& shape(PressureKind kind) const
     {
-        if (bound_blend != 0.0) return shape_blended;
         return kind == PressureKind::parabolic ? shape_parabolic : shape_elliptic;
     }
-    // Allocates shape_blended (models that blend call it when they are made,
-    // so that their solves allocate nothing).
-    void reserve_blend();
-    // Makes shape_blended for this blend (nothing to do when it is the last
-    // one); allocates only if reserve_blend() was not called.
-    void set_blend(double bound_blend);
+    double max_shape(PressureKind kind) const
+    {
+        return kind == PressureKind::parabolic ? max_parabolic : max_elliptic;
+    }
     // On the uniform grid, each strip's first step from where the strip
     // enters the ellipse (X = sqrt(1 - Y^2)), not a full element, and the
     // rigid slip at each step's midpoint, as Kalker's strip grid does: both

@@ -23,17 +23,15 @@ DiscreteLoad discrete_load(const ContactGrid& grid)
     const Eigen::ArrayXd& E = grid.pressure_shape(PressureKind::elliptic);
     const int ny = grid.ny();
     for (int j = 0; j < ny; ++j) {
-        double p = 0.0, e = 0.0, q = 0.0;
+        double p = 0.0, e = 0.0;
         for (int m = 0; m < grid.nx(); ++m) {
             const Eigen::Index k = static_cast<Eigen::Index>(m) * ny + j;
             p += P[k];
             e += E[k];
-            q += P[k] * P[k];
         }
         const double area = grid.x_length()[j] * grid.y_width()[j];
         load.parabolic += area * p;
         load.elliptic += area * e;
-        load.quartic += area * q;
     }
     return load;
 }

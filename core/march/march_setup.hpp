@@ -21,17 +21,6 @@ struct NormalisedKinematics {
     // leading edge: uy + cy (X + spin_offset dX), dX the strip's element
     // length (x/a). 0 is Kalker's FASTSIM.
     double spin_offset = 0;
-    // The calibrated model's lateral modulation of the rigid slip over
-    // flexibility: both components of strip Y multiplied by
-    // (1 + edge_gain Y^2) / (1 + edge_gain / 5), which leaves the linear
-    // forces unchanged and moves slip towards the lateral edges. 0 (plain
-    // FASTSIM): not applied, so its results are unchanged to the bit.
-    double edge_gain = 0;
-    // The calibrated model's traction bound (bound_shape.hpp): 0 is the
-    // pressure law's own shape; otherwise the parabolic law blended towards
-    // the elliptic (> 0) or quartic (< 0) one, which is also the pressure the
-    // fields report. Only with PressureKind::parabolic (p0 = 2N/(pi a b)).
-    double bound_blend = 0;
 };
 
 struct ModelSetup {
@@ -56,12 +45,12 @@ struct ModelSetup {
 // The load a grid carries per unit pressure scale: over the contact elements
 // of the grid, the sum of each pressure shape times the element area in
 // units of a b. Over the unit disc the shapes integrate to pi/2 (parabolic
-// P = 1 - X^2 - Y^2), 2 pi/3 (elliptic, sqrt(P)) and pi/3 (P^2); a grid's
+// P = 1 - X^2 - Y^2) and 2 pi/3 (elliptic, sqrt(P)); a grid's
 // midpoint sums differ from these by up to a few tenths of a per cent, so the
 // analytic scale p0 = N/(a b int) gives sum pz dA != N. With exact_load the
 // scale is N/(a b sum) instead.
 struct DiscreteLoad {
-    double parabolic = 0, elliptic = 0, quartic = 0;
+    double parabolic = 0, elliptic = 0;
 };
 DiscreteLoad discrete_load(const ContactGrid& grid);
 // The sum of DiscreteLoad for the pressure law (unblended).

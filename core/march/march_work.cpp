@@ -277,14 +277,13 @@ void lateral_profile(const ContactGrid& grid, const ModelSetup& s, double W, Wor
 
 } // namespace
 
-void march_with_work(const MarchGeometry& geo, const ContactGrid& grid, const ModelSetup& s,
-                     MarchState& st, WorkState& w, KernelIsa isa)
+void march_with_work(const MarchGeometry& geo, const double* bound, const ContactGrid& grid,
+                     const ModelSetup& s, MarchState& st, WorkState& w, KernelIsa isa)
 {
     const int ny = grid.ny();
     const double T = s.traction_scale;
     // Spin in the model's rigid slip is scaled by L1/L3, L2/L3 (Kalker 1982).
     const double spin_x_model = s.phi * s.L1 / s.L3, spin_y_model = s.phi * s.L2 / s.L3;
-    set_rigid_slip(grid, s.kin, st, 0, ny);
     for (int j = 0; j < ny; ++j) {
         const double y = s.b * grid.y_centre()[j];
         w.width[j] = s.b * grid.y_width()[j];
@@ -322,7 +321,6 @@ void march_with_work(const MarchGeometry& geo, const ContactGrid& grid, const Mo
     A.loss = w.strip_loss.data();
     A.strip_dissipation = w.strip_dissipation.data();
     A.strip_paper = w.strip_paper.data();
-    const double* bound = geo.bound(s.pressure, s.kin.bound_blend).data();
     // Block by block, so that the work pass finds the march's output in cache.
     for (int first = 0; first < ny; first += kStripBlock) {
         A.march = march_view(geo, bound, s.kin.cy, st, first, std::min(ny, first + kStripBlock));

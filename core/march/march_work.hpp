@@ -36,6 +36,7 @@
 
 #include "contact/contact_grid.hpp"
 #include "march/march.hpp"
+#include "march/march_geometry.hpp"
 #include "march/march_setup.hpp"
 
 namespace creepwork {
@@ -63,9 +64,10 @@ struct WorkTotals {
     double profile_max_diff = 0, profile_rms_diff = 0;
 };
 
-// The march (as march() in fastsim.hpp, same results) and the work of every
-// element. Allocates nothing.
-void march_with_work(const MarchGeometry& geometry, const ContactGrid& grid,
+// The march of every strip (as march(), the same results) with the traction
+// bound (per element, the kernels' layout) and the rigid slip already in
+// march, and the work of every element. Allocates nothing.
+void march_with_work(const MarchGeometry& geometry, const double* bound, const ContactGrid& grid,
                      const ModelSetup& setup, MarchState& march, WorkState& work, KernelIsa isa);
 
 // The paper's total and the energy-consistent map, given W_macro of the

@@ -31,7 +31,7 @@
 //       adds a row "trial" with these parameters in every case;
 //   CW_TRY_OFFSET=s  solves the calibrated row with spin_offset s;
 //   CW_TRY_BLEND=b   the calibrated row with the table's parameters but the
-//                    traction bound blend b (calibrated/bound_shape.hpp);
+//                    traction bound blend b in [0, 1] (calibrated/blended_bound.hpp);
 //   CW_FIT_PENALTY=w the fit's weight of force errors beyond the limit;
 //   CW_FIT_FORCE_LIMIT=f where that penalty starts, in % of mu N;
 //   CW_FIT_MAPW=w    the fit's weight of the map and profile terms
@@ -402,7 +402,7 @@ int main(int argc, char** argv)
         trial.pressure = p ? cw::PressureKind::elliptic : cw::PressureKind::parabolic;
     }
     // CW_TRY_BLEND=b: the calibrated row with the table's parameters but the
-    // traction bound blend b (calibrated/bound_shape.hpp).
+    // traction bound blend b (calibrated/blended_bound.hpp; clamped to [0, 1]).
     const char* blend_env = std::getenv("CW_TRY_BLEND");
     std::vector<Model> models = {
         {"FASTSIM parabolic", simplified(cw::ModelKind::fastsim, cw::PressureKind::parabolic)},

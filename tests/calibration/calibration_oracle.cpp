@@ -10,7 +10,7 @@
 #include "calibration_fit.hpp"
 #include "calibration_metrics.hpp"
 #include "calibration_reference.hpp"
-#include "calibrated/bound_shape.hpp"
+#include "calibrated/blended_bound.hpp"
 
 namespace cwcal {
 
@@ -31,7 +31,7 @@ const Knob kKnobs[] = {
     {&cw::CalibrationParams::equalise, 0.0, 1.0},
     {&cw::CalibrationParams::lateral_moment, 0.0, 1.5},
     {&cw::CalibrationParams::edge_gain, -0.9, 5.0},
-    {&cw::CalibrationParams::bound_blend, -cw::kMaxBoundBlend, cw::kMaxBoundBlend},
+    {&cw::CalibrationParams::bound_blend, 0.0, cw::kMaxBoundBlend},
 };
 
 using Objective = std::function<double(const cw::CalibrationParams&)>;

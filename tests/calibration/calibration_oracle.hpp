@@ -18,7 +18,7 @@ namespace cwcal {
 
 // Coordinate search over the knobs of CalibrationParams (k_long, k_lat,
 // k_spin_x, k_spin_y in [0.2, 5], equalise [0, 1], lateral_moment [0, 1.5],
-// edge_gain [-0.9, 5], bound_blend [-1, 1]) from start: each knob up or down
+// edge_gain [-0.9, 5], bound_blend [0, 1]) from start: each knob up or down
 // by the step, clamped to its range, while that lowers f; the step halved
 // from 0.2 down to 0.0125. Returns the lowest f found; its knobs go to
 // *best when given.

@@ -1,0 +1,46 @@
+// The interface every model of the contact implements: how the tangential
+// tractions are found differs (fastsim/, calibrated/, exact/), what a solve
+// returns does not. The solver (solver.hpp) makes each model on first use
+// from one registration (make_model in solver.cpp) and holds the one that
+// solved last, whose fields it exports.
+#pragma once
+
+#include "contact/fields.hpp"
+#include "contact/jacobian.hpp"
+#include "contact/params.hpp"
+#include "march/kernel_isa.hpp"
+
+namespace creepwork {
+
+class ContactModel {
+public:
+    virtual ~ContactModel() = default;
+
+    // Throws Error naming a bad input (or not_converged, numeric_failure).
+    // A model is made once per grid and solves many times without
+    // allocating.
+    virtual SolveTotals solve(const ContactInput& input, SolveMode mode) = 0;
+    // The same solve (totals bitwise those of solve()) and rows Fx, Fy, Mz
+    // of the Jacobian by xi_x, xi_y, phi, N (contact/jacobian.hpp; the
+    // W_macro row is the solver's). jacobian is written only on success.
+    virtual SolveTotals solve_jacobian(const ContactInput& input, SolveMode mode,
+                                       Jacobian& jacobian) = 0;
+
+    // Of the last successful solve (the caller checks that there is one,
+    // and that it was full for fields that need the work), in the caller's
+    // layout [i + j*nx] (contact/fields.hpp).
+    virtual void copy_field(Field f, double* out) const = 0;
+    virtual void add_field(Field f, double scale, double* out) const = 0; // out += scale * f
+    virtual void copy_state(int* out) const = 0;
+    // Per strip j < ny: centre y [m], energy-consistent work per unit width
+    // [J/m per m], and the equal-area parabola of total W at y; null
+    // pointers are skipped.
+    virtual void copy_profile(double W, double* y, double* work, double* parabola) const = 0;
+
+    // The ISA of the model's SIMD kernels (march/kernel_isa.hpp), supported
+    // by this CPU; every ISA gives bitwise the same results. Models without
+    // such kernels ignore it.
+    virtual void set_kernel_isa(KernelIsa) {}
+};
+
+} // namespace creepwork
