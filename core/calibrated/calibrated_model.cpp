@@ -124,7 +124,7 @@ void calibrated_rigid_slip(const ContactGrid& grid, const CalibratedSetup& setup
 CalibratedModel::CalibratedModel(const GridSpec& grid) : MarchModel(grid), bound_(geometry())
 {
     // Its solves, with or without the Jacobian, allocate nothing.
-    geometry().march_from_leading_edge(this->grid());
+    geometry().march_from_leading_edges(this->grid());
     directions_.resize(this->grid().ny());
     scratch_wx_.setZero(directions_.stride);
     scratch_wy_.setZero(directions_.stride);

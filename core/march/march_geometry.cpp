@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "contact/error.hpp"
+
 namespace creepwork {
 
 MarchGeometry::MarchGeometry(const ContactGrid& grid)
@@ -15,6 +17,8 @@ MarchGeometry::MarchGeometry(const ContactGrid& grid)
     inside.setZero(n);
     shape_parabolic.setZero(n);
     shape_elliptic.setZero(n);
+    strip_contacts = grid.contact_count();
+    n_contact = grid.n_contact();
     for (int m = 0; m < nx; ++m)
         for (int j = 0; j < ny; ++j) {
             const Eigen::Index k = static_cast<Eigen::Index>(m) * ny + j;
@@ -30,15 +34,62 @@ MarchGeometry::MarchGeometry(const ContactGrid& grid)
     max_elliptic = shape_elliptic.size() > 0 ? shape_elliptic.maxCoeff() : 0.0;
 }
 
-void MarchGeometry::march_from_leading_edge(const ContactGrid& grid)
+void MarchGeometry::set_contact(const ContactGrid& grid, const double* in, const double* shape)
 {
-    if (grid.spec().kind != GridKind::uniform) return;
+    if (grid.spec().kind != GridKind::uniform)
+        throw Error(ErrorKind::invalid_input,
+                    "a contact given element by element needs the uniform grid (the strip "
+                    "grid's strips are cut to the ellipse)");
+    const Eigen::Index n = static_cast<Eigen::Index>(nx) * stride;
+    if (shape_given.size() != n) shape_given.setZero(n);
+    strip_contacts.setZero();
+    n_contact = 0;
+    max_given = 0.0;
+    for (int m = 0; m < nx; ++m)
+        for (int j = 0; j < ny; ++j) {
+            const Eigen::Index k = static_cast<Eigen::Index>(m) * ny + j;
+            const Eigen::Index p = static_cast<Eigen::Index>(m) * stride + j;
+            const bool contact = in[k] != 0.0;
+            inside[p] = contact ? 1.0 : 0.0;
+            shape_given[p] = contact ? shape[k] : 0.0;
+            max_given = shape_given[p] > max_given ? shape_given[p] : max_given;
+            strip_contacts[j] += contact ? 1 : 0;
+            n_contact += contact ? 1 : 0;
+        }
+    given_ = true;
+    set_steps(grid);
+}
+
+void MarchGeometry::march_from_leading_edges(const ContactGrid& grid)
+{
+    leading_edges_ = true;
+    set_steps(grid);
+}
+
+void MarchGeometry::set_steps(const ContactGrid& grid)
+{
+    for (int m = 0; m < nx; ++m)
+        for (int j = 0; j < ny; ++j) {
+            const Eigen::Index k = static_cast<Eigen::Index>(m) * ny + j;
+            const Eigen::Index p = static_cast<Eigen::Index>(m) * stride + j;
+            x_slip[p] = grid.x_slip()[k];
+            step[p] = grid.step()[k];
+        }
+    if (!leading_edges_ || grid.spec().kind != GridKind::uniform) return;
     for (int j = 0; j < ny; ++j) {
         const double Y = grid.y_centre()[j];
-        double previous = std::sqrt(std::max(0.0, 1.0 - Y * Y)); // where the strip enters
+        const double chord_end = std::sqrt(std::max(0.0, 1.0 - Y * Y)); // the ellipse's
+        bool in_segment = false;
+        double previous = 0.0; // where the step ends that reaches the element
         for (int m = 0; m < nx; ++m) {
             const Eigen::Index p = static_cast<Eigen::Index>(m) * stride + j;
-            if (inside[p] == 0.0) continue; // before the ellipse, or after it
+            if (inside[p] == 0.0) { // between segments, or outside them
+                in_segment = false;
+                continue;
+            }
+            if (!in_segment) // the segment's leading edge
+                previous = given_ ? x_centre[p] + 0.5 * grid.x_length()[j] : chord_end;
+            in_segment = true;
             step[p] = previous - x_centre[p];
             x_slip[p] = 0.5 * (previous + x_centre[p]);
             previous = x_centre[p];

@@ -17,14 +17,32 @@ namespace creepwork {
 constexpr int kStripPad = 8;
 constexpr int padded_strips(int ny) { return (ny + kStripPad - 1) / kStripPad * kStripPad; }
 
-// The grid's per-element arrays in the kernels' layout. Made once per solver.
+// The grid's per-element arrays in the kernels' layout, and the contact the
+// march runs on: the grid's ellipse (ContactGrid::in_contact and its
+// pressure laws' shapes) unless set_contact() gives another, element by
+// element. Made once per solver.
+//
+// A strip may hold several contact segments (runs of contact elements
+// separated by exterior ones). The march needs nothing more for them: an
+// exterior element has q' = bound = 0, so each segment starts again from
+// zero displacement at its own leading edge (march_step.hpp). Only the first
+// step of a segment depends on where it starts (march_from_leading_edges).
 struct MarchGeometry {
     int nx = 0, ny = 0, stride = 0;
-    Eigen::ArrayXd x_centre, x_slip, step, inside;
-    // The pressure laws' shapes (pz / p0, 0 outside the contact), the traction
-    // bounds of FASTSIM, and their largest values.
+    Eigen::ArrayXd x_centre, x_slip, step;
+    // The contact: 1 inside, 0 exterior; the number of contact elements per
+    // strip (j < ny) and in all.
+    Eigen::ArrayXd inside;
+    Eigen::ArrayXi strip_contacts;
+    int n_contact = 0;
+    // The ellipse's pressure laws' shapes (pz / p0, 0 outside it), the
+    // traction bounds of FASTSIM, and their largest values.
     Eigen::ArrayXd shape_parabolic, shape_elliptic;
     double max_parabolic = 0.0, max_elliptic = 0.0;
+    // The traction bound's shape set_contact() gave (0 outside the contact)
+    // and its largest value; empty until then.
+    Eigen::ArrayXd shape_given;
+    double max_given = 0.0;
 
     MarchGeometry() = default;
     explicit MarchGeometry(const ContactGrid& grid);
@@ -36,13 +54,28 @@ struct MarchGeometry {
     {
         return kind == PressureKind::parabolic ? max_parabolic : max_elliptic;
     }
-    // On the uniform grid, each strip's first step from where the strip
-    // enters the ellipse (X = sqrt(1 - Y^2)), not a full element, and the
-    // rigid slip at each step's midpoint, as Kalker's strip grid does: both
-    // of CONTACT's choices (a full first step, the slip at the element
-    // centre) are first-order errors. Used by the calibrated model; plain
-    // FASTSIM keeps CONTACT's. Nothing to do on the strip grid.
-    void march_from_leading_edge(const ContactGrid& grid);
+
+    // A contact given by the caller, on the uniform grid: inside (1 or 0) and
+    // the bound's shape (>= 0, 0 where inside is 0) per element in the grid's
+    // march order [m * ny + j] (contact_grid.hpp), for models whose contact
+    // is not an ellipse (a gap function's). Its segments are marched by the
+    // step rule in force. Allocates shape_given on its first call only.
+    // Throws Error(invalid_input) on the strip grid (its strips are cut to
+    // the ellipse's chords).
+    void set_contact(const ContactGrid& grid, const double* inside, const double* shape);
+    // The step rule: on the uniform grid each contact segment's first step
+    // from where the segment starts -- the ellipse's chord end
+    // X = sqrt(1 - Y^2), or for a contact given by set_contact() the front
+    // edge of its first element -- not a full element, and the rigid slip at
+    // each step's midpoint, as Kalker's strip grid does: both of CONTACT's
+    // choices (a full first step, the slip at the element centre) are
+    // first-order errors. Used by the calibrated model; plain FASTSIM keeps
+    // CONTACT's. Nothing to do on the strip grid.
+    void march_from_leading_edges(const ContactGrid& grid);
+
+private:
+    void set_steps(const ContactGrid& grid); // the grid's steps, then the rule
+    bool leading_edges_ = false, given_ = false;
 };
 
 // Per-element state of one solve, [m * stride + j] (see MarchGeometry): the

@@ -56,7 +56,7 @@ SolveTotals MarchModel::totals(const ContactInput& input, SolveMode mode, ModelK
     t.Mz = d * mz;
     // Paper eq. 34 per unit rolling distance, positive when dissipating.
     t.W_macro = -(setup_.xi * fx + setup_.eta * fy + setup_.phi * mz);
-    t.n_contact = grid_.n_contact();
+    t.n_contact = geometry_.n_contact;
     t.n_slip = n_slip;
     t.n_adhesion = t.n_contact - n_slip;
     t.adhesion_fraction = quotient_or_zero(t.n_adhesion, t.n_contact);

@@ -217,16 +217,18 @@ bool fill_pools(Eigen::Index ny, WorkState& w)
 
 // No element slips: the energy is released in slip zones thinner than one
 // element at the trailing edge, so it goes to each strip's last contact
-// element (which the state map calls adhesion; flagged kWorkUnresolved).
+// element (which the state map calls adhesion; flagged kWorkUnresolved; a
+// strip of several segments puts all of it on its last segment's).
 // Returns the total put there.
-double put_losses_on_trailing_elements(const ContactGrid& grid, int stride, WorkState& w)
+double put_losses_on_trailing_elements(const MarchGeometry& geo, WorkState& w)
 {
-    const int nx = grid.nx(), ny = grid.ny();
+    const int nx = geo.nx, ny = geo.ny;
     double total = 0.0;
     for (int j = 0; j < ny; ++j) {
         for (int m = nx - 1; m >= 0; --m) {
-            if (grid.in_contact()[static_cast<Eigen::Index>(m) * ny + j] != 0.0) {
-                w.consistent[static_cast<Eigen::Index>(m) * stride + j] = w.strip_loss[j];
+            const Eigen::Index p = static_cast<Eigen::Index>(m) * geo.stride + j;
+            if (geo.inside[p] != 0.0) {
+                w.consistent[p] = w.strip_loss[j];
                 total += w.strip_loss[j];
                 break;
             }
@@ -239,8 +241,8 @@ double put_losses_on_trailing_elements(const ContactGrid& grid, int stride, Work
 // library calls (fmax is not inlined); the ternaries are fmax for the
 // non-NaN values met here, the parabola is equal_area_parabola() with its
 // per-call constant 0.75 W / b hoisted.
-void lateral_profile(const ContactGrid& grid, const ModelSetup& s, double W, WorkState& w,
-                     WorkTotals& t)
+void lateral_profile(const MarchGeometry& geo, const ContactGrid& grid, const ModelSetup& s,
+                     double W, WorkState& w, WorkTotals& t)
 {
     const int ny = grid.ny();
     const double b = s.b;
@@ -260,7 +262,7 @@ void lateral_profile(const ContactGrid& grid, const ModelSetup& s, double W, Wor
     double max_diff = 0.0, sum_sq = 0.0;
     int count = 0;
     for (int j = 0; j < ny; ++j) {
-        if (grid.contact_count()[j] == 0) continue;
+        if (geo.strip_contacts[j] == 0) continue;
         const double yb = b * grid.y_centre()[j] / b;
         const double r = 1.0 - yb * yb;
         const double d = (profile[j] - (r > 0.0 ? height * r : 0.0)) / peak;
@@ -350,7 +352,7 @@ WorkTotals distribute_work(const MarchGeometry& geo, const ContactGrid& grid,
             total += w.strip_pool[j];
         }
     } else {
-        total = put_losses_on_trailing_elements(grid, geo.stride, w);
+        total = put_losses_on_trailing_elements(geo, w);
         w.ratio.setOnes();
         t.flags |= kWorkUnresolved;
     }
@@ -380,7 +382,7 @@ WorkTotals distribute_work(const MarchGeometry& geo, const ContactGrid& grid,
     A.strip_work = w.strip_work.data();
     run_kernel<ScaleKernel>(isa, A);
     for (int j = 0; j < ny; ++j) t.W_consistent += w.strip_work[j];
-    lateral_profile(grid, setup, t.W_consistent, w, t);
+    lateral_profile(geo, grid, setup, t.W_consistent, w, t);
     return t;
 }
 
