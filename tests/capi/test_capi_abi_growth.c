@@ -4,7 +4,7 @@
  * on input and are never written on output; batch arrays are strided by
  * element 0's struct_size. The "old" structs below are the current ones cut
  * before a field, exactly what an old header would have declared. */
-#include "capi_test.h"
+#include "capi_fixtures.h"
 
 #include <stdlib.h>
 

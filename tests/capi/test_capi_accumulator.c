@@ -1,6 +1,6 @@
 /* Work accumulator (paper eqs. 35 and 37): running totals and per-element
  * work over a simulation loop, and its error paths. */
-#include "capi_test.h"
+#include "capi_fixtures.h"
 
 #include <stdlib.h>
 

@@ -1,7 +1,7 @@
 /* Batch solves: many independent contacts in one call give what one-by-one
  * solves give, and the batch's error paths. (Thread counts 1..8: see
  * test_capi_threads.) */
-#include "capi_test.h"
+#include "capi_fixtures.h"
 
 #include <stdlib.h>
 
@@ -17,24 +17,12 @@ static void batch_case(int k, cw_params* p)
     p->phi -= 0.01 * k;
 }
 
-static void make_grid(cw_grid* g, int kind)
-{
-    cw_grid_init(g);
-    g->kind = kind;
-    g->nx = 14;
-    g->ny = 9;
-    g->box_scale = 1.1;
-}
+static cw_grid grid_of(int kind) { return cw_test_grid(kind, 14, 9, 1.1); }
 
 static cw_batch* make_batch(int kind, int threads)
 {
-    cw_grid g;
-    make_grid(&g, kind);
-    cw_batch* b = NULL;
-    char message[128];
-    assert_int_equal(cw_batch_create(&g, threads, &b, message, sizeof message), CW_OK);
-    assert_string_equal(message, "");
-    assert_non_null(b);
+    cw_batch* b = cw_test_batch(kind, 14, 9, 1.1, threads);
+    assert_string_equal(cw_batch_last_error(b), "");
     return b;
 }
 
@@ -68,8 +56,7 @@ static void batch_equals_one_by_one(void** state)
     (void)state;
     for (int kind = CW_GRID_KALKER_STRIPS; kind <= CW_GRID_UNIFORM; ++kind)
         for (int mode = CW_SOLVE_FORCES; mode <= CW_SOLVE_FULL; ++mode) {
-            cw_grid g;
-            make_grid(&g, kind);
+            const cw_grid g = grid_of(kind);
             cw_batch* b = make_batch(kind, 0);
             cw_params p[COUNT];
             cw_result r[COUNT], expected;
@@ -117,8 +104,7 @@ static void empty_batch(void** state)
 static void create_errors(void** state)
 {
     (void)state;
-    cw_grid g;
-    make_grid(&g, CW_GRID_UNIFORM);
+    cw_grid g = grid_of(CW_GRID_UNIFORM);
     char message[128];
     cw_batch* b = (cw_batch*)&g; /* not NULL: must be reset */
     assert_int_equal(cw_batch_create(NULL, 2, &b, message, sizeof message),
@@ -139,7 +125,7 @@ static void create_errors(void** state)
         {3, CW_ERR_GRID_OUT_OF_RANGE, "box_scale"},
     };
     for (int k = 0; k < 4; ++k) {
-        make_grid(&g, CW_GRID_UNIFORM);
+        g = grid_of(CW_GRID_UNIFORM);
         if (bad[k].field == 0) g.struct_size = 0;
         if (bad[k].field == 1) g.kind = 5;
         if (bad[k].field == 2) g.nx = CW_MAX_GRID_CELLS + 1;
@@ -150,7 +136,7 @@ static void create_errors(void** state)
         assert_names(message, bad[k].names);
     }
     /* More threads than CW_MAX_BATCH_THREADS (each would own a solver). */
-    make_grid(&g, CW_GRID_UNIFORM);
+    g = grid_of(CW_GRID_UNIFORM);
     b = (cw_batch*)&g;
     assert_int_equal(cw_batch_create(&g, CW_MAX_BATCH_THREADS + 1, &b, message, sizeof message),
                      CW_ERR_INVALID_INPUT);
@@ -216,8 +202,7 @@ static void per_contact_errors(void** state)
 {
     (void)state;
     for (int threads = 1; threads <= 3; ++threads) {
-        cw_grid g;
-        make_grid(&g, CW_GRID_UNIFORM);
+        const cw_grid g = grid_of(CW_GRID_UNIFORM);
         cw_batch* b = make_batch(CW_GRID_UNIFORM, threads);
         cw_params p[COUNT];
         cw_result r[COUNT], expected;

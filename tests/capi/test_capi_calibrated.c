@@ -4,7 +4,7 @@
  * consistent map sums to W_macro, given flexibilities are refused with a
  * message naming the input, and a batch of calibrated contacts gives
  * bitwise what one-by-one solves give, run after run. */
-#include "capi_test.h"
+#include "capi_fixtures.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -93,14 +93,7 @@ static void batch_is_deterministic(void** state)
 {
     (void)state;
     enum { COUNT = 17 };
-    cw_grid g;
-    cw_grid_init(&g);
-    g.kind = CW_GRID_UNIFORM;
-    g.nx = NX;
-    g.ny = NY;
-    g.box_scale = 1.05;
-    cw_batch* b = NULL;
-    assert_int_equal(cw_batch_create(&g, 0, &b, NULL, 0), CW_OK);
+    cw_batch* b = cw_test_batch(CW_GRID_UNIFORM, NX, NY, 1.05, 0);
     assert_int_equal(cw_batch_prepare(b, CW_MODEL_CALIBRATED), CW_OK);
     cw_params p[COUNT];
     cw_result r[COUNT], again[COUNT];
@@ -119,8 +112,7 @@ static void batch_is_deterministic(void** state)
     assert_int_equal(cw_batch_solve(b, COUNT, p, CW_SOLVE_FULL, r, statuses), CW_OK);
     assert_int_equal(cw_batch_solve(b, COUNT, p, CW_SOLVE_FULL, again, NULL), CW_OK);
     assert_memory_equal(again, r, sizeof r);
-    cw_solver* s = NULL;
-    assert_int_equal(cw_solver_create(&g, &s, NULL, 0), CW_OK);
+    cw_solver* s = cw_test_solver(CW_GRID_UNIFORM, NX, NY, 1.05);
     for (int k = 0; k < COUNT; ++k) {
         assert_int_equal(statuses[k], CW_OK);
         cw_result one;

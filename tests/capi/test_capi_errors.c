@@ -3,7 +3,7 @@
  * offending input, write nothing, and leave the handle usable (header,
  * "Errors"). Accumulator, batch and free-function errors live in their own
  * tests. */
-#include "capi_test.h"
+#include "capi_fixtures.h"
 
 #include <stdlib.h>
 #include <sys/resource.h>
@@ -220,7 +220,7 @@ static const bad_params bad_solves[] = {
     {"pressure", spoil_pressure_unknown, CW_ERR_UNKNOWN_OPTION, "pressure"},
     {"struct_size 0", spoil_struct_size_zero, CW_ERR_STRUCT_SIZE, "params->struct_size"},
     {"struct_size -1", spoil_struct_size_garbage, CW_ERR_STRUCT_SIZE, "params->struct_size"},
-    {"overflow", spoil_overflow, CW_ERR_NUMERIC, "overflow"},
+    {"overflow", spoil_overflow, CW_ERR_NUMERIC, "overflowed"},
 };
 
 /* Each bad input, after a good solve (so there is something to lose): the

@@ -3,7 +3,7 @@
  * errors, CW_ERR_NOT_CONVERGED leaving no solution, and one CONTACT row
  * (ab1_cmb, 20 elements across, ../shared/reference/contact_exact_dev.csv;
  * CONTACT's units mm, N, N/mm^2). */
-#include "capi_test.h"
+#include "capi_fixtures.h"
 
 static cw_params cmb_row(void)
 {
@@ -47,13 +47,7 @@ static void test_prepare(void** state)
     assert_int_equal(cw_solver_prepare(s, CW_MODEL_EXACT), CW_OK); /* idempotent */
     cw_solver_destroy(s);
 
-    cw_grid g;
-    cw_grid_init(&g);
-    g.kind = CW_GRID_UNIFORM;
-    g.nx = g.ny = 12;
-    g.box_scale = 1.2;
-    cw_batch* b = NULL;
-    assert_int_equal(cw_batch_create(&g, 2, &b, NULL, 0), CW_OK);
+    cw_batch* b = cw_test_batch(CW_GRID_UNIFORM, 12, 12, 1.2, 2);
     assert_int_equal(cw_batch_prepare(b, CW_MODEL_EXACT), CW_OK);
     assert_int_equal(cw_batch_prepare(b, -1), CW_ERR_UNKNOWN_OPTION);
     cw_batch_destroy(b);

@@ -7,7 +7,7 @@
  * p0, so a solve with exact_load equals one at the load N' = N * N /
  * sum(pz area) of the default scale); central differences for the
  * Jacobians; and the default, whose discrete load differs from N. */
-#include "capi_test.h"
+#include "capi_fixtures.h"
 
 #include <math.h>
 #include <stdlib.h>

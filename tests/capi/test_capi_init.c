@@ -1,6 +1,6 @@
 /* The _init functions: documented defaults and struct_size, whatever the
  * struct held before (hosts often pass uninitialised stack memory). */
-#include "capi_test.h"
+#include "capi_fixtures.h"
 
 /* Garbage, so a default that is silently left unset shows up. */
 #define GARBAGE 0xA5

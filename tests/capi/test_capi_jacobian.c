@@ -5,7 +5,7 @@
  * flips no element), the totals bitwise cw_solver_solve's, and every error:
  * NULL pointers, a short buffer, a bad mode, the calibrated model without
  * G and nu, no load -- each with nothing written. */
-#include "capi_test.h"
+#include "capi_fixtures.h"
 
 #include <math.h>
 

@@ -1,7 +1,7 @@
 /* Solver handle through the C ABI: lifecycle, solve, totals, every field,
  * states and the lateral profile, checked against formulas and identities
  * that hold for any correct solve. */
-#include "capi_test.h"
+#include "capi_fixtures.h"
 
 #include <stdlib.h>
 

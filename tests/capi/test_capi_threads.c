@@ -4,7 +4,7 @@
  * same moment) and must reproduce the serial results bit for bit. The batch
  * must give one-by-one results bit for bit at 1, 2, 4 and 8 threads. Worker
  * threads record; only the main thread asserts (cmocka is not thread-safe). */
-#include "capi_test.h"
+#include "capi_fixtures.h"
 
 #include <pthread.h>
 #include <stdlib.h>
@@ -32,16 +32,7 @@ static int snapshot_take(cw_solver* s, const cw_params* p, snapshot* out)
     return status;
 }
 
-static cw_grid grid_of(int kind)
-{
-    cw_grid g;
-    cw_grid_init(&g);
-    g.kind = kind;
-    g.nx = NX;
-    g.ny = NY;
-    g.box_scale = 1.07;
-    return g;
-}
+static cw_grid grid_of(int kind) { return cw_test_grid(kind, NX, NY, 1.07); }
 
 /* No cmocka here: called from the worker threads too. */
 static cw_solver* make_solver(int kind)

@@ -1,6 +1,6 @@
 /* Versions and status strings: what a host checks first after loading the
  * library. */
-#include "capi_test.h"
+#include "capi_fixtures.h"
 
 #include <stdio.h>
 

@@ -10,7 +10,7 @@
 
 #include "solver.hpp"
 
-#include "capi_test.h"
+#include "capi_fixtures.h"
 
 namespace cw = creepwork;
 

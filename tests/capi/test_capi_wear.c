@@ -1,7 +1,7 @@
 /* Wear through the C ABI: cw_wear_* on a solved contact and
  * cw_wear_profile_* on a host profile grid. What the numbers must be, and
  * every invalid input: a named status, nothing written, the handle usable. */
-#include "capi_test.h"
+#include "capi_fixtures.h"
 
 #include <stdlib.h>
 

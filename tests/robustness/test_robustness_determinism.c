@@ -6,7 +6,7 @@
  *  - across runs: the test re-runs itself as a child process (different
  *    address layout, heap disturbed) and compares a digest of everything.
  * "Everything" is the result struct and every field, state and profile. */
-#include "robustness_support.h"
+#include "capi_fixtures.h"
 
 #include <stdint.h>
 
@@ -92,8 +92,8 @@ static void test_handles_and_repeats(void** state)
 {
     (void)state;
     for (int kind = CW_GRID_KALKER_STRIPS; kind <= CW_GRID_UNIFORM; ++kind) {
-        cw_solver* a = rob_solver(kind, 23, 17, 1.2);
-        cw_solver* b = rob_solver(kind, 23, 17, 1.2);
+        cw_solver* a = cw_test_solver(kind, 23, 17, 1.2);
+        cw_solver* b = cw_test_solver(kind, 23, 17, 1.2);
         Snapshot ref[kCount];
         for (int k = 0; k < kCount; ++k) {
             const cw_params p = contact(k);
@@ -133,14 +133,8 @@ static void test_batch_thread_counts(void** state)
 {
     (void)state;
     for (int kind = CW_GRID_KALKER_STRIPS; kind <= CW_GRID_UNIFORM; ++kind) {
-        cw_grid g;
-        cw_grid_init(&g);
-        g.kind = kind;
-        g.nx = 31;
-        g.ny = 29;
-        g.box_scale = 1.05;
-        cw_solver* s = NULL;
-        assert_status(cw_solver_create(&g, &s, NULL, 0), CW_OK);
+        const cw_grid g = cw_test_grid(kind, 31, 29, 1.05);
+        cw_solver* s = cw_test_solver(kind, 31, 29, 1.05);
         cw_params p[kCount];
         cw_result single[kCount][2];
         for (int k = 0; k < kCount; ++k) {
@@ -158,7 +152,7 @@ static void test_batch_thread_counts(void** state)
                 for (int repeat = 0; repeat < 2; ++repeat) {
                     cw_result r[kCount];
                     int statuses[kCount];
-                    for (int k = 0; k < kCount; ++k) rob_sentinel_result(&r[k]);
+                    for (int k = 0; k < kCount; ++k) cw_poison_result(&r[k]);
                     assert_status(cw_batch_solve(b, kCount, p, mode, r, statuses), CW_OK);
                     for (int k = 0; k < kCount; ++k) {
                         assert_int_equal(statuses[k], CW_OK);
@@ -197,14 +191,8 @@ static cw_params exact_contact(int k)
 static void test_exact_batch_thread_counts(void** state)
 {
     (void)state;
-    cw_grid g;
-    cw_grid_init(&g);
-    g.kind = CW_GRID_UNIFORM;
-    g.nx = 14;
-    g.ny = 12;
-    g.box_scale = 1.2;
-    cw_solver* s = NULL;
-    assert_status(cw_solver_create(&g, &s, NULL, 0), CW_OK);
+    const cw_grid g = cw_test_grid(CW_GRID_UNIFORM, 14, 12, 1.2);
+    cw_solver* s = cw_test_solver(CW_GRID_UNIFORM, 14, 12, 1.2);
     cw_params p[kExact];
     cw_result single[kExact];
     for (int k = 0; k < kExact; ++k) {
@@ -220,7 +208,7 @@ static void test_exact_batch_thread_counts(void** state)
         assert_status(cw_batch_create(&g, threads[t], &b, NULL, 0), CW_OK);
         for (int repeat = 0; repeat < 2; ++repeat) {
             cw_result r[kExact];
-            for (int k = 0; k < kExact; ++k) rob_sentinel_result(&r[k]);
+            for (int k = 0; k < kExact; ++k) cw_poison_result(&r[k]);
             assert_status(cw_batch_solve(b, kExact, p, CW_SOLVE_FULL, r, NULL), CW_OK);
             for (int k = 0; k < kExact; ++k)
                 assert_memory_equal(&r[k], &single[k], sizeof r[k]);
@@ -249,7 +237,7 @@ static uint64_t digest_everything(void)
 {
     uint64_t h = 1469598103934665603ull;
     for (int kind = CW_GRID_KALKER_STRIPS; kind <= CW_GRID_UNIFORM; ++kind) {
-        cw_solver* s = rob_solver(kind, 40, 33, 1.1);
+        cw_solver* s = cw_test_solver(kind, 40, 33, 1.1);
         for (int k = 0; k < kCount; ++k) {
             const cw_params p = contact(k);
             Snapshot snap = solve_snapshot(s, &p);
@@ -262,7 +250,7 @@ static uint64_t digest_everything(void)
         cw_solver_destroy(s);
     }
     /* The exact model, warm-started in sequence on one handle. */
-    cw_solver* s = rob_solver(CW_GRID_UNIFORM, 16, 14, 1.2);
+    cw_solver* s = cw_test_solver(CW_GRID_UNIFORM, 16, 14, 1.2);
     for (int k = 0; k < kExact; ++k) {
         const cw_params p = exact_contact(k);
         Snapshot snap = solve_snapshot(s, &p);

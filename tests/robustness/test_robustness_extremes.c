@@ -1,11 +1,11 @@
 /* Extreme but valid inputs give finite, physically bounded results:
  * creepages 1e-12 .. 1 (and far beyond), spin up to 100/a, a/b at both ends
  * of its range, mu = 0, grids from 1x1 to 1000x1000, both grids, both
- * pressures, both rolling directions. For every solve (rob_check_solution):
+ * pressures, both rolling directions. For every solve (cw_check_solution):
  * no NaN or Inf in any total or field, |p| <= mu pz on every element,
  * |F| <= sum mu pz area, counts consistent with the state map, and the
  * energy-consistent map non-negative and summing to W_macro. */
-#include "robustness_support.h"
+#include "capi_fixtures.h"
 
 /* Solves in both modes, checks both, returns the FULL result; FORCES and
  * FULL agree on the forces bit for bit. */
@@ -21,9 +21,9 @@ static cw_result solve_checked(cw_solver* s, const cw_params* p)
                     p->xi_y, p->phi);
         _fail(__FILE__, __LINE__);
     }
-    rob_check_solution(s, p, CW_SOLVE_FORCES, &forces);
+    cw_check_solution(s, p, CW_SOLVE_FORCES, &forces);
     assert_status(cw_solver_solve(s, p, CW_SOLVE_FULL, &full), CW_OK);
-    rob_check_solution(s, p, CW_SOLVE_FULL, &full);
+    cw_check_solution(s, p, CW_SOLVE_FULL, &full);
     assert_true(forces.Fx == full.Fx && forces.Fy == full.Fy && forces.Mz == full.Mz);
     return full;
 }
@@ -31,9 +31,9 @@ static cw_result solve_checked(cw_solver* s, const cw_params* p)
 /* The discrete bound sum mu pz area of the last solve. */
 static double traction_bound(const cw_solver* s, double mu)
 {
-    const size_t n = rob_cells(s);
-    double* pz = rob_field(s, CW_FIELD_PZ);
-    double* area = rob_field(s, CW_FIELD_AREA);
+    const size_t n = cw_cells(s);
+    double* pz = cw_field(s, CW_FIELD_PZ);
+    double* area = cw_field(s, CW_FIELD_AREA);
     double bound = 0.0;
     for (size_t k = 0; k < n; ++k) bound += mu * pz[k] * area[k];
     free(pz);
@@ -47,7 +47,7 @@ static void test_creepage_and_spin_ranges(void** state)
     const double creepages[] = {1e-12, -1e-9, 1e-6, -1e-4, 1e-3, -1e-2, 0.1, 1.0};
     const double spins_over_a[] = {0.0, 1e-12, -1.0, 10.0, -100.0, 100.0};
     for (int kind = CW_GRID_KALKER_STRIPS; kind <= CW_GRID_UNIFORM; ++kind) {
-        cw_solver* s = rob_solver(kind, 16, 13, 1.25);
+        cw_solver* s = cw_test_solver(kind, 16, 13, 1.25);
         for (int pressure = CW_PRESSURE_PARABOLIC; pressure <= CW_PRESSURE_ELLIPTIC; ++pressure)
             for (int dir = -1; dir <= 1; dir += 2)
                 for (size_t c = 0; c < sizeof creepages / sizeof creepages[0]; ++c)
@@ -78,7 +78,7 @@ static void test_full_sliding(void** state)
     (void)state;
     const double creepages[] = {10.0, 1e6, 1e50, 1e100};
     for (int kind = CW_GRID_KALKER_STRIPS; kind <= CW_GRID_UNIFORM; ++kind) {
-        cw_solver* s = rob_solver(kind, 20, 20, 1.0);
+        cw_solver* s = cw_test_solver(kind, 20, 20, 1.0);
         for (int pressure = CW_PRESSURE_PARABOLIC; pressure <= CW_PRESSURE_ELLIPTIC; ++pressure)
             for (size_t c = 0; c < sizeof creepages / sizeof creepages[0]; ++c) {
                 cw_params p;
@@ -102,7 +102,7 @@ static void test_aspect_ratio_ends(void** state)
     (void)state;
     const double ratios[] = {1e-3, 2e-3, 0.0999, 0.1, 1.0, 10.0, 10.01, 500.0, 1e3};
     for (int kind = CW_GRID_KALKER_STRIPS; kind <= CW_GRID_UNIFORM; ++kind) {
-        cw_solver* s = rob_solver(kind, 24, 17, 1.0);
+        cw_solver* s = cw_test_solver(kind, 24, 17, 1.0);
         for (size_t k = 0; k < sizeof ratios / sizeof ratios[0]; ++k)
             for (int flex = CW_FLEX_FROM_MATERIAL; flex <= CW_FLEX_GIVEN; ++flex) {
                 cw_params p;
@@ -137,7 +137,7 @@ static void test_wide_magnitudes(void** state)
     const double loads[] = {1e-12, 1e-3, 80e3, 1e9, 1e15};
     const double moduli[] = {1e3, 1e6, 82e9, 1e15};
     const double mus[] = {0.0, 1e-6, 0.3, 10.0};
-    cw_solver* s = rob_solver(CW_GRID_KALKER_STRIPS, 8, 7, 1.0);
+    cw_solver* s = cw_test_solver(CW_GRID_KALKER_STRIPS, 8, 7, 1.0);
     for (size_t i = 0; i < 5; ++i)
         for (size_t j = 0; j < 5; ++j)
             for (size_t k = 0; k < 4; ++k)
@@ -160,7 +160,7 @@ static void test_wide_magnitudes(void** state)
 static void test_zero_friction(void** state)
 {
     (void)state;
-    cw_solver* s = rob_solver(CW_GRID_UNIFORM, 30, 30, 1.1);
+    cw_solver* s = cw_test_solver(CW_GRID_UNIFORM, 30, 30, 1.1);
     cw_params p;
     cw_params_init(&p);
     p.mu = 0.0;
@@ -180,7 +180,7 @@ static void test_grid_sizes(void** state)
         for (int i = 0; i < 5; ++i)
             for (int j = 0; j < 5; ++j)
                 for (int b = 0; b < (kind == CW_GRID_UNIFORM ? 3 : 1); ++b) {
-                    cw_solver* s = rob_solver(kind, cells[i], cells[j], scales[b]);
+                    cw_solver* s = cw_test_solver(kind, cells[i], cells[j], scales[b]);
                     for (int pressure = CW_PRESSURE_PARABOLIC; pressure <= CW_PRESSURE_ELLIPTIC;
                          ++pressure) {
                         cw_params p;
@@ -202,7 +202,7 @@ static void test_maximum_grid(void** state)
 {
     (void)state;
     for (int kind = CW_GRID_KALKER_STRIPS; kind <= CW_GRID_UNIFORM; ++kind) {
-        cw_solver* s = rob_solver(kind, CW_MAX_GRID_CELLS, CW_MAX_GRID_CELLS, 1.0);
+        cw_solver* s = cw_test_solver(kind, CW_MAX_GRID_CELLS, CW_MAX_GRID_CELLS, 1.0);
         cw_params p;
         cw_params_init(&p);
         p.pressure = kind == CW_GRID_UNIFORM ? CW_PRESSURE_ELLIPTIC : CW_PRESSURE_PARABOLIC;

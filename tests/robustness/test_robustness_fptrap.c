@@ -11,7 +11,7 @@
  * reported 45 traps in 256 solves (the default contact, xi_x = 1e-3, uniform
  * grid 14 x 16, CW_SOLVE_FULL among them): all of the sweep below runs. */
 #include "fptrap_support.h"
-#include "robustness_support.h"
+#include "capi_fixtures.h"
 
 static long g_calls;
 
@@ -118,7 +118,7 @@ static void test_contact_sweep(void** state)
             }
             assert_status(cw_solver_solve(s, &p, CW_SOLVE_FULL, &r), CW_OK);
             expect_no_trace("cw_solver_solve(FULL)");
-            assert_true(rob_result_finite(&r));
+            assert_true(cw_result_finite(&r));
             for (int f = CW_FIELD_X; f <= CW_FIELD_WORK_CONSISTENT; ++f) {
                 assert_status(cw_solver_get_field(s, f, out, n), CW_OK);
                 expect_no_trace("cw_solver_get_field");
@@ -174,7 +174,7 @@ static void test_batch(void** state)
         expect_no_trace("cw_batch_solve");
     }
     fptrap_disable();
-    for (int k = 0; k < FPTRAP_ALL_CONTACTS; ++k) assert_true(rob_result_finite(&r[k]));
+    for (int k = 0; k < FPTRAP_ALL_CONTACTS; ++k) assert_true(cw_result_finite(&r[k]));
     free(p);
     free(r);
     cw_batch_destroy(b);
@@ -249,7 +249,7 @@ static void test_hostile_and_absurd_inputs(void** state)
                     int st = CW_OK;
                     TRAPPED(st = cw_solver_solve(s, &p, mode, &r), "cw_solver_solve");
                     if (st == CW_OK) {
-                        assert_true(rob_result_finite(&r));
+                        assert_true(cw_result_finite(&r));
                         ++solved;
                     } else {
                         assert_true(st == CW_ERR_INVALID_INPUT || st == CW_ERR_NUMERIC);
@@ -264,7 +264,7 @@ static void test_hostile_and_absurd_inputs(void** state)
                         TRAPPED(st = cw_solver_solve_jacobian(s, &q, mode, &r, J, CW_JACOBIAN_LEN),
                                 "cw_solver_solve_jacobian");
                         if (st == CW_OK) {
-                            assert_true(rob_result_finite(&r));
+                            assert_true(cw_result_finite(&r));
                             for (int k = 0; k < CW_JACOBIAN_LEN; ++k) assert_true(isfinite(J[k]));
                             ++solved;
                         } else {

@@ -3,14 +3,14 @@
  * leaks and no invalid accesses: create/solve/destroy of solvers,
  * accumulators and batches, failed creates, failed solves (exceptions and
  * messages inside the library), destruction in any order, NULL destroys. */
-#include "robustness_support.h"
+#include "capi_fixtures.h"
 
 static void test_solver_lifecycle(void** state)
 {
     (void)state;
     for (int kind = CW_GRID_KALKER_STRIPS; kind <= CW_GRID_UNIFORM; ++kind)
         for (int round = 0; round < 5; ++round) {
-            cw_solver* s = rob_solver(kind, 1 + 9 * round, 2 + 7 * round, 1.0 + round);
+            cw_solver* s = cw_test_solver(kind, 1 + 9 * round, 2 + 7 * round, 1.0 + round);
             cw_params p;
             cw_params_init(&p);
             p.xi_x = 1e-3;
@@ -23,7 +23,7 @@ static void test_solver_lifecycle(void** state)
             assert_status(cw_solver_get_field(s, 99, NULL, 0), CW_ERR_UNKNOWN_OPTION);
             p.nu = 0.3;
             assert_status(cw_solver_solve(s, &p, CW_SOLVE_FULL, &r), CW_OK);
-            rob_check_solution(s, &p, CW_SOLVE_FULL, &r);
+            cw_check_solution(s, &p, CW_SOLVE_FULL, &r);
             cw_solver_destroy(s);
         }
     cw_solver_destroy(NULL);
@@ -51,7 +51,7 @@ static void test_accumulator_and_batch_lifecycle(void** state)
 {
     (void)state;
     for (int round = 0; round < 4; ++round) {
-        cw_solver* s = rob_solver(round % 2, 12, 9, 1.2);
+        cw_solver* s = cw_test_solver(round % 2, 12, 9, 1.2);
         cw_accumulator* acc = NULL;
         assert_status(cw_accumulator_create(s, &acc), CW_OK);
         cw_params p;
@@ -63,14 +63,7 @@ static void test_accumulator_and_batch_lifecycle(void** state)
         assert_status(cw_accumulator_add(acc, s, -1.0), CW_ERR_INVALID_INPUT);
         assert_status(cw_accumulator_add(acc, s, 1e308), CW_ERR_NUMERIC);
 
-        cw_grid g;
-        cw_grid_init(&g);
-        g.kind = round % 2;
-        g.nx = 12;
-        g.ny = 9;
-        g.box_scale = 1.2;
-        cw_batch* b = NULL;
-        assert_status(cw_batch_create(&g, round, &b, NULL, 0), CW_OK);
+        cw_batch* b = cw_test_batch(round % 2, 12, 9, 1.2, round);
         cw_params ps[5];
         cw_result rs[5];
         for (int k = 0; k < 5; ++k) {

@@ -5,7 +5,7 @@
  * thread pool on first use), and the wear calls a campaign repeats.
  * Counted by interposing malloc (count_malloc.h), which also sees
  * libstdc++'s operator new and Eigen's aligned_malloc. */
-#include "robustness_support.h"
+#include "capi_fixtures.h"
 
 #include "count_malloc.h"
 
@@ -58,7 +58,7 @@ static void test_solve_and_export_allocate_nothing(void** state)
     for (int kind = CW_GRID_KALKER_STRIPS; kind <= CW_GRID_UNIFORM; ++kind) {
         const int nx = 33, ny = 21;
         const size_t n = (size_t)nx * ny;
-        cw_solver* s = rob_solver(kind, nx, ny, 1.3);
+        cw_solver* s = cw_test_solver(kind, nx, ny, 1.3);
         double* buf = (double*)malloc(n * sizeof *buf);
         int* ibuf = (int*)malloc(n * sizeof *ibuf);
         double profile[3 * 21];
@@ -98,7 +98,7 @@ static void test_accumulator_allocates_nothing(void** state)
     (void)state;
     const int nx = 16, ny = 12;
     const size_t n = (size_t)nx * ny;
-    cw_solver* s = rob_solver(CW_GRID_UNIFORM, nx, ny, 1.0);
+    cw_solver* s = cw_test_solver(CW_GRID_UNIFORM, nx, ny, 1.0);
     cw_accumulator* acc = NULL;
     assert_status(cw_accumulator_create(s, &acc), CW_OK);
     double buf[16 * 12];
@@ -127,7 +127,7 @@ static void test_accumulator_allocates_nothing(void** state)
 static void test_exact_allocates_nothing_after_prepare(void** state)
 {
     (void)state;
-    cw_solver* s = rob_solver(CW_GRID_UNIFORM, 24, 24, 1.2);
+    cw_solver* s = cw_test_solver(CW_GRID_UNIFORM, 24, 24, 1.2);
     assert_status(cw_solver_prepare(s, CW_MODEL_EXACT), CW_OK);
     double out[24 * 24];
     int states[24 * 24];
@@ -185,7 +185,7 @@ static void test_wear_allocates_nothing(void** state)
     (void)state;
     const int nx = 15, ny = 11;
     const size_t n = (size_t)nx * ny;
-    cw_solver* s = rob_solver(CW_GRID_KALKER_STRIPS, nx, ny, 1.0);
+    cw_solver* s = cw_test_solver(CW_GRID_KALKER_STRIPS, nx, ny, 1.0);
     cw_wear* w = NULL;
     assert_status(cw_wear_create(s, &w), CW_OK);
     double nodes[80];

@@ -5,7 +5,7 @@
  * normalised interface -- and the file must stay empty. Descriptors, not
  * FILE streams, so output through printf, std::cout, std::cerr or write(2)
  * is all caught; stdio buffers are flushed before the check. */
-#include "robustness_support.h"
+#include "capi_fixtures.h"
 
 #include <unistd.h>
 

@@ -7,7 +7,7 @@
  * the thread's own. Run under ThreadSanitizer in CI (label "threads").
  * cmocka's assertions are not thread-safe: workers record failures and the
  * main thread asserts. */
-#include "robustness_support.h"
+#include "capi_fixtures.h"
 
 #include <pthread.h>
 
@@ -110,7 +110,7 @@ static void* work(void* arg)
         if (w->id % 2) bad.mu = -1.0 - w->id;
         else bad.phi = NAN;
         if (cw_solver_solve(s, &bad, CW_SOLVE_FULL, NULL) != CW_ERR_INVALID_INPUT ||
-            !rob_names(cw_solver_last_error(s), name))
+            !cw_names(cw_solver_last_error(s), name))
             record(w, "error message is not this thread's");
 
         /* A batch per thread, itself multithreaded. */
@@ -203,7 +203,7 @@ static void* churn(void* arg)
         cw_solver* bad = NULL;
         char msg[64];
         if (cw_solver_create(&g, &bad, msg, sizeof msg) != CW_ERR_GRID_OUT_OF_RANGE || bad ||
-            !rob_names(msg, "nx"))
+            !cw_names(msg, "nx"))
             record(w, "failed create misbehaved");
         cw_batch_destroy(b);
         cw_solver_destroy(s);

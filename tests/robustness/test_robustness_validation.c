@@ -2,7 +2,7 @@
  * names the offending input, nothing is written on error, and the handle
  * stays usable. Also: zero load, zero friction and zero creepage are valid
  * and give exact zeros, never NaN. */
-#include "robustness_support.h"
+#include "capi_fixtures.h"
 
 #include <float.h>
 #include <limits.h>
@@ -22,7 +22,7 @@ static cw_solver* make_solver(int kind, int nx, int ny, double box_scale)
     g_grid.nx = nx;
     g_grid.ny = ny;
     g_grid.box_scale = box_scale;
-    return rob_solver(kind, nx, ny, box_scale);
+    return cw_test_solver(kind, nx, ny, box_scale);
 }
 
 /* A solve that must fail: the status, the message names `name`, the result
@@ -32,14 +32,14 @@ static void expect_solve_error(cw_solver* s, const cw_params* p, int mode, int s
                                const char* name)
 {
     cw_result r;
-    rob_sentinel_result(&r);
+    cw_poison_result(&r);
     assert_status(cw_solver_solve(s, p, mode, &r), status);
-    assert_true(rob_result_untouched(&r));
+    assert_true(cw_result_poisoned(&r));
     assert_names(cw_solver_last_error(s), name);
     assert_status(cw_solver_get_result(s, &r), CW_ERR_NO_SOLUTION);
-    assert_true(rob_result_untouched(&r));
+    assert_true(cw_result_poisoned(&r));
     double v = 42.0;
-    assert_status(cw_solver_get_field(s, CW_FIELD_PX, &v, rob_cells(s)), CW_ERR_NO_SOLUTION);
+    assert_status(cw_solver_get_field(s, CW_FIELD_PX, &v, cw_cells(s)), CW_ERR_NO_SOLUTION);
 
     /* Still usable, and the failure left no trace. */
     cw_params good;
@@ -128,7 +128,7 @@ static void test_every_numeric_parameter_is_validated(void** state)
 static void test_unused_inputs_are_ignored(void** state)
 {
     (void)state;
-    cw_solver* s = rob_solver(CW_GRID_KALKER_STRIPS, 10, 10, 1.0);
+    cw_solver* s = cw_test_solver(CW_GRID_KALKER_STRIPS, 10, 10, 1.0);
     cw_params p;
     cw_params_init(&p);
     p.xi_y = 1e-3;
@@ -142,7 +142,7 @@ static void test_unused_inputs_are_ignored(void** state)
     p.G = -1.0; /* GIVEN: G and nu unused */
     p.nu = kInf;
     assert_status(cw_solver_solve(s, &p, CW_SOLVE_FULL, &r), CW_OK);
-    assert_true(rob_result_finite(&r));
+    assert_true(cw_result_finite(&r));
     cw_solver_destroy(s);
 }
 
@@ -162,7 +162,7 @@ static void test_range_ends(void** state)
         p.a = aspect_ok[k];
         p.xi_x = 1e-4;
         assert_status(cw_solver_solve(s, &p, CW_SOLVE_FULL, &r), CW_OK);
-        assert_true(rob_result_finite(&r));
+        assert_true(cw_result_finite(&r));
     }
     const double aspect_bad[] = {nextafter(CW_MIN_ASPECT, 0.0), nextafter(CW_MAX_ASPECT, 2e3),
                                  1e-300, 1e300};
@@ -179,7 +179,7 @@ static void test_range_ends(void** state)
         p.nu = nu_ok[k];
         p.xi_x = 1e-3;
         assert_status(cw_solver_solve(s, &p, CW_SOLVE_FULL, &r), CW_OK);
-        assert_true(rob_result_finite(&r));
+        assert_true(cw_result_finite(&r));
     }
     cw_params_init(&p);
     p.nu = nextafter(0.5, 1.0);
@@ -194,30 +194,30 @@ static void test_range_ends(void** state)
 static void test_overflowing_combinations(void** state)
 {
     (void)state;
-    cw_solver* s = rob_solver(CW_GRID_UNIFORM, 10, 10, 1.5);
+    cw_solver* s = cw_test_solver(CW_GRID_UNIFORM, 10, 10, 1.5);
     cw_params p;
     cw_result r;
     cw_params_init(&p);
     p.a = p.b = 1e-200; /* pressure 2N/(pi a b) overflows */
     p.xi_x = 1e-3;
-    rob_sentinel_result(&r);
+    cw_poison_result(&r);
     assert_status(cw_solver_solve(s, &p, CW_SOLVE_FULL, &r), CW_ERR_INVALID_INPUT);
-    assert_true(rob_result_untouched(&r));
+    assert_true(cw_result_poisoned(&r));
     assert_names(cw_solver_last_error(s), "a");
     assert_names(cw_solver_last_error(s), "normal_force");
 
     cw_params_init(&p);
     p.xi_x = 1e308; /* rigid slip a xi / L overflows */
-    rob_sentinel_result(&r);
+    cw_poison_result(&r);
     assert_status(cw_solver_solve(s, &p, CW_SOLVE_FULL, &r), CW_ERR_INVALID_INPUT);
-    assert_true(rob_result_untouched(&r));
+    assert_true(cw_result_poisoned(&r));
     assert_names(cw_solver_last_error(s), "xi_x");
 
     /* Any failure leaves a usable handle. */
     cw_params_init(&p);
     p.xi_y = -2e-3;
     assert_status(cw_solver_solve(s, &p, CW_SOLVE_FULL, &r), CW_OK);
-    rob_check_solution(s, &p, CW_SOLVE_FULL, &r);
+    cw_check_solution(s, &p, CW_SOLVE_FULL, &r);
     cw_solver_destroy(s);
 }
 
@@ -260,16 +260,16 @@ static void test_struct_sizes(void** state)
         cw_params_init(&p);
         assert_status(cw_solver_solve(s, &p, CW_SOLVE_FULL, NULL), CW_OK);
         cw_result r;
-        rob_sentinel_result(&r);
+        cw_poison_result(&r);
         r.struct_size = bad[k];
         assert_status(cw_solver_solve(s, &p, CW_SOLVE_FULL, &r), CW_ERR_STRUCT_SIZE);
         assert_names(cw_solver_last_error(s), "result");
-        assert_true(rob_untouched((unsigned char*)&r + sizeof r.struct_size,
+        assert_true(cw_poisoned((unsigned char*)&r + sizeof r.struct_size,
                                   sizeof r - sizeof r.struct_size));
         cw_result fresh;
-        rob_sentinel_result(&fresh);
+        cw_poison_result(&fresh);
         assert_status(cw_solver_get_result(s, &fresh), CW_ERR_NO_SOLUTION);
-        assert_true(rob_result_untouched(&fresh));
+        assert_true(cw_result_poisoned(&fresh));
         /* Reading into a garbage struct is refused too. */
         assert_status(cw_solver_solve(s, &p, CW_SOLVE_FULL, NULL), CW_OK);
         assert_status(cw_solver_get_result(s, &r), CW_ERR_STRUCT_SIZE);
@@ -293,13 +293,13 @@ static void expect_create_error(const cw_grid* g, int status, const char* name)
 {
     cw_solver* s = (cw_solver*)g;
     char msg[256];
-    rob_fill(msg, sizeof msg);
+    cw_poison(msg, sizeof msg);
     assert_status(cw_solver_create(g, &s, msg, sizeof msg), status);
     assert_null(s);
     assert_names(msg, name);
 
     cw_batch* b = (cw_batch*)g;
-    rob_fill(msg, sizeof msg);
+    cw_poison(msg, sizeof msg);
     assert_status(cw_batch_create(g, 2, &b, msg, sizeof msg), status);
     assert_null(b);
     assert_names(msg, name);
@@ -343,10 +343,10 @@ static void test_grid_limits(void** state)
     const int ok_cells[][2] = {{1, 1}, {1, CW_MAX_GRID_CELLS}, {CW_MAX_GRID_CELLS, 1}};
     for (int kind = CW_GRID_KALKER_STRIPS; kind <= CW_GRID_UNIFORM; ++kind)
         for (int k = 0; k < 3; ++k) {
-            cw_solver* s = rob_solver(kind, ok_cells[k][0], ok_cells[k][1], 1.0);
+            cw_solver* s = cw_test_solver(kind, ok_cells[k][0], ok_cells[k][1], 1.0);
             cw_solver_destroy(s);
         }
-    cw_solver* s = rob_solver(CW_GRID_UNIFORM, 4, 4, CW_MAX_BOX_SCALE);
+    cw_solver* s = cw_test_solver(CW_GRID_UNIFORM, 4, 4, CW_MAX_BOX_SCALE);
     cw_solver_destroy(s);
 }
 
@@ -357,7 +357,7 @@ static void test_strip_grid_ignores_box_scale(void** state)
     (void)state;
     const double scales[] = {NAN, -INFINITY, 0.0, 1e300};
     for (int k = 0; k < 4; ++k) {
-        cw_solver* s = rob_solver(CW_GRID_KALKER_STRIPS, 5, 5, scales[k]);
+        cw_solver* s = cw_test_solver(CW_GRID_KALKER_STRIPS, 5, 5, scales[k]);
         cw_accumulator* acc = NULL;
         assert_status(cw_accumulator_create(s, &acc), CW_OK);
         cw_params p;
@@ -381,19 +381,19 @@ static void test_message_buffers(void** state)
 
     /* NULL or zero length: nothing written. */
     assert_status(cw_solver_create(&g, &s, NULL, 100), CW_ERR_GRID_OUT_OF_RANGE);
-    rob_fill(msg, sizeof msg);
+    cw_poison(msg, sizeof msg);
     assert_status(cw_solver_create(&g, &s, msg, 0), CW_ERR_GRID_OUT_OF_RANGE);
-    assert_true(rob_untouched(msg, sizeof msg));
+    assert_true(cw_poisoned(msg, sizeof msg));
     /* Truncated to len - 1 characters plus NUL; the rest untouched. */
     for (size_t len = 1; len < 8; ++len) {
-        rob_fill(msg, sizeof msg);
+        cw_poison(msg, sizeof msg);
         assert_status(cw_solver_create(&g, &s, msg, len), CW_ERR_GRID_OUT_OF_RANGE);
         assert_int_equal(strlen(msg), len - 1);
-        assert_true(rob_untouched(msg + len, sizeof msg - len));
+        assert_true(cw_poisoned(msg + len, sizeof msg - len));
     }
     /* Success clears the message. */
     cw_grid_init(&g);
-    rob_fill(msg, sizeof msg);
+    cw_poison(msg, sizeof msg);
     assert_status(cw_solver_create(&g, &s, msg, sizeof msg), CW_OK);
     assert_string_equal(msg, "");
     cw_solver_destroy(s);
@@ -437,7 +437,7 @@ static void test_null_pointers(void** state)
     assert_non_null(cw_solver_last_error(NULL));
     assert_true(strlen(cw_solver_last_error(NULL)) > 0);
 
-    s = rob_solver(CW_GRID_KALKER_STRIPS, 2, 2, 1.0);
+    s = cw_test_solver(CW_GRID_KALKER_STRIPS, 2, 2, 1.0);
     assert_status(cw_solver_grid_size(s, NULL, &ny), CW_ERR_NULL_POINTER);
     assert_status(cw_solver_grid_size(s, &nx, NULL), CW_ERR_NULL_POINTER);
     assert_status(cw_solver_solve(s, NULL, CW_SOLVE_FULL, &r), CW_ERR_NULL_POINTER);
@@ -530,20 +530,20 @@ static void test_output_buffers(void** state)
     for (int kind = CW_GRID_KALKER_STRIPS; kind <= CW_GRID_UNIFORM; ++kind) {
         const int nx = 7, ny = 5;
         const size_t n = (size_t)nx * ny;
-        cw_solver* s = rob_solver(kind, nx, ny, 1.1);
+        cw_solver* s = cw_test_solver(kind, nx, ny, 1.1);
         double buf[64];
         int ibuf[64];
         cw_result r;
 
         /* Nothing solved yet. */
-        rob_fill(buf, sizeof buf);
+        cw_poison(buf, sizeof buf);
         assert_status(cw_solver_get_field(s, CW_FIELD_X, buf, n), CW_ERR_NO_SOLUTION);
         assert_status(cw_solver_get_state(s, ibuf, n), CW_ERR_NO_SOLUTION);
         assert_status(cw_solver_get_profile(s, buf, buf, buf, ny), CW_ERR_NO_SOLUTION);
-        rob_sentinel_result(&r);
+        cw_poison_result(&r);
         assert_status(cw_solver_get_result(s, &r), CW_ERR_NO_SOLUTION);
-        assert_true(rob_result_untouched(&r));
-        assert_true(rob_untouched(buf, sizeof buf));
+        assert_true(cw_result_poisoned(&r));
+        assert_true(cw_poisoned(buf, sizeof buf));
 
         cw_params p;
         cw_params_init(&p);
@@ -557,7 +557,7 @@ static void test_output_buffers(void** state)
         for (int k = 0; k < 4; ++k) {
             assert_status(cw_solver_get_field(s, bad_field[k], buf, n), CW_ERR_UNKNOWN_OPTION);
             assert_names(cw_solver_last_error(s), "field");
-            assert_true(rob_untouched(buf, sizeof buf));
+            assert_true(cw_poisoned(buf, sizeof buf));
         }
         /* Work fields and the profile need a FULL solve. */
         const int work_fields[] = {CW_FIELD_SX, CW_FIELD_SY, CW_FIELD_WORK_PAPER,
@@ -565,7 +565,7 @@ static void test_output_buffers(void** state)
         for (int k = 0; k < 4; ++k)
             assert_status(cw_solver_get_field(s, work_fields[k], buf, n), CW_ERR_NO_WORK);
         assert_status(cw_solver_get_profile(s, buf, buf, buf, ny), CW_ERR_NO_WORK);
-        assert_true(rob_untouched(buf, sizeof buf));
+        assert_true(cw_poisoned(buf, sizeof buf));
         /* Too short is an error, never truncation; the buffer is untouched. */
         const int force_fields[] = {CW_FIELD_X,  CW_FIELD_Y,  CW_FIELD_AREA, CW_FIELD_PZ,
                                     CW_FIELD_PX, CW_FIELD_PY, CW_FIELD_MZ};
@@ -576,30 +576,30 @@ static void test_output_buffers(void** state)
             assert_status(cw_solver_get_field(s, f, buf, 0), CW_ERR_BUFFER_TOO_SMALL);
         }
         assert_status(cw_solver_get_state(s, ibuf, n - 1), CW_ERR_BUFFER_TOO_SMALL);
-        assert_true(rob_untouched(buf, sizeof buf));
+        assert_true(cw_poisoned(buf, sizeof buf));
         /* Exact and longer buffers work; beyond n nothing is written. */
         for (int k = 0; k < 7; ++k) {
             const int f = force_fields[k];
-            rob_fill(buf, sizeof buf);
+            cw_poison(buf, sizeof buf);
             assert_status(cw_solver_get_field(s, f, buf, sizeof buf / sizeof buf[0]), CW_OK);
-            assert_true(rob_all_finite(buf, n));
-            assert_true(rob_untouched(buf + n, sizeof buf - n * sizeof buf[0]));
+            assert_true(cw_all_finite(buf, n));
+            assert_true(cw_poisoned(buf + n, sizeof buf - n * sizeof buf[0]));
         }
-        rob_fill(ibuf, sizeof ibuf);
+        cw_poison(ibuf, sizeof ibuf);
         assert_status(cw_solver_get_state(s, ibuf, n), CW_OK);
-        assert_true(rob_untouched(ibuf + n, sizeof ibuf - n * sizeof ibuf[0]));
+        assert_true(cw_poisoned(ibuf + n, sizeof ibuf - n * sizeof ibuf[0]));
 
         /* FULL: every field; the profile checks its length. */
         assert_status(cw_solver_solve(s, &p, CW_SOLVE_FULL, &r), CW_OK);
         for (int f = CW_FIELD_X; f <= CW_FIELD_WORK_CONSISTENT; ++f)
             assert_status(cw_solver_get_field(s, f, buf, n), CW_OK);
-        rob_fill(buf, sizeof buf);
+        cw_poison(buf, sizeof buf);
         assert_status(cw_solver_get_profile(s, buf, buf + 10, buf + 20, ny - 1),
                       CW_ERR_BUFFER_TOO_SMALL);
-        assert_true(rob_untouched(buf, sizeof buf));
+        assert_true(cw_poisoned(buf, sizeof buf));
         assert_status(cw_solver_get_profile(s, buf, NULL, buf + 20, ny), CW_OK);
-        assert_true(rob_untouched(buf + 10, 10 * sizeof buf[0]));
-        rob_check_solution(s, &p, CW_SOLVE_FULL, &r);
+        assert_true(cw_poisoned(buf + 10, 10 * sizeof buf[0]));
+        cw_check_solution(s, &p, CW_SOLVE_FULL, &r);
         cw_solver_destroy(s);
     }
 }
@@ -610,32 +610,32 @@ static void expect_zero_solution(cw_solver* s, const cw_params* p, int zero_pres
 {
     for (int mode = CW_SOLVE_FORCES; mode <= CW_SOLVE_FULL; ++mode) {
         cw_result r;
-        rob_sentinel_result(&r);
+        cw_poison_result(&r);
         assert_status(cw_solver_solve(s, p, mode, &r), CW_OK);
-        assert_true(rob_result_finite(&r));
+        assert_true(cw_result_finite(&r));
         assert_true(r.Fx == 0.0 && r.Fy == 0.0 && r.Mz == 0.0);
         assert_true(r.W_macro == 0.0 && r.W_micro_paper == 0.0 && r.W_consistent == 0.0);
         assert_true(r.K == 0.0);
-        const size_t n = rob_cells(s);
+        const size_t n = cw_cells(s);
         const int zero_fields[] = {CW_FIELD_PX, CW_FIELD_PY, CW_FIELD_MZ};
         for (int k = 0; k < 3; ++k) {
-            double* v = rob_field(s, zero_fields[k]);
+            double* v = cw_field(s, zero_fields[k]);
             for (size_t e = 0; e < n; ++e) assert_true(v[e] == 0.0);
             free(v);
         }
-        double* pz = rob_field(s, CW_FIELD_PZ);
+        double* pz = cw_field(s, CW_FIELD_PZ);
         for (size_t e = 0; e < n; ++e)
             assert_true(zero_pressure ? pz[e] == 0.0 : (isfinite(pz[e]) && pz[e] >= 0.0));
         free(pz);
         if (mode == CW_SOLVE_FULL) {
             const int work_fields[] = {CW_FIELD_WORK_PAPER, CW_FIELD_WORK_CONSISTENT};
             for (int k = 0; k < 2; ++k) {
-                double* v = rob_field(s, work_fields[k]);
+                double* v = cw_field(s, work_fields[k]);
                 for (size_t e = 0; e < n; ++e) assert_true(v[e] == 0.0);
                 free(v);
             }
         }
-        rob_check_solution(s, p, mode, &r);
+        cw_check_solution(s, p, mode, &r);
     }
 }
 
@@ -643,7 +643,7 @@ static void test_zero_load_friction_and_creepage(void** state)
 {
     (void)state;
     for (int kind = CW_GRID_KALKER_STRIPS; kind <= CW_GRID_UNIFORM; ++kind) {
-        cw_solver* s = rob_solver(kind, 9, 11, 1.3);
+        cw_solver* s = cw_test_solver(kind, 9, 11, 1.3);
         for (int pressure = CW_PRESSURE_PARABOLIC; pressure <= CW_PRESSURE_ELLIPTIC; ++pressure) {
             cw_params p;
             cw_params_init(&p);
@@ -676,9 +676,9 @@ static void test_zero_load_friction_and_creepage(void** state)
 static void test_accumulator_rules(void** state)
 {
     (void)state;
-    cw_solver* s = rob_solver(CW_GRID_KALKER_STRIPS, 6, 4, 1.0);
-    cw_solver* other = rob_solver(CW_GRID_KALKER_STRIPS, 6, 5, 1.0);
-    cw_solver* uniform = rob_solver(CW_GRID_UNIFORM, 6, 4, 1.0);
+    cw_solver* s = cw_test_solver(CW_GRID_KALKER_STRIPS, 6, 4, 1.0);
+    cw_solver* other = cw_test_solver(CW_GRID_KALKER_STRIPS, 6, 5, 1.0);
+    cw_solver* uniform = cw_test_solver(CW_GRID_UNIFORM, 6, 4, 1.0);
     cw_accumulator* acc = NULL;
     assert_status(cw_accumulator_create(s, &acc), CW_OK);
     const size_t n = 24;
@@ -728,13 +728,13 @@ static void test_accumulator_rules(void** state)
         assert_status(cw_accumulator_get_totals(acc, &after), CW_OK);
         const double t[] = {after.distance, after.W_macro, after.W_micro_paper, after.K,
                             after.W_consistent};
-        assert_true(rob_all_finite(t, 5));
+        assert_true(cw_all_finite(t, 5));
         for (int f = CW_FIELD_WORK_PAPER; f <= CW_FIELD_WORK_CONSISTENT; ++f) {
             assert_status(cw_accumulator_get_field(acc, f, buf, n), CW_OK);
-            assert_true(rob_all_finite(buf, n));
+            assert_true(cw_all_finite(buf, n));
         }
         assert_status(cw_accumulator_get_strip_work(acc, buf, 4), CW_OK);
-        assert_true(rob_all_finite(buf, 4));
+        assert_true(cw_all_finite(buf, 4));
     }
 
     const int bad_field[] = {-1, CW_FIELD_PX, CW_FIELD_WORK_CONSISTENT + 1};
@@ -742,11 +742,11 @@ static void test_accumulator_rules(void** state)
         assert_status(cw_accumulator_get_field(acc, bad_field[k], buf, n), CW_ERR_UNKNOWN_OPTION);
         assert_names(cw_accumulator_last_error(acc), "field");
     }
-    rob_fill(buf, sizeof buf);
+    cw_poison(buf, sizeof buf);
     assert_status(cw_accumulator_get_field(acc, CW_FIELD_WORK_PAPER, buf, n - 1),
                   CW_ERR_BUFFER_TOO_SMALL);
     assert_status(cw_accumulator_get_strip_work(acc, buf, 3), CW_ERR_BUFFER_TOO_SMALL);
-    assert_true(rob_untouched(buf, sizeof buf));
+    assert_true(cw_poisoned(buf, sizeof buf));
     cw_accumulation bad;
     cw_accumulation_init(&bad);
     bad.struct_size = 3;
@@ -781,7 +781,7 @@ static void test_batch_rules(void** state)
         cw_params_init(&p[k]);
         p[k].xi_x = 1e-4 * (k + 1);
         p[k].phi = 0.3 * k;
-        rob_sentinel_result(&r[k]);
+        cw_poison_result(&r[k]);
     }
     p[3].a = kNaN;
     p[6].mu = -1.0;
@@ -792,7 +792,7 @@ static void test_batch_rules(void** state)
     assert_names(cw_batch_last_error(b), "a");
     for (int k = 0; k < count; ++k) {
         if (k == 3 || k == 6 || k == 7) {
-            assert_true(rob_result_untouched(&r[k]));
+            assert_true(cw_result_poisoned(&r[k]));
             assert_int_equal(statuses[k], k == 7 ? CW_ERR_UNKNOWN_OPTION : CW_ERR_INVALID_INPUT);
         } else {
             assert_int_equal(statuses[k], CW_OK);
@@ -839,11 +839,11 @@ static void test_free_functions(void** state)
     /* Kalker's coefficients: a/b in [1e-3, 1e3], nu in [0, 0.5]. */
     const double bad_ratio[] = {NAN, INFINITY, 0.0, -1.0, nextafter(1e-3, 0), 1.0001e3};
     for (int k = 0; k < 6; ++k) {
-        rob_fill(c, sizeof c);
+        cw_poison(c, sizeof c);
         assert_status(cw_kalker_coefficients(bad_ratio[k], 0.28, c, msg, sizeof msg),
                       CW_ERR_INVALID_INPUT);
         assert_names(msg, "a_over_b");
-        assert_true(rob_untouched(c, sizeof c));
+        assert_true(cw_poisoned(c, sizeof c));
     }
     const double bad_nu[] = {NAN, -INFINITY, -0.01, 0.51};
     for (int k = 0; k < 4; ++k) {
@@ -870,12 +870,12 @@ static void test_free_functions(void** state)
         {1, 1e-4, 1, 0.3, "a/b"},
     };
     for (size_t k = 0; k < sizeof flex / sizeof flex[0]; ++k) {
-        rob_fill(out, sizeof out);
+        cw_poison(out, sizeof out);
         assert_status(cw_kalker_flexibilities(flex[k].a, flex[k].b, flex[k].G, flex[k].nu, out,
                                               msg, sizeof msg),
                       CW_ERR_INVALID_INPUT);
         assert_names(msg, flex[k].name);
-        assert_true(rob_untouched(out, sizeof out));
+        assert_true(cw_poisoned(out, sizeof out));
     }
     assert_status(cw_kalker_flexibilities(1e200, 1e200, 1e-200, 0.3, out, msg, sizeof msg),
                   CW_ERR_INVALID_INPUT); /* L = 8a/(3 C G) overflows */
@@ -892,11 +892,11 @@ static void test_free_functions(void** state)
         {1, 1e-13, 1, 1, "A/B"},
     };
     for (size_t k = 0; k < sizeof hz / sizeof hz[0]; ++k) {
-        rob_fill(out, sizeof out);
+        cw_poison(out, sizeof out);
         assert_status(cw_hertz_solve(hz[k].A, hz[k].B, hz[k].N, hz[k].E, out, msg, sizeof msg),
                       CW_ERR_INVALID_INPUT);
         assert_names(msg, hz[k].name);
-        assert_true(rob_untouched(out, sizeof out));
+        assert_true(cw_poisoned(out, sizeof out));
     }
     assert_status(cw_hertz_solve(2.0, 5.0, 0.0, 1e11, out, msg, sizeof msg), CW_OK);
     for (int i = 0; i < 4; ++i) assert_true(out[i] == 0.0);
