@@ -44,11 +44,37 @@ WEAR = [
     "cli_wear_wheel_distance", "example_wear_loop_f77", "example_c_wear_quickstart",
 ]
 
+# The exact model: CONTACT's rows (test_core_exact_reference, its 100 x 100
+# entry), the model's own properties, the C ABI and Fortran doors.
+EXACT = [
+    "test_core_exact_reference", "test_core_exact_reference_100", "test_core_exact_model",
+    "test_core_exact_energy", "test_core_exact_jacobian", "test_capi_exact", "test_fortran_exact",
+]
+# Results that must not depend on what a handle solved before: cold solves
+# (warm_start = 0) and batches (cold by construction).
+COLD = [
+    "test_core_exact_model", "test_capi_exact", "test_robustness_determinism", "test_capi_batch",
+    "test_capi_threads",
+]
+# The calibrated model: its linear limit (Kalker's coefficients), accuracy
+# against the exact model's continuum estimate, its Jacobian against
+# central differences, the C ABI and the CLI.
+CALIBRATED = [
+    "test_core_calibrated", "test_core_calibrated_jacobian", "test_capi_calibrated",
+    "test_capi_jacobian", "cli_solve_calibrated_matches_library",
+]
+# The C ABI's versioned structs (struct_size): growth, errors, batches.
+ABI = [
+    "test_capi_abi_growth", "test_capi_batch", "test_capi_errors", "test_capi_solver",
+    "test_capi_wear", "test_capi_accumulator", "test_robustness_validation",
+]
+
 # One entry per mutant: file, the exact text of one line (or a unique part of
 # it) and its replacement, the candidate tests, and tests that must be among
-# the catchers ("require"). Add the exact and calibrated models' mutants here
-# with require = the CONTACT reference tests (tests labelled exact that read
-# ../shared/reference), never tests that recompute the model's own formulas.
+# the catchers ("require"): the exact and calibrated models' bugs must be
+# caught by data from outside the model (CONTACT's rows, Kalker's
+# coefficients, the exact theory), never only by tests that recompute the
+# model's own formulas.
 MUTANTS = [
     dict(id="moment-sign", what="creep moment Mz reported with the wrong sign",
          file="core/march/march_model.cpp",
@@ -84,8 +110,8 @@ MUTANTS = [
          new="        const cw::SolveTotals& t = solver->solver.solve(in, m); __builtin_printf(\"K %g\\n\", t.K);",
          tests=["test_robustness_silent", "test_capi_solver", "cli_json_matches_library"],
          min_caught=1),  # only the silent test can see output: one catcher is all there is
-    # Wear: the laws, the depth of a pass, the remap, the exact sums
-    # and the update helper, against closed forms and published values.
+    # Wear: the laws, the depth of a pass, the remap, the exact sums and the
+    # update helper, against closed forms and published values.
     dict(id="usfd-plateau-end", what="USFD's severe plateau ends before 77.2 N/mm^2",
          file="core/wear/wear_law.hpp", old="    if (t <= c.t2) {", new="    if (t < c.t2) {",
          tests=WEAR),
@@ -107,6 +133,57 @@ MUTANTS = [
          file="core/wear/wear_profile.cpp",
          old="coef[m] = depth[m] * widths[m] / Z;", new="coef[m] = depth[m] * widths[0] / Z;",
          tests=WEAR),
+    # The KTH map's boundaries, each approached from both sides
+    # (test_core_wear, and test_capi_wear on an element's own velocity).
+    dict(id="kth-slow-closed", what="KTH: v = v1 counted as slow, not severe",
+         file="core/wear/wear_law.hpp", old="    if (v < m.v1) {", new="    if (v <= m.v1) {",
+         tests=WEAR),
+    dict(id="kth-severe-open", what="KTH: v = v2 counted as fast, not severe",
+         file="core/wear/wear_law.hpp", old="    if (v <= m.v2) {", new="    if (v < m.v2) {",
+         tests=WEAR),
+    dict(id="kth-seizure-closed", what="KTH: seizure already at p = ratio H",
+         file="core/wear/wear_law.hpp", old="    if (p > m.seizure_ratio * m.hardness) {",
+         new="    if (p >= m.seizure_ratio * m.hardness) {", tests=WEAR),
+    # The exact model.
+    dict(id="exact-spin-offset", what="exact: CONTACT's facphi 1/6 forgotten (spin centre at x)",
+         file="core/exact/exact_model.hpp", old="kExactDefaultSpinOffset = 1.0 / 6.0;",
+         new="kExactDefaultSpinOffset = 0.0;", tests=EXACT,
+         require=["test_core_exact_reference"]),
+    dict(id="exact-moment-arm", what="exact: sign of the y px term of Mz",
+         file="core/exact/exact_model.cpp", old="mz += x * q[k].imag() - y * q[k].real();",
+         new="mz += x * q[k].imag() + y * q[k].real();", tests=EXACT,
+         require=["test_core_exact_reference"]),
+    dict(id="exact-cold-normal", what="exact: a cold solve starts its normal problem from the "
+         "last pressure", file="core/exact/exact_model.cpp",
+         old="    const bool start = warm && L.normal_valid;",
+         new="    const bool start = L.normal_valid;", tests=COLD),
+    dict(id="exact-cold-reuse", what="exact: a cold solve reuses a warm-started normal solution",
+         file="core/exact/exact_model.cpp", old="(warm || L.normal_cold))",
+         new="(warm || true))", tests=COLD),
+    # The calibrated model.
+    dict(id="calibrated-moment-flexibility", what="calibrated: spin x-slip on L3/L_M, not L_M/L3",
+         file="core/calibrated/calibrated_model.cpp", old="        s.kin.cx *= s.L3 / L_M;",
+         new="        s.kin.cx *= L_M / s.L3;", tests=CALIBRATED, require=["test_core_calibrated"]),
+    dict(id="calibrated-blend-shape", what="calibrated: blended bound 0.7 sqrt(P), N not carried",
+         file="core/calibrated/blended_bound.cpp", old="ce = blend * 0.75;",
+         new="ce = blend * 0.7;", tests=CALIBRATED, require=["test_core_calibrated"]),
+    dict(id="calibrated-blend-derivative", what="calibrated Jacobian: d(bound)/d(blend) sign of P",
+         file="core/calibrated/march_directional.cpp", old="(three_quarters * E - P)",
+         new="(three_quarters * E + P)", tests=CALIBRATED,
+         require=["test_core_calibrated_jacobian"]),
+    # The C ABI's struct_size checks.
+    dict(id="abi-size-floor", what="struct_size smaller than the size field accepted",
+         file="capi/capi_internal.hpp",
+         old="    return size >= sizeof(size_t) && size <= kMaxStructSize;",
+         new="    return size >= 1 && size <= kMaxStructSize;", tests=ABI),
+    dict(id="abi-read-past-size", what="a params struct read past its struct_size",
+         file="capi/capi_internal.hpp",
+         old="    std::memcpy(&value, caller, std::min(size, sizeof(T)));",
+         new="    std::memcpy(&value, caller, sizeof(T));", tests=ABI),
+    dict(id="abi-write-past-size", what="a result struct written past its struct_size",
+         file="capi/capi_internal.hpp",
+         old="    std::memcpy(caller, &copy, std::min(size, sizeof(T)));",
+         new="    std::memcpy(caller, &copy, sizeof(T));", tests=ABI),
 ]
 
 

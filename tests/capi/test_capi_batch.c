@@ -252,6 +252,75 @@ static void per_contact_errors(void** state)
     }
 }
 
+/* A results array whose element type is older (smaller) than the params'
+ * (header, "Structs": each array is strided by its own element 0's
+ * struct_size): result k lands at k * its own size and holds the first
+ * bytes of the one-by-one result, and nothing beyond the last is written. */
+static void results_smaller_than_params(void** state)
+{
+    (void)state;
+    enum { COUNT = 6 };
+    const size_t rsize = offsetof(cw_result, a); /* a result before the semi-axes */
+    const cw_grid g = grid_of(CW_GRID_KALKER_STRIPS);
+    cw_batch* b = make_batch(CW_GRID_KALKER_STRIPS, 3);
+    cw_params p[COUNT];
+    cw_result expected[COUNT];
+    double storage[(COUNT + 2) * sizeof(cw_result) / sizeof(double)]; /* aligned bytes */
+    unsigned char* bytes = (unsigned char*)storage;
+    cw_poison(storage, sizeof storage);
+    for (int k = 0; k < COUNT; ++k) {
+        batch_case(k, &p[k]);
+        solve_one(&g, &p[k], CW_SOLVE_FULL, &expected[k]);
+        memcpy(bytes + k * rsize, &rsize, sizeof rsize); /* its struct_size */
+    }
+    int statuses[COUNT];
+    assert_int_equal(
+        cw_batch_solve(b, COUNT, p, CW_SOLVE_FULL, (cw_result*)storage, statuses), CW_OK);
+    for (int k = 0; k < COUNT; ++k) {
+        assert_int_equal(statuses[k], CW_OK);
+        size_t size;
+        memcpy(&size, bytes + k * rsize, sizeof size);
+        assert_int_equal(size, rsize);
+        assert_memory_equal(bytes + k * rsize + sizeof(size_t),
+                            (const unsigned char*)&expected[k] + sizeof(size_t),
+                            rsize - sizeof(size_t));
+    }
+    assert_true(cw_poisoned(bytes + COUNT * rsize, sizeof storage - COUNT * rsize));
+    cw_batch_destroy(b);
+}
+
+/* The other way round: a params array of an older (smaller) element type
+ * than the results'. Each contact is read up to its own struct_size and
+ * takes the defaults beyond it (cw_params_init's), never the next
+ * element's bytes. */
+static void params_smaller_than_results(void** state)
+{
+    (void)state;
+    enum { COUNT = 6 };
+    const size_t psize = offsetof(cw_params, rolling_direction); /* an older header's */
+    const cw_grid g = grid_of(CW_GRID_UNIFORM);
+    cw_batch* b = make_batch(CW_GRID_UNIFORM, 3);
+    double storage[(COUNT + 1) * sizeof(cw_params) / sizeof(double)]; /* aligned bytes */
+    unsigned char* bytes = (unsigned char*)storage;
+    cw_poison(storage, sizeof storage);
+    cw_result r[COUNT], expected[COUNT];
+    for (int k = 0; k < COUNT; ++k) {
+        cw_params full, old;
+        batch_case(k, &full);
+        cw_params_init(&old); /* what the library must use beyond psize */
+        memcpy(&old, &full, psize);
+        old.struct_size = sizeof old;
+        solve_one(&g, &old, CW_SOLVE_FULL, &expected[k]);
+        memcpy(bytes + k * psize, &full, psize);
+        memcpy(bytes + k * psize, &psize, sizeof psize); /* its struct_size */
+        cw_result_init(&r[k]);
+    }
+    assert_int_equal(
+        cw_batch_solve(b, COUNT, (const cw_params*)storage, CW_SOLVE_FULL, r, NULL), CW_OK);
+    for (int k = 0; k < COUNT; ++k) assert_memory_equal(&r[k], &expected[k], sizeof r[k]);
+    cw_batch_destroy(b);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -261,6 +330,8 @@ int main(void)
         cmocka_unit_test(create_errors),
         cmocka_unit_test(solve_argument_errors),
         cmocka_unit_test(per_contact_errors),
+        cmocka_unit_test(results_smaller_than_params),
+        cmocka_unit_test(params_smaller_than_results),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

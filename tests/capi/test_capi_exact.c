@@ -125,12 +125,51 @@ static void test_errors(void** state)
     cw_solver_destroy(strips);
 }
 
+/* A cold solve (warm_start = 0) on a handle whose earlier solves were warm
+ * and of another a/b gives a fresh handle's bits: totals, pressure and
+ * tractions (the header's determinism promise for cold solves). */
+static void test_cold_solve_forgets_other_contacts(void** state)
+{
+    (void)state;
+    enum { NX = 16, NY = 16, N = NX * NY };
+    cw_params cold = cmb_row();
+    cold.warm_start = 0;
+    cw_params other = cmb_row();
+    other.a = 9.0;
+    other.xi_x = 0.004;
+    cw_params warm = cmb_row();
+    warm.xi_y = -0.0002;
+    cw_result fresh_r, used_r;
+    double fresh_f[3][N], used_f[3][N];
+    const int fields[3] = {CW_FIELD_PZ, CW_FIELD_PX, CW_FIELD_PY};
+    cw_solver* fresh = cw_test_solver(CW_GRID_UNIFORM, NX, NY, 1.1);
+    cw_result_init(&fresh_r);
+    assert_int_equal(cw_solver_solve(fresh, &cold, CW_SOLVE_FULL, &fresh_r), CW_OK);
+    for (int f = 0; f < 3; ++f)
+        assert_int_equal(cw_solver_get_field(fresh, fields[f], fresh_f[f], N), CW_OK);
+    for (int same_shape_first = 0; same_shape_first < 2; ++same_shape_first) {
+        cw_solver* used = cw_test_solver(CW_GRID_UNIFORM, NX, NY, 1.1);
+        assert_int_equal(cw_solver_solve(used, &other, CW_SOLVE_FORCES, NULL), CW_OK);
+        if (same_shape_first)
+            assert_int_equal(cw_solver_solve(used, &warm, CW_SOLVE_FORCES, NULL), CW_OK);
+        cw_result_init(&used_r);
+        assert_int_equal(cw_solver_solve(used, &cold, CW_SOLVE_FULL, &used_r), CW_OK);
+        for (int f = 0; f < 3; ++f)
+            assert_int_equal(cw_solver_get_field(used, fields[f], used_f[f], N), CW_OK);
+        assert_memory_equal(&used_r, &fresh_r, sizeof used_r);
+        assert_memory_equal(used_f, fresh_f, sizeof used_f);
+        cw_solver_destroy(used);
+    }
+    cw_solver_destroy(fresh);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_prepare),
         cmocka_unit_test(test_contact_row),
         cmocka_unit_test(test_errors),
+        cmocka_unit_test(test_cold_solve_forgets_other_contacts),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -573,6 +573,57 @@ static void elements_follow_the_laws(void** state)
     cw_solver_destroy(s);
 }
 
+/* The KTH map's regime boundaries approached from both sides through the C
+ * ABI: with a boundary set to one element's own sliding velocity
+ * v = sliding * rolling_speed (the product the library forms) or pressure,
+ * the element is on the boundary's closed side, and one ulp further on the
+ * other: v1 <= v <= v2 is regime 2, v < v1 regime 1, v > v2 regime 3,
+ * pressure > ratio * hardness regime 4 (header, Jendel 2002). */
+static void kth_boundaries_from_both_sides(void** state)
+{
+    (void)state;
+    cw_solver* s = solved(2, CW_GRID_KALKER_STRIPS);
+    cw_wear* w = NULL;
+    assert_int_equal(cw_wear_create(s, &w), CW_OK);
+    double pz[N], slide[N];
+    int regime[N];
+    assert_int_equal(cw_solver_get_field(s, CW_FIELD_PZ, pz, N), CW_OK);
+    cw_wear_params p;
+    cw_wear_params_init(&p);
+    p.law = CW_WEAR_ARCHARD_KTH;
+    p.rolling_speed = 60.0;
+    assert_int_equal(cw_wear_compute(w, s, &p, NULL), CW_OK);
+    assert_int_equal(cw_wear_get_field(w, CW_WEAR_FIELD_SLIDING, slide, N), CW_OK);
+    int e = -1; /* the element sliding fastest */
+    for (int k = 0; k < N; ++k)
+        if (slide[k] > 0.0 && (e < 0 || slide[k] > slide[e])) e = k;
+    assert_true(e >= 0);
+    const double v = slide[e] * p.rolling_speed;
+    const struct {
+        double v1, v2, ratio, hardness;
+        int regime;
+    } cases[] = {
+        {v, 2.0 * v, 0.8, 2.5e9, 2},                    /* v = v1: severe */
+        {nextafter(v, INFINITY), 2.0 * v, 0.8, 2.5e9, 1}, /* just below v1: slow */
+        {0.5 * v, v, 0.8, 2.5e9, 2},                    /* v = v2: severe */
+        {0.5 * v, nextafter(v, 0.0), 0.8, 2.5e9, 3},    /* just above v2: fast */
+        {0.5 * v, 2.0 * v, 1.0, pz[e], 2},              /* p = ratio H: not seizure */
+        {0.5 * v, 2.0 * v, 1.0, nextafter(pz[e], 0.0), 4}, /* just above: seizure */
+    };
+    for (size_t c = 0; c < sizeof cases / sizeof cases[0]; ++c) {
+        p.kth_v1 = cases[c].v1;
+        p.kth_v2 = cases[c].v2;
+        p.kth_seizure_ratio = cases[c].ratio;
+        p.hardness = cases[c].hardness;
+        assert_int_equal(cw_wear_compute(w, s, &p, NULL), CW_OK);
+        assert_int_equal(cw_wear_get_regimes(w, regime, N), CW_OK);
+        if (regime[e] != cases[c].regime) print_error("case %zu\n", c);
+        assert_int_equal(regime[e], cases[c].regime);
+    }
+    cw_wear_destroy(w);
+    cw_solver_destroy(s);
+}
+
 /* The update helper on uneven nodes: the worn cross-section is kept,
  * sum (old - new) w = sum depth w with the cells' own widths (1e-12). */
 static void update_keeps_volume_on_uneven_nodes(void** state)
@@ -711,6 +762,7 @@ int main(int argc, char** argv)
         cmocka_unit_test(accumulation_is_bitwise_split_invariant),
         cmocka_unit_test(wheel_and_rail_passes),
         cmocka_unit_test(elements_follow_the_laws),
+        cmocka_unit_test(kth_boundaries_from_both_sides),
         cmocka_unit_test(update_keeps_volume_on_uneven_nodes),
         cmocka_unit_test(exact_model_wear),
     };

@@ -312,6 +312,39 @@ void cold_solves_are_bitwise_reproducible(void**)
     assert_true(a.state == b.state);
 }
 
+// Bitwise: a cold solve (warm_start off) on a solver whose earlier solves
+// were warm and of another a/b gives a fresh solver's bits. The normal
+// problem of a/b is then solved again from scratch: neither started from
+// the other a/b's pressure, nor taken from a warm solve of the same a/b
+// made after it.
+void cold_solve_after_warm_solves_of_another_shape(void**)
+{
+    const cw::GridSpec g = cwtest::guarded_grid(20);
+    cw::ContactInput cold = partial_slip();
+    cold.warm_start = false;
+    cw::Solver fresh(g);
+    const Snapshot a = solve(fresh, cold);
+    cw::ContactInput other = partial_slip();
+    other.a *= 1.5;
+    other.xi_x = 5e-3;
+    cw::ContactInput warm = partial_slip();
+    warm.xi_y = 1e-4;
+    for (int same_shape_first = 0; same_shape_first < 2; ++same_shape_first) {
+        cw::Solver used(g);
+        used.solve(other);                     // warm, another a/b
+        if (same_shape_first) used.solve(warm); // warm, this a/b, from the other's pressure
+        const Snapshot b = solve(used, cold);
+        assert_memory_equal(&a.t.Fx, &b.t.Fx, sizeof(double));
+        assert_memory_equal(&a.t.Fy, &b.t.Fy, sizeof(double));
+        assert_memory_equal(&a.t.Mz, &b.t.Mz, sizeof(double));
+        assert_memory_equal(&a.t.approach, &b.t.approach, sizeof(double));
+        assert_memory_equal(&a.t.W_consistent, &b.t.W_consistent, sizeof(double));
+        assert_memory_equal(a.px.data(), b.px.data(), a.px.size() * sizeof(double));
+        assert_memory_equal(a.py.data(), b.py.data(), a.py.size() * sizeof(double));
+        assert_true(a.state == b.state);
+    }
+}
+
 } // namespace
 
 int main()
@@ -324,6 +357,7 @@ int main()
         cmocka_unit_test(fields_and_totals_agree),
         cmocka_unit_test(rolling_direction_mirrors),
         cmocka_unit_test(cold_solves_are_bitwise_reproducible),
+        cmocka_unit_test(cold_solve_after_warm_solves_of_another_shape),
     };
     return cmocka_run_group_tests(tests, nullptr, nullptr);
 }

@@ -225,6 +225,8 @@ void kth_regimes(void**)
     int r = -1;
     assert_close(ww::kth_coefficient(m, 0.1, 1e9, r), 5.5e-4, 0, 0);
     assert_int_equal(r, 1);
+    assert_close(ww::kth_coefficient(m, std::nextafter(0.2, 0.0), 1e9, r), 5.5e-4, 0, 0);
+    assert_int_equal(r, 1);
     assert_close(ww::kth_coefficient(m, 0.2, 1e9, r), 35e-4, 0, 0);
     assert_int_equal(r, 2);
     assert_close(ww::kth_coefficient(m, 0.7, 1e9, r), 35e-4, 0, 0);
@@ -234,6 +236,10 @@ void kth_regimes(void**)
     assert_close(ww::kth_coefficient(m, 0.1, 2.0000001e9, r), 350e-4, 0, 0);
     assert_int_equal(r, 4);
     assert_close(ww::kth_coefficient(m, 0.1, 2.0e9, r), 5.5e-4, 0, 0); // p = 0.8 H: not yet
+    assert_int_equal(r, 1);
+    assert_close(ww::kth_coefficient(m, 0.1, std::nextafter(2.0e9, 3e9), r), 350e-4, 0, 0);
+    assert_int_equal(r, 4);
+    assert_close(ww::kth_coefficient(m, 0.1, std::nextafter(2.0e9, 0.0), r), 5.5e-4, 0, 0);
     assert_true(ww::kth_coefficient(m, 0.0, 3e9, r) == 0.0);
     assert_int_equal(r, 0);
 
