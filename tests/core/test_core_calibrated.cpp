@@ -185,7 +185,7 @@ void closer_to_exact_than_fastsim(void**)
 // with a full element step and takes the rigid slip at element centres:
 // errors of the first order in the element size. The calibrated model
 // marches from where each strip enters the ellipse and takes the slip at
-// each step's midpoint (MarchGeometry::march_from_leading_edge), so in the
+// each step's midpoint (MarchGeometry::march_from_leading_edges), so in the
 // linear limit its forces and moment on the uniform grid are much closer to
 // Kalker's. Error: the largest of |Fx/C11|, |Fy/C22|, |Fy(phi)/C23| (and
 // for the calibrated model |Mz(phi)/C33|) - 1, a/b = 1. Measured at 20, 40,
