@@ -145,9 +145,14 @@ MUTANTS = [
          file="core/wear/wear_law.hpp", old="    if (p > m.seizure_ratio * m.hardness) {",
          new="    if (p >= m.seizure_ratio * m.hardness) {", tests=WEAR),
     # The exact model.
-    dict(id="exact-spin-offset", what="exact: CONTACT's facphi 1/6 forgotten (spin centre at x)",
-         file="core/exact/exact_model.hpp", old="kExactDefaultSpinOffset = 1.0 / 6.0;",
-         new="kExactDefaultSpinOffset = 0.0;", tests=EXACT,
+    dict(id="exact-spin-offset", what="exact: CONTACT's default facphi 1/6 forgotten (the rows "
+         "give theirs)", file="core/exact/exact_model.hpp",
+         old="kExactDefaultSpinOffset = 1.0 / 6.0;", new="kExactDefaultSpinOffset = 0.0;",
+         tests=EXACT),
+    dict(id="exact-spin-slip", what="exact: the spin term of the lateral rigid slip negated",
+         file="core/exact/exact_model.cpp",
+         old="setup_.c_eta + cphi * (L.geom.X(i) + setup_.spin_offset)};",
+         new="setup_.c_eta - cphi * (L.geom.X(i) + setup_.spin_offset)};", tests=EXACT,
          require=["test_core_exact_reference"]),
     dict(id="exact-moment-arm", what="exact: sign of the y px term of Mz",
          file="core/exact/exact_model.cpp", old="mz += x * q[k].imag() - y * q[k].real();",
