@@ -26,17 +26,29 @@ void NormalProblem::project(std::vector<double>& v) const
     for (int k = 0; k < n_; ++k) v[k] = active_[k] ? v[k] - mean : 0.0;
 }
 
-// Projected preconditioned CG for A q + h = pen on the active set with
-// sum q fixed (the mean of the residual is the approach's share).
-bool NormalProblem::conjugate_gradients(GridConvolution& conv, double target, double tolerance,
-                                        int max_iterations, NormalSolveInfo& info)
+// Projected preconditioned CG for A q + h = pen on the active set, with
+// sum q fixed (the mean of the residual is the approach's share) or with
+// pen fixed (then the residual is only restricted to the set).
+bool NormalProblem::conjugate_gradients(GridConvolution& conv, bool fixed_sum, double target,
+                                        double tolerance, int max_iterations,
+                                        NormalSolveInfo& info)
 {
+    auto restrict_to_set = [&](std::vector<double>& v) {
+        if (fixed_sum)
+            project(v);
+        else
+            for (int k = 0; k < n_; ++k)
+                if (!active_[k]) v[k] = 0.0;
+    };
     conv.apply_normal(q_.data(), u_.data());
-    for (int k = 0; k < n_; ++k) r_[k] = active_[k] ? -(h_[k] + u_[k]) : 0.0;
-    project(r_);
+    if (fixed_sum)
+        for (int k = 0; k < n_; ++k) r_[k] = active_[k] ? -(h_[k] + u_[k]) : 0.0;
+    else
+        for (int k = 0; k < n_; ++k) r_[k] = active_[k] ? pen_ - h_[k] - u_[k] : 0.0;
+    restrict_to_set(r_);
     auto precondition = [&] {
         conv.apply_normal_inverse(r_.data(), z_.data());
-        project(z_);
+        restrict_to_set(z_);
     };
     auto largest = [&](const std::vector<double>& v) {
         double m = 0.0;
@@ -51,7 +63,7 @@ bool NormalProblem::conjugate_gradients(GridConvolution& conv, double target, do
     while (info.iterations < max_iterations) {
         ++info.iterations;
         conv.apply_normal(p_.data(), ap_.data());
-        project(ap_);
+        restrict_to_set(ap_);
         double pap = 0.0;
         for (int k = 0; k < n_; ++k) pap += p_[k] * ap_[k];
         if (!(pap > 0.0)) return false; // lost positive definiteness: rounding
@@ -103,6 +115,44 @@ NormalSolveInfo NormalProblem::solve(const ExactGeometry& g, GridConvolution& co
         for (int k = 0; k < n_; ++k) any = any || q_[k] > 0.0;
         if (!any) q_[nearest] = 1.0;
     }
+    active_set(conv, true, load, 0.0, tolerance, max_iterations, info);
+    return info;
+}
+
+NormalSolveInfo NormalProblem::solve_gap(GridConvolution& conv, const double* h,
+                                         const double* start, bool force, double value,
+                                         double tolerance, int max_iterations)
+{
+    NormalSolveInfo info;
+    double h_floor = h[0];
+    for (int k = 0; k < n_; ++k) {
+        h_[k] = h[k];
+        q_[k] = start[k] > 0.0 ? start[k] : 0.0;
+        h_floor = std::min(h_floor, h[k]);
+    }
+    if (!force) {
+        pen_ = value;
+        if (!(value > h_floor)) { // the surfaces do not touch
+            std::fill(q_.begin(), q_.end(), 0.0);
+            n_contact_ = 0;
+            info.converged = true;
+            return info;
+        }
+    }
+    // An empty start: the elements the rigid surfaces overlap (approach), or
+    // the lowest one (force).
+    bool any = false;
+    for (int k = 0; k < n_ && !any; ++k) any = q_[k] > 0.0;
+    for (int k = 0; k < n_ && !any; ++k)
+        if (force ? h_[k] == h_floor : h_[k] < pen_) q_[k] = 1.0;
+    active_set(conv, force, value, h_floor, tolerance, max_iterations, info);
+    return info;
+}
+
+void NormalProblem::active_set(GridConvolution& conv, bool fixed_sum, double load,
+                               double h_floor, double tolerance, int max_iterations,
+                               NormalSolveInfo& info)
+{
     n_active_ = 0;
     for (int k = 0; k < n_; ++k) {
         active_[k] = q_[k] > 0.0;
@@ -111,29 +161,38 @@ NormalSolveInfo NormalProblem::solve(const ExactGeometry& g, GridConvolution& co
 
     const int max_passes = 50;
     double target = 1.0;
-    while (info.active_set_passes < max_passes) {
+    while (info.active_set_passes < max_passes && n_active_ > 0) {
         ++info.active_set_passes;
-        double sum = 0.0;
-        for (int k = 0; k < n_; ++k) sum += active_[k] ? q_[k] : 0.0;
-        for (int k = 0; k < n_; ++k)
-            q_[k] = !active_[k] ? 0.0 : sum > 0.0 ? q_[k] * (load / sum) : load / n_active_;
-        // The approach sets the scale of the gap residual.
-        conv.apply_normal(q_.data(), u_.data());
         double pen = 0.0;
-        for (int k = 0; k < n_; ++k)
-            if (active_[k]) pen += h_[k] + u_[k];
-        target = std::max(std::fabs(pen / n_active_), 1e-300);
-        if (!conjugate_gradients(conv, target, tolerance, max_iterations, info)) break;
+        if (fixed_sum) {
+            double sum = 0.0;
+            for (int k = 0; k < n_; ++k) sum += active_[k] ? q_[k] : 0.0;
+            for (int k = 0; k < n_; ++k)
+                q_[k] = !active_[k] ? 0.0 : sum > 0.0 ? q_[k] * (load / sum) : load / n_active_;
+            // The approach sets the scale of the gap residual.
+            conv.apply_normal(q_.data(), u_.data());
+            for (int k = 0; k < n_; ++k)
+                if (active_[k]) pen += h_[k] + u_[k];
+            target = std::max(std::fabs(pen / n_active_ - h_floor), 1e-300);
+        } else {
+            for (int k = 0; k < n_; ++k)
+                if (!active_[k]) q_[k] = 0.0;
+            target = std::max(std::fabs(pen_ - h_floor), 1e-300);
+        }
+        if (!conjugate_gradients(conv, fixed_sum, target, tolerance, max_iterations, info)) break;
 
         conv.apply_normal(q_.data(), u_.data());
-        pen = 0.0;
-        for (int k = 0; k < n_; ++k)
-            if (active_[k]) pen += h_[k] + u_[k];
-        pen_ = pen / n_active_;
+        if (fixed_sum) {
+            pen = 0.0;
+            for (int k = 0; k < n_; ++k)
+                if (active_[k]) pen += h_[k] + u_[k];
+            pen_ = pen / n_active_;
+        }
+        const double depth = std::fabs(pen_ - h_floor);
         double worst = 0.0;
         for (int k = 0; k < n_; ++k)
             if (active_[k]) worst = std::max(worst, std::fabs(h_[k] - pen_ + u_[k]));
-        info.residual = worst / std::max(std::fabs(pen_), 1e-300);
+        info.residual = worst / std::max(depth, 1e-300);
 
         // Complementarity: drop tensile elements, add penetrating ones.
         bool changed = false;
@@ -143,18 +202,25 @@ NormalSolveInfo NormalProblem::solve(const ExactGeometry& g, GridConvolution& co
                 active_[k] = 0;
                 q_[k] = 0.0;
                 changed = true;
-            } else if (!active_[k] && h_[k] - pen_ + u_[k] < -tolerance * std::fabs(pen_)) {
+            } else if (!active_[k] && h_[k] - pen_ + u_[k] < -tolerance * depth) {
                 active_[k] = 1;
                 changed = true;
             }
             kept += active_[k];
         }
         n_active_ = kept;
-        if (n_active_ == 0) break; // cannot happen with a positive load; guarded
+        if (n_active_ == 0) break; // a positive load keeps one; an approach may lose all
         if (!changed) {
             info.converged = true;
             break;
         }
+    }
+    // With the approach prescribed, an empty set is the solution when every
+    // element under tension was dropped and none penetrates.
+    if (!fixed_sum && n_active_ == 0 && info.active_set_passes > 0) {
+        info.converged = true;
+        for (int k = 0; k < n_ && info.converged; ++k)
+            info.converged = h_[k] - pen_ >= -tolerance * std::fabs(pen_ - h_floor);
     }
     // A failed solve leaves no start for the next one.
     n_contact_ = 0;
@@ -162,7 +228,6 @@ NormalSolveInfo NormalProblem::solve(const ExactGeometry& g, GridConvolution& co
         if (!info.converged || q_[k] < 0.0) q_[k] = 0.0;
         n_contact_ += q_[k] > 0.0;
     }
-    return info;
 }
 
 } // namespace creepwork

@@ -1,14 +1,18 @@
-// The discrete normal contact problem of Kalker's exact theory with the
-// normal force prescribed (doc/theory/exact-discretisation.md rule 4; CONTACT's
-// m_solvpn.f90:normcg): pressures pn >= 0 and the approach pen such that
+// The discrete normal contact problem of Kalker's exact theory
+// (doc/theory/exact-discretisation.md rule 4; CONTACT's
+// m_solvpn.f90:normcg):
+// pressures pn >= 0 and the approach pen such that
 //   h_I - pen + sum_J cf33(I - J) pn_J / G  = 0 where pn_I > 0, >= 0 elsewhere,
-//   dx dy sum pn = N,
-// with the Hertzian gap h = A x^2 + B y^2 of the semi-axes a, b (hertz.hpp).
-//
-// Normalised: lengths in units of dx, pressures in units of the Hertz
-// maximum p0 = 3N/(2 pi a b), gaps in units of p0 dx / G. Then q = pn/p0
-// depends only on the grid and a/b (nu enters as a common factor 1 - nu),
-// so one solution serves every N, G and creepage.
+// with either the normal force prescribed, dx dy sum pn = N (pen unknown),
+// or the approach pen prescribed. Two gaps:
+//  - solve(): the Hertzian gap h = A x^2 + B y^2 of the semi-axes a, b
+//    (hertz.hpp), force prescribed. Normalised: lengths in units of dx,
+//    pressures in units of the Hertz maximum p0 = 3N/(2 pi a b), gaps in
+//    units of p0 dx / G. Then q = pn/p0 depends only on the grid and a/b
+//    (nu enters as a common factor 1 - nu), so one solution serves every N,
+//    G and creepage.
+//  - solve_gap(): any gap the caller gives, in units of dx, with q = pn / G,
+//    force or approach prescribed (non-Hertzian contact, gap_model.hpp).
 //
 // Method: an active-set iteration whose linear problems (a symmetric
 // positive definite system on the contact set with the force as a linear
@@ -44,6 +48,17 @@ public:
     NormalSolveInfo solve(const ExactGeometry& geom, GridConvolution& conv, bool start,
                           double tolerance, int max_iterations);
 
+    // Any gap h [i + nx j] in units of dx (nx ny values), q = pn / G.
+    // force = true: sum q = value (N / (G dx dy)), the approach is found;
+    // false: the approach is value (in dx) and sum q follows. start (nx ny
+    // values, q >= 0, not all zero) is the first guess of q; only its
+    // contact set and shape matter when the force is prescribed. The
+    // tolerance is on max |gap| / depth over the contact set, depth = the
+    // approach less the smallest h. Approach below every h: no contact,
+    // converged, q = 0.
+    NormalSolveInfo solve_gap(GridConvolution& conv, const double* h, const double* start,
+                              bool force, double value, double tolerance, int max_iterations);
+
     // q = pn / p0 per element [i + nx j] (0 outside the contact set).
     const std::vector<double>& pressure() const { return q_; }
     // The approach in units of p0 dx / G.
@@ -51,8 +66,13 @@ public:
     int n_contact() const { return n_contact_; }
 
 private:
-    bool conjugate_gradients(GridConvolution& conv, double target, double tolerance,
-                             int max_iterations, NormalSolveInfo& info);
+    // The active-set passes from q_ (h_ set): with the force prescribed
+    // (fixed_sum, sum q = load) or the approach pen_ prescribed. Residuals
+    // are measured against |pen - h_floor|.
+    void active_set(GridConvolution& conv, bool fixed_sum, double load, double h_floor,
+                    double tolerance, int max_iterations, NormalSolveInfo& info);
+    bool conjugate_gradients(GridConvolution& conv, bool fixed_sum, double target,
+                             double tolerance, int max_iterations, NormalSolveInfo& info);
     void project(std::vector<double>& v) const; // zero mean on the set, zero off it
 
     int n_;
