@@ -2,11 +2,14 @@
 // (SI recommended: m, N, Pa, 1/m); see doc/reference/conventions.md.
 #pragma once
 
+#include <cstddef>
+
 namespace creepwork {
 
 enum class GridKind {
     kalker_strips, // Kalker 1982: ny equal strips, nx equal elements per chord
     uniform,       // CONTACT: nx*ny box [-S a, S a] x [-S b, S b], centre-in-ellipse
+    gap,           // the caller's gap function on nx*ny cells of given origin and spacing
 };
 
 enum class PressureKind {
@@ -35,6 +38,21 @@ struct GridSpec {
     int nx = 20;             // elements along x (rolling direction)
     int ny = 20;             // strips across y
     double box_scale = 1.0;  // S, uniform grid only
+    // Gap grid only: centre of element (0, 0) and the spacing [m]; element
+    // (i, j) is centred at (x0 + i dx, y0 + j dy).
+    double x0 = 0.0, y0 = 0.0, dx = 0.0, dy = 0.0;
+};
+
+// What the normal problem is given on a gap grid.
+enum class NormalLoad {
+    force,    // ContactInput::normal_force; the approach is found
+    approach, // ContactInput::approach; the normal force is found
+};
+
+// How the normal problem is solved on a gap grid.
+enum class NormalMethod {
+    exact,      // Kalker's half-space problem on the grid (CONTACT's NormCG problem)
+    semi_hertz, // per row of the grid a Hertzian semi-ellipse (after Sichani et al. 2014)
 };
 
 // a/b range accepted (Kalker's table + asymptotes are used up to here).
@@ -73,6 +91,13 @@ struct ContactInput {
     // cent). The exact model's discrete normal problem carries N exactly
     // either way.
     bool exact_load = false;
+    // Gap grid only: the undeformed distance per element [i + nx j] [m]
+    // (positive = separation), gap_len >= nx ny values, and the normal load.
+    const double* gap = nullptr;
+    std::size_t gap_len = 0;
+    NormalLoad normal_load = NormalLoad::force;
+    double approach = 0.0;     // [m] from the gap's datum h = 0, when prescribed
+    NormalMethod normal_method = NormalMethod::exact;
 };
 
 // Flags in SolveTotals::work_flags.
@@ -100,6 +125,9 @@ struct SolveTotals {
     double approach = 0;                  // normal approach [m] (exact: of the grid solution)
     int iterations = 0;                   // iterative models: iterations of the last solve
     double residual = 0;                  // iterative models: final relative residual
+    double normal_force = 0;              // total normal force [N] (gap grid: found
+                                          // when the approach is prescribed)
+    int n_patches = 0;                    // gap grid: separate contact patches (4-connected)
 };
 
 } // namespace creepwork

@@ -1,0 +1,68 @@
+// A fast normal method for any gap on a regular grid: each row of the grid
+// (a strip along the rolling direction x) carries a Hertzian semi-ellipse of
+// pressure, after the analytical method of Sichani, Enblom and Berg (Vehicle
+// System Dynamics 52 (2014) 1752-1764; CONTACT's B = 6, "ANALYN"):
+//  - the row's contact locus is its lowest element, g its height above the
+//    lowest element of the whole gap;
+//  - the row's curvatures are fitted there: A along x by least squares over
+//    the deeply penetrating elements around the locus, B across by the
+//    second difference of the neighbouring rows;
+//  - Hertz's ellipse of curvatures A, B under the total depth d gives shape
+//    factors alpha = d / (A a^2), beta = d / (B b^2), and the row's local
+//    depth is d - beta g;
+//  - the row is in contact over |x - x_locus| < sqrt(depth / (alpha A)),
+//    with the semi-elliptic pressure of Hertz's ellipse under that depth.
+// Curvatures below kMinCurvature count as kMinCurvature (a flat or concave
+// row then gives a long, low patch). With the force prescribed, the depth is
+// found by a safeguarded secant iteration on the total force (continuous and
+// increasing in the depth) and the pressures are scaled to N exactly.
+//
+// Cost: O(nx ny) per iteration, about a dozen iterations with the force
+// prescribed, none with the approach. Accuracy against the exact half-space
+// solution: doc/validation/non-hertzian.md.
+#pragma once
+
+#include <vector>
+
+namespace creepwork {
+
+// Smallest curvature of a row [1/m] (a 5 m radius): CONTACT's 1e-4 1/mm.
+constexpr double kMinCurvature = 0.1;
+
+struct SemiHertzResult {
+    double approach = 0;    // [m] from the gap's datum h = 0
+    double normal_force = 0; // [N]
+    int n_contact = 0;
+    int iterations = 0;     // force evaluations (force prescribed)
+};
+
+class SemiHertz {
+public:
+    SemiHertz(int nx, int ny); // nx, ny >= 3; all workspace
+
+    // h [i + nx j]: the gap [m] on cells of size dx x dy; E* = G / (1 - nu).
+    // force = true: value = N [N] > 0; false: value = the approach [m] from
+    // the datum. pressure [i + nx j] (nx ny values) receives the pressure
+    // [Pa]. Allocates nothing.
+    SemiHertzResult solve(const double* h, double dx, double dy, double E_star, bool force,
+                          double value, double* pressure);
+
+private:
+    struct Row {
+        int locus = 0;        // i of the lowest element (kept one cell inside the row)
+        double g = 0;         // its height above the lowest element of the gap [m]
+        double B = 0;         // curvature across [1/m]
+        double A[11] = {};    // curvature along x fitted over +-k elements, k = 1..10
+        int shape_k = -1;     // the k of the cached shape factors
+        double alpha = 0, beta = 0, p_factor = 0;
+    };
+    // Total force [N] at depth d, and the pressures when out is given.
+    double force_at(double d, double* out);
+
+    int nx_, ny_;
+    double dx_ = 0, dy_ = 0, E_star_ = 0, h_min_ = 0;
+    const double* h_ = nullptr;
+    std::vector<Row> rows_;
+};
+
+} // namespace creepwork

@@ -1,0 +1,205 @@
+// The building blocks of contacts of any shape, each against an independent
+// reference: the normal problem on a given gap against the Hertzian path of
+// the same solver (the same discrete problem built two ways) and against
+// itself with the approach prescribed; the semi-Hertzian method against
+// Hertz's closed form on a paraboloid and against CONTACT's own ANALYN (B = 6)
+// on the DEV gaps (an independent implementation of the same method,
+// ../shared/reference/nonhertz/dev/fast_methods.csv); the patch labels
+// against masks labelled by hand.
+#include "gap_test_support.hpp"
+#include "test_support.h"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "contact/hertz.hpp"
+#include "exact/exact_geometry.hpp"
+#include "exact/grid_convolution.hpp"
+#include "exact/normal_problem.hpp"
+#include "nonhertz/patches.hpp"
+#include "nonhertz/semi_hertz.hpp"
+
+namespace cw = creepwork;
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+// The Hertzian normal problem on a 24 x 24 uniform grid (a/b = 1.5, nu =
+// 0.28) solved twice: from a, b (NormalProblem::solve, q = p/p0, gap in
+// p0 dx / G) and from the gap A x^2 + B y^2 itself (solve_gap, q = p/G, gap
+// in dx). The same discrete problem: pressures agree to the solver
+// tolerance (1e-10 of the approach).
+void gap_problem_matches_the_hertzian_path(void**)
+{
+    const int n = 24;
+    const double S = 1.2, ratio = 1.5, nu = 0.28, G = 82e9;
+    const cw::ExactGeometry g(n, n, S, ratio);
+    cw::GridConvolution conv(n, n);
+    conv.set_coefficients(g.rho, nu);
+    cw::NormalProblem hertz(n, n), gap(n, n);
+    const cw::NormalSolveInfo hi = hertz.solve(g, conv, false, 1e-12, 500);
+    assert_true(hi.converged);
+
+    // Physical units: a = alpha dx with dx = 1 mm, N = 1e5.
+    const double dx = 1e-3, a = g.alpha * dx, b = g.beta * dx, N = 1e5;
+    const cw::HertzCurvatures hz = cw::hertz_from_semi_axes(a, b, N, G / (1.0 - nu));
+    std::vector<double> h(n * n), start(n * n, 0.0);
+    for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i) {
+            const double x = g.X(i) * dx, y = g.Y(j) * dx;
+            h[i + n * j] = (hz.A * x * x + hz.B * y * y) / dx;
+            start[i + n * j] = (x * x / (a * a) + y * y / (b * b)) < 1.0 ? 1.0 : 0.0;
+        }
+    const double dy = g.rho * dx;
+    const cw::NormalSolveInfo gi =
+        gap.solve_gap(conv, h.data(), start.data(), true, N / (G * dx * dy), 1e-12, 500);
+    assert_true(gi.converged);
+    assert_int_equal(gap.n_contact(), hertz.n_contact());
+    double worst = 0.0;
+    for (int k = 0; k < n * n; ++k)
+        worst = std::max(worst, std::fabs(gap.pressure()[k] * G - hertz.pressure()[k] * hz.p0));
+    print_message("pressure difference %.2g of p0, approach %.2g relative\n", worst / hz.p0,
+                  std::fabs(gap.approach() * dx / (hertz.approach() * hz.p0 * dx / G) - 1.0));
+    assert_true(worst <= 1e-9 * hz.p0);
+    assert_close(gap.approach() * dx, hertz.approach() * hz.p0 * dx / G, 1e-9, 0.0);
+
+    // The approach found, prescribed: the same pressures and the force back.
+    cw::NormalProblem by_approach(n, n);
+    const cw::NormalSolveInfo ai = by_approach.solve_gap(conv, h.data(), start.data(), false,
+                                                         gap.approach(), 1e-12, 500);
+    assert_true(ai.converged);
+    double sum = 0.0, diff = 0.0;
+    for (int k = 0; k < n * n; ++k) {
+        sum += by_approach.pressure()[k];
+        diff = std::max(diff, std::fabs(by_approach.pressure()[k] - gap.pressure()[k]));
+    }
+    assert_close(sum * G * dx * dy, N, 1e-9, 0.0);
+    assert_true(diff * G <= 1e-9 * hz.p0);
+
+    // An approach below the lowest point: no contact, converged.
+    cw::NormalProblem apart(n, n);
+    const cw::NormalSolveInfo ni =
+        apart.solve_gap(conv, h.data(), start.data(), false, -1e-3, 1e-12, 500);
+    assert_true(ni.converged);
+    assert_int_equal(apart.n_contact(), 0);
+}
+
+// Hertz's paraboloid through the semi-Hertzian method: the row fits are
+// exact for a quadratic gap, so each row is a chord of Hertz's ellipse and
+// the pressure is Hertz's (Johnson 1985, eqs. 4.38-4.39) at the element
+// centres; only the force's sum over elements differs from the integral.
+void semi_hertz_reproduces_hertz_on_a_paraboloid(void**)
+{
+    const double A = 1.0 / (2 * 0.46), B = 1.0 / (2 * 0.3), N = 80e3, G = 82e9, nu = 0.28;
+    const double E = G / (1.0 - nu);
+    const cw::HertzContact hz = cw::hertz_from_curvatures(A, B, N, E);
+    for (int n : {40, 80}) {
+        const double dx = 3.0 * hz.a / n, dy = 3.0 * hz.b / n;
+        std::vector<double> h(n * n), p(n * n);
+        for (int j = 0; j < n; ++j)
+            for (int i = 0; i < n; ++i) {
+                const double x = (i + 0.5 - 0.5 * n) * dx, y = (j + 0.5 - 0.5 * n) * dy;
+                h[i + n * j] = A * x * x + B * y * y + 1e-6; // a datum 1 um below
+            }
+        cw::SemiHertz sh(n, n);
+        const cw::SemiHertzResult r = sh.solve(h.data(), dx, dy, E, true, N, p.data());
+        const double pmax = *std::max_element(p.begin(), p.end());
+        print_message("%d x %d: p_max %.3g, approach %.3g from Hertz's, %d force evaluations\n",
+                      n, n, pmax / hz.p0 - 1.0, (r.approach - 1e-6) / hz.approach - 1.0,
+                      r.iterations);
+        assert_close(r.normal_force, N, 1e-12, 0.0);
+        // The element sum of the ellipse converges as (dx/a)^(3/2).
+        const double tol = 2.0 * std::pow(3.0 / n, 1.5);
+        assert_close(r.approach - 1e-6, hz.approach, tol, 0.0);
+        assert_close(pmax, hz.p0, tol, 0.0);
+        // The approach prescribed: no iteration, the same pressures.
+        std::vector<double> q(n * n);
+        const cw::SemiHertzResult ra = sh.solve(h.data(), dx, dy, E, false, r.approach, q.data());
+        assert_close(ra.normal_force, N, 1e-9, 0.0);
+    }
+}
+
+// The DEV gaps through the semi-Hertzian method against CONTACT's ANALYN
+// (B = 6, its approach iterated to the force, |Fn/N - 1| <= 1e-12): an
+// independent implementation of one method, so element counts are equal
+// and p_max, approach agree to CONTACT's Hertz solve (its hzcalc3d stops at
+// a relative change of 1e-6, which left 1.4e-5 in p_max; this table is good
+// to 1e-9).
+void semi_hertz_matches_contacts_analyn(void**)
+{
+    const cwtest::CsvTable fm =
+        cwtest::read_csv(cwtest::shared_path("reference/nonhertz/dev/fast_methods.csv"));
+    int compared = 0;
+    double dp = 0.0, da = 0.0;
+    for (const cwtest::GapCase& c : cwtest::dev_cases()) {
+        size_t row = fm.rows.size();
+        for (size_t r = 0; r < fm.rows.size(); ++r)
+            if (fm.text(r, "case_id") == c.id && fm.text(r, "method") == "analyn-fastsim") row = r;
+        assert_true(row < fm.rows.size());
+        const cw::GridSpec& g = c.gap.grid;
+        cw::SemiHertz sh(g.nx, g.ny);
+        std::vector<double> p(c.gap.h.size());
+        const cw::SemiHertzResult r = sh.solve(c.gap.h.data(), g.dx, g.dy,
+                                               c.input.G / (1.0 - c.input.nu), true,
+                                               c.input.normal_force, p.data());
+        const double pmax = *std::max_element(p.begin(), p.end());
+        assert_int_equal(r.n_contact, static_cast<int>(fm.number(row, "n_contact")));
+        dp = std::max(dp, std::fabs(pmax / fm.number(row, "p_max_Pa") - 1.0));
+        da = std::max(da, std::fabs(r.approach / fm.number(row, "approach_m") - 1.0));
+        ++compared;
+    }
+    assert_int_equal(compared, 15);
+    print_message("against CONTACT's ANALYN: p_max %.2g, approach %.2g relative\n", dp, da);
+    assert_true(dp <= 3e-5 && da <= 3e-5);
+}
+
+std::vector<signed char> mask(const char* rows[], int ny)
+{
+    const int nx = static_cast<int>(std::strlen(rows[0]));
+    std::vector<signed char> m(nx * ny);
+    for (int j = 0; j < ny; ++j)
+        for (int i = 0; i < nx; ++i) m[i + nx * j] = rows[j][i] == '#';
+    return m;
+}
+
+// 4-connected components, numbered by first element in [i + nx j].
+void patches_are_edge_connected(void**)
+{
+    const char* rows[] = {"##..#.",  // j = 0
+                          ".#..#.",  // an L joined at (1, 1); a bar at i = 4
+                          "..#..#",  // (2, 2) touches (1, 1) only by a corner
+                          "......",
+                          "######"}; // one row-long patch
+    const std::vector<signed char> m = mask(rows, 5);
+    cw::PatchLabels L(6, 5);
+    assert_int_equal(L.label(m.data()), 5);
+    const int expect[5][6] = {{0, 0, -1, -1, 1, -1},
+                              {-1, 0, -1, -1, 1, -1},
+                              {-1, -1, 2, -1, -1, 3},
+                              {-1, -1, -1, -1, -1, -1},
+                              {4, 4, 4, 4, 4, 4}};
+    for (int j = 0; j < 5; ++j)
+        for (int i = 0; i < 6; ++i) assert_int_equal(L.of(i + 6 * j), expect[j][i]);
+    // A checkerboard: every element its own patch; an empty mask: none.
+    std::vector<signed char> chess(8 * 8), none(8 * 8, 0);
+    for (int k = 0; k < 64; ++k) chess[k] = ((k % 8) + (k / 8)) % 2;
+    cw::PatchLabels C(8, 8);
+    assert_int_equal(C.label(chess.data()), 32);
+    assert_int_equal(C.label(none.data()), 0);
+    assert_int_equal(C.of(0), -1);
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(gap_problem_matches_the_hertzian_path),
+        cmocka_unit_test(semi_hertz_reproduces_hertz_on_a_paraboloid),
+        cmocka_unit_test(semi_hertz_matches_contacts_analyn),
+        cmocka_unit_test(patches_are_edge_connected),
+    };
+    return cw_run_tests(tests, argc > 1 ? argv[1] : nullptr);
+}
