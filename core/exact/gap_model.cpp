@@ -1,0 +1,569 @@
+#include "exact/gap_model.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <string>
+
+#include "contact/contact_input.hpp"
+#include "contact/error.hpp"
+#include "contact/kalker_coefficients.hpp"
+#include "exact/exact_work.hpp"
+
+namespace creepwork {
+namespace {
+
+// As ExactModel's (exact_model.cpp, where each is measured).
+constexpr int kKrylovDimension = 40;
+constexpr int kMinCoarseCells = 10;
+constexpr double kCoarseTolerance = 1e-1;
+constexpr double kNormalTolerance = 1e-10;
+constexpr int kNormalMaxIterations = 500;
+constexpr double kMaxNormalisedCreepage = 1e100;
+
+std::string number(double v)
+{
+    std::ostringstream s;
+    s.precision(17);
+    s << v;
+    return s.str();
+}
+
+// The grid, checked before anything is allocated for it.
+const GridSpec& checked(const GridSpec& g)
+{
+    if (g.kind != GridKind::gap)
+        throw Error(ErrorKind::invalid_input, "the gap model needs a gap grid");
+    for (const auto& [name, v] : {std::pair<const char*, int>{"nx", g.nx}, {"ny", g.ny}})
+        if (v < kMinGapCells || v > kMaxExactCells)
+            throw Error(ErrorKind::grid_out_of_range,
+                        std::string(name) + " = " + std::to_string(v) + " is outside " +
+                            std::to_string(kMinGapCells) + " ... " +
+                            std::to_string(kMaxExactCells) + " for a gap grid");
+    for (const auto& [name, v] : {std::pair<const char*, double>{"x0", g.x0}, {"y0", g.y0}})
+        if (!std::isfinite(v) || std::fabs(v) > 1e6)
+            throw Error(ErrorKind::invalid_input,
+                        std::string(name) + " = " + number(v) +
+                            " is invalid: the gap grid's origin must be finite, within 1e6");
+    for (const auto& [name, v] : {std::pair<const char*, double>{"dx", g.dx}, {"dy", g.dy}})
+        if (!(v > 0.0 && v <= 1e3))
+            throw Error(ErrorKind::invalid_input,
+                        std::string(name) + " = " + number(v) +
+                            " is invalid: the gap grid's spacing must be > 0 (and <= 1e3)");
+    const double ratio = g.dy / g.dx;
+    if (!(ratio >= 0.05 && ratio <= 20.0))
+        throw Error(ErrorKind::invalid_input,
+                    "dy/dx = " + number(ratio) +
+                        " is invalid: the gap grid's cells must have dy/dx in [0.05, 20]");
+    return g;
+}
+
+} // namespace
+
+GapModel::Level::Level(int nx_, int ny_)
+    : nx(nx_), ny(ny_), conv(nx_, ny_), tangential(nx_, ny_, kKrylovDimension)
+{
+}
+
+GapModel::GapModel(const GridSpec& grid)
+    : grid_(checked(grid)), nx_(grid.nx), ny_(grid.ny), normal_(grid.nx, grid.ny),
+      semi_hertz_(grid.nx, grid.ny), labels_(grid.nx, grid.ny)
+{
+    int nx = nx_, ny = ny_;
+    levels_.push_back(std::make_unique<Level>(nx, ny));
+    while ((nx + 1) / 2 >= kMinCoarseCells && (ny + 1) / 2 >= kMinCoarseCells) {
+        nx = (nx + 1) / 2;
+        ny = (ny + 1) / 2;
+        levels_.push_back(std::make_unique<Level>(nx, ny));
+    }
+    for (auto& L : levels_) {
+        L->dx = grid.dx * nx_ / L->nx;
+        L->dy = grid.dy * ny_ / L->ny;
+    }
+    const size_t n = static_cast<size_t>(nx_) * ny_;
+    for (auto* v : {&gap_, &gap_in_dx_, &pressure_, &start_, &held_gap_, &paper_, &consistent_})
+        v->assign(n, 0.0);
+    in_contact_.assign(n, 0);
+    previous_q_.assign(n, SteadyRolling::Complex(0.0, 0.0));
+    for (auto* v : {&profile_, &row_d_, &row_pool_}) v->assign(ny_, 0.0);
+    // At most one patch per two elements (4-connected components of a
+    // checkerboard's contact elements).
+    patches_.reserve(n / 2 + 1);
+}
+
+GapModel::~GapModel() = default;
+
+void GapModel::validate(const ContactInput& in) const
+{
+    if (in.model != ModelKind::exact)
+        throw Error(ErrorKind::invalid_input,
+                    "model = " + std::string(in.model == ModelKind::fastsim ? "fastsim"
+                                                                            : "calibrated") +
+                        " is invalid on a gap grid: a contact of any shape is solved by the "
+                        "exact model (model = exact)");
+    if (in.flexibility != FlexibilitySource::kalker_from_material)
+        throw Error(ErrorKind::invalid_input,
+                    "flexibility = given is invalid for model = exact: the exact theory needs "
+                    "the material (G, nu), not L1, L2, L3");
+    const size_t n = static_cast<size_t>(nx_) * ny_;
+    if (!in.gap)
+        throw Error(ErrorKind::invalid_input, "gap is NULL: a gap grid needs the undeformed "
+                                              "distance of every element");
+    if (in.gap_len < n)
+        throw Error(ErrorKind::invalid_input,
+                    "gap_len = " + std::to_string(in.gap_len) + " is invalid: the gap grid has " +
+                        std::to_string(n) + " elements");
+    for (size_t k = 0; k < n; ++k)
+        if (!std::isfinite(in.gap[k]) || std::fabs(in.gap[k]) > 1.0)
+            throw Error(ErrorKind::invalid_input,
+                        "gap[" + std::to_string(k) + "] = " + number(in.gap[k]) +
+                            " is invalid: the undeformed distance must be finite, within 1 m");
+    if (in.normal_load == NormalLoad::force)
+        require_non_negative("normal_force", in.normal_force);
+    else if (in.normal_load == NormalLoad::approach) {
+        require_finite("approach", in.approach);
+        if (std::fabs(in.approach) > 1.0)
+            reject_input("approach", in.approach, "must lie within 1 m of the gap's datum");
+    } else
+        reject_input("normal_load", static_cast<double>(in.normal_load), "unknown normal load");
+    if (in.normal_method != NormalMethod::exact && in.normal_method != NormalMethod::semi_hertz)
+        reject_input("normal_method", static_cast<double>(in.normal_method),
+                     "unknown normal method");
+    require_non_negative("mu", in.mu);
+    require_positive("G", in.G);
+    require_finite("nu", in.nu);
+    if (!(in.nu >= 0.0 && in.nu <= 0.5)) reject_input("nu", in.nu, "must lie in [0, 0.5]");
+    require_finite("xi_x", in.xi_x);
+    require_finite("xi_y", in.xi_y);
+    require_finite("phi", in.phi);
+    if (in.rolling_direction != 1 && in.rolling_direction != -1)
+        reject_input("rolling_direction", in.rolling_direction, "must be +1 or -1");
+    require_non_negative("tolerance", in.tolerance);
+    if (in.tolerance != 0.0 && !(in.tolerance >= 1e-13 && in.tolerance < 1.0))
+        reject_input("tolerance", in.tolerance,
+                     "must be 0 (the default, 1e-8) or in [1e-13, 1) for model = exact: "
+                     "double precision cannot resolve less");
+    if (in.max_iterations < 0)
+        reject_input("max_iterations", in.max_iterations, "must be >= 0 (0: the model's default)");
+    require_finite("spin_offset", in.spin_offset);
+    if (in.spin_offset > 1.0)
+        reject_input("spin_offset", in.spin_offset,
+                     "must lie in [0, 1] (a fraction of the element length), or be negative "
+                     "for the model's default");
+}
+
+bool GapModel::same_normal_problem(const ContactInput& in) const
+{
+    if (!held_.valid || held_.load != in.normal_load || held_.method != in.normal_method ||
+        held_.nu != in.nu || held_.G != in.G || held_.direction != in.rolling_direction)
+        return false;
+    const double value = in.normal_load == NormalLoad::force ? in.normal_force : in.approach;
+    if (held_.value != value) return false;
+    const size_t n = static_cast<size_t>(nx_) * ny_;
+    for (size_t k = 0; k < n; ++k)
+        if (held_gap_[k] != in.gap[k]) return false;
+    return true;
+}
+
+void GapModel::solve_normal(const ContactInput& in, bool warm)
+{
+    Level& fine = *levels_[0];
+    const size_t n = static_cast<size_t>(nx_) * ny_;
+    const bool force = in.normal_load == NormalLoad::force;
+    const double E_star = in.G / (1.0 - in.nu);
+    held_.valid = false;
+    // A start from the last pressure, mirrored if the rolling direction changed.
+    const bool from_last = warm && held_.force > 0.0 && held_.method == NormalMethod::exact;
+    if (from_last)
+        for (int j = 0; j < ny_; ++j)
+            for (int i = 0; i < nx_; ++i)
+                start_[i + nx_ * j] =
+                    pressure_[(held_.direction == setup_.direction ? i : nx_ - 1 - i) + nx_ * j] /
+                    in.G;
+
+    double approach = 0.0, total = 0.0;
+    if (force && in.normal_force == 0.0) {
+        std::fill(pressure_.begin(), pressure_.end(), 0.0);
+        approach = *std::min_element(gap_.begin(), gap_.end()); // the surfaces just touch
+    } else if (in.normal_method == NormalMethod::semi_hertz || !from_last) {
+        const SemiHertzResult r = semi_hertz_.solve(gap_.data(), fine.dx, fine.dy, E_star, force,
+                                                    force ? in.normal_force : in.approach,
+                                                    pressure_.data());
+        info_.semi_hertz_iterations = r.iterations;
+        approach = r.approach;
+        if (in.normal_method == NormalMethod::exact)
+            for (size_t k = 0; k < n; ++k) start_[k] = pressure_[k] / in.G;
+    }
+    if (in.normal_method == NormalMethod::exact && !(force && in.normal_force == 0.0)) {
+        for (size_t k = 0; k < n; ++k) gap_in_dx_[k] = gap_[k] / fine.dx;
+        const double value = force ? in.normal_force / (in.G * fine.dx * fine.dy)
+                                   : in.approach / fine.dx;
+        const NormalSolveInfo ni =
+            normal_.solve_gap(fine.conv, gap_in_dx_.data(), start_.data(), force, value,
+                              kNormalTolerance, kNormalMaxIterations);
+        info_.normal_iterations += ni.iterations;
+        if (!ni.converged)
+            throw Error(ErrorKind::not_converged,
+                        "the normal problem on the gap did not converge (residual " +
+                            number(ni.residual) + " after " + std::to_string(ni.iterations) +
+                            " iterations)");
+        const std::vector<double>& q = normal_.pressure();
+        for (size_t k = 0; k < n; ++k) pressure_[k] = q[k] * in.G;
+        approach = normal_.approach() * fine.dx;
+    }
+    for (size_t k = 0; k < n; ++k) total += pressure_[k];
+    held_.force = total * fine.dx * fine.dy;
+    held_.approach = approach;
+    held_.load = in.normal_load;
+    held_.method = in.normal_method;
+    held_.value = force ? in.normal_force : in.approach;
+    held_.nu = in.nu;
+    held_.G = in.G;
+    held_.direction = in.rolling_direction;
+    std::copy(in.gap, in.gap + n, held_gap_.begin());
+    held_.valid = true;
+}
+
+void GapModel::set_rigid_slip(Level& L) const
+{
+    // w = (xi - phi y, eta + phi (x + spin_offset dx)) at element centres, in
+    // units of mu p_max / G (setup_: already divided), rolling frame.
+    const Setup& s = setup_;
+    std::vector<SteadyRolling::Complex>& w = L.tangential.rigid_slip();
+    for (int j = 0; j < L.ny; ++j) {
+        const double y = L.y0 + j * L.dy;
+        for (int i = 0; i < L.nx; ++i) {
+            const double x = L.x0 + i * L.dx;
+            w[i + L.nx * j] = {s.xi - s.phi * y, s.eta + s.phi * (x + s.spin_offset * L.dx)};
+        }
+    }
+}
+
+// Bilinear interpolation of the fine bound at the coarse element centres.
+void GapModel::sample_bound(Level& F, Level& C) const
+{
+    const std::vector<double>& gf = F.tangential.bound();
+    std::vector<double>& gc = C.tangential.bound();
+    for (int j = 0; j < C.ny; ++j) {
+        const double ty = std::min(std::max((C.y0 + j * C.dy - F.y0) / F.dy, 0.0), F.ny - 1.0);
+        const int j0 = std::min(static_cast<int>(ty), F.ny - 2);
+        const double fy = ty - j0;
+        for (int i = 0; i < C.nx; ++i) {
+            const double tx =
+                std::min(std::max((C.x0 + i * C.dx - F.x0) / F.dx, 0.0), F.nx - 1.0);
+            const int i0 = std::min(static_cast<int>(tx), F.nx - 2);
+            const double fx = tx - i0;
+            const double* g = gf.data() + i0 + static_cast<size_t>(F.nx) * j0;
+            gc[i + C.nx * j] = (1.0 - fy) * ((1.0 - fx) * g[0] + fx * g[1]) +
+                               fy * ((1.0 - fx) * g[F.nx] + fx * g[F.nx + 1]);
+        }
+    }
+}
+
+// Bilinear interpolation of the coarse traction at the fine element centres
+// (clipped to the fine bound by the fine solver).
+void GapModel::interpolate(const Level& C, Level& F) const
+{
+    const std::vector<SteadyRolling::Complex>& qc = C.tangential.traction();
+    std::vector<SteadyRolling::Complex>& qf = F.tangential.traction();
+    for (int j = 0; j < F.ny; ++j) {
+        const double ty = (F.y0 + j * F.dy - C.y0) / C.dy;
+        const int j0 = static_cast<int>(std::floor(ty));
+        const double fy = ty - j0;
+        for (int i = 0; i < F.nx; ++i) {
+            const double tx = (F.x0 + i * F.dx - C.x0) / C.dx;
+            const int i0 = static_cast<int>(std::floor(tx));
+            const double fx = tx - i0;
+            SteadyRolling::Complex v(0.0, 0.0);
+            for (int dj = 0; dj < 2; ++dj)
+                for (int di = 0; di < 2; ++di) {
+                    const int ii = std::min(std::max(i0 + di, 0), C.nx - 1);
+                    const int jj = std::min(std::max(j0 + dj, 0), C.ny - 1);
+                    v += (di ? fx : 1.0 - fx) * (dj ? fy : 1.0 - fy) * qc[ii + C.nx * jj];
+                }
+            qf[i + F.nx * j] = v;
+        }
+    }
+}
+
+// Kalker's simplified theory as the first guess on the coarsest grid: each
+// row marched from its leading edge, restarting behind every gap in the
+// contact, with the flexibilities of one ellipse: the patches' equivalent
+// ellipses (semi-axes twice the root-mean-square extent of their elements)
+// averaged by area.
+void GapModel::march_start(Level& L, double nu, double G)
+{
+    const int count = labels_.count();
+    double a = 0.0, b = 0.0, weight = 0.0;
+    for (int p = 0; p < count; ++p) {
+        double n = 0.0, sx = 0.0, sy = 0.0, sxx = 0.0, syy = 0.0;
+        for (int j = 0; j < ny_; ++j)
+            for (int i = 0; i < nx_; ++i) { // rolling frame
+                if (labels_.of(caller_index(i) + nx_ * j) != p) continue;
+                const double x = i * grid_.dx, y = j * grid_.dy;
+                n += 1.0;
+                sx += x;
+                sy += y;
+                sxx += x * x;
+                syy += y * y;
+            }
+        const double vx = std::max(sxx / n - (sx / n) * (sx / n), 0.0) + grid_.dx * grid_.dx / 12;
+        const double vy = std::max(syy / n - (sy / n) * (sy / n), 0.0) + grid_.dy * grid_.dy / 12;
+        a += n * 2.0 * std::sqrt(vx);
+        b += n * 2.0 * std::sqrt(vy);
+        weight += n;
+    }
+    a /= weight;
+    b /= weight;
+    const double ratio = std::min(std::max(a / b, kMinAspect), kMaxAspect);
+    const Flexibilities F = kalker_flexibilities(a, b, G, kalker_coefficients(ratio, nu));
+    const double l1 = L.dx / (F.L1 * G), l2 = L.dx / (F.L2 * G), l3 = L.dx / (F.L3 * G);
+    const Setup& s = setup_;
+    const std::vector<double>& g = L.tangential.bound();
+    std::vector<SteadyRolling::Complex>& q = L.tangential.traction();
+    for (int j = 0; j < L.ny; ++j) {
+        const double y = L.y0 + j * L.dy;
+        SteadyRolling::Complex prev(0.0, 0.0);
+        for (int i = L.nx - 1; i >= 0; --i) {
+            const int k = i + L.nx * j;
+            if (!(g[k] > 0.0)) {
+                q[k] = prev = 0.0;
+                continue;
+            }
+            const double x = L.x0 + i * L.dx;
+            SteadyRolling::Complex next =
+                prev - SteadyRolling::Complex(l1 * s.xi - l3 * s.phi * y, l2 * s.eta + l3 * s.phi * x);
+            const double m = std::abs(next);
+            if (m > g[k]) next *= g[k] / m;
+            q[k] = prev = next;
+        }
+    }
+}
+
+void GapModel::label_patches(SolveTotals& t)
+{
+    // Caller's layout.
+    for (int j = 0; j < ny_; ++j)
+        for (int i = 0; i < nx_; ++i)
+            in_contact_[i + nx_ * j] = pressure_[caller_index(i) + nx_ * j] > 0.0;
+    t.n_patches = labels_.label(in_contact_.data());
+}
+
+SolveTotals GapModel::solve(const ContactInput& in, SolveMode mode)
+{
+    const bool had_previous = has_previous_;
+    has_previous_ = false; // until this solve succeeds
+    info_ = GapSolveInfo{};
+    validate(in);
+    const double tolerance = in.tolerance > 0.0 ? in.tolerance : kExactDefaultTolerance;
+    const int max_steps = in.max_iterations > 0 ? in.max_iterations : kExactDefaultMaxIterations;
+    const double nu = in.nu, G = in.G;
+
+    Setup& s = setup_;
+    s = Setup{};
+    s.direction = in.rolling_direction;
+    s.spin_offset = in.spin_offset >= 0.0 ? in.spin_offset : kExactDefaultSpinOffset;
+    s.full = mode == SolveMode::full;
+    s.G = G;
+
+    // The levels over the grid's box, in the rolling frame.
+    const double left = s.direction > 0 ? grid_.x0 - 0.5 * grid_.dx
+                                        : -(grid_.x0 + (nx_ - 0.5) * grid_.dx);
+    const double bottom = grid_.y0 - 0.5 * grid_.dy;
+    for (auto& L : levels_) {
+        L->x0 = left + 0.5 * L->dx;
+        L->y0 = bottom + 0.5 * L->dy;
+        L->conv.set_coefficients(L->dy / L->dx, nu);
+    }
+    Level& fine = *levels_[0];
+    for (int j = 0; j < ny_; ++j)
+        for (int i = 0; i < nx_; ++i) gap_[i + nx_ * j] = in.gap[caller_index(i) + nx_ * j];
+
+    const bool warm = in.warm_start && had_previous;
+    if (!(warm && same_normal_problem(in))) solve_normal(in, warm);
+    else info_.normal_reused = true;
+
+    const size_t n = static_cast<size_t>(nx_) * ny_;
+    double p_ref = 0.0;
+    for (size_t k = 0; k < n; ++k) p_ref = std::max(p_ref, pressure_[k]);
+    const bool loaded = p_ref > 0.0;
+    s.loaded = loaded;
+    s.p_ref = p_ref;
+    s.traction_scale = in.mu * p_ref;
+    SolveTotals t;
+    label_patches(t);
+
+    // Rigid slip over mu p_max / G (the rigid slip itself without friction
+    // or load), scaled down together beyond kMaxNormalisedCreepage.
+    const double T = s.traction_scale;
+    const double inv = T > 0.0 ? G / T : 1.0;
+    s.slip_scale = T > 0.0 ? T / G : 1.0;
+    s.xi = s.direction * in.xi_x * inv;
+    s.eta = in.xi_y * inv;
+    s.phi = s.direction * in.phi * inv;
+    const double reach = std::max({std::fabs(grid_.x0), std::fabs(grid_.x0 + nx_ * grid_.dx),
+                                   std::fabs(grid_.y0), std::fabs(grid_.y0 + ny_ * grid_.dy)});
+    const double largest = std::max({std::fabs(s.xi), std::fabs(s.eta), std::fabs(s.phi) * reach});
+    if (!std::isfinite(largest))
+        throw Error(ErrorKind::invalid_input,
+                    "xi_x, xi_y or phi is so large that the rigid slip overflows");
+    if (largest > kMaxNormalisedCreepage) {
+        const double f = kMaxNormalisedCreepage / largest;
+        s.xi *= f;
+        s.eta *= f;
+        s.phi *= f;
+        s.slip_scale /= f;
+    }
+
+    std::vector<double>& g = fine.tangential.bound();
+    for (size_t k = 0; k < n; ++k) g[k] = loaded ? pressure_[k] / p_ref : 0.0;
+    set_rigid_slip(fine);
+    const bool trivial = !loaded || !(T > 0.0);
+
+    SteadyRollingInfo ti;
+    auto cold = [&] {
+        const int coarsest = static_cast<int>(levels_.size()) - 1;
+        for (int l = coarsest; l >= 0; --l) {
+            Level& L = *levels_[l];
+            if (l > 0) {
+                sample_bound(fine, L);
+                set_rigid_slip(L);
+            }
+            if (l == coarsest)
+                march_start(L, nu, G);
+            else
+                interpolate(*levels_[l + 1], L);
+            ti = L.tangential.solve(L.conv, l == 0 ? tolerance
+                                                   : std::max(tolerance, kCoarseTolerance),
+                                    max_steps);
+            info_.products += ti.products;
+            ++info_.levels_used;
+        }
+    };
+    const bool rolling_freely = s.xi == 0.0 && s.eta == 0.0 && s.phi == 0.0;
+    std::vector<SteadyRolling::Complex>& q = fine.tangential.traction();
+    if (rolling_freely && !trivial) {
+        std::fill(q.begin(), q.end(), 0.0);
+        ti = fine.tangential.solve(fine.conv, tolerance, max_steps); // one sweep
+        info_.products += ti.products;
+        info_.levels_used = 1;
+    } else if (trivial) {
+        fine.tangential.slide_freely(g);
+        ti.converged = true;
+        info_.levels_used = 1;
+    } else if (warm) {
+        info_.warm = true;
+        const double f = previous_traction_scale_ / T;
+        for (size_t k = 0; k < n; ++k) q[k] = previous_q_[k] * f;
+        ti = fine.tangential.solve(fine.conv, tolerance, max_steps);
+        info_.products += ti.products;
+        info_.levels_used = 1;
+        if (!ti.converged) {
+            info_.retried_cold = true;
+            cold();
+        }
+    } else {
+        cold();
+    }
+    info_.newton_steps = ti.newton_steps;
+    if (!ti.converged)
+        throw Error(ErrorKind::not_converged,
+                    "model = exact did not converge: residual " + number(ti.residual) +
+                        " > tolerance " + number(tolerance) + " after " +
+                        std::to_string(ti.newton_steps) +
+                        " Newton steps (max_iterations); raise max_iterations or tolerance");
+
+    // Totals and patches in the caller's frame, element by element in the
+    // caller's layout.
+    const std::vector<signed char>& state = fine.tangential.state();
+    const double area = grid_.dx * grid_.dy, d = s.direction;
+    patches_.assign(labels_.count(), PatchTotals{});
+    double y_lo = 0.0, y_hi = 0.0, x_lo = 0.0, x_hi = 0.0;
+    bool first = true;
+    for (int j = 0; j < ny_; ++j) {
+        const double y = grid_.y0 + j * grid_.dy;
+        for (int i = 0; i < nx_; ++i) {
+            const int c = i + nx_ * j, k = caller_index(i) + nx_ * j;
+            const int p = labels_.of(c);
+            if (p < 0) continue;
+            const double x = grid_.x0 + i * grid_.dx;
+            const double px = d * T * q[k].real() * area, py = T * q[k].imag() * area;
+            PatchTotals& P = patches_[p];
+            ++P.n_contact;
+            P.n_slip += state[k] == 2;
+            P.x_centroid += x;
+            P.y_centroid += y;
+            P.Fx += px;
+            P.Fy += py;
+            P.Mz += x * py - y * px;
+            P.Fn += pressure_[k] * area;
+            P.p_max = std::max(P.p_max, pressure_[k]);
+            if (first) {
+                x_lo = x_hi = x;
+                y_lo = y_hi = y;
+                first = false;
+            }
+            x_lo = std::min(x_lo, x), x_hi = std::max(x_hi, x);
+            y_lo = std::min(y_lo, y), y_hi = std::max(y_hi, y);
+        }
+    }
+    t.model = ModelKind::exact;
+    for (PatchTotals& P : patches_) {
+        P.n_adhesion = P.n_contact - P.n_slip;
+        P.x_centroid /= P.n_contact;
+        P.y_centroid /= P.n_contact;
+        P.W_macro = -(P.Fx * in.xi_x + P.Fy * in.xi_y + P.Mz * in.phi);
+        t.Fx += P.Fx;
+        t.Fy += P.Fy;
+        t.Mz += P.Mz;
+        t.n_contact += P.n_contact;
+        t.n_slip += P.n_slip;
+    }
+    t.W_macro = -(t.Fx * in.xi_x + t.Fy * in.xi_y + t.Mz * in.phi);
+    t.n_adhesion = t.n_contact - t.n_slip;
+    t.adhesion_fraction = t.n_contact > 0 ? double(t.n_adhesion) / t.n_contact : 0.0;
+    // Half the extent of the contact along x and y (element edges).
+    t.a = first ? 0.0 : 0.5 * (x_hi - x_lo + grid_.dx);
+    t.b = first ? 0.0 : 0.5 * (y_hi - y_lo + grid_.dy);
+    s.y_mid = first ? 0.0 : 0.5 * (y_lo + y_hi);
+    s.half_width = t.b;
+    t.p_max = p_ref;
+    t.approach = held_.approach;
+    t.normal_force = held_.force;
+    t.iterations = ti.newton_steps;
+    t.residual = ti.residual;
+
+    if (s.full) {
+        ExactWorkInput w;
+        w.nx = nx_;
+        w.ny = ny_;
+        w.q = q.data();
+        w.s = fine.tangential.slip().data();
+        w.w = fine.tangential.rigid_slip().data();
+        w.state = state.data();
+        w.traction_scale = T;
+        w.slip_scale = s.slip_scale;
+        w.area = area;
+        w.dy = grid_.dy;
+        w.b = s.half_width > 0.0 ? s.half_width : grid_.dy;
+        w.y0 = grid_.y0 - s.y_mid;
+        w.W_macro = t.W_macro;
+        const ExactWorkTotals wt = exact_work(w, paper_.data(), consistent_.data(),
+                                              profile_.data(), row_d_.data(), row_pool_.data());
+        t.W_micro_paper = wt.W_micro_paper;
+        t.K = wt.W_micro_paper != 0.0 ? t.W_macro / wt.W_micro_paper : 0.0;
+        t.W_consistent = wt.W_consistent;
+        t.balance_factor = wt.balance;
+        t.work_flags = wt.flags;
+        t.profile_max_diff = wt.profile_max_diff;
+        t.profile_rms_diff = wt.profile_rms_diff;
+    }
+    has_previous_ = !trivial;
+    if (!trivial) {
+        std::copy(q.begin(), q.end(), previous_q_.begin());
+        previous_traction_scale_ = T;
+    }
+    return t;
+}
+
+} // namespace creepwork

@@ -1,0 +1,150 @@
+// Kalker's exact half-space theory of steady rolling on a contact of any
+// shape: the caller gives the undeformed distance (the gap) on a regular
+// grid, which is the potential contact area (CONTACT's module 3 with
+// IBASE = 9). Made once per grid -- every workspace, FFT plan and
+// coefficient table -- then solve() many times without allocating.
+//
+// One solve:
+//  1. the normal problem on the gap (normal_problem.hpp, solve_gap), with the
+//     normal force or the approach prescribed, started from the last solution
+//     or from the semi-Hertzian method (nonhertz/semi_hertz.hpp); or, with
+//     NormalMethod::semi_hertz, that method alone;
+//  2. the tangential problem of steady rolling (steady_rolling.hpp) with the
+//     rigid slip w = (xi - phi y, eta + phi (x + spin_offset dx)) at the
+//     element centres, x and y from the grid's origin; every patch of the
+//     grid at once;
+//  3. the separate patches (nonhertz/patches.hpp) and their totals, and in
+//     full mode the work maps (exact_work.hpp).
+// The tangential problem starts from the last solution (warm) or from a
+// hierarchy of coarser grids over the same box, each solved from the one
+// below it, the coarsest from a march of Kalker's simplified theory with the
+// flexibilities of the patches' equivalent ellipses; the coarse grids take
+// the fine pressure interpolated at their centres. When the gap, the load
+// and the material are those of the last solve, its normal solution is kept
+// (a creepage sweep solves only the tangential problem).
+//
+// Units and frames as ExactModel's: the rolling frame (leading edge at +x;
+// rolling_direction = -1 mirrors x), tractions in units of mu p_max with
+// p_max the largest element pressure. Fields, totals and patches are
+// reported in the caller's frame; Mz about the grid's origin.
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include "contact/fields.hpp"
+#include "contact/params.hpp"
+#include "exact/exact_model.hpp"
+#include "exact/grid_convolution.hpp"
+#include "exact/normal_problem.hpp"
+#include "exact/steady_rolling.hpp"
+#include "nonhertz/patches.hpp"
+#include "nonhertz/semi_hertz.hpp"
+
+namespace creepwork {
+
+// Smallest gap grid per direction (the semi-Hertzian method fits curvatures
+// over three cells).
+constexpr int kMinGapCells = 3;
+
+// Diagnostics of the last solve.
+struct GapSolveInfo {
+    int levels_used = 0;           // grids of the tangential solve (1 for a warm start)
+    int newton_steps = 0;          // on the finest grid
+    int products = 0;              // FFT products of the tangential solve, all grids
+    int normal_iterations = 0;     // conjugate-gradient iterations of the normal problem
+    int semi_hertz_iterations = 0; // force evaluations of the semi-Hertzian method
+    bool normal_reused = false;    // the last normal solution was kept (same gap and load)
+    bool warm = false;             // the tangential problem started from the last solution
+    bool retried_cold = false;
+};
+
+class GapModel {
+public:
+    // Throws Error(invalid_input) unless grid.kind is gap with finite origin
+    // and positive spacing, Error(grid_out_of_range) outside 3 ...
+    // kMaxExactCells cells per direction.
+    explicit GapModel(const GridSpec& grid);
+    ~GapModel();
+
+    // Throws Error naming a bad input, or Error(not_converged).
+    SolveTotals solve(const ContactInput& input, SolveMode mode);
+
+    const GapSolveInfo& info() const { return info_; }
+    int nx() const { return nx_; }
+    int ny() const { return ny_; }
+
+    // Of the last successful solve, in the caller's layout [i + nx j].
+    void copy_field(Field f, double* out) const;
+    void add_field(Field f, double scale, double* out) const; // out += scale * field
+    void copy_state(int* out) const;
+    // Per row j < ny: centre y [m], energy-consistent work per unit width,
+    // and the equal-area parabola of total W over the contact's lateral
+    // extent (centred on it).
+    void copy_profile(double W, double* y, double* work, double* parabola) const;
+    // Per row j < ny: centre y [m] and width dy [m] (the wear's strips).
+    void copy_strips(double* y, double* width) const;
+    // The separate patches of the last solve (4-connected), caller's frame.
+    const std::vector<PatchTotals>& patches() const { return patches_; }
+
+private:
+    struct Level {
+        Level(int nx, int ny);
+        int nx, ny;
+        double dx = 0, dy = 0; // [m]
+        double x0 = 0, y0 = 0; // centre of element (0, 0), rolling frame [m]
+        GridConvolution conv;
+        SteadyRolling tangential;
+    };
+    template <class Op>
+    void export_field(Field f, const Op& op, double* out) const;
+    void validate(const ContactInput& in) const;
+    bool same_normal_problem(const ContactInput& in) const;
+    void solve_normal(const ContactInput& in, bool warm);
+    void set_rigid_slip(Level& L) const;
+    void sample_bound(Level& fine, Level& coarse) const; // fine is only read
+    void interpolate(const Level& coarse, Level& fine) const;
+    void march_start(Level& L, double nu, double G);
+    void label_patches(SolveTotals& t);
+    int caller_index(int i) const { return setup_.direction > 0 ? i : nx_ - 1 - i; }
+
+    GridSpec grid_;
+    int nx_, ny_;
+    std::vector<std::unique_ptr<Level>> levels_; // [0] is the caller's grid
+    NormalProblem normal_;
+    SemiHertz semi_hertz_;
+    PatchLabels labels_;
+    GapSolveInfo info_;
+    bool has_previous_ = false;
+
+    // The last solve (rolling frame).
+    struct Setup {
+        int direction = 1;
+        double p_ref = 0;          // largest element pressure [Pa]
+        double traction_scale = 0; // mu p_ref [Pa]
+        double slip_scale = 0;     // unit of the normalised slip [-]
+        double xi = 0, eta = 0, phi = 0;        // rolling frame, physical
+        double spin_offset = 0;
+        double G = 0;
+        double y_mid = 0, half_width = 0;       // lateral centre and half extent of the contact [m]
+        bool full = false, loaded = false;
+    } setup_;
+    // The normal problem held: its gap (rolling frame, in dx), load and
+    // material, and the pressure it gave [Pa] (rolling frame).
+    struct NormalHeld {
+        bool valid = false;
+        NormalLoad load = NormalLoad::force;
+        NormalMethod method = NormalMethod::exact;
+        double value = 0, nu = 0, G = 0;
+        int direction = 1;
+        double approach = 0, force = 0;
+    } held_;
+    std::vector<double> gap_, gap_in_dx_, pressure_, start_, held_gap_;
+    std::vector<signed char> in_contact_;
+    std::vector<PatchTotals> patches_;
+    std::vector<double> paper_, consistent_, profile_, row_d_, row_pool_;
+    std::vector<SteadyRolling::Complex> previous_q_;
+    double previous_traction_scale_ = 0;
+};
+
+} // namespace creepwork
