@@ -28,6 +28,13 @@ Solver::Solver(const GridSpec& grid) : grid_(grid)
 {
     last_ = &model(ModelKind::fastsim);
     fastsim_ = static_cast<FastsimModel*>(last_);
+    // A gap grid has one model, made now so that its grid is checked at
+    // creation; it is not registered by ModelKind (no other model runs there).
+    if (gap_grid()) {
+        gap_ = std::make_unique<GapModel>(grid);
+        last_ = gap_.get();
+    }
+    one_patch_.reserve(1);
 }
 
 ContactModel* Solver::find(ModelKind kind) const
@@ -46,7 +53,26 @@ ContactModel& Solver::model(ModelKind kind)
     return *models_.back().second;
 }
 
-void Solver::prepare(ModelKind kind) { model(kind); }
+void Solver::prepare(ModelKind kind)
+{
+    if (gap_grid()) {
+        check_gap_model(kind);
+        return;
+    }
+    model(kind);
+}
+
+void Solver::check_gap_model(ModelKind kind) const
+{
+    if (kind != ModelKind::exact)
+        throw Error(ErrorKind::invalid_input,
+                    std::string("model = ") +
+                        (kind == ModelKind::fastsim      ? "fastsim"
+                         : kind == ModelKind::calibrated ? "calibrated"
+                                                         : std::to_string(static_cast<int>(kind))) +
+                        " is invalid on a gap grid: a contact of any shape is solved by the "
+                        "exact model (model = exact)");
+}
 
 const ExactModel* Solver::exact_model() const
 {
@@ -62,6 +88,7 @@ void Solver::set_kernel_isa(KernelIsa isa)
 {
     fastsim_->set_kernel_isa(isa); // throws when this CPU cannot run it
     for (const auto& m : models_) m.second->set_kernel_isa(isa);
+    if (gap_) gap_->set_kernel_isa(isa);
 }
 
 const SolveTotals& Solver::solve(const ContactInput& input, SolveMode mode)
@@ -92,8 +119,16 @@ const SolveTotals& Solver::solve_impl(const ContactInput& input, SolveMode mode,
 {
     solved_ = false;
     mode_ = mode;
-    ContactModel& m = model(input.model);
-    const SolveTotals t = jacobian ? m.solve_jacobian(input, mode, *jacobian) : m.solve(input, mode);
+    if (!gap_grid() && (input.gap || input.normal_load != NormalLoad::force ||
+                        input.normal_method != NormalMethod::exact))
+        throw Error(ErrorKind::invalid_input,
+                    input.gap ? "gap is given but the grid is not a gap grid (CW_GRID_GAP)"
+                    : input.normal_load != NormalLoad::force
+                        ? "normal_load = approach needs a gap grid (CW_GRID_GAP)"
+                        : "normal_method = semi_hertz needs a gap grid (CW_GRID_GAP)");
+    if (gap_grid()) check_gap_model(input.model);
+    ContactModel& m = gap_grid() ? *gap_ : model(input.model);
+    SolveTotals t = jacobian ? m.solve_jacobian(input, mode, *jacobian) : m.solve(input, mode);
     last_ = &m;
 
     const double checks[] = {t.Fx, t.Fy, t.Mz, t.W_macro, t.W_micro_paper, t.K, t.W_consistent,
@@ -102,9 +137,47 @@ const SolveTotals& Solver::solve_impl(const ContactInput& input, SolveMode mode,
         if (!std::isfinite(v))
             throw Error(ErrorKind::numeric_failure,
                         "a result overflowed: the inputs are too extreme for double precision");
+    // Off a gap grid the contact is one patch: its totals.
+    if (!gap_grid()) {
+        t.normal_force = input.normal_force;
+        t.n_patches = t.n_contact > 0 ? 1 : 0;
+        one_patch_.clear();
+        if (t.n_patches) {
+            PatchTotals p;
+            p.n_contact = t.n_contact;
+            p.n_adhesion = t.n_adhesion;
+            p.n_slip = t.n_slip;
+            p.Fx = t.Fx;
+            p.Fy = t.Fy;
+            p.Mz = t.Mz;
+            p.Fn = t.normal_force;
+            p.p_max = t.p_max;
+            p.W_macro = t.W_macro;
+            one_patch_.push_back(p);
+        }
+    }
     totals_ = t;
     solved_ = true;
     return totals_;
+}
+
+const std::vector<PatchTotals>& Solver::patches() const
+{
+    return gap_ ? gap_->patches() : one_patch_;
+}
+
+void Solver::copy_strips(double* y, double* width) const
+{
+    if (gap_) {
+        gap_->copy_strips(y, width);
+        return;
+    }
+    // The strip grids are normalised by the semi-axis b of the last solve.
+    const ContactGrid& g = grid();
+    for (int j = 0; j < g.ny(); ++j) {
+        y[j] = totals_.b * g.y_centre()[j];
+        width[j] = totals_.b * g.y_width()[j];
+    }
 }
 
 } // namespace creepwork

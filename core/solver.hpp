@@ -16,12 +16,15 @@
 #include "contact/params.hpp"
 #include "contact_model.hpp"
 #include "exact/exact_model.hpp"
+#include "exact/gap_model.hpp"
 #include "fastsim/fastsim_model.hpp"
 
 namespace creepwork {
 
 class Solver {
 public:
+    // On a gap grid (GridKind::gap) the exact model of any contact shape is
+    // made here (its only model; the grid's origin and spacing are checked).
     explicit Solver(const GridSpec& grid);
 
     // Throws Error naming a bad input; the previous solution is then marked
@@ -44,6 +47,11 @@ public:
     void prepare(ModelKind model);
     // The exact model, if made (diagnostics of its last solve: info()).
     const ExactModel* exact_model() const;
+    // On a gap grid: the exact model of any contact shape.
+    const GapModel* gap_model() const { return gap_.get(); }
+    // The separate patches of the last solve: on a gap grid each 4-connected
+    // patch, otherwise the contact as one patch (none when nothing touches).
+    const std::vector<PatchTotals>& patches() const;
     // The calibrated model, made on first use (the fitting tool solves it
     // with its own parameters).
     CalibratedModel& calibrated_model();
@@ -76,17 +84,24 @@ public:
     {
         last_->copy_profile(totals_.W_consistent, y, work, parabola);
     }
+    // Per strip j < ny of the last solve: centre y [m] and width [m].
+    void copy_strips(double* y, double* width) const;
 
 private:
     const SolveTotals& solve_impl(const ContactInput& input, SolveMode mode, Jacobian* jacobian);
     // The model of this kind, made (and registered) on first use.
     ContactModel& model(ModelKind kind);
     ContactModel* find(ModelKind kind) const;
+    bool gap_grid() const { return grid_.kind == GridKind::gap; }
+    // Throws Error(invalid_input) naming the model unless it runs on a gap grid.
+    void check_gap_model(ModelKind kind) const;
 
     GridSpec grid_;
     std::vector<std::pair<ModelKind, std::unique_ptr<ContactModel>>> models_;
     FastsimModel* fastsim_ = nullptr; // models_' FASTSIM: the grid and the default kernel
     ContactModel* last_ = nullptr;    // the model of the last solve (its fields are exported)
+    std::unique_ptr<GapModel> gap_;   // on a gap grid its only model
+    std::vector<PatchTotals> one_patch_; // off a gap grid: the contact, if any
     SolveTotals totals_;
     SolveMode mode_ = SolveMode::full;
     bool solved_ = false;

@@ -349,6 +349,12 @@ void GapModel::label_patches(SolveTotals& t)
     t.n_patches = labels_.label(in_contact_.data());
 }
 
+SolveTotals GapModel::solve_jacobian(const ContactInput&, SolveMode, Jacobian&)
+{
+    throw Error(ErrorKind::invalid_input,
+                "the Jacobian is not available on a gap grid (a contact of any shape)");
+}
+
 SolveTotals GapModel::solve(const ContactInput& in, SolveMode mode)
 {
     const bool had_previous = has_previous_;

@@ -33,6 +33,7 @@
 #include <vector>
 
 #include "contact/fields.hpp"
+#include "contact_model.hpp"
 #include "contact/params.hpp"
 #include "exact/exact_model.hpp"
 #include "exact/grid_convolution.hpp"
@@ -59,29 +60,32 @@ struct GapSolveInfo {
     bool retried_cold = false;
 };
 
-class GapModel {
+class GapModel : public ContactModel {
 public:
     // Throws Error(invalid_input) unless grid.kind is gap with finite origin
     // and positive spacing, Error(grid_out_of_range) outside 3 ...
     // kMaxExactCells cells per direction.
     explicit GapModel(const GridSpec& grid);
-    ~GapModel();
+    ~GapModel() override;
 
     // Throws Error naming a bad input, or Error(not_converged).
-    SolveTotals solve(const ContactInput& input, SolveMode mode);
+    SolveTotals solve(const ContactInput& input, SolveMode mode) override;
+    // Throws Error(invalid_input): no Jacobian on a gap grid.
+    SolveTotals solve_jacobian(const ContactInput& input, SolveMode mode,
+                               Jacobian& jacobian) override;
 
     const GapSolveInfo& info() const { return info_; }
     int nx() const { return nx_; }
     int ny() const { return ny_; }
 
     // Of the last successful solve, in the caller's layout [i + nx j].
-    void copy_field(Field f, double* out) const;
-    void add_field(Field f, double scale, double* out) const; // out += scale * field
-    void copy_state(int* out) const;
+    void copy_field(Field f, double* out) const override;
+    void add_field(Field f, double scale, double* out) const override; // out += scale * field
+    void copy_state(int* out) const override;
     // Per row j < ny: centre y [m], energy-consistent work per unit width,
     // and the equal-area parabola of total W over the contact's lateral
     // extent (centred on it).
-    void copy_profile(double W, double* y, double* work, double* parabola) const;
+    void copy_profile(double W, double* y, double* work, double* parabola) const override;
     // Per row j < ny: centre y [m] and width dy [m] (the wear's strips).
     void copy_strips(double* y, double* width) const;
     // The separate patches of the last solve (4-connected), caller's frame.
