@@ -69,6 +69,9 @@ cw_params default_params()
     p.model = CW_MODEL_FASTSIM;
     p.warm_start = 1;
     p.spin_offset = CW_SPIN_OFFSET_DEFAULT;
+    p.gap = nullptr;
+    p.normal_load = CW_NORMAL_FORCE;
+    p.normal_method = CW_NORMAL_EXACT;
     return p;
 }
 
@@ -81,14 +84,23 @@ cw::GridSpec to_grid(const cw_grid* grid)
         spec.kind = cw::GridKind::kalker_strips;
     else if (g.kind == CW_GRID_UNIFORM)
         spec.kind = cw::GridKind::uniform;
+    else if (g.kind == CW_GRID_GAP)
+        spec.kind = cw::GridKind::gap;
     else
         fail(CW_ERR_UNKNOWN_OPTION, "grid->kind = " + std::to_string(g.kind) +
-                                        " is not CW_GRID_KALKER_STRIPS (0) or CW_GRID_UNIFORM (1)");
+                                        " is not CW_GRID_KALKER_STRIPS (0), CW_GRID_UNIFORM (1) "
+                                        "or CW_GRID_GAP (2)");
     spec.nx = g.nx;
     spec.ny = g.ny;
-    // The strip grid has no box: whatever the caller left there (even NaN)
-    // must not make two equal strip grids compare unequal.
+    // The strip and gap grids have no box: whatever the caller left there
+    // (even NaN) must not make two equal grids compare unequal.
     spec.box_scale = spec.kind == cw::GridKind::uniform ? g.box_scale : 1.0;
+    if (spec.kind == cw::GridKind::gap) {
+        spec.x0 = g.x0;
+        spec.y0 = g.y0;
+        spec.dx = g.dx;
+        spec.dy = g.dy;
+    }
     return spec;
 }
 
@@ -142,6 +154,24 @@ cw::ContactInput to_input(const cw_params* params)
         fail(CW_ERR_INVALID_INPUT,
              "params->exact_load = " + std::to_string(p.exact_load) + " must be 0 or 1");
     in.exact_load = p.exact_load == 1;
+    in.gap = p.gap;
+    in.gap_len = p.gap_len;
+    if (p.normal_load == CW_NORMAL_FORCE)
+        in.normal_load = cw::NormalLoad::force;
+    else if (p.normal_load == CW_NORMAL_APPROACH)
+        in.normal_load = cw::NormalLoad::approach;
+    else
+        fail(CW_ERR_UNKNOWN_OPTION, "params->normal_load = " + std::to_string(p.normal_load) +
+                                        " is not CW_NORMAL_FORCE (0) or CW_NORMAL_APPROACH (1)");
+    in.approach = p.approach;
+    if (p.normal_method == CW_NORMAL_EXACT)
+        in.normal_method = cw::NormalMethod::exact;
+    else if (p.normal_method == CW_NORMAL_SEMI_HERTZ)
+        in.normal_method = cw::NormalMethod::semi_hertz;
+    else
+        fail(CW_ERR_UNKNOWN_OPTION,
+             "params->normal_method = " + std::to_string(p.normal_method) +
+                 " is not CW_NORMAL_EXACT (0) or CW_NORMAL_SEMI_HERTZ (1)");
     return in;
 }
 
@@ -200,6 +230,8 @@ cw_result to_result(const cw::SolveTotals& t)
     r.approach = t.approach;
     r.iterations = t.iterations;
     r.residual = t.residual;
+    r.normal_force = t.normal_force;
+    r.n_patches = t.n_patches;
     return r;
 }
 

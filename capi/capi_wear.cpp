@@ -179,12 +179,8 @@ int cw_wear_compute(cw_wear* wear, const cw_solver* solver, const cw_wear_params
                                                           : cw::Field::work_consistent,
                          wear->work.data());
         }
-        const cw::ContactGrid& g = s.grid();
         const double b = s.totals().b;
-        for (int j = 0; j < wear->ny; ++j) {
-            wear->strip_y[j] = b * g.y_centre()[j];
-            wear->strip_width[j] = b * g.y_width()[j];
-        }
+        s.copy_strips(wear->strip_y.data(), wear->strip_width.data());
         cww::ContactFields in;
         in.nx = wear->nx;
         in.ny = wear->ny;

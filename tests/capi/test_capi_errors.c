@@ -57,7 +57,7 @@ static void create_rejects_bad_grids(void** state)
     (void)state;
     const double nan = strtod("nan", NULL);
     const bad_grid bad[] = {
-        {2, 20, 20, 1.0, CW_ERR_UNKNOWN_OPTION, "grid->kind"},
+        {3, 20, 20, 1.0, CW_ERR_UNKNOWN_OPTION, "grid->kind"},
         {-1, 20, 20, 1.0, CW_ERR_UNKNOWN_OPTION, "grid->kind"},
         {CW_GRID_KALKER_STRIPS, 0, 20, 1.0, CW_ERR_GRID_OUT_OF_RANGE, "nx"},
         {CW_GRID_KALKER_STRIPS, 20, 0, 1.0, CW_ERR_GRID_OUT_OF_RANGE, "ny"},

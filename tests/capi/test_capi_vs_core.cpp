@@ -72,10 +72,10 @@ void assert_totals_equal(const cw_result& r, const cw::SolveTotals& t)
 }
 
 const cw_grid grids[] = {
-    {sizeof(cw_grid), CW_GRID_KALKER_STRIPS, 20, 20, 1.0},
-    {sizeof(cw_grid), CW_GRID_KALKER_STRIPS, 7, 33, 1.0},
-    {sizeof(cw_grid), CW_GRID_UNIFORM, 24, 24, 1.2},
-    {sizeof(cw_grid), CW_GRID_UNIFORM, 31, 10, 1.04},
+    {sizeof(cw_grid), CW_GRID_KALKER_STRIPS, 20, 20, 1.0, 0, 0, 0, 0},
+    {sizeof(cw_grid), CW_GRID_KALKER_STRIPS, 7, 33, 1.0, 0, 0, 0, 0},
+    {sizeof(cw_grid), CW_GRID_UNIFORM, 24, 24, 1.2, 0, 0, 0, 0},
+    {sizeof(cw_grid), CW_GRID_UNIFORM, 31, 10, 1.04, 0, 0, 0, 0},
 };
 
 // Both grid kinds x every case (both pressures, both flexibility sources,

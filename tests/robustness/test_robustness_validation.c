@@ -331,7 +331,7 @@ static void test_grid_limits(void** state)
         g.box_scale = bad_scale[k];
         expect_create_error(&g, CW_ERR_GRID_OUT_OF_RANGE, "box_scale");
     }
-    const int bad_kind[] = {-1, 2, INT_MAX};
+    const int bad_kind[] = {-1, 3, INT_MAX};
     for (int k = 0; k < 3; ++k) {
         cw_grid g;
         cw_grid_init(&g);

@@ -120,6 +120,18 @@ CW_API const char* cw_status_string(int status);
 /* cw_grid.kind */
 #define CW_GRID_KALKER_STRIPS 0 /* ny equal strips, nx equal elements per chord (Kalker 1982) */
 #define CW_GRID_UNIFORM 1       /* nx*ny box [-S a, S a] x [-S b, S b] (CONTACT) */
+#define CW_GRID_GAP 2           /* a contact of any shape: nx*ny cells of dx*dy from (x0, y0),
+                                   the gap given per solve (cw_params.gap; CW_MODEL_EXACT) */
+
+/* cw_params.normal_load (gap grid) */
+#define CW_NORMAL_FORCE 0    /* normal_force prescribed, the approach found (default) */
+#define CW_NORMAL_APPROACH 1 /* approach prescribed, the normal force found */
+
+/* cw_params.normal_method (gap grid) */
+#define CW_NORMAL_EXACT 0      /* the half-space normal problem on the grid (default) */
+#define CW_NORMAL_SEMI_HERTZ 1 /* per row a Hertzian semi-ellipse (Sichani et al. 2014): fast */
+
+#define CW_MIN_GAP_CELLS 3 /* gap grid: nx, ny in 3..CW_MAX_EXACT_CELLS */
 
 /* cw_params.pressure: normal pressure and traction bound mu*pz */
 #define CW_PRESSURE_PARABOLIC 0 /* 2N/(pi a b) (1 - x^2/a^2 - y^2/b^2), paper eq. 16 */
@@ -170,10 +182,18 @@ CW_API const char* cw_status_string(int status);
 
 typedef struct cw_grid {
     size_t struct_size; /* set by cw_grid_init */
-    int kind;           /* CW_GRID_KALKER_STRIPS (default) or CW_GRID_UNIFORM */
+    int kind;           /* CW_GRID_KALKER_STRIPS (default), CW_GRID_UNIFORM or CW_GRID_GAP */
     int nx;             /* elements along x, 1..CW_MAX_GRID_CELLS (default 20) */
     int ny;             /* strips along y, 1..CW_MAX_GRID_CELLS (default 20) */
     double box_scale;   /* uniform grid: S in [1, CW_MAX_BOX_SCALE] (default 1) */
+    /* ---- appended in 1.2 ---- */
+    /* CW_GRID_GAP only: element (i, j) is the cell of dx*dy centred at
+     * (x0 + i*dx, y0 + j*dy) [m], in the frame of the caller's gap (x along
+     * the rolling direction); the cells are the potential contact area.
+     * nx, ny in CW_MIN_GAP_CELLS..CW_MAX_EXACT_CELLS, |x0|, |y0| <= 1e6,
+     * dx, dy in (0, 1e3] with dy/dx in [0.05, 20]. Defaults 0. */
+    double x0, y0;
+    double dx, dy;
 } cw_grid;
 
 /* Fills defaults and struct_size. Errors: CW_ERR_NULL_POINTER. */
@@ -228,6 +248,19 @@ typedef struct cw_params {
                               N by up to a few tenths of a per cent (the original algorithm:
                               FASTSIM and CONTACT comparisons use it). The exact model's
                               discrete normal problem carries N exactly either way. */
+    /* A contact of any shape (CW_GRID_GAP, CW_MODEL_EXACT; doc/theory/
+     * non-hertzian.md). a, b, pressure and flexibility_blending are not
+     * used; spin_offset is as for the exact model; Mz is about the grid's
+     * origin. Off a gap grid gap must be NULL and the next two their defaults. */
+    const double* gap;     /* undeformed distance between the surfaces at each element
+                              centre [m] at [i + j*nx], positive = separation; the
+                              approach is measured from its datum h = 0. Read during
+                              the solve only. Default NULL */
+    size_t gap_len;        /* values at gap, >= nx*ny */
+    int normal_load;       /* CW_NORMAL_FORCE (default) or CW_NORMAL_APPROACH */
+    double approach;       /* [m] from the gap's datum, with CW_NORMAL_APPROACH (default 0) */
+    int normal_method;     /* CW_NORMAL_EXACT (default) or CW_NORMAL_SEMI_HERTZ; the
+                              tangential problem is the exact model's either way */
 } cw_params;
 
 /* Defaults: steel (G = 82e9 Pa, nu = 0.28), mu = 0.3, a = b = 6e-3 m,
@@ -262,6 +295,11 @@ typedef struct cw_result {
                                  problem; FASTSIM, Hertz's value (0 with given L1..L3) */
     int iterations;           /* exact model: iterations of the tangential solve; else 0 */
     double residual;          /* exact model: final relative residual; else 0 */
+    /* ---- appended in 1.2 ---- */
+    double normal_force;      /* total normal force [N]: found with CW_NORMAL_APPROACH,
+                                 else params->normal_force */
+    int n_patches;            /* separate contact patches (4-connected elements;
+                                 cw_solver_get_patches); 1 for an ellipse, 0 without contact */
 } cw_result;
 
 /* Zeroes the result and sets struct_size. Errors: CW_ERR_NULL_POINTER. */
@@ -273,10 +311,12 @@ typedef struct cw_solver cw_solver;
 
 /* Creates a solver for one grid: all memory is allocated here, none in
  * solve. message (may be NULL) receives a NUL-terminated explanation of an
- * error, truncated to message_len bytes.
+ * error, truncated to message_len bytes. A CW_GRID_GAP solver makes the
+ * exact model's memory here (its only model).
  * Errors: CW_ERR_NULL_POINTER, CW_ERR_STRUCT_SIZE, CW_ERR_UNKNOWN_OPTION
- * (kind), CW_ERR_GRID_OUT_OF_RANGE, CW_ERR_OUT_OF_MEMORY. On error *solver
- * is set to NULL. */
+ * (kind), CW_ERR_GRID_OUT_OF_RANGE, CW_ERR_INVALID_INPUT (a gap grid's
+ * origin or spacing), CW_ERR_OUT_OF_MEMORY. On error *solver is set to
+ * NULL. */
 CW_API int cw_solver_create(const cw_grid* grid, cw_solver** solver, char* message,
                             size_t message_len);
 
@@ -290,9 +330,12 @@ CW_API int cw_solver_grid_size(const cw_solver* solver, int* nx, int* ny);
  * result may be NULL (read fields afterwards). Allocates nothing on success
  * (an error may allocate its message; the first CW_MODEL_EXACT solve makes
  * that model's memory unless cw_solver_prepare did), prints nothing.
- * CW_MODEL_EXACT (doc/theory/exact.md): needs CW_GRID_UNIFORM and
- * CW_FLEX_FROM_MATERIAL (G, nu); solves its own normal problem from a, b,
- * normal_force, so params->pressure is ignored; with warm_start = 1 it
+ * CW_MODEL_EXACT (doc/theory/exact.md): needs CW_GRID_UNIFORM or
+ * CW_GRID_GAP and CW_FLEX_FROM_MATERIAL (G, nu); solves its own normal
+ * problem (from a, b, normal_force on the uniform grid; on a gap grid from
+ * params->gap with the force or the approach prescribed), so
+ * params->pressure is ignored; a gap grid takes no other model and no
+ * Jacobian (CW_ERR_INVALID_INPUT); with warm_start = 1 it
  * starts from this handle's last successful exact solution (the answer
  * equals a cold start's to the tolerance); it stops when the relative
  * residual is <= tolerance (default 1e-8) and reports CW_ERR_NOT_CONVERGED
@@ -329,6 +372,37 @@ CW_API int cw_solver_get_state(const cw_solver* solver, int* out, size_t out_len
  * CW_ERR_NULL_POINTER (solver). */
 CW_API int cw_solver_get_profile(const cw_solver* solver, double* y, double* w,
                                  double* parabola, size_t len);
+
+/* One contact patch of the last solve (cw_solver_get_patches), on the wheel,
+ * in the grid's frame. Fields are only ever appended. */
+typedef struct cw_patch {
+    size_t struct_size;        /* set by cw_patch_init */
+    int n_contact, n_adhesion, n_slip; /* elements */
+    double x_centroid, y_centroid; /* centre of the patch's element area [m] */
+    double Fx, Fy;             /* creep force [N] */
+    double Mz;                 /* creep moment [N m]: about the grid's origin on a gap grid,
+                                  about the ellipse centre otherwise */
+    double Fn;                 /* normal force [N] */
+    double p_max;              /* largest element pressure [Pa] */
+    double W_macro;            /* -(Fx xi_x + Fy xi_y + Mz phi) [J/m]; the patches' sum is
+                                  the result's W_macro */
+} cw_patch;
+
+/* Zeroes the patch and sets struct_size. Errors: CW_ERR_NULL_POINTER. */
+CW_API int cw_patch_init(cw_patch* patch);
+
+/* The separate contact patches of the last solve, in the order of their
+ * first element at [i + j*nx] (lowest y row first): *count receives their
+ * number (cw_result.n_patches) and out[k], k < *count, the patch totals
+ * (the result's totals are their sums, to rounding). out is an array of len
+ * structs of size out[0].struct_size (every element must carry the same
+ * struct_size). out may be NULL with len = 0 to ask for the count. Off a
+ * gap grid a contact is one patch (centroid at the ellipse centre).
+ * Allocates nothing. Errors: CW_ERR_NULL_POINTER (solver, count),
+ * CW_ERR_NO_SOLUTION, CW_ERR_STRUCT_SIZE, CW_ERR_BUFFER_TOO_SMALL (len <
+ * *count: *count is set, nothing else is written). */
+CW_API int cw_solver_get_patches(const cw_solver* solver, cw_patch* out, size_t len,
+                                 size_t* count);
 
 /* Detailed message of the last error on this handle ("" after success);
  * owned by the handle, valid until its next call. NULL solver gives a
@@ -478,7 +552,7 @@ CW_API int cw_fastsim_normalised(double ux, double uy, double fx, double fy, int
  * makes them. CW_MODEL_CALIBRATED: its FASTSIM march workspace (every
  * grid). Idempotent. Errors: CW_ERR_NULL_POINTER,
  * CW_ERR_UNKNOWN_OPTION (model), CW_ERR_INVALID_INPUT (CW_MODEL_EXACT on
- * CW_GRID_KALKER_STRIPS),
+ * CW_GRID_KALKER_STRIPS; another model on CW_GRID_GAP),
  * CW_ERR_GRID_OUT_OF_RANGE (exact: nx or ny > CW_MAX_EXACT_CELLS),
  * CW_ERR_OUT_OF_MEMORY. */
 CW_API int cw_solver_prepare(cw_solver* solver, int model);

@@ -1,0 +1,324 @@
+/* Contacts of any shape through the C ABI (CW_GRID_GAP): the gap grid and
+ * the gap inputs, the result's normal force and patch count, the patches,
+ * wear on a gap solve, and every error naming its input. References: the
+ * elliptic exact model on the same uniform grid (a Hertzian gap), the
+ * approach found given back, sums of the patches, and the gap of two lobes
+ * solved as two separate contacts (each lobe alone on its own grid). */
+#include "test_support.h"
+
+#include <creepwork/creepwork.h>
+
+#include <stdlib.h>
+
+/* A 24 x 24 uniform grid of box 1.2 a x 1.2 b and its cells as a gap grid. */
+enum { n = 24 };
+static const double a = 7.0e-3, b = 5.0e-3, box = 1.2;
+
+static cw_params exact_params(void)
+{
+    cw_params p;
+    cw_params_init(&p);
+    p.model = CW_MODEL_EXACT;
+    p.a = a;
+    p.b = b;
+    p.normal_force = 90e3;
+    p.xi_x = 5e-4;
+    p.xi_y = 2e-4;
+    p.phi = 0.4;
+    p.warm_start = 0;
+    return p;
+}
+
+static cw_grid gap_grid(double x0, double y0, int nx, int ny)
+{
+    cw_grid g;
+    cw_grid_init(&g);
+    g.kind = CW_GRID_GAP;
+    g.nx = nx;
+    g.ny = ny;
+    g.dx = 2 * box * a / n;
+    g.dy = 2 * box * b / n;
+    g.x0 = x0;
+    g.y0 = y0;
+    return g;
+}
+
+/* h = A x^2 + B y^2 (Hertz's A, B of the semi-axes a, b under N), shifted
+ * by (xc, yc), plus offset. */
+static void hertz_gap(const cw_grid* g, double xc, double yc, double offset, double* h)
+{
+    double hz[4], A = 0, B = 0;
+    /* A, B from a, b: solve Hertz for unit curvatures and scale (a^2 ~ 1/A at
+     * fixed ratio): iterate the two curvatures to the semi-axes. */
+    A = 1.0 / (2 * 0.4);
+    B = 1.0 / (2 * 0.3);
+    for (int it = 0; it < 60; ++it) {
+        cw_hertz_solve(A, B, 90e3, 82e9 / (1 - 0.28), hz, NULL, 0);
+        A *= (hz[0] / a) * (hz[0] / a);
+        B *= (hz[1] / b) * (hz[1] / b);
+    }
+    for (int j = 0; j < g->ny; ++j)
+        for (int i = 0; i < g->nx; ++i) {
+            const double x = g->x0 + i * g->dx - xc, y = g->y0 + j * g->dy - yc;
+            h[i + g->nx * j] = A * x * x + B * y * y + offset;
+        }
+}
+
+static void gap_equals_elliptic_model(void** state)
+{
+    (void)state;
+    cw_grid u;
+    cw_grid_init(&u);
+    u.kind = CW_GRID_UNIFORM;
+    u.nx = u.ny = n;
+    u.box_scale = box;
+    cw_solver *se = NULL, *sg = NULL;
+    assert_int_equal(cw_solver_create(&u, &se, NULL, 0), CW_OK);
+    const cw_grid g = gap_grid(-box * a + box * a / n, -box * b + box * b / n, n, n);
+    assert_int_equal(cw_solver_create(&g, &sg, NULL, 0), CW_OK);
+    double h[n * n];
+    hertz_gap(&g, 0, 0, 0, h);
+    cw_params p = exact_params();
+    cw_result re, rg;
+    cw_result_init(&re);
+    cw_result_init(&rg);
+    assert_int_equal(cw_solver_solve(se, &p, CW_SOLVE_FULL, &re), CW_OK);
+    p.gap = h;
+    p.gap_len = n * n;
+    assert_int_equal(cw_solver_solve(sg, &p, CW_SOLVE_FULL, &rg), CW_OK);
+    /* Hertz's A, B iterated to 1e-12 here, the solvers' tolerance 1e-8. */
+    const double muN = 0.3 * 90e3;
+    assert_close(rg.Fx, re.Fx, 0.0, 1e-7 * muN);
+    assert_close(rg.Fy, re.Fy, 0.0, 1e-7 * muN);
+    assert_close(rg.p_max, re.p_max, 1e-7, 0.0);
+    assert_close(rg.approach, re.approach, 1e-7, 0.0);
+    assert_int_equal(rg.n_contact, re.n_contact);
+    assert_int_equal(rg.n_patches, 1);
+    assert_int_equal(re.n_patches, 1);
+    assert_close(rg.normal_force, 90e3, 1e-12, 0.0);
+    assert_int_equal(rg.model, CW_MODEL_EXACT);
+
+    /* The approach found, prescribed: the force back. */
+    p.normal_load = CW_NORMAL_APPROACH;
+    p.approach = rg.approach;
+    cw_result ra;
+    cw_result_init(&ra);
+    assert_int_equal(cw_solver_solve(sg, &p, CW_SOLVE_FORCES, &ra), CW_OK);
+    assert_close(ra.normal_force, 90e3, 1e-8, 0.0);
+    /* The semi-Hertzian normal method: the same load, a close area. */
+    p.normal_load = CW_NORMAL_FORCE;
+    p.normal_method = CW_NORMAL_SEMI_HERTZ;
+    assert_int_equal(cw_solver_solve(sg, &p, CW_SOLVE_FORCES, &ra), CW_OK);
+    assert_close(ra.normal_force, 90e3, 1e-12, 0.0);
+    assert_true(abs(ra.n_contact - rg.n_contact) <= rg.n_contact / 10);
+
+    /* Wear of a gap solve: the strips are the grid's rows. */
+    p.normal_method = CW_NORMAL_EXACT;
+    assert_int_equal(cw_solver_solve(sg, &p, CW_SOLVE_FULL, NULL), CW_OK);
+    cw_wear* w = NULL;
+    assert_int_equal(cw_wear_create(sg, &w), CW_OK);
+    cw_wear_params wp;
+    cw_wear_params_init(&wp);
+    cw_wear_result wr;
+    cw_wear_result_init(&wr);
+    assert_int_equal(cw_wear_compute(w, sg, &wp, &wr), CW_OK);
+    assert_close(wr.work, rg.W_macro, 1e-12, 0.0);
+    assert_true(wr.mass_per_distance > 0.0);
+    double y[n], width[n], depth[n];
+    assert_int_equal(cw_wear_get_strips(w, y, width, depth, NULL, n), CW_OK);
+    for (int j = 0; j < n; ++j) {
+        assert_close(y[j], g.y0 + j * g.dy, 1e-14, 1e-18);
+        assert_close(width[j], g.dy, 1e-14, 0.0);
+    }
+    cw_wear_destroy(w);
+    cw_solver_destroy(se);
+    cw_solver_destroy(sg);
+}
+
+/* Two Hertzian lobes 12 mm apart on one gap, the second 2 um higher: two
+ * patches, reported in the order of their first element (lower y first),
+ * adding up to the totals. Each lobe alone is not the same contact (the
+ * half-spaces couple them), so only sums and signs are checked here;
+ * CONTACT's per-patch values are test_nonhertz_contact's. */
+static void two_lobes_are_two_patches(void** state)
+{
+    (void)state;
+    const cw_grid g = gap_grid(-10e-3, -12e-3, 40, 70);
+    double* h = malloc(sizeof(double) * 40 * 70);
+    double* h2 = malloc(sizeof(double) * 40 * 70);
+    hertz_gap(&g, 0, -6e-3, 0, h);
+    hertz_gap(&g, 1e-3, 6e-3, 2e-6, h2);
+    for (int k = 0; k < 40 * 70; ++k) h[k] = h[k] < h2[k] ? h[k] : h2[k];
+    cw_solver* s = NULL;
+    assert_int_equal(cw_solver_create(&g, &s, NULL, 0), CW_OK);
+    cw_params p = exact_params();
+    p.gap = h;
+    p.gap_len = 40 * 70;
+    cw_result r;
+    cw_result_init(&r);
+    assert_int_equal(cw_solver_solve(s, &p, CW_SOLVE_FULL, &r), CW_OK);
+    assert_int_equal(r.n_patches, 2);
+    size_t count = 99;
+    assert_int_equal(cw_solver_get_patches(s, NULL, 0, &count), CW_OK);
+    assert_int_equal(count, 2);
+    cw_patch one[1];
+    cw_patch_init(&one[0]);
+    count = 0;
+    assert_int_equal(cw_solver_get_patches(s, one, 1, &count), CW_ERR_BUFFER_TOO_SMALL);
+    assert_int_equal(count, 2);
+    assert_int_equal(one[0].n_contact, 0); /* nothing written */
+    cw_patch P[3];
+    for (int k = 0; k < 3; ++k) cw_patch_init(&P[k]);
+    assert_int_equal(cw_solver_get_patches(s, P, 3, &count), CW_OK);
+    assert_int_equal(count, 2);
+    assert_true(P[0].y_centroid < -3e-3 && P[1].y_centroid > 3e-3);
+    assert_true(P[0].Fn > P[1].Fn); /* the higher lobe carries less */
+    assert_close(P[0].Fn + P[1].Fn, 90e3, 1e-12, 0.0);
+    assert_close(P[0].Fx + P[1].Fx, r.Fx, 0.0, 1e-9 * 27e3);
+    assert_close(P[0].Fy + P[1].Fy, r.Fy, 0.0, 1e-9 * 27e3);
+    assert_close(P[0].Mz + P[1].Mz, r.Mz, 0.0, 1e-12 * 27e3);
+    assert_close(P[0].W_macro + P[1].W_macro, r.W_macro, 1e-12, 0.0);
+    assert_int_equal(P[0].n_contact + P[1].n_contact, r.n_contact);
+    assert_true(P[0].p_max == r.p_max || P[1].p_max == r.p_max);
+    /* Each patch's Mz is its elements' (x py - y px) area about the grid's
+     * origin: the lobes lie either side of y = 0. */
+    double* mz = malloc(sizeof(double) * 40 * 70);
+    assert_int_equal(cw_solver_get_field(s, CW_FIELD_MZ, mz, 40 * 70), CW_OK);
+    double below = 0.0, above = 0.0;
+    for (int k = 0; k < 40 * 70; ++k) {
+        if (g.y0 + (k / 40) * g.dy < 0.0)
+            below += mz[k];
+        else
+            above += mz[k];
+    }
+    assert_close(P[0].Mz, below, 1e-12, 1e-12);
+    assert_close(P[1].Mz, above, 1e-12, 1e-12);
+    free(mz);
+
+    /* Elements must all carry out[0]'s struct_size; nothing is written
+     * otherwise. */
+    cw_patch mixed[2];
+    cw_patch_init(&mixed[0]);
+    cw_patch_init(&mixed[1]);
+    mixed[1].struct_size = offsetof(cw_patch, Fn);
+    assert_int_equal(cw_solver_get_patches(s, mixed, 2, &count), CW_ERR_STRUCT_SIZE);
+    assert_int_equal(mixed[0].n_contact, 0);
+    free(h);
+    free(h2);
+    cw_solver_destroy(s);
+}
+
+static void assert_names(const char* message, const char* names)
+{
+    if (!strstr(message, names)) fail_msg("'%s' does not name %s", message, names);
+}
+
+static void errors_name_the_input(void** state)
+{
+    (void)state;
+    char message[256];
+    /* Grids. */
+    cw_grid g = gap_grid(0, 0, 10, 10);
+    cw_solver* s = NULL;
+    g.dx = -1.0;
+    assert_int_equal(cw_solver_create(&g, &s, message, sizeof message), CW_ERR_INVALID_INPUT);
+    assert_names(message, "dx");
+    g = gap_grid(0, 0, 2, 10);
+    assert_int_equal(cw_solver_create(&g, &s, message, sizeof message), CW_ERR_GRID_OUT_OF_RANGE);
+    assert_names(message, "nx");
+    g = gap_grid(0, 0, 10, CW_MAX_EXACT_CELLS + 1);
+    assert_int_equal(cw_solver_create(&g, &s, message, sizeof message), CW_ERR_GRID_OUT_OF_RANGE);
+    assert_names(message, "ny");
+    g = gap_grid(strtod("inf", NULL), 0, 10, 10);
+    assert_int_equal(cw_solver_create(&g, &s, message, sizeof message), CW_ERR_INVALID_INPUT);
+    assert_names(message, "x0");
+    assert_null(s);
+
+    /* Inputs of a solve. */
+    g = gap_grid(-3e-3, -3e-3, 30, 30);
+    assert_int_equal(cw_solver_create(&g, &s, NULL, 0), CW_OK);
+    double h[900];
+    hertz_gap(&g, 0, 0, 0, h);
+    const cw_params ok = exact_params();
+    struct {
+        int field;
+        int status;
+        const char* names;
+    } bad[] = {{0, CW_ERR_INVALID_INPUT, "gap is NULL"}, {1, CW_ERR_INVALID_INPUT, "gap_len"},
+               {2, CW_ERR_INVALID_INPUT, "gap[5]"},      {3, CW_ERR_UNKNOWN_OPTION, "normal_load"},
+               {4, CW_ERR_UNKNOWN_OPTION, "normal_method"}, {5, CW_ERR_INVALID_INPUT, "model = fastsim"},
+               {6, CW_ERR_INVALID_INPUT, "approach"},    {7, CW_ERR_INVALID_INPUT, "G"}};
+    for (size_t k = 0; k < sizeof bad / sizeof bad[0]; ++k) {
+        cw_params p = ok;
+        double hb[900];
+        memcpy(hb, h, sizeof h);
+        p.gap = hb;
+        p.gap_len = 900;
+        switch (bad[k].field) {
+        case 0: p.gap = NULL; break;
+        case 1: p.gap_len = 899; break;
+        case 2: hb[5] = strtod("nan", NULL); break;
+        case 3: p.normal_load = 7; break;
+        case 4: p.normal_method = -1; break;
+        case 5: p.model = CW_MODEL_FASTSIM; break;
+        case 6: p.normal_load = CW_NORMAL_APPROACH, p.approach = strtod("inf", NULL); break;
+        case 7: p.G = 0.0; break;
+        }
+        assert_int_equal(cw_solver_solve(s, &p, CW_SOLVE_FULL, NULL), bad[k].status);
+        assert_names(cw_solver_last_error(s), bad[k].names);
+        size_t count;
+        assert_int_equal(cw_solver_get_patches(s, NULL, 0, &count), CW_ERR_NO_SOLUTION);
+    }
+    cw_params p = ok;
+    p.gap = h;
+    p.gap_len = 900;
+    double J[CW_JACOBIAN_LEN];
+    assert_int_equal(cw_solver_solve_jacobian(s, &p, CW_SOLVE_FORCES, NULL, J, CW_JACOBIAN_LEN),
+                     CW_ERR_INVALID_INPUT);
+    assert_names(cw_solver_last_error(s), "Jacobian");
+    assert_int_equal(cw_solver_prepare(s, CW_MODEL_FASTSIM), CW_ERR_INVALID_INPUT);
+    assert_int_equal(cw_solver_prepare(s, CW_MODEL_EXACT), CW_OK);
+    assert_int_equal(cw_solver_get_patches(s, NULL, 0, NULL), CW_ERR_NULL_POINTER);
+    /* A params struct of 1.1 (before the gap fields): no gap, an error. */
+    p.struct_size = offsetof(cw_params, gap);
+    assert_int_equal(cw_solver_solve(s, &p, CW_SOLVE_FULL, NULL), CW_ERR_INVALID_INPUT);
+    assert_names(cw_solver_last_error(s), "gap is NULL");
+    cw_solver_destroy(s);
+
+    /* The gap inputs off a gap grid. */
+    cw_grid u;
+    cw_grid_init(&u);
+    u.kind = CW_GRID_UNIFORM;
+    assert_int_equal(cw_solver_create(&u, &s, NULL, 0), CW_OK);
+    p = ok;
+    p.gap = h;
+    p.gap_len = 900;
+    assert_int_equal(cw_solver_solve(s, &p, CW_SOLVE_FULL, NULL), CW_ERR_INVALID_INPUT);
+    assert_names(cw_solver_last_error(s), "not a gap grid");
+    p = ok;
+    p.normal_method = CW_NORMAL_SEMI_HERTZ;
+    assert_int_equal(cw_solver_solve(s, &p, CW_SOLVE_FULL, NULL), CW_ERR_INVALID_INPUT);
+    assert_names(cw_solver_last_error(s), "normal_method");
+    /* The elliptic contact is one patch. */
+    cw_result r;
+    cw_result_init(&r);
+    assert_int_equal(cw_solver_solve(s, &ok, CW_SOLVE_FORCES, &r), CW_OK);
+    cw_patch P;
+    cw_patch_init(&P);
+    size_t count = 0;
+    assert_int_equal(cw_solver_get_patches(s, &P, 1, &count), CW_OK);
+    assert_int_equal(count, 1);
+    assert_true(P.Fx == r.Fx && P.Mz == r.Mz && P.Fn == ok.normal_force && P.p_max == r.p_max);
+    cw_solver_destroy(s);
+    assert_int_equal(cw_patch_init(NULL), CW_ERR_NULL_POINTER);
+}
+
+int main(int argc, char** argv)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(gap_equals_elliptic_model),
+        cmocka_unit_test(two_lobes_are_two_patches),
+        cmocka_unit_test(errors_name_the_input),
+    };
+    return cw_run_tests(tests, argc > 1 ? argv[1] : NULL);
+}
