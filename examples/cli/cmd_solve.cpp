@@ -10,6 +10,7 @@
 #include "contact_options.hpp"
 #include "contact_solver.hpp"
 #include "csv_output.hpp"
+#include "gap_input.hpp"
 #include "output_dir.hpp"
 #include "patch_plots.hpp"
 #include "report.hpp"
@@ -62,8 +63,11 @@ int command_solve(int argc, char** argv, int first)
                   grid_options()),
              output_options());
     specs.push_back({"jacobian", OptionKind::flag, {}});
+    specs = join(specs, gap_options());
     ParsedOptions opts;
     if (parse_or_help(specs, argc, argv, first, usage_solve(), opts)) return kExitOk;
+    if (opts.has("gap")) return command_solve_gap(opts);
+    reject_gap_options(opts);
     const ContactSetup c = read_contact(opts, library_default_params(), library_default_grid(),
                                         SizeAndLoad::required);
     const std::string out = opts.text("out", "");

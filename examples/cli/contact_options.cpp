@@ -124,14 +124,20 @@ ContactSetup read_contact(const ParsedOptions& o, const cw_params& defaults,
 {
     if (size_and_load == SizeAndLoad::required) require_given(o);
     const OptionSource source(o);
-    const ContactInputs in = read_contact_inputs(source, defaults, default_grid);
+    // solve --gap: the gap file gives the grid (its options are refused
+    // there) and the exact model is the default.
+    const bool gap = size_and_load == SizeAndLoad::gap;
+    cw_params start = defaults;
+    if (gap) start.model = CW_MODEL_EXACT;
+    const ContactInputs in =
+        read_contact_inputs(source, start, gap ? library_default_grid() : default_grid);
     ContactSetup c;
     c.units = source.units();
     c.params = in.params;
-    c.grid = in.grid;
+    c.grid = size_and_load == SizeAndLoad::gap ? default_grid : in.grid;
     for (const std::string& warning : plausibility_warnings(c.params, source))
         c.notes.push_back("warning: " + warning);
-    if (size_and_load == SizeAndLoad::required) note_defaults(o, c.params, c.units, c.notes);
+    if (size_and_load != SizeAndLoad::defaulted) note_defaults(o, c.params, c.units, c.notes);
     return c;
 }
 

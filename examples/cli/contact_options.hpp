@@ -65,7 +65,9 @@ private:
 // What read_contact insists on. solve has no sensible default for the size
 // and load of a contact, so it requires --a, --b and --N; sweep and fit-fig6
 // default to the paper's contact (their --help says which).
-enum class SizeAndLoad { required, defaulted };
+// gap: solve --gap, where a gap file replaces the semi-axes and the grid
+// (gap_input.hpp): the model defaults to exact, the grid options are not read.
+enum class SizeAndLoad { required, defaulted, gap };
 
 // Reads the options present in opts over the given defaults (SI structs) and
 // validates the result (read_contact_inputs: the rules of every door).

@@ -124,6 +124,16 @@ Solution ContactSolver::solve_full(const cw_params& params)
     return s;
 }
 
+std::vector<cw_patch> ContactSolver::patches() const
+{
+    size_t count = 0;
+    check(cw_solver_get_patches(solver_, nullptr, 0, &count), "cw_solver_get_patches");
+    std::vector<cw_patch> out(count);
+    for (cw_patch& p : out) cw_patch_init(&p);
+    if (count) check(cw_solver_get_patches(solver_, out.data(), count, &count), "cw_solver_get_patches");
+    return out;
+}
+
 std::vector<double> spin_distribution(const Solution& s)
 {
     std::vector<double> spin(s.size(), 0.0);

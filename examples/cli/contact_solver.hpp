@@ -39,6 +39,8 @@ public:
     Solution solve_full(const cw_params& params);
     // The 4 x 4 Jacobian of the totals (cw_solver_solve_jacobian, row-major).
     void jacobian(const cw_params& params, double out[CW_JACOBIAN_LEN]);
+    // The separate contact patches of the last solve (cw_solver_get_patches).
+    std::vector<cw_patch> patches() const;
 
     int nx() const { return nx_; }
     int ny() const { return ny_; }

@@ -49,6 +49,7 @@ program (doc/ paths in the help texts are relative to that directory).
 const char* usage_solve()
 {
     return R"(usage: creepwork solve --a A --b B --N N [options]
+       creepwork solve --gap FILE (--N N | --approach A) [options]
 
 Solves one steady-rolling contact on an elliptical patch. The semi-axes and
 the load are required (no default could fit a real contact). Everything else
@@ -111,6 +112,18 @@ contact (lengths, forces, stresses in the --units system):
                     analytic scale, whose sum differs from N by up to a few
                     tenths of a per cent, the original algorithm; the exact
                     model carries N exactly either way)
+contact of any shape (instead of --a, --b and the grid options):
+  --gap FILE        the undeformed distance on a regular grid: a CSV file with
+                    the header x_m,y_m,h_m and one line per cell centre (any
+                    order; in metres whatever --units says; positive h =
+                    separation). Its cells are the potential contact area; it
+                    is solved by the exact model, separate patches together
+                    (reported one by one); Mz about the file's origin
+  --approach A      with --gap, instead of --N: the approach from the file's
+                    h = 0 (length)
+  --normal-method exact|semi-hertz
+                    with --gap: the half-space normal problem (default) or,
+                    fast, a Hertzian semi-ellipse per row (Sichani et al.)
 grid:
   --grid strips|uniform
                     Kalker's strip grid (default) or CONTACT's uniform grid

@@ -1,0 +1,221 @@
+// Tests of `creepwork solve --gap`, run as a user runs it: its JSON (the
+// keys of gap_input.hpp) equals what the C ABI gives for the same gap, per
+// patch too; the approach and the semi-Hertzian method; --out writes the
+// fields; a gap file that is not one regular grid, and options that do not
+// belong with a gap, fail cleanly (status 2, one stderr line naming the file
+// and line or the option).
+//
+// usage: test_cli_gap <creepwork binary> <scratch dir> [cmocka filter]
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include <creepwork/creepwork.h>
+
+#include "cli_checks.hpp"
+// Last: cmocka defines macros (fail, skip) that clash with the C++ library.
+#include "test_support.h"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+
+// Two Hertzian lobes 12 mm apart across, the upper one 2 um higher, on a
+// 30 x 56 grid of 0.35 x 0.45 mm (x0, y0 chosen off the origin).
+struct Gap {
+    cw_grid grid;
+    std::vector<double> h;
+};
+
+Gap two_lobes()
+{
+    Gap g;
+    cw_grid_init(&g.grid);
+    g.grid.kind = CW_GRID_GAP;
+    g.grid.nx = 30;
+    g.grid.ny = 56;
+    g.grid.dx = 0.35e-3;
+    g.grid.dy = 0.45e-3;
+    g.grid.x0 = -14.5 * g.grid.dx + 0.2e-3;
+    g.grid.y0 = -27.5 * g.grid.dy;
+    for (int j = 0; j < g.grid.ny; ++j)
+        for (int i = 0; i < g.grid.nx; ++i) {
+            const double x = g.grid.x0 + i * g.grid.dx, y = g.grid.y0 + j * g.grid.dy;
+            const double a = x * x / 0.9 + (y + 6e-3) * (y + 6e-3) / 0.5;
+            const double b = x * x / 0.8 + (y - 6e-3) * (y - 6e-3) / 0.3 + 2e-6;
+            g.h.push_back(std::min(a, b));
+        }
+    return g;
+}
+
+// The gap file, lines in the order given (rows reversed: any order is valid).
+std::string write_gap(const Gap& g, const std::string& name)
+{
+    const std::string path = cwtest::g_tools.scratch + "/" + name;
+    std::ofstream f(path);
+    f << "x_m,y_m,h_m\n";
+    char line[128];
+    for (int j = g.grid.ny - 1; j >= 0; --j)
+        for (int i = 0; i < g.grid.nx; ++i) {
+            std::snprintf(line, sizeof line, "%.17g,%.17g,%.17g\n", g.grid.x0 + i * g.grid.dx,
+                          g.grid.y0 + j * g.grid.dy, g.h[i + g.grid.nx * j]);
+            f << line;
+        }
+    return path;
+}
+
+cw_params library_params(const Gap& g)
+{
+    cw_params p;
+    cw_params_init(&p);
+    p.model = CW_MODEL_EXACT;
+    p.gap = g.h.data();
+    p.gap_len = g.h.size();
+    p.normal_force = 50e3;
+    p.xi_x = 4e-4;
+    p.xi_y = -6e-4;
+    p.phi = 0.5;
+    return p;
+}
+
+void json_matches_library(void**)
+{
+    const Gap g = two_lobes();
+    const std::string file = write_gap(g, "lobes.csv");
+    const cwtest::Run r = cwtest::cli_ok({"solve", "--gap", file, "--N", "50e3", "--xi-x", "4e-4", "--xi-y", "-6e-4", "--spin",
+         "0.5", "--format", "json"});
+    const cwtest::Json j = cwtest::parse_json(r.out);
+    // The grid the CLI read (spacing from the printed coordinates) is the
+    // library's to rounding: compare with the library on the same grid.
+    cw_solver* s = nullptr;
+    assert_int_equal(cw_solver_create(&g.grid, &s, nullptr, 0), CW_OK);
+    cw_params p = library_params(g);
+    cw_result lib;
+    cw_result_init(&lib);
+    assert_int_equal(cw_solver_solve(s, &p, CW_SOLVE_FULL, &lib), CW_OK);
+    const double muN = 0.3 * 50e3;
+    assert_close(j.num("Fx"), lib.Fx, 0.0, 1e-7 * muN);
+    assert_close(j.num("Fy"), lib.Fy, 0.0, 1e-7 * muN);
+    assert_close(j.num("Mz"), lib.Mz, 0.0, 1e-9 * muN);
+    assert_close(j.num("Fn"), 50e3, 1e-12, 0.0);
+    assert_close(j.num("W_macro"), lib.W_macro, 1e-7, 0.0);
+    assert_close(j.num("p_max"), lib.p_max, 1e-9, 0.0);
+    assert_close(j.num("approach"), lib.approach, 1e-9, 0.0);
+    assert_int_equal(static_cast<int>(j.num("n_contact")), lib.n_contact);
+    assert_int_equal(static_cast<int>(j.num("n_adhesion")), lib.n_adhesion);
+    assert_int_equal(static_cast<int>(j.num("n_slip")), lib.n_slip);
+    assert_int_equal(static_cast<int>(j.num("n_patches")), 2);
+    cw_patch P[2];
+    cw_patch_init(&P[0]);
+    cw_patch_init(&P[1]);
+    size_t count = 0;
+    assert_int_equal(cw_solver_get_patches(s, P, 2, &count), CW_OK);
+    const cwtest::Json& list = j.at("patches");
+    assert_int_equal(list.array.size(), 2);
+    double fx = 0.0;
+    for (size_t k = 0; k < 2; ++k) {
+        const cwtest::Json& q = list.array[k];
+        for (const char* key : {"Fx", "Fy", "Mz", "Fn", "W_macro", "p_max", "approach", "n_contact",
+                                "n_adhesion", "n_slip", "x_centroid", "y_centroid"})
+            assert_true(q.has(key));
+        assert_close(q.num("Fn"), P[k].Fn, 1e-9, 0.0);
+        assert_close(q.num("Fy"), P[k].Fy, 0.0, 1e-7 * muN);
+        assert_close(q.num("y_centroid"), P[k].y_centroid, 1e-9, 0.0);
+        assert_int_equal(static_cast<int>(q.num("n_contact")), P[k].n_contact);
+        fx += q.num("Fx");
+    }
+    assert_close(fx, j.num("Fx"), 0.0, 1e-9 * muN);
+    assert_true(list.array[0].num("y_centroid") < 0.0); // the lower lobe first
+
+    // The approach found, given: the force back; the semi-Hertzian method.
+    char approach[32];
+    std::snprintf(approach, sizeof approach, "%.17g", j.num("approach"));
+    const cwtest::Run a = cwtest::cli_ok({"solve", "--gap", file, "--approach", approach, "--format", "json"});
+    assert_close(cwtest::parse_json(a.out).num("Fn"), 50e3, 1e-8, 0.0);
+    const cwtest::Run f = cwtest::cli_ok({"solve", "--gap", file, "--N", "50e3", "--normal-method", "semi-hertz", "--format", "json"});
+    const cwtest::Json fj = cwtest::parse_json(f.out);
+    assert_close(fj.num("Fn"), 50e3, 1e-12, 0.0);
+    assert_true(std::fabs(fj.num("n_contact") - lib.n_contact) <= 0.1 * lib.n_contact);
+
+    // --out: the fields of every cell.
+    const std::string out = cwtest::g_tools.scratch + "/out";
+    cwtest::cli_ok({"solve", "--gap", file, "--N", "50e3", "--out", out, "--format",
+                              "json"});
+    std::ifstream fields(out + "/fields.csv");
+    int lines = 0;
+    for (std::string line; std::getline(fields, line);) ++lines;
+    assert_int_equal(lines, 1 + 30 * 56);
+    assert_true(fs::exists(out + "/result.json"));
+    cw_solver_destroy(s);
+}
+
+void expect_usage_error(const std::vector<std::string>& args, const std::string& names)
+{
+    const cwtest::Run r = cwtest::cli(args);
+    if (r.status != 2 || r.err.find(names) == std::string::npos ||
+        std::count(r.err.begin(), r.err.end(), '\n') != 1)
+        fail_msg("status %d, stderr '%s' (expected status 2 naming '%s')", r.status, r.err.c_str(),
+                 names.c_str());
+    assert_true(r.out.empty());
+}
+
+void bad_gaps_fail_cleanly(void**)
+{
+    const auto file = [](const std::string& name, const std::string& text) {
+        const std::string path = cwtest::g_tools.scratch + "/" + name;
+        std::ofstream(path) << text;
+        return path;
+    };
+    const std::string ok = "x_m,y_m,h_m\n"
+                           "0,0,1e-5\n0.001,0,1e-6\n0.002,0,1e-5\n"
+                           "0,0.001,1e-6\n0.001,0.001,0\n0.002,0.001,1e-6\n"
+                           "0,0.002,1e-5\n0.001,0.002,1e-6\n0.002,0.002,1e-5\n";
+    const std::string good = file("good.csv", ok);
+    std::string dup = ok, off = ok, miss = ok, head = ok, word = ok;
+    dup.replace(dup.find("0.002,0.002,1e-5"), 16, "0.001,0.002,1e-5");
+    off.replace(off.find("0.001,0.001,0"), 13, "0.0013,0.001,0");
+    miss.erase(miss.find("0.002,0.002,1e-5"));
+    head.replace(0, 11, "x,y,h");
+    word.replace(word.find("1e-6"), 4, "abc");
+    expect_usage_error({"solve", "--gap", file("dup.csv", dup), "--N", "1e3"},
+                       "dup.csv:10: the cell at x_m = 0.001, y_m = 0.002 is already on line 9");
+    expect_usage_error({"solve", "--gap", file("off.csv", off), "--N", "1e3"}, "off.csv:6: x_m = 0.0013");
+    expect_usage_error({"solve", "--gap", file("miss.csv", miss), "--N", "1e3"},
+                       "x_m = 0.002, y_m = 0.002 is missing");
+    expect_usage_error({"solve", "--gap", file("head.csv", head), "--N", "1e3"},
+                       "head.csv:1: the header must be x_m,y_m,h_m");
+    expect_usage_error({"solve", "--gap", file("word.csv", word), "--N", "1e3"},
+                       "word.csv:3: \"abc\" is not a finite number");
+    expect_usage_error({"solve", "--gap", cwtest::g_tools.scratch + "/none.csv", "--N", "1e3"}, "cannot open");
+    expect_usage_error({"solve", "--gap", file("small.csv", "x_m,y_m,h_m\n0,0,0\n1,0,0\n0,1,0\n1,1,0\n"),
+                        "--N", "1e3"},
+                       "2 x 2 cells");
+    // Options that do not belong with a gap.
+    expect_usage_error({"solve", "--gap", good, "--N", "1e3", "--a", "6e-3"}, "--a");
+    expect_usage_error({"solve", "--gap", good, "--N", "1e3", "--nx", "20"}, "--nx");
+    expect_usage_error({"solve", "--gap", good, "--N", "1e3", "--model", "fastsim"}, "--model");
+    expect_usage_error({"solve", "--gap", good}, "--N");
+    expect_usage_error({"solve", "--gap", good, "--N", "1e3", "--approach", "1e-5"}, "not both");
+    expect_usage_error({"solve", "--gap", good, "--N", "1e3", "--jacobian"}, "--jacobian");
+    expect_usage_error({"solve", "--a", "6e-3", "--b", "6e-3", "--N", "1e3", "--approach", "1e-5"},
+                       "--approach: only used with --gap");
+    // The good file solves.
+    cwtest::cli_ok({"solve", "--gap", good, "--N", "1e3"});
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+    if (!cwtest::set_up(argc, argv, "test_cli_gap", {"creepwork", "scratch"})) return 2;
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(json_matches_library),
+        cmocka_unit_test(bad_gaps_fail_cleanly),
+    };
+    return cw_run_tests(tests, cwtest::g_tools.test);
+}
