@@ -70,7 +70,7 @@ ExactModel::ExactModel(const GridSpec& grid)
         levels_.push_back(std::make_unique<Level>(nx, ny));
     }
     const size_t n = static_cast<size_t>(nx_) * ny_;
-    for (auto& h : history_q_) h.assign(n, SteadyRolling::Complex(0.0, 0.0));
+    history_.resize(n);
     paper_.assign(n, 0.0);
     tangent_w_.assign(n, SteadyRolling::Complex(0.0, 0.0));
     consistent_.assign(n, 0.0);
@@ -174,80 +174,27 @@ void ExactModel::interpolate(const Level& C, Level& F) const
     }
 }
 
-// Warm start: the solution of the normalised problem is a function of the
-// normalised creepages c (for one a/b, nu and spin offset). From the last
-// solutions q_0 (latest), q_1, q_2 and their c_i, the start is
-//   q_0 + sum_i g_i (q_i - q_0),  g = argmin |c - c_0 - sum_i g_i (c_i - c_0)|,
-// a secant step that follows the creepage's drift (a vehicle loop's
-// consecutive calls): its error is second order in the change of c instead
-// of first (measured: one Newton step fewer). Steps g_i are bounded, and
-// the history is dropped when a/b, nu or the spin offset change.
+// Warm start: the secant prediction of creepage_history.hpp (the history is
+// dropped when a/b, nu or the spin offset change).
 void ExactModel::predict_start(double ratio, double nu)
 {
-    std::vector<SteadyRolling::Complex>& q = levels_[0]->tangential.traction();
-    const bool same = history_count_ > 0 && history_ratio_ == ratio && history_nu_ == nu &&
-                      history_offset_ == setup_.spin_offset;
-    if (!same) {
-        history_count_ = 0;
-        return; // q holds the last solution
-    }
+    const double key[CreepageHistory::kKey] = {ratio, nu, setup_.spin_offset, 0.0};
     const double c[3] = {setup_.c_xi, setup_.c_eta, setup_.c_phi};
-    const int m = history_count_ - 1; // differences available (0, 1 or 2)
-    double d[2][3], r[3];
-    for (int k = 0; k < 3; ++k) r[k] = c[k] - history_c_[0][k];
-    for (int i = 0; i < m; ++i)
-        for (int k = 0; k < 3; ++k) d[i][k] = history_c_[i + 1][k] - history_c_[0][k];
-    double g[2] = {0.0, 0.0};
-    auto dot3 = [](const double* a, const double* b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; };
-    if (m == 1) {
-        const double dd = dot3(d[0], d[0]);
-        if (dd > 0.0) g[0] = dot3(d[0], r) / dd;
-    } else if (m == 2) { // normal equations of the 3 x 2 least-squares problem
-        const double a11 = dot3(d[0], d[0]), a12 = dot3(d[0], d[1]), a22 = dot3(d[1], d[1]);
-        const double b1 = dot3(d[0], r), b2 = dot3(d[1], r);
-        const double det = a11 * a22 - a12 * a12;
-        if (det > 1e-12 * a11 * a22) {
-            g[0] = (b1 * a22 - b2 * a12) / det;
-            g[1] = (a11 * b2 - a12 * b1) / det;
-        } else if (a11 > 0.0) {
-            g[0] = b1 / a11;
-        }
-    }
-    for (double& v : g)
-        if (!(std::fabs(v) <= 4.0)) v = 0.0; // extrapolate, do not leap
-    const std::vector<SteadyRolling::Complex>& q0 = history_q_[0];
-    for (size_t k = 0; k < q.size(); ++k) {
-        SteadyRolling::Complex v = q0[k];
-        for (int i = 0; i < m; ++i) v += g[i] * (history_q_[i + 1][k] - q0[k]);
-        q[k] = v;
-    }
+    history_.predict(key, c, levels_[0]->tangential.traction());
 }
 
 void ExactModel::remember(double ratio, double nu)
 {
-    const bool same = history_count_ > 0 && history_ratio_ == ratio && history_nu_ == nu &&
-                      history_offset_ == setup_.spin_offset;
-    if (!same) history_count_ = 0;
-    history_ratio_ = ratio;
-    history_nu_ = nu;
-    history_offset_ = setup_.spin_offset;
-    // Shift: [0] is the newest.
-    for (int i = std::min(history_count_, 2); i > 0; --i) {
-        history_q_[i].swap(history_q_[i - 1]);
-        for (int k = 0; k < 3; ++k) history_c_[i][k] = history_c_[i - 1][k];
-    }
-    history_q_[0] = levels_[0]->tangential.traction();
-    history_c_[0][0] = setup_.c_xi;
-    history_c_[0][1] = setup_.c_eta;
-    history_c_[0][2] = setup_.c_phi;
-    history_count_ = std::min(history_count_ + 1, 3);
+    const double key[CreepageHistory::kKey] = {ratio, nu, setup_.spin_offset, 0.0};
+    const double c[3] = {setup_.c_xi, setup_.c_eta, setup_.c_phi};
+    history_.remember(key, c, levels_[0]->tangential.traction());
 }
 
 SolveTotals ExactModel::solve(const ContactInput& in, SolveMode mode)
 {
     const bool had_previous = has_previous_;
     has_previous_ = false; // until this solve succeeds
-    if (!had_previous) history_count_ = 0;
+    if (!had_previous) history_.clear();
     info_ = ExactSolveInfo{};
     validate_contact_input(in);
     if (in.flexibility != FlexibilitySource::kalker_from_material)

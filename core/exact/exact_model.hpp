@@ -31,6 +31,7 @@
 #include "contact_model.hpp"
 #include "contact/jacobian.hpp"
 #include "contact/params.hpp"
+#include "exact/creepage_history.hpp"
 #include "exact/exact_geometry.hpp"
 #include "exact/grid_convolution.hpp"
 #include "exact/normal_problem.hpp"
@@ -124,12 +125,9 @@ private:
     } setup_;
     std::vector<double> paper_, consistent_, profile_, row_d_, row_pool_;
     std::vector<SteadyRolling::Complex> tangent_w_; // solve_jacobian's rigid-slip derivative
-    // The last solutions (normalised tractions, newest first) and their
-    // normalised creepages, for the warm start's prediction.
-    std::vector<SteadyRolling::Complex> history_q_[3];
-    double history_c_[3][3] = {};
-    int history_count_ = 0;
-    double history_ratio_ = 0, history_nu_ = 0, history_offset_ = 0;
+    // The last solutions and their creepages, for the warm start's
+    // prediction (key: a/b, nu, spin offset).
+    CreepageHistory history_;
 };
 
 } // namespace creepwork
