@@ -35,6 +35,7 @@
 #include "contact/fields.hpp"
 #include "contact_model.hpp"
 #include "contact/params.hpp"
+#include "exact/creepage_history.hpp"
 #include "exact/exact_model.hpp"
 #include "exact/grid_convolution.hpp"
 #include "exact/normal_problem.hpp"
@@ -147,7 +148,9 @@ private:
     std::vector<signed char> in_contact_;
     std::vector<PatchTotals> patches_;
     std::vector<double> paper_, consistent_, profile_, row_d_, row_pool_;
-    std::vector<SteadyRolling::Complex> previous_q_;
+    // The warm start: the last solutions as physical tractions (key: nu,
+    // spin offset, rolling direction), and the last traction scale.
+    CreepageHistory history_;
     double previous_traction_scale_ = 0;
 };
 
