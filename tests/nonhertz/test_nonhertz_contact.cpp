@@ -9,8 +9,9 @@
 // 1e-5 of max(|Mz|, 0.01 mu N c) (c: radius of a circle of the contact's
 // area), p_max, the approach (the normal force when the approach is
 // prescribed) within 1e-5 relative, adhesion and slip counts within 2
-// elements, the same number of patches. CW_VERBOSE=1 prints the table of
-// doc/validation/non-hertzian.md.
+// elements, the same number of patches. The tables of
+// doc/validation/non-hertzian.md are these comparisons (doc_table.hpp).
+#include "doc_table.hpp"
 #include "gap_shapes.hpp"
 #include "gap_test_support.hpp"
 #include "test_support.h"
@@ -30,9 +31,16 @@ struct Errors {
     int counts = 0;
 };
 
-// One case solved (full mode) and compared; prints a table row.
+std::string e1(double v)
+{
+    char b[16];
+    std::snprintf(b, sizeof b, "%.0e", v);
+    return b;
+}
+
+// One case solved (full mode) and compared; its row of the page's table.
 Errors compare(const cwtest::GapCase& c, const cw::ContactInput& in, cw::Solver& s,
-               bool approach_given)
+               bool approach_given, std::string& table)
 {
     const cw::SolveTotals t = s.solve(in, cw::SolveMode::full);
     const double muN = in.mu * c.Fn;
@@ -45,10 +53,11 @@ Errors compare(const cwtest::GapCase& c, const cw::ContactInput& in, cw::Solver&
     e.normal = approach_given ? std::fabs(t.normal_force / c.Fn - 1.0)
                               : std::fabs(t.approach / c.approach - 1.0);
     e.counts = std::max(std::abs(t.n_adhesion - c.n_adhesion), std::abs(t.n_slip - c.n_slip));
-    if (getenv("CW_VERBOSE"))
-        printf("| %-18s | %4d | %d | %.1e | %.1e | %.1e | %.1e | %d/%d | %d/%d |\n", c.id.c_str(),
-               t.n_contact, t.n_patches, e.F, e.M, e.p, e.normal, t.n_adhesion, t.n_slip,
-               c.n_adhesion, c.n_slip);
+    table += "| " + c.id + " | " + std::to_string(t.n_contact) + " | " +
+             std::to_string(t.n_patches) + " | " + e1(e.F) + " | " + e1(e.M) + " | " + e1(e.p) +
+             " | " + e1(e.normal) + " | " + std::to_string(t.n_adhesion) + "/" +
+             std::to_string(t.n_slip) + " | " + std::to_string(c.n_adhesion) + "/" +
+             std::to_string(c.n_slip) + " |\n";
     if (e.F > 1e-5 || e.M > 1e-5 || e.p > 1e-5 || e.normal > 1e-5 || e.counts > 2 ||
         t.n_patches != c.n_patches)
         fail_msg("%s: dF %.3g dMz %.3g dp_max %.3g d%s %.3g counts %d/%d vs %d/%d, patches %d "
@@ -58,21 +67,26 @@ Errors compare(const cwtest::GapCase& c, const cw::ContactInput& in, cw::Solver&
     return e;
 }
 
-void print_header(const char* title)
+std::string table_header(const char* normal)
 {
-    if (!getenv("CW_VERBOSE")) return;
-    printf("%s\n| case | elements | patches | forces | Mz | p_max | approach | adh/slip | "
-           "CONTACT |\n|---|---|---|---|---|---|---|---|---|\n",
-           title);
+    return std::string("| case | elements | patches | forces | Mz | p_max | ") + normal +
+           " | adhesion/slip | CONTACT's |\n|---|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+}
+
+void check_page(const char* name, const std::string& table)
+{
+    const std::string why =
+        cwtest::check_doc_table(CW_DOC_DIR "/validation/non-hertzian.md", name, table);
+    if (!why.empty()) fail_msg("%s", why.c_str());
 }
 
 void dev_cases_match_contact(void**)
 {
-    print_header("DEV cases (../shared/reference/nonhertz/dev, CONTACT EPS 1e-10)");
+    std::string table = table_header("approach");
     Errors worst;
     for (const cwtest::GapCase& c : cwtest::dev_cases()) {
         cw::Solver s(c.gap.grid);
-        const Errors e = compare(c, c.bind(), s, false);
+        const Errors e = compare(c, c.bind(), s, false, table);
         worst.F = std::max(worst.F, e.F);
         worst.M = std::max(worst.M, e.M);
         worst.p = std::max(worst.p, e.p);
@@ -100,6 +114,7 @@ void dev_cases_match_contact(void**)
     }
     print_message("DEV worst: forces %.2g, Mz %.2g, p_max %.2g, approach %.2g, counts %d\n",
                   worst.F, worst.M, worst.p, worst.normal, worst.counts);
+    check_page("exact-dev", table);
 }
 
 // The shapes no choice was made on, against CONTACT at EPS 1e-12.
@@ -108,7 +123,7 @@ void new_shapes_match_contact(void**)
     const std::string data = CW_NONHERTZ_DATA_DIR;
     const cwtest::CsvTable t = cwtest::read_quoted_csv(data + "/contact_cases.csv");
     const cwtest::CsvTable per_patch = cwtest::read_csv(data + "/contact_patches.csv");
-    print_header("New shapes (tests/nonhertz/gap_shapes.hpp, CONTACT EPS 1e-12)");
+    std::string table = table_header("approach (N08: Fn)");
     const std::vector<gapshapes::Shape> shapes = gapshapes::shapes();
     assert_int_equal(t.rows.size(), shapes.size());
     Errors worst;
@@ -151,7 +166,7 @@ void new_shapes_match_contact(void**)
         c.n_slip = static_cast<int>(t.number(r, "n_slip"));
         c.n_patches = static_cast<int>(t.number(r, "n_patches"));
         cw::Solver s(c.gap.grid);
-        const Errors e = compare(c, c.bind(), s, approach_given);
+        const Errors e = compare(c, c.bind(), s, approach_given, table);
         worst.F = std::max(worst.F, e.F);
         worst.M = std::max(worst.M, e.M);
         worst.p = std::max(worst.p, e.p);
@@ -182,6 +197,7 @@ void new_shapes_match_contact(void**)
     print_message("new shapes worst: forces %.2g, Mz %.2g, p_max %.2g, approach/Fn %.2g, "
                   "counts %d, per patch %.2g\n",
                   worst.F, worst.M, worst.p, worst.normal, worst.counts, patch_worst);
+    check_page("exact-new", table);
 }
 
 } // namespace
