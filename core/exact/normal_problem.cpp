@@ -115,13 +115,14 @@ NormalSolveInfo NormalProblem::solve(const ExactGeometry& g, GridConvolution& co
         for (int k = 0; k < n_; ++k) any = any || q_[k] > 0.0;
         if (!any) q_[nearest] = 1.0;
     }
-    active_set(conv, true, load, 0.0, tolerance, max_iterations, info);
+    active_set(conv, true, load, 0.0, tolerance, tolerance, max_iterations, info);
     return info;
 }
 
 NormalSolveInfo NormalProblem::solve_gap(GridConvolution& conv, const double* h,
                                          const double* start, bool force, double value,
-                                         double tolerance, int max_iterations)
+                                         double tolerance, int max_iterations,
+                                         double first_tolerance)
 {
     NormalSolveInfo info;
     double h_floor = h[0];
@@ -145,14 +146,16 @@ NormalSolveInfo NormalProblem::solve_gap(GridConvolution& conv, const double* h,
     for (int k = 0; k < n_ && !any; ++k) any = q_[k] > 0.0;
     for (int k = 0; k < n_ && !any; ++k)
         if (force ? h_[k] == h_floor : h_[k] < pen_) q_[k] = 1.0;
-    active_set(conv, force, value, h_floor, tolerance, max_iterations, info);
+    active_set(conv, force, value, h_floor, tolerance, std::max(tolerance, first_tolerance),
+               max_iterations, info);
     return info;
 }
 
 void NormalProblem::active_set(GridConvolution& conv, bool fixed_sum, double load,
-                               double h_floor, double tolerance, int max_iterations,
-                               NormalSolveInfo& info)
+                               double h_floor, double tolerance, double first_tolerance,
+                               int max_iterations, NormalSolveInfo& info)
 {
+    double pass_tolerance = first_tolerance; // until the contact set settles
     n_active_ = 0;
     for (int k = 0; k < n_; ++k) {
         active_[k] = q_[k] > 0.0;
@@ -179,7 +182,8 @@ void NormalProblem::active_set(GridConvolution& conv, bool fixed_sum, double loa
                 if (!active_[k]) q_[k] = 0.0;
             target = std::max(std::fabs(pen_ - h_floor), 1e-300);
         }
-        if (!conjugate_gradients(conv, fixed_sum, target, tolerance, max_iterations, info)) break;
+        if (!conjugate_gradients(conv, fixed_sum, target, pass_tolerance, max_iterations, info))
+            break;
 
         conv.apply_normal(q_.data(), u_.data());
         if (fixed_sum) {
@@ -202,7 +206,7 @@ void NormalProblem::active_set(GridConvolution& conv, bool fixed_sum, double loa
                 active_[k] = 0;
                 q_[k] = 0.0;
                 changed = true;
-            } else if (!active_[k] && h_[k] - pen_ + u_[k] < -tolerance * depth) {
+            } else if (!active_[k] && h_[k] - pen_ + u_[k] < -pass_tolerance * depth) {
                 active_[k] = 1;
                 changed = true;
             }
@@ -211,6 +215,10 @@ void NormalProblem::active_set(GridConvolution& conv, bool fixed_sum, double loa
         n_active_ = kept;
         if (n_active_ == 0) break; // a positive load keeps one; an approach may lose all
         if (!changed) {
+            if (pass_tolerance > tolerance) { // settled: once more at the tolerance
+                pass_tolerance = tolerance;
+                continue;
+            }
             info.converged = true;
             break;
         }

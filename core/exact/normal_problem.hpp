@@ -55,9 +55,12 @@ public:
     // contact set and shape matter when the force is prescribed. The
     // tolerance is on max |gap| / depth over the contact set, depth = the
     // approach less the smallest h. Approach below every h: no contact,
-    // converged, q = 0.
+    // converged, q = 0. first_tolerance (> tolerance) solves the passes that
+    // still change the contact set only that far: the set settles as well,
+    // and one last pass at the tolerance finishes.
     NormalSolveInfo solve_gap(GridConvolution& conv, const double* h, const double* start,
-                              bool force, double value, double tolerance, int max_iterations);
+                              bool force, double value, double tolerance, int max_iterations,
+                              double first_tolerance = 0.0);
 
     // q = pn / p0 per element [i + nx j] (0 outside the contact set).
     const std::vector<double>& pressure() const { return q_; }
@@ -70,7 +73,8 @@ private:
     // (fixed_sum, sum q = load) or the approach pen_ prescribed. Residuals
     // are measured against |pen - h_floor|.
     void active_set(GridConvolution& conv, bool fixed_sum, double load, double h_floor,
-                    double tolerance, int max_iterations, NormalSolveInfo& info);
+                    double tolerance, double first_tolerance, int max_iterations,
+                    NormalSolveInfo& info);
     bool conjugate_gradients(GridConvolution& conv, bool fixed_sum, double target,
                              double tolerance, int max_iterations, NormalSolveInfo& info);
     void project(std::vector<double>& v) const; // zero mean on the set, zero off it
