@@ -1,0 +1,80 @@
+// No heap allocation in a gap grid's solves once the solver exists (it makes
+// its only model at creation): cold and warm, the gap or the load changed,
+// the approach given, the semi-Hertzian method, no contact, and every export
+// (fields, states, profile, strips, patches). Counted by interposing malloc
+// (../robustness/count_malloc.h), so built without sanitizers.
+#include <vector>
+
+#include "count_malloc.h"
+#include "gap_shapes.hpp"
+#include "solver.hpp"
+#include "test_support.h"
+
+namespace cw = creepwork;
+
+namespace {
+
+void gap_solves_allocate_nothing(void**)
+{
+    const std::vector<gapshapes::Shape> shapes = gapshapes::shapes();
+    const gapshapes::Shape& s = shapes[2]; // three lobes: three patches
+    cw::GridSpec g;
+    g.kind = cw::GridKind::gap;
+    g.nx = s.nx;
+    g.ny = s.ny;
+    g.x0 = s.x0;
+    g.y0 = s.y0;
+    g.dx = s.dx;
+    g.dy = s.dy;
+    cw_count_start();
+    cw::Solver solver(g);
+    assert_true(cw_count_stop() > 0);
+    const size_t n = s.h.size();
+    std::vector<double> out(n), moved = s.h, y(s.ny), w(s.ny), p(s.ny);
+    std::vector<int> states(n);
+    for (double& v : moved) v *= 1.01;
+    long allocations = 0;
+    for (int k = 0; k < 9; ++k) {
+        cw::ContactInput in;
+        in.model = cw::ModelKind::exact;
+        in.gap = (k % 2 ? moved : s.h).data();
+        in.gap_len = n;
+        in.normal_force = k == 4 ? 0.8 * s.normal_force : s.normal_force;
+        in.G = s.G;
+        in.nu = s.nu;
+        in.mu = k == 7 ? 0.0 : s.mu;
+        in.xi_x = 2e-4 * (1 + 0.01 * k);
+        in.xi_y = -1e-4;
+        in.phi = 0.3;
+        in.warm_start = k % 3 != 0;
+        in.rolling_direction = k == 6 ? -1 : 1;
+        if (k == 5) {
+            in.normal_load = cw::NormalLoad::approach;
+            in.approach = k == 5 ? 5e-5 : 0.0;
+        }
+        if (k == 8) in.normal_load = cw::NormalLoad::approach, in.approach = -1.0; // apart
+        if (k == 3) in.normal_method = cw::NormalMethod::semi_hertz;
+        cw_count_start();
+        solver.solve(in, k % 2 ? cw::SolveMode::forces_only : cw::SolveMode::full);
+        solver.copy_field(cw::Field::pz, out.data());
+        solver.copy_field(cw::Field::px, out.data());
+        solver.copy_state(states.data());
+        if (solver.has_work()) {
+            solver.copy_field(cw::Field::work_consistent, out.data());
+            solver.copy_profile(y.data(), w.data(), p.data());
+        }
+        solver.copy_strips(y.data(), w.data());
+        const size_t patches = solver.patches().size();
+        allocations += cw_count_stop();
+        assert_true(k == 8 ? patches == 0 : patches >= 1);
+    }
+    assert_int_equal(allocations, 0);
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+    const struct CMUnitTest tests[] = {cmocka_unit_test(gap_solves_allocate_nothing)};
+    return cw_run_tests(tests, argc > 1 ? argv[1] : nullptr);
+}
