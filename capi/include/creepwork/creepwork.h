@@ -273,7 +273,8 @@ CW_API int cw_params_init(cw_params* params);
 typedef struct cw_result {
     size_t struct_size;       /* set by cw_result_init */
     double Fx, Fy;            /* creep force on the wheel [N] */
-    double Mz;                /* creep moment about the ellipse centre, on the wheel [N m] */
+    double Mz;                /* creep moment about the ellipse centre (a gap grid: about
+                                 its origin x = y = 0), on the wheel [N m] */
     double W_macro;           /* -(Fx xi_x + Fy xi_y + Mz phi) [J/m], paper eq. 34 */
     double W_micro_paper;     /* sum of the paper's local work [J/m] (FULL) */
     double K;                 /* W_macro / W_micro_paper, paper eq. 39; 0 if undefined (FULL) */
@@ -283,9 +284,11 @@ typedef struct cw_result {
     double adhesion_fraction; /* n_adhesion / n_contact */
     int n_contact, n_adhesion, n_slip;
     int work_flags;           /* CW_WORK_* bits (FULL) */
-    double a, b;              /* semi-axes used [m] */
-    double L1, L2, L3;        /* flexibilities used [m/Pa] */
-    double C11, C22, C23, C33;/* Kalker coefficients used; 0 when L's were given */
+    double a, b;              /* semi-axes used [m] (a gap grid: half the contact's extent
+                                 along x and y) */
+    double L1, L2, L3;        /* flexibilities used [m/Pa]; 0 on a gap grid */
+    double C11, C22, C23, C33;/* Kalker coefficients used; 0 when L's were given and on a
+                                 gap grid */
     double profile_max_diff;  /* lateral work profile vs equal-area parabola, max |diff| / peak */
     double profile_rms_diff;  /* ... RMS difference / peak (FULL) */
     /* ---- appended in 1.1 ---- */
