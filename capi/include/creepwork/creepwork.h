@@ -258,9 +258,9 @@ typedef struct cw_params {
                               the solve only. Default NULL */
     size_t gap_len;        /* values at gap, >= nx*ny */
     int normal_load;       /* CW_NORMAL_FORCE (default) or CW_NORMAL_APPROACH */
-    double approach;       /* [m] from the gap's datum, with CW_NORMAL_APPROACH (default 0) */
     int normal_method;     /* CW_NORMAL_EXACT (default) or CW_NORMAL_SEMI_HERTZ; the
                               tangential problem is the exact model's either way */
+    double approach;       /* [m] from the gap's datum, with CW_NORMAL_APPROACH (default 0) */
 } cw_params;
 
 /* Defaults: steel (G = 82e9 Pa, nu = 0.28), mu = 0.3, a = b = 6e-3 m,
