@@ -21,7 +21,7 @@ int cw_solver_get_patches(const cw_solver* solver, cw_patch* out, size_t len, si
         require_solution(s, false);
         const std::vector<cw::PatchTotals>& patches = s.patches();
         *count = patches.size();
-        if (!out && len == 0) return CW_OK;
+        if (len == 0) return CW_OK; // a count query; out may be NULL
         require(out, "out");
         const size_t size = out[0].struct_size;
         if (size < sizeof(size_t) || size > kMaxStructSize)

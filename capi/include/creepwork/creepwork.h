@@ -399,7 +399,7 @@ CW_API int cw_patch_init(cw_patch* patch);
  * number (cw_result.n_patches) and out[k], k < *count, the patch totals
  * (the result's totals are their sums, to rounding). out is an array of len
  * structs of size out[0].struct_size (every element must carry the same
- * struct_size). out may be NULL with len = 0 to ask for the count. Off a
+ * struct_size). len = 0 asks for the count only (out may then be NULL). Off a
  * gap grid a contact is one patch (centroid at the ellipse centre).
  * Allocates nothing. Errors: CW_ERR_NULL_POINTER (solver, count),
  * CW_ERR_NO_SOLUTION, CW_ERR_STRUCT_SIZE, CW_ERR_BUFFER_TOO_SMALL (len <
