@@ -22,6 +22,7 @@ module creepwork_solver
       procedure, private :: solver_get_state_2d, solver_get_state_1d
       generic :: get_state => solver_get_state_2d, solver_get_state_1d
       procedure :: get_profile => solver_get_profile
+      procedure :: get_patches => solver_get_patches
       procedure, nopass :: noun => solver_noun
    end type cw_solver_type
 
@@ -239,5 +240,43 @@ contains
       if (present(errmsg)) call set_errmsg(o, errmsg)
       call deliver(o, stat)
    end subroutine solver_get_profile
+
+   ! The separate contact patches of the last solve (cw_solver_get_patches):
+   ! count receives their number, patches(k), k <= count, their totals
+   ! (initialised here). Without patches, or with fewer than count of them
+   ! (CW_ERR_BUFFER_TOO_SMALL), only count is set.
+   subroutine solver_get_patches(self, count, patches, stat, errmsg)
+      class(cw_solver_type), intent(in) :: self
+      integer, intent(out) :: count
+      type(cw_patch), intent(inout), optional :: patches(:)
+      integer, intent(out), optional :: stat
+      character(len=:), allocatable, intent(out), optional :: errmsg
+      type(outcome) :: o
+      type(cw_patch) :: none(1)
+      integer(c_size_t) :: n
+      integer(c_int) :: status
+      integer :: k
+      count = 0
+      n = 0
+      o = created(self)
+      if (o%status == CW_OK) then
+         ! An empty or absent array asks for the count (len 0).
+         status = capi_patch_init(none(1))
+         if (present(patches)) then
+            do k = 1, size(patches)
+               status = capi_patch_init(patches(k))
+            end do
+         end if
+         if (present(patches) .and. size(patches) > 0) then
+            o = status_outcome(self, capi_solver_get_patches(handle_of(self), patches, &
+                                                             int(size(patches), c_size_t), n))
+         else
+            o = status_outcome(self, capi_solver_get_patches(handle_of(self), none, 0_c_size_t, n))
+         end if
+         count = int(n)
+      end if
+      if (present(errmsg)) call set_errmsg(o, errmsg)
+      call deliver(o, stat)
+   end subroutine solver_get_patches
 
 end module creepwork_solver

@@ -2,7 +2,8 @@
 # cannot drift (STYLE.md, Fortran):
 #   TYPES     every "typedef struct cw_x { ... } cw_x;" as a bind(C) derived
 #             type cw_x: the same fields in the same order, each
-#             zero-initialised (struct_size 0 means "not initialised");
+#             zero-initialised (struct_size 0 means "not initialised"); a
+#             "const T* x;" field as type(c_ptr) (c_null_ptr; set with c_loc);
 #   BINDINGS  every CW_API function cw_x as a bind(C) interface capi_x
 #             (private to the library's Fortran modules), with the rules:
 #     int, double, size_t, int64_t by value     -> value dummies of c_int ...
@@ -33,7 +34,7 @@ set(nullable
   cw_wear_get_strips.y cw_wear_get_strips.width cw_wear_get_strips.depth
   cw_wear_get_strips.parabola)
 # Struct pointers that are arrays (count elements): bound as type(cw_s) :: x(*).
-set(struct_arrays cw_batch_solve.params cw_batch_solve.results)
+set(struct_arrays cw_batch_solve.params cw_batch_solve.results cw_solver_get_patches.out)
 
 if(NOT HEADER OR NOT TYPES OR NOT BINDINGS)
   message(FATAL_ERROR "usage: cmake -DHEADER=<creepwork.h> -DTYPES=<file.inc> "
@@ -155,7 +156,15 @@ foreach(body IN LISTS bodies)
       string(APPEND types "      ! ${note}\n")
       continue()
     endif()
-    if(line MATCHES "^([a-z0-9_]+)[ ]+([a-zA-Z_0-9]+)@L@([0-9]+)@R@@S@(.*)$")
+    set(pointer_field FALSE)
+    if(line MATCHES "^const ([a-z0-9_]+)[ ]*\\*[ ]*([a-zA-Z_0-9]+)@S@(.*)$")
+      # A pointer to caller-owned data (const double* gap): type(c_ptr),
+      # set with c_loc(array); NULL by default.
+      set(ctype "${CMAKE_MATCH_1}")
+      set(names "${CMAKE_MATCH_2}")
+      set(after "${CMAKE_MATCH_3}")
+      set(pointer_field TRUE)
+    elseif(line MATCHES "^([a-z0-9_]+)[ ]+([a-zA-Z_0-9]+)@L@([0-9]+)@R@@S@(.*)$")
       # One array field, x[N].
       set(ctype "${CMAKE_MATCH_1}")
       set(names "${CMAKE_MATCH_2}(${CMAKE_MATCH_3})")
@@ -171,6 +180,11 @@ foreach(body IN LISTS bodies)
     fortran_scalar("${ctype}" ftype)
     if(ftype STREQUAL "")
       message(FATAL_ERROR "${sname}: no Fortran type for field type '${ctype}' in '${line}'")
+    endif()
+    set(zero "0")
+    if(pointer_field)
+      set(ftype "type(c_ptr)")
+      set(zero "c_null_ptr")
     endif()
     set(comment "")
     if(after MATCHES "/\\*[ ]*(.*)$")
@@ -188,7 +202,7 @@ foreach(body IN LISTS bodies)
       string(STRIP "${n}" n)
       string(REGEX REPLACE "\\(.*" "" bare "${n}")
       list(APPEND fields "${bare}")
-      list(APPEND inits "${n} = 0")
+      list(APPEND inits "${n} = ${zero}")
     endforeach()
     list(JOIN inits ", " inits)
     set(decl_line "      ${ftype} :: ${inits}")
