@@ -90,8 +90,9 @@ class Keywords:
     def fill(self, record, keywords, caller, keep=None):
         """Sets record[field] = value for each keyword (record: a numpy record of
         this struct, any shape; values broadcast). Pointer fields take a numpy
-        array, whose address is stored; it is appended to keep, so that the
-        caller holds it alive while the library may read it."""
+        array, whose address is stored (and its size in the field <name>_len,
+        unless that is given too); it is appended to keep, so that the caller
+        holds it alive while the library may read it."""
         for key, value in keywords.items():
             field = self.field(key, caller)
             spec = self.fields[field]
@@ -103,6 +104,10 @@ class Keywords:
                 if keep is not None:
                     keep.append(arr)
                 record[field] = arr.__array_interface__["data"][0]
+                # Its length field (gap -> gap_len) follows the array unless given.
+                length = field + "_len"
+                if length in self.fields and length not in keywords:
+                    record[length] = arr.size
                 continue
             record[field] = self.convert(field, value)
 

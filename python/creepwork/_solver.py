@@ -276,6 +276,24 @@ class Solver:
         self._check(lib.cw_solver_get_profile(self._live(), base, base + 8 * n, base + 16 * n, n))
         return Profile(p[0], p[1], p[2])
 
+    def patches(self) -> np.ndarray:
+        """The separate contact patches of the last solve (cw_solver_get_patches):
+        a structured array of cw_patch records (n_contact, n_adhesion, n_slip,
+        x_centroid, y_centroid, Fx, Fy, Mz, Fn, p_max, W_macro), one per
+        patch in the order of their first element (lowest y row first). On a
+        gap grid (kind "gap") each 4-connected patch; otherwise the contact
+        as one patch."""
+        handle = self._live()
+        count = ctypes.c_size_t()
+        self._check(lib.cw_solver_get_patches(handle, None, 0, ctypes.byref(count)))
+        out = np.zeros(count.value, DTYPES["cw_patch"])
+        for k in range(count.value):
+            lib.cw_patch_init(address(out[k:k + 1]))
+        if count.value:
+            self._check(lib.cw_solver_get_patches(handle, address(out), count.value,
+                                                  ctypes.byref(count)))
+        return out
+
     def _out(self, out, dtype):
         if out is None:
             return np.empty((self.ny, self.nx), dtype)

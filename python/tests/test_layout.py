@@ -118,16 +118,22 @@ def test_every_params_field_is_a_keyword(c_structs):
     default. (Padding bytes are not compared: numpy copies a structured
     record field by field and leaves them as they come.)"""
     size, members = c_structs["cw_params"]
-    width = {"double": 8, "int": 4, "size_t": 8}
+    width = {"double": 8, "int": 4, "size_t": 8, "pointer": 8}
+    dtype = {"double": np.float64, "int": np.intc, "size_t": np.uintp, "pointer": np.uintp}
     defaults = _library.defaults("cw_params").tobytes()
+    data = np.arange(3.0)  # a pointer field holds the address of its array
     for name, offset, kind, count in members:
         if name == "struct_size":
             continue
-        value = {"double": 0.125, "int": 3}.get(kind)
+        value = {"double": 0.125, "int": 3, "size_t": 7, "pointer": data}.get(kind)
         assert value is not None, "teach this test the kind %s of %s" % (kind, name)
         raw = creepwork.params(**{name: value}).tobytes()
-        expected = np.array(value, np.float64 if kind == "double" else np.intc).tobytes()
+        stored = data.ctypes.data if kind == "pointer" else value
+        expected = np.array(stored, dtype[kind]).tobytes()
         assert raw[offset:offset + width[kind]] == expected, name
         for other, o, k, _ in members:
-            if other != name:
+            if kind == "pointer" and other == name + "_len":
+                # The length field follows the array (gap -> gap_len).
+                assert raw[o:o + width[k]] == np.array(data.size, np.uintp).tobytes()
+            elif other != name:
                 assert raw[o:o + width[k]] == defaults[o:o + width[k]], (name, other)
