@@ -67,11 +67,13 @@ typedef struct {
 static const field_info params_fields[] = {CW_FIELDS_cw_params(FIELD_ENTRY)};
 static const field_info grid_fields[] = {CW_FIELDS_cw_grid(FIELD_ENTRY)};
 static const field_info result_fields[] = {CW_FIELDS_cw_result(FIELD_ENTRY)};
+static const field_info patch_fields[] = {CW_FIELDS_cw_patch(FIELD_ENTRY)};
 #undef FIELD_ENTRY
 #define COUNT(a) (sizeof(a) / sizeof((a)[0]))
 static const struct_info PARAMS = {"cw_params", params_fields, COUNT(params_fields)};
 static const struct_info GRID = {"cw_grid", grid_fields, COUNT(grid_fields)};
 static const struct_info RESULT = {"cw_result", result_fields, COUNT(result_fields)};
+static const struct_info PATCH = {"cw_patch", patch_fields, COUNT(patch_fields)};
 
 typedef struct {
     const char* struct_name;
@@ -261,6 +263,13 @@ static void to_structs(const struct_info* s, const mxArray* in, void* out, size_
                 if (!mxIsDouble(v) || mxIsComplex(v))
                     FAIL("badValue", "%s must be a real double array", f->name);
                 *(void**)((char*)out + f->offset) = mxGetPr(v);
+                /* Its length field (gap -> gap_len) follows the array unless
+                   the struct gives it too. */
+                char length_name[64];
+                snprintf(length_name, sizeof length_name, "%s_len", f->name);
+                const field_info* length = find_field(s, length_name);
+                if (length && mxGetFieldNumber(in, length_name) < 0)
+                    store(out, length, (double)mxGetNumberOfElements(v), 0);
                 continue;
             }
             if (mxGetNumberOfElements(v) != (size_t)f->count || !mxIsDouble(v))
@@ -419,7 +428,21 @@ static cw_params params_of(const mxArray* params_in)
     return p;
 }
 
-/* One solve of p on s: totals, and with fields the per-element maps,
+/* The separate patches of the last solve (cw_solver_get_patches): one
+ * struct of cw_patch's fields, each a column with an entry per patch. */
+static mxArray* patches_of(cw_solver* s)
+{
+    size_t count = 0;
+    cw_solver_get_patches(s, NULL, 0, &count);
+    cw_patch* p = mxCalloc(count ? count : 1, sizeof *p);
+    for (size_t k = 0; k < count; ++k) cw_patch_init(&p[k]);
+    if (count) cw_solver_get_patches(s, p, count, &count);
+    mxArray* out = from_structs(&PATCH, p, sizeof *p, count, NULL, 0, NULL);
+    mxFree(p);
+    return out;
+}
+
+/* One solve of p on s: totals and patches, and with fields the per-element maps,
  * states and profile; with jacobian the 4 x 4 matrix. On error s is
  * destroyed first when owned (an error does not return). */
 static mxArray* solve_one(cw_solver* s, int owned, cw_params p, int fields, int jacobian)
@@ -436,8 +459,9 @@ static mxArray* solve_one(cw_solver* s, int owned, cw_params p, int fields, int 
         if (owned) cw_solver_destroy(s);
         fail_status(status, message);
     }
-    static const char* extra_names[] = {"fields", "state", "profile", "jacobian"};
-    mxArray* out = from_structs(&RESULT, &r, sizeof r, 1, NULL, 4, extra_names);
+    static const char* extra_names[] = {"fields", "state", "profile", "jacobian", "patches"};
+    mxArray* out = from_structs(&RESULT, &r, sizeof r, 1, NULL, 5, extra_names);
+    mxSetField(out, 0, "patches", patches_of(s));
     if (jacobian) {
         mxArray* j = mxCreateDoubleMatrix(4, 4, mxREAL);
         for (int row = 0; row < 4; ++row) /* C row-major -> MATLAB column-major */
