@@ -293,6 +293,36 @@ CAMPAIGN_MUTANTS = [
 MUTANTS += CAMPAIGN_MUTANTS
 # ------------------------------------------------------------ end campaign
 
+# ------------------------------------------------------ contacts of any shape
+# The gap model (core/exact/gap_model.cpp), its patches and the fast normal
+# method: caught by CONTACT's rows on gap grids (test_nonhertz_contact), the
+# Hertzian gap against the elliptic model and the patch sums, and the doors.
+GAP = [
+    "test_nonhertz_contact", "test_nonhertz_model", "test_nonhertz_capi", "test_nonhertz_fast",
+    "test_nonhertz_parts", "test_fortran_gap", "cli_gap_json_matches_library",
+]
+GAP_MUTANTS = [
+    dict(id="gap-spin-slip", what="the gap model's rigid slip takes +phi y along x",
+         file="core/exact/gap_model.cpp",
+         old="            w[i + L.nx * j] = {s.xi - s.phi * y, s.eta + s.phi * (x + s.spin_offset * L.dx)};",
+         new="            w[i + L.nx * j] = {s.xi + s.phi * y, s.eta + s.phi * (x + s.spin_offset * L.dx)};",
+         tests=GAP, require=["test_nonhertz_contact"]),
+    dict(id="gap-patch-force", what="a patch's normal force sums pressures without the area",
+         file="core/exact/gap_model.cpp",
+         old="            P.Fn += pressure_[k] * area;",
+         new="            P.Fn += pressure_[k];", tests=GAP),
+    dict(id="patches-no-up-neighbour", what="patch labels ignore the neighbour at j + 1",
+         file="core/nonhertz/patches.cpp",
+         old="                                 j > 0 ? k - nx_ : -1, j + 1 < ny_ ? k + nx_ : -1};",
+         new="                                 j > 0 ? k - nx_ : -1, -1};", tests=GAP),
+    dict(id="semi-hertz-pressure", what="the semi-Hertzian peak pressure grows with the depth, not its root",
+         file="core/nonhertz/semi_hertz.cpp",
+         old="        const double p0 = R.p_factor * std::sqrt(local);",
+         new="        const double p0 = R.p_factor * local;", tests=GAP),
+]
+MUTANTS += GAP_MUTANTS
+# -------------------------------------------------- end contacts of any shape
+
 
 def run(cmd, cwd=None, quiet=True):
     r = subprocess.run(cmd, cwd=cwd, stdout=subprocess.PIPE if quiet else None,
