@@ -10,7 +10,7 @@
 # set to the top of the source tree. The library is bitwise deterministic on
 # one build, so a table differs only when the code's results do.
 #
-# usage: doc-tables.sh update|check|list --build BUILD_DIR [--work DIR] [--skip REGEX] [FILE.md...]
+# usage: doc-tables.sh update|check|list --build BUILD_DIR [--work DIR] [--skip REGEX] [--only REGEX] [FILE.md...]
 #   update  rewrite each block with what its command prints now
 #   check   exit 1, with a diff, when a block differs from what its command
 #           prints (the CTest test doc_tables_current runs this)
@@ -19,18 +19,20 @@
 # BUILD_DIR/doc-tables. --skip leaves the blocks whose command matches the
 # (extended) regular expression as they are: the CTest test skips the
 # calibration tool's tables, whose exact references take minutes to compute
-# on a fresh build directory. Each command's run time goes to stderr.
+# on a fresh build directory; --only keeps every other block (the CTest test
+# doc_tables_calibration checks those). Each command's run time goes to stderr.
 set -euo pipefail
 source_dir=$(cd "$(dirname "$0")/.." && pwd)
 mode=${1:?usage: doc-tables.sh update|check|list --build BUILD_DIR [--work DIR] [FILE.md...]}
 shift
-build="" work="" skip=""
+build="" work="" skip="" only=""
 files=()
 while [ $# -gt 0 ]; do
   case "$1" in
     --build) build=$(cd "${2:?--build DIR}" && pwd); shift 2 ;;
     --work) work=${2:?--work DIR}; shift 2 ;;
     --skip) skip=${2:?--skip REGEX}; shift 2 ;;
+    --only) only=${2:?--only REGEX}; shift 2 ;;
     *) files+=("$1"); shift ;;
   esac
 done
@@ -73,7 +75,8 @@ regenerated() {
       command=${BASH_REMATCH[1]}
       printf '%s\n' "$line"
       keep=0
-      if [ -n "$skip" ] && grep -Eq -- "$skip" <<<"$command"; then
+      if { [ -n "$skip" ] && grep -Eq -- "$skip" <<<"$command"; } ||
+         { [ -n "$only" ] && ! grep -Eq -- "$only" <<<"$command"; }; then
         keep=1
         echo "  skipped: $command" >&2
       else
