@@ -80,5 +80,5 @@ def test_one_patch_off_a_gap_grid_and_errors_name_the_input():
     grid = gap_grid(8, 8, -2e-3, -2e-3, 0.5e-3, 0.5e-3)
     x, y = centres(grid)
     h = x ** 2 + y ** 2
-    with pytest.raises(creepwork.InvalidInputError, match="model = fastsim"):
-        creepwork.solve(**CREEP, model="fastsim", N=N, gap=h, gap_len=h.size, grid=grid)
+    with pytest.raises(creepwork.InvalidInputError, match="model = calibrated"):
+        creepwork.solve(**CREEP, model="calibrated", N=N, gap=h, gap_len=h.size, grid=grid)

@@ -246,7 +246,7 @@ static void errors_name_the_input(void** state)
         const char* names;
     } bad[] = {{0, CW_ERR_INVALID_INPUT, "gap is NULL"}, {1, CW_ERR_INVALID_INPUT, "gap_len"},
                {2, CW_ERR_INVALID_INPUT, "gap[5]"},      {3, CW_ERR_UNKNOWN_OPTION, "normal_load"},
-               {4, CW_ERR_UNKNOWN_OPTION, "normal_method"}, {5, CW_ERR_INVALID_INPUT, "model = fastsim"},
+               {4, CW_ERR_UNKNOWN_OPTION, "normal_method"}, {5, CW_ERR_INVALID_INPUT, "model = calibrated"},
                {6, CW_ERR_INVALID_INPUT, "approach"},    {7, CW_ERR_INVALID_INPUT, "G"}};
     for (size_t k = 0; k < sizeof bad / sizeof bad[0]; ++k) {
         cw_params p = ok;
@@ -260,7 +260,7 @@ static void errors_name_the_input(void** state)
         case 2: hb[5] = strtod("nan", NULL); break;
         case 3: p.normal_load = 7; break;
         case 4: p.normal_method = -1; break;
-        case 5: p.model = CW_MODEL_FASTSIM; break;
+        case 5: p.model = CW_MODEL_CALIBRATED; break;
         case 6: p.normal_load = CW_NORMAL_APPROACH, p.approach = strtod("inf", NULL); break;
         case 7: p.G = 0.0; break;
         }
@@ -276,7 +276,8 @@ static void errors_name_the_input(void** state)
     assert_int_equal(cw_solver_solve_jacobian(s, &p, CW_SOLVE_FORCES, NULL, J, CW_JACOBIAN_LEN),
                      CW_ERR_INVALID_INPUT);
     assert_names(cw_solver_last_error(s), "Jacobian");
-    assert_int_equal(cw_solver_prepare(s, CW_MODEL_FASTSIM), CW_ERR_INVALID_INPUT);
+    assert_int_equal(cw_solver_prepare(s, CW_MODEL_CALIBRATED), CW_ERR_INVALID_INPUT);
+    assert_int_equal(cw_solver_prepare(s, CW_MODEL_FASTSIM), CW_OK);
     assert_int_equal(cw_solver_prepare(s, CW_MODEL_EXACT), CW_OK);
     assert_int_equal(cw_solver_get_patches(s, NULL, 0, NULL), CW_ERR_NULL_POINTER);
     /* A params struct of 1.1 (before the gap fields): no gap, an error. */
