@@ -155,6 +155,18 @@ SolveTotals GapFastsimModel::solve(const ContactInput& in, SolveMode mode)
         for (int i = 0; i < nx_; ++i)
             patch_of_[i + nx_ * j] = labels_.of(caller_index(i) + nx_ * j);
     set_patches(in);
+    // The largest rigid slip step dx |omega| of any patch: far below
+    // overflow, so that |q|^2 is finite (the march compares it squared).
+    const double reach = std::max({std::fabs(grid_.x0), std::fabs(grid_.x0 + nx_ * grid_.dx),
+                                   std::fabs(grid_.y0), std::fabs(grid_.y0 + ny_ * grid_.dy)});
+    for (const GapMarchPatch& P : march_patches_) {
+        const double step = grid_.dx * ((std::fabs(in.xi_x) + std::fabs(in.phi) * reach) / P.L1 +
+                                        (std::fabs(in.xi_y) + std::fabs(in.phi) * reach) / P.L2 +
+                                        4.0 * std::fabs(in.phi) * reach / P.L3);
+        if (!(step <= 1e100))
+            throw Error(ErrorKind::invalid_input,
+                        "xi_x, xi_y or phi is so large that the rigid slip overflows");
+    }
 
     const double d = direction_;
     GapMarchInput m;

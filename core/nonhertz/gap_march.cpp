@@ -41,10 +41,12 @@ GapMarchTotals gap_march(const GapMarchInput& in, const GapMarchOutput& out)
             const double x = in.x0 + i * dx;
             const double oy = oy0 + oyx * x;
             double qx = px - dx * ox, qy = py - dx * oy;
-            const double bound = in.mu * pz, norm = std::hypot(qx, qy);
-            const bool slips = norm > bound;
+            // |q| > bound compared squared: the root only in slip (tractions
+            // in Pa square far below overflow; the C ABI bounds the inputs).
+            const double bound = in.mu * pz, n2 = qx * qx + qy * qy;
+            const bool slips = n2 > bound * bound;
             if (slips) {
-                const double f = bound / norm; // norm > bound >= 0
+                const double f = bound / std::sqrt(n2); // |q| > bound >= 0
                 qx *= f;
                 qy *= f;
             }

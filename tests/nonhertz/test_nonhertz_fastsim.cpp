@@ -387,6 +387,9 @@ void errors_name_the_input(void**)
     in.mu = -0.1;
     expect_error(solver, in, cw::ErrorKind::invalid_input, "mu");
     in = ok;
+    in.xi_y = 1e200;
+    expect_error(solver, in, cw::ErrorKind::invalid_input, "rigid slip overflows");
+    in = ok;
     in.normal_method = static_cast<cw::NormalMethod>(5);
     expect_error(solver, in, cw::ErrorKind::invalid_input, "normal_method");
     cw::Jacobian J;
