@@ -35,6 +35,7 @@ GapFastsimModel::GapFastsimModel(const GridSpec& grid)
     patch_of_.assign(n, -1);
     // At most one patch per two elements (a checkerboard's contact elements).
     march_patches_.reserve(n / 2 + 1);
+    march_totals_.reserve(n / 2 + 1);
     longest_.reserve(n / 2 + 1);
     patches_.reserve(n / 2 + 1);
     for (auto* v : {&profile_, &row_d_, &row_pool_}) v->assign(ny_, 0.0);
@@ -104,12 +105,15 @@ void GapFastsimModel::set_patches(const ContactInput& in)
     longest_.assign(count, 0.0);
     std::vector<GapMarchPatch>& P = march_patches_;
     const double left = direction_ > 0 ? grid_.x0 : -(grid_.x0 + (nx_ - 1) * grid_.dx);
+    int i_lo = nx_, i_hi = -1, j_lo = ny_, j_hi = -1; // the contact's extent
     for (int j = 0; j < ny_; ++j) {
         const double y = grid_.y0 + j * grid_.dy;
         int run = 0, last = -1;
         for (int i = 0; i <= nx_; ++i) {
             const int p = i < nx_ ? patch_of_[i + static_cast<size_t>(nx_) * j] : -1;
             if (p >= 0) {
+                i_lo = std::min(i_lo, i), i_hi = std::max(i_hi, i);
+                j_lo = std::min(j_lo, j), j_hi = std::max(j_hi, j);
                 P[p].xc += left + i * grid_.dx;
                 P[p].yc += y;
                 P[p].L3 += 1.0; // the element count until the flexibilities are set
@@ -121,6 +125,9 @@ void GapFastsimModel::set_patches(const ContactInput& in)
             }
         }
     }
+    extent_x_ = i_hi >= i_lo ? (i_hi - i_lo + 1) * grid_.dx : 0.0;
+    extent_y_ = j_hi >= j_lo ? (j_hi - j_lo + 1) * grid_.dy : 0.0;
+    y_mid_ = j_hi >= j_lo ? grid_.y0 + 0.5 * (j_lo + j_hi) * grid_.dy : 0.0;
     for (int p = 0; p < count; ++p) {
         const double elements = P[p].L3;
         P[p].xc /= elements;
@@ -139,17 +146,18 @@ SolveTotals GapFastsimModel::solve(const ContactInput& in, SolveMode mode)
     validate(in);
     direction_ = in.rolling_direction;
     full_ = mode == SolveMode::full;
-    const size_t n = static_cast<size_t>(nx_) * ny_;
     for (int j = 0; j < ny_; ++j)
         for (int i = 0; i < nx_; ++i) gap_[i + nx_ * j] = in.gap[caller_index(i) + nx_ * j];
     solve_normal(in);
 
     SolveTotals t;
     double p_max = 0.0;
-    for (size_t k = 0; k < n; ++k) p_max = std::max(p_max, pressure_[k]);
     for (int j = 0; j < ny_; ++j)
-        for (int i = 0; i < nx_; ++i)
-            in_contact_[i + nx_ * j] = pressure_[caller_index(i) + nx_ * j] > 0.0;
+        for (int i = 0; i < nx_; ++i) {
+            const double pz = pressure_[caller_index(i) + nx_ * j];
+            p_max = std::max(p_max, pz);
+            in_contact_[i + nx_ * j] = pz > 0.0;
+        }
     t.n_patches = labels_.label(in_contact_.data());
     for (int j = 0; j < ny_; ++j)
         for (int i = 0; i < nx_; ++i)
@@ -184,51 +192,31 @@ SolveTotals GapFastsimModel::solve(const ContactInput& in, SolveMode mode)
     m.eta = in.xi_y;
     m.phi = d * in.phi;
     m.spin_offset = in.spin_offset >= 0.0 ? in.spin_offset : 0.0;
+    march_totals_.assign(labels_.count(), GapMarchTotals{});
     GapMarchOutput out;
     out.p = p_.data();
-    out.slip = slip_.data();
-    out.rigid = rigid_.data();
+    out.slip = full_ ? slip_.data() : nullptr; // the slips feed the work maps alone
+    out.rigid = full_ ? rigid_.data() : nullptr;
     out.state = state_.data();
+    out.patch_totals = march_totals_.data();
     gap_march(m, out);
 
-    // Totals and patches in the caller's frame, element by element in the
-    // caller's layout (as the exact model's).
-    const double area = grid_.dx * grid_.dy;
+    // Totals and patches in the caller's frame, patch by patch.
     patches_.assign(labels_.count(), PatchTotals{});
-    double y_lo = 0.0, y_hi = 0.0, x_lo = 0.0, x_hi = 0.0;
-    bool first = true;
-    for (int j = 0; j < ny_; ++j) {
-        const double y = grid_.y0 + j * grid_.dy;
-        for (int i = 0; i < nx_; ++i) {
-            const int c = i + nx_ * j, k = caller_index(i) + nx_ * j;
-            const int p = labels_.of(c);
-            if (p < 0) continue;
-            const double x = grid_.x0 + i * grid_.dx;
-            const double px = d * p_[k].real() * area, py = p_[k].imag() * area;
-            PatchTotals& P = patches_[p];
-            ++P.n_contact;
-            P.n_slip += state_[k] == 2;
-            P.x_centroid += x;
-            P.y_centroid += y;
-            P.Fx += px;
-            P.Fy += py;
-            P.Mz += x * py - y * px;
-            P.Fn += pressure_[k] * area;
-            P.p_max = std::max(P.p_max, pressure_[k]);
-            if (first) {
-                x_lo = x_hi = x;
-                y_lo = y_hi = y;
-                first = false;
-            }
-            x_lo = std::min(x_lo, x), x_hi = std::max(x_hi, x);
-            y_lo = std::min(y_lo, y), y_hi = std::max(y_hi, y);
-        }
-    }
     t.model = ModelKind::fastsim;
-    for (PatchTotals& P : patches_) {
+    for (int p = 0; p < labels_.count(); ++p) {
+        const GapMarchTotals& M = march_totals_[p];
+        PatchTotals& P = patches_[p];
+        P.n_contact = M.n_contact;
+        P.n_slip = M.n_slip;
         P.n_adhesion = P.n_contact - P.n_slip;
-        P.x_centroid /= P.n_contact;
-        P.y_centroid /= P.n_contact;
+        P.x_centroid = d * march_patches_[p].xc;
+        P.y_centroid = march_patches_[p].yc;
+        P.Fx = d * M.Fx;
+        P.Fy = M.Fy;
+        P.Mz = d * M.Mz;
+        P.Fn = M.Fn;
+        P.p_max = M.p_max;
         P.W_macro = -(P.Fx * in.xi_x + P.Fy * in.xi_y + P.Mz * in.phi);
         t.Fx += P.Fx;
         t.Fy += P.Fy;
@@ -239,9 +227,8 @@ SolveTotals GapFastsimModel::solve(const ContactInput& in, SolveMode mode)
     t.W_macro = -(t.Fx * in.xi_x + t.Fy * in.xi_y + t.Mz * in.phi);
     t.n_adhesion = t.n_contact - t.n_slip;
     t.adhesion_fraction = t.n_contact > 0 ? double(t.n_adhesion) / t.n_contact : 0.0;
-    t.a = first ? 0.0 : 0.5 * (x_hi - x_lo + grid_.dx);
-    t.b = first ? 0.0 : 0.5 * (y_hi - y_lo + grid_.dy);
-    y_mid_ = first ? 0.0 : 0.5 * (y_lo + y_hi);
+    t.a = 0.5 * extent_x_;
+    t.b = 0.5 * extent_y_;
     half_width_ = t.b;
     t.p_max = p_max;
     t.approach = approach_;
@@ -258,7 +245,7 @@ SolveTotals GapFastsimModel::solve(const ContactInput& in, SolveMode mode)
         w.state = state_.data();
         w.traction_scale = 1.0;
         w.slip_scale = 1.0;
-        w.area = area;
+        w.area = grid_.dx * grid_.dy;
         w.dy = grid_.dy;
         w.b = half_width_ > 0.0 ? half_width_ : grid_.dy;
         w.y0 = grid_.y0 - y_mid_;

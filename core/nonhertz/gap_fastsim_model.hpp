@@ -94,7 +94,7 @@ private:
     // The last solve: rolling direction, spin offset, mode, extent.
     int direction_ = 1;
     bool full_ = false;
-    double approach_ = 0, force_ = 0, y_mid_ = 0, half_width_ = 0;
+    double approach_ = 0, force_ = 0, y_mid_ = 0, half_width_ = 0, extent_x_ = 0, extent_y_ = 0;
     // Per element, rolling frame [i + nx j] (caller's layout for in_contact_).
     std::vector<double> gap_, gap_in_dx_, pressure_, start_, paper_, consistent_;
     std::vector<std::complex<double>> p_, slip_, rigid_;
@@ -102,6 +102,7 @@ private:
     std::vector<int> patch_of_;
     // Per patch (reserved for the most patches a grid can hold).
     std::vector<GapMarchPatch> march_patches_;
+    std::vector<GapMarchTotals> march_totals_;
     std::vector<double> longest_;
     std::vector<PatchTotals> patches_;
     std::vector<double> profile_, row_d_, row_pool_; // per row

@@ -47,18 +47,22 @@ struct GapMarchInput {
     double spin_offset = 0;                // fraction of dx, >= 0
 };
 
+// Rolling frame; Mz about the frame's origin.
+struct GapMarchTotals {
+    double Fx = 0, Fy = 0, Mz = 0; // [N, N, N m]
+    double Fn = 0, p_max = 0;      // [N, Pa]
+    int n_contact = 0, n_slip = 0;
+};
+
 // Per element [i + nx j], rolling frame; written everywhere (0 outside).
+// slip and rigid may be null (not computed: the forces alone).
 struct GapMarchOutput {
     std::complex<double>* p = nullptr;     // traction on the wheel [Pa]
     std::complex<double>* slip = nullptr;  // micro-slip s [-]
     std::complex<double>* rigid = nullptr; // the model's rigid slip w [-]
     signed char* state = nullptr;          // 0 exterior, 1 adhesion, 2 slip
-};
-
-// Rolling frame; Mz about the frame's origin.
-struct GapMarchTotals {
-    double Fx = 0, Fy = 0, Mz = 0;
-    int n_contact = 0, n_slip = 0;
+    // Per patch (may be null), added to: the caller zeroes them.
+    GapMarchTotals* patch_totals = nullptr;
 };
 
 // Allocates nothing.
