@@ -61,11 +61,11 @@ struct GapMarchOutput {
     std::complex<double>* slip = nullptr;  // micro-slip s [-]
     std::complex<double>* rigid = nullptr; // the model's rigid slip w [-]
     signed char* state = nullptr;          // 0 exterior, 1 adhesion, 2 slip
-    // Per patch (may be null), added to: the caller zeroes them.
+    // Per patch, added to (the caller zeroes them first).
     GapMarchTotals* patch_totals = nullptr;
 };
 
 // Allocates nothing.
-GapMarchTotals gap_march(const GapMarchInput& in, const GapMarchOutput& out);
+void gap_march(const GapMarchInput& in, const GapMarchOutput& out);
 
 } // namespace creepwork
