@@ -37,6 +37,7 @@ GapFastsimModel::GapFastsimModel(const GridSpec& grid)
     march_patches_.reserve(n / 2 + 1);
     march_totals_.reserve(n / 2 + 1);
     longest_.reserve(n / 2 + 1);
+    elements_.reserve(n / 2 + 1);
     patches_.reserve(n / 2 + 1);
     for (auto* v : {&profile_, &row_d_, &row_pool_}) v->assign(ny_, 0.0);
 }
@@ -103,6 +104,7 @@ void GapFastsimModel::set_patches(const ContactInput& in)
     const int count = labels_.count();
     march_patches_.assign(count, GapMarchPatch{});
     longest_.assign(count, 0.0);
+    elements_.assign(count, 0.0);
     std::vector<GapMarchPatch>& P = march_patches_;
     const double left = direction_ > 0 ? grid_.x0 : -(grid_.x0 + (nx_ - 1) * grid_.dx);
     int i_lo = nx_, i_hi = -1, j_lo = ny_, j_hi = -1; // the contact's extent
@@ -116,7 +118,7 @@ void GapFastsimModel::set_patches(const ContactInput& in)
                 j_lo = std::min(j_lo, j), j_hi = std::max(j_hi, j);
                 P[p].xc += left + i * grid_.dx;
                 P[p].yc += y;
-                P[p].L3 += 1.0; // the element count until the flexibilities are set
+                elements_[p] += 1.0;
                 ++run;
                 last = p;
             } else if (run > 0) {
@@ -129,7 +131,7 @@ void GapFastsimModel::set_patches(const ContactInput& in)
     extent_y_ = j_hi >= j_lo ? (j_hi - j_lo + 1) * grid_.dy : 0.0;
     y_mid_ = j_hi >= j_lo ? grid_.y0 + 0.5 * (j_lo + j_hi) * grid_.dy : 0.0;
     for (int p = 0; p < count; ++p) {
-        const double elements = P[p].L3;
+        const double elements = elements_[p];
         P[p].xc /= elements;
         P[p].yc /= elements;
         const double a = 0.5 * longest_[p], b = elements * grid_.dx * grid_.dy / (kPi * a);

@@ -103,7 +103,7 @@ private:
     // Per patch (reserved for the most patches a grid can hold).
     std::vector<GapMarchPatch> march_patches_;
     std::vector<GapMarchTotals> march_totals_;
-    std::vector<double> longest_;
+    std::vector<double> longest_, elements_; // longest row [m], element count
     std::vector<PatchTotals> patches_;
     std::vector<double> profile_, row_d_, row_pool_; // per row
 };
