@@ -46,7 +46,8 @@ public:
     // Makes a model's memory now, so that its solves allocate nothing
     // (FASTSIM's is made with the solver). Throws Error(invalid_input) when
     // the model is unknown or cannot run on this grid (exact: needs the
-    // uniform or a gap grid; calibrated: not a gap grid) and Error(grid_out_of_range) beyond its grid limit.
+    // uniform or a gap grid; calibrated: not a gap grid) and
+    // Error(grid_out_of_range) beyond its grid limit.
     void prepare(ModelKind model);
     // The exact model, if made (diagnostics of its last solve: info()).
     const ExactModel* exact_model() const;
