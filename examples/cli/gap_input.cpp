@@ -316,8 +316,10 @@ void print_gap_text(std::ostream& os, const Solution& s, const std::vector<cw_pa
                                        : "exact (Kalker's half-space theory)")
        << ", normal problem "
        << (p.normal_method == CW_NORMAL_SEMI_HERTZ ? "semi-Hertzian (per row)" : "exact") << ": p_max = "
-       << val(r.p_max, Quantity::stress) << ", " << r.iterations << " iterations, residual "
-       << fmt(r.residual, 3) << "\n";
+       << val(r.p_max, Quantity::stress);
+    if (r.model == CW_MODEL_EXACT) // FASTSIM's march does not iterate
+        os << ", " << r.iterations << " iterations, residual " << fmt(r.residual, 3);
+    os << "\n";
     os << "results    (forces and moment on the wheel, Mz about the file's origin)\n";
     const struct {
         const char* key;
