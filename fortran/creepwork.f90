@@ -15,7 +15,9 @@
 !     Kalker's normalised FASTSIM, the wear-profile update;
 !   * wrapper types that own a C handle (one file each, all extending
 !     cw_handle of creepwork_handle.f90): cw_solver_type, cw_batch_type,
-!     cw_accumulator_type, cw_wear_type, cw_wear_profile_type. Each has
+!     cw_accumulator_type, cw_wear_type, cw_wear_profile_type,
+!     cw_wheelrail_type (creepwork_wheelrail.f90, with the _init procedures
+!     of its structs). Each has
 !     create, an explicit, idempotent destroy, is_created, last_error and
 !     noun (its name in messages: 'solver', ...); the final procedure is only
 !     a safety net (gfortran 12 does not finalize reliably) and copying a
@@ -58,6 +60,9 @@ module creepwork
    use creepwork_batch, only: cw_batch_type
    use creepwork_accumulator, only: cw_accumulator_type
    use creepwork_wear, only: cw_wear_type, cw_wear_profile_type
+   use creepwork_wheelrail, only: cw_wheelrail_type, cw_wheelrail_params_init, &
+                                  cw_wheelrail_motion_init, cw_wheelrail_totals_init, &
+                                  cw_wheelrail_patch_init
    implicit none
    public
 end module creepwork

@@ -13,7 +13,8 @@ if(NOT HEADER OR NOT OUTPUT)
   message(FATAL_ERROR "usage: cmake -DHEADER=<creepwork.h> -DOUTPUT=<file.inc> -P ${CMAKE_CURRENT_LIST_FILE}")
 endif()
 
-file(READ "${HEADER}" text)
+include("${CMAKE_CURRENT_LIST_DIR}/../cmake/read_public_header.cmake")
+creepwork_read_public_header("${HEADER}" text)
 # Join continued lines so that each macro is on one line.
 string(REGEX REPLACE "\\\\\r?\n" " " text "${text}")
 

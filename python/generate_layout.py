@@ -270,6 +270,23 @@ def type_kind(words, where):
     return SCALAR_KINDS[ctype]
 
 
+def read_header(path):
+    """The text of creepwork.h with each `#include "creepwork/creepwork_<part>.h"`
+    of a part beside it (creepwork_wear.h, creepwork_wheelrail.h) replaced by
+    that part's text: the whole C API as the compiler reads it."""
+    directory = os.path.dirname(path)
+    with open(path, encoding="utf-8") as f:
+        text = f.read()
+
+    def part(match):
+        name = os.path.join(directory, match.group(1))
+        if not os.path.isfile(name):
+            return match.group(0)  # creepwork_export.h: generated, not a part
+        with open(name, encoding="utf-8") as f:
+            return f.read()
+    return re.sub(r'#include "creepwork/(creepwork_\w+\.h)"', part, text)
+
+
 def parse_header(text, header_name="creepwork.h"):
     joined = re.sub(r"\\\r?\n", " ", text)  # continued macro lines
     constants, constant_docs, enums = {}, {}, {}
@@ -395,11 +412,10 @@ def main(argv=None):
     ap.add_argument("--c-fields")
     ap.add_argument("--probe")
     args = ap.parse_args(argv)
-    with open(args.header, encoding="utf-8") as f:
-        try:
-            layout = parse_header(f.read(), os.path.basename(args.header))
-        except HeaderError as e:
-            sys.exit("generate_layout.py: %s: %s" % (args.header, e))
+    try:
+        layout = parse_header(read_header(args.header), os.path.basename(args.header))
+    except HeaderError as e:
+        sys.exit("generate_layout.py: %s: %s" % (args.header, e))
     if args.python:
         write_if_changed(args.python, python_source(layout))
     if args.c_fields:

@@ -36,8 +36,8 @@ def installed():
 
 def layout():
     header, _ = installed()
-    with open(header, encoding="utf-8") as f:
-        return generate_layout.parse_header(f.read(), os.path.basename(header))
+    return generate_layout.parse_header(generate_layout.read_header(header),
+                                        os.path.basename(header))
 
 
 class BuildPy(build_py):

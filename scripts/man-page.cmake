@@ -59,7 +59,7 @@ creepwork \\- creep forces, creep moment, frictional work and wear of wheel\\-ra
 ${main_roff}.fi
 .SH COMMANDS
 ")
-foreach(command solve sweep fit-fig6 compare wear)
+foreach(command solve sweep fit-fig6 compare wear wheelrail)
   help_text(text ${CLI} ${command} --help)
   roff(text "${text}")
   string(APPEND page ".SS creepwork ${command}\n.nf\n${text}.fi\n")

@@ -1,19 +1,17 @@
 #include "contact/contact_input.hpp"
 
 #include <cmath>
-#include <sstream>
 #include <string>
 
 #include "contact/error.hpp"
+#include "contact/number_text.hpp"
 
 namespace creepwork {
 
 [[noreturn]] void reject_input(const char* name, double value, const char* rule)
 {
-    std::ostringstream msg;
-    msg.precision(17);
-    msg << name << " = " << value << " is invalid: " << rule;
-    throw Error(ErrorKind::invalid_input, msg.str());
+    throw Error(ErrorKind::invalid_input,
+                std::string(name) + " = " + number_text(value) + " is invalid: " + rule);
 }
 
 void require_finite(const char* name, double v)

@@ -28,6 +28,16 @@ enum class SolveMode {
     full,        // also micro-slip, moment, both work maps and the profile
 };
 
+// How a model's export writes a field's value v into out: copy_field
+// stores it, add_field adds it scaled (one export loop serves both).
+struct StoreField {
+    void operator()(double* out, double v) const { *out = v; }
+};
+struct AddScaledField {
+    double scale;
+    void operator()(double* out, double v) const { *out += scale * v; }
+};
+
 // Fields that exist only after a SolveMode::full solve.
 inline bool field_needs_work(Field f)
 {

@@ -6,18 +6,6 @@
 #include "exact/exact_work.hpp"
 
 namespace creepwork {
-namespace {
-
-struct Store {
-    void operator()(double* out, double v) const { *out = v; }
-};
-struct AddScaled {
-    double scale;
-    void operator()(double* out, double v) const { *out += scale * v; }
-};
-
-} // namespace
-
 template <class Op>
 void ExactModel::export_field(Field f, const Op& op, double* out) const
 {
@@ -56,11 +44,11 @@ void ExactModel::export_field(Field f, const Op& op, double* out) const
     }
 }
 
-void ExactModel::copy_field(Field f, double* out) const { export_field(f, Store{}, out); }
+void ExactModel::copy_field(Field f, double* out) const { export_field(f, StoreField{}, out); }
 
 void ExactModel::add_field(Field f, double scale, double* out) const
 {
-    export_field(f, AddScaled{scale}, out);
+    export_field(f, AddScaledField{scale}, out);
 }
 
 void ExactModel::copy_state(int* out) const

@@ -2,11 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 #include <string>
 
 #include "contact/contact_input.hpp"
 #include "contact/error.hpp"
+#include "contact/number_text.hpp"
 #include "contact/kalker_coefficients.hpp"
 #include "exact/exact_work.hpp"
 
@@ -28,14 +28,6 @@ constexpr int kNormalMaxIterations = 500;
 // Normalised creepages beyond this slide everywhere; they are scaled down
 // together (as FASTSIM does, march/march_setup.hpp) so nothing can overflow.
 constexpr double kMaxNormalisedCreepage = 1e100;
-
-std::string number(double v)
-{
-    std::ostringstream s;
-    s.precision(17);
-    s << v;
-    return s.str();
-}
 
 } // namespace
 
@@ -61,7 +53,7 @@ ExactModel::ExactModel(const GridSpec& grid)
     check("ny", grid.ny);
     if (!(grid.box_scale >= 1.0 && grid.box_scale <= kMaxBoxScale))
         throw Error(ErrorKind::grid_out_of_range,
-                    "box_scale = " + number(grid.box_scale) + " is outside [1, 100]");
+                    "box_scale = " + number_text(grid.box_scale) + " is outside [1, 100]");
     int nx = nx_, ny = ny_;
     levels_.push_back(std::make_unique<Level>(nx, ny));
     while ((nx + 1) / 2 >= kMinCoarseCells && (ny + 1) / 2 >= kMinCoarseCells) {
@@ -95,7 +87,7 @@ void ExactModel::solve_normal(Level& L, double ratio, bool warm, const char* whi
     if (!L.normal_valid)
         throw Error(ErrorKind::not_converged,
                     std::string("the normal problem on the ") + which +
-                        " grid did not converge (residual " + number(ni.residual) +
+                        " grid did not converge (residual " + number_text(ni.residual) +
                         " after " + std::to_string(ni.iterations) + " iterations)");
     L.normal_cold = !start;
     L.normal_ratio = ratio;
@@ -320,12 +312,7 @@ SolveTotals ExactModel::solve(const ContactInput& in, SolveMode mode)
         cold();
     }
     info_.newton_steps = ti.newton_steps;
-    if (!ti.converged)
-        throw Error(ErrorKind::not_converged,
-                    "model = exact did not converge: residual " + number(ti.residual) +
-                        " > tolerance " + number(tolerance) + " after " +
-                        std::to_string(ti.newton_steps) +
-                        " Newton steps (max_iterations); raise max_iterations or tolerance");
+    require_converged(ti, tolerance);
 
     // Totals in the caller's frame, summed element by element in a fixed order.
     const std::vector<SteadyRolling::Complex>& q = fine.tangential.traction();

@@ -7,18 +7,6 @@
 #include "exact/gap_model.hpp"
 
 namespace creepwork {
-namespace {
-
-struct Store {
-    void operator()(double* out, double v) const { *out = v; }
-};
-struct AddScaled {
-    double scale;
-    void operator()(double* out, double v) const { *out += scale * v; }
-};
-
-} // namespace
-
 template <class Op>
 void GapModel::export_field(Field f, const Op& op, double* out) const
 {
@@ -54,11 +42,11 @@ void GapModel::export_field(Field f, const Op& op, double* out) const
     }
 }
 
-void GapModel::copy_field(Field f, double* out) const { export_field(f, Store{}, out); }
+void GapModel::copy_field(Field f, double* out) const { export_field(f, StoreField{}, out); }
 
 void GapModel::add_field(Field f, double scale, double* out) const
 {
-    export_field(f, AddScaled{scale}, out);
+    export_field(f, AddScaledField{scale}, out);
 }
 
 void GapModel::copy_state(int* out) const

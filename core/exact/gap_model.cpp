@@ -2,11 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 #include <string>
 
 #include "contact/contact_input.hpp"
 #include "contact/error.hpp"
+#include "contact/number_text.hpp"
 #include "contact/kalker_coefficients.hpp"
 #include "exact/exact_work.hpp"
 
@@ -27,14 +27,6 @@ constexpr double kNormalFirstTolerance = 1e-4;
 constexpr int kNormalMaxIterations = 500;
 constexpr double kMaxNormalisedCreepage = 1e100;
 
-std::string number(double v)
-{
-    std::ostringstream s;
-    s.precision(17);
-    s << v;
-    return s.str();
-}
-
 } // namespace
 
 const GridSpec& checked_gap_grid(const GridSpec& g)
@@ -50,17 +42,17 @@ const GridSpec& checked_gap_grid(const GridSpec& g)
     for (const auto& [name, v] : {std::pair<const char*, double>{"x0", g.x0}, {"y0", g.y0}})
         if (!std::isfinite(v) || std::fabs(v) > 1e6)
             throw Error(ErrorKind::invalid_input,
-                        std::string(name) + " = " + number(v) +
+                        std::string(name) + " = " + number_text(v) +
                             " is invalid: the gap grid's origin must be finite, within 1e6");
     for (const auto& [name, v] : {std::pair<const char*, double>{"dx", g.dx}, {"dy", g.dy}})
         if (!(v > 0.0 && v <= 1e3))
             throw Error(ErrorKind::invalid_input,
-                        std::string(name) + " = " + number(v) +
+                        std::string(name) + " = " + number_text(v) +
                             " is invalid: the gap grid's spacing must be > 0 (and <= 1e3)");
     const double ratio = g.dy / g.dx;
     if (!(ratio >= 0.05 && ratio <= 20.0))
         throw Error(ErrorKind::invalid_input,
-                    "dy/dx = " + number(ratio) +
+                    "dy/dx = " + number_text(ratio) +
                         " is invalid: the gap grid's cells must have dy/dx in [0.05, 20]");
     return g;
 }
@@ -132,7 +124,7 @@ void validate_gap_input(const ContactInput& in, size_t n)
     for (size_t k = 0; k < n; ++k)
         if (!std::isfinite(in.gap[k]) || std::fabs(in.gap[k]) > 1.0)
             throw Error(ErrorKind::invalid_input,
-                        "gap[" + std::to_string(k) + "] = " + number(in.gap[k]) +
+                        "gap[" + std::to_string(k) + "] = " + number_text(in.gap[k]) +
                             " is invalid: the undeformed distance must be finite, within 1 m");
     if (in.normal_load == NormalLoad::force)
         require_non_negative("normal_force", in.normal_force);
@@ -214,7 +206,7 @@ void GapModel::solve_normal(const ContactInput& in, bool warm)
         if (!ni.converged)
             throw Error(ErrorKind::not_converged,
                         "the normal problem on the gap did not converge (residual " +
-                            number(ni.residual) + " after " + std::to_string(ni.iterations) +
+                            number_text(ni.residual) + " after " + std::to_string(ni.iterations) +
                             " iterations)");
         const std::vector<double>& q = normal_.pressure();
         for (size_t k = 0; k < n; ++k) pressure_[k] = q[k] * in.G;
@@ -491,12 +483,7 @@ SolveTotals GapModel::solve(const ContactInput& in, SolveMode mode)
         cold();
     }
     info_.newton_steps = ti.newton_steps;
-    if (!ti.converged)
-        throw Error(ErrorKind::not_converged,
-                    "model = exact did not converge: residual " + number(ti.residual) +
-                        " > tolerance " + number(tolerance) + " after " +
-                        std::to_string(ti.newton_steps) +
-                        " Newton steps (max_iterations); raise max_iterations or tolerance");
+    require_converged(ti, tolerance);
 
     // Totals and patches in the caller's frame, element by element in the
     // caller's layout.

@@ -86,16 +86,12 @@ public:
                                Jacobian& jacobian) override;
 
     const GapSolveInfo& info() const { return info_; }
-    int nx() const { return nx_; }
-    int ny() const { return ny_; }
 
-    // Of the last successful solve, in the caller's layout [i + nx j].
+    // The exports of ContactModel; the profile's parabola spans the
+    // contact's lateral extent (centred on it), positions are the grid's.
     void copy_field(Field f, double* out) const override;
-    void add_field(Field f, double scale, double* out) const override; // out += scale * field
+    void add_field(Field f, double scale, double* out) const override;
     void copy_state(int* out) const override;
-    // Per row j < ny: centre y [m], energy-consistent work per unit width,
-    // and the equal-area parabola of total W over the contact's lateral
-    // extent (centred on it).
     void copy_profile(double W, double* y, double* work, double* parabola) const override;
     // Per row j < ny: centre y [m] and width dy [m] (the wear's strips).
     void copy_strips(double* y, double* width) const;

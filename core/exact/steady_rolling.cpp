@@ -2,10 +2,23 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 #include "contact/error.hpp"
+#include "contact/number_text.hpp"
 
 namespace creepwork {
+
+void require_converged(const SteadyRollingInfo& info, double tolerance)
+{
+    if (!info.converged)
+        throw Error(ErrorKind::not_converged,
+                    "model = exact did not converge: residual " + number_text(info.residual) +
+                        " > tolerance " + number_text(tolerance) + " after " +
+                        std::to_string(info.newton_steps) +
+                        " Newton steps (max_iterations); raise max_iterations or tolerance");
+}
+
 namespace {
 
 using Complex = std::complex<double>;

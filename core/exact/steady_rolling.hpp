@@ -39,6 +39,10 @@ struct SteadyRollingInfo {
     bool converged = false;
 };
 
+// Throws Error(not_converged) unless info converged: the exact model's
+// message, naming its bound (max_iterations) and the tolerance.
+void require_converged(const SteadyRollingInfo& info, double tolerance);
+
 class SteadyRolling {
 public:
     using Complex = std::complex<double>;

@@ -7,17 +7,6 @@
 #include "nonhertz/gap_fastsim_model.hpp"
 
 namespace creepwork {
-namespace {
-
-struct Store {
-    void operator()(double* out, double v) const { *out = v; }
-};
-struct AddScaled {
-    double scale;
-    void operator()(double* out, double v) const { *out += scale * v; }
-};
-
-} // namespace
 
 template <class Op>
 void GapFastsimModel::export_field(Field f, const Op& op, double* out) const
@@ -48,11 +37,11 @@ void GapFastsimModel::export_field(Field f, const Op& op, double* out) const
     }
 }
 
-void GapFastsimModel::copy_field(Field f, double* out) const { export_field(f, Store{}, out); }
+void GapFastsimModel::copy_field(Field f, double* out) const { export_field(f, StoreField{}, out); }
 
 void GapFastsimModel::add_field(Field f, double scale, double* out) const
 {
-    export_field(f, AddScaled{scale}, out);
+    export_field(f, AddScaledField{scale}, out);
 }
 
 void GapFastsimModel::copy_state(int* out) const

@@ -7,6 +7,7 @@
 #include "contact/contact_input.hpp"
 #include "contact/error.hpp"
 #include "contact/kalker_coefficients.hpp"
+#include "contact/number_text.hpp"
 #include "exact/exact_work.hpp"
 #include "exact/gap_model.hpp"
 
@@ -85,7 +86,7 @@ void GapFastsimModel::solve_normal(const ContactInput& in)
             if (!ni.converged)
                 throw Error(ErrorKind::not_converged,
                             "the normal problem on the gap did not converge (residual " +
-                                std::to_string(ni.residual) + " after " +
+                                number_text(ni.residual) + " after " +
                                 std::to_string(ni.iterations) + " iterations)");
             const std::vector<double>& q = normal_->pressure();
             for (size_t k = 0; k < n; ++k) pressure_[k] = q[k] * in.G;

@@ -9,6 +9,7 @@ int command_sweep(int argc, char** argv, int first);
 int command_fit_fig6(int argc, char** argv, int first);
 int command_wear(int argc, char** argv, int first);
 int command_compare(int argc, char** argv, int first);
+int command_wheelrail(int argc, char** argv, int first);
 // Execs creepwork-campaign (examples/cli/campaign/, built only with MPI).
 int command_campaign(int argc, char** argv, int first);
 
@@ -19,5 +20,6 @@ const char* usage_sweep();
 const char* usage_fit_fig6();
 const char* usage_wear();
 const char* usage_compare();
+const char* usage_wheelrail();
 
 } // namespace cwcli

@@ -48,11 +48,12 @@ int dispatch(int argc, char** argv)
     if (command == "wear") return command_wear(argc, argv, 2);
     if (command == "campaign") return command_campaign(argc, argv, 2);
     if (command == "compare") return command_compare(argc, argv, 2);
+    if (command == "wheelrail") return command_wheelrail(argc, argv, 2);
     const std::string hint = nearest(command, {"solve", "sweep", "fit-fig6", "wear", "campaign",
-                                               "compare", "help", "version"});
+                                               "compare", "wheelrail", "help", "version"});
     throw CliError(kExitUsage, "'" + command +
                                    "': unknown command (solve, sweep, fit-fig6, wear, campaign, "
-                                   "compare" +
+                                   "compare, wheelrail" +
                                    (hint.empty() ? std::string("; see --help)")
                                                  : "); did you mean " + hint + "?"));
 }

@@ -25,6 +25,10 @@ commands:
   campaign   many contacts from a CSV file, or a creep-force table, over MPI
              ranks and threads (built with MPI; creepwork campaign --help)
              (wear and campaign read the same columns: doc/input-schema.md)
+  wheelrail  one wheel on one rail from the profiles: the wheelset height
+             for a vertical force, every contact patch's position,
+             creepages and forces by the exact theory (CONTACT's module-1
+             conventions)
   compare    one contact by FASTSIM (or --simplified: its elliptic bound,
              the calibrated model, all three) and by the exact theory on
              one grid: the totals, how far each work distribution is from
@@ -451,6 +455,61 @@ files with --out (<label>: fastsim, fastsim_elliptic or calibrated):
 examples (the paper's Fig. 6 contact):
   creepwork compare --out fig6-compare
   creepwork compare --simplified all --out fig6-all
+)";
+}
+
+const char* usage_wheelrail()
+{
+    return R"(usage: creepwork wheelrail --wheel-profile FILE --rail-profile FILE --Fz N [options]
+
+One wheel on one rail, from the profiles to the forces (doc/wheelrail.md):
+finds the contact patches of the wheelset position, the wheelset height at
+which the vertical force on the rail is Fz, and per patch its position,
+creepages and forces by Kalker's exact theory on the patch's undeformed
+distance grid (every patch solved with its approach the rigid overlap at
+that height). Conventions are CONTACT's module-1 ones: track coordinates x
+along the track, y to the right seen along x, z down; patch frame x, s
+(lateral, in the tangent plane), n (normal, into the rail); creepages of the
+rail relative to the wheel; forces and moments on the rail. SI units.
+
+profiles (the track and wheelset of the Manchester benchmark: gauge 1435 mm
+measured 14 mm below the rail top, flange-back distance 1360 mm, flange back
+at -70 mm, nominal wheel radius 460 mm, no extra cant):
+  --wheel-profile FILE   SIMPACK .prw, MiniProf .whl, or a table of "y z"
+  --rail-profile FILE    lines in mm (SIMPACK .prr, MiniProf .ban, table)
+
+wheelset (defaults 0):
+  --y-shift M            lateral shift [m]
+  --yaw RAD              yaw angle [rad]
+  --roll RAD             roll angle [rad]
+  --V MPS                forward speed [m/s] (default 1)
+  --pitch-rate RADPS     angular velocity about the axle [rad/s], < 0
+                         rolling forward (default -V / 0.46 m)
+  --side right|left      the wheel (default right)
+
+contact:
+  --Fz N                 vertical force on the rail [N] (required)
+  --mu MU                friction coefficient (default 0.3)
+  --G PA                 combined shear modulus [Pa] (default 8.2e10)
+  --nu NU                combined Poisson's ratio (default 0.28)
+  --dx M, --ds M         element sizes of the patch grids [m] (default 2e-4)
+
+output (--format text, the default, or json): the wheelset height z_ws [m]
+(> 0 lowers the wheelset) and per patch, from the field side to the track
+centre: y_contact_rail, z_contact_rail (the contact reference point on the
+rail profile) [m], contact_angle [rad], the creepages xi_x, xi_y [-] and phi
+[1/m] (CONTACT's CKSI, CETA, CPHI), Fn, Fx, Fs [N] and Mn [N m] on the rail
+in the patch frame, p_max [Pa], n_contact, n_adhesion, n_slip (elements);
+JSON adds x_contact, y_contact, z_contact (track), y_contact_wheel,
+z_contact_wheel, veloc, approach, rolling_radius and the patch force in
+track coordinates Fx_track, Fy_track, Fz_track; total_rail holds Fx, Fy, Fz
+on the rail in track coordinates. creepwork's own convention (forces on the
+wheel) is xi_x = -CKSI, xi_y = CETA, phi = CPHI, Fx = -FX, Fy = FS, Mz = MN.
+
+example (the Manchester benchmark, case A-2.2 at 3 mm):
+  creepwork wheelrail --wheel-profile MBench_S1002_v3.prw \
+      --rail-profile MBench_UIC60_v3.prr --y-shift 3e-3 --yaw 0.0072 \
+      --roll -1.803e-4 --Fz 1e4 --V 2 --pitch-rate -4.3451503 --format json
 )";
 }
 

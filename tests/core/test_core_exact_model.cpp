@@ -99,7 +99,7 @@ void errors_name_the_input(void**)
     expect_error([&] { s.solve(bad); }, cw::ErrorKind::invalid_input, "flexibility");
     bad = in;
     bad.tolerance = 1e-20;
-    expect_error([&] { s.solve(bad); }, cw::ErrorKind::invalid_input, "tolerance = 9.99");
+    expect_error([&] { s.solve(bad); }, cw::ErrorKind::invalid_input, "tolerance = 1e-20");
     bad.tolerance = 2.0;
     expect_error([&] { s.solve(bad); }, cw::ErrorKind::invalid_input, "tolerance = 2");
     bad = in;
@@ -107,7 +107,7 @@ void errors_name_the_input(void**)
     expect_error([&] { s.solve(bad); }, cw::ErrorKind::invalid_input, "max_iterations = -3");
     bad = in;
     bad.nu = 0.7;
-    expect_error([&] { s.solve(bad); }, cw::ErrorKind::invalid_input, "nu = 0.69");
+    expect_error([&] { s.solve(bad); }, cw::ErrorKind::invalid_input, "nu = 0.7 is invalid");
     bad = in;
     bad.xi_x = 1e308;
     bad.mu = 1e-300;

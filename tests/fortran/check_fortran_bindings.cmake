@@ -20,7 +20,8 @@ foreach(var HEADER BINDINGS SOURCES)
     message(FATAL_ERROR "check_fortran_bindings: -D${var}=... is required")
   endif()
 endforeach()
-file(READ "${HEADER}" header)
+include("${CMAKE_CURRENT_LIST_DIR}/../../cmake/read_public_header.cmake")
+creepwork_read_public_header("${HEADER}" header)
 file(READ "${BINDINGS}" bindings)
 
 # Number of arguments of "(a, b, c)" text ("" and "void": 0).

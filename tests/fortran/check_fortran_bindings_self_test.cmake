@@ -8,7 +8,9 @@
 cmake_minimum_required(VERSION 3.25)
 
 file(MAKE_DIRECTORY "${WORK_DIR}")
-file(READ "${HEADER}" header)
+# The header with its parts inlined: the copy stands alone.
+include("${CMAKE_CURRENT_LIST_DIR}/../../cmake/read_public_header.cmake")
+creepwork_read_public_header("${HEADER}" header)
 set(extra "CW_API int cw_solver_new_feature(cw_solver* solver, const double* x, size_t x_len);\n")
 string(REPLACE "#ifdef __cplusplus\n} /* extern \"C\" */" "${extra}#ifdef __cplusplus\n} /* extern \"C\" */"
        grown "${header}")

@@ -1,12 +1,17 @@
 // creepwork_bench_wheelrail: the cost of the wheel/rail geometry per wheel
 // (contact search, patch frames, undeformed distance grids, creepages) over
 // the Manchester benchmark's 42 wheel positions at CONTACT's discretisation
-// (dx = ds = 0.2 mm), and of the contact search alone. Not a test: it prints
-// a table with a stamp. Times are per-thread CPU time (CLOCK_THREAD_CPUTIME_ID,
-// not counting time the thread is descheduled) and wall time, medians of
-// repeated sweeps.
+// (dx = ds = 0.2 mm), of the contact search alone, and of a whole position:
+// the wheelset height for 10 kN with every patch solved by the exact model
+// (geometry and contact, CONTACT's module 1 with N = 1). Given CONTACT's
+// program, the same run times CONTACT's own examples (both wheels,
+// the same 42 positions) as a child process. Not a test: it prints a table
+// with a stamp. Times are per-thread CPU time (CLOCK_THREAD_CPUTIME_ID, not
+// counting time the thread is descheduled) and wall time, medians of
+// repeated sweeps; CONTACT's is its CPU time (getrusage of the child).
 //
-//   creepwork_bench_wheelrail [SWEEPS]   (default 200)
+//   creepwork_bench_wheelrail [SWEEPS [CONTACT EXAMPLES_DIR]]   (default 200)
+#include <sys/resource.h>
 #include <time.h>
 
 #include <algorithm>
@@ -17,6 +22,7 @@
 #include <vector>
 
 #include "mbench_support.hpp"
+#include "wheelrail/patch_contact.hpp"
 #include "wheelrail/placement.hpp"
 
 namespace wr = creepwork::wheelrail;
@@ -43,6 +49,23 @@ double median(std::vector<double> v)
 {
     std::sort(v.begin(), v.end());
     return v[v.size() / 2];
+}
+
+// CPU time of CONTACT solving its examples mbench_a22_right and _left in a
+// scratch directory (-1 when it cannot run).
+double contact_seconds(const std::string& program, const std::string& examples)
+{
+    const std::string dir = "creepwork_bench_contact";
+    std::string cmd = "rm -rf " + dir + " && mkdir " + dir + " && cp " + examples + "/MBench_* " + examples +
+                      "/mbench_a22_right.inp " + examples + "/mbench_a22_left.inp " + dir + " && cd " + dir +
+                      " && " + program + " 2 mbench_a22_right > /dev/null 2>&1 && " + program +
+                      " 2 mbench_a22_left > /dev/null 2>&1";
+    rusage before{}, after{};
+    getrusage(RUSAGE_CHILDREN, &before);
+    if (std::system(cmd.c_str()) != 0) return -1.0;
+    getrusage(RUSAGE_CHILDREN, &after);
+    auto sec = [](const timeval& t) { return static_cast<double>(t.tv_sec) + 1e-6 * static_cast<double>(t.tv_usec); };
+    return sec(after.ru_utime) - sec(before.ru_utime) + sec(after.ru_stime) - sec(before.ru_stime);
 }
 
 } // namespace
@@ -88,6 +111,43 @@ int main(int argc, char** argv)
     std::printf("| contact search, patch frames, grids, creepages | %.1f | %.1f |\n", 1e6 * median(full_cpu),
                 1e6 * median(full_wall));
     std::printf("| contact search alone | %.1f | |\n\n", 1e6 * median(search_cpu));
+
+    // A whole position: the height for 10 kN, every patch by the exact
+    // model (as test_wheelrail_forces), and CONTACT on the same positions.
+    wr::PatchContactSettings set; // mu 0.3, G 82 GPa, nu 0.28: the benchmark's
+    const int force_sweeps = std::max(1, sweeps / 40);
+    std::vector<double> pos_cpu, pos_wall;
+    for (int s = 0; s < force_sweeps; ++s) {
+        // fresh objects each sweep: the positions one after the other from
+        // a cold start, as CONTACT runs its examples
+        wr::WheelRailContact cr(b.geometry(wr::Side::right), set), cl(b.geometry(wr::Side::left), set);
+        double cpu = 0.0, wall = 0.0;
+        for (const cwtest::Row& r : rows) {
+            wr::WheelRailContact& c = cwtest::side_of(r) == wr::Side::right ? cr : cl;
+            wr::WheelsetPosition pos = cwtest::position_of(r);
+            pos.z = 0.0;
+            const double c0 = seconds(CLOCK_THREAD_CPUTIME_ID), w0 = seconds(CLOCK_MONOTONIC);
+            c.solve_force(1e4, pos, cwtest::velocity_of(r));
+            cpu += seconds(CLOCK_THREAD_CPUTIME_ID) - c0;
+            wall += seconds(CLOCK_MONOTONIC) - w0;
+        }
+        pos_cpu.push_back(cpu / static_cast<double>(rows.size()));
+        pos_wall.push_back(wall / static_cast<double>(rows.size()));
+    }
+    std::printf("Whole position, 10 kN per wheel: height, geometry and the exact contact of every patch; median "
+                "of %d sweeps (CONTACT: one run of its examples mbench_a22_right and _left, output files "
+                "included)\n\n",
+                force_sweeps);
+    std::printf("| per wheel position | CPU [ms] | wall [ms] |\n|---|---:|---:|\n");
+    std::printf("| creepwork (exact model per patch) | %.2f | %.2f |\n", 1e3 * median(pos_cpu), 1e3 * median(pos_wall));
+    if (argc > 3) {
+        const double t = contact_seconds(argv[2], argv[3]);
+        if (t > 0.0)
+            std::printf("| CONTACT module 1 (%s) | %.2f | |\n", argv[2], 1e3 * t / static_cast<double>(rows.size()));
+        else
+            std::printf("| CONTACT module 1 | could not run %s | |\n", argv[2]);
+    }
+    std::printf("\n");
     char date[32];
     const time_t now = time(nullptr);
     strftime(date, sizeof date, "%Y-%m-%d", gmtime(&now));

@@ -1,0 +1,143 @@
+/* creepwork: wheel/rail contact from profiles -- part of the C API, included by <creepwork/creepwork.h>
+ * (include that header, not this one). The conventions of creepwork.h hold. */
+#ifndef CREEPWORK_H
+#error "include <creepwork/creepwork.h>, not <creepwork/creepwork_wheelrail.h>"
+#endif
+#ifndef CREEPWORK_WHEELRAIL_H
+#define CREEPWORK_WHEELRAIL_H
+
+/* ------------------------------------------------------------ wheel/rail */
+
+/* One wheel on one rail, from the profiles to the forces (doc/wheelrail.md):
+ * the contact search, per contact patch its reference point, undeformed
+ * distance grid and creepages, and Kalker's exact theory on every patch's
+ * grid; with the vertical force prescribed, the wheelset height is found.
+ * Conventions are CONTACT's module-1 ones in SI units: track coordinates x
+ * along the track, y to the right seen along x, z down; patch frame x, s
+ * (lateral, in the tangent plane), n (normal, into the rail); creepages of
+ * the rail relative to the wheel; forces on the rail. Made once per pair of
+ * profiles, track, wheelset and side; solved for any wheelset position. */
+typedef struct cw_wheelrail cw_wheelrail;
+
+#define CW_WHEELRAIL_RIGHT 0 /* cw_wheelrail_params.side */
+#define CW_WHEELRAIL_LEFT 1
+#define CW_WHEELRAIL_FORCE 0  /* cw_wheelrail_solve: vertical force prescribed */
+#define CW_WHEELRAIL_HEIGHT 1 /* cw_wheelrail_solve: wheelset height prescribed */
+
+/* Set by cw_wheelrail_params_init to the Manchester benchmark's set-up
+ * (UIC60 rails, S1002 wheels, 1435 mm gauge), dx = ds = 0.2 mm, steel.
+ * Fields are only ever appended. */
+typedef struct cw_wheelrail_params {
+    size_t struct_size;          /* set by cw_wheelrail_params_init */
+    int side;                    /* CW_WHEELRAIL_RIGHT (default) or CW_WHEELRAIL_LEFT */
+    double gauge_height;         /* [m] gauge point below the rail top (14e-3); <= 0: the
+                                    rail profile's origin at (rail_y0, rail_z0) */
+    double gauge_width;          /* [m] between the gauge faces (1.435) */
+    double cant;                 /* [rad] rail inclination towards the track centre (0) */
+    double rail_y0, rail_z0;     /* [m] absolute rail placement (gauge_height <= 0) */
+    double rail_dy, rail_dz, rail_roll; /* [m, m, rad] rail deviations (0) */
+    double curvature;            /* [1/m] track curvature, > 0 in a right-hand curve (0) */
+    double flange_back_distance; /* [m] (1.360) */
+    double flange_back_position; /* [m] flange back in wheel profile y (-0.070) */
+    double nominal_radius;       /* [m] axle to the wheel profile's origin (0.460) */
+    double dx, ds;               /* [m] patch grid element sizes (0.2e-3) */
+    double a_sep, d_sep, d_comb; /* [rad, m, m] patch separation (pi/2, 8e-3, 4e-3) */
+    double mu;                   /* [-] friction coefficient (0.3) */
+    double G;                    /* [Pa] combined shear modulus (82e9) */
+    double nu;                   /* [-] combined Poisson's ratio (0.28) */
+    double tolerance;            /* exact solver's relative tolerance (0: its default) */
+    double profile_unit;         /* [m] per length unit of the profiles; 0: a file's own
+                                    (SIMPACK: its units; MiniProf, tables: mm), metres
+                                    for cw_wheelrail_create_points */
+} cw_wheelrail_params;
+
+/* The wheelset's position (CONTACT's Z_WS etc.) and velocity. */
+typedef struct cw_wheelrail_motion {
+    size_t struct_size;          /* set by cw_wheelrail_motion_init (all zero) */
+    double y, z;                 /* [m] lateral shift; height (> 0 lowers the wheelset; 0
+                                    puts the axle at the nominal radius above z = 0) */
+    double roll, yaw, pitch;     /* [rad] roll about x, then yaw, then pitch */
+    double vs;                   /* [m/s] forward speed */
+    double vy, vz;               /* [m/s] rates of y, z */
+    double vroll, vyaw;          /* [rad/s] rates of roll, yaw */
+    double vpitch;               /* [rad/s] about the axle, < 0 rolling forward */
+} cw_wheelrail_motion;
+
+/* The whole wheel. Fields are only ever appended. */
+typedef struct cw_wheelrail_totals {
+    size_t struct_size;          /* set by cw_wheelrail_totals_init */
+    double z;                    /* [m] wheelset height, found or given */
+    double Fx, Fy, Fz;           /* [N] on the rail, track coordinates */
+    int n_patches;               /* contact patches (cw_wheelrail_get_patch) */
+    int evaluations;             /* geometry evaluations (1 with the height given) */
+} cw_wheelrail_totals;
+
+/* One contact patch. Fields are only ever appended. */
+typedef struct cw_wheelrail_patch {
+    size_t struct_size;          /* set by cw_wheelrail_patch_init */
+    double x_contact, y_contact, z_contact; /* [m] reference point, track coordinates */
+    double y_contact_rail, z_contact_rail;   /* [m] on the rail profile */
+    double y_contact_wheel, z_contact_wheel; /* [m] on the wheel profile */
+    double contact_angle;        /* [rad] rotation about x from track z to n */
+    double cksi, ceta;           /* [-] creepages, rail relative to wheel */
+    double cphi;                 /* [1/m] spin creepage */
+    double veloc;                /* [m/s] reference velocity of the creepages */
+    double Fn;                   /* [N] normal force pressing the rail */
+    double Fx, Fs;               /* [N] tangential forces on the rail along x and s */
+    double Mn;                   /* [N m] moment about n through the reference point */
+    double p_max;                /* [Pa] largest element pressure */
+    double approach;             /* [m] rigid overlap of the surfaces (-min h) */
+    double Fx_track, Fy_track, Fz_track; /* [N] this patch's force, track coordinates */
+    double rolling_radius;       /* [m] depth of the wheel point below the axle */
+    int n_contact, n_adhesion, n_slip; /* elements */
+    int nx, ny;                  /* the patch's grid */
+} cw_wheelrail_patch;
+
+/* Set the defaults above and struct_size. Errors: CW_ERR_NULL_POINTER. */
+CW_API int cw_wheelrail_params_init(cw_wheelrail_params* params);
+CW_API int cw_wheelrail_motion_init(cw_wheelrail_motion* motion);
+CW_API int cw_wheelrail_totals_init(cw_wheelrail_totals* totals);
+CW_API int cw_wheelrail_patch_init(cw_wheelrail_patch* patch);
+
+/* From profile files: SIMPACK (.prr rail, .prw wheel), MiniProf (.ban,
+ * .whl) or a table of "y z" lines (any other name); paths NUL-terminated.
+ * params may be NULL (the defaults). message as cw_solver_create; errors
+ * name the file and line or the field. Errors: CW_ERR_NULL_POINTER,
+ * CW_ERR_INVALID_INPUT, CW_ERR_STRUCT_SIZE, CW_ERR_OUT_OF_MEMORY. On error
+ * *wheelrail is set to NULL. */
+CW_API int cw_wheelrail_create(const cw_wheelrail_params* params, const char* rail_file,
+                               const char* wheel_file, cw_wheelrail** wheelrail, char* message,
+                               size_t message_len);
+
+/* From points: rail_y[k], rail_z[k], k < rail_n, and the wheel's likewise,
+ * in units of params->profile_unit (0: metres), y towards the field side, z
+ * down, as the files' points. Errors: as cw_wheelrail_create. */
+CW_API int cw_wheelrail_create_points(const cw_wheelrail_params* params, const double* rail_y,
+                                      const double* rail_z, size_t rail_n,
+                                      const double* wheel_y, const double* wheel_z,
+                                      size_t wheel_n, cw_wheelrail** wheelrail, char* message,
+                                      size_t message_len);
+
+CW_API int cw_wheelrail_destroy(cw_wheelrail* wheelrail); /* NULL: no-op */
+
+/* Solves one wheelset position: load CW_WHEELRAIL_FORCE finds the height z
+ * at which the vertical force on the rail is Fz [N] in (0, 1e7), starting
+ * from motion->z; CW_WHEELRAIL_HEIGHT takes motion->z (Fz unused). Every
+ * patch is solved with its approach the rigid overlap at that height.
+ * Errors: CW_ERR_NULL_POINTER, CW_ERR_STRUCT_SIZE, CW_ERR_UNKNOWN_OPTION
+ * (load), CW_ERR_INVALID_INPUT, CW_ERR_NOT_CONVERGED, CW_ERR_NUMERIC; on
+ * error the handle has no solution. */
+CW_API int cw_wheelrail_solve(cw_wheelrail* wheelrail, const cw_wheelrail_motion* motion,
+                              int load, double Fz, cw_wheelrail_totals* totals);
+
+/* Patch k < totals.n_patches of the last solve, from the field side to the
+ * track centre. Errors: CW_ERR_NULL_POINTER, CW_ERR_NO_SOLUTION,
+ * CW_ERR_INVALID_INPUT (k), CW_ERR_STRUCT_SIZE. */
+CW_API int cw_wheelrail_get_patch(const cw_wheelrail* wheelrail, size_t k,
+                                  cw_wheelrail_patch* patch);
+
+/* Message of the last error on this handle ("" after success); owned by
+ * the handle, valid until its next call; "" for NULL. */
+CW_API const char* cw_wheelrail_last_error(const cw_wheelrail* wheelrail);
+
+#endif /* CREEPWORK_WHEELRAIL_H */

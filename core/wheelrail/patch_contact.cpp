@@ -1,0 +1,174 @@
+#include "wheelrail/patch_contact.hpp"
+
+#include <cmath>
+#include <string>
+#include <utility>
+
+#include "contact/error.hpp"
+#include "wheelrail/hertz_patch.hpp"
+
+namespace creepwork::wheelrail {
+
+namespace {
+
+void check_setting(const char* name, double v, double lo, double hi)
+{
+    if (!(std::isfinite(v) && v >= lo && v <= hi))
+        throw Error(ErrorKind::invalid_input, std::string("wheel/rail contact: ") + name + " must lie in [" +
+                                                  std::to_string(lo) + ", " + std::to_string(hi) + "], got " +
+                                                  std::to_string(v));
+}
+
+} // namespace
+
+PatchContact::PatchContact(const PatchContactSettings& s) : settings_(s)
+{
+    check_setting("mu", s.mu, 0.0, 10.0);
+    check_setting("G", s.G, 1e3, 1e15);
+    check_setting("nu", s.nu, 0.0, 0.5);
+    check_setting("tolerance", s.tolerance, 0.0, 0.1);
+}
+
+Solver& PatchContact::solver_for(int nx, int ny, double dx, double dy)
+{
+    const Key key{nx, ny, dx, dy};
+    auto it = solvers_.find(key);
+    if (it == solvers_.end()) {
+        GridSpec g;
+        g.kind = GridKind::gap;
+        g.nx = nx;
+        g.ny = ny;
+        g.dx = dx;
+        g.dy = dy;
+        it = solvers_.emplace(key, std::make_unique<Solver>(g)).first;
+    }
+    return *it->second;
+}
+
+namespace {
+
+// The elements kept along one direction: every f-th, counted from whole
+// multiples of f steps from the reference point (element centres at
+// (lo + i) step); first kept index and count.
+std::pair<int, int> kept(int lo, int n, int f)
+{
+    int first = ((-lo) % f + f) % f;
+    return {first, first < n ? (n - 1 - first) / f + 1 : 0};
+}
+
+} // namespace
+
+const PatchSolution& PatchContact::solve(const ContactPatch& p)
+{
+    const std::size_t n = static_cast<std::size_t>(p.nx) * static_cast<std::size_t>(p.ny);
+    if (p.nx <= 0 || p.ny <= 0 || p.h.size() != n || !(p.dx > 0.0 && p.ds > 0.0))
+        throw Error(ErrorKind::invalid_input, "wheel/rail contact: the patch has no undeformed distance grid");
+    // A grid longer than the exact model takes (kMaxExactCells per
+    // direction; a very deep trial height of the force balance) keeps every
+    // f-th element.
+    int f = 1;
+    while ((p.nx + f - 1) / f > kMaxExactCells || (p.ny + f - 1) / f > kMaxExactCells) f *= 2;
+    const auto [i0, nx] = kept(static_cast<int>(std::lround(p.x0 / p.dx)), p.nx, f);
+    const auto [j0, ny] = kept(static_cast<int>(std::lround(p.s0 / p.ds)), p.ny, f);
+    if (nx < kMinGapCells || ny < kMinGapCells)
+        throw Error(ErrorKind::invalid_input, "wheel/rail contact: the patch grid has fewer than 3 elements "
+                                              "in a direction");
+    const double dx = f * p.dx, dy = f * p.ds;
+    // creepwork's patch frame: x_cw = x, y_cw = -s, z_cw = -n (doc/wheelrail.md)
+    gap_.resize(static_cast<std::size_t>(nx) * static_cast<std::size_t>(ny));
+    for (int j = 0; j < ny; ++j)
+        for (int i = 0; i < nx; ++i)
+            gap_[i + nx * j] = p.h[(i0 + f * i) + p.nx * (j0 + f * (ny - 1 - j))];
+    // element (0, 0) from the reference point
+    const double x0 = p.x0 + i0 * p.dx, y0 = -(p.s0 + (j0 + f * (ny - 1)) * p.ds);
+    const double xi = -p.cksi, eta = p.ceta, phi = p.cphi;
+
+    ContactInput in;
+    in.model = ModelKind::exact;
+    in.gap = gap_.data();
+    in.gap_len = gap_.size();
+    in.normal_load = NormalLoad::approach;
+    in.approach = 0.0; // the grid's datum is the wheelset's height
+    in.mu = settings_.mu;
+    in.G = settings_.G;
+    in.nu = settings_.nu;
+    in.tolerance = settings_.tolerance;
+    in.rolling_direction = p.forward ? 1 : -1;
+    // the rigid slip about the reference point on a grid whose element
+    // (0, 0) is the origin: (xi - phi (y' + y0), eta + phi (x' + x0))
+    in.xi_x = xi - phi * y0;
+    in.xi_y = eta + phi * x0;
+    in.phi = phi;
+    Solver& s = solver_for(nx, ny, dx, dy);
+    const SolveTotals& t = s.solve(in, SolveMode::forces_only);
+
+    PatchSolution& r = last_;
+    r.fn = t.normal_force;
+    r.fx = -t.Fx;
+    r.fs = t.Fy;
+    r.mn = t.Mz + x0 * t.Fy - y0 * t.Fx; // about the reference point
+    r.p_max = t.p_max;
+    r.approach = p.approach;
+    r.n_contact = t.n_contact;
+    r.n_adhesion = t.n_adhesion;
+    r.n_slip = t.n_slip;
+    r.coarsening = f;
+    r.track = track_forces(p, {r.fn, r.fx, r.fs});
+    return r;
+}
+
+WheelRailContact::WheelRailContact(WheelRailGeometry geometry, const PatchContactSettings& settings)
+    : geometry_(std::move(geometry)), contact_(settings)
+{
+}
+
+void WheelRailContact::collect(int evaluations)
+{
+    const WheelRailState& st = geometry_.state();
+    solution_.z = st.position.z;
+    solution_.evaluations = evaluations;
+    solution_.patches.clear();
+    solution_.total = {};
+    for (const ContactPatch& p : st.patches) {
+        const PatchSolution& s = contact_.solve(p);
+        solution_.patches.push_back(s);
+        solution_.total.fx += s.track.fx;
+        solution_.total.fy += s.track.fy;
+        solution_.total.fz += s.track.fz;
+    }
+}
+
+const WheelRailSolution& WheelRailContact::solve_position(const WheelsetPosition& position,
+                                                          const WheelsetVelocity& velocity)
+{
+    geometry_.evaluate(position, velocity);
+    collect(1);
+    return solution_;
+}
+
+const WheelRailSolution& WheelRailContact::solve_force(double fz, const WheelsetPosition& position,
+                                                       const WheelsetVelocity& velocity,
+                                                       const VerticalForceOptions& options)
+{
+    const PatchSolver solver = [this](const ContactPatch& p) {
+        const PatchSolution& s = contact_.solve(p);
+        return PatchForces{s.fn, s.fx, s.fs};
+    };
+    // The height of the Hertz estimate (geometry only) starts the balance
+    // near its solution, so that the exact solves stay near the final grid.
+    WheelsetPosition start = position;
+    try {
+        const HertzPatchEstimate hertz{contact_.settings().G, contact_.settings().nu};
+        start.z = solve_vertical_position(geometry_, fz, position, velocity, hertz, options).z;
+    } catch (const Error&) {
+        start.z = position.z; // the exact balance reports its own failure
+    }
+    const VerticalForceSolution v = solve_vertical_position(geometry_, fz, start, velocity, solver, options);
+    // the geometry is left at the solution; its patches solve again from
+    // their own last solution (same gap and approach: the normal solution
+    // is kept, the tangential one starts warm)
+    collect(v.evaluations);
+    return solution_;
+}
+
+} // namespace creepwork::wheelrail

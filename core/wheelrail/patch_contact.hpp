@@ -1,0 +1,104 @@
+// The contact problem of each wheel/rail patch solved by Kalker's exact
+// theory on its undeformed distance grid (exact/gap_model.hpp through
+// creepwork::Solver on a gap grid), as CONTACT's module 1 solves it: the
+// approach of a patch is its penetration at the wheelset's height (the
+// grid's datum, approach 0), the creepages are the patch's own. Results are
+// in CONTACT's module-1 conventions (forces on the rail, patch frame; MN
+// about the reference point); doc/wheelrail.md gives the mapping onto
+// creepwork's convention that is applied here.
+//
+// A grid longer than the exact model's limit (256 elements per direction)
+// is solved on every second (fourth, ...) element.
+//
+// One solver per grid shape (nx, ny, dx, ds) is made on first use and kept:
+// its grid has element (0, 0) at the origin, and the creepages are shifted
+// so that the rigid slip is that about the patch's reference point
+// (xi - phi y, eta + phi x is affine in x, y), which lets a patch whose
+// grid moves by whole elements reuse the solver and its warm start.
+#pragma once
+
+#include <map>
+#include <memory>
+#include <tuple>
+#include <vector>
+
+#include "solver.hpp"
+#include "wheelrail/vertical_force.hpp"
+#include "wheelrail/wheelrail_geometry.hpp"
+
+namespace creepwork::wheelrail {
+
+struct PatchContactSettings {
+    double mu = 0.3;     // [-] friction coefficient
+    double G = 82e9;     // [Pa] combined shear modulus
+    double nu = 0.28;    // [-] combined Poisson's ratio
+    double tolerance = 0.0; // relative tolerance of the exact solver (0: its default)
+};
+
+// One patch's solution, CONTACT's module-1 conventions (SI).
+struct PatchSolution {
+    double fn = 0, fx = 0, fs = 0; // [N] on the rail, patch frame (x, s, n)
+    double mn = 0;                 // [N m] about n through the reference point, on the rail
+    double p_max = 0;              // [Pa]
+    double approach = 0;           // [m] the rigid overlap -min h
+    int n_contact = 0, n_adhesion = 0, n_slip = 0;
+    int coarsening = 1;            // every coarsening-th element solved (1: the whole grid)
+    TrackForces track;             // [N] on the rail, track coordinates
+};
+
+class PatchContact {
+public:
+    // Throws Error(invalid_input) naming a bad setting.
+    explicit PatchContact(const PatchContactSettings& settings);
+
+    // The patch at the wheelset height its grid was made for. Throws Error
+    // naming a bad input or Error(not_converged).
+    const PatchSolution& solve(const ContactPatch& patch);
+    const PatchContactSettings& settings() const { return settings_; }
+    // Solvers made so far (one per grid shape).
+    std::size_t solvers() const { return solvers_.size(); }
+
+private:
+    using Key = std::tuple<int, int, double, double>;
+    Solver& solver_for(int nx, int ny, double dx, double dy);
+
+    PatchContactSettings settings_;
+    std::map<Key, std::unique_ptr<Solver>> solvers_;
+    std::vector<double> gap_; // the patch's h with its rows reversed (y = -s)
+    PatchSolution last_;
+};
+
+// The solution of a whole wheel position.
+struct WheelRailSolution {
+    double z = 0;            // [m] wheelset height (CONTACT's Z_WS)
+    std::vector<PatchSolution> patches; // as geometry.state().patches
+    TrackForces total;       // [N] on the rail, track coordinates
+    int evaluations = 0;     // geometry evaluations (1 with the height given)
+};
+
+// The wheel/rail chain: geometry, then the exact contact of every patch.
+class WheelRailContact {
+public:
+    WheelRailContact(WheelRailGeometry geometry, const PatchContactSettings& settings);
+
+    // At the given wheelset position (its z is the height).
+    const WheelRailSolution& solve_position(const WheelsetPosition& position, const WheelsetVelocity& velocity);
+    // With the vertical force on the rail prescribed [N]; position.z is the
+    // first guess of the height.
+    const WheelRailSolution& solve_force(double fz, const WheelsetPosition& position,
+                                         const WheelsetVelocity& velocity,
+                                         const VerticalForceOptions& options = {});
+
+    const WheelRailGeometry& geometry() const { return geometry_; }
+    const WheelRailSolution& solution() const { return solution_; }
+    PatchContact& patch_contact() { return contact_; }
+
+private:
+    void collect(int evaluations);
+
+    WheelRailGeometry geometry_;
+    PatchContact contact_;
+    WheelRailSolution solution_;
+};
+
+} // namespace creepwork::wheelrail

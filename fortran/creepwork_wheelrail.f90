@@ -1,0 +1,181 @@
+! Wheel/rail contact (header section "wheel/rail", doc/wheelrail.md):
+!   cw_wheelrail_type  owns one cw_wheelrail: a wheel and a rail profile, the
+!                      track, the wheelset and the side; solved for any
+!                      wheelset position, every contact patch by Kalker's
+!                      exact theory. CONTACT's module-1 conventions (forces on
+!                      the rail), SI units.
+module creepwork_wheelrail
+   use, intrinsic :: iso_c_binding, only: c_int, c_size_t, c_double, c_char, c_ptr, c_null_char
+   use creepwork_types
+   use creepwork_capi
+   use creepwork_handle
+   implicit none
+   private
+   public :: cw_wheelrail_params_init, cw_wheelrail_motion_init, cw_wheelrail_totals_init, &
+             cw_wheelrail_patch_init
+
+   type, public, extends(cw_handle) :: cw_wheelrail_type
+   contains
+      procedure :: create => wheelrail_create
+      procedure :: create_points => wheelrail_create_points
+      procedure :: solve => wheelrail_solve
+      procedure :: get_patch => wheelrail_get_patch
+      procedure, nopass :: noun => wheelrail_noun
+   end type cw_wheelrail_type
+
+contains
+
+   ! The C _init functions fail only on a NULL pointer, which a Fortran
+   ! argument cannot be.
+   subroutine cw_wheelrail_params_init(params)
+      type(cw_wheelrail_params), intent(out) :: params
+      integer(c_int) :: status
+      status = capi_wheelrail_params_init(params)
+   end subroutine cw_wheelrail_params_init
+
+   subroutine cw_wheelrail_motion_init(motion)
+      type(cw_wheelrail_motion), intent(out) :: motion
+      integer(c_int) :: status
+      status = capi_wheelrail_motion_init(motion)
+   end subroutine cw_wheelrail_motion_init
+
+   subroutine cw_wheelrail_totals_init(totals)
+      type(cw_wheelrail_totals), intent(out) :: totals
+      integer(c_int) :: status
+      status = capi_wheelrail_totals_init(totals)
+   end subroutine cw_wheelrail_totals_init
+
+   subroutine cw_wheelrail_patch_init(patch)
+      type(cw_wheelrail_patch), intent(out) :: patch
+      integer(c_int) :: status
+      status = capi_wheelrail_patch_init(patch)
+   end subroutine cw_wheelrail_patch_init
+
+   function wheelrail_noun() result(s)
+      character(len=noun_length) :: s
+      s = 'wheel/rail'
+   end function wheelrail_noun
+
+   ! From profile files (SIMPACK .prr/.prw, MiniProf .ban/.whl, or a table);
+   ! params default to cw_wheelrail_params_init's (destroys a previous one).
+   subroutine wheelrail_create(self, rail_file, wheel_file, params, stat, errmsg)
+      class(cw_wheelrail_type), intent(inout) :: self
+      character(len=*), intent(in) :: rail_file, wheel_file
+      type(cw_wheelrail_params), intent(in), optional :: params
+      integer, intent(out), optional :: stat
+      character(len=:), allocatable, intent(out), optional :: errmsg
+      character(kind=c_char) :: buffer(message_capacity)
+      type(cw_wheelrail_params) :: p
+      type(c_ptr) :: handle
+      type(outcome) :: o
+      call self%destroy()
+      call params_or_default(params, p)
+      buffer(1) = c_null_char
+      o = buffer_outcome(capi_wheelrail_create(p, c_chars(rail_file), c_chars(wheel_file), handle, &
+                                               buffer, size(buffer, kind=c_size_t)), buffer)
+      if (o%status == CW_OK) call adopt(self, handle, capi_wheelrail_destroy, &
+                                        capi_wheelrail_last_error, 1, 1)
+      if (present(errmsg)) call set_errmsg(o, errmsg)
+      call deliver(o, stat)
+   end subroutine wheelrail_create
+
+   ! From points (y towards the field side, z down) in units of
+   ! params%profile_unit (0: metres).
+   subroutine wheelrail_create_points(self, rail_y, rail_z, wheel_y, wheel_z, params, stat, errmsg)
+      class(cw_wheelrail_type), intent(inout) :: self
+      real(c_double), intent(in), contiguous :: rail_y(:), rail_z(:), wheel_y(:), wheel_z(:)
+      type(cw_wheelrail_params), intent(in), optional :: params
+      integer, intent(out), optional :: stat
+      character(len=:), allocatable, intent(out), optional :: errmsg
+      character(kind=c_char) :: buffer(message_capacity)
+      type(cw_wheelrail_params) :: p
+      type(c_ptr) :: handle
+      type(outcome) :: o
+      call self%destroy()
+      call params_or_default(params, p)
+      buffer(1) = c_null_char
+      if (size(rail_z) /= size(rail_y) .or. size(wheel_z) /= size(wheel_y)) then
+         o = make_outcome(CW_ERR_INVALID_INPUT, 'rail_y and rail_z (wheel_y and wheel_z) must have '// &
+                          'the same size')
+      else
+         o = buffer_outcome(capi_wheelrail_create_points(p, rail_y, rail_z, size(rail_y, kind=c_size_t), &
+                                                         wheel_y, wheel_z, size(wheel_y, kind=c_size_t), &
+                                                         handle, buffer, size(buffer, kind=c_size_t)), buffer)
+      end if
+      if (o%status == CW_OK) call adopt(self, handle, capi_wheelrail_destroy, &
+                                        capi_wheelrail_last_error, 1, 1)
+      if (present(errmsg)) call set_errmsg(o, errmsg)
+      call deliver(o, stat)
+   end subroutine wheelrail_create_points
+
+   ! One wheelset position: with Fz [N] present the height is found for that
+   ! vertical force (starting from motion%z), otherwise motion%z is the
+   ! height. An uninitialised totals (struct_size 0) is initialised first.
+   subroutine wheelrail_solve(self, motion, totals, Fz, stat, errmsg)
+      class(cw_wheelrail_type), intent(inout) :: self
+      type(cw_wheelrail_motion), intent(in) :: motion
+      type(cw_wheelrail_totals), intent(inout) :: totals
+      real(c_double), intent(in), optional :: Fz
+      integer, intent(out), optional :: stat
+      character(len=:), allocatable, intent(out), optional :: errmsg
+      integer(c_int) :: load, status
+      real(c_double) :: force
+      type(outcome) :: o
+      o = created(self)
+      if (o%status == CW_OK) then
+         load = CW_WHEELRAIL_HEIGHT
+         force = 0
+         if (present(Fz)) then
+            load = CW_WHEELRAIL_FORCE
+            force = Fz
+         end if
+         if (totals%struct_size == 0) status = capi_wheelrail_totals_init(totals)
+         o = status_outcome(self, capi_wheelrail_solve(handle_of(self), motion, load, force, totals))
+      end if
+      if (present(errmsg)) call set_errmsg(o, errmsg)
+      call deliver(o, stat)
+   end subroutine wheelrail_solve
+
+   ! Patch k (1-based, k <= totals%n_patches) of the last solve.
+   subroutine wheelrail_get_patch(self, k, patch, stat, errmsg)
+      class(cw_wheelrail_type), intent(in) :: self
+      integer, intent(in) :: k
+      type(cw_wheelrail_patch), intent(inout) :: patch
+      integer, intent(out), optional :: stat
+      character(len=:), allocatable, intent(out), optional :: errmsg
+      integer(c_int) :: status
+      type(outcome) :: o
+      o = created(self)
+      if (o%status == CW_OK .and. k < 1) &
+         o = make_outcome(CW_ERR_INVALID_INPUT, 'k = '//trim(integer_text(k))//' must be >= 1')
+      if (o%status == CW_OK) then
+         if (patch%struct_size == 0) status = capi_wheelrail_patch_init(patch)
+         o = status_outcome(self, capi_wheelrail_get_patch(handle_of(self), int(k - 1, c_size_t), patch))
+      end if
+      if (present(errmsg)) call set_errmsg(o, errmsg)
+      call deliver(o, stat)
+   end subroutine wheelrail_get_patch
+
+   subroutine params_or_default(params, p)
+      type(cw_wheelrail_params), intent(in), optional :: params
+      type(cw_wheelrail_params), intent(out) :: p
+      integer(c_int) :: status
+      if (present(params)) then
+         p = params
+      else
+         status = capi_wheelrail_params_init(p)
+      end if
+   end subroutine params_or_default
+
+   ! A NUL-terminated copy of text for the C side.
+   function c_chars(text) result(c)
+      character(len=*), intent(in) :: text
+      character(kind=c_char) :: c(len_trim(text) + 1)
+      integer :: i
+      do i = 1, len_trim(text)
+         c(i) = text(i:i)
+      end do
+      c(len_trim(text) + 1) = c_null_char
+   end function c_chars
+
+end module creepwork_wheelrail

@@ -1,0 +1,125 @@
+"""One wheel on one rail from the profiles to the forces (cw_wheelrail): the
+contact patches of a wheelset position, the wheelset height for a vertical
+force, and every patch solved by Kalker's exact theory. CONTACT's module-1
+conventions (track x along the track, y to the right, z down; creepages of
+the rail relative to the wheel; forces on the rail), SI units."""
+
+import ctypes
+import os
+from typing import Any, Dict, List, Optional
+
+import numpy as np
+
+from . import _errors
+from ._library import CONSTANTS, address, defaults, lib
+
+_MESSAGE_LEN = 1024
+
+
+def _record(struct, keywords, where):
+    rec = defaults(struct).copy()
+    for name, value in keywords.items():
+        if name == "struct_size" or name not in rec.dtype.names:
+            known = ", ".join(n for n in rec.dtype.names if n != "struct_size")
+            raise TypeError("%s: unknown keyword %r (known: %s)" % (where, name, known))
+        rec[name] = value
+    return rec
+
+
+def _as_dict(rec):
+    return {name: rec[name].item() for name in rec.dtype.names[1:]}
+
+
+def _params_warnings(rec):
+    w = []
+    if rec["G"] < 1e6:
+        w.append("G = %g Pa is implausible: steel is 8.2e10 Pa (MPa typed as Pa?)" % rec["G"])
+    for name in ("dx", "ds"):
+        if rec[name] > 5e-3:
+            w.append("%s = %g m is implausible: patch elements are 0.1-2 mm (mm typed as m?)"
+                     % (name, rec[name]))
+    return w
+
+
+def _motion_warnings(rec, Fz):
+    w = []
+    if abs(rec["y"]) > 0.05:
+        w.append("y = %g m is implausible: lateral shifts stay within +-20 mm (mm typed as m?)"
+                 % rec["y"])
+    for name in ("yaw", "roll"):
+        if abs(rec[name]) > 0.1:
+            w.append("%s = %g rad is implausible: wheelset angles stay within +-0.05 rad "
+                     "(degrees or mrad typed as rad?)" % (name, rec[name]))
+    if Fz is not None and 0 < Fz < 1000:
+        w.append("Fz = %g N is implausible: wheel loads are 1-500 kN (kN typed as N?)" % Fz)
+    return w
+
+
+class WheelRail:
+    """A wheel and a rail profile with a track, a wheelset and a side, solved
+    for any wheelset position:
+
+        with creepwork.WheelRail("MBench_UIC60_v3.prr", "MBench_S1002_v3.prw") as w:
+            totals, patches = w.solve(Fz=1e4, y=3e-3, yaw=0.0072, roll=-1.803e-4,
+                                      vs=2.0, vpitch=-4.34515)
+
+    The keywords are the fields of cw_wheelrail_params (side=creepwork.
+    CW_WHEELRAIL_LEFT, dx, ds, mu, G, nu, gauge_width, nominal_radius, ...)
+    with cw_wheelrail_params_init's defaults (the Manchester benchmark's
+    track and wheelset, 0.2 mm elements, steel)."""
+
+    def __init__(self, rail_profile: str, wheel_profile: str, **params: Any):
+        rec = _record("cw_wheelrail_params", params, "WheelRail")
+        _errors.warn_units(_params_warnings(rec), 1)
+        self._handle = ctypes.c_void_p()
+        message = ctypes.create_string_buffer(_MESSAGE_LEN)
+        status = lib.cw_wheelrail_create(address(rec), os.fsencode(rail_profile),
+                                         os.fsencode(wheel_profile), ctypes.byref(self._handle),
+                                         message, _MESSAGE_LEN)
+        _errors.check(status, lambda: message.value)
+
+    def close(self):
+        """Frees the handle; idempotent."""
+        if self._handle:
+            lib.cw_wheelrail_destroy(self._handle)
+            self._handle = ctypes.c_void_p()
+
+    def __enter__(self):
+        return self
+
+    def __exit__(self, *exc):
+        self.close()
+
+    def __del__(self):
+        if getattr(self, "_handle", None):
+            self.close()
+
+    def _live(self):
+        if not self._handle:
+            raise ValueError("creepwork.WheelRail: closed")
+        return self._handle
+
+    def _check(self, status):
+        _errors.check(status, lambda: lib.cw_wheelrail_last_error(self._handle))
+
+    def solve(self, Fz: Optional[float] = None, **motion: float):
+        """One wheelset position (the fields of cw_wheelrail_motion: y, z,
+        roll, yaw, pitch, vs, vy, vz, vroll, vyaw, vpitch; default 0). With
+        Fz [N] the height z is found for that vertical force on the rail
+        (starting from z), otherwise z is the height. Returns (totals,
+        patches): dicts of the fields of cw_wheelrail_totals and, per
+        patch, cw_wheelrail_patch."""
+        rec = _record("cw_wheelrail_motion", motion, "WheelRail.solve")
+        totals = defaults("cw_wheelrail_totals").copy()
+        if Fz is None:
+            load, force = CONSTANTS["CW_WHEELRAIL_HEIGHT"], 0.0
+        else:
+            load, force = CONSTANTS["CW_WHEELRAIL_FORCE"], float(Fz)
+        _errors.warn_units(_motion_warnings(rec, Fz), 1)
+        self._check(lib.cw_wheelrail_solve(self._live(), address(rec), load, force, address(totals)))
+        patches: List[Dict[str, Any]] = []
+        for k in range(int(totals["n_patches"])):
+            p = defaults("cw_wheelrail_patch").copy()
+            self._check(lib.cw_wheelrail_get_patch(self._handle, k, address(p)))
+            patches.append(_as_dict(p))
+        return _as_dict(totals), patches

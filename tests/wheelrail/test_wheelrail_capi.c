@@ -1,0 +1,211 @@
+/* The wheel/rail handle through the public header: the Manchester benchmark
+ * from the profile files against CONTACT's printed results, profiles from
+ * points against Hertz's theory, the height prescribed against the force
+ * prescribed, and every documented error naming its input. */
+#include <stdarg.h>
+#include <stddef.h>
+#include <setjmp.h>
+#include <stdint.h>
+
+#include <math.h>
+#include <string.h>
+
+#include <cmocka.h>
+
+#include "creepwork/creepwork.h"
+#include "test_support.h"
+
+static const char* rail_file = CW_WHEELRAIL_DATA "/MBench_UIC60_v3.prr";
+static const char* wheel_file = CW_WHEELRAIL_DATA "/MBench_S1002_v3.prw";
+
+static cw_wheelrail* benchmark(int side)
+{
+    cw_wheelrail_params p;
+    cw_wheelrail_params_init(&p); /* the defaults are the benchmark's set-up */
+    p.side = side;
+    cw_wheelrail* w = NULL;
+    char msg[256];
+    assert_int_equal(cw_wheelrail_create(&p, rail_file, wheel_file, &w, msg, sizeof msg), CW_OK);
+    assert_non_null(w);
+    return w;
+}
+
+/* Case A-2.2, right wheel, y_ws = 3 mm (CONTACT's examples/mbench_a22_right
+ * .ref_out, ../shared/reference/nonhertz/mbench_a22.csv): FN 9774 N, FX
+ * -417.5 N, FS -2902 N, MN -23.90 N mm, p_max 713.2 N/mm^2, z_ws 0.1143 mm,
+ * totals on the rail -417.5, -1988, 10000 N. Forces within 1 % of the
+ * 10 kN load, p_max within 3 %. */
+static void benchmark_against_contact(void** state)
+{
+    (void)state;
+    cw_wheelrail* w = benchmark(CW_WHEELRAIL_RIGHT);
+    cw_wheelrail_motion m;
+    cw_wheelrail_motion_init(&m);
+    m.y = 3.0e-3;
+    m.yaw = 0.0072;
+    m.roll = -0.00018030;
+    m.vs = 2.0;
+    m.vpitch = -4.34515030;
+    cw_wheelrail_totals t;
+    cw_wheelrail_totals_init(&t);
+    assert_int_equal(cw_wheelrail_solve(w, &m, CW_WHEELRAIL_FORCE, 1e4, &t), CW_OK);
+    assert_string_equal(cw_wheelrail_last_error(w), "");
+    assert_int_equal(t.n_patches, 1);
+    assert_close(t.z, 0.1143e-3, 0, 0.05e-6);
+    assert_close(t.Fx, -417.5, 0, 100);
+    assert_close(t.Fy, -1988.0, 0, 100);
+    assert_close(t.Fz, 1e4, 1e-6, 0);
+    cw_wheelrail_patch p;
+    cw_wheelrail_patch_init(&p);
+    assert_int_equal(cw_wheelrail_get_patch(w, 0, &p), CW_OK);
+    assert_close(p.Fn, 9774.0, 0, 100);
+    assert_close(p.Fx, -417.5, 0, 100);
+    assert_close(p.Fs, -2902.0, 0, 100);
+    assert_close(p.Mn, -23.90e-3, 0, 100 * 1e-3);
+    assert_close(p.p_max, 713.2e6, 0.03, 0);
+    assert_close(p.contact_angle, -5.291 * 3.14159265358979323846 / 180, 0, 1e-4); /* validation page */
+    assert_close(p.Fz_track, t.Fz, 1e-12, 0);
+    assert_true(p.n_contact > 0 && p.n_contact == p.n_adhesion + p.n_slip);
+
+    /* the height prescribed: the same solution at the height found */
+    cw_wheelrail_totals h;
+    cw_wheelrail_totals_init(&h);
+    m.z = t.z;
+    assert_int_equal(cw_wheelrail_solve(w, &m, CW_WHEELRAIL_HEIGHT, 0.0, &h), CW_OK);
+    assert_int_equal(h.evaluations, 1);
+    assert_close(h.Fz, t.Fz, 1e-6, 0);
+    assert_close(h.Fy, t.Fy, 0, 1e-6 * t.Fz);
+    cw_wheelrail_destroy(w);
+}
+
+/* A cylinder of radius R on a rail crown of radius R (profiles as points, in
+ * mm): two crossed cylinders, a circular Hertz contact with the relative
+ * radius R (Johnson, Contact Mechanics, eq. 4.23): a^3 = 3 N R / (4 E*),
+ * p0 = 3 N / (2 pi a^2), E* = G / (1 - nu) for two equal bodies. The
+ * exact model on the 0.2 mm grid (a = 3.9 mm): p_max within 1 % (0.01 %
+ * measured); no creepage, so no
+ * tangential force. */
+static void points_against_hertz(void** state)
+{
+    (void)state;
+    enum { NR = 241, NW = 121 };
+    const double R = 0.46;
+    double ry[NR], rz[NR], wy[NW], wz[NW];
+    for (int i = 0; i < NR; ++i) {
+        ry[i] = -30.0 + 0.25 * i;
+        rz[i] = R * 1e3 - sqrt(R * R * 1e6 - ry[i] * ry[i]);
+    }
+    for (int i = 0; i < NW; ++i) {
+        wy[i] = 60.0 - i;
+        wz[i] = 0.0;
+    }
+    cw_wheelrail_params p;
+    cw_wheelrail_params_init(&p);
+    p.gauge_height = -1.0; /* the rail's origin at the track origin */
+    p.nominal_radius = R;
+    p.flange_back_position = 0.3;
+    p.flange_back_distance = 0.6;
+    p.profile_unit = 1e-3;
+    cw_wheelrail* w = NULL;
+    char msg[256] = "x";
+    assert_int_equal(cw_wheelrail_create_points(&p, ry, rz, NR, wy, wz, NW, &w, msg, sizeof msg), CW_OK);
+    assert_string_equal(msg, "");
+    cw_wheelrail_motion m;
+    cw_wheelrail_motion_init(&m);
+    m.vs = 10.0;
+    m.vpitch = -10.0 / R;
+    cw_wheelrail_totals t;
+    cw_wheelrail_totals_init(&t);
+    const double N = 2e4;
+    assert_int_equal(cw_wheelrail_solve(w, &m, CW_WHEELRAIL_FORCE, N, &t), CW_OK);
+    cw_wheelrail_patch pa;
+    cw_wheelrail_patch_init(&pa);
+    assert_int_equal(cw_wheelrail_get_patch(w, 0, &pa), CW_OK);
+    const double e_star = p.G / (1.0 - p.nu);
+    const double a = cbrt(3.0 * N * R / (4.0 * e_star)), p0 = 3.0 * N / (2.0 * 3.14159265358979323846 * a * a);
+    assert_close(pa.Fn, N, 1e-5, 0);
+    assert_close(pa.p_max, p0, 0.01, 0);
+    assert_close(pa.Fx, 0.0, 0, 1e-6 * N);
+    assert_close(pa.Fs, 0.0, 0, 1e-6 * N);
+    cw_wheelrail_destroy(w);
+}
+
+static void contains(const char* text, const char* part)
+{
+    if (!strstr(text, part)) fail_msg("'%s' does not name '%s'", text, part);
+}
+
+static void errors_name_the_input(void** state)
+{
+    (void)state;
+    char msg[256];
+    cw_wheelrail* w = (cw_wheelrail*)&msg; /* must be set to NULL on error */
+    cw_wheelrail_params p;
+    cw_wheelrail_params_init(&p);
+    p.side = 7;
+    assert_int_equal(cw_wheelrail_create(&p, rail_file, wheel_file, &w, msg, sizeof msg), CW_ERR_UNKNOWN_OPTION);
+    assert_null(w);
+    contains(msg, "side");
+    cw_wheelrail_params_init(&p);
+    p.nominal_radius = 460.0; /* mm as m */
+    assert_int_equal(cw_wheelrail_create(&p, rail_file, wheel_file, &w, msg, sizeof msg), CW_ERR_INVALID_INPUT);
+    contains(msg, "nominal_radius");
+    cw_wheelrail_params_init(&p);
+    p.mu = NAN;
+    assert_int_equal(cw_wheelrail_create(&p, rail_file, wheel_file, &w, msg, sizeof msg), CW_ERR_INVALID_INPUT);
+    contains(msg, "mu");
+    p.struct_size = 0;
+    assert_int_equal(cw_wheelrail_create(&p, rail_file, wheel_file, &w, msg, sizeof msg), CW_ERR_STRUCT_SIZE);
+    assert_int_equal(cw_wheelrail_create(NULL, "no/such/rail.prr", wheel_file, &w, msg, sizeof msg),
+                     CW_ERR_INVALID_INPUT);
+    contains(msg, "no/such/rail.prr");
+    assert_int_equal(cw_wheelrail_create(NULL, NULL, wheel_file, &w, msg, sizeof msg), CW_ERR_NULL_POINTER);
+    contains(msg, "rail_file");
+    /* a profile in metres read as millimetres: the size check */
+    const double y[5] = {0.0, 0.01, 0.02, 0.03, 0.04}, z[5] = {0.0, 0.001, 0.002, 0.003, 0.004};
+    cw_wheelrail_params_init(&p);
+    p.profile_unit = 1e-3;
+    assert_int_equal(cw_wheelrail_create_points(&p, y, z, 5, y, z, 5, &w, msg, sizeof msg), CW_ERR_INVALID_INPUT);
+    contains(msg, "rail points");
+    assert_int_equal(cw_wheelrail_create_points(&p, y, z, 3, y, z, 5, &w, msg, sizeof msg), CW_ERR_INVALID_INPUT);
+    contains(msg, "rail_n");
+
+    w = benchmark(CW_WHEELRAIL_LEFT);
+    cw_wheelrail_motion m;
+    cw_wheelrail_motion_init(&m);
+    m.vs = 2.0;
+    m.vpitch = -2.0 / 0.46;
+    cw_wheelrail_totals t;
+    cw_wheelrail_totals_init(&t);
+    cw_wheelrail_patch pa;
+    cw_wheelrail_patch_init(&pa);
+    assert_int_equal(cw_wheelrail_get_patch(w, 0, &pa), CW_ERR_NO_SOLUTION);
+    assert_int_equal(cw_wheelrail_solve(w, &m, 5, 1e4, &t), CW_ERR_UNKNOWN_OPTION);
+    contains(cw_wheelrail_last_error(w), "load");
+    assert_int_equal(cw_wheelrail_solve(w, &m, CW_WHEELRAIL_FORCE, -1e4, &t), CW_ERR_INVALID_INPUT);
+    contains(cw_wheelrail_last_error(w), "Fz");
+    m.y = NAN;
+    assert_int_equal(cw_wheelrail_solve(w, &m, CW_WHEELRAIL_FORCE, 1e4, &t), CW_ERR_INVALID_INPUT);
+    contains(cw_wheelrail_last_error(w), "motion->y");
+    m.y = 0.0;
+    assert_int_equal(cw_wheelrail_solve(w, &m, CW_WHEELRAIL_FORCE, 1e4, NULL), CW_ERR_NULL_POINTER);
+    assert_int_equal(cw_wheelrail_solve(w, &m, CW_WHEELRAIL_FORCE, 1e4, &t), CW_OK);
+    assert_int_equal(cw_wheelrail_get_patch(w, 1, &pa), CW_ERR_INVALID_INPUT);
+    contains(cw_wheelrail_last_error(w), "k = 1");
+    assert_int_equal(cw_wheelrail_get_patch(w, 0, &pa), CW_OK);
+    assert_int_equal(cw_wheelrail_get_patch(NULL, 0, &pa), CW_ERR_NULL_POINTER);
+    assert_int_equal(cw_wheelrail_solve(NULL, &m, CW_WHEELRAIL_FORCE, 1e4, &t), CW_ERR_NULL_POINTER);
+    assert_string_equal(cw_wheelrail_last_error(NULL), "");
+    assert_int_equal(cw_wheelrail_destroy(NULL), CW_OK);
+    cw_wheelrail_destroy(w);
+}
+
+int main(int argc, char** argv)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(benchmark_against_contact),
+        cmocka_unit_test(points_against_hertz),
+        cmocka_unit_test(errors_name_the_input),
+    };
+    return cw_run_tests(tests, argc > 1 ? argv[1] : NULL);
+}
