@@ -342,6 +342,15 @@ void patches_and_work_maps_add_up(void**)
             if (st[k] != 2) assert_true(sx[k] == 0.0 && sy[k] == 0.0);
             else assert_true(px[k] * sx[k] + py[k] * sy[k] < 0.0);
         }
+        // The lateral profile: per row the consistent work per unit width.
+        std::vector<double> py_row(g.ny), work(g.ny), parabola(g.ny);
+        solver.copy_profile(py_row.data(), work.data(), parabola.data());
+        double profile = 0.0;
+        for (int j = 0; j < g.ny; ++j) {
+            assert_close(py_row[j], g.y0 + j * g.dy, 0.0, 1e-15);
+            profile += work[j] * g.dy;
+        }
+        assert_close(profile, t.W_consistent, 1e-12, 0.0);
         const cw::SolveTotals tf = solver.solve(in, cw::SolveMode::forces_only);
         assert_true(tf.Fx == t.Fx && tf.Fy == t.Fy && tf.Mz == t.Mz && tf.n_slip == t.n_slip);
     }
