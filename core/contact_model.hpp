@@ -5,12 +5,16 @@
 // solved last, whose fields it exports.
 #pragma once
 
+#include <vector>
+
 #include "contact/fields.hpp"
 #include "contact/jacobian.hpp"
 #include "contact/params.hpp"
 #include "march/kernel_isa.hpp"
 
 namespace creepwork {
+
+struct PatchTotals; // nonhertz/patches.hpp
 
 class ContactModel {
 public:
@@ -36,6 +40,10 @@ public:
     // [J/m per m], and the equal-area parabola of total W at y; null
     // pointers are skipped.
     virtual void copy_profile(double W, double* y, double* work, double* parabola) const = 0;
+    // The separate patches of the last solve, for models that find them
+    // (those on a gap grid); null otherwise (the solver reports the contact
+    // as one patch).
+    virtual const std::vector<PatchTotals>* patches() const { return nullptr; }
 
     // The ISA of the model's SIMD kernels (march/kernel_isa.hpp), supported
     // by this CPU; every ISA gives bitwise the same results. Models without

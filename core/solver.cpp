@@ -24,6 +24,16 @@ std::unique_ptr<ContactModel> make_model(ModelKind kind, const GridSpec& grid)
 
 } // namespace
 
+// The models of a gap grid: the exact model, made with the solver, and
+// FASTSIM's, made on first use.
+ContactModel& Solver::gap_grid_model(ModelKind kind)
+{
+    check_gap_model(kind);
+    if (kind == ModelKind::exact) return *gap_;
+    if (!gap_fastsim_) gap_fastsim_ = std::make_unique<GapFastsimModel>(grid_);
+    return *gap_fastsim_;
+}
+
 Solver::Solver(const GridSpec& grid) : grid_(grid)
 {
     last_ = &model(ModelKind::fastsim);
@@ -56,7 +66,7 @@ ContactModel& Solver::model(ModelKind kind)
 void Solver::prepare(ModelKind kind)
 {
     if (gap_grid()) {
-        check_gap_model(kind);
+        gap_grid_model(kind);
         return;
     }
     model(kind);
@@ -64,14 +74,13 @@ void Solver::prepare(ModelKind kind)
 
 void Solver::check_gap_model(ModelKind kind) const
 {
-    if (kind != ModelKind::exact)
+    if (kind != ModelKind::exact && kind != ModelKind::fastsim)
         throw Error(ErrorKind::invalid_input,
                     std::string("model = ") +
-                        (kind == ModelKind::fastsim      ? "fastsim"
-                         : kind == ModelKind::calibrated ? "calibrated"
-                                                         : std::to_string(static_cast<int>(kind))) +
+                        (kind == ModelKind::calibrated ? "calibrated"
+                                                       : std::to_string(static_cast<int>(kind))) +
                         " is invalid on a gap grid: a contact of any shape is solved by the "
-                        "exact model (model = exact)");
+                        "exact model (model = exact) or FASTSIM (model = fastsim)");
 }
 
 const ExactModel* Solver::exact_model() const
@@ -126,8 +135,7 @@ const SolveTotals& Solver::solve_impl(const ContactInput& input, SolveMode mode,
                     : input.normal_load != NormalLoad::force
                         ? "normal_load = approach needs a gap grid (CW_GRID_GAP)"
                         : "normal_method = semi_hertz needs a gap grid (CW_GRID_GAP)");
-    if (gap_grid()) check_gap_model(input.model);
-    ContactModel& m = gap_grid() ? *gap_ : model(input.model);
+    ContactModel& m = gap_grid() ? gap_grid_model(input.model) : model(input.model);
     SolveTotals t = jacobian ? m.solve_jacobian(input, mode, *jacobian) : m.solve(input, mode);
     last_ = &m;
 
@@ -163,7 +171,8 @@ const SolveTotals& Solver::solve_impl(const ContactInput& input, SolveMode mode,
 
 const std::vector<PatchTotals>& Solver::patches() const
 {
-    return gap_ ? gap_->patches() : one_patch_;
+    const std::vector<PatchTotals>* found = last_->patches();
+    return found ? *found : one_patch_;
 }
 
 void Solver::copy_strips(double* y, double* width) const

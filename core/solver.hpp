@@ -18,13 +18,16 @@
 #include "exact/exact_model.hpp"
 #include "exact/gap_model.hpp"
 #include "fastsim/fastsim_model.hpp"
+#include "nonhertz/gap_fastsim_model.hpp"
 
 namespace creepwork {
 
 class Solver {
 public:
     // On a gap grid (GridKind::gap) the exact model of any contact shape is
-    // made here (its only model; the grid's origin and spacing are checked).
+    // made here (the grid's origin and spacing are checked); FASTSIM's model
+    // of any contact shape (nonhertz/gap_fastsim_model.hpp) on first use or
+    // by prepare(). The calibrated model does not run on a gap grid.
     explicit Solver(const GridSpec& grid);
 
     // Throws Error naming a bad input; the previous solution is then marked
@@ -43,7 +46,8 @@ public:
     // Makes a model's memory now, so that its solves allocate nothing
     // (FASTSIM's is made with the solver). Throws Error(invalid_input) when
     // the model is unknown or cannot run on this grid (exact: needs the
-    // uniform grid) and Error(grid_out_of_range) beyond its grid limit.
+    // uniform or a gap grid; calibrated: not a gap grid) and
+    // Error(grid_out_of_range) beyond its grid limit.
     void prepare(ModelKind model);
     // The exact model, if made (diagnostics of its last solve: info()).
     const ExactModel* exact_model() const;
@@ -95,12 +99,15 @@ private:
     bool gap_grid() const { return grid_.kind == GridKind::gap; }
     // Throws Error(invalid_input) naming the model unless it runs on a gap grid.
     void check_gap_model(ModelKind kind) const;
+    // On a gap grid: the model of this kind (checked), made on first use.
+    ContactModel& gap_grid_model(ModelKind kind);
 
     GridSpec grid_;
     std::vector<std::pair<ModelKind, std::unique_ptr<ContactModel>>> models_;
     FastsimModel* fastsim_ = nullptr; // models_' FASTSIM: the grid and the default kernel
     ContactModel* last_ = nullptr;    // the model of the last solve (its fields are exported)
-    std::unique_ptr<GapModel> gap_;   // on a gap grid its only model
+    std::unique_ptr<GapModel> gap_;   // on a gap grid: the exact model
+    std::unique_ptr<GapFastsimModel> gap_fastsim_; // on a gap grid: FASTSIM, made on first use
     std::vector<PatchTotals> one_patch_; // off a gap grid: the contact, if any
     SolveTotals totals_;
     SolveMode mode_ = SolveMode::full;

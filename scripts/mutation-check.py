@@ -300,6 +300,7 @@ MUTANTS += CAMPAIGN_MUTANTS
 GAP = [
     "test_nonhertz_contact", "test_nonhertz_model", "test_nonhertz_capi", "test_nonhertz_fast",
     "test_nonhertz_parts", "test_fortran_gap", "cli_gap_json_matches_library",
+    "test_nonhertz_fastsim",
 ]
 GAP_MUTANTS = [
     dict(id="gap-spin-slip", what="the gap model's rigid slip takes +phi y along x",
@@ -319,6 +320,19 @@ GAP_MUTANTS = [
          file="core/nonhertz/semi_hertz.cpp",
          old="        const double p0 = R.p_factor * std::sqrt(local);",
          new="        const double p0 = R.p_factor * local;", tests=GAP),
+    # FASTSIM on a gap grid: caught by the exact model on the 26 shapes
+    # (test_nonhertz_fastsim), the elliptic FASTSIM on a shifted Hertzian gap
+    # and the hand-computed adhesion limit per patch (test_nonhertz_capi).
+    dict(id="gap-fastsim-spin-origin", what="FASTSIM on a gap takes the spin about the grid's origin",
+         file="core/nonhertz/gap_march.cpp",
+         old="                ox = (in.xi - in.phi * M.yc) / M.L1 - in.phi * (y - M.yc) / M.L3;",
+         new="                ox = in.xi / M.L1 - in.phi * y / M.L3;", tests=GAP,
+         require=["test_nonhertz_fastsim"]),
+    dict(id="gap-fastsim-patch-ellipse", what="the patch ellipse's a is the longest row, not half of it",
+         file="core/nonhertz/gap_fastsim_model.cpp",
+         old="        const double a = 0.5 * longest_[p], b = elements * grid_.dx * grid_.dy / (kPi * a);",
+         new="        const double a = longest_[p], b = elements * grid_.dx * grid_.dy / (kPi * a);",
+         tests=GAP, require=["test_nonhertz_fastsim"]),
 ]
 MUTANTS += GAP_MUTANTS
 # -------------------------------------------------- end contacts of any shape

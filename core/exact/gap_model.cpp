@@ -27,8 +27,9 @@ constexpr double kNormalFirstTolerance = 1e-4;
 constexpr int kNormalMaxIterations = 500;
 constexpr double kMaxNormalisedCreepage = 1e100;
 
-// The grid, checked before anything is allocated for it.
-const GridSpec& checked(const GridSpec& g)
+} // namespace
+
+const GridSpec& checked_gap_grid(const GridSpec& g)
 {
     if (g.kind != GridKind::gap)
         throw Error(ErrorKind::invalid_input, "the gap model needs a gap grid");
@@ -56,15 +57,13 @@ const GridSpec& checked(const GridSpec& g)
     return g;
 }
 
-} // namespace
-
 GapModel::Level::Level(int nx_, int ny_)
     : nx(nx_), ny(ny_), conv(nx_, ny_), tangential(nx_, ny_, kKrylovDimension)
 {
 }
 
 GapModel::GapModel(const GridSpec& grid)
-    : grid_(checked(grid)), nx_(grid.nx), ny_(grid.ny), normal_(grid.nx, grid.ny),
+    : grid_(checked_gap_grid(grid)), nx_(grid.nx), ny_(grid.ny), normal_(grid.nx, grid.ny),
       semi_hertz_(grid.nx, grid.ny), labels_(grid.nx, grid.ny)
 {
     int nx = nx_, ny = ny_;
@@ -103,7 +102,18 @@ void GapModel::validate(const ContactInput& in) const
         throw Error(ErrorKind::invalid_input,
                     "flexibility = given is invalid for model = exact: the exact theory needs "
                     "the material (G, nu), not L1, L2, L3");
-    const size_t n = static_cast<size_t>(nx_) * ny_;
+    validate_gap_input(in, static_cast<size_t>(nx_) * ny_);
+    require_non_negative("tolerance", in.tolerance);
+    if (in.tolerance != 0.0 && !(in.tolerance >= 1e-13 && in.tolerance < 1.0))
+        reject_input("tolerance", in.tolerance,
+                     "must be 0 (the default, 1e-8) or in [1e-13, 1) for model = exact: "
+                     "double precision cannot resolve less");
+    if (in.max_iterations < 0)
+        reject_input("max_iterations", in.max_iterations, "must be >= 0 (0: the model's default)");
+}
+
+void validate_gap_input(const ContactInput& in, size_t n)
+{
     if (!in.gap)
         throw Error(ErrorKind::invalid_input, "gap is NULL: a gap grid needs the undeformed "
                                               "distance of every element");
@@ -136,13 +146,6 @@ void GapModel::validate(const ContactInput& in) const
     require_finite("phi", in.phi);
     if (in.rolling_direction != 1 && in.rolling_direction != -1)
         reject_input("rolling_direction", in.rolling_direction, "must be +1 or -1");
-    require_non_negative("tolerance", in.tolerance);
-    if (in.tolerance != 0.0 && !(in.tolerance >= 1e-13 && in.tolerance < 1.0))
-        reject_input("tolerance", in.tolerance,
-                     "must be 0 (the default, 1e-8) or in [1e-13, 1) for model = exact: "
-                     "double precision cannot resolve less");
-    if (in.max_iterations < 0)
-        reject_input("max_iterations", in.max_iterations, "must be >= 0 (0: the model's default)");
     require_finite("spin_offset", in.spin_offset);
     if (in.spin_offset > 1.0)
         reject_input("spin_offset", in.spin_offset,

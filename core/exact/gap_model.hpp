@@ -49,6 +49,16 @@ namespace creepwork {
 // over three cells).
 constexpr int kMinGapCells = 3;
 
+// The grid of a model on a gap grid, checked before anything is allocated
+// for it: throws Error(invalid_input) unless grid.kind is gap with finite
+// origin and positive spacing, Error(grid_out_of_range) outside
+// kMinGapCells ... kMaxExactCells cells per direction.
+const GridSpec& checked_gap_grid(const GridSpec& grid);
+// What every model on a gap grid needs of its input (n elements): the gap,
+// the load, the normal method, mu, G, nu, the creepages, the rolling
+// direction and the spin offset. Throws Error(invalid_input) naming the input.
+void validate_gap_input(const ContactInput& in, size_t n);
+
 // Diagnostics of the last solve.
 struct GapSolveInfo {
     int levels_used = 0;           // grids of the tangential solve (1 for a warm start)
@@ -86,7 +96,7 @@ public:
     // Per row j < ny: centre y [m] and width dy [m] (the wear's strips).
     void copy_strips(double* y, double* width) const;
     // The separate patches of the last solve (4-connected), caller's frame.
-    const std::vector<PatchTotals>& patches() const { return patches_; }
+    const std::vector<PatchTotals>* patches() const override { return &patches_; }
 
 private:
     struct Level {

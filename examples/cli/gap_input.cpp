@@ -189,17 +189,17 @@ void reject_elliptic_options(const ParsedOptions& o)
         {"nx", "the gap file defines the grid"},
         {"ny", "the gap file defines the grid"},
         {"box-scale", "the gap file defines the grid"},
-        {"pressure", "the exact model solves the normal problem on the gap"},
-        {"L1", "a gap is solved by the exact model, which needs G and nu"},
-        {"L2", "a gap is solved by the exact model, which needs G and nu"},
-        {"L3", "a gap is solved by the exact model, which needs G and nu"},
-        {"flexibility-blending", "a FASTSIM option; a gap is solved by the exact model"},
+        {"pressure", "the normal problem is solved on the gap (--normal-method)"},
+        {"L1", "on a gap the flexibilities come from G and nu"},
+        {"L2", "on a gap the flexibilities come from G and nu"},
+        {"L3", "on a gap the flexibilities come from G and nu"},
+        {"flexibility-blending", "a FASTSIM option for an ellipse, not for a gap"},
         {"jacobian", "not available for a gap"}};
     for (const auto& u : unused)
         if (o.has(u[0])) throw usage_error(std::string("--") + u[0], u[1]);
-    if (o.has("model") && o.text("model", "") != "exact")
+    if (o.has("model") && o.text("model", "") != "exact" && o.text("model", "") != "fastsim")
         throw usage_error("--model", "a gap is solved by the exact model (--model exact, the "
-                                     "default with --gap)");
+                                     "default with --gap) or FASTSIM (--model fastsim)");
     if (o.has("N") == o.has("approach"))
         throw usage_error(o.has("N") ? "--N/--approach" : "--N",
                           o.has("N") ? "give the normal force or the approach, not both"
@@ -246,7 +246,7 @@ JsonObject gap_json(const Solution& s, const std::vector<cw_patch>& patches, con
         .number("W_micro_paper", u.from_si(Quantity::work, r.W_micro_paper))
         .number("K", r.K)
         .number("W_consistent", u.from_si(Quantity::work, r.W_consistent))
-        .text("model", "exact")
+        .text("model", r.model == CW_MODEL_FASTSIM ? "fastsim" : "exact")
         .integer("iterations", r.iterations)
         .number("residual", r.residual)
         .text("units", u.name())
@@ -310,10 +310,16 @@ void print_gap_text(std::ostream& os, const Solution& s, const std::vector<cw_pa
     os << "creepage   xi_x = " << fmt(p.xi_x) << ", xi_y = " << fmt(p.xi_y)
        << ", spin = " << val(p.phi, Quantity::spin) << ", rolling towards "
        << (p.rolling_direction > 0 ? "+x" : "-x") << "\n";
-    os << "model      exact (Kalker's half-space theory), normal problem "
+    os << "model      "
+       << (r.model == CW_MODEL_FASTSIM ? "fastsim (Kalker's simplified theory, each patch's "
+                                         "flexibilities)"
+                                       : "exact (Kalker's half-space theory)")
+       << ", normal problem "
        << (p.normal_method == CW_NORMAL_SEMI_HERTZ ? "semi-Hertzian (per row)" : "exact") << ": p_max = "
-       << val(r.p_max, Quantity::stress) << ", " << r.iterations << " iterations, residual "
-       << fmt(r.residual, 3) << "\n";
+       << val(r.p_max, Quantity::stress);
+    if (r.model == CW_MODEL_EXACT) // FASTSIM's march does not iterate
+        os << ", " << r.iterations << " iterations, residual " << fmt(r.residual, 3);
+    os << "\n";
     os << "results    (forces and moment on the wheel, Mz about the file's origin)\n";
     const struct {
         const char* key;
@@ -368,7 +374,7 @@ int command_solve_gap(const ParsedOptions& opts)
                               " m are implausible for a wheel-rail contact (0.05-1 mm; the file "
                               "is read in metres: millimetres typed as metres?)");
     cw_params& p = c.params;
-    p.model = CW_MODEL_EXACT;
+    p.model = opts.text("model", "exact") == "fastsim" ? CW_MODEL_FASTSIM : CW_MODEL_EXACT;
     p.gap = g.h.data();
     p.gap_len = g.h.size();
     if (opts.has("approach")) {

@@ -121,8 +121,10 @@ contact of any shape (instead of --a, --b and the grid options):
                     the header x_m,y_m,h_m and one line per cell centre (any
                     order; in metres whatever --units says; positive h =
                     separation). Its cells are the potential contact area; it
-                    is solved by the exact model, separate patches together
-                    (reported one by one); Mz about the file's origin
+                    is solved by the exact model (default) or by FASTSIM
+                    (--model fastsim: each patch with the flexibilities of its
+                    own ellipse), separate patches together (reported one by
+                    one); Mz about the file's origin
   --approach A      with --gap, instead of --N: the approach from the file's
                     h = 0 (length)
   --normal-method exact|semi-hertz

@@ -67,6 +67,29 @@ def test_two_lobes_are_two_patches_adding_up_to_the_totals():
     assert p["n_contact"].sum() == r.n_contact
 
 
+def test_fastsim_on_a_gap_grid_patches_add_up():
+    """model="fastsim" on the two lobes with the semi-Hertzian normal method:
+    two patches whose totals add up to the result's (header,
+    cw_solver_get_patches: to rounding), the consistent work map sums to
+    W_macro, and |F| <= mu N per patch (Coulomb's bound, element by element)."""
+    grid = gap_grid(30, 56, -5e-3, -12e-3, 0.35e-3, 0.45e-3)
+    x, y = centres(grid)
+    lobe = lambda yc, lift: x ** 2 / 0.9 + (y - yc) ** 2 / 0.5 + lift
+    h = np.minimum(lobe(-6e-3, 0.0), lobe(6e-3, 2e-6))
+    with creepwork.Solver(grid=grid) as s:
+        r = s.solve(**CREEP, model="fastsim", normal_method="semi_hertz", N=N, gap=h)
+        p = s.patches()
+    assert r.model == creepwork.CW_MODEL_FASTSIM
+    assert r.n_patches == 2 and p.shape == (2,)
+    assert abs(p["Fn"].sum() - N) <= 1e-12 * N
+    for key in ("Fx", "Fy", "Mz", "W_macro"):
+        total = getattr(r, key)
+        assert abs(p[key].sum() - total) <= 1e-9 * (abs(total) + 1e-9), key
+    assert p["n_contact"].sum() == r.n_contact
+    assert np.all(np.hypot(p["Fx"], p["Fy"]) <= 0.3 * p["Fn"] * (1 + 1e-12))
+    assert abs(r.W_consistent - r.W_macro) <= 1e-12 * r.W_macro
+
+
 def test_one_patch_off_a_gap_grid_and_errors_name_the_input():
     """Off a gap grid the contact is one patch with the result's totals; a gap
     on another grid, or another model on a gap grid, raise InvalidInputError
@@ -80,5 +103,5 @@ def test_one_patch_off_a_gap_grid_and_errors_name_the_input():
     grid = gap_grid(8, 8, -2e-3, -2e-3, 0.5e-3, 0.5e-3)
     x, y = centres(grid)
     h = x ** 2 + y ** 2
-    with pytest.raises(creepwork.InvalidInputError, match="model = fastsim"):
-        creepwork.solve(**CREEP, model="fastsim", N=N, gap=h, gap_len=h.size, grid=grid)
+    with pytest.raises(creepwork.InvalidInputError, match="model = calibrated"):
+        creepwork.solve(**CREEP, model="calibrated", N=N, gap=h, gap_len=h.size, grid=grid)

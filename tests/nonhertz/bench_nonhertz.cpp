@@ -5,7 +5,7 @@
 // repeated: CONTACT recomputes everything on every call). Not a test: no
 // timed assertion anywhere (doc/validation/non-hertzian.md has the table).
 //
-//   creepwork_bench_nonhertz [--contact-eps E] [--quick] [--cases ID,ID...]
+//   creepwork_bench_nonhertz [--contact-eps E] [--quick] [--fast] [--cases ID,ID...]
 //
 // Shapes from gap_shapes.hpp with the creepages of data/contact_cases.csv.
 //  cold       create a solver and solve once (CW_SOLVE_FULL): best of samples
@@ -15,6 +15,12 @@
 //             gap drifting too (h x (1 + 0.01 sin(2 pi k/100)): the normal
 //             problem re-solved from the last pressure)
 //  semi-Hertz the fast normal method alone, N prescribed (per call)
+// and a second table, FASTSIM on the gap grid with the semi-Hertzian normal
+// method (the fast model, gap_fastsim_model.hpp): per solve on one solver,
+// forces only (CW_SOLVE_FORCES) and full (CW_SOLVE_FULL: the work maps),
+// best of three runs, beside the semi-Hertzian method alone in the same run
+// (the difference is the labelling, the patches' flexibilities, the march
+// and the totals). --fast prints only that table.
 // Thread CPU time of the calling thread (CONTACT runs on it, one thread).
 // Run CONTACT with GLIBC_TUNABLES=glibc.malloc.trim_threshold=536870912:
 // glibc.malloc.mmap_threshold=33554432:glibc.malloc.top_pad=67108864 (it
@@ -108,12 +114,72 @@ std::string sig3(double v)
     return b;
 }
 
+int fast_table(const std::vector<std::string>& ids, const std::vector<gapshapes::Shape>& shapes,
+               bool quick)
+{
+    std::printf("FASTSIM on the gap grid with the semi-Hertzian normal method, per solve on one "
+                "solver (best of three runs), one core, thread CPU time.\n\n"
+                "| shape | cells | contact elements | patches | semi-Hertz normal us | FASTSIM "
+                "forces us | FASTSIM full us |\n|---|---:|---:|---:|---:|---:|---:|\n");
+    for (const std::string& id : ids) {
+        const gapshapes::Shape* sp = nullptr;
+        for (const auto& s : shapes)
+            if (s.id == id) sp = &s;
+        if (!sp) {
+            std::fprintf(stderr, "no shape %s\n", id.c_str());
+            return 2;
+        }
+        const gapshapes::Shape& s = *sp;
+        Inputs c = creepages_of(id);
+        if (id == "H20_hertz") c = {6e-4, 3e-4, 0.2};
+        cw::ContactInput in;
+        in.model = cw::ModelKind::fastsim;
+        in.normal_method = cw::NormalMethod::semi_hertz;
+        in.gap = s.h.data();
+        in.gap_len = s.h.size();
+        in.normal_load = s.approach_given ? cw::NormalLoad::approach : cw::NormalLoad::force;
+        in.normal_force = s.normal_force;
+        in.approach = s.approach;
+        in.G = s.G;
+        in.nu = s.nu;
+        in.mu = s.mu;
+        in.xi_x = c.xi_x;
+        in.xi_y = c.xi_y;
+        in.phi = c.phi;
+        in.rolling_direction = s.rolling_direction;
+        const int reps = quick ? 200 : 2000;
+        cw::SemiHertz sh(s.nx, s.ny);
+        std::vector<double> p(s.h.size());
+        cw::Solver solver(grid_of(s));
+        cw::SolveTotals t = solver.solve(in, cw::SolveMode::full);
+        double normal = 1e300, forces = 1e300, full = 1e300;
+        for (int run = 0; run < 3; ++run) {
+            double t0 = thread_seconds();
+            for (int k = 0; k < reps; ++k)
+                sh.solve(s.h.data(), s.dx, s.dy, s.G / (1.0 - s.nu), !s.approach_given,
+                         s.approach_given ? s.approach : s.normal_force, p.data());
+            normal = std::min(normal, (thread_seconds() - t0) / reps);
+            t0 = thread_seconds();
+            for (int k = 0; k < reps; ++k) t = solver.solve(in, cw::SolveMode::forces_only);
+            forces = std::min(forces, (thread_seconds() - t0) / reps);
+            t0 = thread_seconds();
+            for (int k = 0; k < reps; ++k) t = solver.solve(in, cw::SolveMode::full);
+            full = std::min(full, (thread_seconds() - t0) / reps);
+        }
+        std::printf("| %s | %d x %d | %d | %d | %s | %s | %s |\n", id.c_str(), s.nx, s.ny,
+                    t.n_contact, t.n_patches, sig3(normal * 1e6).c_str(),
+                    sig3(forces * 1e6).c_str(), sig3(full * 1e6).c_str());
+        std::fflush(stdout);
+    }
+    return 0;
+}
+
 } // namespace
 
 int main(int argc, char** argv)
 {
     double contact_eps = 1e-8;
-    bool quick = false;
+    bool quick = false, fast_only = false;
     std::vector<std::string> ids = {"N07_wide", "N04_crescent", "N01_hollow", "N03_three_lobes",
                                     "N06_flange_root", "H20_hertz"};
     for (int k = 1; k < argc; ++k) {
@@ -122,6 +188,8 @@ int main(int argc, char** argv)
             contact_eps = std::atof(argv[++k]);
         else if (a == "--quick")
             quick = true;
+        else if (a == "--fast")
+            fast_only = true;
         else if (a == "--cases" && k + 1 < argc) {
             ids.clear();
             std::string list = argv[++k];
@@ -131,29 +199,11 @@ int main(int argc, char** argv)
                 p = q + 1;
             }
         } else {
-            std::fprintf(stderr, "usage: %s [--contact-eps E] [--quick] [--cases ID,...]\n", argv[0]);
+            std::fprintf(stderr, "usage: %s [--contact-eps E] [--quick] [--fast] [--cases ID,...]\n",
+                         argv[0]);
             return 2;
         }
     }
-    std::printf("Contacts of any shape: the exact model on the gap grid (tolerance 1e-8, "
-                "CW_SOLVE_FULL), one core, thread CPU time.");
-#ifdef CW_BENCH_CONTACT
-    std::printf(" CONTACT (d431cdb, this build: no MKL, so no FFT) module 3, exact normal and "
-                "tangential problems, EPS %g, the same gap, cntc_calculate once per solve%s.",
-                contact_eps,
-                std::getenv("GLIBC_TUNABLES") ? "" : " (GLIBC_TUNABLES not set: page faults count)");
-    if (contact_gap_init() != 0) return 1;
-#endif
-    std::printf("\n\n| shape | cells | contact elements | patches | cold ms | warm ms (gap fixed) | "
-                "warm ms (gap drifting) | semi-Hertz normal us |");
-#ifdef CW_BENCH_CONTACT
-    std::printf(" CONTACT ms | CONTACT / cold | CONTACT / warm (gap drifting) |");
-#endif
-    std::printf("\n|---|---:|---:|---:|---:|---:|---:|---:|");
-#ifdef CW_BENCH_CONTACT
-    std::printf("---:|---:|---:|");
-#endif
-    std::printf("\n");
     std::vector<gapshapes::Shape> shapes = gapshapes::shapes();
     {
         // For scale: the elliptic exact model's benchmark contact (a = 7.17 mm,
@@ -186,6 +236,27 @@ int main(int argc, char** argv)
         h.normal_force = 100e3;
         shapes.push_back(h);
     }
+    if (fast_only) return fast_table(ids, shapes, quick);
+
+    std::printf("Contacts of any shape: the exact model on the gap grid (tolerance 1e-8, "
+                "CW_SOLVE_FULL), one core, thread CPU time.");
+#ifdef CW_BENCH_CONTACT
+    std::printf(" CONTACT (d431cdb, this build: no MKL, so no FFT) module 3, exact normal and "
+                "tangential problems, EPS %g, the same gap, cntc_calculate once per solve%s.",
+                contact_eps,
+                std::getenv("GLIBC_TUNABLES") ? "" : " (GLIBC_TUNABLES not set: page faults count)");
+    if (contact_gap_init() != 0) return 1;
+#endif
+    std::printf("\n\n| shape | cells | contact elements | patches | cold ms | warm ms (gap fixed) | "
+                "warm ms (gap drifting) | semi-Hertz normal us |");
+#ifdef CW_BENCH_CONTACT
+    std::printf(" CONTACT ms | CONTACT / cold | CONTACT / warm (gap drifting) |");
+#endif
+    std::printf("\n|---|---:|---:|---:|---:|---:|---:|---:|");
+#ifdef CW_BENCH_CONTACT
+    std::printf("---:|---:|---:|");
+#endif
+    std::printf("\n");
     for (const std::string& id : ids) {
         const gapshapes::Shape* sp = nullptr;
         for (const auto& s : shapes)
@@ -300,5 +371,6 @@ int main(int argc, char** argv)
 #ifdef CW_BENCH_CONTACT
     contact_gap_finish();
 #endif
-    return 0;
+    std::printf("\n");
+    return fast_table(ids, shapes, quick);
 }

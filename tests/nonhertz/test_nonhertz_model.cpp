@@ -317,8 +317,8 @@ void errors_name_the_input(void**)
     in.gap = bad.data();
     expect_error(solver, in, cw::ErrorKind::invalid_input, "gap[17]");
     in = ok;
-    in.model = cw::ModelKind::fastsim;
-    expect_error(solver, in, cw::ErrorKind::invalid_input, "model = fastsim");
+    in.model = cw::ModelKind::calibrated;
+    expect_error(solver, in, cw::ErrorKind::invalid_input, "model = calibrated");
     in = ok;
     in.approach = std::nan("");
     in.normal_load = cw::NormalLoad::approach;

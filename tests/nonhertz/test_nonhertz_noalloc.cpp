@@ -1,7 +1,8 @@
 // No heap allocation in a gap grid's solves once the solver exists (it makes
-// its only model at creation): cold and warm, the gap or the load changed,
-// the approach given, the semi-Hertzian method, no contact, and every export
-// (fields, states, profile, strips, patches). Counted by interposing malloc
+// the exact model at creation, FASTSIM's by prepare()): cold and warm, the
+// gap or the load changed, the approach given, the semi-Hertzian method, no
+// contact, FASTSIM with either normal method, and every export (fields,
+// states, profile, strips, patches). Counted by interposing malloc
 // (../robustness/count_malloc.h), so built without sanitizers.
 #include <vector>
 
@@ -28,15 +29,17 @@ void gap_solves_allocate_nothing(void**)
     g.dy = s.dy;
     cw_count_start();
     cw::Solver solver(g);
+    solver.prepare(cw::ModelKind::fastsim); // FASTSIM's memory on a gap grid
     assert_true(cw_count_stop() > 0);
     const size_t n = s.h.size();
     std::vector<double> out(n), moved = s.h, y(s.ny), w(s.ny), p(s.ny);
     std::vector<int> states(n);
     for (double& v : moved) v *= 1.01;
     long allocations = 0;
-    for (int k = 0; k < 9; ++k) {
+    // k < 9 the exact model, then FASTSIM (both normal methods).
+    for (int k = 0; k < 14; ++k) {
         cw::ContactInput in;
-        in.model = cw::ModelKind::exact;
+        in.model = k < 9 ? cw::ModelKind::exact : cw::ModelKind::fastsim;
         in.gap = (k % 2 ? moved : s.h).data();
         in.gap_len = n;
         in.normal_force = k == 4 ? 0.8 * s.normal_force : s.normal_force;
@@ -53,7 +56,8 @@ void gap_solves_allocate_nothing(void**)
             in.approach = k == 5 ? 5e-5 : 0.0;
         }
         if (k == 8) in.normal_load = cw::NormalLoad::approach, in.approach = -1.0; // apart
-        if (k == 3) in.normal_method = cw::NormalMethod::semi_hertz;
+        if (k == 3 || (k >= 9 && k != 12)) in.normal_method = cw::NormalMethod::semi_hertz;
+        if (k == 11) in.rolling_direction = -1;
         cw_count_start();
         solver.solve(in, k % 2 ? cw::SolveMode::forces_only : cw::SolveMode::full);
         solver.copy_field(cw::Field::pz, out.data());

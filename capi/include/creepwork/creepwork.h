@@ -121,7 +121,8 @@ CW_API const char* cw_status_string(int status);
 #define CW_GRID_KALKER_STRIPS 0 /* ny equal strips, nx equal elements per chord (Kalker 1982) */
 #define CW_GRID_UNIFORM 1       /* nx*ny box [-S a, S a] x [-S b, S b] (CONTACT) */
 #define CW_GRID_GAP 2           /* a contact of any shape: nx*ny cells of dx*dy from (x0, y0),
-                                   the gap given per solve (cw_params.gap; CW_MODEL_EXACT) */
+                                   the gap given per solve (cw_params.gap; CW_MODEL_EXACT or
+                                   CW_MODEL_FASTSIM) */
 
 /* cw_params.normal_load (gap grid) */
 #define CW_NORMAL_FORCE 0    /* normal_force prescribed, the approach found (default) */
@@ -248,9 +249,9 @@ typedef struct cw_params {
                               N by up to a few tenths of a per cent (the original algorithm:
                               FASTSIM and CONTACT comparisons use it). The exact model's
                               discrete normal problem carries N exactly either way. */
-    /* A contact of any shape (CW_GRID_GAP, CW_MODEL_EXACT; doc/theory/
-     * non-hertzian.md). a, b, pressure and flexibility_blending are not
-     * used; spin_offset is as for the exact model; Mz is about the grid's
+    /* A contact of any shape (CW_GRID_GAP, CW_MODEL_EXACT or CW_MODEL_FASTSIM;
+     * doc/theory/non-hertzian.md). a, b, pressure and flexibility_blending
+     * are not used; spin_offset is as for the model; Mz is about the grid's
      * origin. Off a gap grid gap must be NULL and the next two their defaults. */
     const double* gap;     /* undeformed distance between the surfaces at each element
                               centre [m] at [i + j*nx], positive = separation; the
@@ -259,7 +260,7 @@ typedef struct cw_params {
     size_t gap_len;        /* values at gap, >= nx*ny */
     int normal_load;       /* CW_NORMAL_FORCE (default) or CW_NORMAL_APPROACH */
     int normal_method;     /* CW_NORMAL_EXACT (default) or CW_NORMAL_SEMI_HERTZ; the
-                              tangential problem is the exact model's either way */
+                              tangential problem is the model's either way */
     double approach;       /* [m] from the gap's datum, with CW_NORMAL_APPROACH (default 0) */
 } cw_params;
 
@@ -337,10 +338,12 @@ CW_API int cw_solver_grid_size(const cw_solver* solver, int* nx, int* ny);
  * CW_GRID_GAP and CW_FLEX_FROM_MATERIAL (G, nu); solves its own normal
  * problem (from a, b, normal_force on the uniform grid; on a gap grid from
  * params->gap with the force or the approach prescribed), so
- * params->pressure is ignored; a gap grid takes no other model and no
- * Jacobian (CW_ERR_INVALID_INPUT); with warm_start = 1 it
- * starts from this handle's last successful exact solution (the answer
- * equals a cold start's to the tolerance); it stops when the relative
+ * params->pressure is ignored; a gap grid takes CW_MODEL_EXACT or
+ * CW_MODEL_FASTSIM (each patch with the flexibilities of its own ellipse
+ * from G, nu), no other model and no Jacobian (CW_ERR_INVALID_INPUT);
+ * with warm_start = 1 the exact model starts from this handle's last
+ * successful exact solution (the answer equals a cold start's to the
+ * tolerance); it stops when the relative
  * residual is <= tolerance (default 1e-8) and reports CW_ERR_NOT_CONVERGED
  * after max_iterations Newton steps (default 50) otherwise -- never an
  * unconverged answer. Errors: CW_ERR_NULL_POINTER, CW_ERR_STRUCT_SIZE,

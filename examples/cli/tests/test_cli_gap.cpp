@@ -142,6 +142,27 @@ void json_matches_library(void**)
     assert_close(fj.num("Fn"), 50e3, 1e-12, 0.0);
     assert_true(std::fabs(fj.num("n_contact") - lib.n_contact) <= 0.1 * lib.n_contact);
 
+    // FASTSIM with the semi-Hertzian method: the library's numbers, the
+    // same keys, its patches adding up.
+    const cwtest::Run fs_run = cwtest::cli_ok({"solve", "--gap", file, "--N", "50e3", "--xi-x", "4e-4",
+                                        "--xi-y", "-6e-4", "--spin", "0.5", "--model", "fastsim",
+                                        "--normal-method", "semi-hertz", "--format", "json"});
+    const cwtest::Json fsj = cwtest::parse_json(fs_run.out);
+    cw_params pf = library_params(g);
+    pf.model = CW_MODEL_FASTSIM;
+    pf.normal_method = CW_NORMAL_SEMI_HERTZ;
+    cw_result libf;
+    cw_result_init(&libf);
+    assert_int_equal(cw_solver_solve(s, &pf, CW_SOLVE_FULL, &libf), CW_OK);
+    assert_true(fsj.at("model").string == "fastsim");
+    assert_close(fsj.num("Fx"), libf.Fx, 0.0, 1e-7 * muN);
+    assert_close(fsj.num("Fy"), libf.Fy, 0.0, 1e-7 * muN);
+    assert_close(fsj.num("Mz"), libf.Mz, 0.0, 1e-9 * muN);
+    assert_int_equal(static_cast<int>(fsj.num("n_patches")), 2);
+    double fsx = 0.0;
+    for (const cwtest::Json& q : fsj.at("patches").array) fsx += q.num("Fx");
+    assert_close(fsx, fsj.num("Fx"), 0.0, 1e-9 * muN);
+
     // --out: the fields of every cell.
     const std::string out = cwtest::g_tools.scratch + "/out";
     cwtest::cli_ok({"solve", "--gap", file, "--N", "50e3", "--out", out, "--format",
@@ -198,7 +219,7 @@ void bad_gaps_fail_cleanly(void**)
     // Options that do not belong with a gap.
     expect_usage_error({"solve", "--gap", good, "--N", "1e3", "--a", "6e-3"}, "--a");
     expect_usage_error({"solve", "--gap", good, "--N", "1e3", "--nx", "20"}, "--nx");
-    expect_usage_error({"solve", "--gap", good, "--N", "1e3", "--model", "fastsim"}, "--model");
+    expect_usage_error({"solve", "--gap", good, "--N", "1e3", "--model", "calibrated"}, "--model");
     expect_usage_error({"solve", "--gap", good}, "--N");
     expect_usage_error({"solve", "--gap", good, "--N", "1e3", "--approach", "1e-5"}, "not both");
     expect_usage_error({"solve", "--gap", good, "--N", "1e3", "--jacobian"}, "--jacobian");

@@ -1,0 +1,269 @@
+#include "nonhertz/gap_fastsim_model.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "contact/contact_input.hpp"
+#include "contact/error.hpp"
+#include "contact/kalker_coefficients.hpp"
+#include "contact/number_text.hpp"
+#include "exact/exact_work.hpp"
+#include "exact/gap_model.hpp"
+
+namespace creepwork {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+// The exact normal problem's, as the exact model's (gap_model.cpp).
+constexpr double kNormalTolerance = 1e-10;
+constexpr double kNormalFirstTolerance = 1e-4;
+constexpr int kNormalMaxIterations = 500;
+
+} // namespace
+
+GapFastsimModel::GapFastsimModel(const GridSpec& grid)
+    : grid_(checked_gap_grid(grid)), nx_(grid.nx), ny_(grid.ny), semi_hertz_(grid.nx, grid.ny),
+      conv_(std::make_unique<GridConvolution>(grid.nx, grid.ny)),
+      normal_(std::make_unique<NormalProblem>(grid.nx, grid.ny)), labels_(grid.nx, grid.ny)
+{
+    const size_t n = static_cast<size_t>(nx_) * ny_;
+    for (auto* v : {&gap_, &gap_in_dx_, &pressure_, &start_, &paper_, &consistent_})
+        v->assign(n, 0.0);
+    for (auto* v : {&p_, &slip_, &rigid_}) v->assign(n, {0.0, 0.0});
+    state_.assign(n, 0);
+    in_contact_.assign(n, 0);
+    patch_of_.assign(n, -1);
+    // At most one patch per two elements (a checkerboard's contact elements).
+    march_patches_.reserve(n / 2 + 1);
+    march_totals_.reserve(n / 2 + 1);
+    longest_.reserve(n / 2 + 1);
+    elements_.reserve(n / 2 + 1);
+    patches_.reserve(n / 2 + 1);
+    for (auto* v : {&profile_, &row_d_, &row_pool_}) v->assign(ny_, 0.0);
+}
+
+void GapFastsimModel::validate(const ContactInput& in) const
+{
+    if (in.model != ModelKind::fastsim)
+        throw Error(ErrorKind::invalid_input, "the gap grid's FASTSIM model got another model");
+    if (in.flexibility != FlexibilitySource::kalker_from_material)
+        throw Error(ErrorKind::invalid_input,
+                    "flexibility = given is invalid on a gap grid: FASTSIM takes each patch's "
+                    "flexibilities from the material (G, nu) and the patch's size");
+    validate_gap_input(in, static_cast<size_t>(nx_) * ny_);
+}
+
+SolveTotals GapFastsimModel::solve_jacobian(const ContactInput&, SolveMode, Jacobian&)
+{
+    throw Error(ErrorKind::invalid_input,
+                "the Jacobian is not available on a gap grid (a contact of any shape)");
+}
+
+void GapFastsimModel::solve_normal(const ContactInput& in)
+{
+    const size_t n = static_cast<size_t>(nx_) * ny_;
+    const bool force = in.normal_load == NormalLoad::force;
+    const double dx = grid_.dx, dy = grid_.dy;
+    if (force && in.normal_force == 0.0) {
+        std::fill(pressure_.begin(), pressure_.end(), 0.0);
+        approach_ = *std::min_element(gap_.begin(), gap_.end()); // the surfaces just touch
+    } else {
+        const SemiHertzResult r =
+            semi_hertz_.solve(gap_.data(), dx, dy, in.G / (1.0 - in.nu), force,
+                              force ? in.normal_force : in.approach, pressure_.data());
+        approach_ = r.approach;
+        if (in.normal_method == NormalMethod::exact) {
+            for (size_t k = 0; k < n; ++k) {
+                start_[k] = pressure_[k] / in.G;
+                gap_in_dx_[k] = gap_[k] / dx;
+            }
+            conv_->set_coefficients(dy / dx, in.nu);
+            const double value = force ? in.normal_force / (in.G * dx * dy) : in.approach / dx;
+            const NormalSolveInfo ni =
+                normal_->solve_gap(*conv_, gap_in_dx_.data(), start_.data(), force, value,
+                                   kNormalTolerance, kNormalMaxIterations, kNormalFirstTolerance);
+            if (!ni.converged)
+                throw Error(ErrorKind::not_converged,
+                            "the normal problem on the gap did not converge (residual " +
+                                number_text(ni.residual) + " after " +
+                                std::to_string(ni.iterations) + " iterations)");
+            const std::vector<double>& q = normal_->pressure();
+            for (size_t k = 0; k < n; ++k) pressure_[k] = q[k] * in.G;
+            approach_ = normal_->approach() * dx;
+        }
+    }
+    double total = 0.0;
+    for (size_t k = 0; k < n; ++k) total += pressure_[k];
+    force_ = total * dx * dy;
+}
+
+// Each patch's "patch ellipse" and its flexibilities, and its spin centre
+// (the centroid of its elements), rolling frame.
+void GapFastsimModel::set_patches(const ContactInput& in)
+{
+    const int count = labels_.count();
+    march_patches_.assign(count, GapMarchPatch{});
+    longest_.assign(count, 0.0);
+    elements_.assign(count, 0.0);
+    std::vector<GapMarchPatch>& P = march_patches_;
+    const double left = direction_ > 0 ? grid_.x0 : -(grid_.x0 + (nx_ - 1) * grid_.dx);
+    int i_lo = nx_, i_hi = -1, j_lo = ny_, j_hi = -1; // the contact's extent
+    for (int j = 0; j < ny_; ++j) {
+        const double y = grid_.y0 + j * grid_.dy;
+        int run = 0, last = -1;
+        for (int i = 0; i <= nx_; ++i) {
+            const int p = i < nx_ ? patch_of_[i + static_cast<size_t>(nx_) * j] : -1;
+            if (p >= 0) {
+                i_lo = std::min(i_lo, i), i_hi = std::max(i_hi, i);
+                j_lo = std::min(j_lo, j), j_hi = std::max(j_hi, j);
+                P[p].xc += left + i * grid_.dx;
+                P[p].yc += y;
+                elements_[p] += 1.0;
+                ++run;
+                last = p;
+            } else if (run > 0) {
+                longest_[last] = std::max(longest_[last], run * grid_.dx);
+                run = 0;
+            }
+        }
+    }
+    extent_x_ = i_hi >= i_lo ? (i_hi - i_lo + 1) * grid_.dx : 0.0;
+    extent_y_ = j_hi >= j_lo ? (j_hi - j_lo + 1) * grid_.dy : 0.0;
+    y_mid_ = j_hi >= j_lo ? grid_.y0 + 0.5 * (j_lo + j_hi) * grid_.dy : 0.0;
+    for (int p = 0; p < count; ++p) {
+        const double elements = elements_[p];
+        P[p].xc /= elements;
+        P[p].yc /= elements;
+        const double a = 0.5 * longest_[p], b = elements * grid_.dx * grid_.dy / (kPi * a);
+        const double ratio = std::min(std::max(a / b, kMinAspect), kMaxAspect);
+        const Flexibilities L = kalker_flexibilities(a, b, in.G, kalker_coefficients(ratio, in.nu));
+        P[p].L1 = L.L1;
+        P[p].L2 = L.L2;
+        P[p].L3 = L.L3;
+    }
+}
+
+SolveTotals GapFastsimModel::solve(const ContactInput& in, SolveMode mode)
+{
+    validate(in);
+    direction_ = in.rolling_direction;
+    full_ = mode == SolveMode::full;
+    for (int j = 0; j < ny_; ++j)
+        for (int i = 0; i < nx_; ++i) gap_[i + nx_ * j] = in.gap[caller_index(i) + nx_ * j];
+    solve_normal(in);
+
+    SolveTotals t;
+    double p_max = 0.0;
+    for (int j = 0; j < ny_; ++j)
+        for (int i = 0; i < nx_; ++i) {
+            const double pz = pressure_[caller_index(i) + nx_ * j];
+            p_max = std::max(p_max, pz);
+            in_contact_[i + nx_ * j] = pz > 0.0;
+        }
+    t.n_patches = labels_.label(in_contact_.data());
+    for (int j = 0; j < ny_; ++j)
+        for (int i = 0; i < nx_; ++i)
+            patch_of_[i + nx_ * j] = labels_.of(caller_index(i) + nx_ * j);
+    set_patches(in);
+    // The largest rigid slip step dx |omega| of any patch: far below
+    // overflow, so that |q|^2 is finite (the march compares it squared).
+    const double reach = std::max({std::fabs(grid_.x0), std::fabs(grid_.x0 + nx_ * grid_.dx),
+                                   std::fabs(grid_.y0), std::fabs(grid_.y0 + ny_ * grid_.dy)});
+    for (const GapMarchPatch& P : march_patches_) {
+        const double step = grid_.dx * ((std::fabs(in.xi_x) + std::fabs(in.phi) * reach) / P.L1 +
+                                        (std::fabs(in.xi_y) + std::fabs(in.phi) * reach) / P.L2 +
+                                        4.0 * std::fabs(in.phi) * reach / P.L3);
+        if (!(step <= 1e100))
+            throw Error(ErrorKind::invalid_input,
+                        "xi_x, xi_y or phi is so large that the rigid slip overflows");
+    }
+
+    const double d = direction_;
+    GapMarchInput m;
+    m.nx = nx_;
+    m.ny = ny_;
+    m.x0 = direction_ > 0 ? grid_.x0 : -(grid_.x0 + (nx_ - 1) * grid_.dx);
+    m.y0 = grid_.y0;
+    m.dx = grid_.dx;
+    m.dy = grid_.dy;
+    m.pressure = pressure_.data();
+    m.patch = patch_of_.data();
+    m.patches = march_patches_.data();
+    m.mu = in.mu;
+    m.xi = d * in.xi_x;
+    m.eta = in.xi_y;
+    m.phi = d * in.phi;
+    m.spin_offset = in.spin_offset >= 0.0 ? in.spin_offset : 0.0;
+    march_totals_.assign(labels_.count(), GapMarchTotals{});
+    GapMarchOutput out;
+    out.p = p_.data();
+    out.slip = full_ ? slip_.data() : nullptr; // the slips feed the work maps alone
+    out.rigid = full_ ? rigid_.data() : nullptr;
+    out.state = state_.data();
+    out.patch_totals = march_totals_.data();
+    gap_march(m, out);
+
+    // Totals and patches in the caller's frame, patch by patch.
+    patches_.assign(labels_.count(), PatchTotals{});
+    t.model = ModelKind::fastsim;
+    for (int p = 0; p < labels_.count(); ++p) {
+        const GapMarchTotals& M = march_totals_[p];
+        PatchTotals& P = patches_[p];
+        P.n_contact = M.n_contact;
+        P.n_slip = M.n_slip;
+        P.n_adhesion = P.n_contact - P.n_slip;
+        P.x_centroid = d * march_patches_[p].xc;
+        P.y_centroid = march_patches_[p].yc;
+        P.Fx = d * M.Fx;
+        P.Fy = M.Fy;
+        P.Mz = d * M.Mz;
+        P.Fn = M.Fn;
+        P.p_max = M.p_max;
+        P.W_macro = -(P.Fx * in.xi_x + P.Fy * in.xi_y + P.Mz * in.phi);
+        t.Fx += P.Fx;
+        t.Fy += P.Fy;
+        t.Mz += P.Mz;
+        t.n_contact += P.n_contact;
+        t.n_slip += P.n_slip;
+    }
+    t.W_macro = -(t.Fx * in.xi_x + t.Fy * in.xi_y + t.Mz * in.phi);
+    t.n_adhesion = t.n_contact - t.n_slip;
+    t.adhesion_fraction = t.n_contact > 0 ? double(t.n_adhesion) / t.n_contact : 0.0;
+    t.a = 0.5 * extent_x_;
+    t.b = 0.5 * extent_y_;
+    half_width_ = t.b;
+    t.p_max = p_max;
+    t.approach = approach_;
+    t.normal_force = force_;
+
+    if (full_) {
+        // The march's tractions in Pa and slips as numbers: unit scales.
+        ExactWorkInput w;
+        w.nx = nx_;
+        w.ny = ny_;
+        w.q = p_.data();
+        w.s = slip_.data();
+        w.w = rigid_.data();
+        w.state = state_.data();
+        w.traction_scale = 1.0;
+        w.slip_scale = 1.0;
+        w.area = grid_.dx * grid_.dy;
+        w.dy = grid_.dy;
+        w.b = half_width_ > 0.0 ? half_width_ : grid_.dy;
+        w.y0 = grid_.y0 - y_mid_;
+        w.W_macro = t.W_macro;
+        const ExactWorkTotals wt = exact_work(w, paper_.data(), consistent_.data(),
+                                              profile_.data(), row_d_.data(), row_pool_.data());
+        t.W_micro_paper = wt.W_micro_paper;
+        t.K = wt.W_micro_paper != 0.0 ? t.W_macro / wt.W_micro_paper : 0.0;
+        t.W_consistent = wt.W_consistent;
+        t.balance_factor = wt.balance;
+        t.work_flags = wt.flags;
+        t.profile_max_diff = wt.profile_max_diff;
+        t.profile_rms_diff = wt.profile_rms_diff;
+    }
+    return t;
+}
+
+} // namespace creepwork
