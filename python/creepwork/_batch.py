@@ -14,6 +14,7 @@ from typing import Any, List, Optional, Tuple, Union
 import numpy as np
 
 from . import _errors, _units
+from ._handle import Handle
 from ._library import CONSTANTS, DTYPES, address, defaults, filled, lib
 from ._params import PARAMS, grid_record
 from ._solver import GridLike, Solver, _grid_for
@@ -71,7 +72,7 @@ class ManyResult:
             self.shape, int(self.ok.sum()), len(self.messages))
 
 
-class Batch:
+class Batch(Handle):
     """Many independent contacts on one grid, solved in parallel (cw_batch).
 
         with creepwork.Batch(grid=None, threads=0) as batch:
@@ -92,34 +93,17 @@ class Batch:
         self._grid = rec
         self._solver = None  # made on the first failure, to name its input
 
-    def close(self) -> None:
-        """Frees the handle; idempotent."""
-        if self._solver is not None:
+    _destroy = "cw_batch_destroy"
+    _last_error = "cw_batch_last_error"
+
+    def _close_parts(self) -> None:
+        if getattr(self, "_solver", None) is not None:
             self._solver.close()
             self._solver = None
-        if self._handle:
-            lib.cw_batch_destroy(self._handle)
-            self._handle = ctypes.c_void_p()
-
-    def __enter__(self):
-        return self
-
-    def __exit__(self, *exc):
-        self.close()
-
-    def __del__(self):
-        if getattr(self, "_handle", None):
-            self.close()
 
     def prepare(self, model: Union[str, int]) -> None:
         """cw_batch_prepare: makes a model's memory for every thread now."""
-        status = lib.cw_batch_prepare(self._live(), int(PARAMS.convert("model", model)))
-        _errors.check(status, lambda: lib.cw_batch_last_error(self._handle))
-
-    def _live(self):
-        if not self._handle:
-            raise ValueError("creepwork.Batch: the batch is closed")
-        return self._handle
+        self._check(lib.cw_batch_prepare(self._live(), int(PARAMS.convert("model", model))))
 
     def solve(self, params: Optional[np.ndarray] = None, *, full: bool = False, warn: bool = True,
               **keywords: Any) -> ManyResult:

@@ -13,6 +13,7 @@ from typing import TYPE_CHECKING, Any, Dict, Optional, Union
 import numpy as np
 
 from . import _errors, _units
+from ._handle import Handle
 from ._layout import LAYOUT
 from ._library import CONSTANTS, DTYPES, address, lib
 from ._params import PARAMS, exact_default_grid, grid_record
@@ -125,7 +126,7 @@ def _scalar_view(rec):
     return dict(zip(rec.dtype.names, rec.item()))
 
 
-class Solver:
+class Solver(Handle):
     """A solver for one grid, reused for many solves (cw_solver).
 
         with creepwork.Solver(grid={"kind": "uniform", "nx": 24, "ny": 24,
@@ -163,38 +164,19 @@ class Solver:
         self._result_address = address(self._result)
         self._wear = None
 
-    # -- life cycle
-    def close(self) -> None:
-        """Frees the handle (and its wear workspace); further calls raise."""
-        if self._wear is not None:
+    # -- life cycle (Handle): close() also frees the wear workspace
+    _destroy = "cw_solver_destroy"
+    _last_error = "cw_solver_last_error"
+
+    def _close_parts(self) -> None:
+        if getattr(self, "_wear", None) is not None:
             self._wear.close()
             self._wear = None
-        if self._handle:
-            lib.cw_solver_destroy(self._handle)
-            self._handle = ctypes.c_void_p()
-
-    def __enter__(self):
-        return self
-
-    def __exit__(self, *exc):
-        self.close()
-
-    def __del__(self):
-        if getattr(self, "_handle", None):
-            self.close()
-
-    def _live(self):
-        if not self._handle:
-            raise ValueError("creepwork.Solver: the solver is closed")
-        return self._handle
 
     @property
     def last_error(self) -> str:
         """The library's message about the last error on this handle ("" after success)."""
         return (lib.cw_solver_last_error(self._live()) or b"").decode("utf-8", "replace")
-
-    def _check(self, status):
-        _errors.check(status, lambda: lib.cw_solver_last_error(self._handle))
 
     # -- solving
     def solve(self, params: ParamsLike = None, *, fields: bool = True, warn: bool = True,

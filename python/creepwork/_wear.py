@@ -10,6 +10,7 @@ from collections import namedtuple
 import numpy as np
 
 from . import _errors
+from ._handle import Handle
 from ._library import CONSTANTS, DTYPES, address, lib
 from ._params import WEAR_PARAMS
 
@@ -69,7 +70,7 @@ class WearResult:
             self.mass_per_distance, self.max_depth)
 
 
-class Wear:
+class Wear(Handle):
     """The wear workspace of one solver's grid (cw_wear). Usually reached
     through Solver.wear(**keywords); made directly for several laws on the
     same solve:
@@ -80,35 +81,14 @@ class Wear:
             kth = w.compute(s, law="archard_kth", rolling_speed=20.0)
     """
 
+    _destroy = "cw_wear_destroy"
+    _last_error = "cw_wear_last_error"
+
     def __init__(self, solver):
         self._handle = ctypes.c_void_p()
         self.nx, self.ny = solver.nx, solver.ny
         status = lib.cw_wear_create(solver._live(), ctypes.byref(self._handle))
         _errors.check(status)
-
-    def close(self):
-        """Frees the workspace; idempotent."""
-        if self._handle:
-            lib.cw_wear_destroy(self._handle)
-            self._handle = ctypes.c_void_p()
-
-    def __enter__(self):
-        return self
-
-    def __exit__(self, *exc):
-        self.close()
-
-    def __del__(self):
-        if getattr(self, "_handle", None):
-            self.close()
-
-    def _live(self):
-        if not self._handle:
-            raise ValueError("creepwork.Wear: closed")
-        return self._handle
-
-    def _check(self, status):
-        _errors.check(status, lambda: lib.cw_wear_last_error(self._handle))
 
     def compute(self, solver: "Solver", **keywords: Any) -> WearResult:
         """The wear of solver's last solve (which needs fields=True), by the
@@ -136,7 +116,7 @@ class Wear:
 Wear.compute.__doc__ += "\n" + WEAR_PARAMS.doc(8)
 
 
-class WearProfile:
+class WearProfile(Handle):
     """Wear depth accumulated over many passes on a host's profile grid
     (cw_wear_profile): nodes s [m], strictly increasing, any spacing. Sums
     are exact: the depths do not depend on the order or grouping of the
@@ -148,6 +128,9 @@ class WearProfile:
             depth = rail.depth()          # [m] per node
     """
 
+    _destroy = "cw_wear_profile_destroy"
+    _last_error = "cw_wear_profile_last_error"
+
     def __init__(self, s):
         self._handle = ctypes.c_void_p()
         self.s = np.ascontiguousarray(s, dtype=np.float64).copy()
@@ -155,30 +138,6 @@ class WearProfile:
         status = lib.cw_wear_profile_create(address(self.s), self.s.size,
                                             ctypes.byref(self._handle), message, _MESSAGE_LEN)
         _errors.check(status, lambda: message.value)
-
-    def close(self):
-        """Frees the accumulator; idempotent."""
-        if self._handle:
-            lib.cw_wear_profile_destroy(self._handle)
-            self._handle = ctypes.c_void_p()
-
-    def __enter__(self):
-        return self
-
-    def __exit__(self, *exc):
-        self.close()
-
-    def __del__(self):
-        if getattr(self, "_handle", None):
-            self.close()
-
-    def _live(self):
-        if not self._handle:
-            raise ValueError("creepwork.WearProfile: closed")
-        return self._handle
-
-    def _check(self, status):
-        _errors.check(status, lambda: lib.cw_wear_profile_last_error(self._handle))
 
     def add(self, wear: Union[Wear, "Solver"], s0: float = 0.0, orientation: int = 1,
             contact_angle: float = 0.0, passes: float = 1.0) -> None:
@@ -263,39 +222,18 @@ def wear_profile_update(s: ArrayLike, old_profile: ArrayLike, depth: ArrayLike,
     return out
 
 
-class Accumulator:
+class Accumulator(Handle):
     """Running work totals of a simulation loop on one solver's grid
     (cw_accumulator, paper eqs. 35 and 37): add(solver, distance) after each
     solve with fields=True, distance = V dt [m]."""
+
+    _destroy = "cw_accumulator_destroy"
+    _last_error = "cw_accumulator_last_error"
 
     def __init__(self, solver):
         self._handle = ctypes.c_void_p()
         self.nx, self.ny = solver.nx, solver.ny
         _errors.check(lib.cw_accumulator_create(solver._live(), ctypes.byref(self._handle)))
-
-    def close(self):
-        """Frees the accumulator; idempotent."""
-        if self._handle:
-            lib.cw_accumulator_destroy(self._handle)
-            self._handle = ctypes.c_void_p()
-
-    def __enter__(self):
-        return self
-
-    def __exit__(self, *exc):
-        self.close()
-
-    def __del__(self):
-        if getattr(self, "_handle", None):
-            self.close()
-
-    def _live(self):
-        if not self._handle:
-            raise ValueError("creepwork.Accumulator: closed")
-        return self._handle
-
-    def _check(self, status):
-        _errors.check(status, lambda: lib.cw_accumulator_last_error(self._handle))
 
     def add(self, solver: "Solver", distance: float) -> None:
         """Adds the solver's last solve for a step of distance = V dt [m]."""

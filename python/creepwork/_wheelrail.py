@@ -8,9 +8,8 @@ import ctypes
 import os
 from typing import Any, Dict, List, Optional
 
-import numpy as np
-
 from . import _errors
+from ._handle import Handle
 from ._library import CONSTANTS, address, defaults, lib
 
 _MESSAGE_LEN = 1024
@@ -55,7 +54,7 @@ def _motion_warnings(rec, Fz):
     return w
 
 
-class WheelRail:
+class WheelRail(Handle):
     """A wheel and a rail profile with a track, a wheelset and a side, solved
     for any wheelset position:
 
@@ -68,6 +67,9 @@ class WheelRail:
     with cw_wheelrail_params_init's defaults (the Manchester benchmark's
     track and wheelset, 0.2 mm elements, steel)."""
 
+    _destroy = "cw_wheelrail_destroy"
+    _last_error = "cw_wheelrail_last_error"
+
     def __init__(self, rail_profile: str, wheel_profile: str, **params: Any):
         rec = _record("cw_wheelrail_params", params, "WheelRail")
         _errors.warn_units(_params_warnings(rec), 1)
@@ -77,30 +79,6 @@ class WheelRail:
                                          os.fsencode(wheel_profile), ctypes.byref(self._handle),
                                          message, _MESSAGE_LEN)
         _errors.check(status, lambda: message.value)
-
-    def close(self):
-        """Frees the handle; idempotent."""
-        if self._handle:
-            lib.cw_wheelrail_destroy(self._handle)
-            self._handle = ctypes.c_void_p()
-
-    def __enter__(self):
-        return self
-
-    def __exit__(self, *exc):
-        self.close()
-
-    def __del__(self):
-        if getattr(self, "_handle", None):
-            self.close()
-
-    def _live(self):
-        if not self._handle:
-            raise ValueError("creepwork.WheelRail: closed")
-        return self._handle
-
-    def _check(self, status):
-        _errors.check(status, lambda: lib.cw_wheelrail_last_error(self._handle))
 
     def solve(self, Fz: Optional[float] = None, **motion: float):
         """One wheelset position (the fields of cw_wheelrail_motion: y, z,
