@@ -376,15 +376,9 @@ SolveTotals ExactModel::solve(const ContactInput& in, SolveMode mode)
         w.b = in.b;
         w.y0 = fine.geom.Y(0) * s.dx;
         w.W_macro = t.W_macro;
-        const ExactWorkTotals wt = exact_work(w, paper_.data(), consistent_.data(),
-                                              profile_.data(), row_d_.data(), row_pool_.data());
-        t.W_micro_paper = wt.W_micro_paper;
-        t.K = wt.W_micro_paper != 0.0 ? t.W_macro / wt.W_micro_paper : 0.0;
-        t.W_consistent = wt.W_consistent;
-        t.balance_factor = wt.balance;
-        t.work_flags = wt.flags;
-        t.profile_max_diff = wt.profile_max_diff;
-        t.profile_rms_diff = wt.profile_rms_diff;
+        set_work_totals(exact_work(w, paper_.data(), consistent_.data(), profile_.data(),
+                                   row_d_.data(), row_pool_.data()),
+                        t);
     }
     has_previous_ = !trivial;
     if (!trivial && !rolling_freely) remember(ratio, nu);

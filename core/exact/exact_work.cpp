@@ -120,4 +120,15 @@ ExactWorkTotals exact_work(const ExactWorkInput& in, double* paper, double* cons
     return t;
 }
 
+void set_work_totals(const ExactWorkTotals& work, SolveTotals& t)
+{
+    t.W_micro_paper = work.W_micro_paper;
+    t.K = work.W_micro_paper != 0.0 ? t.W_macro / work.W_micro_paper : 0.0;
+    t.W_consistent = work.W_consistent;
+    t.balance_factor = work.balance;
+    t.work_flags = work.flags;
+    t.profile_max_diff = work.profile_max_diff;
+    t.profile_rms_diff = work.profile_rms_diff;
+}
+
 } // namespace creepwork

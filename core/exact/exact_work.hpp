@@ -34,6 +34,8 @@
 #include <complex>
 #include <vector>
 
+#include "contact/params.hpp"
+
 namespace creepwork {
 
 struct ExactWorkInput {
@@ -65,6 +67,11 @@ struct ExactWorkTotals {
 // J/m per m). row_* are scratch of ny doubles. Allocates nothing.
 ExactWorkTotals exact_work(const ExactWorkInput& in, double* paper, double* consistent,
                            double* profile, double* row_dissipation, double* row_pool);
+
+// Copies the work totals into a solve's totals (W_micro_paper, K = W_macro /
+// W_micro_paper, W_consistent, balance_factor, work_flags, the profile's
+// differences from its parabola); t.W_macro must be set.
+void set_work_totals(const ExactWorkTotals& work, SolveTotals& t);
 
 // (3 W / 4b)(1 - y^2/b^2) inside |y| < b, else 0: the equal-area parabola of
 // a lateral work profile (paper Figs. 8-9), as march/march_work.hpp's.
