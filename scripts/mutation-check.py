@@ -338,6 +338,30 @@ MUTANTS += GAP_MUTANTS
 # -------------------------------------------------- end contacts of any shape
 
 
+# ---------------------------------------------------------------- wheel/rail
+# The chain from a patch's geometry to its forces (core/wheelrail/
+# patch_contact.cpp): CONTACT's module-1 signs and the rigid slip about the
+# reference point, caught by CONTACT's Manchester results and the doors.
+WHEELRAIL = [
+    "test_wheelrail_forces", "test_wheelrail_capi", "test_fortran_wheelrail",
+    "cli_wheelrail_json_matches_library", "test_wheelrail_vertical",
+]
+WHEELRAIL_MUTANTS = [
+    dict(id="wheelrail-cksi-sign", what="CONTACT's CKSI taken as the wheel's xi_x without the sign",
+         file="core/wheelrail/patch_contact.cpp",
+         old="    const double xi = -p.cksi, eta = p.ceta, phi = p.cphi;",
+         new="    const double xi = p.cksi, eta = p.ceta, phi = p.cphi;",
+         tests=WHEELRAIL, require=["test_wheelrail_forces"]),
+    dict(id="wheelrail-moment-transfer", what="a patch's Mn about the grid's origin, not the reference point",
+         file="core/wheelrail/patch_contact.cpp",
+         old="    r.mn = t.Mz + x0 * t.Fy - y0 * t.Fx; // about the reference point",
+         new="    r.mn = t.Mz; // about the reference point",
+         tests=WHEELRAIL),
+]
+MUTANTS += WHEELRAIL_MUTANTS
+# ------------------------------------------------------------ end wheel/rail
+
+
 def run(cmd, cwd=None, quiet=True):
     r = subprocess.run(cmd, cwd=cwd, stdout=subprocess.PIPE if quiet else None,
                        stderr=subprocess.STDOUT if quiet else None, text=True)
