@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "capi_internal.hpp"
+#include "contact/number_text.hpp"
 #include "wheelrail/patch_contact.hpp"
 #include "wheelrail/profile_io.hpp"
 
@@ -69,13 +70,13 @@ void check_params(const cw_wheelrail_params& p)
         {"tolerance", p.tolerance}, {"profile_unit", p.profile_unit}};
     for (const auto& [name, v] : all) require_finite((std::string("params->") + name).c_str(), v);
     if (!(p.dx > 0.0 && p.dx <= 0.1 && p.ds > 0.0 && p.ds <= 0.1))
-        fail(CW_ERR_INVALID_INPUT, "params->dx = " + std::to_string(p.dx) + ", ds = " + std::to_string(p.ds) +
+        fail(CW_ERR_INVALID_INPUT, "params->dx = " + creepwork::number_text(p.dx) + ", ds = " + creepwork::number_text(p.ds) +
                                        " must lie in (0, 0.1] m");
     if (!(p.nominal_radius > 0.05 && p.nominal_radius < 5.0))
-        fail(CW_ERR_INVALID_INPUT, "params->nominal_radius = " + std::to_string(p.nominal_radius) +
+        fail(CW_ERR_INVALID_INPUT, "params->nominal_radius = " + creepwork::number_text(p.nominal_radius) +
                                        " must lie in (0.05, 5) m (a radius in mm?)");
     if (!(p.profile_unit >= 0.0 && p.profile_unit <= 1.0))
-        fail(CW_ERR_INVALID_INPUT, "params->profile_unit = " + std::to_string(p.profile_unit) +
+        fail(CW_ERR_INVALID_INPUT, "params->profile_unit = " + creepwork::number_text(p.profile_unit) +
                                        " must lie in [0, 1] m per unit");
 }
 
@@ -240,7 +241,7 @@ int cw_wheelrail_solve(cw_wheelrail* wheelrail, const cw_wheelrail_motion* motio
             fail(CW_ERR_UNKNOWN_OPTION, "load = " + std::to_string(load) +
                                             " is neither CW_WHEELRAIL_FORCE (0) nor CW_WHEELRAIL_HEIGHT (1)");
         if (load == CW_WHEELRAIL_FORCE && !(Fz > 0.0 && Fz < 1e7))
-            fail(CW_ERR_INVALID_INPUT, "Fz = " + std::to_string(Fz) + " must lie in (0, 1e7) N");
+            fail(CW_ERR_INVALID_INPUT, "Fz = " + creepwork::number_text(Fz) + " must lie in (0, 1e7) N");
         wr::WheelsetPosition pos;
         pos.y = m.y;
         pos.z = m.z;

@@ -5,6 +5,7 @@
 #include <utility>
 
 #include "contact/error.hpp"
+#include "contact/number_text.hpp"
 #include "wheelrail/hertz_patch.hpp"
 
 namespace creepwork::wheelrail {
@@ -15,8 +16,8 @@ void check_setting(const char* name, double v, double lo, double hi)
 {
     if (!(std::isfinite(v) && v >= lo && v <= hi))
         throw Error(ErrorKind::invalid_input, std::string("wheel/rail contact: ") + name + " must lie in [" +
-                                                  std::to_string(lo) + ", " + std::to_string(hi) + "], got " +
-                                                  std::to_string(v));
+                                                  number_text(lo) + ", " + number_text(hi) + "], got " +
+                                                  number_text(v));
 }
 
 } // namespace

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "contact/error.hpp"
+#include "contact/number_text.hpp"
 
 namespace creepwork::wheelrail {
 
@@ -45,7 +46,7 @@ VerticalForceSolution solve_vertical_position(WheelRailGeometry& g, double fz, c
 {
     if (!(fz > 0.0 && std::isfinite(fz) && fz < 1e7))
         throw Error(ErrorKind::invalid_input,
-                    "wheel/rail: the vertical force must lie in (0, 1e7) N, got " + std::to_string(fz));
+                    "wheel/rail: the vertical force must lie in (0, 1e7) N, got " + number_text(fz));
     if (!(opt.tolerance > 0.0 && opt.tolerance < 0.1 && opt.max_iterations >= 2))
         throw Error(ErrorKind::invalid_input, "wheel/rail: vertical force tolerance must lie in (0, 0.1), "
                                               "max_iterations >= 2");
