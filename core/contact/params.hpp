@@ -102,7 +102,7 @@ struct ContactInput {
 
 // Flags in SolveTotals::work_flags.
 constexpr int kWorkUnresolved = 1;   // no slip element: released energy put on trailing elements
-constexpr int kWorkNonPositive = 2;  // W_macro <= 0 with dissipation: consistent map set to zero
+constexpr int kWorkNonPositive = 2;  // map cannot add up to W_macro: consistent map set to zero
 
 struct SolveTotals {
     double Fx = 0, Fy = 0, Mz = 0;        // on the wheel (body 1) [N, N, N m]

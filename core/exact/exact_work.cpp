@@ -83,7 +83,12 @@ ExactWorkTotals exact_work(const ExactWorkInput& in, double* paper, double* cons
     }
 
     const double total = total_d + total_pool;
-    if (total > 0.0 && !(in.W_macro > 0.0)) t.flags |= kWorkNonPositive;
+    // The map adds up to W_macro only when both are positive. Otherwise it is
+    // zero and flagged, as in the march (march_work.cpp): W_macro <= 0 with
+    // dissipation, or W_macro > 0 that rounding left with nothing to carry it
+    // (extreme inputs, where every element product flushes to zero).
+    if (!(total > 0.0 && in.W_macro > 0.0) && (total > 0.0 || in.W_macro != 0.0))
+        t.flags |= kWorkNonPositive;
     t.balance = total > 0.0 && in.W_macro > 0.0 ? in.W_macro / total : 1.0;
     const double scale = (t.flags & kWorkNonPositive) ? 0.0 : t.balance;
     double sum = 0.0;

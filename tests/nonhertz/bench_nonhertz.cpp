@@ -237,6 +237,9 @@ int main(int argc, char** argv)
         shapes.push_back(h);
     }
     if (fast_only) return fast_table(ids, shapes, quick);
+#ifndef CW_BENCH_CONTACT
+    (void)contact_eps; // read only when CONTACT runs side by side
+#endif
 
     std::printf("Contacts of any shape: the exact model on the gap grid (tolerance 1e-8, "
                 "CW_SOLVE_FULL), one core, thread CPU time.");

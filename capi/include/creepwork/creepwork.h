@@ -176,8 +176,10 @@ CW_API const char* cw_status_string(int status);
 /* cw_result.work_flags bits */
 #define CW_WORK_UNRESOLVED 1  /* no element slips: released elastic energy put on each
                                  strip's trailing contact element (an adhesion element) */
-#define CW_WORK_NON_POSITIVE 2 /* W_macro <= 0 with dissipation (three-flexibility defect):
-                                  energy-consistent map set to zero */
+#define CW_WORK_NON_POSITIVE 2 /* the map cannot add up to W_macro: W_macro <= 0 with
+                                  dissipation (three-flexibility defect), or W_macro > 0
+                                  with no dissipation left after rounding (extreme
+                                  inputs); energy-consistent map set to zero */
 
 /* ------------------------------------------------------------------ grid */
 
