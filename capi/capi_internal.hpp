@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <memory>
 #include <new>
 #include <string>
 #include <vector>
@@ -17,12 +18,23 @@
 #include "capi_fp_mode.hpp"
 #include "contact/error.hpp"
 #include "solver.hpp"
+#include "wear/wear_profile.hpp"
 
 namespace cw = creepwork;
 
+// A solver the caller made (owned), or a view of one a wheel/rail handle
+// owns (cw_wheelrail_patch_solver), which the caller only reads.
 struct cw_solver {
-    explicit cw_solver(const cw::GridSpec& g) : solver(g) {}
-    cw::Solver solver;
+    explicit cw_solver(const cw::GridSpec& g) : owned(std::make_unique<cw::Solver>(g)), solver(*owned) {}
+    explicit cw_solver(const cw::Solver& view) : solver(const_cast<cw::Solver&>(view)) {}
+    std::unique_ptr<cw::Solver> owned;
+    cw::Solver& solver;
+    mutable std::string last_error; // the last call's message, const getters' included
+};
+
+struct cw_wear_profile {
+    explicit cw_wear_profile(const double* s, long n) : acc(s, n) {}
+    creepwork::wear::ProfileAccumulator acc;
     mutable std::string last_error; // the last call's message, const getters' included
 };
 

@@ -25,12 +25,6 @@ struct cw_wear {
     mutable std::string last_error; // the last call's message, const getters' included
 };
 
-struct cw_wear_profile {
-    explicit cw_wear_profile(const double* s, long n) : acc(s, n) {}
-    cww::ProfileAccumulator acc;
-    mutable std::string last_error; // the last call's message, const getters' included
-};
-
 namespace {
 
 cw_wear_params wear_defaults()

@@ -4,19 +4,9 @@
 #include <memory>
 #include <sstream>
 
-#include "capi_internal.hpp"
+#include "capi_wheelrail_internal.hpp"
 #include "contact/number_text.hpp"
-#include "wheelrail/patch_contact.hpp"
 #include "wheelrail/profile_io.hpp"
-
-namespace wr = creepwork::wheelrail;
-
-struct cw_wheelrail {
-    explicit cw_wheelrail(wr::WheelRailContact c) : contact(std::move(c)) {}
-    wr::WheelRailContact contact;
-    bool solved = false;
-    mutable std::string last_error;
-};
 
 namespace {
 
@@ -44,6 +34,9 @@ cw_wheelrail_params default_wheelrail_params()
     p.mu = c.mu;
     p.G = c.G;
     p.nu = c.nu;
+    p.model = CW_MODEL_EXACT;
+    p.normal_method = CW_NORMAL_EXACT;
+    p.solve_mode = CW_SOLVE_FULL;
     return p;
 }
 
@@ -69,6 +62,15 @@ void check_params(const cw_wheelrail_params& p)
         {"d_sep", p.d_sep}, {"d_comb", p.d_comb}, {"mu", p.mu}, {"G", p.G}, {"nu", p.nu},
         {"tolerance", p.tolerance}, {"profile_unit", p.profile_unit}};
     for (const auto& [name, v] : all) require_finite((std::string("params->") + name).c_str(), v);
+    if (p.model != CW_MODEL_EXACT && p.model != CW_MODEL_FASTSIM)
+        fail(CW_ERR_UNKNOWN_OPTION, "params->model = " + std::to_string(p.model) +
+                                        " is neither CW_MODEL_EXACT (1) nor CW_MODEL_FASTSIM (0)");
+    if (p.normal_method != CW_NORMAL_EXACT && p.normal_method != CW_NORMAL_SEMI_HERTZ)
+        fail(CW_ERR_UNKNOWN_OPTION, "params->normal_method = " + std::to_string(p.normal_method) +
+                                        " is neither CW_NORMAL_EXACT (0) nor CW_NORMAL_SEMI_HERTZ (1)");
+    if (p.solve_mode != CW_SOLVE_FULL && p.solve_mode != CW_SOLVE_FORCES)
+        fail(CW_ERR_UNKNOWN_OPTION, "params->solve_mode = " + std::to_string(p.solve_mode) +
+                                        " is neither CW_SOLVE_FORCES (0) nor CW_SOLVE_FULL (1)");
     if (!(p.dx > 0.0 && p.dx <= 0.1 && p.ds > 0.0 && p.ds <= 0.1))
         fail(CW_ERR_INVALID_INPUT, "params->dx = " + creepwork::number_text(p.dx) + ", ds = " + creepwork::number_text(p.ds) +
                                        " must lie in (0, 0.1] m");
@@ -108,6 +110,10 @@ wr::WheelRailContact make_contact(const cw_wheelrail_params& p, const wr::Profil
     c.G = p.G;
     c.nu = p.nu;
     c.tolerance = p.tolerance;
+    c.model = p.model == CW_MODEL_FASTSIM ? cw::ModelKind::fastsim : cw::ModelKind::exact;
+    c.normal_method =
+        p.normal_method == CW_NORMAL_SEMI_HERTZ ? cw::NormalMethod::semi_hertz : cw::NormalMethod::exact;
+    c.mode = p.solve_mode == CW_SOLVE_FORCES ? cw::SolveMode::forces_only : cw::SolveMode::full;
     const wr::Side side = p.side == CW_WHEELRAIL_LEFT ? wr::Side::left : wr::Side::right;
     return wr::WheelRailContact(wr::WheelRailGeometry(rail, wheel, t, w, side, o), c);
 }
@@ -148,6 +154,16 @@ void check_finite_out(const char* what, double v)
 }
 
 } // namespace
+
+const wr::PatchSolution& creepwork::capi::solved_patch(const cw_wheelrail& w, size_t k)
+{
+    if (!w.solved) fail(CW_ERR_NO_SOLUTION, "no successful cw_wheelrail_solve on this handle");
+    const wr::WheelRailSolution& s = w.contact.solution();
+    if (k >= s.patches.size())
+        fail(CW_ERR_INVALID_INPUT,
+             "k = " + std::to_string(k) + " is not below the number of patches, " + std::to_string(s.patches.size()));
+    return s.patches[k];
+}
 
 extern "C" {
 
@@ -281,13 +297,8 @@ int cw_wheelrail_get_patch(const cw_wheelrail* wheelrail, size_t k, cw_wheelrail
     if (!wheelrail) return CW_ERR_NULL_POINTER;
     return guarded(&wheelrail->last_error, [&] {
         require(patch, "patch");
-        if (!wheelrail->solved) fail(CW_ERR_NO_SOLUTION, "no successful cw_wheelrail_solve on this handle");
-        const wr::WheelRailSolution& s = wheelrail->contact.solution();
-        if (k >= s.patches.size())
-            fail(CW_ERR_INVALID_INPUT, "k = " + std::to_string(k) + " is not below the number of patches, " +
-                                           std::to_string(s.patches.size()));
+        const wr::PatchSolution& p = solved_patch(*wheelrail, k);
         const wr::ContactPatch& g = wheelrail->contact.geometry().state().patches.at(k);
-        const wr::PatchSolution& p = s.patches[k];
         cw_wheelrail_patch c;
         cw_wheelrail_patch_init(&c);
         c.x_contact = g.x_tr;
@@ -317,6 +328,17 @@ int cw_wheelrail_get_patch(const cw_wheelrail* wheelrail, size_t k, cw_wheelrail
         c.n_slip = p.n_slip;
         c.nx = g.nx;
         c.ny = g.ny;
+        // the solver's grid, rows in s order (creepwork's y = -s)
+        c.field_nx = p.nx;
+        c.field_ny = p.ny;
+        c.field_x0 = p.x0;
+        c.field_s0 = -(p.y0 + (p.ny - 1) * p.dy);
+        c.field_dx = p.dx;
+        c.field_ds = p.dy;
+        c.rail_profile_y = g.rail_profile_y;
+        c.rail_s_cos = g.rail_s_cos;
+        c.wheel_profile_y = g.wheel_profile_y;
+        c.wheel_s_cos = g.wheel_s_cos;
         if (!valid_struct_size(patch->struct_size))
             fail(CW_ERR_STRUCT_SIZE, "patch->struct_size = " + std::to_string(patch->struct_size) +
                                          " is invalid (call cw_wheelrail_patch_init first)");

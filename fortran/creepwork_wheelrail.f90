@@ -2,13 +2,16 @@
 !   cw_wheelrail_type  owns one cw_wheelrail: a wheel and a rail profile, the
 !                      track, the wheelset and the side; solved for any
 !                      wheelset position, every contact patch by Kalker's
-!                      exact theory. CONTACT's module-1 conventions (forces on
-!                      the rail), SI units.
+!                      exact theory or the fast model; each patch's fields,
+!                      and its wear on the rail and wheel profiles. CONTACT's
+!                      module-1 conventions (forces on the rail), SI units.
 module creepwork_wheelrail
-   use, intrinsic :: iso_c_binding, only: c_int, c_size_t, c_double, c_char, c_ptr, c_null_char
+   use, intrinsic :: iso_c_binding, only: c_int, c_size_t, c_double, c_char, c_ptr, c_null_char, &
+                                          c_null_ptr, c_loc
    use creepwork_types
    use creepwork_capi
    use creepwork_handle
+   use creepwork_wear, only: cw_wear_profile_type
    implicit none
    private
    public :: cw_wheelrail_params_init, cw_wheelrail_motion_init, cw_wheelrail_totals_init, &
@@ -20,6 +23,9 @@ module creepwork_wheelrail
       procedure :: create_points => wheelrail_create_points
       procedure :: solve => wheelrail_solve
       procedure :: get_patch => wheelrail_get_patch
+      procedure :: get_patch_field => wheelrail_get_patch_field
+      procedure :: get_patch_state => wheelrail_get_patch_state
+      procedure :: add_wear => wheelrail_add_wear
       procedure, nopass :: noun => wheelrail_noun
    end type cw_wheelrail_type
 
@@ -145,9 +151,7 @@ contains
       character(len=:), allocatable, intent(out), optional :: errmsg
       integer(c_int) :: status
       type(outcome) :: o
-      o = created(self)
-      if (o%status == CW_OK .and. k < 1) &
-         o = make_outcome(CW_ERR_INVALID_INPUT, 'k = '//trim(integer_text(k))//' must be >= 1')
+      o = patch_index_checked(self, k)
       if (o%status == CW_OK) then
          if (patch%struct_size == 0) status = capi_wheelrail_patch_init(patch)
          o = status_outcome(self, capi_wheelrail_get_patch(handle_of(self), int(k - 1, c_size_t), patch))
@@ -155,6 +159,84 @@ contains
       if (present(errmsg)) call set_errmsg(o, errmsg)
       call deliver(o, stat)
    end subroutine wheelrail_get_patch
+
+   ! Field CW_FIELD_* of patch k (1-based) into out(field_nx*field_ny or
+   ! longer), element (i, j) of the patch's field grid at i + (j-1)*field_nx.
+   subroutine wheelrail_get_patch_field(self, k, field, out, stat, errmsg)
+      class(cw_wheelrail_type), intent(in) :: self
+      integer, intent(in) :: k, field
+      real(c_double), intent(inout), contiguous :: out(:)
+      integer, intent(out), optional :: stat
+      character(len=:), allocatable, intent(out), optional :: errmsg
+      type(outcome) :: o
+      o = patch_index_checked(self, k)
+      if (o%status == CW_OK) o = status_outcome(self, capi_wheelrail_get_patch_field( &
+                                 handle_of(self), int(k - 1, c_size_t), int(field, c_int), out, &
+                                 size(out, kind=c_size_t)))
+      if (present(errmsg)) call set_errmsg(o, errmsg)
+      call deliver(o, stat)
+   end subroutine wheelrail_get_patch_field
+
+   ! CW_STATE_* per element of patch k, as get_patch_field.
+   subroutine wheelrail_get_patch_state(self, k, out, stat, errmsg)
+      class(cw_wheelrail_type), intent(in) :: self
+      integer, intent(in) :: k
+      integer(c_int), intent(inout), contiguous :: out(:)
+      integer, intent(out), optional :: stat
+      character(len=:), allocatable, intent(out), optional :: errmsg
+      type(outcome) :: o
+      o = patch_index_checked(self, k)
+      if (o%status == CW_OK) o = status_outcome(self, capi_wheelrail_get_patch_state( &
+                                 handle_of(self), int(k - 1, c_size_t), out, size(out, kind=c_size_t)))
+      if (present(errmsg)) call set_errmsg(o, errmsg)
+      call deliver(o, stat)
+   end subroutine wheelrail_get_patch_state
+
+   ! The wear of every patch of the last solve by the law in params, passes
+   ! times, on the rail's and the wheel's profile grids (each optional);
+   ! result sums the patches' wear per pass.
+   subroutine wheelrail_add_wear(self, params, passes, rail, wheel, result, stat, errmsg)
+      class(cw_wheelrail_type), intent(in) :: self
+      type(cw_wear_params), intent(in) :: params
+      real(c_double), intent(in) :: passes
+      class(cw_wear_profile_type), intent(in), optional :: rail, wheel
+      type(cw_wear_result), intent(inout), target, optional :: result
+      integer, intent(out), optional :: stat
+      character(len=:), allocatable, intent(out), optional :: errmsg
+      type(c_ptr) :: pr, pw, pres
+      integer(c_int) :: status
+      type(outcome) :: o
+      o = created(self)
+      pr = c_null_ptr
+      pw = c_null_ptr
+      pres = c_null_ptr
+      if (present(rail) .and. o%status == CW_OK) then
+         o = created(rail)
+         pr = handle_of(rail)
+      end if
+      if (present(wheel) .and. o%status == CW_OK) then
+         o = created(wheel)
+         pw = handle_of(wheel)
+      end if
+      if (present(result)) then
+         if (result%struct_size == 0) status = capi_wear_result_init(result)
+         pres = c_loc(result)
+      end if
+      if (o%status == CW_OK) o = status_outcome(self, capi_wheelrail_add_wear( &
+                                 handle_of(self), params, passes, pr, pw, pres))
+      if (present(errmsg)) call set_errmsg(o, errmsg)
+      call deliver(o, stat)
+   end subroutine wheelrail_add_wear
+
+   ! created(self) and k >= 1.
+   function patch_index_checked(self, k) result(o)
+      class(cw_wheelrail_type), intent(in) :: self
+      integer, intent(in) :: k
+      type(outcome) :: o
+      o = created(self)
+      if (o%status == CW_OK .and. k < 1) &
+         o = make_outcome(CW_ERR_INVALID_INPUT, 'k = '//trim(integer_text(k))//' must be >= 1')
+   end function patch_index_checked
 
    subroutine params_or_default(params, p)
       type(cw_wheelrail_params), intent(in), optional :: params

@@ -15,7 +15,7 @@
 #     cw_s* x, cw_s a struct of the header      -> type(cw_s) :: x
 #     cw_h* x / cw_h** x, cw_h an opaque handle -> type(c_ptr), value / intent(out)
 #     const                                     -> intent(in), else intent(inout)
-#     returned int / const char*                -> integer(c_int) / type(c_ptr)
+#     returned int / const char* / const cw_h*  -> integer(c_int) / type(c_ptr)
 #   and two lists below for what a prototype alone does not say. Anything
 #   else stops the build with the prototype named, so a new kind of argument
 #   is a decision, not a silent mis-binding.
@@ -32,7 +32,7 @@ set(nullable
   cw_solver_get_profile.y cw_solver_get_profile.w cw_solver_get_profile.parabola
   cw_batch_solve.statuses cw_wear_compute.result
   cw_wear_get_strips.y cw_wear_get_strips.width cw_wear_get_strips.depth
-  cw_wear_get_strips.parabola)
+  cw_wear_get_strips.parabola cw_wheelrail_add_wear.result)
 # Struct pointers that are arrays (count elements): bound as type(cw_s) :: x(*).
 set(struct_arrays cw_batch_solve.params cw_batch_solve.results cw_solver_get_patches.out)
 
@@ -360,6 +360,8 @@ foreach(proto IN LISTS prototypes)
     set(rdecl "integer(c_int) :: return_value")
   elseif(rtype MATCHES "^const char ?\\*$")
     set(rdecl "type(c_ptr) :: return_value ! const char*: static or owned by the handle")
+  elseif(rtype MATCHES "^const (cw_[a-z_]+) ?\\*$" AND CMAKE_MATCH_1 IN_LIST opaque)
+    set(rdecl "type(c_ptr) :: return_value ! ${CMAKE_MATCH_1}*: owned by the handle")
   else()
     message(FATAL_ERROR "${fname}: no Fortran binding rule for the return type '${rtype}'")
   endif()

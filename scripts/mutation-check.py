@@ -358,6 +358,35 @@ WHEELRAIL_MUTANTS = [
          new="    r.mn = t.Mz; // about the reference point",
          tests=WHEELRAIL),
 ]
+# A solved patch's fields, solver view and wear on the profiles
+# (capi/capi_wheelrail_patch.cpp, core/wheelrail/wheelrail_geometry.cpp),
+# and the fast model's settings (core/wheelrail/patch_contact.cpp).
+WHEELRAIL_PATCH = [
+    "test_wheelrail_patch_capi", "test_fortran_wheelrail", "python_test_wheelrail",
+    "example_rail_wear_hunting_exact", "example_rail_wear_hunting_fast", "test_wheelrail_forces",
+]
+WHEELRAIL_MUTANTS += [
+    dict(id="wheelrail-field-traction-sign", what="the rail's traction along x given with the wheel's sign",
+         file="capi/capi_wheelrail_patch.cpp",
+         old="    case CW_FIELD_SX: sign = -1.0; break;",
+         new="    case CW_FIELD_SX: break;",
+         tests=WHEELRAIL_PATCH),
+    dict(id="wheelrail-wear-strip-offset", what="the strips placed from the grid's first row, not the reference point",
+         file="capi/capi_wheelrail_patch.cpp",
+         old="            for (double& s : ps.s) s = -(s + p.y0); // the solver's y to the patch's s",
+         new="            for (double& s : ps.s) s = -s; // the solver's y to the patch's s",
+         tests=WHEELRAIL_PATCH),
+    dict(id="wheelrail-rail-axis-side", what="the rail's d y / d s without the left side's reversed s",
+         file="core/wheelrail/wheelrail_geometry.cpp",
+         old="        cp.rail_s_cos = sgn * ref.r.col(1).dot(rail_frame_.r.col(1));",
+         new="        cp.rail_s_cos = ref.r.col(1).dot(rail_frame_.r.col(1));",
+         tests=WHEELRAIL_PATCH),
+    dict(id="wheelrail-fast-model", what="the model setting ignored (always the exact model)",
+         file="core/wheelrail/patch_contact.cpp",
+         old="    in.model = settings_.model;",
+         new="    in.model = ModelKind::exact;",
+         tests=WHEELRAIL_PATCH),
+]
 MUTANTS += WHEELRAIL_MUTANTS
 # ------------------------------------------------------------ end wheel/rail
 

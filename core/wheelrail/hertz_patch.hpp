@@ -14,6 +14,8 @@ struct HertzPatchEstimate {
     double nu = 0.28; // [-] combined Poisson's ratio
 
     PatchForces operator()(const ContactPatch& p) const;
+    // As a PatchSolver (the patch's index is not needed).
+    PatchForces operator()(std::size_t, const ContactPatch& p) const { return (*this)(p); }
 };
 
 } // namespace creepwork::wheelrail

@@ -28,11 +28,13 @@ PatchContact::PatchContact(const PatchContactSettings& s) : settings_(s)
     check_setting("G", s.G, 1e3, 1e15);
     check_setting("nu", s.nu, 0.0, 0.5);
     check_setting("tolerance", s.tolerance, 0.0, 0.1);
+    if (s.model != ModelKind::exact && s.model != ModelKind::fastsim)
+        throw Error(ErrorKind::invalid_input, "wheel/rail contact: the model must be the exact model or FASTSIM");
 }
 
-Solver& PatchContact::solver_for(int nx, int ny, double dx, double dy)
+Solver& PatchContact::solver_for(std::size_t k, int nx, int ny, double dx, double dy)
 {
-    const Key key{nx, ny, dx, dy};
+    const Key key{k, nx, ny, dx, dy};
     auto it = solvers_.find(key);
     if (it == solvers_.end()) {
         GridSpec g;
@@ -59,7 +61,7 @@ std::pair<int, int> kept(int lo, int n, int f)
 
 } // namespace
 
-const PatchSolution& PatchContact::solve(const ContactPatch& p)
+const PatchSolution& PatchContact::solve(const ContactPatch& p, std::size_t k, bool forces_only)
 {
     const std::size_t n = static_cast<std::size_t>(p.nx) * static_cast<std::size_t>(p.ny);
     if (p.nx <= 0 || p.ny <= 0 || p.h.size() != n || !(p.dx > 0.0 && p.ds > 0.0))
@@ -85,7 +87,8 @@ const PatchSolution& PatchContact::solve(const ContactPatch& p)
     const double xi = -p.cksi, eta = p.ceta, phi = p.cphi;
 
     ContactInput in;
-    in.model = ModelKind::exact;
+    in.model = settings_.model;
+    in.normal_method = settings_.normal_method;
     in.gap = gap_.data();
     in.gap_len = gap_.size();
     in.normal_load = NormalLoad::approach;
@@ -100,8 +103,8 @@ const PatchSolution& PatchContact::solve(const ContactPatch& p)
     in.xi_x = xi - phi * y0;
     in.xi_y = eta + phi * x0;
     in.phi = phi;
-    Solver& s = solver_for(nx, ny, dx, dy);
-    const SolveTotals& t = s.solve(in, SolveMode::forces_only);
+    Solver& s = solver_for(k, nx, ny, dx, dy);
+    const SolveTotals& t = s.solve(in, forces_only ? SolveMode::forces_only : settings_.mode);
 
     PatchSolution& r = last_;
     r.fn = t.normal_force;
@@ -115,6 +118,13 @@ const PatchSolution& PatchContact::solve(const ContactPatch& p)
     r.n_slip = t.n_slip;
     r.coarsening = f;
     r.track = track_forces(p, {r.fn, r.fx, r.fs});
+    r.solver = &s;
+    r.nx = nx;
+    r.ny = ny;
+    r.x0 = x0;
+    r.y0 = y0;
+    r.dx = dx;
+    r.dy = dy;
     return r;
 }
 
@@ -130,8 +140,8 @@ void WheelRailContact::collect(int evaluations)
     solution_.evaluations = evaluations;
     solution_.patches.clear();
     solution_.total = {};
-    for (const ContactPatch& p : st.patches) {
-        const PatchSolution& s = contact_.solve(p);
+    for (std::size_t k = 0; k < st.patches.size(); ++k) {
+        const PatchSolution& s = contact_.solve(st.patches[k], k);
         solution_.patches.push_back(s);
         solution_.total.fx += s.track.fx;
         solution_.total.fy += s.track.fy;
@@ -151,18 +161,22 @@ const WheelRailSolution& WheelRailContact::solve_force(double fz, const Wheelset
                                                        const WheelsetVelocity& velocity,
                                                        const VerticalForceOptions& options)
 {
-    const PatchSolver solver = [this](const ContactPatch& p) {
-        const PatchSolution& s = contact_.solve(p);
+    const PatchSolver solver = [this](std::size_t k, const ContactPatch& p) {
+        const PatchSolution& s = contact_.solve(p, k, true);
         return PatchForces{s.fn, s.fx, s.fs};
     };
-    // The height of the Hertz estimate (geometry only) starts the balance
-    // near its solution, so that the exact solves stay near the final grid.
+    // The height of the Hertz estimate (geometry only) starts the exact
+    // balance near its solution, so that the exact solves stay near the
+    // final grid; the fast model costs about what the estimate does and
+    // starts from the position given.
     WheelsetPosition start = position;
-    try {
-        const HertzPatchEstimate hertz{contact_.settings().G, contact_.settings().nu};
-        start.z = solve_vertical_position(geometry_, fz, position, velocity, hertz, options).z;
-    } catch (const Error&) {
-        start.z = position.z; // the exact balance reports its own failure
+    if (contact_.settings().model == ModelKind::exact) {
+        try {
+            const HertzPatchEstimate hertz{contact_.settings().G, contact_.settings().nu};
+            start.z = solve_vertical_position(geometry_, fz, position, velocity, hertz, options).z;
+        } catch (const Error&) {
+            start.z = position.z; // the exact balance reports its own failure
+        }
     }
     const VerticalForceSolution v = solve_vertical_position(geometry_, fz, start, velocity, solver, options);
     // the geometry is left at the solution; its patches solve again from

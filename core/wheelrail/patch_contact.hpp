@@ -1,6 +1,8 @@
-// The contact problem of each wheel/rail patch solved by Kalker's exact
-// theory on its undeformed distance grid (exact/gap_model.hpp through
-// creepwork::Solver on a gap grid), as CONTACT's module 1 solves it: the
+// The contact problem of each wheel/rail patch solved on its undeformed
+// distance grid through creepwork::Solver on a gap grid: by Kalker's exact
+// theory (exact/gap_model.hpp) as CONTACT's module 1 solves it, or by the
+// fast model, FASTSIM with the semi-Hertzian normal problem
+// (nonhertz/gap_fastsim_model.hpp). The
 // approach of a patch is its penetration at the wheelset's height (the
 // grid's datum, approach 0), the creepages are the patch's own. Results are
 // in CONTACT's module-1 conventions (forces on the rail, patch frame; MN
@@ -10,11 +12,13 @@
 // A grid longer than the exact model's limit (256 elements per direction)
 // is solved on every second (fourth, ...) element.
 //
-// One solver per grid shape (nx, ny, dx, ds) is made on first use and kept:
-// its grid has element (0, 0) at the origin, and the creepages are shifted
-// so that the rigid slip is that about the patch's reference point
-// (xi - phi y, eta + phi x is affine in x, y), which lets a patch whose
-// grid moves by whole elements reuse the solver and its warm start.
+// One solver per patch index and grid shape (nx, ny, dx, ds) is made on
+// first use and kept: its grid has element (0, 0) at the origin, and the
+// creepages are shifted so that the rigid slip is that about the patch's
+// reference point (xi - phi y, eta + phi x is affine in x, y), which lets a
+// patch whose grid moves by whole elements reuse the solver and its warm
+// start. Per index, so that after a position every patch's solver holds
+// that patch's fields (PatchSolution::solver).
 #pragma once
 
 #include <map>
@@ -33,6 +37,9 @@ struct PatchContactSettings {
     double G = 82e9;     // [Pa] combined shear modulus
     double nu = 0.28;    // [-] combined Poisson's ratio
     double tolerance = 0.0; // relative tolerance of the exact solver (0: its default)
+    ModelKind model = ModelKind::exact;          // exact or fastsim
+    NormalMethod normal_method = NormalMethod::exact; // the normal problem's method
+    SolveMode mode = SolveMode::full;            // full: every field and the work maps
 };
 
 // One patch's solution, CONTACT's module-1 conventions (SI).
@@ -44,6 +51,12 @@ struct PatchSolution {
     int n_contact = 0, n_adhesion = 0, n_slip = 0;
     int coarsening = 1;            // every coarsening-th element solved (1: the whole grid)
     TrackForces track;             // [N] on the rail, track coordinates
+    // The solver holding this patch's fields, in creepwork's frame (x, y =
+    // -s, forces on the wheel; doc/wheelrail.md): its element (i, j) is
+    // centred at (x0 + i dx, y0 + j dy) from the reference point.
+    const Solver* solver = nullptr;
+    int nx = 0, ny = 0;
+    double x0 = 0, y0 = 0, dx = 0, dy = 0;
 };
 
 class PatchContact {
@@ -51,16 +64,18 @@ public:
     // Throws Error(invalid_input) naming a bad setting.
     explicit PatchContact(const PatchContactSettings& settings);
 
-    // The patch at the wheelset height its grid was made for. Throws Error
-    // naming a bad input or Error(not_converged).
-    const PatchSolution& solve(const ContactPatch& patch);
+    // The patch at the wheelset height its grid was made for; k is its
+    // index in the position's patches. Solved in settings().mode, or forces
+    // only when forces_only (the force balance's trial heights). Throws
+    // Error naming a bad input or Error(not_converged).
+    const PatchSolution& solve(const ContactPatch& patch, std::size_t k = 0, bool forces_only = false);
     const PatchContactSettings& settings() const { return settings_; }
     // Solvers made so far (one per grid shape).
     std::size_t solvers() const { return solvers_.size(); }
 
 private:
-    using Key = std::tuple<int, int, double, double>;
-    Solver& solver_for(int nx, int ny, double dx, double dy);
+    using Key = std::tuple<std::size_t, int, int, double, double>;
+    Solver& solver_for(std::size_t k, int nx, int ny, double dx, double dy);
 
     PatchContactSettings settings_;
     std::map<Key, std::unique_ptr<Solver>> solvers_;

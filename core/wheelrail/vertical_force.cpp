@@ -24,8 +24,9 @@ double vertical_force(WheelRailGeometry& g, const WheelsetPosition& pos, const W
     const WheelRailState& st = g.evaluate(pos, vel);
     gap_min = st.gap_min;
     double fz = 0.0;
-    for (const ContactPatch& p : st.patches) {
-        const PatchForces f = solver(p);
+    for (std::size_t k = 0; k < st.patches.size(); ++k) {
+        const ContactPatch& p = st.patches[k];
+        const PatchForces f = solver(k, p);
         if (!std::isfinite(f.fn) || !std::isfinite(f.fx) || !std::isfinite(f.fs))
             throw Error(ErrorKind::numeric_failure, "wheel/rail: the patch solver returned a force that is not finite");
         fz += track_forces(p, f).fz;

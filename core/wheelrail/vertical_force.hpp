@@ -22,7 +22,8 @@ struct PatchForces {
     double fs = 0.0; // [N] lateral in the tangent plane, on the rail
 };
 
-using PatchSolver = std::function<PatchForces(const ContactPatch&)>;
+// Solves patch k of the geometry's current state (k: its index there).
+using PatchSolver = std::function<PatchForces(std::size_t k, const ContactPatch&)>;
 
 struct TrackForces {
     double fx = 0.0, fy = 0.0, fz = 0.0; // [N] on the rail, track coordinates

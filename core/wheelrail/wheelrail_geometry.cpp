@@ -122,6 +122,12 @@ const WheelRailState& WheelRailGeometry::evaluate(const WheelsetPosition& pos, c
         if (!wheel_.visible_s_at_y(in_wheel.o(1), cp.s_w))
             cp.s_w = in_wheel.o(1) > wheel_.y_max() ? wheel_.s_first() : wheel_.s_last();
         cp.wheel_radius = wheelset_.nominal_radius + wheel_.at(cp.s_w).z;
+        // the grid's s is the patch frame's (ref's second axis), reversed on
+        // the left side; the profiles' y axes are their frames' second axes
+        cp.rail_profile_y = in_rail.o(1);
+        cp.rail_s_cos = sgn * ref.r.col(1).dot(rail_frame_.r.col(1));
+        cp.wheel_profile_y = in_wheel.o(1);
+        cp.wheel_s_cos = sgn * ref.r.col(1).dot(wheel.r.col(1));
         const Vec3 in_ws = ws.to_local(ref.o);
         cp.x_ws = in_ws(0);
         cp.y_ws = sgn * in_ws(1);

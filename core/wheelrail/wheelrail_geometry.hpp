@@ -32,6 +32,11 @@ struct ContactPatch {
     double y_r = 0, z_r = 0, s_r = 0;    // rail profile coordinates, arc length [m]
     double x_w = 0, y_w = 0, z_w = 0, s_w = 0; // wheel profile coordinates [m]
     double x_ws = 0, y_ws = 0, z_ws = 0; // wheelset coordinates [m]
+    // the reference point on each profile as its points are given (y towards
+    // the field side on both sides, unlike y_r, y_w), and how that y changes
+    // along the patch's s axis (d y / d s): where wear lands on the profiles
+    double rail_profile_y = 0, rail_s_cos = 1;   // [m], [-]
+    double wheel_profile_y = 0, wheel_s_cos = 1; // [m], [-]
     double rolling_radius = 0;           // depth of the wheel's contact point below the axle [m]
     double wheel_radius = 0;             // the wheel's radius at y_w: nominal + profile height [m]
     // creepages at the reference point, rail relative to wheel

@@ -1,6 +1,7 @@
 """One wheel on one rail from the profiles to the forces (cw_wheelrail): the
 contact patches of a wheelset position, the wheelset height for a vertical
-force, and every patch solved by Kalker's exact theory. CONTACT's module-1
+force, every patch solved by Kalker's exact theory or the fast model, each
+patch's fields and its wear on the profiles. CONTACT's module-1
 conventions (track x along the track, y to the right, z down; creepages of
 the rail relative to the wheel; forces on the rail), SI units."""
 
@@ -8,9 +9,14 @@ import ctypes
 import os
 from typing import Any, Dict, List, Optional
 
+import numpy as np
+
 from . import _errors
 from ._handle import Handle
-from ._library import CONSTANTS, address, defaults, lib
+from ._library import CONSTANTS, DTYPES, address, defaults, lib
+from ._params import WEAR_PARAMS
+from ._solver import FIELDS
+from ._wear import WearProfile, _totals
 
 _MESSAGE_LEN = 1024
 
@@ -101,3 +107,48 @@ class WheelRail(Handle):
             self._check(lib.cw_wheelrail_get_patch(self._handle, k, address(p)))
             patches.append(_as_dict(p))
         return _as_dict(totals), patches
+
+    def _patch(self, k: int):
+        p = defaults("cw_wheelrail_patch").copy()
+        self._check(lib.cw_wheelrail_get_patch(self._live(), k, address(p)))
+        return p
+
+    def patch_field(self, k: int, name: str) -> np.ndarray:
+        """Field `name` (creepwork.FIELDS: pz, px, py, sx, sy, mz, x, y, area,
+        work_paper, work_consistent) of patch k (from 0) of the last solve as
+        a (field_ny, field_nx) array over the patch's s and x, in the
+        wheel/rail conventions: x, y are the element's x and s from the
+        reference point; px, py the traction on the rail along x and s; sx,
+        sy the micro-slip of the rail relative to the wheel; mz the moment
+        about n through the reference point."""
+        if name not in FIELDS:
+            raise _errors.BY_STATUS[CONSTANTS["CW_ERR_UNKNOWN_OPTION"]](
+                "field %r is not one of %s" % (name, ", ".join(FIELDS)))
+        p = self._patch(k)
+        out = np.empty((int(p["field_ny"]), int(p["field_nx"])))
+        self._check(lib.cw_wheelrail_get_patch_field(self._handle, k, FIELDS[name], address(out),
+                                                     out.size))
+        return out
+
+    def patch_state(self, k: int) -> np.ndarray:
+        """Element states of patch k, int (field_ny, field_nx): 0 exterior,
+        1 adhesion, 2 slip."""
+        p = self._patch(k)
+        out = np.empty((int(p["field_ny"]), int(p["field_nx"])), np.intc)
+        self._check(lib.cw_wheelrail_get_patch_state(self._handle, k, address(out), out.size))
+        return out
+
+    def add_wear(self, passes: float, rail: Optional[WearProfile] = None,
+                 wheel: Optional[WearProfile] = None, **law: Any) -> Dict[str, Any]:
+        """Adds the wear of every patch of the last solve, passes times, to
+        the rail's and the wheel's WearProfile (nodes: the profile's y as
+        its points are given, towards the field side on both sides), by the
+        law the keywords give (the fields of cw_wear_params). Returns the
+        patches' wear per pass summed (the fields of cw_wear_result)."""
+        rec = WEAR_PARAMS.record(law, "add_wear")
+        res = np.zeros((), DTYPES["cw_wear_result"])
+        lib.cw_wear_result_init(address(res))
+        handles = [None if p is None else p._live() for p in (rail, wheel)]
+        self._check(lib.cw_wheelrail_add_wear(self._live(), address(rec), float(passes), handles[0],
+                                              handles[1], address(res)))
+        return _totals(res)

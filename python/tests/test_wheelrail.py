@@ -2,12 +2,15 @@
 (case A-2.2, right wheel at y_ws = 3 mm, 10 kN: FN 9774 N, FX -417.5 N,
 FS -2902 N, p_max 713.2 N/mm^2, z_ws 0.1143 mm; CONTACT's
 examples/mbench_a22_right.ref_out): forces within 1 % of the load, p_max
-within 3 %; the height prescribed gives the same forces; errors name the
-input; implausible units warn."""
+within 3 %; the height prescribed gives the same forces; the patch's fields
+add up to its forces (their definition) and its wear on a rail grid to
+passes x the volume per distance; the fast model is within 3 % of mu Fn of
+the exact one; errors name the input; implausible units warn."""
 
 import os
 import warnings
 
+import numpy as np
 import pytest
 
 import creepwork
@@ -55,3 +58,37 @@ def test_implausible_units_warn():
             w.solve(Fz=10.0, **MOTION)
     with pytest.warns(creepwork.UnitWarning, match="G = 82000 Pa"):
         creepwork.WheelRail(RAIL, WHEEL, G=82000.0).close()
+
+
+def test_patch_fields_and_wear():
+    with creepwork.WheelRail(RAIL, WHEEL) as w:
+        _, patches = w.solve(Fz=1e4, **MOTION)
+        p = patches[0]
+        area, pz, px = (w.patch_field(0, n) for n in ("area", "pz", "px"))
+        assert area.shape == (p["field_ny"], p["field_nx"])
+        assert (area * pz).sum() == pytest.approx(p["Fn"], rel=1e-12)
+        assert (area * px).sum() == pytest.approx(p["Fx"], rel=1e-10)
+        assert (w.patch_state(0) != 0).sum() == p["n_contact"]
+        s = w.patch_field(0, "y")
+        assert s[0, 0] == pytest.approx(p["field_s0"], abs=1e-15)
+        rail = creepwork.WearProfile(np.linspace(-0.04, 0.04, 801))
+        worn = w.add_wear(1e3, rail=rail, law="usfd")
+        assert rail.totals()["volume"] == pytest.approx(1e3 * worn["volume_per_distance"], rel=1e-12)
+        depth = rail.depth("height")
+        centre = (depth * np.linspace(-0.04, 0.04, 801)).sum() / depth.sum()
+        # the wear lies on the rail around the contact point (within the patch's half width)
+        assert centre == pytest.approx(p["rail_profile_y"], abs=3e-3)
+        with pytest.raises(creepwork.InvalidInputError, match="k = 1"):
+            w.patch_field(1, "pz")
+        with pytest.raises(creepwork.UnknownOptionError, match="'pressure'"):
+            w.patch_field(0, "pressure")
+
+
+def test_fast_model_follows_exact():
+    with creepwork.WheelRail(RAIL, WHEEL) as e, creepwork.WheelRail(
+            RAIL, WHEEL, model=creepwork.CW_MODEL_FASTSIM,
+            normal_method=creepwork.CW_NORMAL_SEMI_HERTZ) as f:
+        pe = e.solve(Fz=1e4, **MOTION)[1][0]
+        pf = f.solve(Fz=1e4, **MOTION)[1][0]
+        for name in ("Fn", "Fx", "Fs"):
+            assert pf[name] == pytest.approx(pe[name], abs=0.03 * 0.3 * pe["Fn"])

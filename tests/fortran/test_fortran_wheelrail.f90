@@ -3,8 +3,10 @@
 ! argument), right wheel at y_ws = 3 mm, 10 kN: CONTACT's module 1 prints FN
 ! 9774 N, FX -417.5 N, FS -2902 N, p_max 713.2 N/mm^2, z_ws 0.1143 mm
 ! (examples/mbench_a22_right.ref_out); forces within 1 % of the load, p_max
-! within 3 %. Then the height prescribed gives the same forces, and errors
-! name their input through stat and errmsg.
+! within 3 %. The patch's pressure adds up to FN (its definition), and its
+! wear on a rail grid to passes x the wear's volume per distance. Then the
+! height prescribed gives the same forces, and errors name their input
+! through stat and errmsg.
 program test_fortran_wheelrail
    use, intrinsic :: iso_c_binding, only: c_double
    use creepwork
@@ -17,6 +19,12 @@ program test_fortran_wheelrail
    type(cw_wheelrail_motion) :: m
    type(cw_wheelrail_totals) :: t, h
    type(cw_wheelrail_patch) :: pa
+   type(cw_wear_profile_type) :: rail
+   type(cw_wear_params) :: law
+   type(cw_wear_result) :: worn
+   type(cw_wear_profile_totals) :: wt
+   real(c_double), allocatable :: area(:), pz(:), nodes(:)
+   integer :: i
    character(len=:), allocatable :: errmsg
    integer :: stat
 
@@ -41,6 +49,26 @@ program test_fortran_wheelrail
    call check_close(pa%Fs, -2902.0_c_double, 0.0_c_double, 100.0_c_double, 'Fs')
    call check_close(pa%p_max, 713.2e6_c_double, 0.03_c_double, 0.0_c_double, 'p_max')
 
+   allocate (area(pa%field_nx*pa%field_ny), pz(pa%field_nx*pa%field_ny))
+   call w%get_patch_field(1, CW_FIELD_AREA, area)
+   call w%get_patch_field(1, CW_FIELD_PZ, pz)
+   call check_close(sum(area*pz), pa%Fn, 1e-12_c_double, 0.0_c_double, 'pressure adds up to Fn')
+   allocate (nodes(801))
+   nodes = [(-0.04_c_double + 1e-4_c_double*i, i = 0, 800)]
+   call rail%create(nodes)
+   call cw_wear_params_init(law)
+   call w%add_wear(law, 1e3_c_double, rail=rail, result=worn)
+   call rail%get_totals(wt)
+   call check_close(wt%volume, 1e3_c_double*worn%volume_per_distance, 1e-12_c_double, 0.0_c_double, &
+                    'rail wear volume')
+   call check_true(worn%volume_per_distance > 0, 'the patch wears')
+   call w%get_patch_field(0, CW_FIELD_PZ, pz, stat=stat, errmsg=errmsg)
+   call check_int(stat, int(CW_ERR_INVALID_INPUT), 'patch 0: stat')
+   call check_true(index(errmsg, 'k = 0') > 0, 'patch 0 named: '//errmsg)
+   call w%get_patch_field(1, CW_FIELD_PZ, pz(1:3), stat=stat)
+   call check_int(stat, int(CW_ERR_BUFFER_TOO_SMALL), 'short buffer: stat')
+   call rail%destroy()
+
    m%z = t%z
    call w%solve(m, h)
    call check_int(int(h%evaluations), 1, 'height prescribed: one evaluation')
@@ -59,6 +87,6 @@ program test_fortran_wheelrail
    call check_true(index(errmsg, 'no/such/rail.prr') > 0, 'file named: '//errmsg)
    call check_true(.not. w%is_created(), 'not created after an error')
    ! A main program's allocatables are never freed for it (LeakSanitizer).
-   deallocate (errmsg)
+   deallocate (errmsg, area, pz, nodes)
    call test_summary('test_fortran_wheelrail')
 end program test_fortran_wheelrail

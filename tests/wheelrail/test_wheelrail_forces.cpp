@@ -1,11 +1,13 @@
 // The wheel/rail chain up to the forces: every patch solved by the exact
 // model on its undeformed distance grid, against CONTACT's module 1 on the
 // Manchester benchmark (case, CONTACT's shipped results,
-// ../shared/reference/nonhertz/mbench_a22.csv, 4 printed digits), and the
-// solver's origin shift against a solver on the patch's own grid.
+// ../shared/reference/nonhertz/mbench_a22.csv, 4 printed digits), the fast
+// model against the exact one on the same positions, and the solver's
+// origin shift against a solver on the patch's own grid.
 //
-//   test_wheelrail_forces [TEST]     the tests (cmocka filter)
-//   test_wheelrail_forces --markdown the table of doc/validation/manchester.md
+//   test_wheelrail_forces [TEST]          the tests (cmocka filter)
+//   test_wheelrail_forces --markdown      the exact model's table of doc/validation/manchester.md
+//   test_wheelrail_forces --markdown-fast the fast model's table there
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -37,7 +39,8 @@ wr::PatchContactSettings benchmark_settings(const cwtest::Row& r)
 // (right wheel, y_ws = 8 mm, flange contact at -54 deg): PatchContact's
 // shifted creepages on a grid at the origin against a solver on the grid
 // at the patch's own position with the creepages as they are. One
-// discrete problem, two paths: equal to the solver's tolerance.
+// discrete problem, two paths: equal to the solver's tolerance, for the
+// exact model and for the fast one (FASTSIM, semi-Hertzian normal problem).
 void test_origin_shift(void**)
 {
     const cwtest::Benchmark b;
@@ -47,41 +50,48 @@ void test_origin_shift(void**)
         wr::WheelRailGeometry g = b.geometry(r);
         const wr::ContactPatch& p = g.evaluate(cwtest::position_of(r), cwtest::velocity_of(r)).patches.at(0);
         assert_true(std::abs(p.cphi) > 1.0 && std::abs(p.x0) > 1e-3);
-        wr::PatchContactSettings set;
-        set.tolerance = 1e-10;
-        wr::PatchContact pc(set);
-        const wr::PatchSolution s = pc.solve(p);
+        for (const bool fast : {false, true}) {
+            wr::PatchContactSettings set;
+            set.tolerance = 1e-10;
+            if (fast) {
+                set.model = cw::ModelKind::fastsim;
+                set.normal_method = cw::NormalMethod::semi_hertz;
+            }
+            wr::PatchContact pc(set);
+            const wr::PatchSolution s = pc.solve(p);
 
-        cw::GridSpec grid;
-        grid.kind = cw::GridKind::gap;
-        grid.nx = p.nx;
-        grid.ny = p.ny;
-        grid.dx = p.dx;
-        grid.dy = p.ds;
-        grid.x0 = p.x0;
-        grid.y0 = -(p.s0 + (p.ny - 1) * p.ds);
-        std::vector<double> h(p.h.size());
-        for (int j = 0; j < p.ny; ++j)
-            for (int i = 0; i < p.nx; ++i) h[i + p.nx * j] = p.h[i + p.nx * (p.ny - 1 - j)];
-        cw::ContactInput in;
-        in.model = cw::ModelKind::exact;
-        in.gap = h.data();
-        in.gap_len = h.size();
-        in.normal_load = cw::NormalLoad::approach;
-        in.mu = set.mu;
-        in.G = set.G;
-        in.nu = set.nu;
-        in.tolerance = 1e-10;
-        in.xi_x = -p.cksi;
-        in.xi_y = p.ceta;
-        in.phi = p.cphi;
-        cw::Solver direct(grid);
-        const cw::SolveTotals& t = direct.solve(in, cw::SolveMode::forces_only);
-        assert_close(s.fn, t.normal_force, 1e-9, 0);
-        assert_close(s.fx, -t.Fx, 0, 1e-6 * s.fn);
-        assert_close(s.fs, t.Fy, 0, 1e-6 * s.fn);
-        assert_close(s.mn, t.Mz, 0, 1e-6 * s.fn * 1e-3);
-        assert_int_equal(s.n_slip, t.n_slip);
+            cw::GridSpec grid;
+            grid.kind = cw::GridKind::gap;
+            grid.nx = p.nx;
+            grid.ny = p.ny;
+            grid.dx = p.dx;
+            grid.dy = p.ds;
+            grid.x0 = p.x0;
+            grid.y0 = -(p.s0 + (p.ny - 1) * p.ds);
+            std::vector<double> h(p.h.size());
+            for (int j = 0; j < p.ny; ++j)
+                for (int i = 0; i < p.nx; ++i) h[i + p.nx * j] = p.h[i + p.nx * (p.ny - 1 - j)];
+            cw::ContactInput in;
+            in.model = set.model;
+            in.normal_method = set.normal_method;
+            in.gap = h.data();
+            in.gap_len = h.size();
+            in.normal_load = cw::NormalLoad::approach;
+            in.mu = set.mu;
+            in.G = set.G;
+            in.nu = set.nu;
+            in.tolerance = 1e-10;
+            in.xi_x = -p.cksi;
+            in.xi_y = p.ceta;
+            in.phi = p.cphi;
+            cw::Solver direct(grid);
+            const cw::SolveTotals& t = direct.solve(in, cw::SolveMode::forces_only);
+            assert_close(s.fn, t.normal_force, 1e-9, 0);
+            assert_close(s.fx, -t.Fx, 0, 1e-6 * s.fn);
+            assert_close(s.fs, t.Fy, 0, 1e-6 * s.fn);
+            assert_close(s.mn, t.Mz, 0, 1e-6 * s.fn * 1e-3);
+            assert_int_equal(s.n_slip, t.n_slip);
+        }
         return;
     }
     fail_msg("no row at y_ws = 8 mm");
@@ -106,13 +116,19 @@ struct Position {
 // Every position of case A-2.2 (21 lateral shifts, both wheels), the
 // wheelset height found for CONTACT's 10 kN per wheel, the positions of
 // each wheel one after the other.
-std::vector<Position> solve_benchmark()
+std::vector<Position> solve_benchmark(bool fast = false)
 {
     const cwtest::Benchmark b;
     const auto rows = cwtest::read_rows(cwtest::shared_path_nonhertz("mbench_a22.csv"));
     if (rows.size() != 42) throw std::runtime_error("mbench_a22.csv: 42 rows expected");
-    wr::WheelRailContact right(b.geometry(wr::Side::right), benchmark_settings(rows.at(0)));
-    wr::WheelRailContact left(b.geometry(wr::Side::left), benchmark_settings(rows.at(0)));
+    wr::PatchContactSettings set = benchmark_settings(rows.at(0));
+    set.mode = cw::SolveMode::forces_only;
+    if (fast) {
+        set.model = cw::ModelKind::fastsim;
+        set.normal_method = cw::NormalMethod::semi_hertz;
+    }
+    wr::WheelRailContact right(b.geometry(wr::Side::right), set);
+    wr::WheelRailContact left(b.geometry(wr::Side::left), set);
     std::vector<Position> out;
     for (const cwtest::Row& r : rows) {
         wr::WheelRailContact& c = r.text("wheel") == "right" ? right : left;
@@ -187,6 +203,87 @@ int print_markdown()
     return 0;
 }
 
+// The fast model against the exact one, position by position: the
+// differences of the fast model's patch from the exact model's (forces in
+// per cent of mu Fz, the fast method's yardstick; p_max and the number of
+// contact elements relatively). Worst over the 42 positions and over the
+// 41 without the two-lobe contact.
+struct FastComparison {
+    std::vector<Position> exact, fast;
+    double worst[5] = {0, 0, 0, 0, 0}, worst_single[5] = {0, 0, 0, 0, 0}; // fn fx fs p_max area
+    FastComparison() : exact(solve_benchmark(false)), fast(solve_benchmark(true))
+    {
+        for (std::size_t k = 0; k < exact.size(); ++k) {
+            const double d[5] = {std::abs(dfn(k)), std::abs(dfx(k)), std::abs(dfs(k)), std::abs(dp(k)),
+                                 std::abs(darea(k))};
+            for (int m = 0; m < 5; ++m) {
+                worst[m] = std::max(worst[m], d[m]);
+                if (!exact[k].two_lobes()) worst_single[m] = std::max(worst_single[m], d[m]);
+            }
+        }
+    }
+    const wr::PatchSolution& e(std::size_t k) const { return exact[k].patch(); }
+    const wr::PatchSolution& f(std::size_t k) const { return fast[k].patch(); }
+    double mu_fz(std::size_t k) const { return exact[k].ref.num("mu") * exact[k].ref.num("Fz_N"); }
+    double dfn(std::size_t k) const { return (f(k).fn - e(k).fn) / mu_fz(k); }
+    double dfx(std::size_t k) const { return (f(k).fx - e(k).fx) / mu_fz(k); }
+    double dfs(std::size_t k) const { return (f(k).fs - e(k).fs) / mu_fz(k); }
+    double dp(std::size_t k) const { return f(k).p_max / e(k).p_max - 1.0; }
+    double darea(std::size_t k) const { return static_cast<double>(f(k).n_contact) / e(k).n_contact - 1.0; }
+};
+
+// The fast model against the exact one (doc/validation/manchester.md,
+// "The fast model"). The yardstick of a fast method is forces within 3 % of
+// mu Fz and the contact area within 10 %: met on the tread contacts of
+// moderate spin -- right wheel 1.0-4.5 mm, left wheel 1.5-10 mm -- and
+// asserted there. Elsewhere the page states the misses (spin at 0-0.5 mm,
+// the flange contacts of the right wheel from 6.5 mm, the two-lobe contact
+// at 5 mm): there the bounds asserted are the page's worst values, rounded
+// up (forces 13 %, p_max 13 %, contact elements 31 %), so that a change
+// for the worse fails.
+void test_fast_model(void**)
+{
+    const FastComparison c;
+    int tread = 0;
+    for (std::size_t k = 0; k < c.exact.size(); ++k) {
+        assert_int_equal(c.fast[k].sol.patches.size(), c.exact[k].sol.patches.size());
+        assert_close(c.fast[k].sol.total.fz, c.exact[k].ref.num("Fz_N"), 1e-6, 0);
+        const double y = c.exact[k].ref.num("y_ws_mm");
+        const bool right = c.exact[k].ref.text("wheel") == "right";
+        if ((right && y >= 1.0 && y <= 4.5) || (!right && y >= 1.5)) {
+            ++tread;
+            assert_true(std::abs(c.dfx(k)) < 0.03 && std::abs(c.dfs(k)) < 0.03 && std::abs(c.dfn(k)) < 0.03);
+            assert_true(std::abs(c.darea(k)) < 0.10);
+        }
+    }
+    assert_int_equal(tread, 8 + 18);
+    assert_true(c.worst[0] < 0.05 && c.worst[1] < 0.13 && c.worst[2] < 0.13);
+    assert_true(c.worst[3] < 0.13 && c.worst[4] < 0.31);
+}
+
+// The fast model's table of doc/validation/manchester.md.
+int print_markdown_fast()
+{
+    const FastComparison c;
+    std::printf("| y_ws [mm] | wheel | Fn [N] | dFn | Fx [N] | dFx | Fs [N] | dFs | p_max [MPa] | dp_max | contact "
+                "elements | exact |\n");
+    std::printf("|---:|:---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
+    for (std::size_t k = 0; k < c.exact.size(); ++k) {
+        const wr::PatchSolution& f = c.f(k);
+        std::printf("| %.1f | %s | %.0f | %.2f %% | %.1f | %.2f %% | %.0f | %.2f %% | %.1f | %.1f %% | %d | %d |\n",
+                    c.exact[k].ref.num("y_ws_mm"), c.exact[k].ref.text("wheel").c_str(), f.fn, 100 * c.dfn(k), f.fx,
+                    100 * c.dfx(k), f.fs, 100 * c.dfs(k), 1e-6 * f.p_max, 100 * c.dp(k), f.n_contact,
+                    c.e(k).n_contact);
+    }
+    std::printf("\nWorst differences from the exact model: all 42 positions: Fn %.2f %%, Fx %.2f %%, Fs %.2f %% of "
+                "mu Fz, p_max %.1f %%, contact elements %.1f %%; without the two-lobe contact (right wheel, 5 mm): "
+                "Fn %.2f %%, Fx %.2f %%, Fs %.2f %%, p_max %.1f %%, contact elements %.1f %%.\n",
+                100 * c.worst[0], 100 * c.worst[1], 100 * c.worst[2], 100 * c.worst[3], 100 * c.worst[4],
+                100 * c.worst_single[0], 100 * c.worst_single[1], 100 * c.worst_single[2], 100 * c.worst_single[3],
+                100 * c.worst_single[4]);
+    return 0;
+}
+
 // A bad setting is an error naming it.
 void test_errors(void**)
 {
@@ -211,9 +308,11 @@ void test_errors(void**)
 int main(int argc, char** argv)
 {
     if (argc > 1 && std::string(argv[1]) == "--markdown") return print_markdown();
+    if (argc > 1 && std::string(argv[1]) == "--markdown-fast") return print_markdown_fast();
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_origin_shift),
         cmocka_unit_test(test_benchmark_forces),
+        cmocka_unit_test(test_fast_model),
         cmocka_unit_test(test_errors),
     };
     return cw_run_tests(tests, argc > 1 ? argv[1] : nullptr);

@@ -70,7 +70,7 @@ void test_spring_solve(void**)
     const Cylinder cyl(0.46, 0.3);
     wr::WheelRailGeometry g = cyl.geometry();
     const double k = 4e8; // [N/m]
-    const wr::PatchSolver spring = [&](const wr::ContactPatch& p) {
+    const wr::PatchSolver spring = [&](std::size_t, const wr::ContactPatch& p) {
         wr::PatchForces f;
         f.fn = k * p.approach;
         return f;
@@ -132,7 +132,7 @@ void test_benchmark_heights(void**)
         const double z_contact = p.z;
         const wr::ContactPatch& cp = g.evaluate(p, cwtest::velocity_of(r)).patches.at(0);
         const double pen = cp.approach, ratio = hertz(cp).fn / r.num("fn");
-        const wr::PatchSolver balance = [&](const wr::ContactPatch& q) {
+        const wr::PatchSolver balance = [&](std::size_t, const wr::ContactPatch& q) {
             wr::PatchForces f = hertz(q);
             f.fx = r.num("fx");
             f.fs = r.num("fs");
@@ -168,7 +168,7 @@ void test_errors(void**)
     assert_true(threw);
     threw = false;
     try { // a solver that never pushes back
-        wr::solve_vertical_position(g, 1e4, {}, {}, [](const wr::ContactPatch&) { return wr::PatchForces{}; });
+        wr::solve_vertical_position(g, 1e4, {}, {}, [](std::size_t, const wr::ContactPatch&) { return wr::PatchForces{}; });
     } catch (const creepwork::Error& e) {
         threw = e.kind() == creepwork::ErrorKind::not_converged || e.kind() == creepwork::ErrorKind::invalid_input;
     }

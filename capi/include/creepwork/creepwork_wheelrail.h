@@ -10,8 +10,11 @@
 
 /* One wheel on one rail, from the profiles to the forces (doc/wheelrail.md):
  * the contact search, per contact patch its reference point, undeformed
- * distance grid and creepages, and Kalker's exact theory on every patch's
- * grid; with the vertical force prescribed, the wheelset height is found.
+ * distance grid and creepages, and the contact problem on every patch's
+ * grid -- Kalker's exact theory, or the fast model (FASTSIM with the
+ * semi-Hertzian normal problem); with the vertical force prescribed, the
+ * wheelset height is found. Every patch's fields and work maps, and its
+ * wear on the rail and wheel profiles, follow from the solution.
  * Conventions are CONTACT's module-1 ones in SI units: track coordinates x
  * along the track, y to the right seen along x, z down; patch frame x, s
  * (lateral, in the tangent plane), n (normal, into the rail); creepages of
@@ -49,6 +52,11 @@ typedef struct cw_wheelrail_params {
     double profile_unit;         /* [m] per length unit of the profiles; 0: a file's own
                                     (SIMPACK: its units; MiniProf, tables: mm), metres
                                     for cw_wheelrail_create_points */
+    int model;                   /* CW_MODEL_EXACT (default) or CW_MODEL_FASTSIM */
+    int normal_method;           /* CW_NORMAL_EXACT (default) or CW_NORMAL_SEMI_HERTZ; the
+                                    fast model is CW_MODEL_FASTSIM with CW_NORMAL_SEMI_HERTZ */
+    int solve_mode;              /* CW_SOLVE_FULL (default: every field and the work maps
+                                    per patch) or CW_SOLVE_FORCES */
 } cw_wheelrail_params;
 
 /* The wheelset's position (CONTACT's Z_WS etc.) and velocity. */
@@ -91,6 +99,17 @@ typedef struct cw_wheelrail_patch {
     double rolling_radius;       /* [m] depth of the wheel point below the axle */
     int n_contact, n_adhesion, n_slip; /* elements */
     int nx, ny;                  /* the patch's grid */
+    /* The grid of the fields (cw_wheelrail_get_patch_field): element (i, j) at
+     * x = field_x0 + i field_dx, s = field_s0 + j field_ds from the reference
+     * point; the patch's grid, or every 2nd (4th ...) element of a grid longer
+     * than 256 elements. */
+    int field_nx, field_ny;
+    double field_x0, field_s0, field_dx, field_ds; /* [m] */
+    /* Where the patch lies on the profiles as their points are given (y
+     * towards the field side on both sides, unlike y_contact_rail on the left
+     * side): the reference point's y, and d y / d s along the patch's s. */
+    double rail_profile_y, rail_s_cos;   /* [m], [-] */
+    double wheel_profile_y, wheel_s_cos; /* [m], [-] */
 } cw_wheelrail_patch;
 
 /* Set the defaults above and struct_size. Errors: CW_ERR_NULL_POINTER. */
@@ -135,6 +154,51 @@ CW_API int cw_wheelrail_solve(cw_wheelrail* wheelrail, const cw_wheelrail_motion
  * CW_ERR_INVALID_INPUT (k), CW_ERR_STRUCT_SIZE. */
 CW_API int cw_wheelrail_get_patch(const cw_wheelrail* wheelrail, size_t k,
                                   cw_wheelrail_patch* patch);
+
+/* Field CW_FIELD_* of patch k of the last solve (with CW_SOLVE_FULL for the
+ * slips and work maps) into out[i + j*field_nx], out_len >= field_nx *
+ * field_ny, on the grid cw_wheelrail_get_patch describes, in the patch frame
+ * of the wheel/rail conventions: CW_FIELD_X, CW_FIELD_Y the element centre's
+ * x and s from the reference point; CW_FIELD_PX, CW_FIELD_PY the traction
+ * on the rail along x and s; CW_FIELD_SX, CW_FIELD_SY the micro-slip of the
+ * rail relative to the wheel; CW_FIELD_MZ the moment about n through the
+ * reference point, on the rail; CW_FIELD_AREA, CW_FIELD_PZ and the work maps
+ * as their names say. Errors: CW_ERR_NULL_POINTER, CW_ERR_NO_SOLUTION,
+ * CW_ERR_NO_WORK (a slip or work map after CW_SOLVE_FORCES),
+ * CW_ERR_INVALID_INPUT (k), CW_ERR_UNKNOWN_OPTION (field),
+ * CW_ERR_BUFFER_TOO_SMALL. */
+CW_API int cw_wheelrail_get_patch_field(const cw_wheelrail* wheelrail, size_t k, int field,
+                                        double* out, size_t out_len);
+
+/* CW_STATE_* per element of patch k, as cw_wheelrail_get_patch_field.
+ * Errors: as cw_wheelrail_get_patch_field. */
+CW_API int cw_wheelrail_get_patch_state(const cw_wheelrail* wheelrail, size_t k, int* out,
+                                        size_t out_len);
+
+/* The solver holding patch k of the last solve, for the solver's getters
+ * and cw_wear_create / cw_wear_compute: its fields are in creepwork's own
+ * conventions (doc/wheelrail.md: y = -s, forces on the wheel) on a grid
+ * whose element (0, 0) is at (field_x0, -(field_s0 + (field_ny - 1)
+ * field_ds)) from the reference point. Owned by the handle: never destroy
+ * or solve it; valid until the next cw_wheelrail_solve. NULL on error
+ * (wheelrail NULL, no solution, k out of range). */
+CW_API const cw_solver* cw_wheelrail_patch_solver(const cw_wheelrail* wheelrail, size_t k);
+
+/* Adds the wear of every patch of the last solve (CW_SOLVE_FULL), by the law
+ * in params, passes times, to the rail's and the wheel's profile
+ * accumulators (cw_wear_profile; either may be NULL): nodes in the
+ * profile's y as its points are given [m], the strips placed through
+ * rail_profile_y, rail_s_cos (wheel_...) with the contact angle between
+ * the patch and the profile, so that CW_WEAR_DEPTH_HEIGHT is vertical on
+ * the rail and radial on the wheel. result (may be NULL) sums the patches'
+ * mass, volume and work per pass; max_depth is the largest patch's. Checks
+ * every patch before adding: on error nothing is added. Errors:
+ * CW_ERR_NULL_POINTER, CW_ERR_NO_SOLUTION, CW_ERR_NO_WORK, CW_ERR_STRUCT_SIZE,
+ * CW_ERR_UNKNOWN_OPTION and CW_ERR_INVALID_INPUT (params, passes), and those
+ * of cw_wear_profile_add. */
+CW_API int cw_wheelrail_add_wear(const cw_wheelrail* wheelrail, const cw_wear_params* params,
+                                 double passes, cw_wear_profile* rail, cw_wear_profile* wheel,
+                                 cw_wear_result* result);
 
 /* Message of the last error on this handle ("" after success); owned by
  * the handle, valid until its next call; "" for NULL. */

@@ -1,0 +1,350 @@
+/* A solved wheel/rail patch through the public header: its fields in the
+ * wheel/rail conventions add up to the patch's forces and moment, its
+ * solver view carries the same solution in creepwork's conventions, its
+ * wear lands on the profiles where the documented placement puts it (and
+ * mirrors between the sides), the fast model follows the exact one, and
+ * every documented error names its input. */
+#include <stdlib.h>
+
+#include "creepwork/creepwork.h"
+#include "test_support.h"
+
+static const char* rail_file = CW_WHEELRAIL_DATA "/MBench_UIC60_v3.prr";
+static const char* wheel_file = CW_WHEELRAIL_DATA "/MBench_S1002_v3.prw";
+
+
+/* Case A-2.2, y_ws = 3 mm (mbench_a22.csv) on the given side; sign mirrors
+ * the wheelset position for the left wheel (y, yaw, roll negated). */
+static cw_wheelrail* solved(int side, int model, int normal_method, int solve_mode)
+{
+    cw_wheelrail_params p;
+    cw_wheelrail_params_init(&p);
+    p.side = side;
+    p.model = model;
+    p.normal_method = normal_method;
+    p.solve_mode = solve_mode;
+    cw_wheelrail* w = NULL;
+    char msg[256];
+    assert_int_equal(cw_wheelrail_create(&p, rail_file, wheel_file, &w, msg, sizeof msg), CW_OK);
+    const double sign = side == CW_WHEELRAIL_RIGHT ? 1.0 : -1.0;
+    cw_wheelrail_motion m;
+    cw_wheelrail_motion_init(&m);
+    m.y = sign * 3.0e-3;
+    m.yaw = sign * 0.0072;
+    m.roll = -sign * 0.00018030;
+    m.vs = 2.0;
+    m.vpitch = -4.34515030;
+    cw_wheelrail_totals t;
+    cw_wheelrail_totals_init(&t);
+    assert_int_equal(cw_wheelrail_solve(w, &m, CW_WHEELRAIL_FORCE, 1e4, &t), CW_OK);
+    assert_int_equal(t.n_patches, 1);
+    return w;
+}
+
+static cw_wheelrail_patch patch0(const cw_wheelrail* w)
+{
+    cw_wheelrail_patch p;
+    cw_wheelrail_patch_init(&p);
+    assert_int_equal(cw_wheelrail_get_patch(w, 0, &p), CW_OK);
+    return p;
+}
+
+static double* field(const cw_wheelrail* w, const cw_wheelrail_patch* p, int f)
+{
+    const size_t n = (size_t)p->field_nx * (size_t)p->field_ny;
+    double* v = malloc(n * sizeof *v);
+    assert_non_null(v);
+    assert_int_equal(cw_wheelrail_get_patch_field(w, 0, f, v, n), CW_OK);
+    return v;
+}
+
+/* The patch's totals are sums over its elements (the definitions of Fn,
+ * Fx, Fs and Mn in the wheel/rail conventions): to rounding. The grid is
+ * the documented one, and the states count the patch's elements. */
+static void fields_add_up_to_the_patch(void** state)
+{
+    (void)state;
+    cw_wheelrail* w = solved(CW_WHEELRAIL_RIGHT, CW_MODEL_EXACT, CW_NORMAL_EXACT, CW_SOLVE_FULL);
+    const cw_wheelrail_patch p = patch0(w);
+    const size_t n = (size_t)p.field_nx * (size_t)p.field_ny;
+    assert_int_equal(p.field_nx, p.nx); /* 0.2 mm elements: no coarsening */
+    double *area = field(w, &p, CW_FIELD_AREA), *pz = field(w, &p, CW_FIELD_PZ),
+           *px = field(w, &p, CW_FIELD_PX), *ps = field(w, &p, CW_FIELD_PY),
+           *mz = field(w, &p, CW_FIELD_MZ), *x = field(w, &p, CW_FIELD_X), *s = field(w, &p, CW_FIELD_Y),
+           *work = field(w, &p, CW_FIELD_WORK_CONSISTENT);
+    double fn = 0, fx = 0, fs = 0, mn = 0, mn_xs = 0;
+    for (size_t e = 0; e < n; ++e) {
+        fn += pz[e] * area[e];
+        fx += px[e] * area[e];
+        fs += ps[e] * area[e];
+        mn += mz[e];
+        mn_xs += (x[e] * ps[e] - s[e] * px[e]) * area[e];
+        assert_true(work[e] >= 0.0);
+    }
+    assert_close(fn, p.Fn, 1e-12, 0);
+    assert_close(fx, p.Fx, 1e-10, 1e-9 * p.Fn);
+    assert_close(fs, p.Fs, 1e-10, 1e-9 * p.Fn);
+    assert_close(mn, p.Mn, 1e-9, 1e-12 * p.Fn);
+    assert_close(mn_xs, p.Mn, 1e-9, 1e-12 * p.Fn);
+    const size_t last = n - 1;
+    assert_close(x[0], p.field_x0, 0, 1e-15);
+    assert_close(s[0], p.field_s0, 0, 1e-15);
+    assert_close(x[last], p.field_x0 + (p.field_nx - 1) * p.field_dx, 0, 1e-12);
+    assert_close(s[last], p.field_s0 + (p.field_ny - 1) * p.field_ds, 0, 1e-12);
+
+    int* st = malloc(n * sizeof *st);
+    assert_int_equal(cw_wheelrail_get_patch_state(w, 0, st, n), CW_OK);
+    int contact = 0, slip = 0;
+    for (size_t e = 0; e < n; ++e) {
+        contact += st[e] != CW_STATE_EXTERIOR;
+        slip += st[e] == CW_STATE_SLIP;
+        assert_true((st[e] != CW_STATE_EXTERIOR) == (area[e] > 0.0));
+    }
+    assert_int_equal(contact, p.n_contact);
+    assert_int_equal(slip, p.n_slip);
+
+    /* the solver view: creepwork's conventions (forces on the wheel, y = -s) */
+    const cw_solver* view = cw_wheelrail_patch_solver(w, 0);
+    assert_non_null(view);
+    assert_ptr_equal(cw_wheelrail_patch_solver(w, 0), view);
+    cw_result r;
+    cw_result_init(&r);
+    assert_int_equal(cw_solver_get_result(view, &r), CW_OK);
+    assert_close(r.Fx, -p.Fx, 1e-14, 0);
+    assert_close(r.Fy, p.Fs, 1e-14, 0);
+    assert_close(r.normal_force, p.Fn, 1e-14, 0);
+    assert_null(cw_wheelrail_patch_solver(w, 1));
+    assert_non_null(strstr(cw_wheelrail_last_error(w), "k = 1"));
+    free(st);
+    free(area), free(pz), free(px), free(ps), free(mz), free(x), free(s), free(work);
+    cw_wheelrail_destroy(w);
+}
+
+/* Nodes every 0.02 mm over a profile's width. */
+enum { kNodes = 4001 };
+static double nodes[kNodes];
+
+static cw_wear_profile* profile_grid(void)
+{
+    for (int k = 0; k < kNodes; ++k) nodes[k] = -0.04 + 2e-5 * k;
+    cw_wear_profile* g = NULL;
+    char msg[128];
+    assert_int_equal(cw_wear_profile_create(nodes, kNodes, &g, msg, sizeof msg), CW_OK);
+    return g;
+}
+
+static void depth_of(const cw_wear_profile* g, double* d)
+{
+    assert_int_equal(cw_wear_profile_get_depth(g, CW_WEAR_DEPTH_HEIGHT, d, kNodes), CW_OK);
+}
+
+/* The wear of the patch on both profiles equals the documented placement
+ * done by hand through the public wear API: the patch solver's strips
+ * (creepwork's y) at s = -(y + y0) from the reference point, y0 the grid's
+ * first row, placed at rail_profile_y with orientation sign(rail_s_cos)
+ * and contact angle acos|rail_s_cos| (the wheel's likewise). The worn
+ * volume is passes x the wear's volume per distance. */
+static void wear_lands_where_documented(void** state)
+{
+    (void)state;
+    cw_wheelrail* w = solved(CW_WHEELRAIL_RIGHT, CW_MODEL_EXACT, CW_NORMAL_EXACT, CW_SOLVE_FULL);
+    const cw_wheelrail_patch p = patch0(w);
+    cw_wear_params law;
+    cw_wear_params_init(&law);
+    const double passes = 5e3;
+    cw_wear_profile *rail = profile_grid(), *wheel = profile_grid();
+    cw_wear_result sum;
+    cw_wear_result_init(&sum);
+    assert_int_equal(cw_wheelrail_add_wear(w, &law, passes, rail, wheel, &sum), CW_OK);
+
+    const cw_solver* view = cw_wheelrail_patch_solver(w, 0);
+    cw_wear* wear = NULL;
+    assert_int_equal(cw_wear_create(view, &wear), CW_OK);
+    cw_wear_result one;
+    cw_wear_result_init(&one);
+    assert_int_equal(cw_wear_compute(wear, view, &law, &one), CW_OK);
+    assert_close(sum.volume_per_distance, one.volume_per_distance, 1e-15, 0);
+    const int ny = p.field_ny;
+    double *y = malloc(ny * sizeof *y), *width = malloc(ny * sizeof *y), *depth = malloc(ny * sizeof *y);
+    assert_int_equal(cw_wear_get_strips(wear, y, width, depth, NULL, (size_t)ny), CW_OK);
+    const double y0 = -(p.field_s0 + (ny - 1) * p.field_ds);
+    for (int j = 0; j < ny; ++j) y[j] = -(y[j] + y0);
+    cw_wear_profile *rail_hand = profile_grid(), *wheel_hand = profile_grid();
+    assert_int_equal(cw_wear_profile_add_strips(rail_hand, y, width, depth, (size_t)ny, p.rail_profile_y,
+                                                p.rail_s_cos < 0 ? -1 : 1, acos(fabs(p.rail_s_cos)), passes),
+                     CW_OK);
+    assert_int_equal(cw_wear_profile_add_strips(wheel_hand, y, width, depth, (size_t)ny, p.wheel_profile_y,
+                                                p.wheel_s_cos < 0 ? -1 : 1, acos(fabs(p.wheel_s_cos)), passes),
+                     CW_OK);
+    static double a[kNodes], b[kNodes];
+    double peak = 0;
+    depth_of(rail, a);
+    depth_of(rail_hand, b);
+    for (int k = 0; k < kNodes; ++k) peak = fmax(peak, b[k]);
+    assert_true(peak > 0.0);
+    for (int k = 0; k < kNodes; ++k) assert_close(a[k], b[k], 0, 1e-14 * peak);
+    depth_of(wheel, a);
+    depth_of(wheel_hand, b);
+    for (int k = 0; k < kNodes; ++k) assert_close(a[k], b[k], 0, 1e-14 * peak);
+    cw_wear_profile_totals t;
+    cw_wear_profile_totals_init(&t);
+    assert_int_equal(cw_wear_profile_get_totals(rail, &t), CW_OK);
+    assert_close(t.volume, passes * one.volume_per_distance, 1e-12, 0);
+    assert_close(t.passes, passes, 0, 0);
+    /* the rail's contact angle is the patch's (a rail without cant) */
+    assert_close(acos(fabs(p.rail_s_cos)), fabs(p.contact_angle), 0, 1e-9);
+    free(y), free(width), free(depth);
+    cw_wear_destroy(wear);
+    cw_wear_profile_destroy(rail), cw_wear_profile_destroy(wheel);
+    cw_wear_profile_destroy(rail_hand), cw_wear_profile_destroy(wheel_hand);
+    cw_wheelrail_destroy(w);
+}
+
+/* Mirror symmetry: the left wheel at the mirrored position wears the same
+ * profiles (as their points are given) as the right wheel, and its forces
+ * mirror (Fs and Mn change sign). */
+static void sides_mirror(void** state)
+{
+    (void)state;
+    cw_wheelrail* r = solved(CW_WHEELRAIL_RIGHT, CW_MODEL_EXACT, CW_NORMAL_EXACT, CW_SOLVE_FULL);
+    cw_wheelrail* l = solved(CW_WHEELRAIL_LEFT, CW_MODEL_EXACT, CW_NORMAL_EXACT, CW_SOLVE_FULL);
+    const cw_wheelrail_patch pr = patch0(r), pl = patch0(l);
+    assert_close(pl.Fx, pr.Fx, 1e-9, 0);
+    assert_close(pl.Fs, -pr.Fs, 1e-9, 0);
+    assert_close(pl.Mn, -pr.Mn, 1e-9, 1e-12);
+    assert_close(pl.rail_profile_y, pr.rail_profile_y, 0, 1e-12);
+    assert_close(pl.rail_s_cos, -pr.rail_s_cos, 0, 1e-12);
+    cw_wear_params law;
+    cw_wear_params_init(&law);
+    cw_wear_profile *rail_r = profile_grid(), *rail_l = profile_grid();
+    cw_wear_profile *wheel_r = profile_grid(), *wheel_l = profile_grid();
+    assert_int_equal(cw_wheelrail_add_wear(r, &law, 1e3, rail_r, wheel_r, NULL), CW_OK);
+    assert_int_equal(cw_wheelrail_add_wear(l, &law, 1e3, rail_l, wheel_l, NULL), CW_OK);
+    static double a[kNodes], b[kNodes];
+    double peak = 0;
+    depth_of(rail_r, a);
+    depth_of(rail_l, b);
+    for (int k = 0; k < kNodes; ++k) peak = fmax(peak, a[k]);
+    for (int k = 0; k < kNodes; ++k) assert_close(b[k], a[k], 0, 1e-9 * peak);
+    depth_of(wheel_r, a);
+    depth_of(wheel_l, b);
+    for (int k = 0; k < kNodes; ++k) assert_close(b[k], a[k], 0, 1e-9 * peak);
+    cw_wear_profile_destroy(rail_r), cw_wear_profile_destroy(rail_l);
+    cw_wear_profile_destroy(wheel_r), cw_wear_profile_destroy(wheel_l);
+    cw_wheelrail_destroy(r);
+    cw_wheelrail_destroy(l);
+}
+
+/* The fast model (FASTSIM with the semi-Hertzian normal problem) against
+ * the exact model on the same position: forces within 3 % of mu Fn, the
+ * fast method's accuracy target; the vertical force is met by both. */
+static void fast_model_follows_exact(void** state)
+{
+    (void)state;
+    cw_wheelrail* e = solved(CW_WHEELRAIL_RIGHT, CW_MODEL_EXACT, CW_NORMAL_EXACT, CW_SOLVE_FULL);
+    cw_wheelrail* f = solved(CW_WHEELRAIL_RIGHT, CW_MODEL_FASTSIM, CW_NORMAL_SEMI_HERTZ, CW_SOLVE_FORCES);
+    const cw_wheelrail_patch pe = patch0(e), pf = patch0(f);
+    const double mu_n = 0.3 * pe.Fn;
+    assert_close(pf.Fn, pe.Fn, 0, 0.03 * mu_n);
+    assert_close(pf.Fx, pe.Fx, 0, 0.03 * mu_n);
+    assert_close(pf.Fs, pe.Fs, 0, 0.03 * mu_n);
+    assert_close(pf.Fz_track, 1e4, 1e-6, 0);
+    cw_result r;
+    cw_result_init(&r);
+    assert_int_equal(cw_solver_get_result(cw_wheelrail_patch_solver(f, 0), &r), CW_OK);
+    assert_int_equal(r.model, CW_MODEL_FASTSIM);
+    assert_int_equal(cw_solver_get_result(cw_wheelrail_patch_solver(e, 0), &r), CW_OK);
+    assert_int_equal(r.model, CW_MODEL_EXACT);
+    /* CW_SOLVE_FORCES: no work map, and no wear */
+    const size_t n = (size_t)pf.field_nx * (size_t)pf.field_ny;
+    double* v = malloc(n * sizeof *v);
+    assert_int_equal(cw_wheelrail_get_patch_field(f, 0, CW_FIELD_PZ, v, n), CW_OK);
+    assert_int_equal(cw_wheelrail_get_patch_field(f, 0, CW_FIELD_WORK_CONSISTENT, v, n), CW_ERR_NO_WORK);
+    cw_wear_params law;
+    cw_wear_params_init(&law);
+    cw_wear_profile* rail = profile_grid();
+    assert_int_equal(cw_wheelrail_add_wear(f, &law, 1.0, rail, NULL, NULL), CW_ERR_NO_WORK);
+    cw_wear_profile_totals t;
+    cw_wear_profile_totals_init(&t);
+    assert_int_equal(cw_wear_profile_get_totals(rail, &t), CW_OK);
+    assert_int_equal((int)t.adds, 0);
+    free(v);
+    cw_wear_profile_destroy(rail);
+    cw_wheelrail_destroy(e);
+    cw_wheelrail_destroy(f);
+}
+
+static void errors_name_their_input(void** state)
+{
+    (void)state;
+    cw_wheelrail_params p;
+    cw_wheelrail_params_init(&p);
+    cw_wheelrail* w = NULL;
+    char msg[256];
+    p.model = CW_MODEL_CALIBRATED;
+    assert_int_equal(cw_wheelrail_create(&p, rail_file, wheel_file, &w, msg, sizeof msg), CW_ERR_UNKNOWN_OPTION);
+    assert_non_null(strstr(msg, "params->model = 2"));
+    cw_wheelrail_params_init(&p);
+    p.normal_method = 5;
+    assert_int_equal(cw_wheelrail_create(&p, rail_file, wheel_file, &w, msg, sizeof msg), CW_ERR_UNKNOWN_OPTION);
+    assert_non_null(strstr(msg, "params->normal_method = 5"));
+    cw_wheelrail_params_init(&p);
+    p.solve_mode = -1;
+    assert_int_equal(cw_wheelrail_create(&p, rail_file, wheel_file, &w, msg, sizeof msg), CW_ERR_UNKNOWN_OPTION);
+    assert_non_null(strstr(msg, "params->solve_mode = -1"));
+    assert_null(w);
+
+    cw_wheelrail_params_init(&p);
+    assert_int_equal(cw_wheelrail_create(&p, rail_file, wheel_file, &w, msg, sizeof msg), CW_OK);
+    double v[4];
+    int s[4];
+    cw_wear_params law;
+    cw_wear_params_init(&law);
+    assert_int_equal(cw_wheelrail_get_patch_field(w, 0, CW_FIELD_PZ, v, 4), CW_ERR_NO_SOLUTION);
+    assert_int_equal(cw_wheelrail_get_patch_state(w, 0, s, 4), CW_ERR_NO_SOLUTION);
+    assert_int_equal(cw_wheelrail_add_wear(w, &law, 1.0, NULL, NULL, NULL), CW_ERR_NO_SOLUTION);
+    assert_null(cw_wheelrail_patch_solver(w, 0));
+    assert_null(cw_wheelrail_patch_solver(NULL, 0));
+    assert_int_equal(cw_wheelrail_get_patch_field(NULL, 0, CW_FIELD_PZ, v, 4), CW_ERR_NULL_POINTER);
+    assert_int_equal(cw_wheelrail_add_wear(NULL, &law, 1.0, NULL, NULL, NULL), CW_ERR_NULL_POINTER);
+    cw_wheelrail_destroy(w);
+
+    w = solved(CW_WHEELRAIL_RIGHT, CW_MODEL_EXACT, CW_NORMAL_EXACT, CW_SOLVE_FULL);
+    assert_int_equal(cw_wheelrail_get_patch_field(w, 0, CW_FIELD_PZ, NULL, 4), CW_ERR_NULL_POINTER);
+    assert_int_equal(cw_wheelrail_get_patch_field(w, 0, CW_FIELD_PZ, v, 4), CW_ERR_BUFFER_TOO_SMALL);
+    assert_int_equal(cw_wheelrail_get_patch_field(w, 0, 99, v, 4), CW_ERR_UNKNOWN_OPTION);
+    assert_int_equal(cw_wheelrail_get_patch_field(w, 3, CW_FIELD_PZ, v, 4), CW_ERR_INVALID_INPUT);
+    assert_non_null(strstr(cw_wheelrail_last_error(w), "k = 3"));
+    assert_int_equal(cw_wheelrail_get_patch_state(w, 0, s, 4), CW_ERR_BUFFER_TOO_SMALL);
+    assert_int_equal(cw_wheelrail_add_wear(w, NULL, 1.0, NULL, NULL, NULL), CW_ERR_NULL_POINTER);
+    cw_wear_profile* g = profile_grid();
+    assert_int_equal(cw_wheelrail_add_wear(w, &law, 1.0, g, g, NULL), CW_ERR_INVALID_INPUT);
+    assert_non_null(strstr(cw_wheelrail_last_error(w), "same profile accumulator"));
+    assert_int_equal(cw_wheelrail_add_wear(w, &law, -1.0, g, NULL, NULL), CW_ERR_INVALID_INPUT);
+    assert_non_null(strstr(cw_wheelrail_last_error(w), "passes"));
+    law.law = 9;
+    assert_int_equal(cw_wheelrail_add_wear(w, &law, 1.0, g, NULL, NULL), CW_ERR_UNKNOWN_OPTION);
+    assert_non_null(strstr(cw_wheelrail_last_error(w), "law = 9"));
+    cw_wear_result bad;
+    bad.struct_size = 0;
+    cw_wear_params_init(&law);
+    assert_int_equal(cw_wheelrail_add_wear(w, &law, 1.0, g, NULL, &bad), CW_ERR_STRUCT_SIZE);
+    cw_wear_profile_totals t;
+    cw_wear_profile_totals_init(&t);
+    assert_int_equal(cw_wear_profile_get_totals(g, &t), CW_OK);
+    assert_int_equal((int)t.adds, 0); /* no failed call added anything */
+    cw_wear_profile_destroy(g);
+    cw_wheelrail_destroy(w);
+}
+
+int main(int argc, char** argv)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(fields_add_up_to_the_patch),
+        cmocka_unit_test(wear_lands_where_documented),
+        cmocka_unit_test(sides_mirror),
+        cmocka_unit_test(fast_model_follows_exact),
+        cmocka_unit_test(errors_name_their_input),
+    };
+    return cw_run_tests(tests, argc > 1 ? argv[1] : NULL);
+}
