@@ -3,7 +3,9 @@
 // the Manchester benchmark's 42 wheel positions at CONTACT's discretisation
 // (dx = ds = 0.2 mm), of the contact search alone, and of a whole position:
 // the wheelset height for 10 kN with every patch solved by the exact model
-// (geometry and contact, CONTACT's module 1 with N = 1). Given CONTACT's
+// (geometry and contact, CONTACT's module 1 with N = 1), and the same with
+// the fast model (FASTSIM with the semi-Hertzian normal problem), forces
+// only and with every field and work map. Given CONTACT's
 // program, the same run times CONTACT's own examples (both wheels,
 // the same 42 positions) as a child process. Not a test: it prints a table
 // with a stamp. Times are per-thread CPU time (CLOCK_THREAD_CPUTIME_ID, not
@@ -113,33 +115,67 @@ int main(int argc, char** argv)
     std::printf("| contact search alone | %.1f | |\n\n", 1e6 * median(search_cpu));
 
     // A whole position: the height for 10 kN, every patch by the exact
-    // model (as test_wheelrail_forces), and CONTACT on the same positions.
-    wr::PatchContactSettings set; // mu 0.3, G 82 GPa, nu 0.28: the benchmark's
-    const int force_sweeps = std::max(1, sweeps / 40);
-    std::vector<double> pos_cpu, pos_wall;
-    for (int s = 0; s < force_sweeps; ++s) {
-        // fresh objects each sweep: the positions one after the other from
-        // a cold start, as CONTACT runs its examples
-        wr::WheelRailContact cr(b.geometry(wr::Side::right), set), cl(b.geometry(wr::Side::left), set);
-        double cpu = 0.0, wall = 0.0;
-        for (const cwtest::Row& r : rows) {
-            wr::WheelRailContact& c = cwtest::side_of(r) == wr::Side::right ? cr : cl;
-            wr::WheelsetPosition pos = cwtest::position_of(r);
-            pos.z = 0.0;
-            const double c0 = seconds(CLOCK_THREAD_CPUTIME_ID), w0 = seconds(CLOCK_MONOTONIC);
-            c.solve_force(1e4, pos, cwtest::velocity_of(r));
-            cpu += seconds(CLOCK_THREAD_CPUTIME_ID) - c0;
-            wall += seconds(CLOCK_MONOTONIC) - w0;
+    // model (as test_wheelrail_forces) or the fast one, and CONTACT on the
+    // same positions.
+    // heights[k]: the height found for row k (filled by the first call);
+    // given_height: solve at it (an MBS host's wheelset position) instead
+    // of finding it for 10 kN.
+    std::vector<double> heights(rows.size(), 0.0);
+    // fresh: new objects each sweep, the positions one after the other from
+    // a cold start, as CONTACT runs its examples; otherwise one pair of
+    // objects for every sweep after a first one not timed, as a host's loop
+    // keeps its handles (their solvers made for the grids met before).
+    const auto whole_positions = [&](const wr::PatchContactSettings& set, int force_sweeps, bool given_height,
+                                     bool fresh) {
+        std::vector<double> pos_cpu, pos_wall;
+        wr::WheelRailContact kept_r(b.geometry(wr::Side::right), set), kept_l(b.geometry(wr::Side::left), set);
+        for (int s = fresh ? 0 : -1; s < force_sweeps; ++s) {
+            wr::WheelRailContact fresh_r(b.geometry(wr::Side::right), set), fresh_l(b.geometry(wr::Side::left), set);
+            wr::WheelRailContact& cr = fresh ? fresh_r : kept_r;
+            wr::WheelRailContact& cl = fresh ? fresh_l : kept_l;
+            double cpu = 0.0, wall = 0.0;
+            for (std::size_t k = 0; k < rows.size(); ++k) {
+                const cwtest::Row& r = rows[k];
+                wr::WheelRailContact& c = cwtest::side_of(r) == wr::Side::right ? cr : cl;
+                wr::WheelsetPosition pos = cwtest::position_of(r);
+                pos.z = given_height ? heights[k] : 0.0;
+                const double c0 = seconds(CLOCK_THREAD_CPUTIME_ID), w0 = seconds(CLOCK_MONOTONIC);
+                const wr::WheelRailSolution& sol = given_height ? c.solve_position(pos, cwtest::velocity_of(r))
+                                                                : c.solve_force(1e4, pos, cwtest::velocity_of(r));
+                cpu += seconds(CLOCK_THREAD_CPUTIME_ID) - c0;
+                wall += seconds(CLOCK_MONOTONIC) - w0;
+                if (!given_height) heights[k] = sol.z;
+            }
+            if (s < 0) continue; // the warm-up sweep
+            pos_cpu.push_back(cpu / static_cast<double>(rows.size()));
+            pos_wall.push_back(wall / static_cast<double>(rows.size()));
         }
-        pos_cpu.push_back(cpu / static_cast<double>(rows.size()));
-        pos_wall.push_back(wall / static_cast<double>(rows.size()));
-    }
-    std::printf("Whole position, 10 kN per wheel: height, geometry and the exact contact of every patch; median "
-                "of %d sweeps (CONTACT: one run of its examples mbench_a22_right and _left, output files "
+        return std::pair<double, double>{median(pos_cpu), median(pos_wall)};
+    };
+    const int force_sweeps = std::max(1, sweeps / 40);
+    wr::PatchContactSettings exact; // mu 0.3, G 82 GPa, nu 0.28: the benchmark's; every field
+    wr::PatchContactSettings fast = exact;
+    fast.model = creepwork::ModelKind::fastsim;
+    fast.normal_method = creepwork::NormalMethod::semi_hertz;
+    fast.mode = creepwork::SolveMode::forces_only;
+    wr::PatchContactSettings fast_full = fast;
+    fast_full.mode = creepwork::SolveMode::full;
+    const auto te = whole_positions(exact, force_sweeps, false, true);
+    const auto tf = whole_positions(fast, 10 * force_sweeps, false, false);
+    const auto tff = whole_positions(fast_full, 10 * force_sweeps, false, false);
+    const auto tfh = whole_positions(fast, 10 * force_sweeps, true, false);
+    std::printf("Whole position, 10 kN per wheel: height, geometry and the contact of every patch; median of %d "
+                "sweeps from a cold start (exact model), of %d sweeps on kept handles after one sweep not timed "
+                "(fast model) (CONTACT: one run of its examples mbench_a22_right and _left, output files "
                 "included)\n\n",
-                force_sweeps);
+                force_sweeps, 10 * force_sweeps);
     std::printf("| per wheel position | CPU [ms] | wall [ms] |\n|---|---:|---:|\n");
-    std::printf("| creepwork (exact model per patch) | %.2f | %.2f |\n", 1e3 * median(pos_cpu), 1e3 * median(pos_wall));
+    std::printf("| creepwork, exact model per patch, every field | %.2f | %.2f |\n", 1e3 * te.first, 1e3 * te.second);
+    std::printf("| creepwork, fast model per patch, forces | %.3f | %.3f |\n", 1e3 * tf.first, 1e3 * tf.second);
+    std::printf("| creepwork, fast model per patch, every field | %.3f | %.3f |\n", 1e3 * tff.first,
+                1e3 * tff.second);
+    std::printf("| creepwork, fast model per patch, forces, height given (one geometry evaluation) | %.3f | %.3f |\n",
+                1e3 * tfh.first, 1e3 * tfh.second);
     if (argc > 3) {
         const double t = contact_seconds(argv[2], argv[3]);
         if (t > 0.0)
