@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -80,13 +79,7 @@ std::vector<std::vector<double>> write_compare_data(const std::string& path, con
                                       per_area * f.work_consistent[k] / area,
                                       per_area * e.work_consistent[k] / area,
                                       share};
-        char buf[40];
-        for (int c = 0; c < kColumns; ++c) {
-            std::snprintf(buf, sizeof buf, c ? " %.9g" : "%.9g", row[c]);
-            out << buf;
-            cols[c].push_back(row[c]);
-        }
-        out << "\n";
+        gp_data_row(out, row, kColumns, cols);
     }
     if (!out) throw CliError(kExitFailure, "cannot write " + path);
     return cols;

@@ -12,6 +12,7 @@
 #include "contact_options.hpp"
 #include "contact_solver.hpp"
 #include "csv_output.hpp"
+#include "gap_plots.hpp"
 #include "json.hpp"
 #include "output_dir.hpp"
 #include "report.hpp"
@@ -200,6 +201,9 @@ void reject_elliptic_options(const ParsedOptions& o)
     if (o.has("model") && o.text("model", "") != "exact" && o.text("model", "") != "fastsim")
         throw usage_error("--model", "a gap is solved by the exact model (--model exact, the "
                                      "default with --gap) or FASTSIM (--model fastsim)");
+    if (o.text("plot-axes", "") == "normalised")
+        throw usage_error("--plot-axes", "a gap has no semi-axes to normalise by: its pictures "
+                                         "are drawn over x, y (mm, or in with --units paper)");
     if (o.has("N") == o.has("approach"))
         throw usage_error(o.has("N") ? "--N/--approach" : "--N",
                           o.has("N") ? "give the normal force or the approach, not both"
@@ -396,10 +400,15 @@ int command_solve_gap(const ParsedOptions& opts)
     print_notes(c);
     const JsonObject json = gap_json(s, patches, file, c.units);
     if (!out.empty()) {
+        const bool plots = should_plot(opts, static_cast<long>(s.size()));
         StagedOutput dir(out, "--out", opts.has("force"));
         write_fields_csv(dir.path("fields.csv"), s, c.units);
         write_profile_csv(dir.path("profile.csv"), s, c.units);
         write_json(dir.path("result.json"), json);
+        // The run's text, JSON and CSV give the forces on the wheel.
+        if (plots)
+            write_gap_pictures(dir.path(), s, g.h, patches, file, c.units,
+                               read_plot_style(opts, ForceSign::wheel));
         dir.commit();
     }
     if (opts.text("format", "text") == "json")

@@ -77,6 +77,18 @@ void run_gnuplot(const std::string& dir, const std::string& script, const std::s
     if (std::filesystem::file_size(log_path, ec) == 0 && !ec) std::filesystem::remove(log_path, ec);
 }
 
+void gp_data_row(std::ostream& out, const double* row, size_t n,
+                 std::vector<std::vector<double>>& cols)
+{
+    char buf[40];
+    for (size_t c = 0; c < n; ++c) {
+        std::snprintf(buf, sizeof buf, c ? " %.9g" : "%.9g", row[c]);
+        out << buf;
+        cols[c].push_back(row[c]);
+    }
+    out << "\n";
+}
+
 std::string gp_quote(const std::string& text)
 {
     std::string out = "'";
@@ -181,26 +193,28 @@ std::string gp_patch_frame(int rolling_direction, const PatchAxes& axes)
 {
     // Leading edge where material enters: x = +a when rolling towards +x.
     const int d = rolling_direction >= 0 ? 1 : -1;
-    const double a = axes.ax, b = axes.by;
+    const double a = axes.ax, b = axes.by, cx = axes.cx, cy = axes.cy;
     std::ostringstream s;
     s.precision(9);
     s << "unset arrow; unset label; unset object\n"
       << "set size ratio -1\n"
-      << "set xrange [" << -1.12 * a << ":" << 1.12 * a << "]\nset yrange [" << -1.12 * b << ":"
-      << 1.42 * b << "]\n";
-    if (a == 1.0 && b == 1.0)
+      << "set xrange [" << cx - 1.12 * a << ":" << cx + 1.12 * a << "]\nset yrange ["
+      << cy - 1.12 * b << ":" << cy + 1.42 * b << "]\n";
+    if (a == 1.0 && b == 1.0 && cx == 0.0 && cy == 0.0)
         s << "set xtics -1,0.5,1\nset ytics -1,0.5,1\n";
     else
         s << "set xtics auto\nset ytics auto\n";
-    s << "set xlabel " << gp_quote(axes.xlabel) << "\nset ylabel " << gp_quote(axes.ylabel) << "\n"
-      << "set object 1 ellipse at 0,0 size " << 2 * a << "," << 2 * b
-      << " front fillstyle empty border lc rgb 'black' lw 1\n"
-      << "set arrow 1 from " << -0.35 * d * a << "," << 1.24 * b << " to " << 0.35 * d * a << ","
-      << 1.24 * b << " head filled size screen 0.015,25 lw 2 lc rgb 'black' front\n"
-      << "set label 1 'rolling' at 0," << 1.345 * b << " center front\n"
-      << "set label 2 'leading edge' at " << 1.08 * d * a << "," << 1.12 * b << " "
+    s << "set xlabel " << gp_quote(axes.xlabel) << "\nset ylabel " << gp_quote(axes.ylabel) << "\n";
+    if (axes.ellipse)
+        s << "set object 1 ellipse at " << cx << "," << cy << " size " << 2 * a << "," << 2 * b
+          << " front fillstyle empty border lc rgb 'black' lw 1\n";
+    s << "set arrow 1 from " << cx - 0.35 * d * a << "," << cy + 1.24 * b << " to "
+      << cx + 0.35 * d * a << "," << cy + 1.24 * b
+      << " head filled size screen 0.015,25 lw 2 lc rgb 'black' front\n"
+      << "set label 1 'rolling' at " << cx << "," << cy + 1.345 * b << " center front\n"
+      << "set label 2 'leading edge' at " << cx + 1.08 * d * a << "," << cy + 1.12 * b << " "
       << (d > 0 ? "right" : "left") << " front font ',8'\n"
-      << "set label 3 'trailing edge' at " << -1.08 * d * a << "," << 1.12 * b << " "
+      << "set label 3 'trailing edge' at " << cx - 1.08 * d * a << "," << cy + 1.12 * b << " "
       << (d > 0 ? "left" : "right") << " front font ',8'\n";
     return s.str();
 }

@@ -4,6 +4,7 @@
 //   cd <out> && gnuplot gnuplot/<name>.gp
 #pragma once
 
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -17,6 +18,11 @@ bool gnuplot_available();
 // dir/gnuplot/gnuplot.log (removed when empty). Throws CliError(kExitFailure)
 // quoting gnuplot's first error line.
 void run_gnuplot(const std::string& dir, const std::string& script, const std::string& text);
+
+// Writes one row of a whitespace data file ("%.9g" each, then a newline)
+// and appends each value to its column, for the colour scales.
+void gp_data_row(std::ostream& out, const double* row, size_t n,
+                 std::vector<std::vector<double>>& cols);
 
 // A gnuplot string literal ('...' with ' doubled).
 std::string gp_quote(const std::string& text);
@@ -51,13 +57,17 @@ std::string gp_slip_outline(int state_column);
 std::string gp_state_scale();
 
 // The axes a patch is drawn on: semi-axes ax, by in plot coordinates (1, 1
-// for x/a, y/b) and the axis labels.
+// for x/a, y/b) about the centre cx, cy, and the axis labels. A gap grid
+// has no ellipse: its frame is the grid's extent, ellipse false.
 struct PatchAxes {
     double ax = 1.0, by = 1.0;
     std::string xlabel = "x/a", ylabel = "y/b";
+    double cx = 0.0, cy = 0.0;
+    bool ellipse = true;
 };
 
-// The ellipse outline, ranges, labels and the rolling-direction arrow.
+// The ellipse outline (when axes.ellipse), ranges, labels and the
+// rolling-direction arrow.
 std::string gp_patch_frame(int rolling_direction, const PatchAxes& axes = PatchAxes());
 
 } // namespace cwcli

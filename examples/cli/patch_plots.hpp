@@ -4,11 +4,9 @@
 // |p|/(mu pz), each titled with its total; an eight-panel overview; and the
 // lateral work profile against the equal-area parabola.
 //
-// Each element is drawn as its own rectangle (boxxyerror), because Kalker's
-// strip grid is not rectangular: every strip has its own chord and element
-// length. Work and moment are shown per unit area for the same reason --
-// elements of different strips differ in size. Slip elements are outlined in
-// the work maps, so a reader sees that the work lives in the slip zone.
+// The maps are patch_maps.hpp's (one rectangle per element, work and moment
+// per unit area). Slip elements are outlined in the work maps, so a reader
+// sees that the work lives in the slip zone.
 //
 // Signs and units: tractions, forces and moment act on the body PlotStyle
 // names (the run's own convention by default) and the micro-slips are that

@@ -202,6 +202,16 @@ files with --out:
   slip_y.png moment.png utilisation.png work_paper.png profile.png
   gnuplot/     the scripts and data behind the pictures
                (cd DIR && gnuplot gnuplot/patch.gp re-draws them)
+  with --gap, the pictures over x, y of the whole grid (mm; in with --units
+  paper; --plot-axes normalised is an error: a gap has no semi-axes):
+  patch.png    six panels under the inputs and totals (Fn, Fx, Fy, Mz,
+               each patch's forces): the gap h with the contact outlined,
+               the pressure, slip/adhesion with each patch labelled at its
+               centroid (numbered as in the text and JSON), work per area
+               (slip elements outlined) and the tractions px, py
+  gap.png pressure.png slip_adhesion.png work.png traction_x.png
+  traction_y.png
+  gnuplot/     gap.gp and its data; patches.dat: one row per patch
 
 example (the paper's Fig. 6 contact in its units):
   creepwork solve --units paper --a 0.0217594 --b 0.0108797 --N 10000 --mu 0.6 \

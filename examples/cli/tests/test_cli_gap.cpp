@@ -10,7 +10,10 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <cstdlib>
 #include <fstream>
+#include <functional>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -32,25 +35,32 @@ struct Gap {
     std::vector<double> h;
 };
 
-Gap two_lobes()
+// The grid nx x ny of dx x dy from (x0, y0), h(x, y) at every cell centre.
+Gap make_gap(int nx, int ny, double dx, double dy, double x0, double y0,
+             const std::function<double(double, double)>& h)
 {
     Gap g;
     cw_grid_init(&g.grid);
     g.grid.kind = CW_GRID_GAP;
-    g.grid.nx = 30;
-    g.grid.ny = 56;
-    g.grid.dx = 0.35e-3;
-    g.grid.dy = 0.45e-3;
-    g.grid.x0 = -14.5 * g.grid.dx + 0.2e-3;
-    g.grid.y0 = -27.5 * g.grid.dy;
-    for (int j = 0; j < g.grid.ny; ++j)
-        for (int i = 0; i < g.grid.nx; ++i) {
-            const double x = g.grid.x0 + i * g.grid.dx, y = g.grid.y0 + j * g.grid.dy;
-            const double a = x * x / 0.9 + (y + 6e-3) * (y + 6e-3) / 0.5;
-            const double b = x * x / 0.8 + (y - 6e-3) * (y - 6e-3) / 0.3 + 2e-6;
-            g.h.push_back(std::min(a, b));
-        }
+    g.grid.nx = nx;
+    g.grid.ny = ny;
+    g.grid.dx = dx;
+    g.grid.dy = dy;
+    g.grid.x0 = x0;
+    g.grid.y0 = y0;
+    for (int j = 0; j < ny; ++j)
+        for (int i = 0; i < nx; ++i) g.h.push_back(h(x0 + i * dx, y0 + j * dy));
     return g;
+}
+
+Gap two_lobes()
+{
+    const double dx = 0.35e-3, dy = 0.45e-3;
+    return make_gap(30, 56, dx, dy, -14.5 * dx + 0.2e-3, -27.5 * dy, [](double x, double y) {
+        const double a = x * x / 0.9 + (y + 6e-3) * (y + 6e-3) / 0.5;
+        const double b = x * x / 0.8 + (y - 6e-3) * (y - 6e-3) / 0.3 + 2e-6;
+        return std::min(a, b);
+    });
 }
 
 // The gap file, lines in the order given (rows reversed: any order is valid).
@@ -175,6 +185,127 @@ void json_matches_library(void**)
     cw_solver_destroy(s);
 }
 
+// Three Hertzian lobes along y (centres below, 0, 1 and 3 um above the
+// datum), on a 28 x 64 grid of 0.4 mm: each lobe is the gap where it is the
+// smallest of the three.
+struct Lobe {
+    double x, y, dh, rx, ry; // h = (x - x)^2/rx + (y - y)^2/ry + dh [m]
+};
+const Lobe kLobes[3] = {{-1e-3, -8e-3, 0.0, 0.3, 0.25},
+                        {1e-3, 0.0, 1e-6, 0.25, 0.2},
+                        {0.0, 8e-3, 3e-6, 0.3, 0.15}};
+
+int nearest_lobe(double x, double y, double* h = nullptr)
+{
+    int best = 0;
+    double least = 0.0;
+    for (int k = 0; k < 3; ++k) {
+        const Lobe& L = kLobes[k];
+        const double v = (x - L.x) * (x - L.x) / L.rx + (y - L.y) * (y - L.y) / L.ry + L.dh;
+        if (k == 0 || v < least) {
+            best = k;
+            least = v;
+        }
+    }
+    if (h) *h = least;
+    return best;
+}
+
+Gap three_lobes()
+{
+    const double d = 0.4e-3;
+    return make_gap(28, 64, d, d, -13.5 * d, -31.5 * d, [](double x, double y) {
+        double h = 0.0;
+        nearest_lobe(x, y, &h);
+        return h;
+    });
+}
+
+// Data rows (not comments) of a whitespace-separated gnuplot data file.
+std::vector<std::vector<double>> data_rows(const std::string& path)
+{
+    std::vector<std::vector<double>> rows;
+    std::ifstream f(path);
+    for (std::string line; std::getline(f, line);) {
+        if (line.empty() || line[0] == '#') continue;
+        std::istringstream ss(line);
+        std::vector<double> row;
+        for (double v; ss >> v;) row.push_back(v);
+        rows.push_back(row);
+    }
+    return rows;
+}
+
+// solve --gap --out draws its pictures (gap_plots.hpp) from files in
+// gnuplot/: patches.dat holds one row per separate patch, the labels of the
+// slip/adhesion map at the patches' centroids.
+void writes_pictures(void**)
+{
+    const Gap g = three_lobes();
+    const std::string file = write_gap(g, "three_lobes.csv");
+    const std::string out = cwtest::g_tools.scratch + "/pictures";
+    const std::vector<std::string> run = {"solve", "--gap", file, "--N", "30e3", "--xi-x", "1e-3",
+                                          "--xi-y", "-5e-4", "--spin", "0.2", "--format", "json"};
+    if (std::getenv("CW_TEST_NO_GNUPLOT")) cw_skip();
+    const cwtest::Json j =
+        cwtest::parse_json(cwtest::cli_ok(cwtest::with(run, {"--out", out})).out);
+
+    // Three patches by construction: a contact cell has h < approach (the
+    // surfaces' displacement there is positive), and every cell next to a
+    // cell of another lobe lies above the approach, so no contact path joins
+    // two lobes (61 um against 40 um); each lobe's lowest point lies at least
+    // 30 um below it.
+    const double approach = j.num("approach");
+    const int nx = g.grid.nx, ny = g.grid.ny;
+    const auto lobe_of = [&g](int i, int jy) {
+        return nearest_lobe(g.grid.x0 + i * g.grid.dx, g.grid.y0 + jy * g.grid.dy);
+    };
+    double ridge = 1.0; // the lowest cell of a 4-neighbour pair from two lobes
+    for (int jy = 0; jy < ny; ++jy)
+        for (int i = 0; i < nx; ++i) {
+            const double h = g.h[i + nx * jy];
+            if (i + 1 < nx && lobe_of(i + 1, jy) != lobe_of(i, jy))
+                ridge = std::min({ridge, h, g.h[i + 1 + nx * jy]});
+            if (jy + 1 < ny && lobe_of(i, jy + 1) != lobe_of(i, jy))
+                ridge = std::min({ridge, h, g.h[i + nx * (jy + 1)]});
+        }
+    assert_true(ridge > approach);
+    for (const Lobe& L : kLobes) assert_true(L.dh < approach - 30e-6);
+    assert_int_equal(static_cast<int>(j.num("n_patches")), 3);
+
+    for (const char* png : {"patch.png", "gap.png", "pressure.png", "slip_adhesion.png",
+                            "traction_x.png", "traction_y.png", "work.png"}) {
+        const std::string data = cwtest::slurp(out + "/" + png);
+        if (!(data.size() > 5000 && data.compare(0, 8, "\x89PNG\r\n\x1a\n") == 0))
+            fail_msg("%s is not a PNG picture (%zu bytes)", png, data.size());
+    }
+    // The labels: one row per patch of result.json, at its centroid (mm in
+    // SI pictures), each inside its own lobe, in the library's order.
+    const cwtest::Json file_json = cwtest::parse_json(cwtest::slurp(out + "/result.json"));
+    const std::vector<std::vector<double>> rows = data_rows(out + "/gnuplot/patches.dat");
+    assert_int_equal(rows.size(), static_cast<size_t>(file_json.num("n_patches")));
+    assert_int_equal(rows.size(), 3);
+    for (size_t k = 0; k < rows.size(); ++k) {
+        const cwtest::Json& p = file_json.at("patches").array[k];
+        assert_int_equal(static_cast<int>(rows[k][0]), static_cast<int>(k));
+        assert_close(rows[k][1], 1e3 * p.num("x_centroid"), 1e-8, 1e-12);
+        assert_close(rows[k][2], 1e3 * p.num("y_centroid"), 1e-8, 1e-12);
+        assert_int_equal(static_cast<int>(rows[k][3]), static_cast<int>(p.num("n_contact")));
+        assert_int_equal(nearest_lobe(p.num("x_centroid"), p.num("y_centroid")), static_cast<int>(k));
+    }
+    // The gap map covers every cell; the script draws the labels from patches.dat.
+    assert_int_equal(data_rows(out + "/gnuplot/gap.dat").size(), 28 * 64);
+    assert_true(cwtest::contains(cwtest::slurp(out + "/gnuplot/gap.gp"),
+                                 "'gnuplot/patches.dat' using 2:3:(sprintf('patch %d', int($1)))"));
+
+    // --no-plots: the data files only.
+    const std::string bare = cwtest::g_tools.scratch + "/bare";
+    cwtest::cli_ok(cwtest::with(run, {"--out", bare, "--no-plots"}));
+    assert_true(fs::exists(bare + "/result.json"));
+    assert_false(fs::exists(bare + "/patch.png"));
+    assert_false(fs::exists(bare + "/gnuplot"));
+}
+
 void expect_usage_error(const std::vector<std::string>& args, const std::string& names)
 {
     const cwtest::Run r = cwtest::cli(args);
@@ -223,6 +354,8 @@ void bad_gaps_fail_cleanly(void**)
     expect_usage_error({"solve", "--gap", good}, "--N");
     expect_usage_error({"solve", "--gap", good, "--N", "1e3", "--approach", "1e-5"}, "not both");
     expect_usage_error({"solve", "--gap", good, "--N", "1e3", "--jacobian"}, "--jacobian");
+    expect_usage_error({"solve", "--gap", good, "--N", "1e3", "--plot-axes", "normalised"},
+                       "--plot-axes");
     expect_usage_error({"solve", "--a", "6e-3", "--b", "6e-3", "--N", "1e3", "--approach", "1e-5"},
                        "--approach: only used with --gap");
     // The good file solves.
@@ -237,6 +370,7 @@ int main(int argc, char** argv)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(json_matches_library),
         cmocka_unit_test(bad_gaps_fail_cleanly),
+        cmocka_unit_test(writes_pictures),
     };
     return cw_run_tests(tests, cwtest::g_tools.test);
 }
