@@ -1,12 +1,15 @@
-// A solved wheel/rail patch (cw_wheelrail_get_patch_field, _get_patch_state,
-// _patch_solver, cw_wheelrail_add_wear): its solver's fields turned into the
-// wheel/rail conventions, and its wear placed on the profiles.
+// A solved wheel/rail position in depth (cw_wheelrail_get_patch_field,
+// _get_patch_state, _patch_solver, cw_wheelrail_add_wear,
+// cw_wheelrail_get_profile): a patch's solver fields turned into the
+// wheel/rail conventions, its wear placed on the profiles, and the profiles
+// where the position put them.
 //
 // The patch solver works in creepwork's frame: x along the track, y = -s,
 // forces and slips of the wheel (doc/wheelrail.md). Its row j holds s =
 // field_s0 + (ny - 1 - j) ds, so rows are read in reverse; the rail's
 // traction along x and its slip relative to the wheel are the negatives of
 // the wheel's, and along s (= -y) they keep their sign.
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -194,6 +197,30 @@ int cw_wheelrail_add_wear(const cw_wheelrail* wheelrail, const cw_wear_params* p
         for (cw_wear_profile* acc : {rail, wheel})
             if (acc) acc->acc = std::move(next[m++]);
         if (result) write_struct(result, sum);
+        return CW_OK;
+    });
+}
+
+int cw_wheelrail_get_profile(const cw_wheelrail* wheelrail, int which, double* y, double* z, size_t len,
+                             size_t* count)
+{
+    if (!wheelrail) return CW_ERR_NULL_POINTER;
+    return guarded(&wheelrail->last_error, [&] {
+        require(count, "count");
+        if (which != CW_WHEELRAIL_RAIL && which != CW_WHEELRAIL_WHEEL)
+            fail(CW_ERR_UNKNOWN_OPTION, "which = " + std::to_string(which) +
+                                            " is neither CW_WHEELRAIL_RAIL (0) nor CW_WHEELRAIL_WHEEL (1)");
+        if (!wheelrail->solved) fail(CW_ERR_NO_SOLUTION, "no successful cw_wheelrail_solve on this handle");
+        std::vector<double> py, pz;
+        wheelrail->contact.geometry().profile_in_track(which == CW_WHEELRAIL_RAIL, py, pz);
+        *count = py.size();
+        if (len < py.size())
+            fail(CW_ERR_BUFFER_TOO_SMALL, "len = " + std::to_string(len) + " is below the profile's " +
+                                              std::to_string(py.size()) + " points");
+        require(y, "y");
+        require(z, "z");
+        std::copy(py.begin(), py.end(), y);
+        std::copy(pz.begin(), pz.end(), z);
         return CW_OK;
     });
 }

@@ -26,6 +26,7 @@ module creepwork_wheelrail
       procedure :: get_patch_field => wheelrail_get_patch_field
       procedure :: get_patch_state => wheelrail_get_patch_state
       procedure :: add_wear => wheelrail_add_wear
+      procedure :: get_profile => wheelrail_get_profile
       procedure, nopass :: noun => wheelrail_noun
    end type cw_wheelrail_type
 
@@ -227,6 +228,33 @@ contains
       if (present(errmsg)) call set_errmsg(o, errmsg)
       call deliver(o, stat)
    end subroutine wheelrail_add_wear
+
+   ! The rail's (which = CW_WHEELRAIL_RAIL) or the wheel's profile points in
+   ! track coordinates at the last solve's position, into y and z
+   ! (allocated here to the number of points).
+   subroutine wheelrail_get_profile(self, which, y, z, stat, errmsg)
+      class(cw_wheelrail_type), intent(in) :: self
+      integer, intent(in) :: which
+      real(c_double), allocatable, intent(out) :: y(:), z(:)
+      integer, intent(out), optional :: stat
+      character(len=:), allocatable, intent(out), optional :: errmsg
+      integer(c_size_t) :: count
+      integer(c_int) :: status
+      real(c_double) :: none(1)
+      type(outcome) :: o
+      o = created(self)
+      if (o%status == CW_OK) then
+         count = 0
+         status = capi_wheelrail_get_profile(handle_of(self), int(which, c_int), none, none, 0_c_size_t, count)
+         if (status == CW_ERR_BUFFER_TOO_SMALL .or. status == CW_OK) then
+            allocate (y(count), z(count))
+            status = capi_wheelrail_get_profile(handle_of(self), int(which, c_int), y, z, count, count)
+         end if
+         o = status_outcome(self, status)
+      end if
+      if (present(errmsg)) call set_errmsg(o, errmsg)
+      call deliver(o, stat)
+   end subroutine wheelrail_get_profile
 
    ! created(self) and k >= 1.
    function patch_index_checked(self, k) result(o)

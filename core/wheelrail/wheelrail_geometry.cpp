@@ -166,4 +166,18 @@ const WheelRailState& WheelRailGeometry::evaluate(const WheelsetPosition& pos, c
     return state_;
 }
 
+void WheelRailGeometry::profile_in_track(bool rail, std::vector<double>& y, std::vector<double>& z) const
+{
+    const double sgn = side_ == Side::right ? 1.0 : -1.0;
+    const Profile& p = rail ? rail_track_ : wheel_;
+    const Frame f = rail ? Frame{} : wheelset_in_track(state_.position, wheelset_, side_).compose(wheel_ws_);
+    y.resize(static_cast<std::size_t>(p.size()));
+    z.resize(y.size());
+    for (std::size_t k = 0; k < y.size(); ++k) {
+        const Vec3 t = f.to_parent(Vec3(0.0, p.knots_y()[k], p.knots_z()[k]));
+        y[k] = sgn * t(1);
+        z[k] = t(2);
+    }
+}
+
 } // namespace creepwork::wheelrail

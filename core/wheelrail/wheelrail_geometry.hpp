@@ -73,6 +73,10 @@ public:
     // The patches at a prescribed wheelset position.
     const WheelRailState& evaluate(const WheelsetPosition& position, const WheelsetVelocity& velocity);
     const WheelRailState& state() const { return state_; }
+    // The rail's or the wheel's profile knots in track coordinates at the
+    // last evaluated position (y un-mirrored on the left side, z down): the
+    // rail as placed, the wheel in the wheelset's plane through the axle.
+    void profile_in_track(bool rail, std::vector<double>& y, std::vector<double>& z) const;
 
     Side side() const { return side_; }
     const Track& track() const { return track_; }

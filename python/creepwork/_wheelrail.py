@@ -152,3 +152,22 @@ class WheelRail(Handle):
         self._check(lib.cw_wheelrail_add_wear(self._live(), address(rec), float(passes), handles[0],
                                               handles[1], address(res)))
         return _totals(res)
+
+    def profile(self, which: str = "rail"):
+        """The rail's ("rail") or the wheel's ("wheel") profile points in
+        track coordinates at the last solve's position: (y, z) arrays [m], z
+        down; the wheel in the wheelset's plane through the axle."""
+        ids = {"rail": CONSTANTS["CW_WHEELRAIL_RAIL"], "wheel": CONSTANTS["CW_WHEELRAIL_WHEEL"]}
+        if which not in ids:
+            raise _errors.BY_STATUS[CONSTANTS["CW_ERR_UNKNOWN_OPTION"]](
+                "which %r is not 'rail' or 'wheel'" % (which,))
+        count = ctypes.c_size_t(0)
+        status = lib.cw_wheelrail_get_profile(self._live(), ids[which], None, None, 0,
+                                              ctypes.byref(count))
+        if status != CONSTANTS["CW_ERR_BUFFER_TOO_SMALL"]:
+            self._check(status)
+        yz = np.empty((2, count.value))
+        base = address(yz)
+        self._check(lib.cw_wheelrail_get_profile(self._handle, ids[which], base, base + 8 * yz.shape[1],
+                                                 yz.shape[1], ctypes.byref(count)))
+        return yz[0], yz[1]

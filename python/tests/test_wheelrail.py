@@ -92,3 +92,20 @@ def test_fast_model_follows_exact():
         pf = f.solve(Fz=1e4, **MOTION)[1][0]
         for name in ("Fn", "Fx", "Fs"):
             assert pf[name] == pytest.approx(pe[name], abs=0.03 * 0.3 * pe["Fn"])
+
+
+def test_profiles_meet_at_the_contact():
+    """The contact point lies on the rail's profile and within the patch's
+    approach of the wheel's, in track coordinates."""
+    with creepwork.WheelRail(RAIL, WHEEL) as w:
+        _, patches = w.solve(Fz=1e4, **MOTION)
+        p = patches[0]
+        for which, bound in (("rail", 1e-6), ("wheel", p["approach"] + 2e-6)):
+            y, z = w.profile(which)
+            ey, ez = np.diff(y), np.diff(z)
+            t = ((p["y_contact"] - y[:-1]) * ey + (p["z_contact"] - z[:-1]) * ez) / (ey ** 2 + ez ** 2)
+            t = np.clip(t, 0.0, 1.0)
+            d = np.hypot(y[:-1] + t * ey - p["y_contact"], z[:-1] + t * ez - p["z_contact"]).min()
+            assert d <= bound
+        with pytest.raises(creepwork.UnknownOptionError, match="'axle'"):
+            w.profile("axle")

@@ -23,7 +23,7 @@ program test_fortran_wheelrail
    type(cw_wear_params) :: law
    type(cw_wear_result) :: worn
    type(cw_wear_profile_totals) :: wt
-   real(c_double), allocatable :: area(:), pz(:), nodes(:)
+   real(c_double), allocatable :: area(:), pz(:), nodes(:), py(:), pzz(:)
    integer :: i
    character(len=:), allocatable :: errmsg
    integer :: stat
@@ -68,6 +68,11 @@ program test_fortran_wheelrail
    call w%get_patch_field(1, CW_FIELD_PZ, pz(1:3), stat=stat)
    call check_int(stat, int(CW_ERR_BUFFER_TOO_SMALL), 'short buffer: stat')
    call rail%destroy()
+   ! the rail's profile in track coordinates passes through the contact point
+   call w%get_profile(CW_WHEELRAIL_RAIL, py, pzz)
+   call check_true(size(py) > 100 .and. size(pzz) == size(py), 'rail profile points')
+   call check_true(minval(hypot(py - pa%y_contact, pzz - pa%z_contact)) < 1e-3_c_double, &
+                   'rail profile near the contact point')
 
    m%z = t%z
    call w%solve(m, h)
@@ -87,6 +92,6 @@ program test_fortran_wheelrail
    call check_true(index(errmsg, 'no/such/rail.prr') > 0, 'file named: '//errmsg)
    call check_true(.not. w%is_created(), 'not created after an error')
    ! A main program's allocatables are never freed for it (LeakSanitizer).
-   deallocate (errmsg, area, pz, nodes)
+   deallocate (errmsg, area, pz, nodes, py, pzz)
    call test_summary('test_fortran_wheelrail')
 end program test_fortran_wheelrail

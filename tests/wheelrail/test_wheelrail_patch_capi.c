@@ -274,6 +274,54 @@ static void fast_model_follows_exact(void** state)
     cw_wheelrail_destroy(f);
 }
 
+/* Least distance from (y, z) to the polyline through the points. */
+static double distance_to(const double* py, const double* pz, size_t n, double y, double z)
+{
+    double best = INFINITY;
+    for (size_t k = 0; k + 1 < n; ++k) {
+        const double ey = py[k + 1] - py[k], ez = pz[k + 1] - pz[k], len2 = ey * ey + ez * ez;
+        double t = len2 > 0 ? ((y - py[k]) * ey + (z - pz[k]) * ez) / len2 : 0.0;
+        t = t < 0 ? 0 : t > 1 ? 1 : t;
+        const double dy = py[k] + t * ey - y, dz = pz[k] + t * ez - z;
+        best = fmin(best, sqrt(dy * dy + dz * dz));
+    }
+    return best;
+}
+
+/* The profiles where the position puts them: the contact reference point
+ * (track coordinates) lies on the rail's surface, and the wheel's profile
+ * passes it within the patch's approach (the rigid overlap at the height
+ * found), on both sides. */
+static void profiles_meet_at_the_contact(void** state)
+{
+    (void)state;
+    for (int side = CW_WHEELRAIL_RIGHT; side <= CW_WHEELRAIL_LEFT; ++side) {
+        cw_wheelrail* w = solved(side, CW_MODEL_EXACT, CW_NORMAL_EXACT, CW_SOLVE_FORCES);
+        const cw_wheelrail_patch p = patch0(w);
+        size_t n = 0;
+        assert_int_equal(cw_wheelrail_get_profile(w, CW_WHEELRAIL_RAIL, NULL, NULL, 0, &n), CW_ERR_BUFFER_TOO_SMALL);
+        assert_true(n > 100);
+        double* y = malloc(n * sizeof *y);
+        double* z = malloc(n * sizeof *z);
+        size_t got = 0;
+        assert_int_equal(cw_wheelrail_get_profile(w, CW_WHEELRAIL_RAIL, y, z, n, &got), CW_OK);
+        assert_int_equal((int)got, (int)n);
+        assert_true(distance_to(y, z, n, p.y_contact, p.z_contact) < 1e-6);
+        free(y), free(z);
+        assert_int_equal(cw_wheelrail_get_profile(w, CW_WHEELRAIL_WHEEL, NULL, NULL, 0, &n), CW_ERR_BUFFER_TOO_SMALL);
+        y = malloc(n * sizeof *y);
+        z = malloc(n * sizeof *z);
+        assert_int_equal(cw_wheelrail_get_profile(w, CW_WHEELRAIL_WHEEL, y, z, n, &got), CW_OK);
+        const double d = distance_to(y, z, n, p.y_contact, p.z_contact);
+        assert_true(d <= p.approach + 2e-6);
+        free(y), free(z);
+        assert_int_equal(cw_wheelrail_get_profile(w, 7, NULL, NULL, 0, &n), CW_ERR_UNKNOWN_OPTION);
+        assert_non_null(strstr(cw_wheelrail_last_error(w), "which = 7"));
+        assert_int_equal(cw_wheelrail_get_profile(w, CW_WHEELRAIL_RAIL, NULL, NULL, 0, NULL), CW_ERR_NULL_POINTER);
+        cw_wheelrail_destroy(w);
+    }
+}
+
 static void errors_name_their_input(void** state)
 {
     (void)state;
@@ -344,6 +392,7 @@ int main(int argc, char** argv)
         cmocka_unit_test(wear_lands_where_documented),
         cmocka_unit_test(sides_mirror),
         cmocka_unit_test(fast_model_follows_exact),
+        cmocka_unit_test(profiles_meet_at_the_contact),
         cmocka_unit_test(errors_name_their_input),
     };
     return cw_run_tests(tests, argc > 1 ? argv[1] : NULL);

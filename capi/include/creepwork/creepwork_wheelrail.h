@@ -24,6 +24,8 @@ typedef struct cw_wheelrail cw_wheelrail;
 
 #define CW_WHEELRAIL_RIGHT 0 /* cw_wheelrail_params.side */
 #define CW_WHEELRAIL_LEFT 1
+#define CW_WHEELRAIL_RAIL 0   /* cw_wheelrail_get_profile */
+#define CW_WHEELRAIL_WHEEL 1
 #define CW_WHEELRAIL_FORCE 0  /* cw_wheelrail_solve: vertical force prescribed */
 #define CW_WHEELRAIL_HEIGHT 1 /* cw_wheelrail_solve: wheelset height prescribed */
 
@@ -199,6 +201,17 @@ CW_API const cw_solver* cw_wheelrail_patch_solver(const cw_wheelrail* wheelrail,
 CW_API int cw_wheelrail_add_wear(const cw_wheelrail* wheelrail, const cw_wear_params* params,
                                  double passes, cw_wear_profile* rail, cw_wear_profile* wheel,
                                  cw_wear_result* result);
+
+/* The points of the rail's or the wheel's profile (which: CW_WHEELRAIL_RAIL
+ * or CW_WHEELRAIL_WHEEL) in track coordinates at the last solve's position,
+ * y[k], z[k] [m] (z down), k < *count: the rail as placed, the wheel in the
+ * wheelset's plane through the axle; for pictures and checks. len is the
+ * room in y and z; *count is set to the number of points also when it
+ * exceeds len (then CW_ERR_BUFFER_TOO_SMALL). y or z may be NULL with len 0
+ * to ask for the count. Errors: CW_ERR_NULL_POINTER, CW_ERR_NO_SOLUTION,
+ * CW_ERR_UNKNOWN_OPTION (which), CW_ERR_BUFFER_TOO_SMALL. */
+CW_API int cw_wheelrail_get_profile(const cw_wheelrail* wheelrail, int which, double* y, double* z,
+                                    size_t len, size_t* count);
 
 /* Message of the last error on this handle ("" after success); owned by
  * the handle, valid until its next call; "" for NULL. */
