@@ -74,6 +74,7 @@ private:
     void forward(int cols, int rows);
     // spec_ -> rows_ ([j][i], the first ny rows of nx values): inverse FFT.
     void inverse();
+    static void clear_padding(double* re, double* im, int count, size_t stride, int lines);
     void kernel_spectrum_pair(const std::vector<double>& k1, const std::vector<double>& k2,
                               std::vector<double>& s1, std::vector<double>& s2);
     // u = IFFT(spectrum * FFT(p)) for a real field p and a real spectrum
@@ -82,6 +83,7 @@ private:
     int part_index(int k, int l) const { return k + (kmax_ + 1) * l; }
 
     int nx_, ny_, mx_, my_, kmax_ = 0, lmax_ = 0;
+    size_t sy_ = 0; // elements of the spectrum's batches along x: my_ lines and padding
     double rho_ = -1.0, nu_ = -1.0;
     BatchedFft fft_x_, fft_y_;
     // Tabulated nu-free parts for 0 <= k <= kmax_, 0 <= l <= lmax_.
@@ -91,8 +93,10 @@ private:
     std::vector<double> kern1_, kern2_;
     std::vector<double> alpha_, beta_re_, beta_im_, k33_, k33_inv_;
     std::vector<Complex> shift_; // 1 - exp(2 pi i kx / mx): the steady-rolling shift
-    // Work: the field by rows [j][i] (my x mx capacity), the spectrum
-    // [kx][ky], and the transforms' scratch; real and imaginary parts apart.
+    // Work: the field by rows [j][i], the spectrum [kx][ky], and the
+    // transforms' scratch; real and imaginary parts apart. A batch's lines
+    // are padded (line_stride in the .cpp): rows [j * rc + i], spectrum
+    // [kx * sy_ + ky].
     std::vector<double> rows_re_, rows_im_, spec_re_, spec_im_, work_;
 };
 
