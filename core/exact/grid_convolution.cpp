@@ -20,8 +20,8 @@ int line_stride(int lines) { return lines % 16 == 0 ? lines + 4 : lines; }
 
 } // namespace
 
-GridConvolution::GridConvolution(int nx, int ny)
-    : nx_(nx), ny_(ny),
+GridConvolution::GridConvolution(int nx, int ny, ConvolutionUse use)
+    : nx_(nx), ny_(ny), nx_max_(nx), ny_max_(ny), use_(use),
       // The steady shift needs A(k + 1) for k up to nx - 1, and the kernels
       // are stored symmetrically (real spectra): offsets -nx..nx along x
       // without wrap-around, -(ny - 1)..(ny - 1) along y.
@@ -39,9 +39,9 @@ GridConvolution::GridConvolution(int nx, int ny)
     corner_work_.resize(3 * static_cast<size_t>(kmax_ + 2) * (lmax_ + 2));
     const size_t m = static_cast<size_t>(mx_) * my_;
     sy_ = line_stride(my_);
-    // The largest batch: the padded field by rows (my lines of up to mx
-    // columns and padding) or by columns (mx lines of my and padding);
-    // line_stride adds at most 4.
+    // The largest batch of any size up to this one: the padded field by rows
+    // (my lines of mx columns and padding) or by columns (mx lines of my and
+    // padding); line_stride adds at most 4.
     const size_t cap = static_cast<size_t>(mx_ + 4) * (my_ + 4);
     kern1_.resize(m);
     kern2_.resize(m);
@@ -51,15 +51,36 @@ GridConvolution::GridConvolution(int nx, int ny)
     k33_.resize(m);
     k33_inv_.resize(m);
     shift_.resize(mx_);
-    for (int kx = 0; kx < mx_; ++kx) {
-        const double t = 2.0 * kPi * kx / mx_;
-        shift_[kx] = Complex(1.0 - std::cos(t), -std::sin(t));
-    }
+    set_shift();
     rows_re_.assign(cap, 0.0);
     rows_im_.assign(cap, 0.0);
     spec_re_.assign(cap, 0.0);
     spec_im_.assign(cap, 0.0);
     work_.assign(2 * cap, 0.0);
+}
+
+void GridConvolution::set_shift()
+{
+    for (int kx = 0; kx < mx_; ++kx) {
+        const double t = 2.0 * kPi * kx / mx_;
+        shift_[kx] = Complex(1.0 - std::cos(t), -std::sin(t));
+    }
+}
+
+bool GridConvolution::set_size(int nx, int ny)
+{
+    nx_ = nx;
+    ny_ = ny;
+    const int mx = BatchedFft::good_size(2 * nx + 1), my = BatchedFft::good_size(2 * ny - 1);
+    if (mx == mx_ && my == my_) return false;
+    mx_ = mx;
+    my_ = my;
+    sy_ = line_stride(my_);
+    fft_x_.plan(mx_);
+    fft_y_.plan(my_);
+    set_shift();
+    spectra_ready_ = false;
+    return true;
 }
 
 double GridConvolution::cf11(int k, int l) const
@@ -89,19 +110,43 @@ double GridConvolution::cf33(int k, int l) const
 bool GridConvolution::set_coefficients(double rho, double nu)
 {
     if (rho == rho_ && nu == nu_) return false;
-    const bool geometry = rho != rho_;
-    rho_ = rho;
-    nu_ = nu;
-    if (geometry)
+    if (rho != rho_)
         influence_quadrant(kmax_, lmax_, rho, X_.data(), Y_.data(), R_.data(),
                            corner_work_.data());
+    rho_ = rho;
+    nu_ = nu;
+    spectra_ready_ = false;
+    return true;
+}
 
-    // Real-space kernels on the padded grid, offsets -nx..nx along x and
-    // -(ny-1)..(ny-1) along y, zero elsewhere.
+bool GridConvolution::copy_coefficients(const GridConvolution& from)
+{
+    if (from.rho_ == rho_ && from.nu_ == nu_) return false;
+    if (from.rho_ != rho_) {
+        std::copy(from.X_.begin(), from.X_.end(), X_.begin());
+        std::copy(from.Y_.begin(), from.Y_.end(), Y_.begin());
+        std::copy(from.R_.begin(), from.R_.end(), R_.begin());
+    }
+    rho_ = from.rho_;
+    nu_ = from.nu_;
+    spectra_ready_ = false;
+    return true;
+}
+
+void GridConvolution::compute_spectra()
+{
+    spectra_ready_ = true;
+    // Real-space kernels on the padded grid, offsets -ex..ex along x and
+    // -(ey-1)..(ey-1) along y, zero elsewhere: the largest field this FFT
+    // size holds without wrap-around, within the tabulated offsets (the
+    // constructor's nx x ny field: ex = nx, ey = ny). So the spectra depend
+    // on the FFT size only, not on the field's size below it.
+    const int ex = std::min(nx_max_, (mx_ - 1) / 2), ey = std::min(ny_max_, (my_ + 1) / 2);
+    const size_t m = static_cast<size_t>(mx_) * my_;
     auto fill = [&](auto value, std::vector<double>& out) {
-        std::fill(out.begin(), out.end(), 0.0);
-        for (int l = -(ny_ - 1); l <= ny_ - 1; ++l)
-            for (int k = -nx_; k <= nx_; ++k)
+        std::fill(out.begin(), out.begin() + m, 0.0);
+        for (int l = -(ey - 1); l <= ey - 1; ++l)
+            for (int k = -ex; k <= ex; ++k)
                 out[(k < 0 ? k + mx_ : k) + static_cast<size_t>(mx_) * (l < 0 ? l + my_ : l)] =
                     value(k, l);
     };
@@ -109,27 +154,31 @@ bool GridConvolution::set_coefficients(double rho, double nu)
     fill([&](int k, int l) { return cf33(k, l); }, kern2_);
     kernel_spectrum_pair(kern1_, kern2_, alpha_, k33_);
 
-    // The preconditioner: the kernel over the whole periodic cell, not cut
-    // off at the grid's offsets. Cut off, its spectrum has negative values
-    // when dy != dx (measured: a/b = 2 on 24 x 24 and 44 x 44 grids); over
-    // the whole cell it stayed positive for dy/dx = 0.05 ... 20 (min/max
-    // 1e-3 ... 1e-2). The clamp only keeps the inverse finite regardless.
-    for (int l = 0; l < my_; ++l)
-        for (int k = 0; k < mx_; ++k) {
-            const int kk = k <= mx_ / 2 ? k : k - mx_, ll = l <= my_ / 2 ? l : l - my_;
-            kern1_[k + static_cast<size_t>(mx_) * l] = cf33(kk, ll);
-        }
-    std::fill(kern2_.begin(), kern2_.end(), 0.0);
-    kernel_spectrum_pair(kern1_, kern2_, k33_inv_, beta_re_); // beta_re_: scratch here
-    // k33_inv_ holds spectrum / (mx my); the inverse needs 1 / (spectrum mx my).
-    const double m2 = static_cast<double>(mx_) * my_ * static_cast<double>(mx_) * my_;
-    double largest = 0.0;
-    for (double v : k33_inv_) largest = std::max(largest, v);
-    for (double& v : k33_inv_) v = 1.0 / (std::max(v, 1e-6 * largest) * m2);
-    fill([&](int k, int l) { return 0.5 * (cf11(k, l) - cf22(k, l)); }, kern1_);
-    fill([&](int k, int l) { return cf12(k, l); }, kern2_);
-    kernel_spectrum_pair(kern1_, kern2_, beta_re_, beta_im_);
-    return true;
+    if (use_ != ConvolutionUse::tangential) {
+        // The preconditioner: the kernel over the whole periodic cell, not cut
+        // off at the grid's offsets. Cut off, its spectrum has negative values
+        // when dy != dx (measured: a/b = 2 on 24 x 24 and 44 x 44 grids); over
+        // the whole cell it stayed positive for dy/dx = 0.05 ... 20 (min/max
+        // 1e-3 ... 1e-2). The clamp only keeps the inverse finite regardless.
+        for (int l = 0; l < my_; ++l)
+            for (int k = 0; k < mx_; ++k) {
+                const int kk = k <= mx_ / 2 ? k : k - mx_, ll = l <= my_ / 2 ? l : l - my_;
+                kern1_[k + static_cast<size_t>(mx_) * l] = cf33(kk, ll);
+            }
+        std::fill(kern2_.begin(), kern2_.begin() + m, 0.0);
+        kernel_spectrum_pair(kern1_, kern2_, k33_inv_, beta_re_); // beta_re_: scratch here
+        // k33_inv_ holds spectrum / (mx my); the inverse needs 1 / (spectrum mx my).
+        const double m2 = static_cast<double>(mx_) * my_ * static_cast<double>(mx_) * my_;
+        double largest = 0.0;
+        for (size_t i = 0; i < m; ++i) largest = std::max(largest, k33_inv_[i]);
+        for (size_t i = 0; i < m; ++i)
+            k33_inv_[i] = 1.0 / (std::max(k33_inv_[i], 1e-6 * largest) * m2);
+    }
+    if (use_ != ConvolutionUse::normal) {
+        fill([&](int k, int l) { return 0.5 * (cf11(k, l) - cf22(k, l)); }, kern1_);
+        fill([&](int k, int l) { return cf12(k, l); }, kern2_);
+        kernel_spectrum_pair(kern1_, kern2_, beta_re_, beta_im_);
+    }
 }
 
 // Two real kernels with real spectra (even, or odd in both directions) in one
@@ -281,15 +330,21 @@ void GridConvolution::real_product(const double* p, double* u,
         }
 }
 
-void GridConvolution::apply_normal(const double* p, double* u) { real_product(p, u, k33_); }
+void GridConvolution::apply_normal(const double* p, double* u)
+{
+    if (!spectra_ready_) compute_spectra();
+    real_product(p, u, k33_);
+}
 
 void GridConvolution::apply_normal_inverse(const double* u, double* p)
 {
+    if (!spectra_ready_) compute_spectra();
     real_product(u, p, k33_inv_);
 }
 
 void GridConvolution::apply_tangential(const Complex* z, Complex* s, bool steady)
 {
+    if (!spectra_ready_) compute_spectra();
     const size_t rc = line_stride(nx_);
     for (int j = 0; j < ny_; ++j)
         for (int i = 0; i < nx_; ++i) {
