@@ -65,9 +65,11 @@ GapModel::Level::Level(int nx_, int ny_)
 
 GapModel::GapModel(const GridSpec& grid)
     : grid_(checked_gap_grid(grid)), nx_(grid.nx), ny_(grid.ny),
-      normal_conv_(grid.nx, grid.ny, ConvolutionUse::normal), normal_(grid.nx, grid.ny),
+      normal_conv_(grid.nx, grid.ny, ConvolutionUse::normal),
+      normal_box_conv_(grid.nx, grid.ny, ConvolutionUse::normal), normal_(grid.nx, grid.ny),
       semi_hertz_(grid.nx, grid.ny), labels_(grid.nx, grid.ny)
 {
+    normal_.set_box_convolution(&normal_box_conv_);
     int nx = nx_, ny = ny_;
     levels_.push_back(std::make_unique<Level>(nx, ny));
     while ((nx + 1) / 2 >= kMinCoarseCells && (ny + 1) / 2 >= kMinCoarseCells) {

@@ -130,6 +130,7 @@ private:
     int n_levels_ = 1;                            // those of the contact's box
     int box_i0_ = 0, box_j0_ = 0;                 // its first element (rolling frame)
     GridConvolution normal_conv_;                 // the whole grid: the normal problem
+    GridConvolution normal_box_conv_;             // its products on the contact set's box
     NormalProblem normal_;
     SemiHertz semi_hertz_;
     PatchLabels labels_;
