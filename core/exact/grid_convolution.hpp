@@ -1,5 +1,5 @@
-// Products of the half-space influence coefficients with tractions on the
-// whole uniform grid by FFT: the coefficients depend only on the offset
+// Products of the half-space influence coefficients with tractions on a
+// uniform grid by FFT: the coefficients depend only on the offset
 // between two elements (block Toeplitz), so zero-padding the nx x ny grid to
 // Mx x My >= (2 nx + 1) x (2 ny - 1) turns each product into a circular
 // convolution. The 2D transforms run as batches of 1D transforms
