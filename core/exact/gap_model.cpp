@@ -536,7 +536,8 @@ SolveTotals GapModel::solve(const ContactInput& in, SolveMode mode)
         info_.levels_used = 1;
     } else if (warm) {
         info_.warm = true;
-        // q holds the last solution: predicted along the creepages' drift
+        // traction_ holds the last solution on the whole grid, the start on
+        // this solve's box once predicted along the creepages' drift
         // (the history, kept as physical tractions, outlives changes of the
         // gap or the load: a vehicle loop's gap drifts with its creepages,
         // and the secant step follows both; measured on N07_wide, 37.5 ->
