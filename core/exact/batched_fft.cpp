@@ -182,7 +182,7 @@ int BatchedFft::good_size(int n)
     return best;
 }
 
-BatchedFft::BatchedFft(int n) : n_(n), stage_(&stage_baseline)
+BatchedFft::BatchedFft(int n) : stage_(&stage_baseline)
 {
 #ifdef CW_FFT_X86
     __builtin_cpu_init();
@@ -191,6 +191,21 @@ BatchedFft::BatchedFft(int n) : n_(n), stage_(&stage_baseline)
     else if (__builtin_cpu_supports("avx2"))
         stage_ = &stage_avx2;
 #endif
+    // A length n has at most log2(n) stages and n - 1 twiddles (stage by
+    // stage (r - 1) m = rest - rest / r, a telescoping sum).
+    stages_.reserve(32);
+    tw_re_.reserve(static_cast<size_t>(n));
+    tw_im_.reserve(static_cast<size_t>(n));
+    plan(n);
+}
+
+void BatchedFft::plan(int n)
+{
+    if (n == n_) return;
+    n_ = n;
+    stages_.clear();
+    tw_re_.clear();
+    tw_im_.clear();
     int rest = n, stride = 1;
     while (rest > 1) {
         int r = rest % 4 == 0 ? 4 : rest % 2 == 0 ? 2 : rest % 3 == 0 ? 3 : 5;

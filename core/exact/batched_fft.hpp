@@ -21,6 +21,9 @@ class BatchedFft {
 public:
     explicit BatchedFft(int n); // n = 2^a 3^b 5^c >= 1
     int size() const { return n_; }
+    // Plans length n (2^a 3^b 5^c, 1 <= n <= the constructor's n) in place,
+    // allocating nothing.
+    void plan(int n);
     // In place on (re, im) of n * lines values; work holds 2 n lines.
     void transform(double* re, double* im, int lines, bool inverse, double* work) const;
     // A cheap 2^a 3^b 5^c length >= n (at most 1.1 n; see the .cpp).
@@ -34,7 +37,7 @@ private:
     using StageFunction = void (*)(bool inverse, int radix, int m, int stride, int lines,
                                    const double* xr, const double* xi, double* yr, double* yi,
                                    const double* twr, const double* twi);
-    int n_;
+    int n_ = 0;
     StageFunction stage_; // this CPU's version (AVX-512, AVX2 or baseline)
     std::vector<Stage> stages_;
     std::vector<double> tw_re_, tw_im_;

@@ -10,11 +10,10 @@ namespace creepwork {
 template <class Op>
 void GapModel::export_field(Field f, const Op& op, double* out) const
 {
-    const Level& L = *levels_[0];
     const Setup& s = setup_;
-    const auto& q = L.tangential.traction();
-    const auto& sl = L.tangential.slip();
-    const auto& state = L.tangential.state();
+    const auto& q = traction_;
+    const auto& sl = slip_;
+    const auto& state = state_;
     const double d = s.direction, T = s.traction_scale, area = grid_.dx * grid_.dy;
     for (int j = 0; j < ny_; ++j) {
         const double y = grid_.y0 + j * grid_.dy;
@@ -51,9 +50,8 @@ void GapModel::add_field(Field f, double scale, double* out) const
 
 void GapModel::copy_state(int* out) const
 {
-    const auto& state = levels_[0]->tangential.state();
     for (int j = 0; j < ny_; ++j)
-        for (int i = 0; i < nx_; ++i) out[i + nx_ * j] = state[caller_index(i) + nx_ * j];
+        for (int i = 0; i < nx_; ++i) out[i + nx_ * j] = state_[caller_index(i) + nx_ * j];
 }
 
 void GapModel::copy_profile(double W, double* y, double* work, double* parabola) const

@@ -58,14 +58,18 @@ const GridSpec& checked_gap_grid(const GridSpec& g)
 }
 
 GapModel::Level::Level(int nx_, int ny_)
-    : nx(nx_), ny(ny_), conv(nx_, ny_), tangential(nx_, ny_, kKrylovDimension)
+    : nx(nx_), ny(ny_), conv(nx_, ny_, ConvolutionUse::tangential),
+      tangential(nx_, ny_, kKrylovDimension)
 {
 }
 
 GapModel::GapModel(const GridSpec& grid)
-    : grid_(checked_gap_grid(grid)), nx_(grid.nx), ny_(grid.ny), normal_(grid.nx, grid.ny),
+    : grid_(checked_gap_grid(grid)), nx_(grid.nx), ny_(grid.ny),
+      normal_conv_(grid.nx, grid.ny, ConvolutionUse::normal),
+      normal_box_conv_(grid.nx, grid.ny, ConvolutionUse::normal), normal_(grid.nx, grid.ny),
       semi_hertz_(grid.nx, grid.ny), labels_(grid.nx, grid.ny)
 {
+    normal_.set_box_convolution(&normal_box_conv_);
     int nx = nx_, ny = ny_;
     levels_.push_back(std::make_unique<Level>(nx, ny));
     while ((nx + 1) / 2 >= kMinCoarseCells && (ny + 1) / 2 >= kMinCoarseCells) {
@@ -73,11 +77,9 @@ GapModel::GapModel(const GridSpec& grid)
         ny = (ny + 1) / 2;
         levels_.push_back(std::make_unique<Level>(nx, ny));
     }
-    for (auto& L : levels_) {
-        L->dx = grid.dx * nx_ / L->nx;
-        L->dy = grid.dy * ny_ / L->ny;
-    }
     const size_t n = static_cast<size_t>(nx_) * ny_;
+    for (auto* v : {&traction_, &slip_, &rigid_}) v->assign(n, 0.0);
+    state_.assign(n, 0);
     for (auto* v : {&gap_, &gap_in_dx_, &pressure_, &start_, &held_gap_, &paper_, &consistent_})
         v->assign(n, 0.0);
     in_contact_.assign(n, 0);
@@ -168,7 +170,7 @@ bool GapModel::same_normal_problem(const ContactInput& in) const
 
 void GapModel::solve_normal(const ContactInput& in, bool warm)
 {
-    Level& fine = *levels_[0];
+    const double dx = grid_.dx, dy = grid_.dy;
     const size_t n = static_cast<size_t>(nx_) * ny_;
     const bool force = in.normal_load == NormalLoad::force;
     const double E_star = in.G / (1.0 - in.nu);
@@ -187,7 +189,7 @@ void GapModel::solve_normal(const ContactInput& in, bool warm)
         std::fill(pressure_.begin(), pressure_.end(), 0.0);
         approach = *std::min_element(gap_.begin(), gap_.end()); // the surfaces just touch
     } else if (in.normal_method == NormalMethod::semi_hertz || !from_last) {
-        const SemiHertzResult r = semi_hertz_.solve(gap_.data(), fine.dx, fine.dy, E_star, force,
+        const SemiHertzResult r = semi_hertz_.solve(gap_.data(), dx, dy, E_star, force,
                                                     force ? in.normal_force : in.approach,
                                                     pressure_.data());
         info_.semi_hertz_iterations = r.iterations;
@@ -196,11 +198,10 @@ void GapModel::solve_normal(const ContactInput& in, bool warm)
             for (size_t k = 0; k < n; ++k) start_[k] = pressure_[k] / in.G;
     }
     if (in.normal_method == NormalMethod::exact && !(force && in.normal_force == 0.0)) {
-        for (size_t k = 0; k < n; ++k) gap_in_dx_[k] = gap_[k] / fine.dx;
-        const double value = force ? in.normal_force / (in.G * fine.dx * fine.dy)
-                                   : in.approach / fine.dx;
+        for (size_t k = 0; k < n; ++k) gap_in_dx_[k] = gap_[k] / dx;
+        const double value = force ? in.normal_force / (in.G * dx * dy) : in.approach / dx;
         const NormalSolveInfo ni =
-            normal_.solve_gap(fine.conv, gap_in_dx_.data(), start_.data(), force, value,
+            normal_.solve_gap(normal_conv_, gap_in_dx_.data(), start_.data(), force, value,
                               kNormalTolerance, kNormalMaxIterations, kNormalFirstTolerance);
         info_.normal_iterations += ni.iterations;
         if (!ni.converged)
@@ -210,10 +211,10 @@ void GapModel::solve_normal(const ContactInput& in, bool warm)
                             " iterations)");
         const std::vector<double>& q = normal_.pressure();
         for (size_t k = 0; k < n; ++k) pressure_[k] = q[k] * in.G;
-        approach = normal_.approach() * fine.dx;
+        approach = normal_.approach() * dx;
     }
     for (size_t k = 0; k < n; ++k) total += pressure_[k];
-    held_.force = total * fine.dx * fine.dy;
+    held_.force = total * dx * dy;
     held_.approach = approach;
     held_.load = in.normal_load;
     held_.method = in.normal_method;
@@ -341,6 +342,78 @@ void GapModel::march_start(Level& L, double nu, double G)
     }
 }
 
+// The smallest box of the grid holding the contact (pressure_ > 0; without
+// contact the whole grid), in the rolling frame, is level 0; the coarser
+// levels cover it with half as many cells per direction each while both
+// keep kMinCoarseCells (made ready by the cold start, which alone uses them).
+void GapModel::set_box()
+{
+    int i0 = nx_, i1 = -1, j0 = ny_, j1 = -1;
+    for (int j = 0; j < ny_; ++j)
+        for (int i = 0; i < nx_; ++i)
+            if (pressure_[i + static_cast<size_t>(nx_) * j] > 0.0) {
+                i0 = std::min(i0, i);
+                i1 = std::max(i1, i);
+                j0 = std::min(j0, j);
+                j1 = std::max(j1, j);
+            }
+    if (i1 < 0) i0 = 0, i1 = nx_ - 1, j0 = 0, j1 = ny_ - 1;
+    box_i0_ = i0;
+    box_j0_ = j0;
+    const double left = (setup_.direction > 0 ? grid_.x0 - 0.5 * grid_.dx
+                                              : -(grid_.x0 + (nx_ - 0.5) * grid_.dx)) +
+                        i0 * grid_.dx;
+    const double bottom = grid_.y0 - 0.5 * grid_.dy + j0 * grid_.dy;
+    int nx = i1 - i0 + 1, ny = j1 - j0 + 1;
+    const int bx = nx, by = ny;
+    Level& fine = *levels_[0];
+    fine.nx = nx;
+    fine.ny = ny;
+    fine.conv.set_size(nx, ny);
+    fine.tangential.set_size(nx, ny);
+    fine.conv.copy_coefficients(normal_conv_);
+    fine.dx = grid_.dx;
+    fine.dy = grid_.dy;
+    n_levels_ = 1;
+    while (n_levels_ < static_cast<int>(levels_.size()) && (nx + 1) / 2 >= kMinCoarseCells &&
+           (ny + 1) / 2 >= kMinCoarseCells) {
+        Level& L = *levels_[n_levels_++];
+        nx = (nx + 1) / 2;
+        ny = (ny + 1) / 2;
+        L.nx = nx;
+        L.ny = ny;
+        L.dx = grid_.dx * bx / nx;
+        L.dy = grid_.dy * by / ny;
+    }
+    for (int l = 0; l < n_levels_; ++l) {
+        Level& L = *levels_[l];
+        L.x0 = left + 0.5 * L.dx;
+        L.y0 = bottom + 0.5 * L.dy;
+    }
+}
+
+void GapModel::scatter_box()
+{
+    Level& F = *levels_[0];
+    std::fill(traction_.begin(), traction_.end(), 0.0);
+    std::fill(slip_.begin(), slip_.end(), 0.0);
+    std::fill(rigid_.begin(), rigid_.end(), 0.0);
+    std::fill(state_.begin(), state_.end(), 0);
+    const auto& q = F.tangential.traction();
+    const auto& sl = F.tangential.slip();
+    const auto& w = F.tangential.rigid_slip();
+    const auto& st = F.tangential.state();
+    for (int j = 0; j < F.ny; ++j)
+        for (int i = 0; i < F.nx; ++i) {
+            const size_t b = i + static_cast<size_t>(F.nx) * j;
+            const size_t k = box_i0_ + i + static_cast<size_t>(nx_) * (box_j0_ + j);
+            traction_[k] = q[b];
+            slip_[k] = sl[b];
+            rigid_[k] = w[b];
+            state_[k] = st[b];
+        }
+}
+
 void GapModel::label_patches(SolveTotals& t)
 {
     // Caller's layout.
@@ -373,15 +446,7 @@ SolveTotals GapModel::solve(const ContactInput& in, SolveMode mode)
     s.full = mode == SolveMode::full;
     s.G = G;
 
-    // The levels over the grid's box, in the rolling frame.
-    const double left = s.direction > 0 ? grid_.x0 - 0.5 * grid_.dx
-                                        : -(grid_.x0 + (nx_ - 0.5) * grid_.dx);
-    const double bottom = grid_.y0 - 0.5 * grid_.dy;
-    for (auto& L : levels_) {
-        L->x0 = left + 0.5 * L->dx;
-        L->y0 = bottom + 0.5 * L->dy;
-        L->conv.set_coefficients(L->dy / L->dx, nu);
-    }
+    normal_conv_.set_coefficients(grid_.dy / grid_.dx, nu);
     Level& fine = *levels_[0];
     for (int j = 0; j < ny_; ++j)
         for (int i = 0; i < nx_; ++i) gap_[i + nx_ * j] = in.gap[caller_index(i) + nx_ * j];
@@ -399,6 +464,7 @@ SolveTotals GapModel::solve(const ContactInput& in, SolveMode mode)
     s.traction_scale = in.mu * p_ref;
     SolveTotals t;
     label_patches(t);
+    set_box();
 
     // Rigid slip over mu p_max / G (the rigid slip itself without friction
     // or load), scaled down together beyond kMaxNormalisedCreepage.
@@ -423,16 +489,23 @@ SolveTotals GapModel::solve(const ContactInput& in, SolveMode mode)
     }
 
     std::vector<double>& g = fine.tangential.bound();
-    for (size_t k = 0; k < n; ++k) g[k] = loaded ? pressure_[k] / p_ref : 0.0;
+    for (int j = 0; j < fine.ny; ++j)
+        for (int i = 0; i < fine.nx; ++i) {
+            const double p = pressure_[box_i0_ + i + static_cast<size_t>(nx_) * (box_j0_ + j)];
+            g[i + static_cast<size_t>(fine.nx) * j] = loaded ? p / p_ref : 0.0;
+        }
     set_rigid_slip(fine);
     const bool trivial = !loaded || !(T > 0.0);
 
     SteadyRollingInfo ti;
     auto cold = [&] {
-        const int coarsest = static_cast<int>(levels_.size()) - 1;
+        const int coarsest = n_levels_ - 1;
         for (int l = coarsest; l >= 0; --l) {
             Level& L = *levels_[l];
             if (l > 0) {
+                L.conv.set_size(L.nx, L.ny);
+                L.tangential.set_size(L.nx, L.ny);
+                L.conv.set_coefficients(L.dy / L.dx, nu);
                 sample_bound(fine, L);
                 set_rigid_slip(L);
             }
@@ -463,15 +536,20 @@ SolveTotals GapModel::solve(const ContactInput& in, SolveMode mode)
         info_.levels_used = 1;
     } else if (warm) {
         info_.warm = true;
-        // q holds the last solution: predicted along the creepages' drift
+        // traction_ holds the last solution on the whole grid, the start on
+        // this solve's box once predicted along the creepages' drift
         // (the history, kept as physical tractions, outlives changes of the
         // gap or the load: a vehicle loop's gap drifts with its creepages,
         // and the secant step follows both; measured on N07_wide, 37.5 ->
         // 24.5 FFT products a step with the gap drifting).
-        if (!history_.predict(key, c, q, 1.0 / T)) {
+        if (!history_.predict(key, c, traction_, 1.0 / T)) {
             const double f = previous_traction_scale_ / T;
-            for (size_t k = 0; k < n; ++k) q[k] *= f;
+            for (size_t k = 0; k < n; ++k) traction_[k] *= f;
         }
+        for (int j = 0; j < fine.ny; ++j)
+            for (int i = 0; i < fine.nx; ++i)
+                q[i + static_cast<size_t>(fine.nx) * j] =
+                    traction_[box_i0_ + i + static_cast<size_t>(nx_) * (box_j0_ + j)];
         ti = fine.tangential.solve(fine.conv, tolerance, max_steps);
         info_.products += ti.products;
         info_.levels_used = 1;
@@ -484,10 +562,12 @@ SolveTotals GapModel::solve(const ContactInput& in, SolveMode mode)
     }
     info_.newton_steps = ti.newton_steps;
     require_converged(ti, tolerance);
+    scatter_box();
 
     // Totals and patches in the caller's frame, element by element in the
     // caller's layout.
-    const std::vector<signed char>& state = fine.tangential.state();
+    const std::vector<signed char>& state = state_;
+    const std::vector<SteadyRolling::Complex>& qa = traction_;
     const double area = grid_.dx * grid_.dy, d = s.direction;
     patches_.assign(labels_.count(), PatchTotals{});
     double y_lo = 0.0, y_hi = 0.0, x_lo = 0.0, x_hi = 0.0;
@@ -499,7 +579,7 @@ SolveTotals GapModel::solve(const ContactInput& in, SolveMode mode)
             const int p = labels_.of(c);
             if (p < 0) continue;
             const double x = grid_.x0 + i * grid_.dx;
-            const double px = d * T * q[k].real() * area, py = T * q[k].imag() * area;
+            const double px = d * T * qa[k].real() * area, py = T * qa[k].imag() * area;
             PatchTotals& P = patches_[p];
             ++P.n_contact;
             P.n_slip += state[k] == 2;
@@ -549,9 +629,9 @@ SolveTotals GapModel::solve(const ContactInput& in, SolveMode mode)
         ExactWorkInput w;
         w.nx = nx_;
         w.ny = ny_;
-        w.q = q.data();
-        w.s = fine.tangential.slip().data();
-        w.w = fine.tangential.rigid_slip().data();
+        w.q = traction_.data();
+        w.s = slip_.data();
+        w.w = rigid_.data();
         w.state = state.data();
         w.traction_scale = T;
         w.slip_scale = s.slip_scale;
@@ -566,7 +646,7 @@ SolveTotals GapModel::solve(const ContactInput& in, SolveMode mode)
     }
     has_previous_ = !trivial;
     if (!trivial) previous_traction_scale_ = T;
-    if (!trivial && !rolling_freely) history_.remember(key, c, q, T);
+    if (!trivial && !rolling_freely) history_.remember(key, c, traction_, T);
     return t;
 }
 

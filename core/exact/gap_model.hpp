@@ -12,11 +12,14 @@
 //  2. the tangential problem of steady rolling (steady_rolling.hpp) with the
 //     rigid slip w = (xi - phi y, eta + phi (x + spin_offset dx)) at the
 //     element centres, x and y from the grid's origin; every patch of the
-//     grid at once;
+//     grid at once, on the smallest box of the grid that holds the contact
+//     (tractions vanish outside it, and the influence coefficients depend
+//     only on the offset: the same discrete problem on fewer elements, with
+//     FFTs of the box's size);
 //  3. the separate patches (nonhertz/patches.hpp) and their totals, and in
 //     full mode the work maps (exact_work.hpp).
 // The tangential problem starts from the last solution (warm) or from a
-// hierarchy of coarser grids over the same box, each solved from the one
+// hierarchy of coarser grids over the contact's box, each solved from the one
 // below it, the coarsest from a march of Kalker's simplified theory with the
 // flexibilities of the patches' equivalent ellipses; the coarse grids take
 // the fine pressure interpolated at their centres. When the gap, the load
@@ -113,6 +116,8 @@ private:
     bool same_normal_problem(const ContactInput& in) const;
     void solve_normal(const ContactInput& in, bool warm);
     void set_rigid_slip(Level& L) const;
+    void set_box(); // the tangential problem's box and levels from pressure_
+    void scatter_box(); // level 0's solution onto the whole grid
     void sample_bound(Level& fine, Level& coarse) const; // fine is only read
     void interpolate(const Level& coarse, Level& fine) const;
     void march_start(Level& L, double nu, double G);
@@ -121,7 +126,11 @@ private:
 
     GridSpec grid_;
     int nx_, ny_;
-    std::vector<std::unique_ptr<Level>> levels_; // [0] is the caller's grid
+    std::vector<std::unique_ptr<Level>> levels_; // [0]: the contact's box on the caller's grid
+    int n_levels_ = 1;                            // those of the contact's box
+    int box_i0_ = 0, box_j0_ = 0;                 // its first element (rolling frame)
+    GridConvolution normal_conv_;                 // the whole grid: the normal problem
+    GridConvolution normal_box_conv_;             // its products on the contact set's box
     NormalProblem normal_;
     SemiHertz semi_hertz_;
     PatchLabels labels_;
@@ -151,6 +160,10 @@ private:
         double approach = 0, force = 0;
     } held_;
     std::vector<double> gap_, gap_in_dx_, pressure_, start_, held_gap_;
+    // The tangential solution on the whole grid (rolling frame): traction,
+    // slip, rigid slip and element states (zero outside the box).
+    std::vector<SteadyRolling::Complex> traction_, slip_, rigid_;
+    std::vector<signed char> state_;
     std::vector<signed char> in_contact_;
     std::vector<PatchTotals> patches_;
     std::vector<double> paper_, consistent_, profile_, row_d_, row_pool_;

@@ -1,11 +1,13 @@
-// Products of the half-space influence coefficients with tractions on the
-// whole uniform grid by FFT: the coefficients depend only on the offset
+// Products of the half-space influence coefficients with tractions on a
+// uniform grid by FFT: the coefficients depend only on the offset
 // between two elements (block Toeplitz), so zero-padding the nx x ny grid to
 // Mx x My >= (2 nx + 1) x (2 ny - 1) turns each product into a circular
 // convolution. The 2D transforms run as batches of 1D transforms
 // (batched_fft.hpp): along y for all columns at once, a transpose, along x
-// for all rows at once. Plans, spectra and buffers are made by the
-// constructor and set_coefficients(); apply_*() allocate nothing.
+// for all rows at once. Buffers are made by the constructor for its grid;
+// set_size() runs the products on any smaller field, with FFT lengths for
+// that field. Nothing allocates after the constructor; the spectra are
+// computed by the first product after set_coefficients() or a new FFT length.
 //
 // Tangential products pack the two real traction components into one
 // complex field z = px + i py, so one forward and one inverse complex FFT
@@ -24,12 +26,20 @@
 
 namespace creepwork {
 
+// The products a convolution serves; only their spectra are computed.
+enum class ConvolutionUse { both, normal, tangential };
+
 class GridConvolution {
 public:
     using Complex = std::complex<double>;
 
-    // Throws std::bad_alloc only. nx, ny >= 1.
-    GridConvolution(int nx, int ny);
+    // Throws std::bad_alloc only. nx, ny >= 1: the largest field.
+    GridConvolution(int nx, int ny, ConvolutionUse use = ConvolutionUse::both);
+
+    // The products act on fields of nx x ny elements (1 <= nx, ny <= the
+    // constructor's): the FFT lengths follow, and when they change the plans
+    // and spectra are remade in place (returns true). Allocates nothing.
+    bool set_size(int nx, int ny);
 
     int nx() const { return nx_; }
     int ny() const { return ny_; }
@@ -40,10 +50,13 @@ public:
     // ratio nu (influence.hpp); results scale with dx. Recomputed only when
     // rho or nu change; returns true if they were.
     bool set_coefficients(double rho, double nu);
+    // The coefficients of another convolution of the same largest field
+    // (its tables copied, not recomputed); returns true if they changed.
+    bool copy_coefficients(const GridConvolution& from);
     double rho() const { return rho_; }
     double nu() const { return nu_; }
 
-    // Normal: u[i + nx j] = sum_J cf33(I - J) p[J] (dx = 1). Real fields:
+    // Normal (use both or normal): u[i + nx j] = sum_J cf33(I - J) p[J] (dx = 1). Real fields:
     // two columns go into one complex transform and only half the spectrum
     // is computed (it is Hermitian), about half the work of a tangential
     // product.
@@ -59,6 +72,7 @@ public:
     // steady = true: the steady-rolling shift per element length,
     //   (A z)(I) - (A z)(I + e_x), i.e. the kernel B(k, l) = A(k, l) - A(k + 1, l)
     // (doc/theory/exact-discretisation.md rule 5: the particle now at x_I was at x_I + dq).
+    // Use both or tangential.
     void apply_tangential(const Complex* z, Complex* s, bool steady);
 
     // The coefficients at one offset, tabulated (|k| <= max(nx, fft_nx/2),
@@ -74,6 +88,10 @@ private:
     void forward(int cols, int rows);
     // spec_ -> rows_ ([j][i], the first ny rows of nx values): inverse FFT.
     void inverse();
+    void set_shift();
+    void compute_spectra(); // the kernels' spectra for the FFT size
+    bool spectra_ready_ = false;
+    static void clear_padding(double* re, double* im, int count, size_t stride, int lines);
     void kernel_spectrum_pair(const std::vector<double>& k1, const std::vector<double>& k2,
                               std::vector<double>& s1, std::vector<double>& s2);
     // u = IFFT(spectrum * FFT(p)) for a real field p and a real spectrum
@@ -81,7 +99,10 @@ private:
     void real_product(const double* p, double* u, const std::vector<double>& spectrum);
     int part_index(int k, int l) const { return k + (kmax_ + 1) * l; }
 
-    int nx_, ny_, mx_, my_, kmax_ = 0, lmax_ = 0;
+    int nx_, ny_, nx_max_, ny_max_;
+    ConvolutionUse use_;
+    int mx_, my_, kmax_ = 0, lmax_ = 0;
+    size_t sy_ = 0; // elements of the spectrum's batches along x: my_ lines and padding
     double rho_ = -1.0, nu_ = -1.0;
     BatchedFft fft_x_, fft_y_;
     // Tabulated nu-free parts for 0 <= k <= kmax_, 0 <= l <= lmax_.
@@ -91,8 +112,10 @@ private:
     std::vector<double> kern1_, kern2_;
     std::vector<double> alpha_, beta_re_, beta_im_, k33_, k33_inv_;
     std::vector<Complex> shift_; // 1 - exp(2 pi i kx / mx): the steady-rolling shift
-    // Work: the field by rows [j][i] (my x mx capacity), the spectrum
-    // [kx][ky], and the transforms' scratch; real and imaginary parts apart.
+    // Work: the field by rows [j][i], the spectrum [kx][ky], and the
+    // transforms' scratch; real and imaginary parts apart. A batch's lines
+    // are padded (line_stride in the .cpp): rows [j * rc + i], spectrum
+    // [kx * sy_ + ky].
     std::vector<double> rows_re_, rows_im_, spec_re_, spec_im_, work_;
 };
 

@@ -13,8 +13,56 @@ constexpr double kPi = 3.14159265358979323846;
 } // namespace
 
 NormalProblem::NormalProblem(int nx, int ny)
-    : n_(nx * ny), h_(n_), q_(n_, 0.0), u_(n_), r_(n_), z_(n_), p_(n_), ap_(n_), active_(n_, 0)
+    : n_(nx * ny), nx_(nx), h_(n_), q_(n_, 0.0), u_(n_), r_(n_), z_(n_), p_(n_), ap_(n_),
+      box_in_(n_), box_out_(n_), active_(n_, 0)
 {
+}
+
+void NormalProblem::fit_box(GridConvolution& conv)
+{
+    const int ny = n_ / nx_;
+    int i0 = nx_, i1 = -1, j0 = ny, j1 = -1;
+    for (int j = 0; j < ny; ++j)
+        for (int i = 0; i < nx_; ++i)
+            if (active_[i + static_cast<size_t>(nx_) * j]) {
+                i0 = std::min(i0, i);
+                i1 = std::max(i1, i);
+                j0 = std::min(j0, j);
+                j1 = std::max(j1, j);
+            }
+    if (i1 < 0) i0 = 0, i1 = nx_ - 1, j0 = 0, j1 = ny - 1;
+    box_i0_ = i0;
+    box_j0_ = j0;
+    box_nx_ = i1 - i0 + 1;
+    box_ny_ = j1 - j0 + 1;
+    box_->set_size(box_nx_, box_ny_);
+    box_->copy_coefficients(conv);
+}
+
+void NormalProblem::set_product(GridConvolution& conv, const std::vector<double>& in,
+                                std::vector<double>& out, bool inverse)
+{
+    if (!box_) {
+        if (inverse)
+            conv.apply_normal_inverse(in.data(), out.data());
+        else
+            conv.apply_normal(in.data(), out.data());
+        return;
+    }
+    for (int j = 0; j < box_ny_; ++j)
+        for (int i = 0; i < box_nx_; ++i)
+            box_in_[i + static_cast<size_t>(box_nx_) * j] =
+                in[box_i0_ + i + static_cast<size_t>(nx_) * (box_j0_ + j)];
+    if (inverse)
+        box_->apply_normal_inverse(box_in_.data(), box_out_.data());
+    else
+        box_->apply_normal(box_in_.data(), box_out_.data());
+    // Outside the box (so outside the set) out is never read; zero keeps it tidy.
+    std::fill(out.begin(), out.end(), 0.0);
+    for (int j = 0; j < box_ny_; ++j)
+        for (int i = 0; i < box_nx_; ++i)
+            out[box_i0_ + i + static_cast<size_t>(nx_) * (box_j0_ + j)] =
+                box_out_[i + static_cast<size_t>(box_nx_) * j];
 }
 
 void NormalProblem::project(std::vector<double>& v) const
@@ -40,14 +88,14 @@ bool NormalProblem::conjugate_gradients(GridConvolution& conv, bool fixed_sum, d
             for (int k = 0; k < n_; ++k)
                 if (!active_[k]) v[k] = 0.0;
     };
-    conv.apply_normal(q_.data(), u_.data());
+    set_product(conv, q_, u_, false);
     if (fixed_sum)
         for (int k = 0; k < n_; ++k) r_[k] = active_[k] ? -(h_[k] + u_[k]) : 0.0;
     else
         for (int k = 0; k < n_; ++k) r_[k] = active_[k] ? pen_ - h_[k] - u_[k] : 0.0;
     restrict_to_set(r_);
     auto precondition = [&] {
-        conv.apply_normal_inverse(r_.data(), z_.data());
+        set_product(conv, r_, z_, true);
         restrict_to_set(z_);
     };
     auto largest = [&](const std::vector<double>& v) {
@@ -62,7 +110,7 @@ bool NormalProblem::conjugate_gradients(GridConvolution& conv, bool fixed_sum, d
     for (int k = 0; k < n_; ++k) rz += r_[k] * z_[k];
     while (info.iterations < max_iterations) {
         ++info.iterations;
-        conv.apply_normal(p_.data(), ap_.data());
+        set_product(conv, p_, ap_, false);
         restrict_to_set(ap_);
         double pap = 0.0;
         for (int k = 0; k < n_; ++k) pap += p_[k] * ap_[k];
@@ -173,7 +221,8 @@ void NormalProblem::active_set(GridConvolution& conv, bool fixed_sum, double loa
             for (int k = 0; k < n_; ++k)
                 q_[k] = !active_[k] ? 0.0 : sum > 0.0 ? q_[k] * (load / sum) : load / n_active_;
             // The approach sets the scale of the gap residual.
-            conv.apply_normal(q_.data(), u_.data());
+            if (box_) fit_box(conv);
+            set_product(conv, q_, u_, false);
             for (int k = 0; k < n_; ++k)
                 if (active_[k]) pen += h_[k] + u_[k];
             target = std::max(std::fabs(pen / n_active_ - h_floor), 1e-300);
@@ -181,6 +230,7 @@ void NormalProblem::active_set(GridConvolution& conv, bool fixed_sum, double loa
             for (int k = 0; k < n_; ++k)
                 if (!active_[k]) q_[k] = 0.0;
             target = std::max(std::fabs(pen_ - h_floor), 1e-300);
+            if (box_) fit_box(conv);
         }
         if (!conjugate_gradients(conv, fixed_sum, target, pass_tolerance, max_iterations, info))
             break;

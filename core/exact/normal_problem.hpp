@@ -22,6 +22,12 @@
 // preconditioner in CONTACT's NormCG). It converges in about a dozen
 // iterations whatever the grid size. Starts from the Hertz pressure on the
 // elements whose centre lies inside the ellipse, or from a given solution.
+//
+// With a second convolution (set_box_convolution) the conjugate gradients
+// run their products on the smallest box holding the contact set (the
+// fields vanish outside the set, and only their values on it are read), the
+// preconditioner that box's FFT size's circulant; each pass's complementarity
+// check still takes the product on the whole grid.
 #pragma once
 
 #include <vector>
@@ -62,6 +68,11 @@ public:
                               bool force, double value, double tolerance, int max_iterations,
                               double first_tolerance = 0.0);
 
+    // box: a convolution of the same largest grid (ConvolutionUse::normal)
+    // for the products on the contact set's box, or nullptr (the default:
+    // every product on the whole grid). Its coefficients follow conv's.
+    void set_box_convolution(GridConvolution* box) { box_ = box; }
+
     // q = pn / p0 per element [i + nx j] (0 outside the contact set).
     const std::vector<double>& pressure() const { return q_; }
     // The approach in units of p0 dx / G.
@@ -78,9 +89,16 @@ private:
     bool conjugate_gradients(GridConvolution& conv, bool fixed_sum, double target,
                              double tolerance, int max_iterations, NormalSolveInfo& info);
     void project(std::vector<double>& v) const; // zero mean on the set, zero off it
+    // out = A in (inverse: the preconditioner) where out is read: on the
+    // contact set's box with box_, else on the whole grid.
+    void set_product(GridConvolution& conv, const std::vector<double>& in,
+                     std::vector<double>& out, bool inverse);
+    void fit_box(GridConvolution& conv); // box_ to the bounding box of the set
 
-    int n_;
-    std::vector<double> h_, q_, u_, r_, z_, p_, ap_;
+    int n_, nx_;
+    std::vector<double> h_, q_, u_, r_, z_, p_, ap_, box_in_, box_out_;
+    GridConvolution* box_ = nullptr;
+    int box_i0_ = 0, box_j0_ = 0, box_nx_ = 0, box_ny_ = 0;
     std::vector<char> active_;
     int n_active_ = 0;
     int n_contact_ = 0;

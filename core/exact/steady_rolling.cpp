@@ -55,6 +55,18 @@ SteadyRolling::SteadyRolling(int nx, int ny, int krylov_dimension)
 {
 }
 
+void SteadyRolling::set_size(int nx, int ny)
+{
+    nx_ = nx;
+    ny_ = ny;
+    n_ = nx * ny;
+    const size_t n = static_cast<size_t>(n_);
+    g_.resize(n);
+    for (auto* v : {&w_, &q_, &gq_, &f_, &dq_, &qt_, &gt_, &ft_, &s_, &work_}) v->resize(n);
+    jac_.resize(n);
+    state_.resize(n);
+}
+
 void SteadyRolling::project(std::vector<Complex>& q) const
 {
     for (int k = 0; k < n_; ++k) {

@@ -49,6 +49,13 @@ public:
 
     SteadyRolling(int nx, int ny, int krylov_dimension);
 
+    // Solves on a field of nx x ny elements from now on (1 <= nx, ny <= the
+    // constructor's): every vector is resized within its capacity (no
+    // allocation) and keeps its first values.
+    void set_size(int nx, int ny);
+    int nx() const { return nx_; }
+    int ny() const { return ny_; }
+
     // conv holds this grid's coefficients; g (bound per element, 0 outside
     // the contact set) and w (rigid slip) are set by the caller through
     // bound() and rigid_slip(). q holds the first guess and returns the

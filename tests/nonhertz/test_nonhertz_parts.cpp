@@ -5,12 +5,16 @@
 // Hertz's closed form on a paraboloid and against CONTACT's own ANALYN (B = 6)
 // on the DEV gaps (an independent implementation of the same method,
 // ../shared/reference/nonhertz/dev/fast_methods.csv); the patch labels
-// against masks labelled by hand.
+// against masks labelled by hand; the products on a box of the grid
+// (GridConvolution::set_size, other FFT lengths) against the whole grid's,
+// and the normal problem with its products on the contact set's box against
+// the one on the whole grid.
 #include "gap_test_support.hpp"
 #include "test_support.h"
 
 #include <algorithm>
 #include <cmath>
+#include <complex>
 #include <vector>
 
 #include "contact/hertz.hpp"
@@ -90,6 +94,102 @@ void gap_problem_matches_the_hertzian_path(void**)
 // exact for a quadratic gap, so each row is a chord of Hertz's ellipse and
 // the pressure is Hertz's (Johnson 1985, eqs. 4.38-4.39) at the element
 // centres; only the force's sum over elements differs from the integral.
+// A field that vanishes outside a box of the grid: the products computed on
+// the box alone (FFT lengths of the box) equal the whole grid's there, to
+// rounding; a convolution resized away and back gives the same bits again.
+void box_products_match_the_whole_grid(void**)
+{
+    using C = std::complex<double>;
+    const int nx = 40, ny = 36, i0 = 7, j0 = 5, bx = 19, by = 26;
+    const double rho = 1.3, nu = 0.28;
+    cw::GridConvolution whole(nx, ny), box(nx, ny);
+    whole.set_coefficients(rho, nu);
+    std::vector<C> z(nx * ny, 0.0), s(nx * ny), zb(bx * by), sb(bx * by), again(bx * by);
+    std::vector<double> p(nx * ny, 0.0), u(nx * ny), pb(bx * by), ub(bx * by);
+    for (int j = 0; j < by; ++j)
+        for (int i = 0; i < bx; ++i) {
+            const double v = std::sin(0.7 * i + 1.3 * j) + 0.3 * std::cos(2.1 * i * j);
+            zb[i + bx * j] = z[i0 + i + nx * (j0 + j)] = C(v, std::cos(0.4 * i - 0.9 * j));
+            pb[i + bx * j] = p[i0 + i + nx * (j0 + j)] = 1.5 + v;
+        }
+    assert_true(box.set_size(bx, by)); // other FFT lengths than the whole grid's
+    box.copy_coefficients(whole);
+    for (int steady = 0; steady < 2; ++steady) {
+        whole.apply_tangential(z.data(), s.data(), steady);
+        box.apply_tangential(zb.data(), sb.data(), steady);
+        double worst = 0.0, largest = 0.0;
+        for (int j = 0; j < by; ++j)
+            for (int i = 0; i < bx; ++i) {
+                const C w = s[i0 + i + nx * (j0 + j)];
+                worst = std::max(worst, std::abs(sb[i + bx * j] - w));
+                largest = std::max(largest, std::abs(w));
+            }
+        print_message("tangential (steady %d): box against whole grid %.2g of the largest\n",
+                      steady, worst / largest);
+        assert_true(worst <= 1e-13 * largest);
+    }
+    whole.apply_normal(p.data(), u.data());
+    box.apply_normal(pb.data(), ub.data());
+    double worst = 0.0, largest = 0.0;
+    for (int j = 0; j < by; ++j)
+        for (int i = 0; i < bx; ++i) {
+            const double w = u[i0 + i + nx * (j0 + j)];
+            worst = std::max(worst, std::fabs(ub[i + bx * j] - w));
+            largest = std::max(largest, std::fabs(w));
+        }
+    assert_true(worst <= 1e-13 * largest);
+    // Away (a smaller field: new plans, new spectra) and back.
+    assert_true(box.set_size(5, 4));
+    box.apply_tangential(zb.data(), again.data(), true);
+    assert_true(box.set_size(bx, by));
+    box.apply_tangential(zb.data(), again.data(), true);
+    for (int k = 0; k < bx * by; ++k) assert_true(again[k] == sb[k]); // sb: steady, before
+}
+
+// The normal problem of a gap (a crescent: a Hertzian gap with a ridge along
+// x) with its conjugate-gradient products on the contact set's box: the
+// pressures of the whole-grid solve to the solver's tolerance.
+void normal_problem_on_the_box_matches_the_whole_grid(void**)
+{
+    const int nx = 44, ny = 40;
+    const double nu = 0.28, rho = 0.9, load = 12.0; // sum q
+    cw::GridConvolution conv(nx, ny), box(nx, ny, cw::ConvolutionUse::normal);
+    conv.set_coefficients(rho, nu);
+    std::vector<double> h(nx * ny), start(nx * ny, 0.0);
+    for (int j = 0; j < ny; ++j)
+        for (int i = 0; i < nx; ++i) {
+            const double x = i - 0.45 * nx, y = (j - 0.5 * ny) * rho;
+            h[i + nx * j] = 2e-3 * x * x + 4e-3 * y * y + 0.05 * std::exp(-0.05 * y * y) -
+                            1e-3 * x * y;
+        }
+    cw::NormalProblem plain(nx, ny), boxed(nx, ny);
+    boxed.set_box_convolution(&box);
+    const cw::NormalSolveInfo a = plain.solve_gap(conv, h.data(), start.data(), true, load,
+                                                  1e-12, 500, 1e-4);
+    const cw::NormalSolveInfo b = boxed.solve_gap(conv, h.data(), start.data(), true, load,
+                                                  1e-12, 500, 1e-4);
+    assert_true(a.converged);
+    assert_true(b.converged);
+    assert_int_equal(plain.n_contact(), boxed.n_contact());
+    double worst = 0.0, peak = 0.0;
+    int i_lo = nx, i_hi = -1, j_lo = ny, j_hi = -1;
+    for (int k = 0; k < nx * ny; ++k) {
+        worst = std::max(worst, std::fabs(plain.pressure()[k] - boxed.pressure()[k]));
+        peak = std::max(peak, plain.pressure()[k]);
+        if (plain.pressure()[k] > 0.0) {
+            i_lo = std::min(i_lo, k % nx), i_hi = std::max(i_hi, k % nx);
+            j_lo = std::min(j_lo, k / nx), j_hi = std::max(j_hi, k / nx);
+        }
+    }
+    print_message("%d elements in a %d x %d box, %d / %d iterations, pressure difference "
+                  "%.2g of the peak\n", plain.n_contact(), i_hi - i_lo + 1, j_hi - j_lo + 1,
+                  a.iterations, b.iterations, worst / peak);
+    // The box is well inside the grid (so its FFT lengths are smaller).
+    assert_true(i_hi - i_lo + 1 <= nx * 3 / 4 && j_hi - j_lo + 1 <= ny * 3 / 4);
+    assert_true(worst <= 1e-9 * peak);
+    assert_close(boxed.approach(), plain.approach(), 1e-10, 0.0);
+}
+
 void semi_hertz_reproduces_hertz_on_a_paraboloid(void**)
 {
     const double A = 1.0 / (2 * 0.46), B = 1.0 / (2 * 0.3), N = 80e3, G = 82e9, nu = 0.28;
@@ -197,6 +297,8 @@ int main(int argc, char** argv)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(gap_problem_matches_the_hertzian_path),
+        cmocka_unit_test(box_products_match_the_whole_grid),
+        cmocka_unit_test(normal_problem_on_the_box_matches_the_whole_grid),
         cmocka_unit_test(semi_hertz_reproduces_hertz_on_a_paraboloid),
         cmocka_unit_test(semi_hertz_matches_contacts_analyn),
         cmocka_unit_test(patches_are_edge_connected),
