@@ -39,8 +39,14 @@ struct RowWear {
 // keeps its status and reason and is passed through untouched.
 struct ContactCase {
     cw_grid grid;
-    cw_params params;
+    cw_params params; // a gap row's params.gap is set by the worker (gap_rows.hpp)
     RowWear wear;
+    // A row with a gap_file (grid.kind CW_GRID_GAP): the file's absolute
+    // path and the hash of its grid and values as the reader found them
+    // (gap_hash), so that a worker refuses a file changed since. "" and 0
+    // for an elliptic row.
+    std::string gap_file;
+    uint64_t gap_hash = 0;
     std::string rejected; // non-empty: why the reader rejected the row
     int32_t rejected_status = kStatusRowUnreadable; // its status, when rejected
 };

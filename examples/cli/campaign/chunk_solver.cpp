@@ -1,6 +1,8 @@
 #include "chunk_solver.hpp"
 
+#include <array>
 #include <cstring>
+#include <memory>
 #include <map>
 #include <tuple>
 
@@ -8,21 +10,31 @@ namespace cwcampaign {
 
 namespace {
 
+// The bits of what shapes a grid beyond kind, nx, ny: the box scale of a
+// uniform grid, the origin and spacing of a gap grid. Comparing bits, a
+// grid is reused exactly when the library would build the same one.
+std::array<uint64_t, 4> shape_bits(const cw_grid& g)
+{
+    std::array<uint64_t, 4> bits{};
+    if (g.kind == CW_GRID_UNIFORM) std::memcpy(&bits[0], &g.box_scale, sizeof(double));
+    if (g.kind == CW_GRID_GAP) {
+        std::memcpy(&bits[0], &g.x0, sizeof(double));
+        std::memcpy(&bits[1], &g.y0, sizeof(double));
+        std::memcpy(&bits[2], &g.dx, sizeof(double));
+        std::memcpy(&bits[3], &g.dy, sizeof(double));
+    }
+    return bits;
+}
+
 bool same_grid(const cw_grid& a, const cw_grid& b)
 {
-    // The box scale only shapes a uniform grid; compare its bits, so that a
-    // grid is reused exactly when the library would build the same one.
-    return a.kind == b.kind && a.nx == b.nx && a.ny == b.ny &&
-           (a.kind != CW_GRID_UNIFORM ||
-            std::memcmp(&a.box_scale, &b.box_scale, sizeof(double)) == 0);
+    return a.kind == b.kind && a.nx == b.nx && a.ny == b.ny && shape_bits(a) == shape_bits(b);
 }
 
 struct GridOrder {
     bool operator()(const cw_grid& a, const cw_grid& b) const
     {
-        uint64_t sa = 0, sb = 0;
-        if (a.kind == CW_GRID_UNIFORM) std::memcpy(&sa, &a.box_scale, sizeof sa);
-        if (b.kind == CW_GRID_UNIFORM) std::memcpy(&sb, &b.box_scale, sizeof sb);
+        const std::array<uint64_t, 4> sa = shape_bits(a), sb = shape_bits(b);
         return std::tie(a.kind, a.nx, a.ny, sa) < std::tie(b.kind, b.nx, b.ny, sb);
     }
 };
@@ -39,7 +51,7 @@ std::string without_index(const std::string& message)
 } // namespace
 
 ChunkSolver::ChunkSolver(int threads, size_t max_batches)
-    : threads_(threads), max_batches_(max_batches < 1 ? 1 : max_batches)
+    : threads_(threads), max_batches_(max_batches < 1 ? 1 : max_batches), gaps_(max_batches)
 {
 }
 
@@ -99,17 +111,37 @@ std::vector<Outcome> ChunkSolver::solve(const Chunk& chunk)
             }
             continue;
         }
-        const size_t m = rows.size();
-        params_.resize(m);
+        // Rows of a gap grid point at their file's values, held here until
+        // the group is solved; a row whose file fails is left out.
+        std::vector<size_t> solved;
+        std::vector<std::shared_ptr<const std::vector<double>>> held;
+        params_.clear();
+        for (size_t i : rows) {
+            cw_params p = chunk.cases[i].params;
+            if (!chunk.cases[i].gap_file.empty()) {
+                std::string why;
+                auto h = gaps_.values(chunk.cases[i], why);
+                if (!h) {
+                    out[i].status = kStatusRowUnreadable;
+                    out[i].message = why;
+                    cw_result_init(&out[i].result);
+                    continue;
+                }
+                p.gap = h->data();
+                p.gap_len = h->size();
+                held.push_back(std::move(h));
+            }
+            params_.push_back(p);
+            solved.push_back(i);
+        }
+        const size_t m = solved.size();
+        if (m == 0) continue;
         results_.resize(m);
         statuses_.assign(m, CW_OK);
-        for (size_t k = 0; k < m; ++k) {
-            params_[k] = chunk.cases[rows[k]].params;
-            cw_result_init(&results_[k]);
-        }
+        for (size_t k = 0; k < m; ++k) cw_result_init(&results_[k]);
         cw_batch_solve(batch, m, params_.data(), chunk.mode, results_.data(), statuses_.data());
         for (size_t k = 0; k < m; ++k) {
-            Outcome& o = out[rows[k]];
+            Outcome& o = out[solved[k]];
             o.status = statuses_[k];
             o.result = results_[k];
             if (o.status == CW_OK) continue;

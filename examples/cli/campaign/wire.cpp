@@ -146,6 +146,8 @@ Bytes encode_chunk(const Chunk& chunk)
             w.put(c.grid);
             w.put(c.params);
             w.put(c.wear);
+            w.put_string(c.gap_file);
+            w.put(c.gap_hash);
         }
     }
     return w.take();
@@ -171,6 +173,10 @@ Chunk decode_chunk(const Bytes& bytes)
             c.grid = r.get<cw_grid>();
             c.params = r.get<cw_params>();
             c.wear = r.get<RowWear>();
+            c.gap_file = r.get_string();
+            c.gap_hash = r.get<uint64_t>();
+            // The pointer's bits are the sender's: the worker sets it.
+            c.params.gap = nullptr;
         } else {
             throw WireError("chunk message: unknown case kind");
         }

@@ -236,6 +236,21 @@ void wire_round_trips_and_rejects_damage(void** state)
     assert_true(rb.wear_states[kWheel].empty());
     assert_true(back.cases[0].wear.body == kWheel && back.cases[0].wear.s0 == -0.003 &&
                 back.cases[0].wear.passes == 1234.5);
+    // A gap row travels with its file's path and hash; the sender's pointer
+    // to the values does not (the worker reads the file).
+    Chunk gap = c;
+    const double h[9] = {0};
+    gap.cases[0].grid.kind = CW_GRID_GAP;
+    gap.cases[0].params.gap = h;
+    gap.cases[0].params.gap_len = 9;
+    gap.cases[0].gap_file = "/data/gaps/D03.csv";
+    gap.cases[0].gap_hash = 0x0123456789abcdefull;
+    const Chunk gap_back = decode_chunk(encode_chunk(gap));
+    assert_string_equal(gap_back.cases[0].gap_file.c_str(), "/data/gaps/D03.csv");
+    assert_true(gap_back.cases[0].gap_hash == 0x0123456789abcdefull);
+    assert_true(gap_back.cases[0].params.gap == nullptr && gap_back.cases[0].params.gap_len == 9);
+    assert_true(gap_back.cases[0].grid.kind == CW_GRID_GAP);
+    assert_true(back.cases[0].gap_file.empty() && back.cases[0].gap_hash == 0);
     // Zero runs are stored as counts: a long, mostly zero state is small.
     ChunkResult big = r;
     big.wear_states[kWheel].assign(100000, 0);
