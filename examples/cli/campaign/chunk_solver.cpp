@@ -2,7 +2,6 @@
 
 #include <array>
 #include <cstring>
-#include <memory>
 #include <map>
 #include <tuple>
 
@@ -51,7 +50,7 @@ std::string without_index(const std::string& message)
 } // namespace
 
 ChunkSolver::ChunkSolver(int threads, size_t max_batches)
-    : threads_(threads), max_batches_(max_batches < 1 ? 1 : max_batches), gaps_(max_batches)
+    : threads_(threads), max_batches_(max_batches < 1 ? 1 : max_batches)
 {
 }
 
@@ -111,37 +110,23 @@ std::vector<Outcome> ChunkSolver::solve(const Chunk& chunk)
             }
             continue;
         }
-        // Rows of a gap grid point at their file's values, held here until
-        // the group is solved; a row whose file fails is left out.
-        std::vector<size_t> solved;
-        std::vector<std::shared_ptr<const std::vector<double>>> held;
-        params_.clear();
-        for (size_t i : rows) {
-            cw_params p = chunk.cases[i].params;
-            if (!chunk.cases[i].gap_file.empty()) {
-                std::string why;
-                auto h = gaps_.values(chunk.cases[i], why);
-                if (!h) {
-                    out[i].status = kStatusRowUnreadable;
-                    out[i].message = why;
-                    cw_result_init(&out[i].result);
-                    continue;
-                }
-                p.gap = h->data();
-                p.gap_len = h->size();
-                held.push_back(std::move(h));
-            }
-            params_.push_back(p);
-            solved.push_back(i);
-        }
-        const size_t m = solved.size();
-        if (m == 0) continue;
+        const size_t m = rows.size();
+        params_.resize(m);
         results_.resize(m);
         statuses_.assign(m, CW_OK);
-        for (size_t k = 0; k < m; ++k) cw_result_init(&results_[k]);
+        for (size_t k = 0; k < m; ++k) {
+            const ContactCase& c = chunk.cases[rows[k]];
+            params_[k] = c.params;
+            // A gap row's values travel with the chunk, which outlives the solve.
+            if (c.gap_values) {
+                params_[k].gap = c.gap_values->data();
+                params_[k].gap_len = c.gap_values->size();
+            }
+            cw_result_init(&results_[k]);
+        }
         cw_batch_solve(batch, m, params_.data(), chunk.mode, results_.data(), statuses_.data());
         for (size_t k = 0; k < m; ++k) {
-            Outcome& o = out[solved[k]];
+            Outcome& o = out[rows[k]];
             o.status = statuses_[k];
             o.result = results_[k];
             if (o.status == CW_OK) continue;

@@ -6,7 +6,7 @@
 // the library's own, bitwise equal to a one-by-one cw_solver_solve (the
 // batch's guarantee), so it cannot depend on which rank or thread ran it.
 // A gap grid's shape includes its origin and spacing: one batch per
-// distinct gap grid, its rows' gaps from their files (GapValues).
+// distinct gap grid, each row's gap the values its chunk carries.
 #pragma once
 
 #include <cstddef>
@@ -17,7 +17,6 @@
 #include <creepwork/creepwork.h>
 
 #include "campaign_types.hpp"
-#include "gap_values.hpp"
 
 namespace cwcampaign {
 
@@ -44,7 +43,6 @@ private:
     int threads_;
     size_t max_batches_;
     std::list<Entry> batches_; // most recently used first
-    GapValues gaps_;           // the gap files' values of rows on a gap grid
     std::vector<cw_params> params_;
     std::vector<cw_result> results_;
     std::vector<int> statuses_;

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 #include <filesystem>
 
 #include "../cli_error.hpp"
@@ -42,15 +41,17 @@ std::vector<std::string> unit_warnings(const cw_grid& g, const std::vector<doubl
     return w;
 }
 
-} // namespace
-
+// read_gap_file's message ("--gap: PATH:LINE: ...") for a row, which names
+// its column itself.
 std::string gap_file_message(const std::string& message)
 {
-    const std::string prefix = "--gap: "; // read_gap_file speaks for `solve --gap`
+    const std::string prefix = "--gap: ";
     return message.compare(0, prefix.size(), prefix) == 0 ? message.substr(prefix.size())
                                                           : message;
 }
 
+// FNV-1a of a gap grid's shape and geometry and of its values' bits: the
+// gap file's part of the campaign's identity.
 uint64_t gap_hash(const cw_grid& g, const std::vector<double>& h)
 {
     uint64_t hash = fnv1a(&g.nx, sizeof g.nx);
@@ -59,6 +60,8 @@ uint64_t gap_hash(const cw_grid& g, const std::vector<double>& h)
     return fnv1a(h.data(), h.size() * sizeof(double), hash);
 }
 
+} // namespace
+
 const GapFiles::File& GapFiles::load(const std::string& path)
 {
     const auto found = files_.find(path);
@@ -66,11 +69,11 @@ const GapFiles::File& GapFiles::load(const std::string& path)
     File f;
     cw_grid_init(&f.grid);
     try {
-        const cwcli::GapFile g = cwcli::read_gap_file(path);
+        cwcli::GapFile g = cwcli::read_gap_file(path);
         f.grid = g.grid;
-        f.cells = g.h.size();
         f.hash = gap_hash(g.grid, g.h);
         f.warnings = unit_warnings(g.grid, g.h, path);
+        f.h = std::make_shared<const std::vector<double>>(std::move(g.h));
         hash_ = fnv1a(&f.hash, sizeof f.hash, hash_ ? hash_ : fnv1a("gap files", 9));
     } catch (const cwcli::CliError& e) {
         f.error = gap_file_message(e.what());
@@ -156,10 +159,9 @@ void read_gap_row(const RowSource& r, const std::string& dir, GapFiles& files, C
     if (!f.error.empty()) r.fail(gap, f.error, Refusal::unreadable);
     c.grid = f.grid;
     p.gap = nullptr;
-    p.gap_len = f.cells;
+    p.gap_len = f.h->size();
     c.params = p;
-    c.gap_file = path;
-    c.gap_hash = f.hash;
+    c.gap_values = f.h;
     warnings.insert(warnings.end(), f.warnings.begin(), f.warnings.end());
 }
 

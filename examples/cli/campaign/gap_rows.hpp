@@ -3,14 +3,13 @@
 // `creepwork solve --gap`, ../gap_input.hpp), relative to the input CSV's
 // directory unless absolute. Rank 0 reads each file once while it reads the
 // input, so that a missing or malformed file rejects its rows (naming the
-// file and its line) before any solve, and a row carries the file's path and
-// the hash of what was read; the workers read the file again
-// (gap_values.hpp), which keeps chunks small and lets a cluster's ranks read
-// a shared file system.
+// file and its line) before any solve; the rows of a file share its values,
+// which travel with their chunks (wire.hpp): the other ranks read no file.
 #pragma once
 
 #include <cstdint>
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -19,20 +18,12 @@
 
 namespace cwcampaign {
 
-// FNV-1a of a gap grid's shape and geometry and of its values' bits: what
-// the reader and a worker compare to be sure they solve the same contact.
-uint64_t gap_hash(const cw_grid& grid, const std::vector<double>& h);
-
-// read_gap_file's message ("--gap: PATH:LINE: ...") for a row, which names
-// its column itself: "PATH:LINE: ...".
-std::string gap_file_message(const std::string& message);
-
 // The gap files the reader has met, each read once.
 class GapFiles {
 public:
     struct File {
         cw_grid grid;
-        size_t cells = 0;
+        std::shared_ptr<const std::vector<double>> h; // [i + j*nx] [m]
         uint64_t hash = 0;
         std::string error; // read_gap_file's message ("" when the file is good)
         std::vector<std::string> warnings; // its implausible units, "column gap_file: ..."
@@ -52,9 +43,9 @@ private:
 // and pressure must be empty; N or approach, not both; model exact (the
 // default) or fastsim; normal_method exact or semi-hertz), reads the
 // contact's other inputs as every door does, and loads the file (dir: the
-// input CSV's directory). Fills c (params.gap stays nullptr: the worker
-// sets it) and appends the row's plausibility warnings. Throws RowError
-// naming the line and the column.
+// input CSV's directory). Fills c (c.gap_values; params.gap stays nullptr:
+// the solver points it at them) and appends the row's plausibility
+// warnings. Throws RowError naming the line and the column.
 void read_gap_row(const cwcli::RowSource& row, const std::string& dir, GapFiles& files,
                   ContactCase& c, std::vector<std::string>& warnings);
 

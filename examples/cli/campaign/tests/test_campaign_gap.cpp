@@ -334,6 +334,28 @@ void gap_unit_mistakes_are_warned(void** state)
     expect_contains(strict.err, "3 rows: 1 solved, 2 failed");
 }
 
+// A gap file is an input: resuming after it changed is refused as another
+// campaign; unchanged, the finished campaign resumes with nothing to do.
+void gap_files_are_part_of_the_identity(void** state)
+{
+    (void)state;
+    if (!have_data()) cw_skip();
+    const std::string text = slurp(kDev + "/gaps/D03_twolobes.csv");
+    scratch_file("gap.csv", text);
+    scratch_file("in.csv", "id,gap_file,N,xi_x\ng,gap.csv,60000,0.001\n");
+    const std::vector<std::string> args = {"--in", path("in.csv"), "--out", path("out"),
+                                           "--quiet"};
+    expect_status(campaign(0, args), 0);
+    expect_status(campaign(0, with(args, {"--resume"})), 0);
+    // One gap value's last digit changed.
+    std::string changed = text;
+    const size_t end = changed.find('\n', changed.find('\n') + 1);
+    changed[end - 1] = changed[end - 1] == '1' ? '2' : '1';
+    scratch_file("gap.csv", changed);
+    const Run r = expect_status(campaign(0, with(args, {"--resume"})), 2);
+    expect_contains(r.err, "another input");
+}
+
 } // namespace
 
 int main(int argc, char** argv)
@@ -343,6 +365,7 @@ int main(int argc, char** argv)
         cmocka_unit_test(gap_rows_match_solve_gap_on_any_ranks),
         cmocka_unit_test(gap_bad_rows_fail_alone),
         cmocka_unit_test(gap_unit_mistakes_are_warned),
+        cmocka_unit_test(gap_files_are_part_of_the_identity),
     };
     return cw_run_tests(tests, g_tools.test);
 }
