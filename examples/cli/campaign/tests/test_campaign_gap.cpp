@@ -329,6 +329,18 @@ void gap_unit_mistakes_are_warned(void** state)
                     "warning: column approach = 0.05 m is implausible for a wheel-rail contact: "
                     "approaches are 10-200 um (millimetres typed as metres?");
     assert_string_equal(out[3][idx.at("message")].c_str(), "");
+    // mm.csv and D03 have the same cell counts but other cells: each row is
+    // solved on its own grid (one batch per distinct gap grid), as solve --gap.
+    for (const auto& [row, gap] : {std::pair<size_t, std::string>{1, path("mm.csv")}, {3, d03}}) {
+        const Json j = parse_or_fail(
+            expect_status(cli({"solve", "--gap", gap, "--N", "60000", "--xi-x", "0.001",
+                               "--format", "json"}),
+                          0)
+                .out);
+        for (const char* key : {"Fx", "p_max", "approach"})
+            assert_true(number(out[row][idx.at(key)]) == j.num(key));
+    }
+    assert_true(number(out[1][idx.at("p_max")]) < 1e-3 * number(out[3][idx.at("p_max")]));
     const Run strict = expect_status(
         campaign(0, {"--in", path("in.csv"), "--out", path("strict"), "--strict"}), 0);
     expect_contains(strict.err, "3 rows: 1 solved, 2 failed");
