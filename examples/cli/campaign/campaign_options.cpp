@@ -40,7 +40,7 @@ the columns of `creepwork wear` and the options of `creepwork solve`
             path relative to FILE.csv's directory, or absolute) instead of
             a, b and the grid; N or approach (m, from the file's h = 0);
             model exact (the default there) or fastsim; normal_method
-            exact|semi-hertz. results.csv adds Fn and n_patches
+            exact|semi-hertz; not with --wear
   wear      (with --wear; else ignored with a note) s0 (m, required),
             passes (axle passages or wheel revolutions) or distance (m,
             wheel: passes = distance / (2 pi R)), contact_angle (rad, default
