@@ -43,6 +43,9 @@ const std::vector<InputInfo>& all_inputs()
         {I::contact_angle, "", "contact_angle", Q::dimensionless},
         {I::passes, "", "passes", Q::dimensionless},
         {I::speed, "speed", "speed", Q::dimensionless},
+        {I::gap_file, "gap", "gap_file", Q::dimensionless},
+        {I::approach, "approach", "approach", Q::length},
+        {I::normal_method, "normal-method", "normal_method", Q::dimensionless},
     };
     return list;
 }

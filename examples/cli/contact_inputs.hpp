@@ -24,7 +24,9 @@ enum class Input {
     model, grid, nx, ny, box_scale, pressure, rolling_direction, spin_offset,
     flexibility_blending, exact_load, tolerance, max_iterations,
     // Not part of a contact: the row's name (campaign) and the wear columns.
-    id, s0, distance, body, contact_angle, passes, speed
+    id, s0, distance, body, contact_angle, passes, speed,
+    // A campaign row's contact of any shape (the gap file's grid, solve --gap).
+    gap_file, approach, normal_method
 };
 
 struct InputInfo {

@@ -21,17 +21,26 @@ bool is_wear_column(Input in)
            in == Input::speed;
 }
 
+bool is_gap_column(Input in)
+{
+    return in == Input::gap_file || in == Input::approach || in == Input::normal_method;
+}
+
 // Whether the command reads the column (else it is ignored with a note).
 bool reads(RowFile kind, Input in)
 {
     if (in == Input::id) return kind != RowFile::wear;
     if (is_wear_column(in)) return kind != RowFile::campaign;
+    if (is_gap_column(in)) return kind != RowFile::wear;
     return true;
 }
 
-std::vector<Input> required(RowFile kind)
+// The columns a row needs; a row with a gap_file takes its contact from the
+// file, so it needs no semi-axes (and N or approach, checked by the campaign).
+std::vector<Input> required(RowFile kind, bool gap_row = false)
 {
-    std::vector<Input> r = {Input::a, Input::b, Input::N};
+    std::vector<Input> r;
+    if (!gap_row) r = {Input::a, Input::b, Input::N};
     if (kind != RowFile::campaign) r.insert(r.begin(), Input::s0);
     if (kind != RowFile::wear) r.insert(r.begin(), Input::id);
     return r;
@@ -103,8 +112,17 @@ RowHeader::RowHeader(const std::vector<std::string>& fields, RowFile kind, const
         else
             ignored.push_back(name);
     }
+    if (kind == RowFile::campaign_wear && has(Input::gap_file))
+        throw RowFileError(path + ": column gap_file: creepwork campaign --wear takes elliptic "
+                                  "rows only (a, b); solve contacts of any shape without --wear");
+    // With a gap_file column, rows may take their contact from gap files: a,
+    // b are then optional columns, and the load is N or approach.
+    const bool gap = has(Input::gap_file);
+    if (gap && !has(Input::N) && !has(Input::approach))
+        throw RowFileError(path + ": the header lacks N and approach (a row with a gap_file "
+                                  "needs the normal force N or the approach)");
     std::vector<std::string> missing;
-    for (Input in : required(kind))
+    for (Input in : required(kind, gap))
         if (!has(in)) missing.emplace_back(info(in).column);
     if (!missing.empty()) {
         std::vector<std::string> need;
@@ -192,7 +210,7 @@ void RowSource::require(Input in) const
 
 void RowSource::require_values() const
 {
-    for (Input in : required(header_.kind())) require(in);
+    for (Input in : required(header_.kind(), has(Input::gap_file))) require(in);
 }
 
 double RowSource::number(Input in) const

@@ -23,7 +23,8 @@ namespace cwcli {
 
 // Which command reads the file: what it requires and what it ignores.
 enum class RowFile {
-    campaign,      // creepwork campaign: id, a, b, N required
+    campaign,      // creepwork campaign: id, a, b, N required (a row with a
+                   // gap_file: id and N or approach)
     campaign_wear, // creepwork campaign --wear: also s0 and the wear columns
     wear           // creepwork wear: s0, a, b, N required; id ignored
 };
@@ -109,7 +110,8 @@ public:
     long line() const { return line_; }
     const RowHeader& header() const { return header_; }
     // Fails unless the cell has a value; require_values: every required
-    // column's cell (id, s0, a, b, N as the command requires them).
+    // column's cell (id, s0, a, b, N as the command requires them; a row
+    // with a gap_file needs no a, b, N).
     void require(Input in) const;
     void require_values() const;
 

@@ -103,6 +103,10 @@ void prepare(const CampaignOptions& opt, Setup& s)
         // --strict rejects rows another run solves: part of what the
         // checkpoint holds, so --resume with the other choice is refused.
         if (opt.strict) s.identity.input_hash = fnv1a("--strict", 8, s.identity.input_hash);
+        // The gap files are inputs too: a changed one is another campaign.
+        if (s.input.gap_hash)
+            s.identity.input_hash =
+                fnv1a(&s.input.gap_hash, sizeof s.input.gap_hash, s.identity.input_hash);
         if (opt.wear) {
             // The grid and the wear options are part of what the checkpoint
             // holds: --resume with others is refused as another input.

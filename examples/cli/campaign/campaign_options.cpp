@@ -36,6 +36,11 @@ the columns of `creepwork wear` and the options of `creepwork solve`
             rolling_direction (+1|-1), spin_offset, flexibility_blending
             (0|1), exact_load (0|1), tolerance, max_iterations (exact
             model); s0, distance (m; carried to results.csv)
+  any shape gap_file: the CSV of `creepwork solve --gap` (x_m,y_m,h_m, a
+            path relative to FILE.csv's directory, or absolute) instead of
+            a, b and the grid; N or approach (m, from the file's h = 0);
+            model exact (the default there) or fastsim; normal_method
+            exact|semi-hertz; not with --wear
   wear      (with --wear; else ignored with a note) s0 (m, required),
             passes (axle passages or wheel revolutions) or distance (m,
             wheel: passes = distance / (2 pi R)), contact_angle (rad, default

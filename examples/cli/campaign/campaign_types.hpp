@@ -6,6 +6,7 @@
 
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -39,8 +40,13 @@ struct RowWear {
 // keeps its status and reason and is passed through untouched.
 struct ContactCase {
     cw_grid grid;
-    cw_params params;
+    cw_params params; // a gap row's params.gap: set by the solver from gap_values
     RowWear wear;
+    // A row with a gap_file (grid.kind CW_GRID_GAP): the file's values at
+    // [i + j*nx], as rank 0 read and checked them (gap_rows.hpp), shared by
+    // the rows of one file; they travel with the chunk, so no other rank
+    // reads the file. nullptr for an elliptic row.
+    std::shared_ptr<const std::vector<double>> gap_values;
     std::string rejected; // non-empty: why the reader rejected the row
     int32_t rejected_status = kStatusRowUnreadable; // its status, when rejected
 };

@@ -1,5 +1,6 @@
 #include "chunk_solver.hpp"
 
+#include <array>
 #include <cstring>
 #include <map>
 #include <tuple>
@@ -8,21 +9,31 @@ namespace cwcampaign {
 
 namespace {
 
+// The bits of what shapes a grid beyond kind, nx, ny: the box scale of a
+// uniform grid, the origin and spacing of a gap grid. Comparing bits, a
+// grid is reused exactly when the library would build the same one.
+std::array<uint64_t, 4> shape_bits(const cw_grid& g)
+{
+    std::array<uint64_t, 4> bits{};
+    if (g.kind == CW_GRID_UNIFORM) std::memcpy(&bits[0], &g.box_scale, sizeof(double));
+    if (g.kind == CW_GRID_GAP) {
+        std::memcpy(&bits[0], &g.x0, sizeof(double));
+        std::memcpy(&bits[1], &g.y0, sizeof(double));
+        std::memcpy(&bits[2], &g.dx, sizeof(double));
+        std::memcpy(&bits[3], &g.dy, sizeof(double));
+    }
+    return bits;
+}
+
 bool same_grid(const cw_grid& a, const cw_grid& b)
 {
-    // The box scale only shapes a uniform grid; compare its bits, so that a
-    // grid is reused exactly when the library would build the same one.
-    return a.kind == b.kind && a.nx == b.nx && a.ny == b.ny &&
-           (a.kind != CW_GRID_UNIFORM ||
-            std::memcmp(&a.box_scale, &b.box_scale, sizeof(double)) == 0);
+    return a.kind == b.kind && a.nx == b.nx && a.ny == b.ny && shape_bits(a) == shape_bits(b);
 }
 
 struct GridOrder {
     bool operator()(const cw_grid& a, const cw_grid& b) const
     {
-        uint64_t sa = 0, sb = 0;
-        if (a.kind == CW_GRID_UNIFORM) std::memcpy(&sa, &a.box_scale, sizeof sa);
-        if (b.kind == CW_GRID_UNIFORM) std::memcpy(&sb, &b.box_scale, sizeof sb);
+        const std::array<uint64_t, 4> sa = shape_bits(a), sb = shape_bits(b);
         return std::tie(a.kind, a.nx, a.ny, sa) < std::tie(b.kind, b.nx, b.ny, sb);
     }
 };
@@ -104,7 +115,13 @@ std::vector<Outcome> ChunkSolver::solve(const Chunk& chunk)
         results_.resize(m);
         statuses_.assign(m, CW_OK);
         for (size_t k = 0; k < m; ++k) {
-            params_[k] = chunk.cases[rows[k]].params;
+            const ContactCase& c = chunk.cases[rows[k]];
+            params_[k] = c.params;
+            // A gap row's values travel with the chunk, which outlives the solve.
+            if (c.gap_values) {
+                params_[k].gap = c.gap_values->data();
+                params_[k].gap_len = c.gap_values->size();
+            }
             cw_result_init(&results_[k]);
         }
         cw_batch_solve(batch, m, params_.data(), chunk.mode, results_.data(), statuses_.data());

@@ -5,6 +5,8 @@
 // model, its influence tables) for every chunk. Each contact's result is
 // the library's own, bitwise equal to a one-by-one cw_solver_solve (the
 // batch's guarantee), so it cannot depend on which rank or thread ran it.
+// A gap grid's shape includes its origin and spacing: one batch per
+// distinct gap grid, each row's gap the values its chunk carries.
 #pragma once
 
 #include <cstddef>

@@ -1,7 +1,10 @@
 #include "input_csv.hpp"
 
+#include <filesystem>
 #include <limits>
 #include <unordered_map>
+
+#include "gap_rows.hpp"
 
 namespace cwcampaign {
 
@@ -47,6 +50,8 @@ CampaignInput read_campaign_csv(const std::string& path, const WearRules* wear, 
         in.has_distance = header.has(Input::distance);
         const double nan = std::numeric_limits<double>::quiet_NaN();
         std::unordered_map<std::string, long> id_line;
+        GapFiles gaps;
+        const std::string dir = std::filesystem::path(path).parent_path().string();
         std::vector<std::string> cells;
         std::string error;
         long line = 0;
@@ -66,11 +71,16 @@ CampaignInput read_campaign_csv(const std::string& path, const WearRules* wear, 
                     r.fail(r.name(Input::id),
                            "'" + id + "' repeats the id of line " + std::to_string(seen->second),
                            ContactSource::Refusal::unreadable);
-                const cwcli::ContactInputs contact =
-                    cwcli::read_contact_inputs(r, defaults, default_grid);
-                c.params = contact.params;
-                c.grid = contact.grid;
-                warnings = cwcli::plausibility_warnings(c.params, r);
+                if (r.has(Input::gap_file)) {
+                    read_gap_row(r, dir, gaps, c, warnings);
+                } else {
+                    refuse_gap_columns(r);
+                    const cwcli::ContactInputs contact =
+                        cwcli::read_contact_inputs(r, defaults, default_grid);
+                    c.params = contact.params;
+                    c.grid = contact.grid;
+                    warnings = cwcli::plausibility_warnings(c.params, r);
+                }
                 if (r.has(Input::s0)) s0 = r.number(Input::s0);
                 if (r.has(Input::distance)) {
                     distance = r.number(Input::distance);
@@ -111,6 +121,7 @@ CampaignInput read_campaign_csv(const std::string& path, const WearRules* wear, 
         }
         if (file.bad()) throw InputError(path + ": read error");
         in.hash = file.hash();
+        in.gap_hash = gaps.hash();
     } catch (const cwcli::RowFileError& e) {
         throw InputError(e.what());
     }

@@ -38,6 +38,9 @@ struct CampaignInput {
     bool has_s0 = false, has_distance = false;
     std::vector<std::string> notes; // about the file, for stderr ("note: ...")
     uint64_t hash = 0; // of the file's bytes: the campaign's identity on resume
+    // Of the gap files the rows name (gap_rows.hpp), 0 when none: also part
+    // of the identity, so that a resume refuses a changed gap file.
+    uint64_t gap_hash = 0;
 };
 
 // wear: nullptr without --wear. With it, the file must have an s0 column,

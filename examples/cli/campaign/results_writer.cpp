@@ -14,7 +14,7 @@ using cwcli::csv_quote;
 namespace {
 
 // The numbers of one result, in the order of `creepwork solve`'s JSON keys,
-// then the fields appended to cw_result in 1.1.
+// then the fields appended to cw_result in 1.1 and 1.2.
 struct Column {
     const char* name;
     double (*real)(const cw_result&);
@@ -33,7 +33,11 @@ const Column kColumns[] = {
     CW_REAL(C11),       CW_REAL(C22),          CW_REAL(C23),
     CW_REAL(C33),       CW_REAL(profile_max_diff), CW_REAL(profile_rms_diff),
     CW_REAL(p_max),     CW_REAL(approach),     CW_INT(iterations),
-    CW_REAL(residual)};
+    CW_REAL(residual),
+    // Appended in 1.2: the normal force a gap row finds from its approach
+    // (else the row's N) and the separate patches of a gap row.
+    {"Fn", [](const cw_result& r) { return r.normal_force; }, nullptr},
+    CW_INT(n_patches)};
 #undef CW_REAL
 #undef CW_INT
 

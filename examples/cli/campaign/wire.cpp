@@ -1,6 +1,7 @@
 #include "wire.hpp"
 
 #include <cstring>
+#include <memory>
 #include <string>
 #include <type_traits>
 
@@ -135,8 +136,23 @@ Bytes encode_chunk(const Chunk& chunk)
     w.put(chunk.id);
     w.put(chunk.first_row);
     w.put<int32_t>(chunk.mode);
+    // The gap files' values once per chunk, whatever the number of its rows
+    // on them; a case names its table by index (-1: none).
+    std::vector<const std::vector<double>*> tables;
+    std::vector<int32_t> table_of(chunk.cases.size(), -1);
+    for (size_t k = 0; k < chunk.cases.size(); ++k) {
+        const std::vector<double>* values = chunk.cases[k].gap_values.get();
+        if (!values || !chunk.cases[k].rejected.empty()) continue;
+        size_t t = 0;
+        while (t < tables.size() && tables[t] != values) ++t;
+        if (t == tables.size()) tables.push_back(values);
+        table_of[k] = static_cast<int32_t>(t);
+    }
+    w.put<uint32_t>(static_cast<uint32_t>(tables.size()));
+    for (const std::vector<double>* values : tables) w.put_doubles(*values);
     w.put<uint32_t>(static_cast<uint32_t>(chunk.cases.size()));
-    for (const ContactCase& c : chunk.cases) {
+    for (size_t k = 0; k < chunk.cases.size(); ++k) {
+        const ContactCase& c = chunk.cases[k];
         if (!c.rejected.empty()) {
             w.put(kCaseRejected);
             w.put(c.rejected_status);
@@ -146,6 +162,7 @@ Bytes encode_chunk(const Chunk& chunk)
             w.put(c.grid);
             w.put(c.params);
             w.put(c.wear);
+            w.put(table_of[k]);
         }
     }
     return w.take();
@@ -158,6 +175,8 @@ Chunk decode_chunk(const Bytes& bytes)
     chunk.id = r.get<uint64_t>();
     chunk.first_row = r.get<uint64_t>();
     chunk.mode = r.get<int32_t>();
+    std::vector<std::shared_ptr<const std::vector<double>>> tables(r.get<uint32_t>());
+    for (auto& t : tables) t = std::make_shared<const std::vector<double>>(r.get_doubles());
     const uint32_t n = r.get<uint32_t>();
     chunk.cases.resize(n);
     for (ContactCase& c : chunk.cases) {
@@ -171,6 +190,12 @@ Chunk decode_chunk(const Bytes& bytes)
             c.grid = r.get<cw_grid>();
             c.params = r.get<cw_params>();
             c.wear = r.get<RowWear>();
+            const int32_t table = r.get<int32_t>();
+            if (table < -1 || table >= static_cast<int32_t>(tables.size()))
+                throw WireError("chunk message: a gap table out of range");
+            if (table >= 0) c.gap_values = tables[static_cast<size_t>(table)];
+            // The pointer's bits are the sender's: the solver sets it.
+            c.params.gap = nullptr;
         } else {
             throw WireError("chunk message: unknown case kind");
         }

@@ -246,7 +246,8 @@ Expected solve_directly(const Row& row)
         put("C11", r.C11), put("C22", r.C22), put("C23", r.C23), put("C33", r.C33);
         put("profile_max_diff", r.profile_max_diff), put("profile_rms_diff", r.profile_rms_diff);
         put("p_max", r.p_max), put("approach", r.approach), put_int("iterations", r.iterations);
-        put("residual", r.residual);
+        put("residual", r.residual), put("Fn", r.normal_force);
+        put_int("n_patches", r.n_patches);
     }
     cw_solver_destroy(s);
     return e;

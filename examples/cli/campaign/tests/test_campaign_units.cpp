@@ -12,6 +12,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <memory>
 #include <random>
 #include <sstream>
 #include <string>
@@ -236,6 +237,35 @@ void wire_round_trips_and_rejects_damage(void** state)
     assert_true(rb.wear_states[kWheel].empty());
     assert_true(back.cases[0].wear.body == kWheel && back.cases[0].wear.s0 == -0.003 &&
                 back.cases[0].wear.passes == 1234.5);
+    // Gap rows carry their file's values, once per chunk for the rows that
+    // share them; the sender's pointer does not travel (the solver sets it).
+    Chunk gap = c;
+    gap.cases.push_back(c.cases[0]);
+    const Chunk plain = gap;
+    const auto h = std::make_shared<const std::vector<double>>(
+        std::vector<double>{1e-5, 2e-5, 3e-5, 0.0, 1e-6, 2e-6, 3e-6, 4e-6, 5e-6});
+    for (ContactCase* g : {&gap.cases[0], &gap.cases[2]}) {
+        g->grid.kind = CW_GRID_GAP;
+        g->params.gap = h->data();
+        g->params.gap_len = h->size();
+        g->gap_values = h;
+    }
+    const Bytes gap_bytes = encode_chunk(gap);
+    assert_int_equal(gap_bytes.size(), encode_chunk(plain).size() + 4 + 9 * sizeof(double));
+    const Chunk gap_back = decode_chunk(gap_bytes);
+    assert_true(gap_back.cases[0].gap_values && *gap_back.cases[0].gap_values == *h);
+    assert_true(gap_back.cases[2].gap_values == gap_back.cases[0].gap_values);
+    assert_true(gap_back.cases[0].params.gap == nullptr && gap_back.cases[0].params.gap_len == 9);
+    assert_true(!back.cases[0].gap_values && !gap_back.cases[1].gap_values);
+    for (size_t n = 0; n < gap_bytes.size(); ++n) {
+        bool threw = false;
+        try {
+            decode_chunk(Bytes(gap_bytes.begin(), gap_bytes.begin() + static_cast<std::ptrdiff_t>(n)));
+        } catch (const WireError&) {
+            threw = true;
+        }
+        assert_true(threw);
+    }
     // Zero runs are stored as counts: a long, mostly zero state is small.
     ChunkResult big = r;
     big.wear_states[kWheel].assign(100000, 0);
