@@ -1,8 +1,8 @@
 // creepwork wheelrail: one wheel on one rail from the profiles to the
 // forces (cw_wheelrail_*): the wheelset height for a vertical force, every
-// contact patch's position, creepages and forces by Kalker's exact theory,
-// in CONTACT's module-1 conventions (SI units). Only the public C ABI is
-// used.
+// contact patch's position, creepages and forces by Kalker's exact theory or
+// the fast model, in CONTACT's module-1 conventions (SI units). Only the
+// public C ABI is used.
 #include <cmath>
 #include <cstdio>
 #include <iostream>
@@ -27,6 +27,7 @@ std::vector<OptionSpec> wheelrail_options()
 {
     return {{"format", OptionKind::choice, {"text", "json"}},
             {"help", OptionKind::flag, {}},
+            {"model", OptionKind::choice, {"exact", "fast"}},
             {"wheel-profile", OptionKind::text, {}},
             {"rail-profile", OptionKind::text, {}},
             {"y-shift", OptionKind::number, {}},
@@ -120,8 +121,16 @@ JsonObject patch_json(const cw_wheelrail_patch& p)
     return j;
 }
 
-void print_text(std::ostream& out, const cw_wheelrail_totals& t, const std::vector<cw_wheelrail_patch>& patches)
+const char* model_description(const std::string& model)
 {
+    return model == "fast" ? "FASTSIM with the semi-Hertzian normal problem"
+                           : "Kalker's exact theory";
+}
+
+void print_text(std::ostream& out, const std::string& model, const cw_wheelrail_totals& t,
+                const std::vector<cw_wheelrail_patch>& patches)
+{
+    out << "model " << model << ": " << model_description(model) << "\n";
     char line[512];
     std::snprintf(line, sizeof line, "wheelset height z_ws = %.6g mm, %d contact patch%s\n", 1e3 * t.z, t.n_patches,
                   t.n_patches == 1 ? "" : "es");
@@ -159,6 +168,11 @@ int command_wheelrail(int argc, char** argv, int first)
     p.nu = o.number("nu", p.nu);
     p.dx = o.number("dx", p.dx);
     p.ds = o.number("ds", p.ds);
+    const std::string model = o.text("model", "exact");
+    if (model == "fast") {
+        p.model = CW_MODEL_FASTSIM;
+        p.normal_method = CW_NORMAL_SEMI_HERTZ;
+    }
     const double fz = o.number("Fz", 0.0);
     const double V = o.number("V", 1.0);
     const double pitch_rate = o.number("pitch-rate", -V / p.nominal_radius);
@@ -195,17 +209,16 @@ int command_wheelrail(int argc, char** argv, int first)
         std::cerr << "creepwork: note: " << (o.has("V") ? "" : "--V 1 m/s, ")
                   << "--pitch-rate " << round_trip_text(pitch_rate)
                   << " rad/s (-V / 0.46 m: rolling at the nominal radius) taken as defaults\n";
-    if (o.text("format", "text") == "json") {
-        std::vector<JsonObject> list;
-        for (const cw_wheelrail_patch& p : patches) list.push_back(patch_json(p));
-        JsonObject total;
-        total.number("Fx", t.Fx).number("Fy", t.Fy).number("Fz", t.Fz);
-        JsonObject j;
-        j.array("patches", list).object("total_rail", total).number("z_ws", t.z);
-        std::cout << j.str(true) << "\n";
-    } else {
-        print_text(std::cout, t, patches);
-    }
+    std::vector<JsonObject> list;
+    for (const cw_wheelrail_patch& q : patches) list.push_back(patch_json(q));
+    JsonObject total;
+    total.number("Fx", t.Fx).number("Fy", t.Fy).number("Fz", t.Fz);
+    JsonObject json;
+    json.text("model", model).array("patches", list).object("total_rail", total).number("z_ws", t.z);
+    if (o.text("format", "text") == "json")
+        std::cout << json.str(true) << "\n";
+    else
+        print_text(std::cout, model, t, patches);
     return kExitOk;
 }
 

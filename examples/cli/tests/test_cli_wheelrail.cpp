@@ -4,7 +4,9 @@
 // left wheel at y_ws = 6.5 mm: FN 10010 N, FX 2260 N, FS -1979 N,
 // p_max 637.0 N/mm^2, z_ws -3.046 mm; CONTACT's
 // examples/mbench_a22_left.ref_out) within 1 % of the load, p_max within
-// 3 %; implausible units are warned about; bad inputs fail cleanly.
+// 3 %; the fast model comes within 3 % of mu Fz of the exact one where
+// the validation measured it (doc/validation/manchester.md: case at
+// 3 mm); implausible units are warned about; bad inputs fail cleanly.
 //
 // usage: test_cli_wheelrail <creepwork binary> <scratch dir> <profile dir> [cmocka filter]
 #include <cmath>
@@ -84,6 +86,37 @@ void json_matches_library(void**)
     cwtest::expect_contains(text.out, "total on the rail");
 }
 
+// Case at y_ws = 3 mm, the right wheel (CONTACT's
+// examples/mbench_a22_right.inp: yaw 7.2 mrad, roll -0.1803 mrad, V 2 m/s).
+std::vector<std::string> tread_args()
+{
+    return {"wheelrail", "--wheel-profile", g_data + "/MBench_S1002_v3.prw", "--rail-profile",
+            g_data + "/MBench_UIC60_v3.prr", "--y-shift", "3e-3", "--yaw", "0.0072", "--roll",
+            "-1.803e-4", "--Fz", "1e4", "--V", "2", "--pitch-rate", "-4.34515"};
+}
+
+void fast_model_near_exact(void**)
+{
+    const cwtest::Json exact =
+        cwtest::parse_json(cwtest::cli_ok(cwtest::with(tread_args(), {"--format", "json"})).out);
+    const cwtest::Json fast = cwtest::parse_json(
+        cwtest::cli_ok(cwtest::with(tread_args(), {"--model", "fast", "--format", "json"})).out);
+    assert_true(exact.at("model").string == "exact");
+    assert_true(fast.at("model").string == "fast");
+    assert_int_equal(fast.at("patches").array.size(), 1);
+    assert_int_equal(exact.at("patches").array.size(), 1);
+    // The fast model's accuracy at 3 mm: within 3 % of mu Fz = 3 kN
+    // (doc/validation/manchester.md, the fast model against the exact one).
+    const cwtest::Json& e = exact.at("patches").array[0];
+    const cwtest::Json& f = fast.at("patches").array[0];
+    for (const char* key : {"Fn", "Fx", "Fs"}) assert_close(f.num(key), e.num(key), 0, 0.03 * 0.3 * 1e4);
+    // ... yet a different model: its own numbers, not the exact model's.
+    assert_true(f.num("Fx") != e.num("Fx"));
+    assert_close(fast.at("total_rail").num("Fz"), 1e4, 1e-6, 0);
+    cwtest::expect_contains(cwtest::cli_ok(cwtest::with(tread_args(), {"--model", "fast"})).out,
+                            "model fast: FASTSIM with the semi-Hertzian normal problem");
+}
+
 void warns_about_implausible_units(void**)
 {
     std::vector<std::string> args = benchmark_args();
@@ -106,6 +139,8 @@ void bad_inputs_fail_cleanly(void**)
     expect_refusal(cli(cwtest::with(benchmark_args(), {"--side", "middle"})), 2, "--side", "bad side");
     expect_refusal(cli(cwtest::with(benchmark_args(), {"--z", "0"})), 2, "--z", "unknown option");
     expect_refusal(cli(cwtest::with(benchmark_args(), {"--dx", "0.2"})), 2, "--dx", "dx in mm");
+    expect_refusal(cli(cwtest::with(benchmark_args(), {"--model", "kalker"})), 2, "--model",
+                   "unknown model");
 }
 
 } // namespace
@@ -122,6 +157,7 @@ int main(int argc, char** argv)
         return 2;
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(json_matches_library),
+        cmocka_unit_test(fast_model_near_exact),
         cmocka_unit_test(warns_about_implausible_units),
         cmocka_unit_test(bad_inputs_fail_cleanly),
     };
