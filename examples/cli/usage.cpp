@@ -28,7 +28,8 @@ commands:
   wheelrail  one wheel on one rail from the profiles: the wheelset height
              for a vertical force, every contact patch's position,
              creepages and forces by the exact theory or the fast model
-             (CONTACT's module-1 conventions)
+             (CONTACT's module-1 conventions); with --out the profiles,
+             every patch's fields and their pictures
   compare    one contact by FASTSIM (or --simplified: its elliptic bound,
              the calibrated model, all three) and by the exact theory on
              one grid: the totals, how far each work distribution is from
@@ -520,6 +521,24 @@ veloc, approach, rolling_radius and the patch force in track coordinates
 Fx_track, Fy_track, Fz_track; total_rail holds Fx, Fy, Fz on the rail in
 track coordinates. creepwork's own convention (forces on the wheel) is
 xi_x = -CKSI, xi_y = CETA, phi = CPHI, Fx = -FX, Fy = FS, Mz = MN.
+
+  --out DIR              also write DIR/result.json (the JSON above),
+                         profiles.csv (body,y_m,z_m: the rail's and the
+                         wheel's profile points in track coordinates at the
+                         solved position), per patch K = 0, 1, ...
+                         patch_K_fields.csv (x_m,s_m,area_m2,pz_Pa,px_Pa,
+                         ps_Pa,sx,ss,state,work_J_per_m: one row per element,
+                         x fastest, x and s from the reference point,
+                         tractions on the rail, micro-slips of the rail,
+                         state 0 exterior, 1 adhesion, 2 slip, the
+                         energy-consistent work per rolled distance) and,
+                         with gnuplot on PATH, profiles.png (the profiles,
+                         contact points, normals and forces on the rail) and
+                         patch_K.png (pressure, slip/adhesion, tractions on
+                         the rail along x and s, work per unit area over x,
+                         s); scripts and data in DIR/gnuplot/
+  --force                replace an earlier --out DIR of creepwork's
+  --no-plots             data files only
 
 example (the Manchester benchmark, case A-2.2 at 3 mm):
   creepwork wheelrail --wheel-profile MBench_S1002_v3.prw \
