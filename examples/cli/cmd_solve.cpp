@@ -1,7 +1,6 @@
 // creepwork solve: one contact; totals to stdout, fields, profile and
 // pictures to --out.
 #include <cstdio>
-#include <fstream>
 #include <iostream>
 
 #include "cli_error.hpp"
@@ -18,14 +17,6 @@
 namespace cwcli {
 
 namespace {
-
-void write_json_file(const std::string& path, const JsonObject& j)
-{
-    std::ofstream f(path);
-    f << j.str(true) << "\n";
-    f.close();
-    if (!f) throw CliError(kExitFailure, "cannot write " + path);
-}
 
 // "jacobian": {"Fx": {"xi_x": .., "xi_y": .., "phi": .., "N": ..}, ...} in SI,
 // rows and columns of cw_solver_solve_jacobian (doc/theory/jacobians.md).

@@ -1,8 +1,9 @@
 // creepwork wheelrail: one wheel on one rail from the profiles to the
 // forces (cw_wheelrail_*): the wheelset height for a vertical force, every
-// contact patch's position, creepages and forces by Kalker's exact theory,
-// in CONTACT's module-1 conventions (SI units). Only the public C ABI is
-// used.
+// contact patch's position, creepages and forces by Kalker's exact theory or
+// the fast model, in CONTACT's module-1 conventions (SI units); with --out
+// the profiles, every patch's fields and their pictures. Only the public C
+// ABI is used.
 #include <cmath>
 #include <cstdio>
 #include <iostream>
@@ -17,7 +18,10 @@
 #include "commands.hpp"
 #include "contact_inputs.hpp"
 #include "json.hpp"
+#include "output_dir.hpp"
 #include "units.hpp"
+#include "wheelrail_data.hpp"
+#include "wheelrail_plots.hpp"
 
 namespace cwcli {
 
@@ -27,6 +31,10 @@ std::vector<OptionSpec> wheelrail_options()
 {
     return {{"format", OptionKind::choice, {"text", "json"}},
             {"help", OptionKind::flag, {}},
+            {"model", OptionKind::choice, {"exact", "fast"}},
+            {"out", OptionKind::text, {}},
+            {"force", OptionKind::flag, {}},
+            {"no-plots", OptionKind::flag, {}},
             {"wheel-profile", OptionKind::text, {}},
             {"rail-profile", OptionKind::text, {}},
             {"y-shift", OptionKind::number, {}},
@@ -120,8 +128,16 @@ JsonObject patch_json(const cw_wheelrail_patch& p)
     return j;
 }
 
-void print_text(std::ostream& out, const cw_wheelrail_totals& t, const std::vector<cw_wheelrail_patch>& patches)
+const char* model_description(const std::string& model)
 {
+    return model == "fast" ? "FASTSIM with the semi-Hertzian normal problem"
+                           : "Kalker's exact theory";
+}
+
+void print_text(std::ostream& out, const std::string& model, const cw_wheelrail_totals& t,
+                const std::vector<cw_wheelrail_patch>& patches)
+{
+    out << "model " << model << ": " << model_description(model) << "\n";
     char line[512];
     std::snprintf(line, sizeof line, "wheelset height z_ws = %.6g mm, %d contact patch%s\n", 1e3 * t.z, t.n_patches,
                   t.n_patches == 1 ? "" : "es");
@@ -143,6 +159,31 @@ void print_text(std::ostream& out, const cw_wheelrail_totals& t, const std::vect
     out << line;
 }
 
+// --out DIR: result.json, profiles.csv, patch_K_fields.csv and the pictures
+// (wheelrail_data.hpp, wheelrail_plots.hpp).
+void write_output(const std::string& out, const ParsedOptions& o, const cw_wheelrail* w,
+                  const cw_wheelrail_params& p, const cw_wheelrail_totals& t,
+                  const std::string& model, const JsonObject& json)
+{
+    const ProfilePoints rail = read_profile(w, CW_WHEELRAIL_RAIL);
+    const ProfilePoints wheel = read_profile(w, CW_WHEELRAIL_WHEEL);
+    std::vector<PatchView> views;
+    long elements = 0;
+    for (size_t k = 0; k < static_cast<size_t>(t.n_patches); ++k) {
+        views.push_back(read_patch_view(w, k, p));
+        elements += static_cast<long>(views.back().solution.size());
+    }
+    const bool plots = should_plot(o, elements);
+    StagedOutput dir(out, "--out", o.has("force"));
+    write_json_file(dir.path("result.json"), json);
+    write_profiles_csv(dir.path("profiles.csv"), rail, wheel);
+    for (size_t k = 0; k < views.size(); ++k)
+        write_patch_fields_csv(dir.path("patch_" + std::to_string(k) + "_fields.csv"), w, k,
+                               views[k].patch);
+    if (plots) write_wheelrail_pictures(dir.path(), rail, wheel, views, t, model);
+    dir.commit();
+}
+
 } // namespace
 
 int command_wheelrail(int argc, char** argv, int first)
@@ -159,6 +200,11 @@ int command_wheelrail(int argc, char** argv, int first)
     p.nu = o.number("nu", p.nu);
     p.dx = o.number("dx", p.dx);
     p.ds = o.number("ds", p.ds);
+    const std::string model = o.text("model", "exact");
+    if (model == "fast") {
+        p.model = CW_MODEL_FASTSIM;
+        p.normal_method = CW_NORMAL_SEMI_HERTZ;
+    }
     const double fz = o.number("Fz", 0.0);
     const double V = o.number("V", 1.0);
     const double pitch_rate = o.number("pitch-rate", -V / p.nominal_radius);
@@ -167,6 +213,12 @@ int command_wheelrail(int argc, char** argv, int first)
     if (!(p.dx > 0.0 && p.dx <= 0.1)) throw usage_error("--dx", "must lie in (0, 0.1] m");
     if (!(p.ds > 0.0 && p.ds <= 0.1)) throw usage_error("--ds", "must lie in (0, 0.1] m");
     for (const std::string& w : warnings(o, p, fz, V, pitch_rate)) std::cerr << "creepwork: warning: " << w << "\n";
+    const std::string out = o.text("out", "");
+    if (!out.empty()) check_output_target(out, "--out", o.has("force"));
+    else
+        for (const char* only_with_out : {"force", "no-plots"})
+            if (o.has(only_with_out))
+                throw usage_error(std::string("--") + only_with_out, "only used with --out DIR");
 
     char message[1024] = "";
     cw_wheelrail* raw = nullptr;
@@ -195,17 +247,17 @@ int command_wheelrail(int argc, char** argv, int first)
         std::cerr << "creepwork: note: " << (o.has("V") ? "" : "--V 1 m/s, ")
                   << "--pitch-rate " << round_trip_text(pitch_rate)
                   << " rad/s (-V / 0.46 m: rolling at the nominal radius) taken as defaults\n";
-    if (o.text("format", "text") == "json") {
-        std::vector<JsonObject> list;
-        for (const cw_wheelrail_patch& p : patches) list.push_back(patch_json(p));
-        JsonObject total;
-        total.number("Fx", t.Fx).number("Fy", t.Fy).number("Fz", t.Fz);
-        JsonObject j;
-        j.array("patches", list).object("total_rail", total).number("z_ws", t.z);
-        std::cout << j.str(true) << "\n";
-    } else {
-        print_text(std::cout, t, patches);
-    }
+    std::vector<JsonObject> list;
+    for (const cw_wheelrail_patch& q : patches) list.push_back(patch_json(q));
+    JsonObject total;
+    total.number("Fx", t.Fx).number("Fy", t.Fy).number("Fz", t.Fz);
+    JsonObject json;
+    json.text("model", model).array("patches", list).object("total_rail", total).number("z_ws", t.z);
+    if (!out.empty()) write_output(out, o, w.get(), p, t, model, json);
+    if (o.text("format", "text") == "json")
+        std::cout << json.str(true) << "\n";
+    else
+        print_text(std::cout, model, t, patches);
     return kExitOk;
 }
 

@@ -86,13 +86,47 @@ void ContactSolver::jacobian(const cw_params& params, double out[CW_JACOBIAN_LEN
 
 Solution ContactSolver::solve_full(const cw_params& params)
 {
+    check(cw_solver_solve(solver_, &params, CW_SOLVE_FULL, nullptr), "cw_solver_solve");
+    return read_solution(solver_, params, grid_);
+}
+
+std::vector<cw_patch> ContactSolver::patches() const
+{
+    return read_patches(solver_);
+}
+
+namespace {
+
+// A getter's failure after a successful solve: the program's fault, not the input's.
+void check_read(const cw_solver* solver, int status, const char* call)
+{
+    if (status != CW_OK)
+        throw CliError(kExitFailure, std::string("cannot read the solution (") + call +
+                                         "): " + cw_solver_last_error(solver));
+}
+
+} // namespace
+
+std::vector<cw_patch> read_patches(const cw_solver* solver)
+{
+    const char* call = "cw_solver_get_patches";
+    size_t count = 0;
+    check_read(solver, cw_solver_get_patches(solver, nullptr, 0, &count), call);
+    std::vector<cw_patch> out(count);
+    for (cw_patch& p : out) cw_patch_init(&p);
+    if (count) check_read(solver, cw_solver_get_patches(solver, out.data(), count, &count), call);
+    return out;
+}
+
+Solution read_solution(const cw_solver* solver, const cw_params& params, const cw_grid& grid)
+{
+    const auto check = [solver](int status, const char* call) { check_read(solver, status, call); };
     Solution s;
     cw_result_init(&s.result);
-    check(cw_solver_solve(solver_, &params, CW_SOLVE_FULL, &s.result), "cw_solver_solve");
+    check(cw_solver_get_result(solver, &s.result), "cw_solver_get_result");
+    check(cw_solver_grid_size(solver, &s.nx, &s.ny), "cw_solver_grid_size");
     s.params = params;
-    s.grid = grid_;
-    s.nx = nx_;
-    s.ny = ny_;
+    s.grid = grid;
     const size_t n = s.size();
     struct {
         int id;
@@ -110,28 +144,18 @@ Solution ContactSolver::solve_full(const cw_params& params)
                   {CW_FIELD_WORK_CONSISTENT, &s.work_consistent}};
     for (auto& f : fields) {
         f.out->assign(n, 0.0);
-        check(cw_solver_get_field(solver_, f.id, f.out->data(), n), "cw_solver_get_field");
+        check(cw_solver_get_field(solver, f.id, f.out->data(), n), "cw_solver_get_field");
     }
     s.state.assign(n, 0);
-    check(cw_solver_get_state(solver_, s.state.data(), n), "cw_solver_get_state");
-    const size_t m = static_cast<size_t>(ny_);
+    check(cw_solver_get_state(solver, s.state.data(), n), "cw_solver_get_state");
+    const size_t m = static_cast<size_t>(s.ny);
     s.profile_y.assign(m, 0.0);
     s.profile_w.assign(m, 0.0);
     s.profile_parabola.assign(m, 0.0);
-    check(cw_solver_get_profile(solver_, s.profile_y.data(), s.profile_w.data(),
+    check(cw_solver_get_profile(solver, s.profile_y.data(), s.profile_w.data(),
                                 s.profile_parabola.data(), m),
           "cw_solver_get_profile");
     return s;
-}
-
-std::vector<cw_patch> ContactSolver::patches() const
-{
-    size_t count = 0;
-    check(cw_solver_get_patches(solver_, nullptr, 0, &count), "cw_solver_get_patches");
-    std::vector<cw_patch> out(count);
-    for (cw_patch& p : out) cw_patch_init(&p);
-    if (count) check(cw_solver_get_patches(solver_, out.data(), count, &count), "cw_solver_get_patches");
-    return out;
 }
 
 std::vector<double> spin_distribution(const Solution& s)

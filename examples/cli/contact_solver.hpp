@@ -53,6 +53,15 @@ private:
     int nx_ = 0, ny_ = 0;
 };
 
+// Everything a solver holds after a CW_SOLVE_FULL solve (its result, fields,
+// states and lateral profile), with the params and grid it was solved for;
+// for a solver this program does not own (cw_wheelrail_patch_solver).
+// Throws CliError(kExitFailure) naming the getter that failed.
+Solution read_solution(const cw_solver* solver, const cw_params& params, const cw_grid& grid);
+
+// The separate contact patches of a solver's last solve (cw_solver_get_patches).
+std::vector<cw_patch> read_patches(const cw_solver* solver);
+
 // Spin creepage felt by each element: phi where it slips, 0 in adhesion (no
 // relative motion) and outside -- the paper's "spin distribution" (Fig. 6).
 std::vector<double> spin_distribution(const Solution& s);

@@ -347,14 +347,6 @@ void print_gap_text(std::ostream& os, const Solution& s, const std::vector<cw_pa
     }
 }
 
-void write_json(const std::string& path, const JsonObject& j)
-{
-    std::ofstream f(path);
-    f << j.str(true) << "\n";
-    f.close();
-    if (!f) throw CliError(kExitFailure, "cannot write " + path);
-}
-
 } // namespace
 
 void reject_gap_options(const ParsedOptions& opts)
@@ -404,7 +396,7 @@ int command_solve_gap(const ParsedOptions& opts)
         StagedOutput dir(out, "--out", opts.has("force"));
         write_fields_csv(dir.path("fields.csv"), s, c.units);
         write_profile_csv(dir.path("profile.csv"), s, c.units);
-        write_json(dir.path("result.json"), json);
+        write_json_file(dir.path("result.json"), json);
         // The run's text, JSON and CSV give the forces on the wheel.
         if (plots)
             write_gap_pictures(dir.path(), s, g.h, patches, file, c.units,

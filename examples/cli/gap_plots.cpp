@@ -18,7 +18,7 @@ namespace {
 
 // The grid's extent [x0 - dx/2, x_last + dx/2] x [...] in plot units: the
 // frame of every picture.
-PatchAxes gap_axes(const cw_grid& g, int nx, int ny, const Units& u)
+PatchAxes gap_axes(const cw_grid& g, int nx, int ny, const Units& u, const std::string& lateral)
 {
     const double k = u.plot_factor(Quantity::length);
     PatchAxes axes;
@@ -27,7 +27,7 @@ PatchAxes gap_axes(const cw_grid& g, int nx, int ny, const Units& u)
     axes.cx = k * (g.x0 + 0.5 * (nx - 1) * g.dx);
     axes.cy = k * (g.y0 + 0.5 * (ny - 1) * g.dy);
     axes.xlabel = "x [" + u.plot_label(Quantity::length) + "]";
-    axes.ylabel = "y [" + u.plot_label(Quantity::length) + "]";
+    axes.ylabel = lateral + " [" + u.plot_label(Quantity::length) + "]";
     axes.ellipse = false;
     return axes;
 }
@@ -194,35 +194,51 @@ std::string gap_map_commands(const Solution& s, const std::vector<double>& h, co
 
 } // namespace
 
-void write_gap_pictures(const std::string& dir, const Solution& s, const std::vector<double>& gap,
-                        const std::vector<cw_patch>& patches, const std::string& file,
-                        const Units& u, const PlotStyle& style)
+GridMaps write_grid_maps(const std::string& dir, const GridMapFiles& files, const Solution& s,
+                         const std::vector<cw_patch>& patches, const Units& u,
+                         const PlotStyle& style, const std::string& lateral)
 {
     std::filesystem::create_directories(dir + "/gnuplot");
-    const PatchAxes axes = gap_axes(s.grid, s.nx, s.ny, u);
+    const PatchAxes axes = gap_axes(s.grid, s.nx, s.ny, u, lateral);
     const double k = u.plot_factor(Quantity::length);
-    const auto cols = write_patch_data(dir + "/gnuplot/patch.dat", s, u, style.sign, axes, k, k);
-    const std::vector<double> h = write_gap_data(dir + "/gnuplot/gap.dat", s, gap, u);
-    write_outline_data(dir + "/gnuplot/outline.dat", s, u);
-    write_patches_data(dir + "/gnuplot/patches.dat", patches, u, style.sign);
+    const auto cols =
+        write_patch_data(dir + "/" + files.elements, s, u, style.sign, axes, k, k);
+    write_outline_data(dir + "/" + files.outline, s, u);
+    if (!patches.empty()) write_patches_data(dir + "/" + files.patches, patches, u, style.sign);
 
-    const std::vector<Panel> all = patch_panels(s, u, style.sign);
+    const std::vector<Panel> all = patch_panels(s, u, style.sign, lateral);
     const auto panel = [&all](int column) {
         return *std::find_if(all.begin(), all.end(),
                              [column](const Panel& p) { return p.column == column; });
     };
-    const Panel pressure = pressure_panel(s, u), work = panel(kPatchWork),
-                traction_x = panel(kPatchTractionX), traction_y = panel(kPatchTractionY);
-    const std::string frame = gp_patch_frame(s.params.rolling_direction, axes);
     const bool outline_slip = std::max(s.nx, s.ny) <= 60;
-    const std::string contact =
-        ", \\\n     'gnuplot/outline.dat' using 1:2 with lines lw 1.5 lc rgb 'black' notitle";
-    const std::string labels =
-        ", \\\n     'gnuplot/patches.dat' using 2:3:(sprintf('patch %d', int($1))) "
-        "with labels boxed font ',10' notitle";
+    GridMaps maps;
+    maps.frame = gp_patch_frame(s.params.rolling_direction, axes);
+    maps.contact = ", \\\n     " + gp_quote(files.outline) +
+                   " using 1:2 with lines lw 1.5 lc rgb 'black' notitle";
     const auto heat = [&](const Panel& p) {
-        return heat_commands(p, cols[p.column - 1], outline_slip, contact);
+        return GridPanel{p.png, heat_commands(p, cols[p.column - 1], outline_slip, maps.contact,
+                                              files.elements)};
     };
+    maps.pressure = heat(pressure_panel(s, u));
+    maps.work = heat(panel(kPatchWork));
+    maps.traction_x = heat(panel(kPatchTractionX));
+    maps.traction_y = heat(panel(kPatchTractionY));
+    const std::string labels =
+        patches.empty() ? ""
+                        : ", \\\n     " + gp_quote(files.patches) +
+                              " using 2:3:(sprintf('" + files.label + " %d', int($1))) "
+                              "with labels boxed font ',10' notitle";
+    maps.slip = {"slip_adhesion.png", slip_map_commands(s, maps.contact + labels, files.elements)};
+    return maps;
+}
+
+void write_gap_pictures(const std::string& dir, const Solution& s, const std::vector<double>& gap,
+                        const std::vector<cw_patch>& patches, const std::string& file,
+                        const Units& u, const PlotStyle& style)
+{
+    const GridMaps maps = write_grid_maps(dir, GridMapFiles(), s, patches, u, style);
+    const std::vector<double> h = write_gap_data(dir + "/gnuplot/gap.dat", s, gap, u);
 
     std::ostringstream g;
     g << "# creepwork solve --gap: pictures of one contact of any shape. Run from the output "
@@ -233,15 +249,14 @@ void write_gap_pictures(const std::string& dir, const Solution& s, const std::ve
     // what that costs, then the tractions.
     g << gp_png("patch.png", 1400, 2000) << "set multiplot layout 3,2 title "
       << gp_title(gap_caption(s, patches, file, u, style.sign), 1400, 12) << " font ',12'\n"
-      << frame << gap_map_commands(s, h, u, contact) << heat(pressure)
-      << slip_map_commands(s, contact + labels) << heat(work) << heat(traction_x)
-      << heat(traction_y) << "unset multiplot\n";
+      << maps.frame << gap_map_commands(s, h, u, maps.contact) << maps.pressure.commands
+      << maps.slip.commands << maps.work.commands << maps.traction_x.commands
+      << maps.traction_y.commands << "unset multiplot\n";
     // The same panels one per file.
-    g << gp_png("gap.png", 800, 700) << frame << gap_map_commands(s, h, u, contact)
-      << gp_png("slip_adhesion.png", 800, 700) << frame
-      << slip_map_commands(s, contact + labels);
-    for (const Panel* p : {&pressure, &work, &traction_x, &traction_y})
-        g << gp_png(p->png, 800, 700) << frame << heat(*p);
+    g << gp_png("gap.png", 800, 700) << maps.frame << gap_map_commands(s, h, u, maps.contact);
+    for (const GridPanel* p :
+         {&maps.slip, &maps.pressure, &maps.work, &maps.traction_x, &maps.traction_y})
+        g << gp_png(p->png, 800, 700) << maps.frame << p->commands;
     g << "unset output\n";
     run_gnuplot(dir, "gnuplot/gap.gp", g.str());
 }

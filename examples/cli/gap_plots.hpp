@@ -22,6 +22,38 @@
 
 namespace cwcli {
 
+// The data files of one contact's maps, relative to the output directory:
+// the elements (patch_maps.hpp's columns), the contact's outline and its
+// separate patches, labelled "<label> N" at their centroids.
+struct GridMapFiles {
+    std::string elements = "gnuplot/patch.dat";
+    std::string outline = "gnuplot/outline.dat";
+    std::string patches = "gnuplot/patches.dat";
+    std::string label = "patch";
+};
+
+// One map: its own picture's name and its gnuplot commands.
+struct GridPanel {
+    std::string png, commands;
+};
+
+// The maps of one contact on a regular grid, each over the grid's extent
+// with the contact outlined: `frame` (ranges, labels, rolling direction)
+// first, then any panel's commands.
+struct GridMaps {
+    std::string frame;
+    std::string contact; // the outline as a further plot element (", \\\n...")
+    GridPanel pressure, slip, work, traction_x, traction_y;
+};
+
+// Writes the files (into dir) of a contact solved on a regular grid of
+// s.grid's cells (kind CW_GRID_GAP: x0, y0, dx, dy) and returns its maps;
+// the slip map labels each of `patches` (none: no labels). The lateral axis
+// is named `lateral` in labels and titles.
+GridMaps write_grid_maps(const std::string& dir, const GridMapFiles& files, const Solution& s,
+                         const std::vector<cw_patch>& patches, const Units& u,
+                         const PlotStyle& style, const std::string& lateral = "y");
+
 // Writes dir/gnuplot/{gap.dat,outline.dat,patches.dat,patch.dat,gap.gp} and
 // runs gnuplot in dir, which draws patch.png (the overview, headed by the
 // inputs and totals), gap.png, pressure.png, slip_adhesion.png,

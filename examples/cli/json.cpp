@@ -3,8 +3,19 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <fstream>
+
+#include "cli_error.hpp"
 
 namespace cwcli {
+
+void write_json_file(const std::string& path, const JsonObject& j)
+{
+    std::ofstream f(path);
+    f << j.str(true) << "\n";
+    f.close();
+    if (!f) throw CliError(kExitFailure, "cannot write " + path);
+}
 
 std::string json_quote(const std::string& s)
 {

@@ -24,6 +24,9 @@ private:
     std::vector<std::pair<std::string, std::string>> members_; // key, rendered value
 };
 
+// Writes j pretty-printed to path; throws CliError(kExitFailure) when it cannot.
+void write_json_file(const std::string& path, const JsonObject& j);
+
 std::string json_quote(const std::string& s);
 std::string json_number(double v);
 

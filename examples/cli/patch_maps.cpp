@@ -110,7 +110,8 @@ cw_patch shown_patch(const Solution& s, cw_patch p)
     return p;
 }
 
-std::vector<Panel> patch_panels(const Solution& s, const Units& u, ForceSign sign)
+std::vector<Panel> patch_panels(const Solution& s, const Units& u, ForceSign sign,
+                                const std::string& lateral)
 {
     const cw_result r = shown_totals(s);
     const std::string body = body_name(sign);
@@ -129,10 +130,11 @@ std::vector<Panel> patch_panels(const Solution& s, const Units& u, ForceSign sig
         {"slip_x.png", "Longitudinal micro-slip W_x/V" + of + " (0 in adhesion)", kPatchSlipX,
          "W_x/V" + of + " [-]", false},
         {"traction_y.png",
-         "Lateral traction" + on + ", Fy = " + plot_total(on_body(sign, r.Fy), Quantity::force, u),
-         kPatchTractionY, "p_y" + on + stress, false},
-        {"slip_y.png", "Lateral micro-slip W_y/V" + of + " (0 in adhesion)", kPatchSlipY,
-         "W_y/V" + of + " [-]", false},
+         "Lateral traction" + on + ", F" + lateral + " = " +
+             plot_total(on_body(sign, r.Fy), Quantity::force, u),
+         kPatchTractionY, "p_" + lateral + on + stress, false},
+        {"slip_y.png", "Lateral micro-slip W_" + lateral + "/V" + of + " (0 in adhesion)",
+         kPatchSlipY, "W_" + lateral + "/V" + of + " [-]", false},
         {"moment.png",
          "Creep moment per unit area" + on + ", Mz = " +
              plot_total(on_body(sign, r.Mz), Quantity::moment, u),
@@ -155,7 +157,9 @@ Panel pressure_panel(const Solution& s, const Units& u)
             kPatchPressure, "p_z [" + u.plot_label(Quantity::stress) + "]", false};
 }
 
-std::string slip_map_commands(const Solution& s, const std::string& extra)
+const char* const kPatchData = "gnuplot/patch.dat";
+
+std::string slip_map_commands(const Solution& s, const std::string& extra, const std::string& data)
 {
     const cw_result& r = s.result;
     std::ostringstream g;
@@ -166,18 +170,18 @@ std::string slip_map_commands(const Solution& s, const std::string& extra)
       << "\n"
       << gp_state_scale();
     // Element outlines help on coarse grids and would hide the map on fine ones.
-    g << "plot 'gnuplot/patch.dat' using 1:2:3:4:5 with boxxyerror fs solid 1.0 "
+    g << "plot " << gp_quote(data) << " using 1:2:3:4:5 with boxxyerror fs solid 1.0 "
       << (std::max(s.nx, s.ny) <= 30 ? "border lc rgb '#808080'" : "noborder")
       << " fc palette z notitle" << extra << "\n";
     return g.str();
 }
 
 std::string heat_commands(const Panel& p, const std::vector<double>& values, bool outline,
-                          const std::string& extra)
+                          const std::string& extra, const std::string& data)
 {
     std::ostringstream g;
     g << "set title " << gp_title({p.title}, 700, 10) << "\n"
-      << gp_colour_scale(values, p.scale) << "plot 'gnuplot/patch.dat' using 1:2:3:4:" << p.column
+      << gp_colour_scale(values, p.scale) << "plot " << gp_quote(data) << " using 1:2:3:4:" << p.column
       << " with boxxyerror fs solid 1.0 noborder fc palette z notitle";
     if (p.outline_slip && outline) g << gp_slip_outline(kPatchState);
     g << extra << "\n";

@@ -72,19 +72,25 @@ std::vector<std::vector<double>> write_patch_data(const std::string& path, const
                                                   double per_metre_y);
 
 // Work, traction and micro-slip along x and y, moment, utilisation and the
-// paper's work x K, in that order, each titled with its total.
-std::vector<Panel> patch_panels(const Solution& s, const Units& u, ForceSign sign);
+// paper's work x K, in that order, each titled with its total; `lateral`
+// names the lateral axis ("s" in a wheel/rail patch frame).
+std::vector<Panel> patch_panels(const Solution& s, const Units& u, ForceSign sign,
+                                const std::string& lateral = "y");
 
 // The normal pressure, titled with Fn and p_max.
 Panel pressure_panel(const Solution& s, const Units& u);
 
-// The slip/adhesion map; `extra` is further plot elements (each starting
-// with ", \\\n"), drawn over it.
-std::string slip_map_commands(const Solution& s, const std::string& extra = "");
+// The data file the maps read, relative to the output directory.
+extern const char* const kPatchData; // "gnuplot/patch.dat"
+
+// The slip/adhesion map of `data` (write_patch_data's file); `extra` is
+// further plot elements (each starting with ", \\\n"), drawn over it.
+std::string slip_map_commands(const Solution& s, const std::string& extra = "",
+                              const std::string& data = kPatchData);
 
 // One heat map of p's column; slip elements outlined when p asks and
-// `outline` allows (elements a few pixels wide); `extra` as above.
+// `outline` allows (elements a few pixels wide); `extra`, `data` as above.
 std::string heat_commands(const Panel& p, const std::vector<double>& values, bool outline,
-                          const std::string& extra = "");
+                          const std::string& extra = "", const std::string& data = kPatchData);
 
 } // namespace cwcli

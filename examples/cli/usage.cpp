@@ -27,8 +27,9 @@ commands:
              (wear and campaign read the same columns: doc/input-schema.md)
   wheelrail  one wheel on one rail from the profiles: the wheelset height
              for a vertical force, every contact patch's position,
-             creepages and forces by the exact theory (CONTACT's module-1
-             conventions)
+             creepages and forces by the exact theory or the fast model
+             (CONTACT's module-1 conventions); with --out the profiles,
+             every patch's fields and their pictures
   compare    one contact by FASTSIM (or --simplified: its elliptic bound,
              the calibrated model, all three) and by the exact theory on
              one grid: the totals, how far each work distribution is from
@@ -475,12 +476,12 @@ const char* usage_wheelrail()
 One wheel on one rail, from the profiles to the forces (doc/wheelrail.md):
 finds the contact patches of the wheelset position, the wheelset height at
 which the vertical force on the rail is Fz, and per patch its position,
-creepages and forces by Kalker's exact theory on the patch's undeformed
-distance grid (every patch solved with its approach the rigid overlap at
-that height). Conventions are CONTACT's module-1 ones: track coordinates x
-along the track, y to the right seen along x, z down; patch frame x, s
-(lateral, in the tangent plane), n (normal, into the rail); creepages of the
-rail relative to the wheel; forces and moments on the rail. SI units.
+creepages and forces on the patch's undeformed distance grid (every patch
+solved with its approach the rigid overlap at that height). Conventions are
+CONTACT's module-1 ones: track coordinates x along the track, y to the right
+seen along x, z down; patch frame x, s (lateral, in the tangent plane), n
+(normal, into the rail); creepages of the rail relative to the wheel;
+forces, tractions and moments on the rail. SI units.
 
 profiles (the track and wheelset of the Manchester benchmark: gauge 1435 mm
 measured 14 mm below the rail top, flange-back distance 1360 mm, flange back
@@ -499,22 +500,45 @@ wheelset (defaults 0):
 
 contact:
   --Fz N                 vertical force on the rail [N] (required)
+  --model exact|fast     exact (default): Kalker's exact theory with the
+                         exact normal problem, as CONTACT's module 1; fast:
+                         FASTSIM with the semi-Hertzian normal problem
+                         (doc/validation/manchester.md: its accuracy)
   --mu MU                friction coefficient (default 0.3)
   --G PA                 combined shear modulus [Pa] (default 8.2e10)
   --nu NU                combined Poisson's ratio (default 0.28)
   --dx M, --ds M         element sizes of the patch grids [m] (default 2e-4)
 
-output (--format text, the default, or json): the wheelset height z_ws [m]
-(> 0 lowers the wheelset) and per patch, from the field side to the track
-centre: y_contact_rail, z_contact_rail (the contact reference point on the
-rail profile) [m], contact_angle [rad], the creepages xi_x, xi_y [-] and phi
-[1/m] (CONTACT's CKSI, CETA, CPHI), Fn, Fx, Fs [N] and Mn [N m] on the rail
-in the patch frame, p_max [Pa], n_contact, n_adhesion, n_slip (elements);
-JSON adds x_contact, y_contact, z_contact (track), y_contact_wheel,
-z_contact_wheel, veloc, approach, rolling_radius and the patch force in
-track coordinates Fx_track, Fy_track, Fz_track; total_rail holds Fx, Fy, Fz
-on the rail in track coordinates. creepwork's own convention (forces on the
-wheel) is xi_x = -CKSI, xi_y = CETA, phi = CPHI, Fx = -FX, Fy = FS, Mz = MN.
+output (--format text, the default, or json): the model, the wheelset
+height z_ws [m] (> 0 lowers the wheelset) and per patch, from the field side
+to the track centre: y_contact_rail, z_contact_rail (the contact reference
+point on the rail profile) [m], contact_angle [rad], the creepages xi_x,
+xi_y [-] and phi [1/m] (CONTACT's CKSI, CETA, CPHI), Fn, Fx, Fs [N] and Mn
+[N m] on the rail in the patch frame, p_max [Pa], n_contact, n_adhesion,
+n_slip (elements); JSON: "model" (exact or fast), and per patch also
+x_contact, y_contact, z_contact (track), y_contact_wheel, z_contact_wheel,
+veloc, approach, rolling_radius and the patch force in track coordinates
+Fx_track, Fy_track, Fz_track; total_rail holds Fx, Fy, Fz on the rail in
+track coordinates. creepwork's own convention (forces on the wheel) is
+xi_x = -CKSI, xi_y = CETA, phi = CPHI, Fx = -FX, Fy = FS, Mz = MN.
+
+  --out DIR              also write DIR/result.json (the JSON above),
+                         profiles.csv (body,y_m,z_m: the rail's and the
+                         wheel's profile points in track coordinates at the
+                         solved position), per patch K = 0, 1, ...
+                         patch_K_fields.csv (x_m,s_m,area_m2,pz_Pa,px_Pa,
+                         ps_Pa,sx,ss,state,work_J_per_m: one row per element,
+                         x fastest, x and s from the reference point,
+                         tractions on the rail, micro-slips of the rail,
+                         state 0 exterior, 1 adhesion, 2 slip, the
+                         energy-consistent work per rolled distance) and,
+                         with gnuplot on PATH, profiles.png (the profiles,
+                         contact points, normals and forces on the rail) and
+                         patch_K.png (pressure, slip/adhesion, tractions on
+                         the rail along x and s, work per unit area over x,
+                         s); scripts and data in DIR/gnuplot/
+  --force                replace an earlier --out DIR of creepwork's
+  --no-plots             data files only
 
 example (the Manchester benchmark, case A-2.2 at 3 mm):
   creepwork wheelrail --wheel-profile MBench_S1002_v3.prw \

@@ -4,10 +4,18 @@
 // left wheel at y_ws = 6.5 mm: FN 10010 N, FX 2260 N, FS -1979 N,
 // p_max 637.0 N/mm^2, z_ws -3.046 mm; CONTACT's
 // examples/mbench_a22_left.ref_out) within 1 % of the load, p_max within
-// 3 %; implausible units are warned about; bad inputs fail cleanly.
+// 3 %; the fast model comes within 3 % of mu Fz of the exact one where
+// the validation measured it (doc/validation/manchester.md: case at
+// 3 mm); --out writes data that add up to the printed forces and lie on the
+// profiles, and pictures; implausible units are warned about; bad inputs
+// fail cleanly.
 //
 // usage: test_cli_wheelrail <creepwork binary> <scratch dir> <profile dir> [cmocka filter]
+#include <algorithm>
 #include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -84,6 +92,173 @@ void json_matches_library(void**)
     cwtest::expect_contains(text.out, "total on the rail");
 }
 
+// Case at y_ws = 3 mm, the right wheel (CONTACT's
+// examples/mbench_a22_right.inp: yaw 7.2 mrad, roll -0.1803 mrad, V 2 m/s).
+std::vector<std::string> tread_args()
+{
+    return {"wheelrail", "--wheel-profile", g_data + "/MBench_S1002_v3.prw", "--rail-profile",
+            g_data + "/MBench_UIC60_v3.prr", "--y-shift", "3e-3", "--yaw", "0.0072", "--roll",
+            "-1.803e-4", "--Fz", "1e4", "--V", "2", "--pitch-rate", "-4.34515"};
+}
+
+void fast_model_near_exact(void**)
+{
+    const cwtest::Json exact =
+        cwtest::parse_json(cwtest::cli_ok(cwtest::with(tread_args(), {"--format", "json"})).out);
+    const cwtest::Json fast = cwtest::parse_json(
+        cwtest::cli_ok(cwtest::with(tread_args(), {"--model", "fast", "--format", "json"})).out);
+    assert_true(exact.at("model").string == "exact");
+    assert_true(fast.at("model").string == "fast");
+    assert_int_equal(fast.at("patches").array.size(), 1);
+    assert_int_equal(exact.at("patches").array.size(), 1);
+    // The fast model's accuracy at 3 mm: within 3 % of mu Fz = 3 kN
+    // (doc/validation/manchester.md, the fast model against the exact one).
+    const cwtest::Json& e = exact.at("patches").array[0];
+    const cwtest::Json& f = fast.at("patches").array[0];
+    for (const char* key : {"Fn", "Fx", "Fs"}) assert_close(f.num(key), e.num(key), 0, 0.03 * 0.3 * 1e4);
+    // ... yet a different model: its own numbers, not the exact model's.
+    assert_true(f.num("Fx") != e.num("Fx"));
+    assert_close(fast.at("total_rail").num("Fz"), 1e4, 1e-6, 0);
+    cwtest::expect_contains(cwtest::cli_ok(cwtest::with(tread_args(), {"--model", "fast"})).out,
+                            "model fast: FASTSIM with the semi-Hertzian normal problem");
+}
+
+// Distance from (y, z) to the polyline through the points of `body`.
+double polyline_distance(const std::vector<std::vector<std::string>>& rows, const std::string& body,
+                         double y, double z)
+{
+    std::vector<std::pair<double, double>> p;
+    for (size_t k = 1; k < rows.size(); ++k)
+        if (rows[k][0] == body) p.push_back({std::strtod(rows[k][1].c_str(), nullptr),
+                                             std::strtod(rows[k][2].c_str(), nullptr)});
+    double best = HUGE_VAL;
+    for (size_t k = 0; k + 1 < p.size(); ++k) {
+        const double dy = p[k + 1].first - p[k].first, dz = p[k + 1].second - p[k].second;
+        const double len2 = dy * dy + dz * dz;
+        double t = len2 > 0 ? ((y - p[k].first) * dy + (z - p[k].second) * dz) / len2 : 0.0;
+        t = std::clamp(t, 0.0, 1.0);
+        best = std::min(best, std::hypot(p[k].first + t * dy - y, p[k].second + t * dz - z));
+    }
+    return best;
+}
+
+void writes_the_data_files(void**)
+{
+    const std::string out = cwtest::g_tools.scratch + "/tread";
+    const cwtest::Run r =
+        cwtest::cli_ok(cwtest::with(tread_args(), {"--format", "json", "--out", out, "--no-plots"}));
+    cwtest::expect_contains(r.err, "wrote 3 files to");
+    // result.json is the run's JSON.
+    assert_true(cwtest::slurp(out + "/result.json") == r.out);
+    const cwtest::Json j = cwtest::parse_json(r.out);
+    const cwtest::Json& q = j.at("patches").array[0];
+
+    // The fields add up to the patch's forces (their definition): Fn is the
+    // sum of pz * area, Fx and Fs the sums of the tractions on the rail.
+    const auto rows = cwtest::read_csv(out + "/patch_0_fields.csv");
+    assert_true(rows.size() > 100);
+    const std::vector<std::string> columns = {"x_m", "s_m", "area_m2", "pz_Pa", "px_Pa",
+                                              "ps_Pa", "sx", "ss", "state", "work_J_per_m"};
+    assert_true(rows[0] == columns);
+    std::map<std::string, size_t> c = cwtest::header_index(rows[0]);
+    const auto num = [&](size_t k, const char* name) {
+        return std::strtod(rows[k][c.at(name)].c_str(), nullptr);
+    };
+    double Fn = 0, Fx = 0, Fs = 0, Mn = 0;
+    int contact = 0;
+    for (size_t k = 1; k < rows.size(); ++k) {
+        const double a = num(k, "area_m2");
+        Fn += num(k, "pz_Pa") * a;
+        Fx += num(k, "px_Pa") * a;
+        Fs += num(k, "ps_Pa") * a;
+        Mn += (num(k, "x_m") * num(k, "ps_Pa") - num(k, "s_m") * num(k, "px_Pa")) * a;
+        contact += num(k, "state") != 0.0;
+    }
+    assert_close(Fn, q.num("Fn"), 1e-9, 0);
+    assert_close(Fx, q.num("Fx"), 0, 1e-9 * q.num("Fn"));
+    assert_close(Fs, q.num("Fs"), 0, 1e-9 * q.num("Fn"));
+    // Mn about the reference point, on the rail (x, s from it).
+    assert_close(Mn, q.num("Mn"), 0, 1e-9 * q.num("Fn") * 1e-2);
+    assert_int_equal(contact, static_cast<int>(q.num("n_contact")));
+
+    // The rail's points run through the contact reference point, which lies
+    // on the rail's surface (to 1 um: the polyline between the points).
+    const auto profile = cwtest::read_csv(out + "/profiles.csv");
+    assert_true(profile[0] == (std::vector<std::string>{"body", "y_m", "z_m"}));
+    assert_true(polyline_distance(profile, "rail", q.num("y_contact"), q.num("z_contact")) < 1e-6);
+    // The wheel's come within the patch's approach of it (its surfaces
+    // overlap there by the approach), not far beyond.
+    assert_true(polyline_distance(profile, "wheel", q.num("y_contact"), q.num("z_contact")) <
+                2 * q.num("approach") + 1e-6);
+    assert_false(std::filesystem::exists(out + "/profiles.png"));
+
+    // A second run into the same directory needs --force.
+    cwtest::expect_refusal(cwtest::cli(cwtest::with(tread_args(), {"--out", out})), 2, "--force",
+                           "output exists");
+}
+
+// Without yaw at 3 mm the patch rolls partly in adhesion: adhesion ahead of
+// slip (the wheel rolls towards +x: material enters at the leading edge,
+// Carter's and Kalker's theory), no work where it adheres, the highest
+// pressure inside the patch.
+void adhesion_leads(void**)
+{
+    std::vector<std::string> args = tread_args();
+    args[8] = "0"; // --yaw
+    const std::string out = cwtest::g_tools.scratch + "/adhesion";
+    cwtest::cli_ok(cwtest::with(args, {"--out", out, "--no-plots"}));
+    const auto rows = cwtest::read_numbers(out + "/patch_0_fields.csv");
+    double x_adhesion = 0, x_slip = 0, p_max = 0, x_lo = HUGE_VAL, x_hi = -HUGE_VAL, x_pmax = 0;
+    int n_adhesion = 0, n_slip = 0;
+    for (const std::vector<double>& e : rows) {
+        if (e[8] == CW_STATE_EXTERIOR) continue;
+        x_lo = std::min(x_lo, e[0]);
+        x_hi = std::max(x_hi, e[0]);
+        if (e[3] > p_max) {
+            p_max = e[3];
+            x_pmax = e[0];
+        }
+        if (e[8] == CW_STATE_ADHESION) {
+            x_adhesion += e[0];
+            ++n_adhesion;
+            assert_true(e[9] == 0.0);
+        } else {
+            x_slip += e[0];
+            ++n_slip;
+        }
+    }
+    assert_true(n_adhesion > 50 && n_slip > 50);
+    assert_true(x_adhesion / n_adhesion > x_slip / n_slip + 1e-3);
+    assert_true(x_pmax > x_lo + 0.25 * (x_hi - x_lo) && x_pmax < x_hi - 0.25 * (x_hi - x_lo));
+}
+
+// The benchmark at 5 mm: one patch of two lobes (tread and gauge corner).
+void writes_pictures(void**)
+{
+    if (std::getenv("CW_TEST_NO_GNUPLOT")) cw_skip();
+    const std::string out = cwtest::g_tools.scratch + "/pictures";
+    std::vector<std::string> args = tread_args();
+    args[6] = "5e-3";
+    args[8] = "0.012";
+    args[10] = "-3.554e-4";
+    args[16] = "-4.3353637";
+    const cwtest::Json j = cwtest::parse_json(
+        cwtest::cli_ok(cwtest::with(args, {"--out", out, "--format", "json"})).out);
+    assert_int_equal(j.at("patches").array.size(), 1);
+    for (const char* png : {"profiles.png", "patch_0.png"}) {
+        const std::string data = cwtest::slurp(out + "/" + png);
+        if (!(data.size() > 5000 && data.compare(0, 8, "\x89PNG\r\n\x1a\n") == 0))
+            fail_msg("%s is not a PNG picture (%zu bytes)", png, data.size());
+    }
+    // Each lobe is drawn across the profiles and labelled on the maps.
+    const auto extents = cwtest::read_csv(out + "/gnuplot/extents.dat");
+    size_t intervals = 0;
+    for (const auto& row : extents) intervals += !row.empty() && row[0][0] != '#';
+    assert_int_equal(intervals, 2);
+    const std::string script = cwtest::slurp(out + "/gnuplot/wheelrail.gp");
+    cwtest::expect_contains(script, "'gnuplot/patch_0_lobes.dat' using 2:3:(sprintf('lobe %d'");
+}
+
 void warns_about_implausible_units(void**)
 {
     std::vector<std::string> args = benchmark_args();
@@ -106,6 +281,10 @@ void bad_inputs_fail_cleanly(void**)
     expect_refusal(cli(cwtest::with(benchmark_args(), {"--side", "middle"})), 2, "--side", "bad side");
     expect_refusal(cli(cwtest::with(benchmark_args(), {"--z", "0"})), 2, "--z", "unknown option");
     expect_refusal(cli(cwtest::with(benchmark_args(), {"--dx", "0.2"})), 2, "--dx", "dx in mm");
+    expect_refusal(cli(cwtest::with(benchmark_args(), {"--model", "kalker"})), 2, "--model",
+                   "unknown model");
+    expect_refusal(cli(cwtest::with(benchmark_args(), {"--no-plots"})), 2, "--no-plots",
+                   "--no-plots without --out");
 }
 
 } // namespace
@@ -122,6 +301,10 @@ int main(int argc, char** argv)
         return 2;
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(json_matches_library),
+        cmocka_unit_test(fast_model_near_exact),
+        cmocka_unit_test(writes_the_data_files),
+        cmocka_unit_test(adhesion_leads),
+        cmocka_unit_test(writes_pictures),
         cmocka_unit_test(warns_about_implausible_units),
         cmocka_unit_test(bad_inputs_fail_cleanly),
     };
