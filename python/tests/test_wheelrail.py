@@ -109,3 +109,21 @@ def test_profiles_meet_at_the_contact():
             assert d <= bound
         with pytest.raises(creepwork.UnknownOptionError, match="'axle'"):
             w.profile("axle")
+
+
+def test_left_wheel_wears_the_same_profile_grid():
+    """Mirror symmetry: the left wheel at the mirrored position (y, yaw and
+    roll negated) wears the rail's and the wheel's grids (the profiles' y as
+    their points are given) as the right wheel does, to 1e-9 of the peak."""
+    mirrored = dict(MOTION, y=-MOTION["y"], yaw=-MOTION["yaw"], roll=-MOTION["roll"])
+    depths = []
+    for side, motion in ((creepwork.CW_WHEELRAIL_RIGHT, MOTION), (creepwork.CW_WHEELRAIL_LEFT, mirrored)):
+        with creepwork.WheelRail(RAIL, WHEEL, side=side) as w:
+            w.solve(Fz=1e4, **motion)
+            rail = creepwork.WearProfile(np.linspace(-0.04, 0.04, 1601))
+            wheel = creepwork.WearProfile(np.linspace(-0.04, 0.04, 1601))
+            w.add_wear(1e3, rail=rail, wheel=wheel)
+            depths.append((rail.depth("height"), wheel.depth("height")))
+    for right, left in zip(depths[0], depths[1]):
+        assert right.max() > 0
+        np.testing.assert_allclose(left, right, rtol=0, atol=1e-9 * right.max())
