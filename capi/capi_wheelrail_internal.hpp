@@ -16,8 +16,9 @@ struct cw_wheelrail {
     wr::WheelRailContact contact;
     bool solved = false;
     // Views of the patch solvers handed out by cw_wheelrail_patch_solver,
-    // one per solver (the solvers live as long as the handle).
-    std::map<const cw::Solver*, std::unique_ptr<cw_solver>> views;
+    // one per solver (the solvers live as long as the handle); made on
+    // first request, also through a const handle.
+    mutable std::map<const cw::Solver*, std::unique_ptr<cw_solver>> views;
     mutable std::string last_error;
 };
 

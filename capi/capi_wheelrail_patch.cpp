@@ -123,9 +123,8 @@ const cw_solver* cw_wheelrail_patch_solver(const cw_wheelrail* wheelrail, size_t
     const cw_solver* view = nullptr;
     const int status = guarded(&wheelrail->last_error, [&] {
         const cw::Solver& s = patch_solver(solved_patch(*wheelrail, k));
-        auto& views = const_cast<cw_wheelrail*>(wheelrail)->views;
-        auto it = views.find(&s);
-        if (it == views.end()) it = views.emplace(&s, std::make_unique<cw_solver>(s)).first;
+        auto it = wheelrail->views.find(&s);
+        if (it == wheelrail->views.end()) it = wheelrail->views.emplace(&s, std::make_unique<cw_solver>(s)).first;
         view = it->second.get();
         return CW_OK;
     });

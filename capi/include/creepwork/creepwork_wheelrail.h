@@ -194,7 +194,8 @@ CW_API const cw_solver* cw_wheelrail_patch_solver(const cw_wheelrail* wheelrail,
  * the patch and the profile, so that CW_WEAR_DEPTH_HEIGHT is vertical on
  * the rail and radial on the wheel. result (may be NULL) sums the patches'
  * mass, volume and work per pass; max_depth is the largest patch's. Checks
- * every patch before adding: on error nothing is added. Errors:
+ * every patch before adding: on error nothing is added. Allocates a wear
+ * workspace per patch and call. Errors:
  * CW_ERR_NULL_POINTER, CW_ERR_NO_SOLUTION, CW_ERR_NO_WORK, CW_ERR_STRUCT_SIZE,
  * CW_ERR_UNKNOWN_OPTION and CW_ERR_INVALID_INPUT (params, passes), and those
  * of cw_wear_profile_add. */
