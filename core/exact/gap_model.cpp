@@ -8,6 +8,7 @@
 #include "contact/error.hpp"
 #include "contact/number_text.hpp"
 #include "contact/kalker_coefficients.hpp"
+#include "exact/cell_box.hpp"
 #include "exact/exact_work.hpp"
 
 namespace creepwork {
@@ -348,23 +349,15 @@ void GapModel::march_start(Level& L, double nu, double G)
 // keep kMinCoarseCells (made ready by the cold start, which alone uses them).
 void GapModel::set_box()
 {
-    int i0 = nx_, i1 = -1, j0 = ny_, j1 = -1;
-    for (int j = 0; j < ny_; ++j)
-        for (int i = 0; i < nx_; ++i)
-            if (pressure_[i + static_cast<size_t>(nx_) * j] > 0.0) {
-                i0 = std::min(i0, i);
-                i1 = std::max(i1, i);
-                j0 = std::min(j0, j);
-                j1 = std::max(j1, j);
-            }
-    if (i1 < 0) i0 = 0, i1 = nx_ - 1, j0 = 0, j1 = ny_ - 1;
+    const CellBox box = cell_box(nx_, ny_, [&](std::size_t k) { return pressure_[k] > 0.0; });
+    const int i0 = box.i0, j0 = box.j0;
     box_i0_ = i0;
     box_j0_ = j0;
     const double left = (setup_.direction > 0 ? grid_.x0 - 0.5 * grid_.dx
                                               : -(grid_.x0 + (nx_ - 0.5) * grid_.dx)) +
                         i0 * grid_.dx;
     const double bottom = grid_.y0 - 0.5 * grid_.dy + j0 * grid_.dy;
-    int nx = i1 - i0 + 1, ny = j1 - j0 + 1;
+    int nx = box.nx, ny = box.ny;
     const int bx = nx, by = ny;
     Level& fine = *levels_[0];
     fine.nx = nx;

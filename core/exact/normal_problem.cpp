@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "contact/hertz.hpp"
+#include "exact/cell_box.hpp"
 
 namespace creepwork {
 namespace {
@@ -21,20 +22,11 @@ NormalProblem::NormalProblem(int nx, int ny)
 void NormalProblem::fit_box(GridConvolution& conv)
 {
     const int ny = n_ / nx_;
-    int i0 = nx_, i1 = -1, j0 = ny, j1 = -1;
-    for (int j = 0; j < ny; ++j)
-        for (int i = 0; i < nx_; ++i)
-            if (active_[i + static_cast<size_t>(nx_) * j]) {
-                i0 = std::min(i0, i);
-                i1 = std::max(i1, i);
-                j0 = std::min(j0, j);
-                j1 = std::max(j1, j);
-            }
-    if (i1 < 0) i0 = 0, i1 = nx_ - 1, j0 = 0, j1 = ny - 1;
-    box_i0_ = i0;
-    box_j0_ = j0;
-    box_nx_ = i1 - i0 + 1;
-    box_ny_ = j1 - j0 + 1;
+    const CellBox box = cell_box(nx_, ny, [&](std::size_t k) { return active_[k] != 0; });
+    box_i0_ = box.i0;
+    box_j0_ = box.j0;
+    box_nx_ = box.nx;
+    box_ny_ = box.ny;
     box_->set_size(box_nx_, box_ny_);
     box_->copy_coefficients(conv);
 }
