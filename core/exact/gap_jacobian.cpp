@@ -20,6 +20,7 @@
 #include <string>
 
 #include "contact/error.hpp"
+#include "contact/number_text.hpp"
 #include "exact/gap_model.hpp"
 #include "nonhertz/pressure_by_load.hpp"
 
@@ -45,7 +46,7 @@ SolveTotals GapModel::solve_jacobian(const ContactInput& in, SolveMode mode, Jac
                     "grow as mu N from N = 0); the Jacobian needs normal_force > 0");
     if (!setup_.loaded)
         throw Error(ErrorKind::invalid_input,
-                    "approach = " + std::to_string(in.approach) +
+                    "approach = " + number_text(in.approach) +
                         " m gives no contact: the forces are not differentiable in N there; "
                         "the Jacobian needs a loaded contact");
 

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "contact/error.hpp"
+#include "contact/number_text.hpp"
 #include "nonhertz/gap_fastsim_model.hpp"
 #include "nonhertz/gap_march_tangent.hpp"
 #include "nonhertz/pressure_by_load.hpp"
@@ -28,7 +29,7 @@ SolveTotals GapFastsimModel::solve_jacobian(const ContactInput& in, SolveMode mo
                     "grow as mu N from N = 0); the Jacobian needs normal_force > 0");
     if (!(t.n_contact > 0))
         throw Error(ErrorKind::invalid_input,
-                    "approach = " + std::to_string(in.approach) +
+                    "approach = " + number_text(in.approach) +
                         " m gives no contact: the forces are not differentiable in N there; "
                         "the Jacobian needs a loaded contact");
     pressure_by_load(in.normal_method, *normal_, *conv_, semi_hertz_, pressure_.data(),
