@@ -94,10 +94,9 @@ public:
     // The same for a change dg of the bound at fixed rigid slip:
     // (I - G'(q)) dq = G_g dg. The local solve is homogeneous of degree 1,
     // q(l c, l g) = l q(c, g), so its derivative by the bound is
-    // dq/dg = (q - J c) / g: zero in adhesion (q = J c), q / g along a
-    // slipping element's direction and the rest from c. c (the rigid slip
-    // and the other elements' share) is rebuilt from the last sweep: its
-    // slip w + B q, input q and output G(q).
+    // dq/dg = (q - J c) / g with J = dq/dc: zero in adhesion (q = J c).
+    // c (the rigid slip and the other elements' share) is rebuilt from the
+    // last sweep: its slip w + B q, input q and output G(q).
     const std::vector<Complex>& tangent_bound(GridConvolution& conv, const std::vector<double>& dg,
                                               double tolerance, int max_iterations);
 
