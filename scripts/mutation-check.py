@@ -335,6 +335,57 @@ GAP_MUTANTS = [
          tests=GAP, require=["test_nonhertz_fastsim"]),
 ]
 MUTANTS += GAP_MUTANTS
+# The Jacobians on a gap grid (core/exact/gap_jacobian.cpp,
+# core/nonhertz/gap_fastsim_jacobian.cpp and their parts): caught by central
+# differences of the solves and the elliptic exact model's Jacobian
+# (test_nonhertz_jacobian), and the C and Fortran doors' own differences.
+GAP_JACOBIAN = [
+    "test_nonhertz_jacobian", "test_capi_jacobian", "test_fortran_gap",
+    "cli_gap_jacobian_matches_library", "python_test_gap_cli",
+]
+GAP_JACOBIAN_MUTANTS = [
+    dict(id="gap-jac-bound-homogeneity", what="the local derivative by the bound drops -J c",
+         file="core/exact/steady_rolling.cpp",
+         old="                d += (gq_[k] - jc) * (dg[k] / g_[k]);",
+         new="                d += gq_[k] * (dg[k] / g_[k]);",
+         tests=GAP_JACOBIAN, require=["test_nonhertz_jacobian"]),
+    dict(id="gap-jac-normal-cg-step", what="the normal problem's derivative takes unit CG steps",
+         file="core/exact/normal_problem.cpp",
+         old="            z[k] += step * p_[k];",
+         new="            z[k] += p_[k];",
+         tests=GAP_JACOBIAN, require=["test_nonhertz_jacobian"]),
+    dict(id="gap-jac-bound-scale", what="the bound's change divided by mu p_max, not p_max",
+         file="core/exact/gap_jacobian.cpp",
+         old="                dp_dN_[box_i0_ + i + static_cast<size_t>(nx_) * (box_j0_ + j)] / s.p_ref;",
+         new="                dp_dN_[box_i0_ + i + static_cast<size_t>(nx_) * (box_j0_ + j)] / s.traction_scale;",
+         tests=GAP_JACOBIAN, require=["test_nonhertz_jacobian"]),
+    dict(id="gap-jac-spin-column", what="the spin's rigid slip takes +y along x in the Jacobian",
+         file="core/exact/gap_jacobian.cpp",
+         old="                                 : SteadyRolling::Complex(-y, x + s.spin_offset * fine.dx);",
+         new="                                 : SteadyRolling::Complex(y, x + s.spin_offset * fine.dx);",
+         tests=GAP_JACOBIAN, require=["test_nonhertz_jacobian"]),
+    dict(id="semi-hertz-derivative", what="the semi-Hertzian dp/dd grows with p instead of 1/p",
+         file="core/nonhertz/semi_hertz_derivative.cpp",
+         old="            dp_dN[k] = p > 0.0 ? 0.5 * P2 / p : 0.0;",
+         new="            dp_dN[k] = p > 0.0 ? 0.5 * P2 * p : 0.0;",
+         tests=GAP_JACOBIAN, require=["test_nonhertz_jacobian"]),
+    dict(id="gap-march-tangent-projection", what="FASTSIM's slip derivative skips the projection",
+         file="core/nonhertz/gap_march_tangent.cpp",
+         old="                    dqx[c] = f * (dqx[c] - ex * along);",
+         new="                    dqx[c] = f * dqx[c];",
+         tests=GAP_JACOBIAN, require=["test_nonhertz_jacobian"]),
+    dict(id="gap-march-tangent-bound", what="FASTSIM's N column misses the bound's own change",
+         file="core/nonhertz/gap_march_tangent.cpp",
+         old="                dqx[3] += ex * dbound;",
+         new="                dqx[3] += 0.0 * dbound;",
+         tests=GAP_JACOBIAN, require=["test_nonhertz_jacobian"]),
+    dict(id="gap-fastsim-jac-frame", what="FASTSIM's gap Jacobian ignores the rolling direction for xi_x",
+         file="core/nonhertz/gap_fastsim_jacobian.cpp",
+         old="    const double frame[3] = {d, 1.0, d}, dc[4] = {d, 1.0, d, 1.0};",
+         new="    const double frame[3] = {d, 1.0, d}, dc[4] = {1.0, 1.0, d, 1.0};",
+         tests=GAP_JACOBIAN, require=["test_nonhertz_jacobian"]),
+]
+MUTANTS += GAP_JACOBIAN_MUTANTS
 # -------------------------------------------------- end contacts of any shape
 
 

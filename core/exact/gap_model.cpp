@@ -79,7 +79,9 @@ GapModel::GapModel(const GridSpec& grid)
         levels_.push_back(std::make_unique<Level>(nx, ny));
     }
     const size_t n = static_cast<size_t>(nx_) * ny_;
-    for (auto* v : {&traction_, &slip_, &rigid_}) v->assign(n, 0.0);
+    for (auto* v : {&traction_, &slip_, &rigid_, &tangent_w_}) v->assign(n, 0.0);
+    dp_dN_.assign(n, 0.0);
+    dg_.assign(n, 0.0);
     state_.assign(n, 0);
     for (auto* v : {&gap_, &gap_in_dx_, &pressure_, &start_, &held_gap_, &paper_, &consistent_})
         v->assign(n, 0.0);
@@ -414,12 +416,6 @@ void GapModel::label_patches(SolveTotals& t)
         for (int i = 0; i < nx_; ++i)
             in_contact_[i + nx_ * j] = pressure_[caller_index(i) + nx_ * j] > 0.0;
     t.n_patches = labels_.label(in_contact_.data());
-}
-
-SolveTotals GapModel::solve_jacobian(const ContactInput&, SolveMode, Jacobian&)
-{
-    throw Error(ErrorKind::invalid_input,
-                "the Jacobian is not available on a gap grid (a contact of any shape)");
 }
 
 SolveTotals GapModel::solve(const ContactInput& in, SolveMode mode)

@@ -84,7 +84,9 @@ public:
 
     // Throws Error naming a bad input, or Error(not_converged).
     SolveTotals solve(const ContactInput& input, SolveMode mode) override;
-    // Throws Error(invalid_input): no Jacobian on a gap grid.
+    // The solve and its Jacobian (gap_jacobian.cpp): derivatives of the
+    // converged discrete system. Throws as solve(), and Error(invalid_input)
+    // for normal_force = 0 (or an approach without contact) when mu > 0.
     SolveTotals solve_jacobian(const ContactInput& input, SolveMode mode,
                                Jacobian& jacobian) override;
 
@@ -171,6 +173,10 @@ private:
     // spin offset, rolling direction), and the last traction scale.
     CreepageHistory history_;
     double previous_traction_scale_ = 0;
+    // solve_jacobian's: the rigid slip's derivative (box), the pressure's
+    // by N [1/m^2] (whole grid, rolling frame) and the bound's (box).
+    std::vector<SteadyRolling::Complex> tangent_w_;
+    std::vector<double> dp_dN_, dg_;
 };
 
 } // namespace creepwork

@@ -15,7 +15,7 @@ constexpr double kPi = 3.14159265358979323846;
 
 NormalProblem::NormalProblem(int nx, int ny)
     : n_(nx * ny), nx_(nx), h_(n_), q_(n_, 0.0), u_(n_), r_(n_), z_(n_), p_(n_), ap_(n_),
-      box_in_(n_), box_out_(n_), active_(n_, 0)
+      box_in_(n_), box_out_(n_), dq_(n_, 0.0), active_(n_, 0)
 {
 }
 
@@ -278,6 +278,67 @@ void NormalProblem::active_set(GridConvolution& conv, bool fixed_sum, double loa
         if (!info.converged || q_[k] < 0.0) q_[k] = 0.0;
         n_contact_ += q_[k] > 0.0;
     }
+}
+
+} // namespace creepwork
+
+namespace creepwork {
+
+bool NormalProblem::load_derivative(GridConvolution& conv, double tolerance, int max_iterations)
+{
+    std::fill(dq_.begin(), dq_.end(), 0.0);
+    if (n_contact_ == 0 || n_active_ == 0) return false;
+    if (box_) fit_box(conv);
+    // Preconditioned conjugate gradients for A_CC z = 1 from z = 0, in dq_
+    // (q_, h_, pen_ stay the solution's).
+    std::vector<double>& z = dq_;
+    auto restrict_to_set = [&](std::vector<double>& v) {
+        for (int k = 0; k < n_; ++k)
+            if (!active_[k]) v[k] = 0.0;
+    };
+    auto largest = [&](const std::vector<double>& v) {
+        double m = 0.0;
+        for (double x : v) m = std::max(m, std::fabs(x));
+        return m;
+    };
+    for (int k = 0; k < n_; ++k) r_[k] = active_[k] ? 1.0 : 0.0;
+    set_product(conv, r_, z_, true);
+    restrict_to_set(z_);
+    p_ = z_;
+    double rz = 0.0;
+    for (int k = 0; k < n_; ++k) rz += r_[k] * z_[k];
+    bool converged = false;
+    for (int it = 0; it < max_iterations; ++it) {
+        set_product(conv, p_, ap_, false);
+        restrict_to_set(ap_);
+        double pap = 0.0;
+        for (int k = 0; k < n_; ++k) pap += p_[k] * ap_[k];
+        if (!(pap > 0.0)) break;
+        const double step = rz / pap;
+        for (int k = 0; k < n_; ++k) {
+            z[k] += step * p_[k];
+            r_[k] -= step * ap_[k];
+        }
+        if (largest(r_) <= tolerance) {
+            converged = true;
+            break;
+        }
+        set_product(conv, r_, z_, true);
+        restrict_to_set(z_);
+        double rz_new = 0.0;
+        for (int k = 0; k < n_; ++k) rz_new += r_[k] * z_[k];
+        const double beta = rz_new / rz;
+        rz = rz_new;
+        for (int k = 0; k < n_; ++k) p_[k] = z_[k] + beta * p_[k];
+    }
+    double sum = 0.0;
+    for (int k = 0; k < n_; ++k) sum += z[k];
+    if (!converged || !(sum > 0.0)) {
+        std::fill(dq_.begin(), dq_.end(), 0.0);
+        return false;
+    }
+    for (int k = 0; k < n_; ++k) z[k] /= sum;
+    return true;
 }
 
 } // namespace creepwork

@@ -75,6 +75,16 @@ public:
 
     // q = pn / p0 per element [i + nx j] (0 outside the contact set).
     const std::vector<double>& pressure() const { return q_; }
+    // The derivative of the last converged solution's pressure by its total,
+    // dq / d(sum q), per element [i + nx j] (sums to 1; 0 off the contact
+    // set), at the contact set C the solve found: on C the problem is
+    // A_CC q = pen - h, so dq = z d(pen) with A_CC z = 1, and dq / d(sum q)
+    // = z / sum z, whichever of the force and the approach was prescribed.
+    // z by the solve's preconditioned conjugate gradients to max |A z - 1|
+    // <= tolerance on C. conv as for the solve. Returns false if they did
+    // not converge in max_iterations (or there is no contact).
+    bool load_derivative(GridConvolution& conv, double tolerance, int max_iterations);
+    const std::vector<double>& pressure_by_load() const { return dq_; }
     // The approach in units of p0 dx / G.
     double approach() const { return pen_; }
     int n_contact() const { return n_contact_; }
@@ -96,7 +106,7 @@ private:
     void fit_box(GridConvolution& conv); // box_ to the bounding box of the set
 
     int n_, nx_;
-    std::vector<double> h_, q_, u_, r_, z_, p_, ap_, box_in_, box_out_;
+    std::vector<double> h_, q_, u_, r_, z_, p_, ap_, box_in_, box_out_, dq_;
     GridConvolution* box_ = nullptr;
     int box_i0_ = 0, box_j0_ = 0, box_nx_ = 0, box_ny_ = 0;
     std::vector<char> active_;

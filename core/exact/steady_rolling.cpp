@@ -310,9 +310,54 @@ const std::vector<SteadyRolling::Complex>& SteadyRolling::tangent(GridConvolutio
                                                                   double tolerance,
                                                                   int max_iterations)
 {
-    std::vector<Complex>& rhs = gt_; // scratch after solve()
+    rigid_slip_sweep(dw.data(), gt_.data()); // gt_, qt_, ft_: scratch after solve()
+    return solve_tangent(conv, tolerance, max_iterations);
+}
+
+void SteadyRolling::bound_sweep(const double* dg, Complex* out) const
+{
+    // sweep() with q and w held: dc = b1 (dG ahead), and the element's own
+    // bound change through dq/dg = (G(q)_k - J c) / g (homogeneity).
+    for (int j = 0; j < ny_; ++j) {
+        Complex ahead(0.0, 0.0);
+        for (int i = nx_ - 1; i >= 0; --i) {
+            const int k = i + nx_ * j;
+            if (!(g_[k] > 0.0)) {
+                out[k] = 0.0;
+                ahead = 0.0;
+                continue;
+            }
+            const double cx = b1x_ * ahead.real(), cy = b1y_ * ahead.imag();
+            const LocalJacobian& J = jac_[k];
+            Complex d(J.j11 * cx + J.j12 * cy, J.j21 * cx + J.j22 * cy);
+            if (state_[k] == 2 && dg[k] != 0.0) {
+                // c as sweep() built it: s = w + B q holds the element's own
+                // diagonal b0 q_k, the element ahead's change is G(q) - q.
+                const Complex up = i + 1 < nx_ ? gq_[k + 1] - q_[k + 1] : Complex(0.0, 0.0);
+                const double c0x = s_[k].real() - b0x_ * q_[k].real() + b1x_ * up.real();
+                const double c0y = s_[k].imag() - b0y_ * q_[k].imag() + b1y_ * up.imag();
+                const Complex jc(J.j11 * c0x + J.j12 * c0y, J.j21 * c0x + J.j22 * c0y);
+                d += (gq_[k] - jc) * (dg[k] / g_[k]);
+            }
+            out[k] = d;
+            ahead = d;
+        }
+    }
+}
+
+const std::vector<SteadyRolling::Complex>& SteadyRolling::tangent_bound(
+    GridConvolution& conv, const std::vector<double>& dg, double tolerance, int max_iterations)
+{
+    bound_sweep(dg.data(), gt_.data());
+    return solve_tangent(conv, tolerance, max_iterations);
+}
+
+const std::vector<SteadyRolling::Complex>& SteadyRolling::solve_tangent(GridConvolution& conv,
+                                                                        double tolerance,
+                                                                        int max_iterations)
+{
+    std::vector<Complex>& rhs = gt_;
     std::vector<Complex>& dq = qt_;
-    rigid_slip_sweep(dw.data(), rhs.data());
     gmres(conv, rhs, dq, tolerance, max_iterations);
     // The true residual of the linear system, checked rather than trusted.
     std::vector<Complex>& r = ft_;

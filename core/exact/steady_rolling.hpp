@@ -91,8 +91,21 @@ public:
     // max_iterations.
     const std::vector<Complex>& tangent(GridConvolution& conv, const std::vector<Complex>& dw,
                                         double tolerance, int max_iterations);
+    // The same for a change dg of the bound at fixed rigid slip:
+    // (I - G'(q)) dq = G_g dg. The local solve is homogeneous of degree 1,
+    // q(l c, l g) = l q(c, g), so its derivative by the bound is
+    // dq/dg = (q - J c) / g with J = dq/dc: zero in adhesion (q = J c).
+    // c (the rigid slip and the other elements' share) is rebuilt from the
+    // last sweep: its slip w + B q, input q and output G(q).
+    const std::vector<Complex>& tangent_bound(GridConvolution& conv, const std::vector<double>& dg,
+                                              double tolerance, int max_iterations);
 
 private:
+    // Solves (I - G') dq = rhs (in gt_) into qt_ and checks the true residual.
+    const std::vector<Complex>& solve_tangent(GridConvolution& conv, double tolerance,
+                                              int max_iterations);
+    // out = G_g dg at the q of the last sweep. No FFT product.
+    void bound_sweep(const double* dg, Complex* out) const;
     // out = G(q); also s_, state_, jac_ at q. One FFT product.
     void sweep(GridConvolution& conv, const std::vector<Complex>& q, std::vector<Complex>& out);
     // out = G'(q) v at the q of the last sweep. One FFT product.

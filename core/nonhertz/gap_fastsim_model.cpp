@@ -28,7 +28,7 @@ GapFastsimModel::GapFastsimModel(const GridSpec& grid)
       normal_(std::make_unique<NormalProblem>(grid.nx, grid.ny)), labels_(grid.nx, grid.ny)
 {
     const size_t n = static_cast<size_t>(nx_) * ny_;
-    for (auto* v : {&gap_, &gap_in_dx_, &pressure_, &start_, &paper_, &consistent_})
+    for (auto* v : {&gap_, &gap_in_dx_, &pressure_, &start_, &paper_, &consistent_, &dp_dN_})
         v->assign(n, 0.0);
     for (auto* v : {&p_, &slip_, &rigid_}) v->assign(n, {0.0, 0.0});
     state_.assign(n, 0);
@@ -52,12 +52,6 @@ void GapFastsimModel::validate(const ContactInput& in) const
                     "flexibility = given is invalid on a gap grid: FASTSIM takes each patch's "
                     "flexibilities from the material (G, nu) and the patch's size");
     validate_gap_input(in, static_cast<size_t>(nx_) * ny_);
-}
-
-SolveTotals GapFastsimModel::solve_jacobian(const ContactInput&, SolveMode, Jacobian&)
-{
-    throw Error(ErrorKind::invalid_input,
-                "the Jacobian is not available on a gap grid (a contact of any shape)");
 }
 
 void GapFastsimModel::solve_normal(const ContactInput& in)

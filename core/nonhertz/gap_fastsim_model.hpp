@@ -63,7 +63,10 @@ public:
     // Throws Error naming a bad input, or Error(not_converged) from the
     // exact normal problem.
     SolveTotals solve(const ContactInput& input, SolveMode mode) override;
-    // Throws Error(invalid_input): no Jacobian on a gap grid.
+    // The solve and its Jacobian (gap_fastsim_jacobian.cpp): forward-mode
+    // derivatives of the march, the normal method's dp/dN in the N column.
+    // Throws as solve(), and Error(invalid_input) for normal_force = 0 (or
+    // an approach without contact) when mu > 0.
     SolveTotals solve_jacobian(const ContactInput& input, SolveMode mode,
                                Jacobian& jacobian) override;
 
@@ -106,6 +109,7 @@ private:
     std::vector<double> longest_, elements_; // longest row [m], element count
     std::vector<PatchTotals> patches_;
     std::vector<double> profile_, row_d_, row_pool_; // per row
+    std::vector<double> dp_dN_; // solve_jacobian's dpz/dN [1/m^2], rolling frame
 };
 
 } // namespace creepwork

@@ -46,6 +46,10 @@ public:
     // [Pa]. Allocates nothing.
     SemiHertzResult solve(const double* h, double dx, double dy, double E_star, bool force,
                           double value, double* pressure);
+    // The derivative of the last solve's pressure by the normal force,
+    // dp/dN [1/m^2] per element [i + nx j] (semi_hertz_derivative.cpp),
+    // from that solve's pressure [Pa].
+    void load_derivative(const double* pressure, double* dp_dN) const;
 
 private:
     struct Row {

@@ -16,37 +16,6 @@
 
 namespace cwcli {
 
-namespace {
-
-// "jacobian": {"Fx": {"xi_x": .., "xi_y": .., "phi": .., "N": ..}, ...} in SI,
-// rows and columns of cw_solver_solve_jacobian (doc/theory/jacobians.md).
-JsonObject jacobian_json(const double J[CW_JACOBIAN_LEN])
-{
-    const char* rows[4] = {"Fx", "Fy", "Mz", "W_macro"};
-    const char* cols[4] = {"xi_x", "xi_y", "phi", "N"};
-    JsonObject j;
-    for (int r = 0; r < 4; ++r) {
-        JsonObject row;
-        for (int c = 0; c < 4; ++c) row.number(cols[c], J[4 * r + c]);
-        j.object(rows[r], row);
-    }
-    return j;
-}
-
-void print_jacobian_text(std::ostream& os, const double J[CW_JACOBIAN_LEN])
-{
-    os << "jacobian   (SI)        d/dxi_x        d/dxi_y        d/dphi         d/dN\n";
-    const char* rows[4] = {"Fx", "Fy", "Mz", "W_macro"};
-    for (int r = 0; r < 4; ++r) {
-        char line[160];
-        std::snprintf(line, sizeof line, "  %-19s %14.6g %14.6g %14.6g %14.6g\n", rows[r],
-                      J[4 * r], J[4 * r + 1], J[4 * r + 2], J[4 * r + 3]);
-        os << line;
-    }
-}
-
-} // namespace
-
 int command_solve(int argc, char** argv, int first)
 {
     auto specs =

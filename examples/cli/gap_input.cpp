@@ -194,8 +194,7 @@ void reject_elliptic_options(const ParsedOptions& o)
         {"L1", "on a gap the flexibilities come from G and nu"},
         {"L2", "on a gap the flexibilities come from G and nu"},
         {"L3", "on a gap the flexibilities come from G and nu"},
-        {"flexibility-blending", "a FASTSIM option for an ellipse, not for a gap"},
-        {"jacobian", "not available for a gap"}};
+        {"flexibility-blending", "a FASTSIM option for an ellipse, not for a gap"}};
     for (const auto& u : unused)
         if (o.has(u[0])) throw usage_error(std::string("--") + u[0], u[1]);
     if (o.has("model") && o.text("model", "") != "exact" && o.text("model", "") != "fastsim")
@@ -390,7 +389,17 @@ int command_solve_gap(const ParsedOptions& opts)
     const Solution s = solver.solve_full(p);
     const std::vector<cw_patch> patches = solver.patches();
     print_notes(c);
-    const JsonObject json = gap_json(s, patches, file, c.units);
+    JsonObject json = gap_json(s, patches, file, c.units);
+    double J[CW_JACOBIAN_LEN] = {};
+    const bool jacobian = opts.has("jacobian");
+    if (jacobian) {
+        solver.jacobian(p, J);
+        json.object("jacobian", jacobian_json(J))
+            .text("jacobian_units",
+                  "SI whatever --units: rows Fx [N], Fy [N], Mz [N m], W_macro [J/m] per "
+                  "xi_x [-], xi_y [-], phi [1/m], N [N] (d/dN along the solution, also with "
+                  "--approach)");
+    }
     if (!out.empty()) {
         const bool plots = should_plot(opts, static_cast<long>(s.size()));
         StagedOutput dir(out, "--out", opts.has("force"));
@@ -405,8 +414,10 @@ int command_solve_gap(const ParsedOptions& opts)
     }
     if (opts.text("format", "text") == "json")
         std::cout << json.str(true) << "\n";
-    else
+    else {
         print_gap_text(std::cout, s, patches, file, c.units);
+        if (jacobian) print_jacobian_text(std::cout, J);
+    }
     return kExitOk;
 }
 

@@ -24,6 +24,12 @@ JsonObject result_json(const cw_result& r, const cw_params& p, const cw_grid& g,
 void print_result_text(std::ostream& os, const cw_result& r, const cw_params& p, const cw_grid& g,
                        const Units& u);
 
+// "jacobian": {"Fx": {"xi_x": .., "xi_y": .., "phi": .., "N": ..}, ...} in SI,
+// rows and columns of cw_solver_solve_jacobian (doc/theory/jacobians.md),
+// and the same as a text table.
+JsonObject jacobian_json(const double J[CW_JACOBIAN_LEN]);
+void print_jacobian_text(std::ostream& os, const double J[CW_JACOBIAN_LEN]);
+
 // "%.*g" of a double, for text output.
 std::string fmt(double v, int digits = 7);
 

@@ -153,7 +153,8 @@ output:
   --no-plots        with --out: data files only
   --jacobian        also the 4 x 4 Jacobian of Fx, Fy, Mz, W_macro by xi_x,
                     xi_y, phi, N (SI, whatever --units): "jacobian" in the
-                    JSON, a table in the text (doc/theory/jacobians.md)
+                    JSON, a table in the text (doc/theory/jacobians.md); with
+                    --gap, d/dN along the solution, also with --approach
   --plot-sign wheel|rail
                     the body the pictures' tractions, forces and moment act
                     on; default wheel, the sign of solve's text, JSON and CSV

@@ -4,7 +4,10 @@
  * directions, SI units; 1e-6 relative to the row's scale at a step that
  * flips no element), the totals bitwise cw_solver_solve's, and every error:
  * NULL pointers, a short buffer, a bad mode, the calibrated model without
- * G and nu, no load -- each with nothing written. */
+ * G and nu, no load -- each with nothing written. On a gap grid (two
+ * lobes, two patches) the exact model and FASTSIM (both normal methods, the
+ * force or the approach given) against central differences of their own
+ * solves, and normal_force = 0 an error naming it. */
 #include "capi_fixtures.h"
 
 #include <math.h>
@@ -194,12 +197,118 @@ static void exact_model(void** state)
     cw_solver_destroy(s);
 }
 
+/* Two paraboloids 10 mm apart across, the upper one 2 um higher, on a
+ * 30 x 48 gap grid of 0.3 x 0.45 mm. */
+static cw_grid two_lobes(double* h)
+{
+    cw_grid g;
+    cw_grid_init(&g);
+    g.kind = CW_GRID_GAP;
+    g.nx = 30;
+    g.ny = 48;
+    g.dx = 0.3e-3;
+    g.dy = 0.45e-3;
+    g.x0 = -14.5 * g.dx;
+    g.y0 = -23.5 * g.dy;
+    for (int j = 0; j < g.ny; ++j)
+        for (int i = 0; i < g.nx; ++i) {
+            const double x = g.x0 + i * g.dx, y = g.y0 + j * g.dy;
+            const double lo = x * x / 0.9 + (y + 5e-3) * (y + 5e-3) / 0.5;
+            const double hi = x * x / 0.8 + (y - 5e-3) * (y - 5e-3) / 0.3 + 2e-6;
+            h[i + g.nx * j] = lo < hi ? lo : hi;
+        }
+    return g;
+}
+
+/* The Jacobian on a gap grid against central differences of cw_solver_solve
+ * (steps 1e-6 of each input's scale, at which no element changes state or
+ * contact; tests/nonhertz/test_nonhertz_jacobian.cpp's step study finds
+ * 1e-10 ... 1e-9 there), within 1e-7 of the row's scale. With the approach
+ * given the N column is dF/dN along the solution: the differences of F over
+ * those of N in the approach. */
+static void gap_grid(void** state)
+{
+    (void)state;
+    static double h[30 * 48];
+    const cw_grid g = two_lobes(h);
+    cw_solver* s = NULL;
+    assert_int_equal(cw_solver_create(&g, &s, NULL, 0), CW_OK);
+    for (int run = 0; run < 4; ++run) {
+        cw_params p = partial_slip(run % 2 ? 1 : -1);
+        p.xi_x = 2e-4;
+        p.xi_y = -1.5e-4;
+        p.phi = 0.1;
+        p.normal_force = 50e3;
+        p.model = run < 2 ? CW_MODEL_EXACT : CW_MODEL_FASTSIM;
+        p.tolerance = run < 2 ? 1e-12 : 0.0;
+        p.warm_start = 0;
+        p.gap = h;
+        p.gap_len = 30 * 48;
+        if (run == 1 || run == 3) {
+            p.normal_load = CW_NORMAL_APPROACH;
+            p.approach = 40e-6;
+        }
+        if (run == 3) p.normal_method = CW_NORMAL_SEMI_HERTZ;
+        double J[CW_JACOBIAN_LEN];
+        cw_result r;
+        cw_result_init(&r);
+        assert_int_equal(cw_solver_solve_jacobian(s, &p, CW_SOLVE_FORCES, &r, J, CW_JACOBIAN_LEN),
+                         CW_OK);
+        assert_true(r.n_slip > 0 && r.n_adhesion > 0 && r.n_patches == 2);
+        const double scale[4] = {1e-3, 1e-3, 1e-3 / 5e-3, r.normal_force};
+        const double rel = 1e-6;
+        for (int col = 0; col < 4; ++col) {
+            cw_params up = p, down = p;
+            double step = rel * scale[col];
+            if (col == CW_JAC_N && p.normal_load == CW_NORMAL_APPROACH) {
+                step = rel * 40e-6;
+                up.approach += step;
+                down.approach -= step;
+            } else {
+                *column(&up, col) += step;
+                *column(&down, col) -= step;
+            }
+            cw_result ru, rd;
+            cw_result_init(&ru);
+            cw_result_init(&rd);
+            assert_int_equal(cw_solver_solve(s, &up, CW_SOLVE_FORCES, &ru), CW_OK);
+            assert_int_equal(cw_solver_solve(s, &down, CW_SOLVE_FORCES, &rd), CW_OK);
+            assert_true(ru.n_slip == r.n_slip && rd.n_slip == r.n_slip);
+            assert_true(ru.n_contact == r.n_contact && rd.n_contact == r.n_contact);
+            const double fu[4] = {ru.Fx, ru.Fy, ru.Mz, ru.W_macro};
+            const double fd[4] = {rd.Fx, rd.Fy, rd.Mz, rd.W_macro};
+            const double denominator =
+                col == CW_JAC_N ? ru.normal_force - rd.normal_force : 2.0 * step;
+            for (int row = 0; row < 4; ++row) {
+                double row_scale = 0.0;
+                for (int k = 0; k < 4; ++k) row_scale += fabs(J[4 * row + k]) * scale[k];
+                assert_close(J[4 * row + col], (fu[row] - fd[row]) / denominator, 0.0,
+                             1e-7 * row_scale / scale[col]);
+            }
+        }
+    }
+    /* No load: no derivative by N. */
+    cw_params p = partial_slip(1);
+    p.model = CW_MODEL_FASTSIM;
+    p.gap = h;
+    p.gap_len = 30 * 48;
+    p.normal_force = 0.0;
+    double J[CW_JACOBIAN_LEN];
+    cw_fill(J, CW_JACOBIAN_LEN, CW_SENTINEL);
+    assert_int_equal(cw_solver_solve_jacobian(s, &p, CW_SOLVE_FORCES, NULL, J, CW_JACOBIAN_LEN),
+                     CW_ERR_INVALID_INPUT);
+    assert_names(cw_solver_last_error(s), "normal_force");
+    assert_untouched(J, CW_JACOBIAN_LEN);
+    cw_solver_destroy(s);
+}
+
 int main(int argc, char** argv)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(matches_central_differences),
         cmocka_unit_test(errors_write_nothing),
         cmocka_unit_test(exact_model),
+        cmocka_unit_test(gap_grid),
     };
     return cw_run_tests(tests, argc > 1 ? argv[1] : NULL);
 }

@@ -7,7 +7,14 @@
 !   - two separate lobes are two patches whose normal and creep forces add
 !     up to the result's (header, cw_solver_get_patches: to rounding);
 !   - get_patches without an array gives the count; a gap on a grid that is
-!     not a gap grid is refused naming gap.
+!     not a gap grid is refused naming gap;
+!   - the Jacobian on the Hertzian gap: its creepage columns are the elliptic
+!     exact model's (the same discrete problem and derivative: 1e-8 of the
+!     row's scale; the C++ tests find 1e-11), its N column (d/dN with the gap
+!     held, where the elliptic model holds a and b) the central difference of
+!     the module's own gap solves at step 1e-6 N (1e-6 of the row's scale),
+!     so Fortran's (row, column) order is checked; normal_force = 0 is
+!     refused through stat naming it, jacobian untouched.
 program test_fortran_gap
    use, intrinsic :: iso_c_binding, only: c_double, c_loc, c_size_t
    use creepwork
@@ -18,6 +25,7 @@ program test_fortran_gap
 
    call hertzian_gap()
    call two_lobes()
+   call hertzian_gap_jacobian()
    call test_summary('test_fortran_gap')
 
 contains
@@ -136,5 +144,85 @@ contains
       call check_true(index(message, 'gap') > 0, 'gap off a gap grid: the message names gap')
       call plain%destroy()
    end subroutine two_lobes
+
+   subroutine hertzian_gap_jacobian()
+      integer, parameter :: n = 24
+      real(c_double), parameter :: S = 1.2_c_double, sentinel = -12345.0_c_double
+      real(c_double), parameter :: A = 1/(2*0.46_c_double), B = 1/(2*0.30_c_double)
+      real(c_double), target :: h(n, n)
+      real(c_double) :: hz(4), x, y, jg(4, 4), je(4, 4), scale(4), row_scale, dn, fd
+      type(cw_grid) :: g
+      type(cw_solver_type) :: gap, elliptic
+      type(cw_params) :: p, q
+      type(cw_result) :: rg, re, up, down
+      integer :: i, j, row, k, stat
+      character(len=:), allocatable :: message
+      call cw_hertz_solve(A, B, load, 82e9_c_double/(1 - 0.28_c_double), hz)
+      g = gap_grid(n, n, -S*hz(1) + S*hz(1)/n, -S*hz(2) + S*hz(2)/n, 2*S*hz(1)/n, 2*S*hz(2)/n)
+      do j = 1, n
+         do i = 1, n
+            x = g%x0 + (i - 1)*g%dx
+            y = g%y0 + (j - 1)*g%dy
+            h(i, j) = A*x**2 + B*y**2
+         end do
+      end do
+      call gap%create(grid=g)
+      p = creep()
+      p%gap = c_loc(h)
+      p%gap_len = size(h, kind=c_size_t)
+      call gap%solve_jacobian(p, jg, CW_SOLVE_FORCES, rg)
+      call check_true(rg%n_slip > 0 .and. rg%n_adhesion > 0, 'gap Jacobian: partial slip')
+      call elliptic%create(nx=n, ny=n, kind=CW_GRID_UNIFORM, box_scale=S)
+      q = creep()
+      q%a = hz(1)
+      q%b = hz(2)
+      call elliptic%solve_jacobian(q, je, CW_SOLVE_FORCES, re)
+      scale = [1e-3_c_double, 1e-3_c_double, 1e-3_c_double/sqrt(hz(1)*hz(2)), load]
+      dn = 1e-6_c_double*load
+      q = p
+      q%normal_force = load + dn
+      call gap%solve(q, CW_SOLVE_FORCES, up)
+      q%normal_force = load - dn
+      call gap%solve(q, CW_SOLVE_FORCES, down)
+      call check_int(up%n_contact, rg%n_contact, 'gap Jacobian: the step keeps the contact')
+      call check_int(down%n_slip, rg%n_slip, 'gap Jacobian: the step keeps the states')
+      do row = 1, 4
+         row_scale = 0
+         do k = 1, 4
+            row_scale = row_scale + abs(je(row, k))*scale(k)
+         end do
+         do k = 1, 3
+            call check_close(jg(row, k), je(row, k), 0.0_c_double, &
+                             1e-8_c_double*row_scale/scale(k), 'gap Jacobian = elliptic (creepages)')
+         end do
+      end do
+      do row = 1, 4
+         row_scale = 0
+         do k = 1, 4
+            row_scale = row_scale + abs(jg(row, k))*scale(k)
+         end do
+         select case (row)
+         case (1)
+            fd = (up%Fx - down%Fx)/(2*dn)
+         case (2)
+            fd = (up%Fy - down%Fy)/(2*dn)
+         case (3)
+            fd = (up%Mz - down%Mz)/(2*dn)
+         case default
+            fd = (up%W_macro - down%W_macro)/(2*dn)
+         end select
+         call check_close(jg(row, 4), fd, 0.0_c_double, 1e-6_c_double*row_scale/scale(4), &
+                          'gap Jacobian: N column vs central difference')
+      end do
+      ! No load: refused, naming normal_force, nothing written.
+      jg = sentinel
+      p%normal_force = 0
+      call gap%solve_jacobian(p, jg, CW_SOLVE_FORCES, rg, stat=stat, errmsg=message)
+      call check_int(stat, CW_ERR_INVALID_INPUT, 'gap Jacobian at N = 0: status')
+      call check_true(index(message, 'normal_force') > 0, 'gap Jacobian at N = 0: names it')
+      call check_true(all(jg == sentinel), 'gap Jacobian at N = 0: nothing written')
+      call gap%destroy()
+      call elliptic%destroy()
+   end subroutine hertzian_gap_jacobian
 
 end program test_fortran_gap

@@ -415,9 +415,13 @@ static void errors_name_the_input(void** state)
     p.gap = h;
     p.gap_len = 900;
     double J[CW_JACOBIAN_LEN];
+    p.normal_force = 0.0; /* no derivative by N at N = 0 */
     assert_int_equal(cw_solver_solve_jacobian(s, &p, CW_SOLVE_FORCES, NULL, J, CW_JACOBIAN_LEN),
                      CW_ERR_INVALID_INPUT);
-    assert_names(cw_solver_last_error(s), "Jacobian");
+    assert_names(cw_solver_last_error(s), "normal_force");
+    p = ok;
+    p.gap = h;
+    p.gap_len = 900;
     assert_int_equal(cw_solver_prepare(s, CW_MODEL_CALIBRATED), CW_ERR_INVALID_INPUT);
     assert_int_equal(cw_solver_prepare(s, CW_MODEL_FASTSIM), CW_OK);
     assert_int_equal(cw_solver_prepare(s, CW_MODEL_EXACT), CW_OK);

@@ -327,11 +327,13 @@ void errors_name_the_input(void**)
     in.normal_force = -1.0;
     expect_error(solver, in, cw::ErrorKind::invalid_input, "normal_force");
     cw::Jacobian J;
+    in = ok;
+    in.normal_force = 0.0; // the forces grow as mu N from N = 0: no derivative there
     try {
-        solver.solve_jacobian(ok, cw::SolveMode::forces_only, J);
-        fail_msg("no error for a Jacobian on a gap grid");
+        solver.solve_jacobian(in, cw::SolveMode::forces_only, J);
+        fail_msg("no error for a Jacobian at normal_force = 0");
     } catch (const cw::Error& e) {
-        assert_non_null(std::strstr(e.what(), "Jacobian"));
+        assert_non_null(std::strstr(e.what(), "normal_force"));
     }
     // The gap inputs off a gap grid.
     cw::Solver uniform(cwtest::uniform_grid(20, 20, 1.2));

@@ -2,7 +2,7 @@
 // the exact model at creation, FASTSIM's by prepare()): cold and warm, the
 // gap or the load changed, the approach given, the semi-Hertzian method, no
 // contact, FASTSIM with either normal method, and every export (fields,
-// states, profile, strips, patches). Counted by interposing malloc
+// states, profile, strips, patches); and both models' Jacobians. Counted by interposing malloc
 // (../robustness/count_malloc.h), so built without sanitizers.
 #include <vector>
 
@@ -71,6 +71,33 @@ void gap_solves_allocate_nothing(void**)
         const size_t patches = solver.patches().size();
         allocations += cw_count_stop();
         assert_true(k == 8 ? patches == 0 : patches >= 1);
+    }
+    assert_int_equal(allocations, 0);
+
+    // The Jacobians on the gap grid: both models, both normal methods, the
+    // force or the approach prescribed, warm and cold.
+    cw::Jacobian jacobian;
+    for (int k = 0; k < 8; ++k) {
+        cw::ContactInput in;
+        in.model = k < 4 ? cw::ModelKind::exact : cw::ModelKind::fastsim;
+        in.gap = s.h.data();
+        in.gap_len = n;
+        in.normal_force = s.normal_force * (1 + 0.01 * k);
+        in.G = s.G;
+        in.nu = s.nu;
+        in.mu = s.mu;
+        in.xi_x = 2e-4;
+        in.xi_y = -1e-4;
+        in.phi = 0.3;
+        in.warm_start = k % 2 != 0;
+        if (k % 4 == 1) in.normal_method = cw::NormalMethod::semi_hertz;
+        if (k % 4 == 2) in.normal_load = cw::NormalLoad::approach, in.approach = 5e-5;
+        if (k % 4 == 3) in.rolling_direction = -1;
+        cw_count_start();
+        solver.solve_jacobian(in, k % 2 ? cw::SolveMode::forces_only : cw::SolveMode::full,
+                              jacobian);
+        allocations += cw_count_stop();
+        assert_true(jacobian.d[0][0] < 0.0); // dFx/dxi_x: the force opposes the creepage
     }
     assert_int_equal(allocations, 0);
 }

@@ -342,7 +342,7 @@ CW_API int cw_solver_grid_size(const cw_solver* solver, int* nx, int* ny);
  * params->gap with the force or the approach prescribed), so
  * params->pressure is ignored; a gap grid takes CW_MODEL_EXACT or
  * CW_MODEL_FASTSIM (each patch with the flexibilities of its own ellipse
- * from G, nu), no other model and no Jacobian (CW_ERR_INVALID_INPUT);
+ * from G, nu), no other model (CW_ERR_INVALID_INPUT);
  * with warm_start = 1 the exact model starts from this handle's last
  * successful exact solution (the answer equals a cold start's to the
  * tolerance); it stops when the relative
@@ -609,6 +609,14 @@ CW_API int cw_batch_prepare(cw_batch* batch, int model);
  *                     exactly; N by homogeneity): a small constant times a
  *                     CW_SOLVE_FORCES solve, linear in the elements.
  *                     Needs CW_FLEX_FROM_MATERIAL, as its solves.
+ * On CW_GRID_GAP (CW_MODEL_EXACT and CW_MODEL_FASTSIM) the gap is held
+ * and the normal_force column is d/dN along the solution, with the force
+ * or the approach prescribed: the normal method's exact dp/dN carried
+ * through the tangential problem (implicit function theorem, four linear
+ * solves; or forward mode through the march), the contact set, the
+ * patches and their flexibilities held as the solve found them
+ * (doc/theory/non-hertzian.md); an approach that gives no contact is
+ * CW_ERR_INVALID_INPUT naming approach.
  * Where an element sits exactly on the traction bound the derivative is the
  * one of the state the solve found (doc/theory/jacobians.md). Needs
  * normal_force > 0 when mu > 0 (the forces are not differentiable in N at

@@ -1,6 +1,7 @@
 // Tests of `creepwork solve --gap`, run as a user runs it: its JSON (the
 // keys of gap_input.hpp) equals what the C ABI gives for the same gap, per
-// patch too; the approach and the semi-Hertzian method; --out writes the
+// patch too, and so does its Jacobian (--jacobian); the approach and the
+// semi-Hertzian method; --out writes the
 // fields; a gap file that is not one regular grid, and options that do not
 // belong with a gap, fail cleanly (status 2, one stderr line naming the file
 // and line or the option).
@@ -306,6 +307,55 @@ void writes_pictures(void**)
     assert_false(fs::exists(bare + "/gnuplot"));
 }
 
+// --jacobian with a gap: the JSON's "jacobian" equals the C ABI's
+// cw_solver_solve_jacobian on the same gap (the exact model with the force
+// given, FASTSIM with the approach given and the semi-Hertzian method), to
+// the rounding of the grid the CLI read from the printed coordinates: each
+// entry within 1e-7 of its row's scale sum_c |J[r][c]| s_c (s: 1e-3 for the
+// creepages, 1e-3 / 5 mm for the spin, N for the load).
+void jacobian_matches_library(void**)
+{
+    const Gap g = two_lobes();
+    const std::string file = write_gap(g, "lobes_jacobian.csv");
+    cw_solver* s = nullptr;
+    assert_int_equal(cw_solver_create(&g.grid, &s, nullptr, 0), CW_OK);
+    for (int k = 0; k < 2; ++k) {
+        std::vector<std::string> args = {"solve", "--gap", file, "--xi-x", "4e-4", "--xi-y",
+                                         "-6e-4", "--spin", "0.5", "--format", "json",
+                                         "--jacobian"};
+        cw_params p = library_params(g);
+        if (k == 1) {
+            p.model = CW_MODEL_FASTSIM;
+            p.normal_load = CW_NORMAL_APPROACH;
+            p.approach = 60e-6;
+            p.normal_method = CW_NORMAL_SEMI_HERTZ;
+            for (const char* a : {"--model", "fastsim", "--approach", "60e-6", "--normal-method",
+                                  "semi-hertz"})
+                args.push_back(a);
+        } else {
+            args.push_back("--N");
+            args.push_back("50e3");
+        }
+        const cwtest::Json j = cwtest::parse_json(cwtest::cli_ok(args).out).at("jacobian");
+        double J[CW_JACOBIAN_LEN];
+        cw_result lib;
+        cw_result_init(&lib);
+        assert_int_equal(cw_solver_solve_jacobian(s, &p, CW_SOLVE_FORCES, &lib, J, CW_JACOBIAN_LEN),
+                         CW_OK);
+        const char* rows[4] = {"Fx", "Fy", "Mz", "W_macro"};
+        const char* cols[4] = {"xi_x", "xi_y", "phi", "N"};
+        const double scale[4] = {1e-3, 1e-3, 1e-3 / 5e-3, lib.normal_force};
+        for (int r = 0; r < 4; ++r) {
+            double row = 0.0;
+            for (int c = 0; c < 4; ++c) row += std::fabs(J[4 * r + c]) * scale[c];
+            assert_true(row > 0.0);
+            for (int c = 0; c < 4; ++c)
+                assert_close(j.at(rows[r]).num(cols[c]), J[4 * r + c], 0.0, 1e-7 * row / scale[c]);
+        }
+    }
+    cw_solver_destroy(s);
+}
+
 void expect_usage_error(const std::vector<std::string>& args, const std::string& names)
 {
     const cwtest::Run r = cwtest::cli(args);
@@ -353,7 +403,6 @@ void bad_gaps_fail_cleanly(void**)
     expect_usage_error({"solve", "--gap", good, "--N", "1e3", "--model", "calibrated"}, "--model");
     expect_usage_error({"solve", "--gap", good}, "--N");
     expect_usage_error({"solve", "--gap", good, "--N", "1e3", "--approach", "1e-5"}, "not both");
-    expect_usage_error({"solve", "--gap", good, "--N", "1e3", "--jacobian"}, "--jacobian");
     expect_usage_error({"solve", "--gap", good, "--N", "1e3", "--plot-axes", "normalised"},
                        "--plot-axes");
     expect_usage_error({"solve", "--a", "6e-3", "--b", "6e-3", "--N", "1e3", "--approach", "1e-5"},
@@ -369,6 +418,7 @@ int main(int argc, char** argv)
     if (!cwtest::set_up(argc, argv, "test_cli_gap", {"creepwork", "scratch"})) return 2;
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(json_matches_library),
+        cmocka_unit_test(jacobian_matches_library),
         cmocka_unit_test(bad_gaps_fail_cleanly),
         cmocka_unit_test(writes_pictures),
     };
