@@ -86,7 +86,7 @@ constexpr int kMaxForceIterations = 100;
 
 } // namespace
 
-SemiHertz::SemiHertz(int nx, int ny) : nx_(nx), ny_(ny), rows_(ny)
+SemiHertz::SemiHertz(int nx, int ny) : nx_(nx), ny_(ny), rows_(ny), scratch_(nx > 0 ? nx : 0)
 {
     if (nx < 3 || ny < 3)
         throw Error(ErrorKind::grid_out_of_range, "the semi-Hertzian normal method needs at "
@@ -94,55 +94,123 @@ SemiHertz::SemiHertz(int nx, int ny) : nx_(nx), ny_(ny), rows_(ny)
     shape_table();
 }
 
+int SemiHertz::shape_at(int j, double d)
+{
+    Row& R = rows_[j];
+    const double* h = h_ + static_cast<size_t>(nx_) * j;
+    const double top = h[R.locus] - h_min_ - d; // < 0 where the row penetrates
+    // The fit's half-width: as long as the next pair still penetrates by
+    // more than kFitDepth of the locus (CONTACT's rule).
+    int k = 1;
+    while (k < kMaxFitHalfWidth && R.locus - k - 1 >= 0 && R.locus + k + 1 < nx_ && top < 0.0 &&
+           std::max(h[R.locus - k - 1], h[R.locus + k + 1]) - h_min_ - d <= kFitDepth * top)
+        ++k;
+    if (k != R.shape_k) {
+        const double A = std::max(R.A[k], kMinCurvature), B = R.B;
+        const double small = std::min(A, B);
+        double f, w2, K;
+        shape_table().at(std::max(A, B) / small, f, w2, K);
+        // alpha = d/(A a^2), beta = d/(B b^2); the major axis lies along
+        // the smaller curvature.
+        const double across = f / (std::max(A, B) / small * w2);
+        R.alpha = A <= B ? f : across;
+        R.beta = A <= B ? across : f;
+        R.p_factor = E_star_ * std::sqrt(small * f / w2) / K;
+        R.shape_k = k;
+    }
+    return k;
+}
+
+namespace {
+
+// One row's semi-ellipse on the elements m = m0 .. m0 + count - 1 from the
+// locus: p = scale sqrt(local - c m^2) (Hertz's p0 sqrt(1 - (x / a)^2) with
+// p0 = scale sqrt(local), a^2 = local / c), written to p; returns their sum.
+// Vectorised: the root of the elements and the sum in four partial sums.
+double semi_ellipse(double local, double c, int m0, int count, double scale, double* p)
+{
+    for (int i = 0; i < count; ++i) {
+        const double m = m0 + i;
+        p[i] = scale * std::sqrt(std::max(local - c * m * m, 0.0));
+    }
+    double s0 = 0.0, s1 = 0.0, s2 = 0.0, s3 = 0.0;
+    int i = 0;
+    for (; i + 3 < count; i += 4) {
+        s0 += p[i];
+        s1 += p[i + 1];
+        s2 += p[i + 2];
+        s3 += p[i + 3];
+    }
+    for (; i < count; ++i) s0 += p[i];
+    return (s0 + s1) + (s2 + s3);
+}
+
+} // namespace
+
 double SemiHertz::force_at(double d, double* out)
 {
-    const ShapeTable& T = shape_table();
     double force = 0.0;
     for (int j = 0; j < ny_; ++j) {
         Row& R = rows_[j];
-        const double* h = h_ + static_cast<size_t>(nx_) * j;
-        double* p = out ? out + static_cast<size_t>(nx_) * j : nullptr;
-        if (p) std::fill(p, p + nx_, 0.0);
-        const double top = h[R.locus] - h_min_ - d; // < 0 where the row penetrates
-        // The fit's half-width: as long as the next pair still penetrates by
-        // more than kFitDepth of the locus (CONTACT's rule).
-        int k = 1;
-        while (k < kMaxFitHalfWidth && R.locus - k - 1 >= 0 && R.locus + k + 1 < nx_ &&
-               top < 0.0 &&
-               std::max(h[R.locus - k - 1], h[R.locus + k + 1]) - h_min_ - d <= kFitDepth * top)
-            ++k;
-        if (k != R.shape_k) {
-            const double A = std::max(R.A[k], kMinCurvature), B = R.B;
-            const double small = std::min(A, B);
-            double f, w2, K;
-            T.at(std::max(A, B) / small, f, w2, K);
-            // alpha = d/(A a^2), beta = d/(B b^2); the major axis lies along
-            // the smaller curvature.
-            const double across = f / (std::max(A, B) / small * w2);
-            R.alpha = A <= B ? f : across;
-            R.beta = A <= B ? across : f;
-            R.p_factor = E_star_ * std::sqrt(small * f / w2) / K;
-            R.shape_k = k;
-        }
+        const int k = shape_at(j, d);
         const double local = d - R.beta * R.g;
-        if (!(local > 0.0)) continue;
-        const double A = std::max(R.A[k], kMinCurvature);
-        const double half = std::sqrt(local / (R.alpha * A)) / dx_; // in elements
-        const double p0 = R.p_factor * std::sqrt(local);
-        const int lo = std::max(0, static_cast<int>(std::ceil(R.locus - half)));
-        const int hi = std::min(nx_ - 1, static_cast<int>(std::floor(R.locus + half)));
-        double row = 0.0;
-        for (int i = lo; i <= hi; ++i) {
-            const double t = (i - R.locus) / half;
-            const double v = 1.0 - t * t;
-            if (!(v > 0.0)) continue;
-            const double pi = p0 * std::sqrt(v);
-            row += pi;
-            if (p) p[i] = pi;
+        int lo = 0, hi = -1;
+        double* p = out ? out + static_cast<size_t>(nx_) * j : nullptr;
+        if (local > 0.0) {
+            const double A = std::max(R.A[k], kMinCurvature);
+            const double half = std::sqrt(local / (R.alpha * A)) / dx_; // in elements
+            lo = std::max(0, static_cast<int>(std::ceil(R.locus - half)));
+            hi = std::min(nx_ - 1, static_cast<int>(std::floor(R.locus + half)));
+            if (hi >= lo)
+                force += semi_ellipse(local, R.alpha * A * dx_ * dx_, lo - R.locus, hi - lo + 1,
+                                      R.p_factor, p ? p + lo : scratch_.data());
         }
-        force += row;
+        if (p) { // zero what the last evaluation wrote outside lo .. hi
+            for (int i = R.written_lo; i <= std::min(R.written_hi, lo - 1); ++i) p[i] = 0.0;
+            for (int i = std::max(R.written_lo, hi + 1); i <= R.written_hi; ++i) p[i] = 0.0;
+            R.written_lo = lo;
+            R.written_hi = hi;
+        }
     }
     return force * dx_ * dy_;
+}
+
+double SemiHertz::continuous_depth(double N)
+{
+    // Per row with local = d - beta g > 0 the semi-ellipse's force
+    // pi/2 p_factor local / sqrt(alpha A) dy, slope c = its factor of local.
+    // Started from a depth where the force exceeds N (the rows at the gap's
+    // lowest level alone carry N there), Newton's steps on the convex,
+    // piecewise-linear force decrease monotonically to its root; the fit's
+    // half-widths follow the depth.
+    constexpr double kHalfPi = 1.57079632679489661923;
+    double slope0 = 0.0;
+    for (int j = 0; j < ny_; ++j)
+        if (rows_[j].g == 0.0) {
+            const double d_guess = 0.0; // the shape at the locus' own level
+            const int k = shape_at(j, d_guess);
+            const Row& R = rows_[j];
+            slope0 += kHalfPi * R.p_factor * dy_ /
+                      std::sqrt(R.alpha * std::max(R.A[k], kMinCurvature));
+        }
+    double d = N / slope0;
+    for (int it = 0; it < 20; ++it) {
+        double F = 0.0, slope = 0.0;
+        for (int j = 0; j < ny_; ++j) {
+            const int k = shape_at(j, d);
+            const Row& R = rows_[j];
+            const double local = d - R.beta * R.g;
+            if (!(local > 0.0)) continue;
+            const double c = kHalfPi * R.p_factor * dy_ /
+                             std::sqrt(R.alpha * std::max(R.A[k], kMinCurvature));
+            F += c * local;
+            slope += c;
+        }
+        const double next = d - (F - N) / slope;
+        if (!(next > 0.0) || std::fabs(next - d) <= 1e-12 * d) return next > 0.0 ? next : d;
+        d = next;
+    }
+    return d;
 }
 
 SemiHertzResult SemiHertz::solve(const double* h, double dx, double dy, double E_star,
@@ -153,16 +221,33 @@ SemiHertzResult SemiHertz::solve(const double* h, double dx, double dy, double E
     dy_ = dy;
     E_star_ = E_star;
     const int n = nx_ * ny_;
-    h_min_ = *std::min_element(h, h + n);
-
+    // Each row's lowest element (the first of equals), then the gap's.
+    h_min_ = h[0];
+    for (int j = 0; j < ny_; ++j) {
+        const double* row = h + static_cast<size_t>(nx_) * j;
+        // Four partial minima, then the first element at the row's minimum.
+        double m0 = row[0], m1 = row[0], m2 = row[0], m3 = row[0];
+        int i = 0;
+        for (; i + 3 < nx_; i += 4) {
+            m0 = std::min(m0, row[i]);
+            m1 = std::min(m1, row[i + 1]);
+            m2 = std::min(m2, row[i + 2]);
+            m3 = std::min(m3, row[i + 3]);
+        }
+        for (; i < nx_; ++i) m0 = std::min(m0, row[i]);
+        const double lowest = std::min(std::min(m0, m1), std::min(m2, m3));
+        int at = 0;
+        while (row[at] != lowest) ++at;
+        rows_[j].locus = at;
+        h_min_ = std::min(h_min_, lowest);
+    }
     // Per row: the locus, its height, the curvature across and the
     // least-squares curvature along x for each half-width k (the parabola
     // c0 + c1 t + c2 t^2 over t = -k..k: c2 from the even moments).
     for (int j = 0; j < ny_; ++j) {
         Row& R = rows_[j];
         const double* row = h + static_cast<size_t>(nx_) * j;
-        const int lowest = static_cast<int>(std::min_element(row, row + nx_) - row);
-        R.locus = std::min(std::max(lowest, 1), nx_ - 2);
+        R.locus = std::min(std::max(R.locus, 1), nx_ - 2);
         R.g = row[R.locus] - h_min_;
         const int jm = j == 0 ? 0 : j == ny_ - 1 ? ny_ - 3 : j - 1; // three rows from jm
         const double* r0 = h + static_cast<size_t>(nx_) * jm;
@@ -181,26 +266,28 @@ SemiHertzResult SemiHertz::solve(const double* h, double dx, double dy, double E
             R.A[k] = (m0 * s2 - m2 * s0) / ((m0 * m4 - m2 * m2) * dx * dx);
         }
         R.shape_k = -1;
+        R.written_lo = 0;
+        R.written_hi = -1;
     }
+    std::fill(pressure, pressure + n, 0.0);
 
     SemiHertzResult res;
-    double d = 0.0;
+    double d = 0.0, F = 0.0;
     if (!force) {
         d = value - h_min_;
+        F = force_at(d, pressure);
     } else {
         // Bracket [lo, hi] with F(lo) < N <= F(hi); secant steps on log F
         // against log d (F grows like d^(3/2) for a Hertzian gap), bisection
         // in log d when a step leaves the bracket.
         const double N = value;
         double lo = 0.0, hi = 0.0;
-        // First guess: Hertz's circle on the lowest row's curvature.
-        double A0 = kMinCurvature;
-        for (const Row& R : rows_)
-            if (R.g == 0.0) A0 = std::max(A0, std::max(R.A[1], kMinCurvature));
-        d = std::cbrt(9.0 * N * N * A0 / (16.0 * E_star * E_star)) * std::cbrt(2.0);
+        // First guess: the depth of the continuous semi-ellipses' force.
+        d = continuous_depth(N);
         double d_prev = 0.0, f_prev = 0.0;
+        // Each evaluation writes the pressures: the last one is the answer.
         for (res.iterations = 1; res.iterations <= kMaxForceIterations; ++res.iterations) {
-            const double F = force_at(d, nullptr);
+            F = force_at(d, pressure);
             (F < N ? lo : hi) = d;
             if (std::fabs(F - N) <= 1e-13 * N || (hi > 0.0 && hi - lo <= 1e-15 * hi)) break;
             double next;
@@ -211,7 +298,7 @@ SemiHertzResult SemiHertz::solve(const double* h, double dx, double dy, double E
             else
                 next = F > 0.0 ? d * std::pow(N / F, 2.0 / 3.0) : 2.0 * d;
             if (hi == 0.0) {
-                next = std::max(next, 1.1 * d); // still below N: grow
+                next = std::max(next, (1.0 + 1e-6) * d); // still below N: grow
             } else if (!(next > lo && next < hi)) {
                 next = lo > 0.0 ? std::sqrt(lo * hi) : 0.5 * hi;
             }
@@ -219,12 +306,15 @@ SemiHertzResult SemiHertz::solve(const double* h, double dx, double dy, double E
             f_prev = F;
             d = next;
         }
+        if (res.iterations > kMaxForceIterations) F = force_at(d, pressure);
     }
-    const double F = force_at(d, pressure);
     const double scale = force && F > 0.0 ? value / F : 1.0;
-    for (int k = 0; k < n; ++k) {
-        pressure[k] *= scale;
-        res.n_contact += pressure[k] > 0.0;
+    for (int j = 0; j < ny_; ++j) {
+        double* p = pressure + static_cast<size_t>(nx_) * j;
+        for (int i = rows_[j].written_lo; i <= rows_[j].written_hi; ++i) {
+            p[i] *= scale;
+            res.n_contact += p[i] > 0.0;
+        }
     }
     res.normal_force = F * scale;
     res.approach = d + h_min_;

@@ -55,14 +55,24 @@ private:
         double A[11] = {};    // curvature along x fitted over +-k elements, k = 1..10
         int shape_k = -1;     // the k of the cached shape factors
         double alpha = 0, beta = 0, p_factor = 0;
+        int written_lo = 0, written_hi = -1; // the elements of out the last force_at wrote
     };
-    // Total force [N] at depth d, and the pressures when out is given.
+    // Total force [N] at depth d, and the pressures when out is given (out
+    // holds zeros but for the rows' written elements, kept so).
     double force_at(double d, double* out);
+    // The force of the rows' semi-ellipses over the continuous x, a
+    // piecewise-linear function of d with the shape factors held: d where it
+    // is N (the discrete iteration's first guess).
+    double continuous_depth(double N);
+    // The fit's half-width k of row j at depth d, and the row's shape factors
+    // for it.
+    int shape_at(int j, double d);
 
     int nx_, ny_;
     double dx_ = 0, dy_ = 0, E_star_ = 0, h_min_ = 0;
     const double* h_ = nullptr;
     std::vector<Row> rows_;
+    std::vector<double> scratch_; // one row's pressures when force_at has no out
 };
 
 } // namespace creepwork
