@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "contact/error.hpp"
 #include "contact/hertz.hpp"
@@ -23,7 +24,13 @@ namespace {
 struct ShapeTable {
     static constexpr int kNodes = 1025;
     static constexpr double kMaxLogAxes = 7.0; // major / minor up to 1100
+    static constexpr int kBuckets = 2048;      // uniform in log r, for the search
     double log_r[kNodes], f[kNodes], w2[kNodes], K[kNodes];
+    // Per start i0 of four nodes: 1 / prod_{b != a} (x_a - x_b).
+    double inv_den[kNodes - 3][4];
+    // The last node at or below bucket b's lower end (b = 0 .. kBuckets - 1).
+    int bucket[kBuckets];
+    double bucket_scale = 0;
 
     ShapeTable()
     {
@@ -43,6 +50,18 @@ struct ShapeTable {
             w2[i] = std::exp(-2.0 * s);
             K[i] = e.K;
         }
+        for (int i0 = 0; i0 + 3 < kNodes; ++i0)
+            for (int a = 0; a < 4; ++a) {
+                double den = 1.0;
+                for (int b = 0; b < 4; ++b)
+                    if (b != a) den *= log_r[i0 + a] - log_r[i0 + b];
+                inv_den[i0][a] = 1.0 / den;
+            }
+        bucket_scale = kBuckets / log_r[kNodes - 1];
+        for (int b = 0, i = 0; b < kBuckets; ++b) {
+            while (i + 1 < kNodes && log_r[i + 1] * bucket_scale <= b) ++i;
+            bucket[b] = i;
+        }
     }
     // (f, w2, K) at curvature ratio r >= 1 (clamped to the table).
     void at(double r, double& fr, double& w2r, double& Kr) const
@@ -56,14 +75,17 @@ struct ShapeTable {
             fr = f[kNodes - 1], w2r = w2[kNodes - 1], Kr = K[kNodes - 1];
             return;
         }
+        // The last node at or below lr: from its bucket's, a few steps on.
+        int i = bucket[std::min(static_cast<int>(lr * bucket_scale), kBuckets - 1)];
+        while (i > 0 && log_r[i] > lr) --i; // (a bucket's end rounded)
+        while (log_r[i + 1] <= lr) ++i;
         // Cubic Lagrange through the four nodes around lr (two at the ends).
-        const int i = static_cast<int>(std::upper_bound(log_r, log_r + kNodes, lr) - log_r) - 1;
         const int i0 = std::min(std::max(i - 1, 0), kNodes - 4);
         double w[4];
         for (int a = 0; a < 4; ++a) {
-            w[a] = 1.0;
+            w[a] = inv_den[i0][a];
             for (int b = 0; b < 4; ++b)
-                if (b != a) w[a] *= (lr - log_r[i0 + b]) / (log_r[i0 + a] - log_r[i0 + b]);
+                if (b != a) w[a] *= lr - log_r[i0 + b];
         }
         fr = w2r = Kr = 0.0;
         for (int a = 0; a < 4; ++a) {
@@ -97,25 +119,33 @@ SemiHertz::SemiHertz(int nx, int ny) : nx_(nx), ny_(ny), rows_(ny), scratch_(nx 
 int SemiHertz::shape_at(int j, double d)
 {
     Row& R = rows_[j];
-    const double* h = h_ + static_cast<size_t>(nx_) * j;
-    const double top = h[R.locus] - h_min_ - d; // < 0 where the row penetrates
     // The fit's half-width: as long as the next pair still penetrates by
     // more than kFitDepth of the locus (CONTACT's rule).
+    const double top = R.g - d; // < 0 where the row penetrates
     int k = 1;
-    while (k < kMaxFitHalfWidth && R.locus - k - 1 >= 0 && R.locus + k + 1 < nx_ && top < 0.0 &&
-           std::max(h[R.locus - k - 1], h[R.locus + k + 1]) - h_min_ - d <= kFitDepth * top)
-        ++k;
+    if (top < 0.0)
+        while (k < kMaxFitHalfWidth && R.pair[k] - d <= kFitDepth * top) ++k;
     if (k != R.shape_k) {
-        const double A = std::max(R.A[k], kMinCurvature), B = R.B;
-        const double small = std::min(A, B);
-        double f, w2, K;
-        shape_table().at(std::max(A, B) / small, f, w2, K);
-        // alpha = d/(A a^2), beta = d/(B b^2); the major axis lies along
-        // the smaller curvature.
-        const double across = f / (std::max(A, B) / small * w2);
-        R.alpha = A <= B ? f : across;
-        R.beta = A <= B ? across : f;
-        R.p_factor = E_star_ * std::sqrt(small * f / w2) / K;
+        if (!(R.known & (1u << k))) {
+            const double A = std::max(R.A[k], kMinCurvature), B = R.B;
+            const double small = std::min(A, B);
+            double f, w2, K;
+            shape_table().at(std::max(A, B) / small, f, w2, K);
+            // alpha = d/(A a^2), beta = d/(B b^2); the major axis lies along
+            // the smaller curvature.
+            const double across = f / (std::max(A, B) / small * w2);
+            R.alpha_k[k] = A <= B ? f : across;
+            R.beta_k[k] = A <= B ? across : f;
+            R.p_factor_k[k] = E_star_ * std::sqrt(small * f / w2) / K;
+            // The semi-ellipse p_factor sqrt(local - alpha A x^2) over x:
+            // pi/2 p_factor local / sqrt(alpha A), times dy.
+            R.slope_k[k] = 1.57079632679489661923 * R.p_factor_k[k] * dy_ /
+                           std::sqrt(R.alpha_k[k] * A);
+            R.known |= 1u << k;
+        }
+        R.alpha = R.alpha_k[k];
+        R.beta = R.beta_k[k];
+        R.p_factor = R.p_factor_k[k];
         R.shape_k = k;
     }
     return k;
@@ -178,21 +208,13 @@ double SemiHertz::force_at(double d, double* out)
 double SemiHertz::continuous_depth(double N)
 {
     // Per row with local = d - beta g > 0 the semi-ellipse's force
-    // pi/2 p_factor local / sqrt(alpha A) dy, slope c = its factor of local.
-    // Started from a depth where the force exceeds N (the rows at the gap's
-    // lowest level alone carry N there), Newton's steps on the convex,
-    // piecewise-linear force decrease monotonically to its root; the fit's
+    // slope_k local. Started from a depth where the force exceeds N (the
+    // rows at the gap's lowest level alone carry N there), Newton's steps on
+    // the convex, piecewise-linear force decrease to its root; the fit's
     // half-widths follow the depth.
-    constexpr double kHalfPi = 1.57079632679489661923;
     double slope0 = 0.0;
     for (int j = 0; j < ny_; ++j)
-        if (rows_[j].g == 0.0) {
-            const double d_guess = 0.0; // the shape at the locus' own level
-            const int k = shape_at(j, d_guess);
-            const Row& R = rows_[j];
-            slope0 += kHalfPi * R.p_factor * dy_ /
-                      std::sqrt(R.alpha * std::max(R.A[k], kMinCurvature));
-        }
+        if (rows_[j].g == 0.0) slope0 += rows_[j].slope_k[shape_at(j, 0.0)];
     double d = N / slope0;
     for (int it = 0; it < 20; ++it) {
         double F = 0.0, slope = 0.0;
@@ -201,13 +223,13 @@ double SemiHertz::continuous_depth(double N)
             const Row& R = rows_[j];
             const double local = d - R.beta * R.g;
             if (!(local > 0.0)) continue;
-            const double c = kHalfPi * R.p_factor * dy_ /
-                             std::sqrt(R.alpha * std::max(R.A[k], kMinCurvature));
-            F += c * local;
-            slope += c;
+            F += R.slope_k[k] * local;
+            slope += R.slope_k[k];
         }
+        continuous_slope_ = slope;
         const double next = d - (F - N) / slope;
-        if (!(next > 0.0) || std::fabs(next - d) <= 1e-12 * d) return next > 0.0 ? next : d;
+        if (!(next > 0.0)) return d;
+        if (std::fabs(next - d) <= 1e-12 * d) return next;
         d = next;
     }
     return d;
@@ -229,12 +251,12 @@ SemiHertzResult SemiHertz::solve(const double* h, double dx, double dy, double E
         double m0 = row[0], m1 = row[0], m2 = row[0], m3 = row[0];
         int i = 0;
         for (; i + 3 < nx_; i += 4) {
-            m0 = std::min(m0, row[i]);
-            m1 = std::min(m1, row[i + 1]);
-            m2 = std::min(m2, row[i + 2]);
-            m3 = std::min(m3, row[i + 3]);
+            m0 = row[i] < m0 ? row[i] : m0; // selects, not branches
+            m1 = row[i + 1] < m1 ? row[i + 1] : m1;
+            m2 = row[i + 2] < m2 ? row[i + 2] : m2;
+            m3 = row[i + 3] < m3 ? row[i + 3] : m3;
         }
-        for (; i < nx_; ++i) m0 = std::min(m0, row[i]);
+        for (; i < nx_; ++i) m0 = row[i] < m0 ? row[i] : m0;
         const double lowest = std::min(std::min(m0, m1), std::min(m2, m3));
         int at = 0;
         while (row[at] != lowest) ++at;
@@ -265,6 +287,11 @@ SemiHertzResult SemiHertz::solve(const double* h, double dx, double dy, double E
             m4 += 2.0 * k2 * k2;
             R.A[k] = (m0 * s2 - m2 * s0) / ((m0 * m4 - m2 * m2) * dx * dx);
         }
+        for (int k = 1; k < kMaxFitHalfWidth; ++k)
+            R.pair[k] = R.locus - k - 1 >= 0 && R.locus + k + 1 < nx_
+                            ? std::max(row[R.locus - k - 1], row[R.locus + k + 1]) - h_min_
+                            : std::numeric_limits<double>::infinity();
+        R.known = 0;
         R.shape_k = -1;
         R.written_lo = 0;
         R.written_hi = -1;
@@ -295,6 +322,10 @@ SemiHertzResult SemiHertz::solve(const double* h, double dx, double dy, double E
                 next = std::exp(std::log(d) + (std::log(N) - std::log(F)) *
                                                   (std::log(d) - std::log(d_prev)) /
                                                   (std::log(F) - std::log(f_prev)));
+            else if (F > 0.0 && res.iterations == 1)
+                // The discrete force as the continuous one times F / N:
+                // Newton's step on that.
+                next = d + N * (N / F - 1.0) / continuous_slope_;
             else
                 next = F > 0.0 ? d * std::pow(N / F, 2.0 / 3.0) : 2.0 * d;
             if (hi == 0.0) {
@@ -306,7 +337,14 @@ SemiHertzResult SemiHertz::solve(const double* h, double dx, double dy, double E
             f_prev = F;
             d = next;
         }
-        if (res.iterations > kMaxForceIterations) F = force_at(d, pressure);
+        // Where the force jumps past N (the fit widening at a row), the
+        // bracket closes on the jump: the answer is its upper end, whatever
+        // side the iteration ended on.
+        if (res.iterations > kMaxForceIterations || (F < N && std::fabs(F - N) > 1e-13 * N &&
+                                                     hi > 0.0)) {
+            d = hi > 0.0 ? hi : d;
+            F = force_at(d, pressure);
+        }
     }
     const double scale = force && F > 0.0 ? value / F : 1.0;
     for (int j = 0; j < ny_; ++j) {

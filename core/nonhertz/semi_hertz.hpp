@@ -56,6 +56,14 @@ private:
         int shape_k = -1;     // the k of the cached shape factors
         double alpha = 0, beta = 0, p_factor = 0;
         int written_lo = 0, written_hi = -1; // the elements of out the last force_at wrote
+        // For k = 1..9: the height above the gap's lowest element of the
+        // higher of the elements locus -+ (k + 1); infinite past the row's ends.
+        double pair[10] = {};
+        // Per k, known once computed in this solve (bit k of known): the
+        // shape factors, and the continuous semi-ellipse's force per unit
+        // local depth [N/m].
+        unsigned known = 0;
+        double alpha_k[11] = {}, beta_k[11] = {}, p_factor_k[11] = {}, slope_k[11] = {};
     };
     // Total force [N] at depth d, and the pressures when out is given (out
     // holds zeros but for the rows' written elements, kept so).
@@ -64,6 +72,7 @@ private:
     // piecewise-linear function of d with the shape factors held: d where it
     // is N (the discrete iteration's first guess).
     double continuous_depth(double N);
+    double continuous_slope_ = 0; // that force's slope at that depth [N/m]
     // The fit's half-width k of row j at depth d, and the row's shape factors
     // for it.
     int shape_at(int j, double d);
