@@ -6,6 +6,7 @@
 
 #include "contact/error.hpp"
 #include "contact/hertz.hpp"
+#include "march/kernel_isa.hpp"
 
 namespace creepwork {
 namespace {
@@ -157,6 +158,12 @@ namespace {
 // locus: p = scale sqrt(local - c m^2) (Hertz's p0 sqrt(1 - (x / a)^2) with
 // p0 = scale sqrt(local), a^2 = local / c), written to p; returns their sum.
 // Vectorised: the root of the elements and the sum in four partial sums.
+// Compiled for AVX2 too (picked at load time): four roots at a time, and
+// bitwise the same result (each element and each partial sum the same
+// operations in the same order).
+#if CREEPWORK_X86_KERNELS
+__attribute__((target_clones("avx2", "default")))
+#endif
 double semi_ellipse(double local, double c, int m0, int count, double scale, double* p)
 {
     for (int i = 0; i < count; ++i) {
