@@ -311,21 +311,31 @@ SemiHertzResult SemiHertz::solve(const double* h, double dx, double dy, double E
         d = value - h_min_;
         F = force_at(d, pressure);
     } else {
-        // Bracket [lo, hi] with F(lo) < N <= F(hi); secant steps on log F
-        // against log d (F grows like d^(3/2) for a Hertzian gap), bisection
-        // in log d when a step leaves the bracket.
+        // Bracket [lo, hi] with F(lo) < N <= F(hi); log d interpolated in
+        // log F (F grows like d^(3/2) for a Hertzian gap): a secant step
+        // from two evaluations, an inverse quadratic one from three;
+        // bisection in log d when a step leaves the bracket.
         const double N = value;
         double lo = 0.0, hi = 0.0;
         // First guess: the depth of the continuous semi-ellipses' force.
         d = continuous_depth(N);
-        double d_prev = 0.0, f_prev = 0.0;
+        double d_prev = 0.0, f_prev = 0.0, d_prev2 = 0.0, f_prev2 = 0.0;
         // Each evaluation writes the pressures: the last one is the answer.
         for (res.iterations = 1; res.iterations <= kMaxForceIterations; ++res.iterations) {
             F = force_at(d, pressure);
             (F < N ? lo : hi) = d;
             if (std::fabs(F - N) <= 1e-13 * N || (hi > 0.0 && hi - lo <= 1e-15 * hi)) break;
             double next;
-            if (F > 0.0 && f_prev > 0.0 && d != d_prev)
+            if (F > 0.0 && f_prev > 0.0 && f_prev2 > 0.0 && F != f_prev && F != f_prev2 &&
+                f_prev != f_prev2) {
+                // Inverse quadratic interpolation of log d in log F through
+                // the last three evaluations.
+                const double y0 = std::log(F), y1 = std::log(f_prev), y2 = std::log(f_prev2);
+                const double Y = std::log(N);
+                next = std::exp(std::log(d) * (Y - y1) * (Y - y2) / ((y0 - y1) * (y0 - y2)) +
+                                std::log(d_prev) * (Y - y0) * (Y - y2) / ((y1 - y0) * (y1 - y2)) +
+                                std::log(d_prev2) * (Y - y0) * (Y - y1) / ((y2 - y0) * (y2 - y1)));
+            } else if (F > 0.0 && f_prev > 0.0 && d != d_prev)
                 next = std::exp(std::log(d) + (std::log(N) - std::log(F)) *
                                                   (std::log(d) - std::log(d_prev)) /
                                                   (std::log(F) - std::log(f_prev)));
@@ -340,6 +350,8 @@ SemiHertzResult SemiHertz::solve(const double* h, double dx, double dy, double E
             } else if (!(next > lo && next < hi)) {
                 next = lo > 0.0 ? std::sqrt(lo * hi) : 0.5 * hi;
             }
+            d_prev2 = d_prev;
+            f_prev2 = f_prev;
             d_prev = d;
             f_prev = F;
             d = next;
