@@ -215,14 +215,14 @@ double SemiHertz::force_at(double d, double* out)
 double SemiHertz::continuous_depth(double N)
 {
     // Per row with local = d - beta g > 0 the semi-ellipse's force
-    // slope_k local. Started from a depth where the force exceeds N (the
-    // rows at the gap's lowest level alone carry N there), Newton's steps on
-    // the convex, piecewise-linear force decrease to its root; the fit's
-    // half-widths follow the depth.
-    double slope0 = 0.0;
-    for (int j = 0; j < ny_; ++j)
-        if (rows_[j].g == 0.0) slope0 += rows_[j].slope_k[shape_at(j, 0.0)];
-    double d = N / slope0;
+    // slope_k local: convex and piecewise linear in d. Newton's steps from
+    // Hertz's circle on the lowest row's curvature (from below they overshoot
+    // once, from above they decrease to the root); the fit's half-widths
+    // follow the depth.
+    double A0 = kMinCurvature;
+    for (const Row& R : rows_)
+        if (R.g == 0.0) A0 = std::max(A0, std::max(R.A[1], kMinCurvature));
+    double d = std::cbrt(9.0 * N * N * A0 / (16.0 * E_star_ * E_star_)) * std::cbrt(2.0);
     for (int it = 0; it < 20; ++it) {
         double F = 0.0, slope = 0.0;
         for (int j = 0; j < ny_; ++j) {
@@ -234,6 +234,10 @@ double SemiHertz::continuous_depth(double N)
             slope += R.slope_k[k];
         }
         continuous_slope_ = slope;
+        if (!(slope > 0.0)) { // no row in contact yet: deeper
+            d *= 2.0;
+            continue;
+        }
         const double next = d - (F - N) / slope;
         if (!(next > 0.0)) return d;
         if (std::fabs(next - d) <= 1e-12 * d) return next;
