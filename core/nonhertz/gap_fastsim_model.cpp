@@ -178,18 +178,24 @@ SolveTotals GapFastsimModel::solve(const ContactInput& in, SolveMode mode)
     // numbering), and the largest pressure.
     SolveTotals t;
     double p_max = 0.0;
-    labels_.clear_runs();
-    for (int j = 0; j < ny_; ++j) {
-        const double* row = pressure_.data() + static_cast<size_t>(nx_) * j;
-        for (int i = 0; i < nx_; ++i) {
-            if (!(row[caller_index(i)] > 0.0)) continue;
-            const int lo = i;
-            for (; i < nx_ && row[caller_index(i)] > 0.0; ++i)
-                p_max = std::max(p_max, row[caller_index(i)]);
-            labels_.add_run(lo, i - 1);
+    // pz(row, i): element i (caller's layout) of a row in the rolling frame.
+    auto scan = [&](auto pz) {
+        labels_.clear_runs();
+        for (int j = 0; j < ny_; ++j) {
+            const double* row = pressure_.data() + static_cast<size_t>(nx_) * j;
+            for (int i = 0; i < nx_; ++i) {
+                if (!(pz(row, i) > 0.0)) continue;
+                const int lo = i;
+                for (; i < nx_ && pz(row, i) > 0.0; ++i) p_max = std::max(p_max, pz(row, i));
+                labels_.add_run(lo, i - 1);
+            }
+            labels_.end_row();
         }
-        labels_.end_row();
-    }
+    };
+    if (direction_ > 0)
+        scan([](const double* row, int i) { return row[i]; });
+    else
+        scan([this](const double* row, int i) { return row[nx_ - 1 - i]; });
     t.n_patches = labels_.label_runs();
     set_patches(in);
     // The largest rigid slip step dx |omega| of any patch: far below
