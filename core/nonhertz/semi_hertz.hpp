@@ -14,12 +14,15 @@
 //    with the semi-elliptic pressure of Hertz's ellipse under that depth.
 // Curvatures below kMinCurvature count as kMinCurvature (a flat or concave
 // row then gives a long, low patch). With the force prescribed, the depth is
-// found by a safeguarded secant iteration on the total force (continuous and
-// increasing in the depth) and the pressures are scaled to N exactly.
+// found by a safeguarded iteration on the total force (increasing in the
+// depth; it jumps where a row's fit widens), started from the depth where the
+// rows' continuous semi-ellipses carry N, and the pressures are scaled to N
+// exactly.
 //
-// Cost: O(nx ny) per iteration, about a dozen iterations with the force
-// prescribed, none with the approach. Accuracy against the exact half-space
-// solution: doc/validation/non-hertzian.md.
+// Cost: O(nx ny) once, then O(ny + contact elements) per force evaluation,
+// about five evaluations with the force prescribed, one with the approach.
+// Accuracy against the exact half-space solution:
+// doc/validation/non-hertzian.md.
 #pragma once
 
 #include <vector>
