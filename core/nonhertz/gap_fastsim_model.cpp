@@ -32,7 +32,6 @@ GapFastsimModel::GapFastsimModel(const GridSpec& grid)
         v->assign(n, 0.0);
     for (auto* v : {&p_, &slip_, &rigid_}) v->assign(n, {0.0, 0.0});
     state_.assign(n, 0);
-    in_contact_.assign(n, 0);
     patch_of_.assign(n, -1);
     // At most one patch per two elements (a checkerboard's contact elements).
     march_patches_.reserve(n / 2 + 1);
@@ -51,7 +50,14 @@ void GapFastsimModel::validate(const ContactInput& in) const
         throw Error(ErrorKind::invalid_input,
                     "flexibility = given is invalid on a gap grid: FASTSIM takes each patch's "
                     "flexibilities from the material (G, nu) and the patch's size");
-    validate_gap_input(in, static_cast<size_t>(nx_) * ny_);
+    // The gap's values by one branch-free pass (|h| <= 1 is false for NaN and
+    // infinities too); validate_gap_input names the first bad one, and checks
+    // the other inputs.
+    const size_t n = static_cast<size_t>(nx_) * ny_;
+    if (!in.gap || in.gap_len < n) validate_gap_input(in, n);
+    double bad = 0.0; // a select, not a branch: the loop vectorises
+    for (size_t k = 0; k < n; ++k) bad = std::fabs(in.gap[k]) <= 1.0 ? bad : 1.0;
+    validate_gap_input(in, bad == 0.0 ? 0 : n);
 }
 
 void GapFastsimModel::solve_normal(const ContactInput& in)
@@ -87,13 +93,22 @@ void GapFastsimModel::solve_normal(const ContactInput& in)
             approach_ = normal_->approach() * dx;
         }
     }
-    double total = 0.0;
-    for (size_t k = 0; k < n; ++k) total += pressure_[k];
-    force_ = total * dx * dy;
+    // Four partial sums (independent additions; the pressures are >= 0).
+    double s0 = 0.0, s1 = 0.0, s2 = 0.0, s3 = 0.0;
+    size_t k = 0;
+    for (; k + 3 < n; k += 4) {
+        s0 += pressure_[k];
+        s1 += pressure_[k + 1];
+        s2 += pressure_[k + 2];
+        s3 += pressure_[k + 3];
+    }
+    for (; k < n; ++k) s0 += pressure_[k];
+    force_ = ((s0 + s1) + (s2 + s3)) * dx * dy;
 }
 
 // Each patch's "patch ellipse" and its flexibilities, and its spin centre
-// (the centroid of its elements), rolling frame.
+// (the centroid of its elements), rolling frame, from the labels' runs (in
+// the caller's layout); patch_of_ in the rolling frame.
 void GapFastsimModel::set_patches(const ContactInput& in)
 {
     const int count = labels_.count();
@@ -102,24 +117,25 @@ void GapFastsimModel::set_patches(const ContactInput& in)
     elements_.assign(count, 0.0);
     std::vector<GapMarchPatch>& P = march_patches_;
     const double left = direction_ > 0 ? grid_.x0 : -(grid_.x0 + (nx_ - 1) * grid_.dx);
+    std::fill(patch_of_.begin(), patch_of_.end(), -1);
     int i_lo = nx_, i_hi = -1, j_lo = ny_, j_hi = -1; // the contact's extent
     for (int j = 0; j < ny_; ++j) {
         const double y = grid_.y0 + j * grid_.dy;
-        int run = 0, last = -1;
-        for (int i = 0; i <= nx_; ++i) {
-            const int p = i < nx_ ? patch_of_[i + static_cast<size_t>(nx_) * j] : -1;
-            if (p >= 0) {
-                i_lo = std::min(i_lo, i), i_hi = std::max(i_hi, i);
-                j_lo = std::min(j_lo, j), j_hi = std::max(j_hi, j);
-                P[p].xc += left + i * grid_.dx;
-                P[p].yc += y;
-                elements_[p] += 1.0;
-                ++run;
-                last = p;
-            } else if (run > 0) {
-                longest_[last] = std::max(longest_[last], run * grid_.dx);
-                run = 0;
-            }
+        const int first = labels_.row_start(j), end = labels_.row_start(j + 1);
+        if (first < end) j_lo = std::min(j_lo, j), j_hi = j;
+        for (int r = first; r < end; ++r) {
+            const int p = labels_.run_patch(r);
+            // The run's elements a .. b in the rolling frame.
+            const int a = direction_ > 0 ? labels_.run_lo(r) : nx_ - 1 - labels_.run_hi(r);
+            const int b = direction_ > 0 ? labels_.run_hi(r) : nx_ - 1 - labels_.run_lo(r);
+            const double elements = b - a + 1;
+            i_lo = std::min(i_lo, a), i_hi = std::max(i_hi, b);
+            P[p].xc += elements * (left + 0.5 * (a + b) * grid_.dx);
+            P[p].yc += elements * y;
+            elements_[p] += elements;
+            longest_[p] = std::max(longest_[p], elements * grid_.dx);
+            int* row = patch_of_.data() + static_cast<size_t>(nx_) * j;
+            std::fill(row + a, row + b + 1, p);
         }
     }
     extent_x_ = i_hi >= i_lo ? (i_hi - i_lo + 1) * grid_.dx : 0.0;
@@ -143,22 +159,38 @@ SolveTotals GapFastsimModel::solve(const ContactInput& in, SolveMode mode)
     validate(in);
     direction_ = in.rolling_direction;
     full_ = mode == SolveMode::full;
-    for (int j = 0; j < ny_; ++j)
-        for (int i = 0; i < nx_; ++i) gap_[i + nx_ * j] = in.gap[caller_index(i) + nx_ * j];
+    if (direction_ > 0)
+        std::copy(in.gap, in.gap + static_cast<size_t>(nx_) * ny_, gap_.begin());
+    else
+        for (int j = 0; j < ny_; ++j) {
+            const double* from = in.gap + static_cast<size_t>(nx_) * j;
+            std::reverse_copy(from, from + nx_, gap_.begin() + static_cast<ptrdiff_t>(nx_) * j);
+        }
     solve_normal(in);
 
+    // The contact's runs, row by row in the caller's layout (the patches'
+    // numbering), and the largest pressure.
     SolveTotals t;
     double p_max = 0.0;
-    for (int j = 0; j < ny_; ++j)
-        for (int i = 0; i < nx_; ++i) {
-            const double pz = pressure_[caller_index(i) + nx_ * j];
-            p_max = std::max(p_max, pz);
-            in_contact_[i + nx_ * j] = pz > 0.0;
+    // pz(row, i): element i (caller's layout) of a row in the rolling frame.
+    auto scan = [&](auto pz) {
+        labels_.clear_runs();
+        for (int j = 0; j < ny_; ++j) {
+            const double* row = pressure_.data() + static_cast<size_t>(nx_) * j;
+            for (int i = 0; i < nx_; ++i) {
+                if (!(pz(row, i) > 0.0)) continue;
+                const int lo = i;
+                for (; i < nx_ && pz(row, i) > 0.0; ++i) p_max = std::max(p_max, pz(row, i));
+                labels_.add_run(lo, i - 1);
+            }
+            labels_.end_row();
         }
-    t.n_patches = labels_.label(in_contact_.data());
-    for (int j = 0; j < ny_; ++j)
-        for (int i = 0; i < nx_; ++i)
-            patch_of_[i + nx_ * j] = labels_.of(caller_index(i) + nx_ * j);
+    };
+    if (direction_ > 0)
+        scan([](const double* row, int i) { return row[i]; });
+    else
+        scan([this](const double* row, int i) { return row[nx_ - 1 - i]; });
+    t.n_patches = labels_.label_runs();
     set_patches(in);
     // The largest rigid slip step dx |omega| of any patch: far below
     // overflow, so that |q|^2 is finite (the march compares it squared).

@@ -98,10 +98,10 @@ private:
     int direction_ = 1;
     bool full_ = false;
     double approach_ = 0, force_ = 0, y_mid_ = 0, half_width_ = 0, extent_x_ = 0, extent_y_ = 0;
-    // Per element, rolling frame [i + nx j] (caller's layout for in_contact_).
+    // Per element, rolling frame [i + nx j].
     std::vector<double> gap_, gap_in_dx_, pressure_, start_, paper_, consistent_;
     std::vector<std::complex<double>> p_, slip_, rigid_;
-    std::vector<signed char> state_, in_contact_;
+    std::vector<signed char> state_;
     std::vector<int> patch_of_;
     // Per patch (reserved for the most patches a grid can hold).
     std::vector<GapMarchPatch> march_patches_;

@@ -1,11 +1,11 @@
 #include "nonhertz/gap_march.hpp"
 
 #include <cmath>
+#include <cstddef>
 
 namespace creepwork {
 namespace {
 
-// The march; Full: also the slip and the rigid slip of every element.
 // A segment's sums, kept in registers along it (the output arrays could
 // alias a patch's totals) and added to its patch's at its trailing edge.
 struct SegmentSums {
@@ -24,79 +24,110 @@ struct SegmentSums {
     }
 };
 
-// The march; Full: also the slip and the rigid slip of every element.
+// One row being marched: the traction of the element ahead (0 at a leading
+// edge), and the segment's rigid slip over flexibility (omega_x constant
+// along the row, omega_y = oy0 + oyx x; set at each leading edge, with the
+// segment's patch: a segment lies in one patch).
+struct RowMarch {
+    size_t row = 0;
+    double y = 0;
+    double px = 0, py = 0, ox = 0, oy0 = 0, oyx = 0, L1 = 0, L2 = 0;
+    int patch = -1; // of the segment being marched, -1 between segments
+    SegmentSums sums;
+
+    void start(const GapMarchInput& in, int j)
+    {
+        row = static_cast<size_t>(in.nx) * j;
+        y = in.y0 + j * in.dy;
+        px = py = 0.0;
+        patch = -1;
+    }
+};
+
+// Element i of row r (i = -1: past the trailing end, closing a segment).
+template <bool Full>
+inline void step(const GapMarchInput& in, const GapMarchOutput& out, RowMarch& r, int i)
+{
+    using Complex = std::complex<double>;
+    const double dx = in.dx, inv_dx = 1.0 / in.dx, area = in.dx * in.dy;
+    const size_t k = r.row + i;
+    const double pz = i >= 0 ? in.pressure[k] : 0.0;
+    if (!(pz > 0.0)) {
+        if (r.patch >= 0) { // a trailing edge
+            r.sums.add_to(out.patch_totals[r.patch]);
+            r.sums = SegmentSums{};
+            r.patch = -1;
+        }
+        if (i < 0) return;
+        out.p[k] = Complex(0.0, 0.0);
+        if (Full) out.slip[k] = out.rigid[k] = Complex(0.0, 0.0);
+        out.state[k] = 0;
+        r.px = r.py = 0.0;
+        return;
+    }
+    if (r.patch < 0) {
+        r.patch = in.patch[k];
+        const GapMarchPatch& M = in.patches[r.patch];
+        r.L1 = M.L1;
+        r.L2 = M.L2;
+        r.ox = (in.xi - in.phi * M.yc) / M.L1 - in.phi * (r.y - M.yc) / M.L3;
+        r.oy0 = (in.eta + in.phi * M.xc) / M.L2 + in.phi * (in.spin_offset * dx - M.xc) / M.L3;
+        r.oyx = in.phi / M.L3;
+    }
+    const double x = in.x0 + i * dx;
+    const double ox = r.ox, oy = r.oy0 + r.oyx * x;
+    double qx = r.px - dx * ox, qy = r.py - dx * oy;
+    // |q| > bound compared squared: the root only in slip (the model
+    // keeps dx |omega| far below overflow).
+    const double bound = in.mu * pz, n2 = qx * qx + qy * qy;
+    const bool slips = n2 > bound * bound;
+    if (slips) {
+        const double f = bound / std::sqrt(n2); // |q| > bound >= 0
+        qx *= f;
+        qy *= f;
+    }
+    out.p[k] = Complex(qx, qy);
+    if (Full) {
+        out.rigid[k] = Complex(r.L1 * ox, r.L2 * oy);
+        out.slip[k] = slips ? Complex(r.L1 * (ox + (qx - r.px) * inv_dx),
+                                      r.L2 * (oy + (qy - r.py) * inv_dx))
+                            : Complex(0.0, 0.0);
+    }
+    out.state[k] = slips ? 2 : 1;
+    SegmentSums& s = r.sums;
+    s.Fx += qx * area;
+    s.Fy += qy * area;
+    s.Mz += (x * qy - r.y * qx) * area;
+    s.Fn += pz * area;
+    s.p_max = pz > s.p_max ? pz : s.p_max;
+    ++s.n_contact;
+    s.n_slip += slips;
+    r.px = qx;
+    r.py = qy;
+}
+
+// The march; Full: also the slip and the rigid slip of every element. Two
+// rows at a time, element by element: each element's traction depends on the
+// one ahead (in slip through a root and a division), two independent rows
+// keep the processor busy while one waits.
 template <bool Full>
 void march(const GapMarchInput& in, const GapMarchOutput& out)
 {
-    using Complex = std::complex<double>;
     const int nx = in.nx;
-    const double dx = in.dx, inv_dx = 1.0 / in.dx, area = in.dx * in.dy;
-    for (int j = 0; j < in.ny; ++j) {
-        const double y = in.y0 + j * in.dy;
-        const size_t row = static_cast<size_t>(nx) * j;
-        double px = 0.0, py = 0.0; // the traction of the element ahead (0 at a leading edge)
-        // The segment's rigid slip over flexibility: omega_x constant along
-        // the row, omega_y = oy0 + oyx x; set at each leading edge, with the
-        // segment's patch (a segment lies in one patch).
-        double ox = 0.0, oy0 = 0.0, oyx = 0.0, L1 = 0.0, L2 = 0.0;
-        int patch = -1; // of the segment being marched, -1 between segments
-        SegmentSums sums;
+    int j = 0;
+    for (; j + 1 < in.ny; j += 2) {
+        RowMarch a, b;
+        a.start(in, j);
+        b.start(in, j + 1);
         for (int i = nx - 1; i >= -1; --i) {
-            const size_t k = row + i;
-            const double pz = i >= 0 ? in.pressure[k] : 0.0;
-            if (!(pz > 0.0)) {
-                if (patch >= 0) { // a trailing edge
-                    sums.add_to(out.patch_totals[patch]);
-                    sums = SegmentSums{};
-                    patch = -1;
-                }
-                if (i < 0) break;
-                out.p[k] = Complex(0.0, 0.0);
-                if (Full) out.slip[k] = out.rigid[k] = Complex(0.0, 0.0);
-                out.state[k] = 0;
-                px = py = 0.0;
-                continue;
-            }
-            if (patch < 0) {
-                patch = in.patch[k];
-                const GapMarchPatch& M = in.patches[patch];
-                L1 = M.L1;
-                L2 = M.L2;
-                ox = (in.xi - in.phi * M.yc) / M.L1 - in.phi * (y - M.yc) / M.L3;
-                oy0 = (in.eta + in.phi * M.xc) / M.L2 +
-                      in.phi * (in.spin_offset * dx - M.xc) / M.L3;
-                oyx = in.phi / M.L3;
-            }
-            const double x = in.x0 + i * dx;
-            const double oy = oy0 + oyx * x;
-            double qx = px - dx * ox, qy = py - dx * oy;
-            // |q| > bound compared squared: the root only in slip (the model
-            // keeps dx |omega| far below overflow).
-            const double bound = in.mu * pz, n2 = qx * qx + qy * qy;
-            const bool slips = n2 > bound * bound;
-            if (slips) {
-                const double f = bound / std::sqrt(n2); // |q| > bound >= 0
-                qx *= f;
-                qy *= f;
-            }
-            out.p[k] = Complex(qx, qy);
-            if (Full) {
-                out.rigid[k] = Complex(L1 * ox, L2 * oy);
-                out.slip[k] = slips ? Complex(L1 * (ox + (qx - px) * inv_dx),
-                                              L2 * (oy + (qy - py) * inv_dx))
-                                    : Complex(0.0, 0.0);
-            }
-            out.state[k] = slips ? 2 : 1;
-            sums.Fx += qx * area;
-            sums.Fy += qy * area;
-            sums.Mz += (x * qy - y * qx) * area;
-            sums.Fn += pz * area;
-            sums.p_max = pz > sums.p_max ? pz : sums.p_max;
-            ++sums.n_contact;
-            sums.n_slip += slips;
-            px = qx;
-            py = qy;
+            step<Full>(in, out, a, i);
+            step<Full>(in, out, b, i);
         }
+    }
+    if (j < in.ny) {
+        RowMarch a;
+        a.start(in, j);
+        for (int i = nx - 1; i >= -1; --i) step<Full>(in, out, a, i);
     }
 }
 

@@ -1,38 +1,73 @@
 #include "nonhertz/patches.hpp"
 
+#include <algorithm>
 #include <cstddef>
 
 namespace creepwork {
 
 PatchLabels::PatchLabels(int nx, int ny)
     : nx_(nx), ny_(ny), label_(static_cast<std::size_t>(nx) * ny, -1),
-      queue_(static_cast<std::size_t>(nx) * ny, 0)
+      row_start_(static_cast<std::size_t>(ny) + 1, 0)
 {
+    // At most (nx + 1) / 2 runs in a row (a gap between any two).
+    const std::size_t most = static_cast<std::size_t>((nx + 1) / 2) * ny;
+    for (auto* v : {&run_lo_, &run_hi_, &run_patch_, &parent_}) v->assign(most, 0);
 }
 
 int PatchLabels::label(const signed char* in_contact)
 {
-    const int n = nx_ * ny_;
-    for (int k = 0; k < n; ++k) label_[k] = -1;
-    count_ = 0;
-    for (int seed = 0; seed < n; ++seed) {
-        if (!in_contact[seed] || label_[seed] >= 0) continue;
-        // Breadth-first over edge neighbours; each element enters the queue once.
-        int head = 0, tail = 0;
-        queue_[tail++] = seed;
-        label_[seed] = count_;
-        while (head < tail) {
-            const int k = queue_[head++];
-            const int i = k % nx_, j = k / nx_;
-            const int next[4] = {i > 0 ? k - 1 : -1, i + 1 < nx_ ? k + 1 : -1,
-                                 j > 0 ? k - nx_ : -1, j + 1 < ny_ ? k + nx_ : -1};
-            for (int m : next)
-                if (m >= 0 && in_contact[m] && label_[m] < 0) {
-                    label_[m] = count_;
-                    queue_[tail++] = m;
-                }
+    clear_runs();
+    for (int j = 0; j < ny_; ++j) {
+        const signed char* row = in_contact + static_cast<std::size_t>(nx_) * j;
+        for (int i = 0; i < nx_; ++i) {
+            if (!row[i]) continue;
+            const int lo = i;
+            while (i + 1 < nx_ && row[i + 1]) ++i;
+            add_run(lo, i);
         }
-        ++count_;
+        end_row();
+    }
+    label_runs();
+    std::fill(label_.begin(), label_.end(), -1);
+    for (int j = 0; j < ny_; ++j)
+        for (int r = row_start_[j]; r < row_start_[j + 1]; ++r)
+            std::fill(label_.begin() + static_cast<std::ptrdiff_t>(nx_) * j + run_lo_[r],
+                      label_.begin() + static_cast<std::ptrdiff_t>(nx_) * j + run_hi_[r] + 1,
+                      run_patch_[r]);
+    return count_;
+}
+
+int PatchLabels::label_runs()
+{
+    // Union-find over the runs, each root the lowest run of its set.
+    auto find = [this](int r) {
+        while (parent_[r] != r) r = parent_[r] = parent_[parent_[r]];
+        return r;
+    };
+    for (int r = 0; r < n_runs_; ++r) parent_[r] = r;
+    for (int j = 1; j < rows_; ++j) {
+        // Runs of rows j - 1 and j that share a column, by a merge of the
+        // two rows' runs (both in increasing i).
+        int a = row_start_[j - 1], b = row_start_[j];
+        const int a_end = row_start_[j], b_end = row_start_[j + 1];
+        while (a < a_end && b < b_end) {
+            if (run_lo_[a] <= run_hi_[b] && run_lo_[b] <= run_hi_[a]) {
+                const int ra = find(a), rb = find(b);
+                if (ra != rb) parent_[std::max(ra, rb)] = std::min(ra, rb);
+            }
+            // Advance the run that ends first (it meets no later run).
+            if (run_hi_[a] < run_hi_[b])
+                ++a;
+            else
+                ++b;
+        }
+    }
+    // Number the sets in the order of their first run: the first run in
+    // layout order holds the set's first element.
+    count_ = 0;
+    for (int r = 0; r < n_runs_; ++r) {
+        const int root = find(r);
+        run_patch_[r] = root == r ? count_++ : run_patch_[root];
     }
     return count_;
 }

@@ -2,9 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "contact/error.hpp"
 #include "contact/hertz.hpp"
+#include "march/kernel_isa.hpp"
 
 namespace creepwork {
 namespace {
@@ -23,7 +25,13 @@ namespace {
 struct ShapeTable {
     static constexpr int kNodes = 1025;
     static constexpr double kMaxLogAxes = 7.0; // major / minor up to 1100
+    static constexpr int kBuckets = 2048;      // uniform in log r, for the search
     double log_r[kNodes], f[kNodes], w2[kNodes], K[kNodes];
+    // Per start i0 of four nodes: 1 / prod_{b != a} (x_a - x_b).
+    double inv_den[kNodes - 3][4];
+    // The last node at or below bucket b's lower end (b = 0 .. kBuckets - 1).
+    int bucket[kBuckets];
+    double bucket_scale = 0;
 
     ShapeTable()
     {
@@ -43,6 +51,18 @@ struct ShapeTable {
             w2[i] = std::exp(-2.0 * s);
             K[i] = e.K;
         }
+        for (int i0 = 0; i0 + 3 < kNodes; ++i0)
+            for (int a = 0; a < 4; ++a) {
+                double den = 1.0;
+                for (int b = 0; b < 4; ++b)
+                    if (b != a) den *= log_r[i0 + a] - log_r[i0 + b];
+                inv_den[i0][a] = 1.0 / den;
+            }
+        bucket_scale = kBuckets / log_r[kNodes - 1];
+        for (int b = 0, i = 0; b < kBuckets; ++b) {
+            while (i + 1 < kNodes && log_r[i + 1] * bucket_scale <= b) ++i;
+            bucket[b] = i;
+        }
     }
     // (f, w2, K) at curvature ratio r >= 1 (clamped to the table).
     void at(double r, double& fr, double& w2r, double& Kr) const
@@ -56,14 +76,17 @@ struct ShapeTable {
             fr = f[kNodes - 1], w2r = w2[kNodes - 1], Kr = K[kNodes - 1];
             return;
         }
+        // The last node at or below lr: from its bucket's, a few steps on.
+        int i = bucket[std::min(static_cast<int>(lr * bucket_scale), kBuckets - 1)];
+        while (i > 0 && log_r[i] > lr) --i; // (a bucket's end rounded)
+        while (log_r[i + 1] <= lr) ++i;
         // Cubic Lagrange through the four nodes around lr (two at the ends).
-        const int i = static_cast<int>(std::upper_bound(log_r, log_r + kNodes, lr) - log_r) - 1;
         const int i0 = std::min(std::max(i - 1, 0), kNodes - 4);
         double w[4];
         for (int a = 0; a < 4; ++a) {
-            w[a] = 1.0;
+            w[a] = inv_den[i0][a];
             for (int b = 0; b < 4; ++b)
-                if (b != a) w[a] *= (lr - log_r[i0 + b]) / (log_r[i0 + a] - log_r[i0 + b]);
+                if (b != a) w[a] *= lr - log_r[i0 + b];
         }
         fr = w2r = Kr = 0.0;
         for (int a = 0; a < 4; ++a) {
@@ -86,7 +109,7 @@ constexpr int kMaxForceIterations = 100;
 
 } // namespace
 
-SemiHertz::SemiHertz(int nx, int ny) : nx_(nx), ny_(ny), rows_(ny)
+SemiHertz::SemiHertz(int nx, int ny) : nx_(nx), ny_(ny), rows_(ny), scratch_(nx > 0 ? nx : 0)
 {
     if (nx < 3 || ny < 3)
         throw Error(ErrorKind::grid_out_of_range, "the semi-Hertzian normal method needs at "
@@ -94,55 +117,133 @@ SemiHertz::SemiHertz(int nx, int ny) : nx_(nx), ny_(ny), rows_(ny)
     shape_table();
 }
 
-double SemiHertz::force_at(double d, double* out)
+int SemiHertz::shape_at(int j, double d)
 {
-    const ShapeTable& T = shape_table();
-    double force = 0.0;
-    for (int j = 0; j < ny_; ++j) {
-        Row& R = rows_[j];
-        const double* h = h_ + static_cast<size_t>(nx_) * j;
-        double* p = out ? out + static_cast<size_t>(nx_) * j : nullptr;
-        if (p) std::fill(p, p + nx_, 0.0);
-        const double top = h[R.locus] - h_min_ - d; // < 0 where the row penetrates
-        // The fit's half-width: as long as the next pair still penetrates by
-        // more than kFitDepth of the locus (CONTACT's rule).
-        int k = 1;
-        while (k < kMaxFitHalfWidth && R.locus - k - 1 >= 0 && R.locus + k + 1 < nx_ &&
-               top < 0.0 &&
-               std::max(h[R.locus - k - 1], h[R.locus + k + 1]) - h_min_ - d <= kFitDepth * top)
-            ++k;
-        if (k != R.shape_k) {
+    Row& R = rows_[j];
+    // The fit's half-width: as long as the next pair still penetrates by
+    // more than kFitDepth of the locus (CONTACT's rule).
+    const double top = R.g - d; // < 0 where the row penetrates
+    int k = 1;
+    if (top < 0.0)
+        while (k < kMaxFitHalfWidth && R.pair[k] - d <= kFitDepth * top) ++k;
+    if (k != R.shape_k) {
+        if (!(R.known & (1u << k))) {
             const double A = std::max(R.A[k], kMinCurvature), B = R.B;
             const double small = std::min(A, B);
             double f, w2, K;
-            T.at(std::max(A, B) / small, f, w2, K);
+            shape_table().at(std::max(A, B) / small, f, w2, K);
             // alpha = d/(A a^2), beta = d/(B b^2); the major axis lies along
             // the smaller curvature.
             const double across = f / (std::max(A, B) / small * w2);
-            R.alpha = A <= B ? f : across;
-            R.beta = A <= B ? across : f;
-            R.p_factor = E_star_ * std::sqrt(small * f / w2) / K;
-            R.shape_k = k;
+            R.alpha_k[k] = A <= B ? f : across;
+            R.beta_k[k] = A <= B ? across : f;
+            R.p_factor_k[k] = E_star_ * std::sqrt(small * f / w2) / K;
+            // The semi-ellipse p_factor sqrt(local - alpha A x^2) over x:
+            // pi/2 p_factor local / sqrt(alpha A), times dy.
+            R.slope_k[k] = 1.57079632679489661923 * R.p_factor_k[k] * dy_ /
+                           std::sqrt(R.alpha_k[k] * A);
+            R.known |= 1u << k;
         }
+        R.alpha = R.alpha_k[k];
+        R.beta = R.beta_k[k];
+        R.p_factor = R.p_factor_k[k];
+        R.shape_k = k;
+    }
+    return k;
+}
+
+namespace {
+
+// One row's semi-ellipse on the elements m = m0 .. m0 + count - 1 from the
+// locus: p = scale sqrt(local - c m^2) (Hertz's p0 sqrt(1 - (x / a)^2) with
+// p0 = scale sqrt(local), a^2 = local / c), written to p; returns their sum.
+// Vectorised: the root of the elements and the sum in four partial sums.
+// Compiled for AVX2 too (picked at load time): four roots at a time, and
+// bitwise the same result (each element and each partial sum the same
+// operations in the same order).
+#if CREEPWORK_X86_KERNELS
+__attribute__((target_clones("avx2", "default")))
+#endif
+double semi_ellipse(double local, double c, int m0, int count, double scale, double* p)
+{
+    for (int i = 0; i < count; ++i) {
+        const double m = m0 + i;
+        p[i] = scale * std::sqrt(std::max(local - c * m * m, 0.0));
+    }
+    double s0 = 0.0, s1 = 0.0, s2 = 0.0, s3 = 0.0;
+    int i = 0;
+    for (; i + 3 < count; i += 4) {
+        s0 += p[i];
+        s1 += p[i + 1];
+        s2 += p[i + 2];
+        s3 += p[i + 3];
+    }
+    for (; i < count; ++i) s0 += p[i];
+    return (s0 + s1) + (s2 + s3);
+}
+
+} // namespace
+
+double SemiHertz::force_at(double d, double* out)
+{
+    double force = 0.0;
+    for (int j = 0; j < ny_; ++j) {
+        Row& R = rows_[j];
+        const int k = shape_at(j, d);
         const double local = d - R.beta * R.g;
-        if (!(local > 0.0)) continue;
-        const double A = std::max(R.A[k], kMinCurvature);
-        const double half = std::sqrt(local / (R.alpha * A)) / dx_; // in elements
-        const double p0 = R.p_factor * std::sqrt(local);
-        const int lo = std::max(0, static_cast<int>(std::ceil(R.locus - half)));
-        const int hi = std::min(nx_ - 1, static_cast<int>(std::floor(R.locus + half)));
-        double row = 0.0;
-        for (int i = lo; i <= hi; ++i) {
-            const double t = (i - R.locus) / half;
-            const double v = 1.0 - t * t;
-            if (!(v > 0.0)) continue;
-            const double pi = p0 * std::sqrt(v);
-            row += pi;
-            if (p) p[i] = pi;
+        int lo = 0, hi = -1;
+        double* p = out ? out + static_cast<size_t>(nx_) * j : nullptr;
+        if (local > 0.0) {
+            const double A = std::max(R.A[k], kMinCurvature);
+            const double half = std::sqrt(local / (R.alpha * A)) / dx_; // in elements
+            lo = std::max(0, static_cast<int>(std::ceil(R.locus - half)));
+            hi = std::min(nx_ - 1, static_cast<int>(std::floor(R.locus + half)));
+            if (hi >= lo)
+                force += semi_ellipse(local, R.alpha * A * dx_ * dx_, lo - R.locus, hi - lo + 1,
+                                      R.p_factor, p ? p + lo : scratch_.data());
         }
-        force += row;
+        if (p) { // zero what the last evaluation wrote outside lo .. hi
+            for (int i = R.written_lo; i <= std::min(R.written_hi, lo - 1); ++i) p[i] = 0.0;
+            for (int i = std::max(R.written_lo, hi + 1); i <= R.written_hi; ++i) p[i] = 0.0;
+            R.written_lo = lo;
+            R.written_hi = hi;
+        }
     }
     return force * dx_ * dy_;
+}
+
+double SemiHertz::continuous_depth(double N)
+{
+    // Per row with local = d - beta g > 0 the semi-ellipse's force
+    // slope_k local: convex and piecewise linear in d. Newton's steps from
+    // Hertz's circle on the lowest row's curvature (from below they overshoot
+    // once, from above they decrease to the root); the fit's half-widths
+    // follow the depth.
+    double A0 = kMinCurvature;
+    for (const Row& R : rows_)
+        if (R.g == 0.0) A0 = std::max(A0, std::max(R.A[1], kMinCurvature));
+    double d = std::cbrt(9.0 * N * N * A0 / (16.0 * E_star_ * E_star_)) * std::cbrt(2.0);
+    for (int it = 0; it < 20; ++it) {
+        double F = 0.0, slope = 0.0;
+        for (int j = 0; j < ny_; ++j) {
+            const int k = shape_at(j, d);
+            const Row& R = rows_[j];
+            const double local = d - R.beta * R.g;
+            if (!(local > 0.0)) continue;
+            F += R.slope_k[k] * local;
+            slope += R.slope_k[k];
+        }
+        continuous_slope_ = slope;
+        if (!(slope > 0.0)) { // no row in contact yet: deeper
+            d *= 2.0;
+            continue;
+        }
+        const double next = d - (F - N) / slope;
+        if (!(next > 0.0)) return d;
+        if (std::fabs(next - d) <= 1e-12 * d) return next;
+        d = next;
+    }
+    return d;
 }
 
 SemiHertzResult SemiHertz::solve(const double* h, double dx, double dy, double E_star,
@@ -153,16 +254,33 @@ SemiHertzResult SemiHertz::solve(const double* h, double dx, double dy, double E
     dy_ = dy;
     E_star_ = E_star;
     const int n = nx_ * ny_;
-    h_min_ = *std::min_element(h, h + n);
-
+    // Each row's lowest element (the first of equals), then the gap's.
+    h_min_ = h[0];
+    for (int j = 0; j < ny_; ++j) {
+        const double* row = h + static_cast<size_t>(nx_) * j;
+        // Four partial minima, then the first element at the row's minimum.
+        double m0 = row[0], m1 = row[0], m2 = row[0], m3 = row[0];
+        int i = 0;
+        for (; i + 3 < nx_; i += 4) {
+            m0 = row[i] < m0 ? row[i] : m0; // selects, not branches
+            m1 = row[i + 1] < m1 ? row[i + 1] : m1;
+            m2 = row[i + 2] < m2 ? row[i + 2] : m2;
+            m3 = row[i + 3] < m3 ? row[i + 3] : m3;
+        }
+        for (; i < nx_; ++i) m0 = row[i] < m0 ? row[i] : m0;
+        const double lowest = std::min(std::min(m0, m1), std::min(m2, m3));
+        int at = 0;
+        while (row[at] != lowest) ++at;
+        rows_[j].locus = at;
+        h_min_ = std::min(h_min_, lowest);
+    }
     // Per row: the locus, its height, the curvature across and the
     // least-squares curvature along x for each half-width k (the parabola
     // c0 + c1 t + c2 t^2 over t = -k..k: c2 from the even moments).
     for (int j = 0; j < ny_; ++j) {
         Row& R = rows_[j];
         const double* row = h + static_cast<size_t>(nx_) * j;
-        const int lowest = static_cast<int>(std::min_element(row, row + nx_) - row);
-        R.locus = std::min(std::max(lowest, 1), nx_ - 2);
+        R.locus = std::min(std::max(R.locus, 1), nx_ - 2);
         R.g = row[R.locus] - h_min_;
         const int jm = j == 0 ? 0 : j == ny_ - 1 ? ny_ - 3 : j - 1; // three rows from jm
         const double* r0 = h + static_cast<size_t>(nx_) * jm;
@@ -180,51 +298,84 @@ SemiHertzResult SemiHertz::solve(const double* h, double dx, double dy, double E
             m4 += 2.0 * k2 * k2;
             R.A[k] = (m0 * s2 - m2 * s0) / ((m0 * m4 - m2 * m2) * dx * dx);
         }
+        for (int k = 1; k < kMaxFitHalfWidth; ++k)
+            R.pair[k] = R.locus - k - 1 >= 0 && R.locus + k + 1 < nx_
+                            ? std::max(row[R.locus - k - 1], row[R.locus + k + 1]) - h_min_
+                            : std::numeric_limits<double>::infinity();
+        R.known = 0;
         R.shape_k = -1;
+        R.written_lo = 0;
+        R.written_hi = -1;
     }
+    std::fill(pressure, pressure + n, 0.0);
 
     SemiHertzResult res;
-    double d = 0.0;
+    double d = 0.0, F = 0.0;
     if (!force) {
         d = value - h_min_;
+        F = force_at(d, pressure);
     } else {
-        // Bracket [lo, hi] with F(lo) < N <= F(hi); secant steps on log F
-        // against log d (F grows like d^(3/2) for a Hertzian gap), bisection
-        // in log d when a step leaves the bracket.
+        // Bracket [lo, hi] with F(lo) < N <= F(hi); log d interpolated in
+        // log F (F grows like d^(3/2) for a Hertzian gap): a secant step
+        // from two evaluations, an inverse quadratic one from three;
+        // bisection in log d when a step leaves the bracket.
         const double N = value;
         double lo = 0.0, hi = 0.0;
-        // First guess: Hertz's circle on the lowest row's curvature.
-        double A0 = kMinCurvature;
-        for (const Row& R : rows_)
-            if (R.g == 0.0) A0 = std::max(A0, std::max(R.A[1], kMinCurvature));
-        d = std::cbrt(9.0 * N * N * A0 / (16.0 * E_star * E_star)) * std::cbrt(2.0);
-        double d_prev = 0.0, f_prev = 0.0;
+        // First guess: the depth of the continuous semi-ellipses' force.
+        d = continuous_depth(N);
+        double d_prev = 0.0, f_prev = 0.0, d_prev2 = 0.0, f_prev2 = 0.0;
+        // Each evaluation writes the pressures: the last one is the answer.
         for (res.iterations = 1; res.iterations <= kMaxForceIterations; ++res.iterations) {
-            const double F = force_at(d, nullptr);
+            F = force_at(d, pressure);
             (F < N ? lo : hi) = d;
             if (std::fabs(F - N) <= 1e-13 * N || (hi > 0.0 && hi - lo <= 1e-15 * hi)) break;
             double next;
-            if (F > 0.0 && f_prev > 0.0 && d != d_prev)
+            if (F > 0.0 && f_prev > 0.0 && f_prev2 > 0.0 && F != f_prev && F != f_prev2 &&
+                f_prev != f_prev2) {
+                // Inverse quadratic interpolation of log d in log F through
+                // the last three evaluations.
+                const double y0 = std::log(F), y1 = std::log(f_prev), y2 = std::log(f_prev2);
+                const double Y = std::log(N);
+                next = std::exp(std::log(d) * (Y - y1) * (Y - y2) / ((y0 - y1) * (y0 - y2)) +
+                                std::log(d_prev) * (Y - y0) * (Y - y2) / ((y1 - y0) * (y1 - y2)) +
+                                std::log(d_prev2) * (Y - y0) * (Y - y1) / ((y2 - y0) * (y2 - y1)));
+            } else if (F > 0.0 && f_prev > 0.0 && d != d_prev)
                 next = std::exp(std::log(d) + (std::log(N) - std::log(F)) *
                                                   (std::log(d) - std::log(d_prev)) /
                                                   (std::log(F) - std::log(f_prev)));
+            else if (F > 0.0 && res.iterations == 1)
+                // The discrete force as the continuous one times F / N:
+                // Newton's step on that.
+                next = d + N * (N / F - 1.0) / continuous_slope_;
             else
                 next = F > 0.0 ? d * std::pow(N / F, 2.0 / 3.0) : 2.0 * d;
             if (hi == 0.0) {
-                next = std::max(next, 1.1 * d); // still below N: grow
+                next = std::max(next, (1.0 + 1e-6) * d); // still below N: grow
             } else if (!(next > lo && next < hi)) {
                 next = lo > 0.0 ? std::sqrt(lo * hi) : 0.5 * hi;
             }
+            d_prev2 = d_prev;
+            f_prev2 = f_prev;
             d_prev = d;
             f_prev = F;
             d = next;
         }
+        // Where the force jumps past N (the fit widening at a row), the
+        // bracket closes on the jump: the answer is its upper end, whatever
+        // side the iteration ended on.
+        if (res.iterations > kMaxForceIterations || (F < N && std::fabs(F - N) > 1e-13 * N &&
+                                                     hi > 0.0)) {
+            d = hi > 0.0 ? hi : d;
+            F = force_at(d, pressure);
+        }
     }
-    const double F = force_at(d, pressure);
     const double scale = force && F > 0.0 ? value / F : 1.0;
-    for (int k = 0; k < n; ++k) {
-        pressure[k] *= scale;
-        res.n_contact += pressure[k] > 0.0;
+    for (int j = 0; j < ny_; ++j) {
+        double* p = pressure + static_cast<size_t>(nx_) * j;
+        for (int i = rows_[j].written_lo; i <= rows_[j].written_hi; ++i) {
+            p[i] *= scale;
+            res.n_contact += p[i] > 0.0;
+        }
     }
     res.normal_force = F * scale;
     res.approach = d + h_min_;

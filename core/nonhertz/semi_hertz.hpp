@@ -14,12 +14,15 @@
 //    with the semi-elliptic pressure of Hertz's ellipse under that depth.
 // Curvatures below kMinCurvature count as kMinCurvature (a flat or concave
 // row then gives a long, low patch). With the force prescribed, the depth is
-// found by a safeguarded secant iteration on the total force (continuous and
-// increasing in the depth) and the pressures are scaled to N exactly.
+// found by a safeguarded iteration on the total force (increasing in the
+// depth; it jumps where a row's fit widens), started from the depth where the
+// rows' continuous semi-ellipses carry N, and the pressures are scaled to N
+// exactly.
 //
-// Cost: O(nx ny) per iteration, about a dozen iterations with the force
-// prescribed, none with the approach. Accuracy against the exact half-space
-// solution: doc/validation/non-hertzian.md.
+// Cost: O(nx ny) once, then O(ny + contact elements) per force evaluation,
+// about five evaluations with the force prescribed, one with the approach.
+// Accuracy against the exact half-space solution:
+// doc/validation/non-hertzian.md.
 #pragma once
 
 #include <vector>
@@ -59,14 +62,33 @@ private:
         double A[11] = {};    // curvature along x fitted over +-k elements, k = 1..10
         int shape_k = -1;     // the k of the cached shape factors
         double alpha = 0, beta = 0, p_factor = 0;
+        int written_lo = 0, written_hi = -1; // the elements of out the last force_at wrote
+        // For k = 1..9: the height above the gap's lowest element of the
+        // higher of the elements locus -+ (k + 1); infinite past the row's ends.
+        double pair[10] = {};
+        // Per k, known once computed in this solve (bit k of known): the
+        // shape factors, and the continuous semi-ellipse's force per unit
+        // local depth [N/m].
+        unsigned known = 0;
+        double alpha_k[11] = {}, beta_k[11] = {}, p_factor_k[11] = {}, slope_k[11] = {};
     };
-    // Total force [N] at depth d, and the pressures when out is given.
+    // Total force [N] at depth d, and the pressures when out is given (out
+    // holds zeros but for the rows' written elements, kept so).
     double force_at(double d, double* out);
+    // The force of the rows' semi-ellipses over the continuous x, a
+    // piecewise-linear function of d with the shape factors held: d where it
+    // is N (the discrete iteration's first guess).
+    double continuous_depth(double N);
+    double continuous_slope_ = 0; // that force's slope at that depth [N/m]
+    // The fit's half-width k of row j at depth d, and the row's shape factors
+    // for it.
+    int shape_at(int j, double d);
 
     int nx_, ny_;
     double dx_ = 0, dy_ = 0, E_star_ = 0, h_min_ = 0;
     const double* h_ = nullptr;
     std::vector<Row> rows_;
+    std::vector<double> scratch_; // one row's pressures when force_at has no out
 };
 
 } // namespace creepwork
