@@ -56,6 +56,8 @@ GridConvolution::GridConvolution(int nx, int ny, ConvolutionUse use)
     rows_im_.assign(cap, 0.0);
     spec_re_.assign(cap, 0.0);
     spec_im_.assign(cap, 0.0);
+    out_re_.assign(cap, 0.0);
+    out_im_.assign(cap, 0.0);
     work_.assign(2 * cap, 0.0);
 }
 
@@ -198,8 +200,8 @@ void GridConvolution::kernel_spectrum_pair(const std::vector<double>& k1,
     forward(mx_, my_);
     for (int kx = 0; kx < mx_; ++kx)
         for (int ky = 0; ky < my_; ++ky) {
-            s1[ky + static_cast<size_t>(my_) * kx] = spec_re_[ky + sy_ * kx] * scale;
-            s2[ky + static_cast<size_t>(my_) * kx] = spec_im_[ky + sy_ * kx] * scale;
+            s1[ky + static_cast<size_t>(my_) * kx] = out_re_[ky + sy_ * kx] * scale;
+            s2[ky + static_cast<size_t>(my_) * kx] = out_im_[ky + sy_ * kx] * scale;
         }
 }
 
@@ -212,14 +214,15 @@ void GridConvolution::forward(int cols, int rows)
     const size_t used = static_cast<size_t>(rows) * rc;
     std::fill(rows_re_.begin() + used, rows_re_.begin() + static_cast<size_t>(my_) * rc, 0.0);
     std::fill(rows_im_.begin() + used, rows_im_.begin() + static_cast<size_t>(my_) * rc, 0.0);
-    fft_y_.transform(rows_re_.data(), rows_im_.data(), static_cast<int>(rc), false, work_.data());
+    fft_y_.transform(rows_re_.data(), rows_im_.data(), out_re_.data(), out_im_.data(),
+                     static_cast<int>(rc), false, work_.data());
     // Transpose [ky][i] -> [i][ky], zero columns i >= cols, then along x:
     // lines are the my rows ky (and sy_ - my zero ones), element i at
     // [i * sy_ + ky].
     for (int i = 0; i < cols; ++i) {
         for (int ky = 0; ky < my_; ++ky) {
-            spec_re_[static_cast<size_t>(i) * sy_ + ky] = rows_re_[ky * rc + i];
-            spec_im_[static_cast<size_t>(i) * sy_ + ky] = rows_im_[ky * rc + i];
+            spec_re_[static_cast<size_t>(i) * sy_ + ky] = out_re_[ky * rc + i];
+            spec_im_[static_cast<size_t>(i) * sy_ + ky] = out_im_[ky * rc + i];
         }
     }
     clear_padding(spec_re_.data(), spec_im_.data(), cols, sy_, my_);
@@ -227,7 +230,8 @@ void GridConvolution::forward(int cols, int rows)
               spec_re_.begin() + static_cast<size_t>(mx_) * sy_, 0.0);
     std::fill(spec_im_.begin() + static_cast<size_t>(cols) * sy_,
               spec_im_.begin() + static_cast<size_t>(mx_) * sy_, 0.0);
-    fft_x_.transform(spec_re_.data(), spec_im_.data(), static_cast<int>(sy_), false, work_.data());
+    fft_x_.transform(spec_re_.data(), spec_im_.data(), out_re_.data(), out_im_.data(),
+                     static_cast<int>(sy_), false, work_.data());
 }
 
 // Zero the values lines ... stride - 1 of the first count elements (the
@@ -243,15 +247,17 @@ void GridConvolution::clear_padding(double* re, double* im, int count, size_t st
 
 void GridConvolution::inverse()
 {
-    fft_x_.transform(spec_re_.data(), spec_im_.data(), static_cast<int>(sy_), true, work_.data());
+    fft_x_.transform(spec_re_.data(), spec_im_.data(), out_re_.data(), out_im_.data(),
+                     static_cast<int>(sy_), true, work_.data());
     const size_t rc = line_stride(nx_);
     for (int ky = 0; ky < my_; ++ky)
         for (int i = 0; i < nx_; ++i) {
-            rows_re_[ky * rc + i] = spec_re_[static_cast<size_t>(i) * sy_ + ky];
-            rows_im_[ky * rc + i] = spec_im_[static_cast<size_t>(i) * sy_ + ky];
+            rows_re_[ky * rc + i] = out_re_[static_cast<size_t>(i) * sy_ + ky];
+            rows_im_[ky * rc + i] = out_im_[static_cast<size_t>(i) * sy_ + ky];
         }
     clear_padding(rows_re_.data(), rows_im_.data(), my_, rc, nx_);
-    fft_y_.transform(rows_re_.data(), rows_im_.data(), static_cast<int>(rc), true, work_.data());
+    fft_y_.transform(rows_re_.data(), rows_im_.data(), out_re_.data(), out_im_.data(),
+                     static_cast<int>(rc), true, work_.data());
 }
 
 void GridConvolution::real_product(const double* p, double* u,
@@ -360,6 +366,10 @@ void GridConvolution::apply_tangential(const Complex* z, Complex* s, bool steady
         if (kxm < kx) continue;
         const double far = steady ? shift_[kx].real() : 1.0, fai = steady ? shift_[kx].imag() : 0.0;
         const double fbr = steady ? shift_[kxm].real() : 1.0, fbi = steady ? shift_[kxm].imag() : 0.0;
+        const double* in_re_a = out_re_.data() + sy_ * kx;
+        const double* in_im_a = out_im_.data() + sy_ * kx;
+        const double* in_re_b = out_re_.data() + sy_ * kxm;
+        const double* in_im_b = out_im_.data() + sy_ * kxm;
         double* re_a = spec_re_.data() + sy_ * kx;
         double* im_a = spec_im_.data() + sy_ * kx;
         double* re_b = spec_re_.data() + sy_ * kxm;
@@ -373,7 +383,8 @@ void GridConvolution::apply_tangential(const Complex* z, Complex* s, bool steady
         for (int ky = 0; ky < my_; ++ky) {
             const int kym = ky == 0 ? 0 : my_ - ky;
             if (kxm == kx && kym < ky) continue;
-            const double zar = re_a[ky], zai = im_a[ky], zbr = re_b[kym], zbi = im_b[kym];
+            const double zar = in_re_a[ky], zai = in_im_a[ky], zbr = in_re_b[kym],
+                         zbi = in_im_b[kym];
             // alpha z + beta conj(z'), then times f
             const double tar = al_a[ky] * zar + br_a[ky] * zbr + bi_a[ky] * zbi;
             const double tai = al_a[ky] * zai + bi_a[ky] * zbr - br_a[ky] * zbi;
@@ -388,7 +399,7 @@ void GridConvolution::apply_tangential(const Complex* z, Complex* s, bool steady
     inverse();
     for (int j = 0; j < ny_; ++j)
         for (int i = 0; i < nx_; ++i)
-            s[i + static_cast<size_t>(nx_) * j] = Complex(rows_re_[j * rc + i], rows_im_[j * rc + i]);
+            s[i + static_cast<size_t>(nx_) * j] = Complex(out_re_[j * rc + i], out_im_[j * rc + i]);
 }
 
 } // namespace creepwork

@@ -83,10 +83,12 @@ public:
     double cf33(int k, int l) const;
 
 private:
-    // rows_re_/rows_im_ ([j][i]: cols values per row, rows rows) -> spec_re_/
-    // spec_im_ ([kx][ky]), the 2D forward FFT of the zero-padded field.
+    // rows_re_/rows_im_ ([j][i]: cols values per row, rows rows) -> out_re_/
+    // out_im_ ([kx][ky]), the 2D forward FFT of the zero-padded field
+    // (spec_ and rows_ are overwritten).
     void forward(int cols, int rows);
-    // spec_ -> rows_ ([j][i], the first ny rows of nx values): inverse FFT.
+    // spec_ -> out_ ([j][i], the first ny rows of nx values): inverse FFT
+    // (rows_ is overwritten).
     void inverse();
     void set_shift();
     void compute_spectra(); // the kernels' spectra for the FFT size
@@ -116,7 +118,9 @@ private:
     // transforms' scratch; real and imaginary parts apart. A batch's lines
     // are padded (line_stride in the .cpp): rows [j * rc + i], spectrum
     // [kx * sy_ + ky].
-    std::vector<double> rows_re_, rows_im_, spec_re_, spec_im_, work_;
+    // out_ receives the out-of-place transforms (no copy back after an odd
+    // number of stages, batched_fft.hpp).
+    std::vector<double> rows_re_, rows_im_, spec_re_, spec_im_, out_re_, out_im_, work_;
 };
 
 } // namespace creepwork
