@@ -639,7 +639,7 @@ SolveTotals GapModel::solve(const ContactInput& in, SolveMode mode)
     }
     has_previous_ = !trivial;
     if (!trivial) previous_traction_scale_ = T;
-    if (!trivial && !rolling_freely) history_.remember(key, c, traction_, T);
+    if (!trivial && !rolling_freely) history_.remember(key, c, traction_, T, state_.data());
     return t;
 }
 

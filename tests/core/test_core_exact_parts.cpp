@@ -12,6 +12,7 @@
 #include "test_support.h"
 
 #include "exact/batched_fft.hpp"
+#include "exact/creepage_history.hpp"
 #include "exact/grid_convolution.hpp"
 #include "exact/influence.hpp"
 #include "exact/local_friction.hpp"
@@ -177,6 +178,49 @@ void local_friction_solves_coulomb(void**)
 
 } // namespace
 
+// The warm start's prediction on a traction cubic in the step t along a
+// creepage path c(t) = (t, t^2, 0) (the secant step's weights are then
+// exactly the quadratic extrapolation's: 3, -3, 1). Its error is that of
+// quadratic extrapolation of a cubic, q(t + 1) - 3 q(t) + 3 q(t - 1) -
+// q(t - 2) = 6 d for q = a + b t + c t^2 + d t^3; with the last error added
+// (the four newest solutions in the same states) the prediction is exact.
+void history_predicts_a_drift(void**)
+{
+    const C a(0.3, -0.1), b(0.02, 0.01), c2(-0.004, 0.003), d(5e-4, -2e-4);
+    auto q_of = [&](double t) { return a + t * (b + t * (c2 + t * d)); };
+    auto c_of = [](double t, double* c) {
+        c[0] = t;
+        c[1] = t * t;
+        c[2] = 0.0;
+    };
+    const double key[cw::CreepageHistory::kKey] = {1.0, 0.28, 1.15, 1.0};
+    for (int change : {-1, 5}) { // the step at which the element changes state (-1: never)
+        cw::CreepageHistory h;
+        h.resize(1);
+        std::vector<C> q(1);
+        signed char state = 2;
+        for (int t = 0; t <= 12; ++t) {
+            double c[3];
+            c_of(t, c);
+            if (t > 0) {
+                assert_true(h.predict(key, c, q));
+                // Corrected from step 4 on (the solution of step `change` is
+                // predicted from the old states), and again four solutions
+                // after the change; the secant step alone between (three
+                // solutions from step 3 on).
+                const bool corrected = t >= 4 && (change < 0 || t <= change || t >= change + 4);
+                if (corrected)
+                    assert_close(std::abs(q[0] - q_of(t)), 0.0, 0.0, 1e-13);
+                else if (t >= 3)
+                    assert_close(std::abs(q[0] - q_of(t)), std::abs(6.0 * d), 1e-9, 0.0);
+            }
+            if (t == change) state = 1;
+            q[0] = q_of(t);
+            h.remember(key, c, q, 1.0, &state);
+        }
+    }
+}
+
 int main()
 {
     const struct CMUnitTest tests[] = {
@@ -184,6 +228,7 @@ int main()
         cmocka_unit_test(coefficients_match_contact_form),
         cmocka_unit_test(products_match_direct_sums),
         cmocka_unit_test(local_friction_solves_coulomb),
+        cmocka_unit_test(history_predicts_a_drift),
     };
     return cmocka_run_group_tests(tests, nullptr, nullptr);
 }
