@@ -179,7 +179,8 @@ void ExactModel::remember(double ratio, double nu)
 {
     const double key[CreepageHistory::kKey] = {ratio, nu, setup_.spin_offset, 0.0};
     const double c[3] = {setup_.c_xi, setup_.c_eta, setup_.c_phi};
-    history_.remember(key, c, levels_[0]->tangential.traction());
+    history_.remember(key, c, levels_[0]->tangential.traction(), 1.0,
+                      levels_[0]->tangential.state().data());
 }
 
 SolveTotals ExactModel::solve(const ContactInput& in, SolveMode mode)
