@@ -302,7 +302,7 @@ SolveTotals ExactModel::solve(const ContactInput& in, SolveMode mode)
     } else if (in.warm_start && had_previous) {
         info_.warm = true;
         predict_start(ratio, nu);
-        ti = fine.tangential.solve(fine.conv, tolerance, max_steps);
+        ti = fine.tangential.solve(fine.conv, tolerance, max_steps, true);
         info_.products += ti.products;
         info_.levels_used = 1;
         if (!ti.converged) {

@@ -543,7 +543,7 @@ SolveTotals GapModel::solve(const ContactInput& in, SolveMode mode)
             for (int i = 0; i < fine.nx; ++i)
                 q[i + static_cast<size_t>(fine.nx) * j] =
                     traction_[box_i0_ + i + static_cast<size_t>(nx_) * (box_j0_ + j)];
-        ti = fine.tangential.solve(fine.conv, tolerance, max_steps);
+        ti = fine.tangential.solve(fine.conv, tolerance, max_steps, true);
         info_.products += ti.products;
         info_.levels_used = 1;
         if (!ti.converged) {
