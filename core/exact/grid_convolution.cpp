@@ -18,6 +18,21 @@ constexpr double kPi = 3.14159265358979323846;
 // count gets 4 lines more, zero and transformed with the rest.
 int line_stride(int lines) { return lines % 16 == 0 ? lines + 4 : lines; }
 
+// One column kx of the tangential product in Fourier space (apply_tangential).
+void multiply_column(int n, double fr, double fi, const double* __restrict al,
+                     const double* __restrict br, const double* __restrict bi,
+                     const double* __restrict zr, const double* __restrict zi,
+                     const double* __restrict mr, const double* __restrict mi,
+                     double* __restrict sr, double* __restrict si)
+{
+    for (int k = 0; k < n; ++k) {
+        const double tr = al[k] * zr[k] + br[k] * mr[k] + bi[k] * mi[k];
+        const double ti = al[k] * zi[k] + bi[k] * mr[k] - br[k] * mi[k];
+        sr[k] = fr * tr - fi * ti;
+        si[k] = fr * ti + fi * tr;
+    }
+}
+
 } // namespace
 
 GridConvolution::GridConvolution(int nx, int ny, ConvolutionUse use)
@@ -58,6 +73,7 @@ GridConvolution::GridConvolution(int nx, int ny, ConvolutionUse use)
     spec_im_.assign(cap, 0.0);
     out_re_.assign(cap, 0.0);
     out_im_.assign(cap, 0.0);
+    mirror_.assign(2 * static_cast<size_t>(my_), 0.0);
     work_.assign(2 * cap, 0.0);
 }
 
@@ -358,43 +374,29 @@ void GridConvolution::apply_tangential(const Complex* z, Complex* s, bool steady
             rows_im_[j * rc + i] = z[i + static_cast<size_t>(nx_) * j].imag();
         }
     forward(nx_, ny_);
-    // Pairs (k, -k): s^(k) = f(kx) (alpha^(k) z^(k) + beta^(k) conj(z^(-k))),
-    // f the shift factor of column kx for the steady operator (1 otherwise).
-    // Each pair is visited once, from its lower-indexed member.
+    // s^(k) = f(kx) (alpha^(k) z^(k) + beta^(k) conj(z^(-k))), f the shift
+    // factor of column kx for the steady operator (1 otherwise). The spectrum
+    // z is read from out_ and s written to spec_, every k on its own; z^(-k)
+    // is first copied in the order of k (mirror_), so that the loop runs
+    // forward and vectorises.
+    double* mirror_re = mirror_.data();
+    double* mirror_im = mirror_.data() + my_;
     for (int kx = 0; kx < mx_; ++kx) {
         const int kxm = kx == 0 ? 0 : mx_ - kx;
-        if (kxm < kx) continue;
-        const double far = steady ? shift_[kx].real() : 1.0, fai = steady ? shift_[kx].imag() : 0.0;
-        const double fbr = steady ? shift_[kxm].real() : 1.0, fbi = steady ? shift_[kxm].imag() : 0.0;
-        const double* in_re_a = out_re_.data() + sy_ * kx;
-        const double* in_im_a = out_im_.data() + sy_ * kx;
-        const double* in_re_b = out_re_.data() + sy_ * kxm;
-        const double* in_im_b = out_im_.data() + sy_ * kxm;
-        double* re_a = spec_re_.data() + sy_ * kx;
-        double* im_a = spec_im_.data() + sy_ * kx;
-        double* re_b = spec_re_.data() + sy_ * kxm;
-        double* im_b = spec_im_.data() + sy_ * kxm;
-        const double* al_a = alpha_.data() + static_cast<size_t>(my_) * kx;
-        const double* al_b = alpha_.data() + static_cast<size_t>(my_) * kxm;
-        const double* br_a = beta_re_.data() + static_cast<size_t>(my_) * kx;
-        const double* bi_a = beta_im_.data() + static_cast<size_t>(my_) * kx;
-        const double* br_b = beta_re_.data() + static_cast<size_t>(my_) * kxm;
-        const double* bi_b = beta_im_.data() + static_cast<size_t>(my_) * kxm;
-        for (int ky = 0; ky < my_; ++ky) {
-            const int kym = ky == 0 ? 0 : my_ - ky;
-            if (kxm == kx && kym < ky) continue;
-            const double zar = in_re_a[ky], zai = in_im_a[ky], zbr = in_re_b[kym],
-                         zbi = in_im_b[kym];
-            // alpha z + beta conj(z'), then times f
-            const double tar = al_a[ky] * zar + br_a[ky] * zbr + bi_a[ky] * zbi;
-            const double tai = al_a[ky] * zai + bi_a[ky] * zbr - br_a[ky] * zbi;
-            const double tbr = al_b[kym] * zbr + br_b[kym] * zar + bi_b[kym] * zai;
-            const double tbi = al_b[kym] * zbi + bi_b[kym] * zar - br_b[kym] * zai;
-            re_a[ky] = far * tar - fai * tai;
-            im_a[ky] = far * tai + fai * tar;
-            re_b[kym] = fbr * tbr - fbi * tbi;
-            im_b[kym] = fbr * tbi + fbi * tbr;
+        const double* mr = out_re_.data() + sy_ * kxm;
+        const double* mi = out_im_.data() + sy_ * kxm;
+        mirror_re[0] = mr[0];
+        mirror_im[0] = mi[0];
+        for (int ky = 1; ky < my_; ++ky) {
+            mirror_re[ky] = mr[my_ - ky];
+            mirror_im[ky] = mi[my_ - ky];
         }
+        multiply_column(my_, steady ? shift_[kx].real() : 1.0, steady ? shift_[kx].imag() : 0.0,
+                        alpha_.data() + static_cast<size_t>(my_) * kx,
+                        beta_re_.data() + static_cast<size_t>(my_) * kx,
+                        beta_im_.data() + static_cast<size_t>(my_) * kx,
+                        out_re_.data() + sy_ * kx, out_im_.data() + sy_ * kx, mirror_re,
+                        mirror_im, spec_re_.data() + sy_ * kx, spec_im_.data() + sy_ * kx);
     }
     inverse();
     for (int j = 0; j < ny_; ++j)

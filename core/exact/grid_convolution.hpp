@@ -121,6 +121,7 @@ private:
     // out_ receives the out-of-place transforms (no copy back after an odd
     // number of stages, batched_fft.hpp).
     std::vector<double> rows_re_, rows_im_, spec_re_, spec_im_, out_re_, out_im_, work_;
+    std::vector<double> mirror_; // one column of z^(-k), real then imaginary parts
 };
 
 } // namespace creepwork
