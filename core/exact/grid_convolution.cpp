@@ -73,6 +73,8 @@ GridConvolution::GridConvolution(int nx, int ny, ConvolutionUse use)
     spec_im_.assign(cap, 0.0);
     out_re_.assign(cap, 0.0);
     out_im_.assign(cap, 0.0);
+    back_re_.assign(cap, 0.0);
+    back_im_.assign(cap, 0.0);
     mirror_.assign(2 * static_cast<size_t>(my_), 0.0);
     work_.assign(2 * cap, 0.0);
 }
@@ -89,6 +91,7 @@ bool GridConvolution::set_size(int nx, int ny)
 {
     nx_ = nx;
     ny_ = ny;
+    padded_cols_ = padded_rows_ = -1;
     const int mx = BatchedFft::good_size(2 * nx + 1), my = BatchedFft::good_size(2 * ny - 1);
     if (mx == mx_ && my == my_) return false;
     mx_ = mx;
@@ -226,10 +229,17 @@ void GridConvolution::forward(int cols, int rows)
     // Along y: lines are the columns, element j at [j * rc + i] (rc >= cols:
     // the columns cols ... rc - 1 are zero).
     const size_t rc = line_stride(cols);
-    clear_padding(rows_re_.data(), rows_im_.data(), rows, rc, cols);
-    const size_t used = static_cast<size_t>(rows) * rc;
-    std::fill(rows_re_.begin() + used, rows_re_.begin() + static_cast<size_t>(my_) * rc, 0.0);
-    std::fill(rows_im_.begin() + used, rows_im_.begin() + static_cast<size_t>(my_) * rc, 0.0);
+    // The zeros around the field (rows_) and its columns (spec_) stay from the
+    // last call of the same size: nothing else writes there meanwhile.
+    const bool padded = cols == padded_cols_ && rows == padded_rows_;
+    padded_cols_ = cols;
+    padded_rows_ = rows;
+    if (!padded) {
+        clear_padding(rows_re_.data(), rows_im_.data(), rows, rc, cols);
+        const size_t used = static_cast<size_t>(rows) * rc;
+        std::fill(rows_re_.begin() + used, rows_re_.begin() + static_cast<size_t>(my_) * rc, 0.0);
+        std::fill(rows_im_.begin() + used, rows_im_.begin() + static_cast<size_t>(my_) * rc, 0.0);
+    }
     fft_y_.transform(rows_re_.data(), rows_im_.data(), out_re_.data(), out_im_.data(),
                      static_cast<int>(rc), false, work_.data());
     // Transpose [ky][i] -> [i][ky], zero columns i >= cols, then along x:
@@ -241,11 +251,13 @@ void GridConvolution::forward(int cols, int rows)
             spec_im_[static_cast<size_t>(i) * sy_ + ky] = out_im_[ky * rc + i];
         }
     }
-    clear_padding(spec_re_.data(), spec_im_.data(), cols, sy_, my_);
-    std::fill(spec_re_.begin() + static_cast<size_t>(cols) * sy_,
-              spec_re_.begin() + static_cast<size_t>(mx_) * sy_, 0.0);
-    std::fill(spec_im_.begin() + static_cast<size_t>(cols) * sy_,
-              spec_im_.begin() + static_cast<size_t>(mx_) * sy_, 0.0);
+    if (!padded) {
+        clear_padding(spec_re_.data(), spec_im_.data(), cols, sy_, my_);
+        std::fill(spec_re_.begin() + static_cast<size_t>(cols) * sy_,
+                  spec_re_.begin() + static_cast<size_t>(mx_) * sy_, 0.0);
+        std::fill(spec_im_.begin() + static_cast<size_t>(cols) * sy_,
+                  spec_im_.begin() + static_cast<size_t>(mx_) * sy_, 0.0);
+    }
     fft_x_.transform(spec_re_.data(), spec_im_.data(), out_re_.data(), out_im_.data(),
                      static_cast<int>(sy_), false, work_.data());
 }
@@ -263,22 +275,23 @@ void GridConvolution::clear_padding(double* re, double* im, int count, size_t st
 
 void GridConvolution::inverse()
 {
-    fft_x_.transform(spec_re_.data(), spec_im_.data(), out_re_.data(), out_im_.data(),
+    fft_x_.transform(back_re_.data(), back_im_.data(), out_re_.data(), out_im_.data(),
                      static_cast<int>(sy_), true, work_.data());
     const size_t rc = line_stride(nx_);
     for (int ky = 0; ky < my_; ++ky)
         for (int i = 0; i < nx_; ++i) {
-            rows_re_[ky * rc + i] = out_re_[static_cast<size_t>(i) * sy_ + ky];
-            rows_im_[ky * rc + i] = out_im_[static_cast<size_t>(i) * sy_ + ky];
+            back_re_[ky * rc + i] = out_re_[static_cast<size_t>(i) * sy_ + ky];
+            back_im_[ky * rc + i] = out_im_[static_cast<size_t>(i) * sy_ + ky];
         }
-    clear_padding(rows_re_.data(), rows_im_.data(), my_, rc, nx_);
-    fft_y_.transform(rows_re_.data(), rows_im_.data(), out_re_.data(), out_im_.data(),
+    clear_padding(back_re_.data(), back_im_.data(), my_, rc, nx_);
+    fft_y_.transform(back_re_.data(), back_im_.data(), out_re_.data(), out_im_.data(),
                      static_cast<int>(rc), true, work_.data());
 }
 
 void GridConvolution::real_product(const double* p, double* u,
                                    const std::vector<double>& spectrum)
 {
+    padded_cols_ = padded_rows_ = -1; // rows_ and spec_ in other layouts
     const int nc = (nx_ + 1) / 2;  // complex columns: x-columns 2c and 2c + 1
     const int h = my_ / 2;         // spectrum rows ky = 0 .. h (the rest by symmetry)
     const size_t hl = static_cast<size_t>(h) + 1;
@@ -376,7 +389,7 @@ void GridConvolution::apply_tangential(const Complex* z, Complex* s, bool steady
     forward(nx_, ny_);
     // s^(k) = f(kx) (alpha^(k) z^(k) + beta^(k) conj(z^(-k))), f the shift
     // factor of column kx for the steady operator (1 otherwise). The spectrum
-    // z is read from out_ and s written to spec_, every k on its own; z^(-k)
+    // z is read from out_ and s written to back_, every k on its own; z^(-k)
     // is first copied in the order of k (mirror_), so that the loop runs
     // forward and vectorises.
     double* mirror_re = mirror_.data();
@@ -396,7 +409,7 @@ void GridConvolution::apply_tangential(const Complex* z, Complex* s, bool steady
                         beta_re_.data() + static_cast<size_t>(my_) * kx,
                         beta_im_.data() + static_cast<size_t>(my_) * kx,
                         out_re_.data() + sy_ * kx, out_im_.data() + sy_ * kx, mirror_re,
-                        mirror_im, spec_re_.data() + sy_ * kx, spec_im_.data() + sy_ * kx);
+                        mirror_im, back_re_.data() + sy_ * kx, back_im_.data() + sy_ * kx);
     }
     inverse();
     for (int j = 0; j < ny_; ++j)

@@ -96,6 +96,30 @@ void coefficients_match_contact_form(void**)
     assert_close(conv.cf33(0, 0), (1.0 - 0.3) * 4.0 * std::asinh(1.0) / kPi, 1e-14, 0.0);
 }
 
+// The tangential product of conv on its nx x ny field against direct sums.
+void check_tangential(cw::GridConvolution& conv, const std::vector<C>& z, bool steady)
+{
+    const int nx = conv.nx(), n = nx * conv.ny();
+    std::vector<C> s(n);
+    conv.apply_tangential(z.data(), s.data(), steady);
+    for (int I = 0; I < n; ++I) {
+        double sx = 0.0, sy = 0.0;
+        for (int J = 0; J < n; ++J) {
+            const int k = I % nx - J % nx, l = I / nx - J / nx;
+            double a11 = conv.cf11(k, l), a12 = conv.cf12(k, l), a22 = conv.cf22(k, l);
+            if (steady) {
+                a11 -= conv.cf11(k + 1, l);
+                a12 -= conv.cf12(k + 1, l);
+                a22 -= conv.cf22(k + 1, l);
+            }
+            sx += a11 * z[J].real() + a12 * z[J].imag();
+            sy += a12 * z[J].real() + a22 * z[J].imag();
+        }
+        assert_close(s[I].real(), sx, 0.0, 1e-13);
+        assert_close(s[I].imag(), sy, 0.0, 1e-13);
+    }
+}
+
 void products_match_direct_sums(void**)
 {
     std::mt19937 gen(11);
@@ -106,29 +130,13 @@ void products_match_direct_sums(void**)
         cw::GridConvolution conv(nx, ny);
         conv.set_coefficients(rho, nu);
         const int n = nx * ny;
-        std::vector<C> z(n), s(n);
+        std::vector<C> z(n);
         std::vector<double> p(n), u(n), back(n);
         for (C& v : z) v = C(U(gen), U(gen));
         for (double& v : p) v = U(gen);
-        for (int steady = 0; steady < 2; ++steady) {
-            conv.apply_tangential(z.data(), s.data(), steady);
-            for (int I = 0; I < n; ++I) {
-                double sx = 0.0, sy = 0.0;
-                for (int J = 0; J < n; ++J) {
-                    const int k = I % nx - J % nx, l = I / nx - J / nx;
-                    double a11 = conv.cf11(k, l), a12 = conv.cf12(k, l), a22 = conv.cf22(k, l);
-                    if (steady) {
-                        a11 -= conv.cf11(k + 1, l);
-                        a12 -= conv.cf12(k + 1, l);
-                        a22 -= conv.cf22(k + 1, l);
-                    }
-                    sx += a11 * z[J].real() + a12 * z[J].imag();
-                    sy += a12 * z[J].real() + a22 * z[J].imag();
-                }
-                assert_close(s[I].real(), sx, 0.0, 1e-13);
-                assert_close(s[I].imag(), sy, 0.0, 1e-13);
-            }
-        }
+        for (int steady = 0; steady < 2; ++steady) check_tangential(conv, z, steady);
+        // Again: the zero padding kept from the last product of this size.
+        check_tangential(conv, z, true);
         conv.apply_normal(p.data(), u.data());
         for (int I = 0; I < n; ++I) {
             double v = 0.0;
@@ -139,6 +147,16 @@ void products_match_direct_sums(void**)
         // as the box it is close to the inverse, and it is finite.
         conv.apply_normal_inverse(u.data(), back.data());
         for (double v : back) assert_true(std::isfinite(v));
+        // After the normal products (other layouts of the same buffers), and
+        // on a smaller field of the same convolution with other values.
+        check_tangential(conv, z, true);
+        if (nx > 2) {
+            conv.set_size(nx - 2, ny - 1);
+            std::vector<C> zs((nx - 2) * (ny - 1));
+            for (C& v : zs) v = C(U(gen), U(gen));
+            check_tangential(conv, zs, true);
+            check_tangential(conv, zs, false);
+        }
     }
 }
 
