@@ -247,4 +247,30 @@ void BatchedFft::transform(double* re, double* im, int lines, bool inverse, doub
     }
 }
 
+void BatchedFft::transform(const double* in_re, const double* in_im, double* out_re,
+                           double* out_im, int lines, bool inverse, double* work) const
+{
+    const size_t total = static_cast<size_t>(n_) * lines;
+    if (stages_.empty()) { // length 1
+        std::memcpy(out_re, in_re, total * sizeof(double));
+        std::memcpy(out_im, in_im, total * sizeof(double));
+        return;
+    }
+    // Stage s writes out when (stages - s) is odd, work otherwise: the last
+    // one writes out.
+    const double* xr = in_re;
+    const double* xi = in_im;
+    const size_t count = stages_.size();
+    for (size_t k = 0; k < count; ++k) {
+        const bool to_out = (count - k) % 2 == 1;
+        double* yr = to_out ? out_re : work;
+        double* yi = to_out ? out_im : work + total;
+        const Stage& st = stages_[k];
+        stage_(inverse, st.radix, st.m, st.stride, lines, xr, xi, yr, yi,
+               tw_re_.data() + st.twiddle, tw_im_.data() + st.twiddle);
+        xr = yr;
+        xi = yi;
+    }
+}
+
 } // namespace creepwork

@@ -26,6 +26,13 @@ public:
     void plan(int n);
     // In place on (re, im) of n * lines values; work holds 2 n lines.
     void transform(double* re, double* im, int lines, bool inverse, double* work) const;
+    // From (in_re, in_im), which are only read, into (out_re, out_im), apart
+    // from them; work holds 2 n lines. The stages alternate between out and
+    // work so that the last one lands in out whatever their number: no copy
+    // (the in-place transform copies its result back after an odd number of
+    // stages, as lengths 40 = 4 2 5 and 45 = 3 3 5 have).
+    void transform(const double* in_re, const double* in_im, double* out_re, double* out_im,
+                   int lines, bool inverse, double* work) const;
     // A cheap 2^a 3^b 5^c length >= n (at most 1.1 n; see the .cpp).
     static int good_size(int n);
 

@@ -8,7 +8,10 @@ namespace creepwork {
 void CreepageHistory::resize(std::size_t n)
 {
     for (auto& q : q_) q.assign(n, Complex(0.0, 0.0));
-    count_ = 0;
+    predicted_.assign(n, Complex(0.0, 0.0));
+    error_.assign(n, Complex(0.0, 0.0));
+    state_.assign(n, 0);
+    clear();
 }
 
 bool CreepageHistory::same(const double key[kKey]) const
@@ -22,8 +25,9 @@ bool CreepageHistory::same(const double key[kKey]) const
 bool CreepageHistory::predict(const double key[kKey], const double c[3], std::vector<Complex>& q,
                               double scale)
 {
+    predicted_valid_ = false;
     if (!same(key)) {
-        count_ = 0;
+        clear();
         return false;
     }
     const int m = count_ - 1; // differences available (0, 1 or 2)
@@ -50,19 +54,36 @@ bool CreepageHistory::predict(const double key[kKey], const double c[3], std::ve
     for (double& v : g)
         if (!(std::fabs(v) <= 4.0)) v = 0.0; // extrapolate, do not leap
     const std::vector<Complex>& q0 = q_[0];
+    // The error of the last secant step when it and this one see the same
+    // states: the newest four solutions (this step's three and the one
+    // before them) share them.
+    const bool correct = m == 2 && error_valid_ && same_states_ >= 4;
     for (size_t k = 0; k < q.size(); ++k) {
         Complex v = q0[k];
         for (int i = 0; i < m; ++i) v += g[i] * (q_[i + 1][k] - q0[k]);
+        predicted_[k] = v;
+        if (correct) v += error_[k];
         q[k] = scale == 1.0 ? v : v * scale;
     }
+    predicted_valid_ = m == 2;
     return true;
 }
 
 void CreepageHistory::remember(const double key[kKey], const double c[3],
-                               const std::vector<Complex>& q, double scale)
+                               const std::vector<Complex>& q, double scale,
+                               const signed char* state)
 {
-    if (!same(key)) count_ = 0;
+    if (!same(key)) clear();
     for (int k = 0; k < kKey; ++k) key_[k] = key[k];
+    const size_t n = q.size();
+    if (state) {
+        const bool same_states =
+            same_states_ > 0 && std::equal(state, state + n, state_.begin());
+        same_states_ = same_states ? same_states_ + 1 : 1;
+        std::copy(state, state + n, state_.begin());
+    } else {
+        same_states_ = 0;
+    }
     // Shift: [0] is the newest.
     for (int i = std::min(count_, 2); i > 0; --i) {
         q_[i].swap(q_[i - 1]);
@@ -71,8 +92,12 @@ void CreepageHistory::remember(const double key[kKey], const double c[3],
     if (scale == 1.0)
         q_[0] = q;
     else
-        for (size_t k = 0; k < q.size(); ++k) q_[0][k] = scale * q[k];
+        for (size_t k = 0; k < n; ++k) q_[0][k] = scale * q[k];
     for (int k = 0; k < 3; ++k) c_[0][k] = c[k];
+    error_valid_ = predicted_valid_;
+    if (error_valid_)
+        for (size_t k = 0; k < n; ++k) error_[k] = q_[0][k] - predicted_[k];
+    predicted_valid_ = false;
     count_ = std::min(count_ + 1, 3);
 }
 

@@ -179,7 +179,8 @@ void ExactModel::remember(double ratio, double nu)
 {
     const double key[CreepageHistory::kKey] = {ratio, nu, setup_.spin_offset, 0.0};
     const double c[3] = {setup_.c_xi, setup_.c_eta, setup_.c_phi};
-    history_.remember(key, c, levels_[0]->tangential.traction());
+    history_.remember(key, c, levels_[0]->tangential.traction(), 1.0,
+                      levels_[0]->tangential.state().data());
 }
 
 SolveTotals ExactModel::solve(const ContactInput& in, SolveMode mode)
@@ -301,7 +302,7 @@ SolveTotals ExactModel::solve(const ContactInput& in, SolveMode mode)
     } else if (in.warm_start && had_previous) {
         info_.warm = true;
         predict_start(ratio, nu);
-        ti = fine.tangential.solve(fine.conv, tolerance, max_steps);
+        ti = fine.tangential.solve(fine.conv, tolerance, max_steps, true);
         info_.products += ti.products;
         info_.levels_used = 1;
         if (!ti.converged) {

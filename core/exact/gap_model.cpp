@@ -539,7 +539,7 @@ SolveTotals GapModel::solve(const ContactInput& in, SolveMode mode)
             for (int i = 0; i < fine.nx; ++i)
                 q[i + static_cast<size_t>(fine.nx) * j] =
                     traction_[box_i0_ + i + static_cast<size_t>(nx_) * (box_j0_ + j)];
-        ti = fine.tangential.solve(fine.conv, tolerance, max_steps);
+        ti = fine.tangential.solve(fine.conv, tolerance, max_steps, true);
         info_.products += ti.products;
         info_.levels_used = 1;
         if (!ti.converged) {
@@ -635,7 +635,7 @@ SolveTotals GapModel::solve(const ContactInput& in, SolveMode mode)
     }
     has_previous_ = !trivial;
     if (!trivial) previous_traction_scale_ = T;
-    if (!trivial && !rolling_freely) history_.remember(key, c, traction_, T);
+    if (!trivial && !rolling_freely) history_.remember(key, c, traction_, T, state_.data());
     return t;
 }
 

@@ -18,6 +18,21 @@ constexpr double kPi = 3.14159265358979323846;
 // count gets 4 lines more, zero and transformed with the rest.
 int line_stride(int lines) { return lines % 16 == 0 ? lines + 4 : lines; }
 
+// One column kx of the tangential product in Fourier space (apply_tangential).
+void multiply_column(int n, double fr, double fi, const double* __restrict al,
+                     const double* __restrict br, const double* __restrict bi,
+                     const double* __restrict zr, const double* __restrict zi,
+                     const double* __restrict mr, const double* __restrict mi,
+                     double* __restrict sr, double* __restrict si)
+{
+    for (int k = 0; k < n; ++k) {
+        const double tr = al[k] * zr[k] + br[k] * mr[k] + bi[k] * mi[k];
+        const double ti = al[k] * zi[k] + bi[k] * mr[k] - br[k] * mi[k];
+        sr[k] = fr * tr - fi * ti;
+        si[k] = fr * ti + fi * tr;
+    }
+}
+
 } // namespace
 
 GridConvolution::GridConvolution(int nx, int ny, ConvolutionUse use)
@@ -56,6 +71,11 @@ GridConvolution::GridConvolution(int nx, int ny, ConvolutionUse use)
     rows_im_.assign(cap, 0.0);
     spec_re_.assign(cap, 0.0);
     spec_im_.assign(cap, 0.0);
+    out_re_.assign(cap, 0.0);
+    out_im_.assign(cap, 0.0);
+    back_re_.assign(cap, 0.0);
+    back_im_.assign(cap, 0.0);
+    mirror_.assign(2 * static_cast<size_t>(my_), 0.0);
     work_.assign(2 * cap, 0.0);
 }
 
@@ -71,6 +91,7 @@ bool GridConvolution::set_size(int nx, int ny)
 {
     nx_ = nx;
     ny_ = ny;
+    padded_cols_ = padded_rows_ = -1;
     const int mx = BatchedFft::good_size(2 * nx + 1), my = BatchedFft::good_size(2 * ny - 1);
     if (mx == mx_ && my == my_) return false;
     mx_ = mx;
@@ -198,8 +219,8 @@ void GridConvolution::kernel_spectrum_pair(const std::vector<double>& k1,
     forward(mx_, my_);
     for (int kx = 0; kx < mx_; ++kx)
         for (int ky = 0; ky < my_; ++ky) {
-            s1[ky + static_cast<size_t>(my_) * kx] = spec_re_[ky + sy_ * kx] * scale;
-            s2[ky + static_cast<size_t>(my_) * kx] = spec_im_[ky + sy_ * kx] * scale;
+            s1[ky + static_cast<size_t>(my_) * kx] = out_re_[ky + sy_ * kx] * scale;
+            s2[ky + static_cast<size_t>(my_) * kx] = out_im_[ky + sy_ * kx] * scale;
         }
 }
 
@@ -208,26 +229,37 @@ void GridConvolution::forward(int cols, int rows)
     // Along y: lines are the columns, element j at [j * rc + i] (rc >= cols:
     // the columns cols ... rc - 1 are zero).
     const size_t rc = line_stride(cols);
-    clear_padding(rows_re_.data(), rows_im_.data(), rows, rc, cols);
-    const size_t used = static_cast<size_t>(rows) * rc;
-    std::fill(rows_re_.begin() + used, rows_re_.begin() + static_cast<size_t>(my_) * rc, 0.0);
-    std::fill(rows_im_.begin() + used, rows_im_.begin() + static_cast<size_t>(my_) * rc, 0.0);
-    fft_y_.transform(rows_re_.data(), rows_im_.data(), static_cast<int>(rc), false, work_.data());
+    // The zeros around the field (rows_) and its columns (spec_) stay from the
+    // last call of the same size: nothing else writes there meanwhile.
+    const bool padded = cols == padded_cols_ && rows == padded_rows_;
+    padded_cols_ = cols;
+    padded_rows_ = rows;
+    if (!padded) {
+        clear_padding(rows_re_.data(), rows_im_.data(), rows, rc, cols);
+        const size_t used = static_cast<size_t>(rows) * rc;
+        std::fill(rows_re_.begin() + used, rows_re_.begin() + static_cast<size_t>(my_) * rc, 0.0);
+        std::fill(rows_im_.begin() + used, rows_im_.begin() + static_cast<size_t>(my_) * rc, 0.0);
+    }
+    fft_y_.transform(rows_re_.data(), rows_im_.data(), out_re_.data(), out_im_.data(),
+                     static_cast<int>(rc), false, work_.data());
     // Transpose [ky][i] -> [i][ky], zero columns i >= cols, then along x:
     // lines are the my rows ky (and sy_ - my zero ones), element i at
     // [i * sy_ + ky].
     for (int i = 0; i < cols; ++i) {
         for (int ky = 0; ky < my_; ++ky) {
-            spec_re_[static_cast<size_t>(i) * sy_ + ky] = rows_re_[ky * rc + i];
-            spec_im_[static_cast<size_t>(i) * sy_ + ky] = rows_im_[ky * rc + i];
+            spec_re_[static_cast<size_t>(i) * sy_ + ky] = out_re_[ky * rc + i];
+            spec_im_[static_cast<size_t>(i) * sy_ + ky] = out_im_[ky * rc + i];
         }
     }
-    clear_padding(spec_re_.data(), spec_im_.data(), cols, sy_, my_);
-    std::fill(spec_re_.begin() + static_cast<size_t>(cols) * sy_,
-              spec_re_.begin() + static_cast<size_t>(mx_) * sy_, 0.0);
-    std::fill(spec_im_.begin() + static_cast<size_t>(cols) * sy_,
-              spec_im_.begin() + static_cast<size_t>(mx_) * sy_, 0.0);
-    fft_x_.transform(spec_re_.data(), spec_im_.data(), static_cast<int>(sy_), false, work_.data());
+    if (!padded) {
+        clear_padding(spec_re_.data(), spec_im_.data(), cols, sy_, my_);
+        std::fill(spec_re_.begin() + static_cast<size_t>(cols) * sy_,
+                  spec_re_.begin() + static_cast<size_t>(mx_) * sy_, 0.0);
+        std::fill(spec_im_.begin() + static_cast<size_t>(cols) * sy_,
+                  spec_im_.begin() + static_cast<size_t>(mx_) * sy_, 0.0);
+    }
+    fft_x_.transform(spec_re_.data(), spec_im_.data(), out_re_.data(), out_im_.data(),
+                     static_cast<int>(sy_), false, work_.data());
 }
 
 // Zero the values lines ... stride - 1 of the first count elements (the
@@ -243,20 +275,23 @@ void GridConvolution::clear_padding(double* re, double* im, int count, size_t st
 
 void GridConvolution::inverse()
 {
-    fft_x_.transform(spec_re_.data(), spec_im_.data(), static_cast<int>(sy_), true, work_.data());
+    fft_x_.transform(back_re_.data(), back_im_.data(), out_re_.data(), out_im_.data(),
+                     static_cast<int>(sy_), true, work_.data());
     const size_t rc = line_stride(nx_);
     for (int ky = 0; ky < my_; ++ky)
         for (int i = 0; i < nx_; ++i) {
-            rows_re_[ky * rc + i] = spec_re_[static_cast<size_t>(i) * sy_ + ky];
-            rows_im_[ky * rc + i] = spec_im_[static_cast<size_t>(i) * sy_ + ky];
+            back_re_[ky * rc + i] = out_re_[static_cast<size_t>(i) * sy_ + ky];
+            back_im_[ky * rc + i] = out_im_[static_cast<size_t>(i) * sy_ + ky];
         }
-    clear_padding(rows_re_.data(), rows_im_.data(), my_, rc, nx_);
-    fft_y_.transform(rows_re_.data(), rows_im_.data(), static_cast<int>(rc), true, work_.data());
+    clear_padding(back_re_.data(), back_im_.data(), my_, rc, nx_);
+    fft_y_.transform(back_re_.data(), back_im_.data(), out_re_.data(), out_im_.data(),
+                     static_cast<int>(rc), true, work_.data());
 }
 
 void GridConvolution::real_product(const double* p, double* u,
                                    const std::vector<double>& spectrum)
 {
+    padded_cols_ = padded_rows_ = -1; // rows_ and spec_ in other layouts
     const int nc = (nx_ + 1) / 2;  // complex columns: x-columns 2c and 2c + 1
     const int h = my_ / 2;         // spectrum rows ky = 0 .. h (the rest by symmetry)
     const size_t hl = static_cast<size_t>(h) + 1;
@@ -352,43 +387,34 @@ void GridConvolution::apply_tangential(const Complex* z, Complex* s, bool steady
             rows_im_[j * rc + i] = z[i + static_cast<size_t>(nx_) * j].imag();
         }
     forward(nx_, ny_);
-    // Pairs (k, -k): s^(k) = f(kx) (alpha^(k) z^(k) + beta^(k) conj(z^(-k))),
-    // f the shift factor of column kx for the steady operator (1 otherwise).
-    // Each pair is visited once, from its lower-indexed member.
+    // s^(k) = f(kx) (alpha^(k) z^(k) + beta^(k) conj(z^(-k))), f the shift
+    // factor of column kx for the steady operator (1 otherwise). The spectrum
+    // z is read from out_ and s written to back_, every k on its own; z^(-k)
+    // is first copied in the order of k (mirror_), so that the loop runs
+    // forward and vectorises.
+    double* mirror_re = mirror_.data();
+    double* mirror_im = mirror_.data() + my_;
     for (int kx = 0; kx < mx_; ++kx) {
         const int kxm = kx == 0 ? 0 : mx_ - kx;
-        if (kxm < kx) continue;
-        const double far = steady ? shift_[kx].real() : 1.0, fai = steady ? shift_[kx].imag() : 0.0;
-        const double fbr = steady ? shift_[kxm].real() : 1.0, fbi = steady ? shift_[kxm].imag() : 0.0;
-        double* re_a = spec_re_.data() + sy_ * kx;
-        double* im_a = spec_im_.data() + sy_ * kx;
-        double* re_b = spec_re_.data() + sy_ * kxm;
-        double* im_b = spec_im_.data() + sy_ * kxm;
-        const double* al_a = alpha_.data() + static_cast<size_t>(my_) * kx;
-        const double* al_b = alpha_.data() + static_cast<size_t>(my_) * kxm;
-        const double* br_a = beta_re_.data() + static_cast<size_t>(my_) * kx;
-        const double* bi_a = beta_im_.data() + static_cast<size_t>(my_) * kx;
-        const double* br_b = beta_re_.data() + static_cast<size_t>(my_) * kxm;
-        const double* bi_b = beta_im_.data() + static_cast<size_t>(my_) * kxm;
-        for (int ky = 0; ky < my_; ++ky) {
-            const int kym = ky == 0 ? 0 : my_ - ky;
-            if (kxm == kx && kym < ky) continue;
-            const double zar = re_a[ky], zai = im_a[ky], zbr = re_b[kym], zbi = im_b[kym];
-            // alpha z + beta conj(z'), then times f
-            const double tar = al_a[ky] * zar + br_a[ky] * zbr + bi_a[ky] * zbi;
-            const double tai = al_a[ky] * zai + bi_a[ky] * zbr - br_a[ky] * zbi;
-            const double tbr = al_b[kym] * zbr + br_b[kym] * zar + bi_b[kym] * zai;
-            const double tbi = al_b[kym] * zbi + bi_b[kym] * zar - br_b[kym] * zai;
-            re_a[ky] = far * tar - fai * tai;
-            im_a[ky] = far * tai + fai * tar;
-            re_b[kym] = fbr * tbr - fbi * tbi;
-            im_b[kym] = fbr * tbi + fbi * tbr;
+        const double* mr = out_re_.data() + sy_ * kxm;
+        const double* mi = out_im_.data() + sy_ * kxm;
+        mirror_re[0] = mr[0];
+        mirror_im[0] = mi[0];
+        for (int ky = 1; ky < my_; ++ky) {
+            mirror_re[ky] = mr[my_ - ky];
+            mirror_im[ky] = mi[my_ - ky];
         }
+        multiply_column(my_, steady ? shift_[kx].real() : 1.0, steady ? shift_[kx].imag() : 0.0,
+                        alpha_.data() + static_cast<size_t>(my_) * kx,
+                        beta_re_.data() + static_cast<size_t>(my_) * kx,
+                        beta_im_.data() + static_cast<size_t>(my_) * kx,
+                        out_re_.data() + sy_ * kx, out_im_.data() + sy_ * kx, mirror_re,
+                        mirror_im, back_re_.data() + sy_ * kx, back_im_.data() + sy_ * kx);
     }
     inverse();
     for (int j = 0; j < ny_; ++j)
         for (int i = 0; i < nx_; ++i)
-            s[i + static_cast<size_t>(nx_) * j] = Complex(rows_re_[j * rc + i], rows_im_[j * rc + i]);
+            s[i + static_cast<size_t>(nx_) * j] = Complex(out_re_[j * rc + i], out_im_[j * rc + i]);
 }
 
 } // namespace creepwork

@@ -83,10 +83,12 @@ public:
     double cf33(int k, int l) const;
 
 private:
-    // rows_re_/rows_im_ ([j][i]: cols values per row, rows rows) -> spec_re_/
-    // spec_im_ ([kx][ky]), the 2D forward FFT of the zero-padded field.
+    // rows_re_/rows_im_ ([j][i]: cols values per row, rows rows) -> out_re_/
+    // out_im_ ([kx][ky]), the 2D forward FFT of the zero-padded field
+    // (spec_ and rows_ are overwritten).
     void forward(int cols, int rows);
-    // spec_ -> rows_ ([j][i], the first ny rows of nx values): inverse FFT.
+    // back_ -> out_ ([j][i], the first ny rows of nx values): inverse FFT
+    // (back_ is overwritten).
     void inverse();
     void set_shift();
     void compute_spectra(); // the kernels' spectra for the FFT size
@@ -116,7 +118,15 @@ private:
     // transforms' scratch; real and imaginary parts apart. A batch's lines
     // are padded (line_stride in the .cpp): rows [j * rc + i], spectrum
     // [kx * sy_ + ky].
-    std::vector<double> rows_re_, rows_im_, spec_re_, spec_im_, work_;
+    // out_ receives the out-of-place transforms (no copy back after an odd
+    // number of stages, batched_fft.hpp).
+    std::vector<double> rows_re_, rows_im_, spec_re_, spec_im_, out_re_, out_im_, work_;
+    // back_: the product's spectrum and the inverse transform's work, so
+    // that rows_ and spec_ keep the zeros around the field between products
+    // of one size (padded_cols_ x padded_rows_; -1 when unknown).
+    std::vector<double> back_re_, back_im_;
+    int padded_cols_ = -1, padded_rows_ = -1;
+    std::vector<double> mirror_; // one column of z^(-k), real then imaginary parts
 };
 
 } // namespace creepwork

@@ -37,6 +37,14 @@ double dot(const std::vector<Complex>& a, const std::vector<Complex>& b)
 
 // Newton's method: the loosest forcing term, and the line search.
 constexpr double kFirstForcing = 0.3;
+// The last linear solve's target, times tolerance / residual. From any start
+// half the tolerance (a margin: GMRES's 2-norm is not the residual's largest
+// element). From a warm start's prediction the tolerance itself: fewer
+// products (doc/dev/decisions.md); from any start it would move the cold
+// results, within the tolerance, by more than the tables against CONTACT
+// print.
+constexpr double kLastForcing = 0.5;
+constexpr double kWarmLastForcing = 1.0;
 constexpr double kArmijo = 1e-4;
 constexpr int kMaxHalvings = 8;
 constexpr int kMaxGmresPerStep = 200;
@@ -232,7 +240,8 @@ double SteadyRolling::residual_norm(const std::vector<Complex>& q, const std::ve
     return std::sqrt(sum);
 }
 
-SteadyRollingInfo SteadyRolling::solve(GridConvolution& conv, double tolerance, int max_steps)
+SteadyRollingInfo SteadyRolling::solve(GridConvolution& conv, double tolerance, int max_steps,
+                                       bool warm)
 {
     SteadyRollingInfo info;
     products_ = 0;
@@ -257,9 +266,12 @@ SteadyRollingInfo SteadyRolling::solve(GridConvolution& conv, double tolerance, 
         // itself (superlinear Newton; from a warm start at 3e-3 one step does
         // what Eisenstat-Walker's choice 2 did in two: 10 % fewer products
         // warm at N = 40 ... 100), at most 0.3, and no further than the
-        // tolerance needs.
-        double eta = std::min(kFirstForcing, rel);
-        eta = std::max(eta, 0.5 * tolerance / rel);
+        // tolerance needs. From a warm start's prediction by the residual to
+        // the power 1.5, to the tolerance itself (kWarm*: GMRES stops beyond
+        // its target, and a step that lands just above the tolerance needs
+        // a short one more).
+        double eta = std::min(kFirstForcing, warm ? rel * std::sqrt(rel) : rel);
+        eta = std::max(eta, (warm ? kWarmLastForcing : kLastForcing) * tolerance / rel);
         ++info.newton_steps;
         gmres(conv, f_, dq_, eta, kMaxGmresPerStep);
 

@@ -12,6 +12,7 @@
 #include "test_support.h"
 
 #include "exact/batched_fft.hpp"
+#include "exact/creepage_history.hpp"
 #include "exact/grid_convolution.hpp"
 #include "exact/influence.hpp"
 #include "exact/local_friction.hpp"
@@ -34,7 +35,12 @@ void fft_matches_dft(void**)
         for (double& v : im) v = U(gen);
         const std::vector<double> re0 = re, im0 = im;
         cw::BatchedFft f(n);
+        // Out of place: the same operations, so the same bits as in place
+        // (any number of stages), and the input untouched.
+        std::vector<double> out_re(n * L), out_im(n * L);
+        f.transform(re0.data(), im0.data(), out_re.data(), out_im.data(), L, false, work.data());
         f.transform(re.data(), im.data(), L, false, work.data());
+        assert_true(out_re == re && out_im == im);
         double err = 0.0;
         for (int l = 0; l < L; ++l)
             for (int k = 0; k < n; ++k) {
@@ -90,6 +96,30 @@ void coefficients_match_contact_form(void**)
     assert_close(conv.cf33(0, 0), (1.0 - 0.3) * 4.0 * std::asinh(1.0) / kPi, 1e-14, 0.0);
 }
 
+// The tangential product of conv on its nx x ny field against direct sums.
+void check_tangential(cw::GridConvolution& conv, const std::vector<C>& z, bool steady)
+{
+    const int nx = conv.nx(), n = nx * conv.ny();
+    std::vector<C> s(n);
+    conv.apply_tangential(z.data(), s.data(), steady);
+    for (int I = 0; I < n; ++I) {
+        double sx = 0.0, sy = 0.0;
+        for (int J = 0; J < n; ++J) {
+            const int k = I % nx - J % nx, l = I / nx - J / nx;
+            double a11 = conv.cf11(k, l), a12 = conv.cf12(k, l), a22 = conv.cf22(k, l);
+            if (steady) {
+                a11 -= conv.cf11(k + 1, l);
+                a12 -= conv.cf12(k + 1, l);
+                a22 -= conv.cf22(k + 1, l);
+            }
+            sx += a11 * z[J].real() + a12 * z[J].imag();
+            sy += a12 * z[J].real() + a22 * z[J].imag();
+        }
+        assert_close(s[I].real(), sx, 0.0, 1e-13);
+        assert_close(s[I].imag(), sy, 0.0, 1e-13);
+    }
+}
+
 void products_match_direct_sums(void**)
 {
     std::mt19937 gen(11);
@@ -100,29 +130,13 @@ void products_match_direct_sums(void**)
         cw::GridConvolution conv(nx, ny);
         conv.set_coefficients(rho, nu);
         const int n = nx * ny;
-        std::vector<C> z(n), s(n);
+        std::vector<C> z(n);
         std::vector<double> p(n), u(n), back(n);
         for (C& v : z) v = C(U(gen), U(gen));
         for (double& v : p) v = U(gen);
-        for (int steady = 0; steady < 2; ++steady) {
-            conv.apply_tangential(z.data(), s.data(), steady);
-            for (int I = 0; I < n; ++I) {
-                double sx = 0.0, sy = 0.0;
-                for (int J = 0; J < n; ++J) {
-                    const int k = I % nx - J % nx, l = I / nx - J / nx;
-                    double a11 = conv.cf11(k, l), a12 = conv.cf12(k, l), a22 = conv.cf22(k, l);
-                    if (steady) {
-                        a11 -= conv.cf11(k + 1, l);
-                        a12 -= conv.cf12(k + 1, l);
-                        a22 -= conv.cf22(k + 1, l);
-                    }
-                    sx += a11 * z[J].real() + a12 * z[J].imag();
-                    sy += a12 * z[J].real() + a22 * z[J].imag();
-                }
-                assert_close(s[I].real(), sx, 0.0, 1e-13);
-                assert_close(s[I].imag(), sy, 0.0, 1e-13);
-            }
-        }
+        for (int steady = 0; steady < 2; ++steady) check_tangential(conv, z, steady);
+        // Again: the zero padding kept from the last product of this size.
+        check_tangential(conv, z, true);
         conv.apply_normal(p.data(), u.data());
         for (int I = 0; I < n; ++I) {
             double v = 0.0;
@@ -133,6 +147,16 @@ void products_match_direct_sums(void**)
         // as the box it is close to the inverse, and it is finite.
         conv.apply_normal_inverse(u.data(), back.data());
         for (double v : back) assert_true(std::isfinite(v));
+        // After the normal products (other layouts of the same buffers), and
+        // on a smaller field of the same convolution with other values.
+        check_tangential(conv, z, true);
+        if (nx > 2) {
+            conv.set_size(nx - 2, ny - 1);
+            std::vector<C> zs((nx - 2) * (ny - 1));
+            for (C& v : zs) v = C(U(gen), U(gen));
+            check_tangential(conv, zs, true);
+            check_tangential(conv, zs, false);
+        }
     }
 }
 
@@ -172,6 +196,49 @@ void local_friction_solves_coulomb(void**)
 
 } // namespace
 
+// The warm start's prediction on a traction cubic in the step t along a
+// creepage path c(t) = (t, t^2, 0) (the secant step's weights are then
+// exactly the quadratic extrapolation's: 3, -3, 1). Its error is that of
+// quadratic extrapolation of a cubic, q(t + 1) - 3 q(t) + 3 q(t - 1) -
+// q(t - 2) = 6 d for q = a + b t + c t^2 + d t^3; with the last error added
+// (the four newest solutions in the same states) the prediction is exact.
+void history_predicts_a_drift(void**)
+{
+    const C a(0.3, -0.1), b(0.02, 0.01), c2(-0.004, 0.003), d(5e-4, -2e-4);
+    auto q_of = [&](double t) { return a + t * (b + t * (c2 + t * d)); };
+    auto c_of = [](double t, double* c) {
+        c[0] = t;
+        c[1] = t * t;
+        c[2] = 0.0;
+    };
+    const double key[cw::CreepageHistory::kKey] = {1.0, 0.28, 1.15, 1.0};
+    for (int change : {-1, 5}) { // the step at which the element changes state (-1: never)
+        cw::CreepageHistory h;
+        h.resize(1);
+        std::vector<C> q(1);
+        signed char state = 2;
+        for (int t = 0; t <= 12; ++t) {
+            double c[3];
+            c_of(t, c);
+            if (t > 0) {
+                assert_true(h.predict(key, c, q));
+                // Corrected from step 4 on (the solution of step `change` is
+                // predicted from the old states), and again four solutions
+                // after the change; the secant step alone between (three
+                // solutions from step 3 on).
+                const bool corrected = t >= 4 && (change < 0 || t <= change || t >= change + 4);
+                if (corrected)
+                    assert_close(std::abs(q[0] - q_of(t)), 0.0, 0.0, 1e-13);
+                else if (t >= 3)
+                    assert_close(std::abs(q[0] - q_of(t)), std::abs(6.0 * d), 1e-9, 0.0);
+            }
+            if (t == change) state = 1;
+            q[0] = q_of(t);
+            h.remember(key, c, q, 1.0, &state);
+        }
+    }
+}
+
 int main()
 {
     const struct CMUnitTest tests[] = {
@@ -179,6 +246,7 @@ int main()
         cmocka_unit_test(coefficients_match_contact_form),
         cmocka_unit_test(products_match_direct_sums),
         cmocka_unit_test(local_friction_solves_coulomb),
+        cmocka_unit_test(history_predicts_a_drift),
     };
     return cmocka_run_group_tests(tests, nullptr, nullptr);
 }
