@@ -5,7 +5,8 @@
 // One solve:
 //  1. the normal problem on the gap, with the normal force or the approach
 //     prescribed, by the method normal_method names: the semi-Hertzian
-//     method (nonhertz/semi_hertz.hpp; the fast path, tens of microseconds),
+//     method (nonhertz/semi_hertz.hpp; the fast path, its cost measured in
+//     doc/validation/non-hertzian.md),
 //     or the exact half-space problem (exact/normal_problem.hpp, started from
 //     the semi-Hertzian pressure; as the exact model's, so that FASTSIM's
 //     tangential part can be judged on the exact pressure). normal_method's
