@@ -7,6 +7,7 @@
 #include "calibrated/moment_flexibility.hpp"
 #include "contact/contact_input.hpp"
 #include "contact/error.hpp"
+#include "contact/jacobian_load.hpp"
 #include "march/march_setup.hpp"
 
 namespace creepwork {
@@ -165,9 +166,7 @@ SolveTotals CalibratedModel::solve_jacobian(const ContactInput& input, SolveMode
 {
     validate_calibrated_input(input);
     if (input.normal_force == 0.0 && input.mu > 0.0)
-        throw Error(ErrorKind::invalid_input,
-                    "normal_force = 0: the forces are not differentiable in N there (they "
-                    "grow as mu N from N = 0); the Jacobian needs normal_force > 0");
+        throw zero_load_jacobian_error();
     if (input.mu == 0.0) { // no traction whatever the inputs: all derivatives 0
         jacobian = Jacobian{};
         return solve(input, mode);

@@ -11,9 +11,8 @@
 // mu p0 / G, so the forces are homogeneous of degree 1 in (N, xi_x, xi_y,
 // phi) and dF/dN = (F - xi_x dF/dxi_x - xi_y dF/dxi_y - phi dF/dphi) / N
 // (Euler), exactly for the discrete system.
-#include <string>
 
-#include "contact/error.hpp"
+#include "contact/jacobian_load.hpp"
 #include "exact/exact_model.hpp"
 
 namespace creepwork {
@@ -34,9 +33,7 @@ SolveTotals ExactModel::solve_jacobian(const ContactInput& in, SolveMode mode, J
         return t;
     }
     if (in.normal_force == 0.0)
-        throw Error(ErrorKind::invalid_input,
-                    "normal_force = 0: the forces are not differentiable in N there (they "
-                    "grow as mu N from N = 0); the Jacobian needs normal_force > 0");
+        throw zero_load_jacobian_error();
 
     Level& fine = *levels_[0];
     const Setup& s = setup_;

@@ -17,10 +17,8 @@
 // solves (I - G'(q)) dq = G_g dg (SteadyRolling::tangent_bound). The
 // contact set and the box are those of the solution: the derivative at a
 // load where no element enters or leaves contact.
-#include <string>
 
-#include "contact/error.hpp"
-#include "contact/number_text.hpp"
+#include "contact/jacobian_load.hpp"
 #include "exact/gap_model.hpp"
 #include "nonhertz/pressure_by_load.hpp"
 
@@ -41,14 +39,9 @@ SolveTotals GapModel::solve_jacobian(const ContactInput& in, SolveMode mode, Jac
         return t;
     }
     if (in.normal_load == NormalLoad::force && in.normal_force == 0.0)
-        throw Error(ErrorKind::invalid_input,
-                    "normal_force = 0: the forces are not differentiable in N there (they "
-                    "grow as mu N from N = 0); the Jacobian needs normal_force > 0");
+        throw zero_load_jacobian_error();
     if (!setup_.loaded)
-        throw Error(ErrorKind::invalid_input,
-                    "approach = " + number_text(in.approach) +
-                        " m gives no contact: the forces are not differentiable in N there; "
-                        "the Jacobian needs a loaded contact");
+        throw unloaded_approach_jacobian_error(in.approach);
 
     Level& fine = *levels_[0];
     const Setup& s = setup_;

@@ -1,7 +1,7 @@
 #include "fastsim/fastsim_jacobian.hpp"
 
-#include "contact/error.hpp"
 #include "contact/flexibility_blending.hpp"
+#include "contact/jacobian_load.hpp"
 
 namespace creepwork {
 
@@ -11,9 +11,7 @@ Jacobian fastsim_jacobian(const ContactInput& in, const ModelSetup& s, const Con
     Jacobian J;
     if (in.mu == 0.0) return J; // no traction whatever the inputs: all derivatives 0
     if (in.normal_force == 0.0)
-        throw Error(ErrorKind::invalid_input,
-                    "normal_force = 0: the forces are not differentiable in N there (they "
-                    "grow as mu N from N = 0); the Jacobian needs normal_force > 0");
+        throw zero_load_jacobian_error();
 
     // Forces over the traction scale T in the rolling frame, Phi = F / T, and
     // their derivatives by the march parameters k = ux, uy, kappa.

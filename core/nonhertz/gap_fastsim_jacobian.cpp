@@ -5,10 +5,8 @@
 // the force or the approach is prescribed. Held fixed: the contact set, the
 // patches and so their flexibilities and spin centres (they change only
 // where an element enters or leaves contact).
-#include <string>
 
-#include "contact/error.hpp"
-#include "contact/number_text.hpp"
+#include "contact/jacobian_load.hpp"
 #include "nonhertz/gap_fastsim_model.hpp"
 #include "nonhertz/gap_march_tangent.hpp"
 #include "nonhertz/pressure_by_load.hpp"
@@ -24,34 +22,15 @@ SolveTotals GapFastsimModel::solve_jacobian(const ContactInput& in, SolveMode mo
         return t;
     }
     if (in.normal_load == NormalLoad::force && in.normal_force == 0.0)
-        throw Error(ErrorKind::invalid_input,
-                    "normal_force = 0: the forces are not differentiable in N there (they "
-                    "grow as mu N from N = 0); the Jacobian needs normal_force > 0");
+        throw zero_load_jacobian_error();
     if (!(t.n_contact > 0))
-        throw Error(ErrorKind::invalid_input,
-                    "approach = " + number_text(in.approach) +
-                        " m gives no contact: the forces are not differentiable in N there; "
-                        "the Jacobian needs a loaded contact");
+        throw unloaded_approach_jacobian_error(in.approach);
     pressure_by_load(in.normal_method, *normal_, *conv_, semi_hertz_, pressure_.data(),
                      static_cast<size_t>(nx_) * ny_, grid_.dx, grid_.dy, dp_dN_.data());
 
     // The march's input as solve() gives it (rolling frame).
     const double d = direction_;
-    GapMarchInput m;
-    m.nx = nx_;
-    m.ny = ny_;
-    m.x0 = direction_ > 0 ? grid_.x0 : -(grid_.x0 + (nx_ - 1) * grid_.dx);
-    m.y0 = grid_.y0;
-    m.dx = grid_.dx;
-    m.dy = grid_.dy;
-    m.pressure = pressure_.data();
-    m.patch = patch_of_.data();
-    m.patches = march_patches_.data();
-    m.mu = in.mu;
-    m.xi = d * in.xi_x;
-    m.eta = in.xi_y;
-    m.phi = d * in.phi;
-    m.spin_offset = in.spin_offset >= 0.0 ? in.spin_offset : 0.0;
+    const GapMarchInput m = march_input(in);
     double dF[3][4];
     gap_march_tangent(m, dp_dN_.data(), dF);
 
