@@ -294,10 +294,12 @@ SteadyRollingInfo SteadyRolling::solve(GridConvolution& conv, double tolerance, 
     return info;
 }
 
-void SteadyRolling::rigid_slip_sweep(const Complex* dw, Complex* out) const
+void SteadyRolling::source_sweep(const Complex* dw, const double* dg, Complex* out) const
 {
     // The sweep of sweep() with q held: c = w + (B q - own diagonal) + b1
-    // (change ahead), so dc = dw + b1 (dG ahead).
+    // (change ahead), so dc = dw + b1 (dG ahead); a bound change moves a
+    // slipping element's own traction by dq/dg = (G(q)_k - J c) / g (the
+    // local problem is homogeneous of degree 1 in (c, g)).
     for (int j = 0; j < ny_; ++j) {
         Complex ahead(0.0, 0.0);
         for (int i = nx_ - 1; i >= 0; --i) {
@@ -307,42 +309,14 @@ void SteadyRolling::rigid_slip_sweep(const Complex* dw, Complex* out) const
                 ahead = 0.0;
                 continue;
             }
-            const double cx = dw[k].real() + b1x_ * ahead.real();
-            const double cy = dw[k].imag() + b1y_ * ahead.imag();
-            const LocalJacobian& J = jac_[k];
-            const Complex d(J.j11 * cx + J.j12 * cy, J.j21 * cx + J.j22 * cy);
-            out[k] = d;
-            ahead = d;
-        }
-    }
-}
-
-const std::vector<SteadyRolling::Complex>& SteadyRolling::tangent(GridConvolution& conv,
-                                                                  const std::vector<Complex>& dw,
-                                                                  double tolerance,
-                                                                  int max_iterations)
-{
-    rigid_slip_sweep(dw.data(), gt_.data()); // gt_, qt_, ft_: scratch after solve()
-    return solve_tangent(conv, tolerance, max_iterations);
-}
-
-void SteadyRolling::bound_sweep(const double* dg, Complex* out) const
-{
-    // sweep() with q and w held: dc = b1 (dG ahead), and the element's own
-    // bound change through dq/dg = (G(q)_k - J c) / g (homogeneity).
-    for (int j = 0; j < ny_; ++j) {
-        Complex ahead(0.0, 0.0);
-        for (int i = nx_ - 1; i >= 0; --i) {
-            const int k = i + nx_ * j;
-            if (!(g_[k] > 0.0)) {
-                out[k] = 0.0;
-                ahead = 0.0;
-                continue;
+            double cx = b1x_ * ahead.real(), cy = b1y_ * ahead.imag();
+            if (dw) {
+                cx = dw[k].real() + cx;
+                cy = dw[k].imag() + cy;
             }
-            const double cx = b1x_ * ahead.real(), cy = b1y_ * ahead.imag();
             const LocalJacobian& J = jac_[k];
             Complex d(J.j11 * cx + J.j12 * cy, J.j21 * cx + J.j22 * cy);
-            if (state_[k] == 2 && dg[k] != 0.0) {
+            if (dg && state_[k] == 2 && dg[k] != 0.0) {
                 // c as sweep() built it: s = w + B q holds the element's own
                 // diagonal b0 q_k, the element ahead's change is G(q) - q.
                 const Complex up = i + 1 < nx_ ? gq_[k + 1] - q_[k + 1] : Complex(0.0, 0.0);
@@ -357,10 +331,19 @@ void SteadyRolling::bound_sweep(const double* dg, Complex* out) const
     }
 }
 
+const std::vector<SteadyRolling::Complex>& SteadyRolling::tangent(GridConvolution& conv,
+                                                                  const std::vector<Complex>& dw,
+                                                                  double tolerance,
+                                                                  int max_iterations)
+{
+    source_sweep(dw.data(), nullptr, gt_.data()); // gt_, qt_, ft_: scratch after solve()
+    return solve_tangent(conv, tolerance, max_iterations);
+}
+
 const std::vector<SteadyRolling::Complex>& SteadyRolling::tangent_bound(
     GridConvolution& conv, const std::vector<double>& dg, double tolerance, int max_iterations)
 {
-    bound_sweep(dg.data(), gt_.data());
+    source_sweep(nullptr, dg.data(), gt_.data());
     return solve_tangent(conv, tolerance, max_iterations);
 }
 

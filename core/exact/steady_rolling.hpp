@@ -113,15 +113,14 @@ private:
     // Solves (I - G') dq = rhs (in gt_) into qt_ and checks the true residual.
     const std::vector<Complex>& solve_tangent(GridConvolution& conv, double tolerance,
                                               int max_iterations);
-    // out = G_g dg at the q of the last sweep. No FFT product.
-    void bound_sweep(const double* dg, Complex* out) const;
     // out = G(q); also s_, state_, jac_ at q. One FFT product.
     void sweep(GridConvolution& conv, const std::vector<Complex>& q, std::vector<Complex>& out);
     // out = G'(q) v at the q of the last sweep. One FFT product.
     void linear_sweep(GridConvolution& conv, const Complex* v, Complex* out);
-    // out = G_w dw at the q of the last sweep (the sweep's response to a
-    // change of the rigid slip alone). No FFT product.
-    void rigid_slip_sweep(const Complex* dw, Complex* out) const;
+    // out = G_w dw + G_g dg at the q of the last sweep (the sweep's response
+    // to a change of the rigid slip and of the bound; either may be null).
+    // No FFT product.
+    void source_sweep(const Complex* dw, const double* dg, Complex* out) const;
     // Solves (I - G') x = b to relative residual eta; returns the iterations.
     int gmres(GridConvolution& conv, const std::vector<Complex>& b, std::vector<Complex>& x,
               double eta, int max_iterations);

@@ -206,21 +206,7 @@ SolveTotals GapFastsimModel::solve(const ContactInput& in, SolveMode mode)
     }
 
     const double d = direction_;
-    GapMarchInput m;
-    m.nx = nx_;
-    m.ny = ny_;
-    m.x0 = direction_ > 0 ? grid_.x0 : -(grid_.x0 + (nx_ - 1) * grid_.dx);
-    m.y0 = grid_.y0;
-    m.dx = grid_.dx;
-    m.dy = grid_.dy;
-    m.pressure = pressure_.data();
-    m.patch = patch_of_.data();
-    m.patches = march_patches_.data();
-    m.mu = in.mu;
-    m.xi = d * in.xi_x;
-    m.eta = in.xi_y;
-    m.phi = d * in.phi;
-    m.spin_offset = in.spin_offset >= 0.0 ? in.spin_offset : 0.0;
+    const GapMarchInput m = march_input(in);
     march_totals_.assign(labels_.count(), GapMarchTotals{});
     GapMarchOutput out;
     out.p = p_.data();
@@ -284,6 +270,27 @@ SolveTotals GapFastsimModel::solve(const ContactInput& in, SolveMode mode)
                         t);
     }
     return t;
+}
+
+GapMarchInput GapFastsimModel::march_input(const ContactInput& in) const
+{
+    const double d = direction_;
+    GapMarchInput m;
+    m.nx = nx_;
+    m.ny = ny_;
+    m.x0 = direction_ > 0 ? grid_.x0 : -(grid_.x0 + (nx_ - 1) * grid_.dx);
+    m.y0 = grid_.y0;
+    m.dx = grid_.dx;
+    m.dy = grid_.dy;
+    m.pressure = pressure_.data();
+    m.patch = patch_of_.data();
+    m.patches = march_patches_.data();
+    m.mu = in.mu;
+    m.xi = d * in.xi_x;
+    m.eta = in.xi_y;
+    m.phi = d * in.phi;
+    m.spin_offset = in.spin_offset >= 0.0 ? in.spin_offset : 0.0;
+    return m;
 }
 
 } // namespace creepwork

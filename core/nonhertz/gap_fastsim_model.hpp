@@ -86,6 +86,8 @@ private:
     void validate(const ContactInput& in) const;
     void solve_normal(const ContactInput& in);
     void set_patches(const ContactInput& in);
+    // The march's input for the last solve's pressure and patches (rolling frame).
+    GapMarchInput march_input(const ContactInput& in) const;
     int caller_index(int i) const { return direction_ > 0 ? i : nx_ - 1 - i; }
 
     GridSpec grid_;
