@@ -312,21 +312,22 @@ GAP_MUTANTS = [
          file="core/exact/gap_model.cpp",
          old="            P.Fn += pressure_[k] * area;",
          new="            P.Fn += pressure_[k];", tests=GAP),
-    dict(id="patches-no-up-neighbour", what="patch labels ignore the neighbour at j + 1",
+    dict(id="patches-no-up-neighbour", what="patch labels never join runs of neighbouring rows",
          file="core/nonhertz/patches.cpp",
-         old="                                 j > 0 ? k - nx_ : -1, j + 1 < ny_ ? k + nx_ : -1};",
-         new="                                 j > 0 ? k - nx_ : -1, -1};", tests=GAP),
+         old="                if (ra != rb) parent_[std::max(ra, rb)] = std::min(ra, rb);",
+         new="                if (ra != rb && false) parent_[std::max(ra, rb)] = std::min(ra, rb);",
+         tests=GAP),
     dict(id="semi-hertz-pressure", what="the semi-Hertzian peak pressure grows with the depth, not its root",
          file="core/nonhertz/semi_hertz.cpp",
-         old="        const double p0 = R.p_factor * std::sqrt(local);",
-         new="        const double p0 = R.p_factor * local;", tests=GAP),
+         old="        p[i] = scale * std::sqrt(std::max(local - c * m * m, 0.0));",
+         new="        p[i] = scale * std::max(local - c * m * m, 0.0);", tests=GAP),
     # FASTSIM on a gap grid: caught by the exact model on the 26 shapes
     # (test_nonhertz_fastsim), the elliptic FASTSIM on a shifted Hertzian gap
     # and the hand-computed adhesion limit per patch (test_nonhertz_capi).
     dict(id="gap-fastsim-spin-origin", what="FASTSIM on a gap takes the spin about the grid's origin",
          file="core/nonhertz/gap_march.cpp",
-         old="                ox = (in.xi - in.phi * M.yc) / M.L1 - in.phi * (y - M.yc) / M.L3;",
-         new="                ox = in.xi / M.L1 - in.phi * y / M.L3;", tests=GAP,
+         old="        r.ox = (in.xi - in.phi * M.yc) / M.L1 - in.phi * (r.y - M.yc) / M.L3;",
+         new="        r.ox = in.xi / M.L1 - in.phi * r.y / M.L3;", tests=GAP,
          require=["test_nonhertz_fastsim"]),
     dict(id="gap-fastsim-patch-ellipse", what="the patch ellipse's a is the longest row, not half of it",
          file="core/nonhertz/gap_fastsim_model.cpp",
@@ -505,9 +506,20 @@ def main():
     ap.add_argument("--keep", action="store_true", help="keep the temporary copy")
     ap.add_argument("--all-tests", action="store_true",
                     help="run every CTest test per mutant (slow; shows every catcher)")
+    ap.add_argument("--check-targets", action="store_true",
+                    help="only check that every mutant's edit applies to exactly one line "
+                         "(no build; CTest runs this so that a refactor cannot orphan a mutant)")
     args = ap.parse_args()
     root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
     mutants = [m for m in MUTANTS if not args.only or m["id"] in args.only]
+    if args.check_targets:
+        stale = [m["id"] for m in mutants
+                 if open(os.path.join(root, m["file"])).read().count(m["old"]) != 1
+                 or "\n" in m["old"] or "\n" in m["new"] or m["old"] == m["new"]]
+        for i in stale:
+            print(f"mutant {i}: its edit does not apply to exactly one line", file=sys.stderr)
+        print(f"{len(mutants) - len(stale)} of {len(mutants)} mutants apply")
+        sys.exit(1 if stale else 0)
 
     tmp = tempfile.mkdtemp(prefix="creepwork-mutation-")
     src, bld = os.path.join(tmp, "src"), os.path.join(tmp, "build")
