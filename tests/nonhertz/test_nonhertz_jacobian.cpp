@@ -19,6 +19,8 @@
 //    F and N in the approach), for the exact normal problem and for the
 //    semi-Hertzian method, and rolling towards -x;
 //  - normal_force = 0 is an error naming it; mu = 0 gives zeros.
+// `test_nonhertz_jacobian --markdown` prints the accuracy table of
+// doc/validation/jacobians.md (scripts/doc-tables.sh).
 #include "gap_shapes.hpp"
 #include "gap_test_support.hpp"
 #include "test_support.h"
@@ -27,6 +29,8 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
+#include <stdexcept>
 #include <string>
 
 #include "contact/error.hpp"
@@ -60,9 +64,12 @@ const gapshapes::Shape& shape(const std::string& id)
 }
 
 // The exact model on a 24 x 24 uniform grid (S = 1.2) and on that grid's
-// Hertzian gap, both at tolerance 1e-12 (the Jacobians' linear solves too).
-void hertzian_gap_matches_the_elliptic_jacobian(void**)
+// Hertzian gap, both at tolerance 1e-12 (the Jacobians' linear solves too):
+// the worst difference of the creepage columns over the row's scale, per
+// rolling direction (+1, -1).
+std::array<double, 2> hertzian_gap_against_the_elliptic_jacobian()
 {
+    std::array<double, 2> worst_of{};
     const int n = 24;
     const double S = 1.2;
     cw::ContactInput e = cwtest::steel_contact(1.4);
@@ -98,7 +105,8 @@ void hertzian_gap_matches_the_elliptic_jacobian(void**)
         in.gap_len = h.size();
         cw::Solver gap(g);
         const cw::SolveTotals tg = gap.solve_jacobian(in, cw::SolveMode::forces_only, Jg);
-        assert_true(tg.n_slip > 0 && tg.n_adhesion > 0 && tg.n_slip == te.n_slip);
+        if (!(tg.n_slip > 0 && tg.n_adhesion > 0 && tg.n_slip == te.n_slip))
+            throw std::runtime_error("the Hertzian gap is not in the elliptic model's partial slip");
         const double c = std::sqrt(e.a * e.b), xs = 1e-3;
         const double scale[4] = {xs, xs, xs / c, e.normal_force};
         double worst = 0.0;
@@ -108,11 +116,20 @@ void hertzian_gap_matches_the_elliptic_jacobian(void**)
             for (int k = 0; k < 3; ++k)
                 worst = std::max(worst, std::fabs(Jg.d[r][k] - Je.d[r][k]) * scale[k] / row);
         }
+        worst_of[direction > 0 ? 0 : 1] = worst;
+    }
+    return worst_of;
+}
+
+void hertzian_gap_matches_the_elliptic_jacobian(void**)
+{
+    const std::array<double, 2> worst = hertzian_gap_against_the_elliptic_jacobian();
+    for (int d = 0; d < 2; ++d) {
         print_message("Hertzian gap vs elliptic Jacobian, direction %+d: worst %.2g of the row\n",
-                      direction, worst);
+                      d == 0 ? 1 : -1, worst[d]);
         // Both solve one discrete problem to 1e-12 and differentiate it by
         // linear solves to 1e-12.
-        assert_true(worst < 1e-8);
+        assert_true(worst[d] < 1e-8);
     }
 }
 
@@ -132,12 +149,16 @@ std::array<double, 5> totals(cw::Solver& s, const cw::ContactInput& in, int& sli
     return {t.Fx, t.Fy, t.Mz, t.W_macro, t.normal_force};
 }
 
+// Prints the step study's lines (the test's log), or not (the table).
+bool g_verbose = true;
+
 // The step study: the best error (over steps that change no state or
 // contact element) of J against central differences.
 double step_study(const Case& c, cw::Solver& s, const cw::ContactInput& in, const cw::Jacobian& J,
                   const std::array<double, 4>& scale, int slips, int contact)
 {
-    printf("  %-16s %-8s %-10s %-8s", c.id, c.model == cw::ModelKind::exact ? "exact" : "fastsim",
+    if (g_verbose)
+        printf("  %-16s %-8s %-10s %-8s", c.id, c.model == cw::ModelKind::exact ? "exact" : "fastsim",
            c.normal == cw::NormalMethod::exact ? "exact" : "semi-Hertz",
            c.approach ? "approach" : "force");
     double best = 1e300;
@@ -166,73 +187,112 @@ double step_study(const Case& c, cw::Solver& s, const cw::ContactInput& in, cons
                 worst = std::max(worst, std::fabs(diff - J.d[r][col]) * scale[col] / row);
             }
         }
-        printf(" %8.1e%s", worst, changed ? "*" : " ");
+        if (g_verbose) printf(" %8.1e%s", worst, changed ? "*" : " ");
         if (!changed) best = std::min(best, worst);
     }
-    printf("  best %.1e\n", best);
+    if (g_verbose) printf("  best %.1e\n", best);
     return best;
 }
+
+const Case kCases[] = {
+    {"N03_three_lobes", cw::ModelKind::exact, cw::NormalMethod::exact, false},
+    {"N04_crescent", cw::ModelKind::exact, cw::NormalMethod::exact, false},
+    {"N06_flange_root", cw::ModelKind::exact, cw::NormalMethod::exact, false},
+    {"N06_flange_root", cw::ModelKind::exact, cw::NormalMethod::exact, true},
+    {"N04_crescent", cw::ModelKind::exact, cw::NormalMethod::semi_hertz, false},
+    {"N03_three_lobes", cw::ModelKind::fastsim, cw::NormalMethod::exact, false},
+    {"N04_crescent", cw::ModelKind::fastsim, cw::NormalMethod::exact, false},
+    {"N06_flange_root", cw::ModelKind::fastsim, cw::NormalMethod::exact, false},
+    {"N06_flange_root", cw::ModelKind::fastsim, cw::NormalMethod::exact, true},
+    {"N03_three_lobes", cw::ModelKind::fastsim, cw::NormalMethod::semi_hertz, false},
+    {"N04_crescent", cw::ModelKind::fastsim, cw::NormalMethod::semi_hertz, false},
+    {"N06_flange_root", cw::ModelKind::fastsim, cw::NormalMethod::semi_hertz, true},
+    {"N09_rolling_back", cw::ModelKind::exact, cw::NormalMethod::exact, false},
+    {"N09_rolling_back", cw::ModelKind::fastsim, cw::NormalMethod::semi_hertz, false},
+};
+
+// One case's best agreement with central differences (the step study).
+double best_agreement(const Case& c)
+{
+    const gapshapes::Shape& sh = shape(c.id);
+    cw::Solver s(grid_of(sh));
+    cw::ContactInput in;
+    in.model = c.model;
+    in.normal_method = c.normal;
+    in.gap = sh.h.data();
+    in.gap_len = sh.h.size();
+    in.normal_force = sh.normal_force;
+    in.G = sh.G;
+    in.nu = sh.nu;
+    in.mu = sh.mu;
+    in.rolling_direction = sh.rolling_direction;
+    in.tolerance = c.model == cw::ModelKind::exact ? 1e-12 : 0.0;
+    in.warm_start = false;
+    // Creepages of about half saturation (partial slip): xi_sat =
+    // 3 mu N / (4.2 G c^2), c the radius of the contact's area.
+    const cw::SolveTotals t0 = s.solve(in, cw::SolveMode::forces_only);
+    const double c_r = std::sqrt(t0.n_contact * sh.dx * sh.dy / gapshapes::kPi);
+    const double xs = 3 * sh.mu * sh.normal_force / (4.2 * sh.G * c_r * c_r);
+    const double th = sh.theta_deg * gapshapes::kPi / 180;
+    // (The flange root's small lobe saturates first: a lower level.)
+    const double level = std::string(c.id) == "N06_flange_root" ? 0.1 : 0.5;
+    in.xi_x = level * xs * std::cos(th);
+    in.xi_y = level * xs * std::sin(th);
+    in.phi = 0.6 * level * xs / c_r;
+    if (c.approach) {
+        in.normal_load = cw::NormalLoad::approach;
+        in.approach = t0.approach;
+    }
+    cw::Jacobian J;
+    const cw::SolveTotals t = s.solve_jacobian(in, cw::SolveMode::forces_only, J);
+    if (!(t.n_slip > 0 && t.n_adhesion > 0))
+        throw std::runtime_error(std::string(c.id) + " is not in partial slip");
+    const std::array<double, 4> scale = {xs, xs, xs / c_r, sh.normal_force};
+    return step_study(c, s, in, J, scale, t.n_slip, t.n_contact);
+}
+
+// The solves' tolerances (1e-12 tangential, 1e-10 normal, 1e-13
+// semi-Hertzian force) over the step bound what a difference resolves:
+// measured 4e-11 ... 8e-10 at the best step, held to 1e-8.
+constexpr double kHeld = 1e-8;
 
 void against_central_differences(void**)
 {
     printf("  shape            model    normal     load      error at step/scale 1e-4 ... 1e-7"
            " (* = an element changed state or contact)\n");
-    const Case cases[] = {
-        {"N03_three_lobes", cw::ModelKind::exact, cw::NormalMethod::exact, false},
-        {"N04_crescent", cw::ModelKind::exact, cw::NormalMethod::exact, false},
-        {"N06_flange_root", cw::ModelKind::exact, cw::NormalMethod::exact, false},
-        {"N06_flange_root", cw::ModelKind::exact, cw::NormalMethod::exact, true},
-        {"N04_crescent", cw::ModelKind::exact, cw::NormalMethod::semi_hertz, false},
-        {"N03_three_lobes", cw::ModelKind::fastsim, cw::NormalMethod::exact, false},
-        {"N04_crescent", cw::ModelKind::fastsim, cw::NormalMethod::exact, false},
-        {"N06_flange_root", cw::ModelKind::fastsim, cw::NormalMethod::exact, false},
-        {"N06_flange_root", cw::ModelKind::fastsim, cw::NormalMethod::exact, true},
-        {"N03_three_lobes", cw::ModelKind::fastsim, cw::NormalMethod::semi_hertz, false},
-        {"N04_crescent", cw::ModelKind::fastsim, cw::NormalMethod::semi_hertz, false},
-        {"N06_flange_root", cw::ModelKind::fastsim, cw::NormalMethod::semi_hertz, true},
-        {"N09_rolling_back", cw::ModelKind::exact, cw::NormalMethod::exact, false},
-        {"N09_rolling_back", cw::ModelKind::fastsim, cw::NormalMethod::semi_hertz, false},
-    };
-    for (const Case& c : cases) {
-        const gapshapes::Shape& sh = shape(c.id);
-        cw::Solver s(grid_of(sh));
-        cw::ContactInput in;
-        in.model = c.model;
-        in.normal_method = c.normal;
-        in.gap = sh.h.data();
-        in.gap_len = sh.h.size();
-        in.normal_force = sh.normal_force;
-        in.G = sh.G;
-        in.nu = sh.nu;
-        in.mu = sh.mu;
-        in.rolling_direction = sh.rolling_direction;
-        in.tolerance = c.model == cw::ModelKind::exact ? 1e-12 : 0.0;
-        in.warm_start = false;
-        // Creepages of about half saturation (partial slip): xi_sat =
-        // 3 mu N / (4.2 G c^2), c the radius of the contact's area.
-        const cw::SolveTotals t0 = s.solve(in, cw::SolveMode::forces_only);
-        const double c_r = std::sqrt(t0.n_contact * sh.dx * sh.dy / gapshapes::kPi);
-        const double xs = 3 * sh.mu * sh.normal_force / (4.2 * sh.G * c_r * c_r);
-        const double th = sh.theta_deg * gapshapes::kPi / 180;
-        // (The flange root's small lobe saturates first: a lower level.)
-        const double level = std::string(c.id) == "N06_flange_root" ? 0.1 : 0.5;
-        in.xi_x = level * xs * std::cos(th);
-        in.xi_y = level * xs * std::sin(th);
-        in.phi = 0.6 * level * xs / c_r;
-        if (c.approach) {
-            in.normal_load = cw::NormalLoad::approach;
-            in.approach = t0.approach;
-        }
-        cw::Jacobian J;
-        const cw::SolveTotals t = s.solve_jacobian(in, cw::SolveMode::forces_only, J);
-        assert_true(t.n_slip > 0 && t.n_adhesion > 0);
-        const std::array<double, 4> scale = {xs, xs, xs / c_r, sh.normal_force};
-        const double best = step_study(c, s, in, J, scale, t.n_slip, t.n_contact);
-        // Measured 4e-11 ... 8e-10 at the best step; the solves' tolerances
-        // (1e-12 tangential, 1e-10 normal, 1e-13 semi-Hertzian force) over
-        // the step bound what a difference resolves.
-        assert_true(best <= 1e-8);
+    for (const Case& c : kCases) assert_true(best_agreement(c) <= kHeld);
+}
+
+const char* model_name(const Case& c)
+{
+    return c.model == cw::ModelKind::exact ? "exact model" : "FASTSIM";
+}
+
+const char* normal_name(const Case& c)
+{
+    return c.normal == cw::NormalMethod::exact ? "exact" : "semi-Hertzian";
+}
+
+// doc/validation/jacobians.md's table: every case's best agreement, and the
+// Hertzian gap against the elliptic model.
+void print_markdown()
+{
+    g_verbose = false;
+    printf("| shape | model | normal method | load prescribed | best agreement | test holds |\n");
+    printf("|---|---|---|---|---:|---:|\n");
+    double worst = 0.0;
+    for (const Case& c : kCases) {
+        const double best = best_agreement(c);
+        worst = std::max(worst, best);
+        printf("| %s | %s | %s | %s | %.0e | %.0e |\n", c.id, model_name(c), normal_name(c),
+               c.approach ? "approach" : "force", best, kHeld);
     }
+    printf("| worst | | | | %.0e | |\n", worst);
+    const std::array<double, 2> h = hertzian_gap_against_the_elliptic_jacobian();
+    printf("\nOn the Hertzian gap of a 24 x 24 uniform grid the exact model's creepage columns equal "
+           "the\nelliptic exact model's to %.0e (rolling towards +x) and %.0e (towards -x) of the "
+           "row's\nscale (held to 1e-8).\n",
+           h[0], h[1]);
 }
 
 void invalid_inputs(void**)
@@ -280,6 +340,10 @@ void invalid_inputs(void**)
 
 int main(int argc, char** argv)
 {
+    if (argc == 2 && std::strcmp(argv[1], "--markdown") == 0) {
+        print_markdown();
+        return 0;
+    }
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(hertzian_gap_matches_the_elliptic_jacobian),
         cmocka_unit_test(against_central_differences),
