@@ -319,8 +319,8 @@ GAP_MUTANTS = [
          tests=GAP),
     dict(id="semi-hertz-pressure", what="the semi-Hertzian peak pressure grows with the depth, not its root",
          file="core/nonhertz/semi_hertz.cpp",
-         old="        p[i] = scale * std::sqrt(std::max(local - c * m * m, 0.0));",
-         new="        p[i] = scale * std::max(local - c * m * m, 0.0);", tests=GAP),
+         old="            p[i] = scale * std::sqrt(std::max(local - c * m * m, 0.0));",
+         new="            p[i] = scale * std::max(local - c * m * m, 0.0);", tests=GAP),
     # FASTSIM on a gap grid: caught by the exact model on the 26 shapes
     # (test_nonhertz_fastsim), the elliptic FASTSIM on a shifted Hertzian gap
     # and the hand-computed adhesion limit per patch (test_nonhertz_capi).

@@ -7,6 +7,7 @@
 #include "contact/error.hpp"
 #include "contact/hertz.hpp"
 #include "march/kernel_isa.hpp"
+#include "march/simd.hpp"
 
 namespace creepwork {
 namespace {
@@ -156,31 +157,36 @@ namespace {
 
 // One row's semi-ellipse on the elements m = m0 .. m0 + count - 1 from the
 // locus: p = scale sqrt(local - c m^2) (Hertz's p0 sqrt(1 - (x / a)^2) with
-// p0 = scale sqrt(local), a^2 = local / c), written to p; returns their sum.
-// Vectorised: the root of the elements and the sum in four partial sums.
-// Compiled for AVX2 too (picked at load time): four roots at a time, and
-// bitwise the same result (each element and each partial sum the same
-// operations in the same order).
-#if CREEPWORK_X86_KERNELS
-__attribute__((target_clones("avx2", "default")))
-#endif
-double semi_ellipse(double local, double c, int m0, int count, double scale, double* p)
-{
-    for (int i = 0; i < count; ++i) {
-        const double m = m0 + i;
-        p[i] = scale * std::sqrt(std::max(local - c * m * m, 0.0));
+// p0 = scale sqrt(local), a^2 = local / c), written to p; their sum to *sum.
+// Vectorised: the root of the elements and the sum in four partial sums. A
+// kernel of march/kernel_isa.hpp, so that the solver's ISA picks the copy
+// (AVX2: four roots at a time; W itself is unused, the compiler vectorises
+// the loops for the copy's ISA), bitwise the same result in every copy (each
+// element and each partial sum the same operations in the same order). Not
+// a target_clones function: its load-time resolver runs before a sanitizer's
+// runtime is ready (ThreadSanitizer faults in it).
+struct SemiEllipse : KernelWidths {
+    template <int W>
+    CREEPWORK_INLINE static void run(const double& local, const double& c, const int& m0,
+                                     const int& count, const double& scale, double* const& p,
+                                     double* const& sum)
+    {
+        for (int i = 0; i < count; ++i) {
+            const double m = m0 + i;
+            p[i] = scale * std::sqrt(std::max(local - c * m * m, 0.0));
+        }
+        double s0 = 0.0, s1 = 0.0, s2 = 0.0, s3 = 0.0;
+        int i = 0;
+        for (; i + 3 < count; i += 4) {
+            s0 += p[i];
+            s1 += p[i + 1];
+            s2 += p[i + 2];
+            s3 += p[i + 3];
+        }
+        for (; i < count; ++i) s0 += p[i];
+        *sum = (s0 + s1) + (s2 + s3);
     }
-    double s0 = 0.0, s1 = 0.0, s2 = 0.0, s3 = 0.0;
-    int i = 0;
-    for (; i + 3 < count; i += 4) {
-        s0 += p[i];
-        s1 += p[i + 1];
-        s2 += p[i + 2];
-        s3 += p[i + 3];
-    }
-    for (; i < count; ++i) s0 += p[i];
-    return (s0 + s1) + (s2 + s3);
-}
+};
 
 } // namespace
 
@@ -198,9 +204,13 @@ double SemiHertz::force_at(double d, double* out)
             const double half = std::sqrt(local / (R.alpha * A)) / dx_; // in elements
             lo = std::max(0, static_cast<int>(std::ceil(R.locus - half)));
             hi = std::min(nx_ - 1, static_cast<int>(std::floor(R.locus + half)));
-            if (hi >= lo)
-                force += semi_ellipse(local, R.alpha * A * dx_ * dx_, lo - R.locus, hi - lo + 1,
-                                      R.p_factor, p ? p + lo : scratch_.data());
+            if (hi >= lo) {
+                double sum = 0.0;
+                run_kernel<SemiEllipse>(isa_, local, R.alpha * A * dx_ * dx_, lo - R.locus,
+                                        hi - lo + 1, R.p_factor, p ? p + lo : scratch_.data(),
+                                        &sum);
+                force += sum;
+            }
         }
         if (p) { // zero what the last evaluation wrote outside lo .. hi
             for (int i = R.written_lo; i <= std::min(R.written_hi, lo - 1); ++i) p[i] = 0.0;

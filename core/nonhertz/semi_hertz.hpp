@@ -27,6 +27,8 @@
 
 #include <vector>
 
+#include "march/kernel_isa.hpp"
+
 namespace creepwork {
 
 // Smallest curvature of a row [1/m] (a 5 m radius): CONTACT's 1e-4 1/mm.
@@ -89,6 +91,7 @@ private:
     const double* h_ = nullptr;
     std::vector<Row> rows_;
     std::vector<double> scratch_; // one row's pressures when force_at has no out
+    KernelIsa isa_ = best_kernel_isa(); // the rows' semi-ellipses' copy
 };
 
 } // namespace creepwork
