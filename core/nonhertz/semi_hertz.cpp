@@ -250,7 +250,6 @@ double SemiHertz::continuous_depth(double N)
 SemiHertzResult SemiHertz::solve(const double* h, double dx, double dy, double E_star,
                                  bool force, double value, double* pressure)
 {
-    h_ = h;
     dx_ = dx;
     dy_ = dy;
     E_star_ = E_star;

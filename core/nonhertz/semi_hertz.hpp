@@ -87,7 +87,6 @@ private:
 
     int nx_, ny_;
     double dx_ = 0, dy_ = 0, E_star_ = 0, h_min_ = 0;
-    const double* h_ = nullptr;
     std::vector<Row> rows_;
     std::vector<double> scratch_; // one row's pressures when force_at has no out
 };
