@@ -60,23 +60,23 @@ void GapFastsimModel::validate(const ContactInput& in) const
     validate_gap_input(in, bad == 0.0 ? 0 : n);
 }
 
-void GapFastsimModel::solve_normal(const ContactInput& in)
+void GapFastsimModel::solve_normal(const ContactInput& in, const double* gap)
 {
     const size_t n = static_cast<size_t>(nx_) * ny_;
     const bool force = in.normal_load == NormalLoad::force;
     const double dx = grid_.dx, dy = grid_.dy;
     if (force && in.normal_force == 0.0) {
         std::fill(pressure_.begin(), pressure_.end(), 0.0);
-        approach_ = *std::min_element(gap_.begin(), gap_.end()); // the surfaces just touch
+        approach_ = *std::min_element(gap, gap + n); // the surfaces just touch
     } else {
         const SemiHertzResult r =
-            semi_hertz_.solve(gap_.data(), dx, dy, in.G / (1.0 - in.nu), force,
+            semi_hertz_.solve(gap, dx, dy, in.G / (1.0 - in.nu), force,
                               force ? in.normal_force : in.approach, pressure_.data());
         approach_ = r.approach;
         if (in.normal_method == NormalMethod::exact) {
             for (size_t k = 0; k < n; ++k) {
                 start_[k] = pressure_[k] / in.G;
-                gap_in_dx_[k] = gap_[k] / dx;
+                gap_in_dx_[k] = gap[k] / dx;
             }
             conv_->set_coefficients(dy / dx, in.nu);
             const double value = force ? in.normal_force / (in.G * dx * dy) : in.approach / dx;
@@ -159,14 +159,14 @@ SolveTotals GapFastsimModel::solve(const ContactInput& in, SolveMode mode)
     validate(in);
     direction_ = in.rolling_direction;
     full_ = mode == SolveMode::full;
-    if (direction_ > 0)
-        std::copy(in.gap, in.gap + static_cast<size_t>(nx_) * ny_, gap_.begin());
-    else
+    // The gap in the rolling frame: the caller's itself (rolling_direction
+    // +1), or its rows reversed into gap_ (-1).
+    if (direction_ < 0)
         for (int j = 0; j < ny_; ++j) {
             const double* from = in.gap + static_cast<size_t>(nx_) * j;
             std::reverse_copy(from, from + nx_, gap_.begin() + static_cast<ptrdiff_t>(nx_) * j);
         }
-    solve_normal(in);
+    solve_normal(in, direction_ > 0 ? in.gap : gap_.data());
 
     // The contact's runs, row by row in the caller's layout (the patches'
     // numbering), and the largest pressure.

@@ -84,7 +84,8 @@ private:
     template <class Op>
     void export_field(Field f, const Op& op, double* out) const;
     void validate(const ContactInput& in) const;
-    void solve_normal(const ContactInput& in);
+    // gap: in the rolling frame (the caller's, or its rows reversed in gap_).
+    void solve_normal(const ContactInput& in, const double* gap);
     void set_patches(const ContactInput& in);
     // The march's input for the last solve's pressure and patches (rolling frame).
     GapMarchInput march_input(const ContactInput& in) const;

@@ -44,12 +44,28 @@ struct RowMarch {
     }
 };
 
+// The march's input and output held by value, with the constants of every
+// step: the outputs could alias the input for all the compiler knows, and a
+// copy it can see whole is not reloaded after every store.
+struct MarchFrame {
+    GapMarchInput in;
+    GapMarchOutput out;
+    double inv_dx, area;
+
+    MarchFrame(const GapMarchInput& i, const GapMarchOutput& o)
+        : in(i), out(o), inv_dx(1.0 / i.dx), area(i.dx * i.dy)
+    {
+    }
+};
+
 // Element i of row r (i = -1: past the trailing end, closing a segment).
 template <bool Full>
-inline void step(const GapMarchInput& in, const GapMarchOutput& out, RowMarch& r, int i)
+inline void step(const MarchFrame& frame, RowMarch& r, int i)
 {
     using Complex = std::complex<double>;
-    const double dx = in.dx, inv_dx = 1.0 / in.dx, area = in.dx * in.dy;
+    const GapMarchInput& in = frame.in;
+    const GapMarchOutput& out = frame.out;
+    const double dx = in.dx, inv_dx = frame.inv_dx, area = frame.area;
     const size_t k = r.row + i;
     const double pz = i >= 0 ? in.pressure[k] : 0.0;
     if (!(pz > 0.0)) {
@@ -111,8 +127,10 @@ inline void step(const GapMarchInput& in, const GapMarchOutput& out, RowMarch& r
 // one ahead (in slip through a root and a division), two independent rows
 // keep the processor busy while one waits.
 template <bool Full>
-void march(const GapMarchInput& in, const GapMarchOutput& out)
+void march(const GapMarchInput& input, const GapMarchOutput& output)
 {
+    const MarchFrame f(input, output);
+    const GapMarchInput& in = f.in;
     const int nx = in.nx;
     int j = 0;
     for (; j + 1 < in.ny; j += 2) {
@@ -120,14 +138,14 @@ void march(const GapMarchInput& in, const GapMarchOutput& out)
         a.start(in, j);
         b.start(in, j + 1);
         for (int i = nx - 1; i >= -1; --i) {
-            step<Full>(in, out, a, i);
-            step<Full>(in, out, b, i);
+            step<Full>(f, a, i);
+            step<Full>(f, b, i);
         }
     }
     if (j < in.ny) {
         RowMarch a;
         a.start(in, j);
-        for (int i = nx - 1; i >= -1; --i) step<Full>(in, out, a, i);
+        for (int i = nx - 1; i >= -1; --i) step<Full>(f, a, i);
     }
 }
 

@@ -122,11 +122,12 @@ int SemiHertz::shape_at(int j, double d)
 {
     Row& R = rows_[j];
     // The fit's half-width: as long as the next pair still penetrates by
-    // more than kFitDepth of the locus (CONTACT's rule).
-    const double top = R.g - d; // < 0 where the row penetrates
-    int k = 1;
-    if (top < 0.0)
-        while (k < kMaxFitHalfWidth && R.pair[k] - d <= kFitDepth * top) ++k;
+    // more than kFitDepth of the locus (CONTACT's rule), walked from the
+    // last depth's (the depths of an iteration lie close together).
+    const bool in = d > R.g; // the row penetrates
+    int k = R.shape_k < 1 ? 1 : R.shape_k;
+    while (k < kMaxFitHalfWidth && in && d >= R.widen[k]) ++k;
+    while (k > 1 && !(in && d >= R.widen[k - 1])) --k;
     if (k != R.shape_k) {
         if (!(R.known & (1u << k))) {
             const double A = std::max(R.A[k], kMinCurvature), B = R.B;
@@ -259,7 +260,6 @@ double SemiHertz::continuous_depth(double N)
 SemiHertzResult SemiHertz::solve(const double* h, double dx, double dy, double E_star,
                                  bool force, double value, double* pressure)
 {
-    h_ = h;
     dx_ = dx;
     dy_ = dy;
     E_star_ = E_star;
@@ -308,10 +308,17 @@ SemiHertzResult SemiHertz::solve(const double* h, double dx, double dy, double E
             m4 += 2.0 * k2 * k2;
             R.A[k] = (m0 * s2 - m2 * s0) / ((m0 * m4 - m2 * m2) * dx * dx);
         }
-        for (int k = 1; k < kMaxFitHalfWidth; ++k)
-            R.pair[k] = R.locus - k - 1 >= 0 && R.locus + k + 1 < nx_
-                            ? std::max(row[R.locus - k - 1], row[R.locus + k + 1]) - h_min_
-                            : std::numeric_limits<double>::infinity();
+        // pair[k] - d <= kFitDepth (g - d) where d >= (pair[k] - kFitDepth g)
+        // / (1 - kFitDepth).
+        double widen = -std::numeric_limits<double>::infinity();
+        for (int k = 1; k < kMaxFitHalfWidth; ++k) {
+            // The higher of the pair's heights above the gap's lowest element.
+            const double pair = R.locus - k - 1 >= 0 && R.locus + k + 1 < nx_
+                                    ? std::max(row[R.locus - k - 1], row[R.locus + k + 1]) - h_min_
+                                    : std::numeric_limits<double>::infinity();
+            widen = std::max(widen, (pair - kFitDepth * R.g) / (1.0 - kFitDepth));
+            R.widen[k] = widen;
+        }
         R.known = 0;
         R.shape_k = -1;
         R.written_lo = 0;

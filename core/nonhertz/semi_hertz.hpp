@@ -65,9 +65,10 @@ private:
         int shape_k = -1;     // the k of the cached shape factors
         double alpha = 0, beta = 0, p_factor = 0;
         int written_lo = 0, written_hi = -1; // the elements of out the last force_at wrote
-        // For k = 1..9: the height above the gap's lowest element of the
-        // higher of the elements locus -+ (k + 1); infinite past the row's ends.
-        double pair[10] = {};
+        // For k = 1..9: the least depth at which the fit is wider than k, from
+        // the heights of the pairs of elements locus -+ (k' + 1), k' <= k
+        // (nondecreasing in k; infinite from a pair past the row's ends on).
+        double widen[10] = {};
         // Per k, known once computed in this solve (bit k of known): the
         // shape factors, and the continuous semi-ellipse's force per unit
         // local depth [N/m].
@@ -88,7 +89,6 @@ private:
 
     int nx_, ny_;
     double dx_ = 0, dy_ = 0, E_star_ = 0, h_min_ = 0;
-    const double* h_ = nullptr;
     std::vector<Row> rows_;
     std::vector<double> scratch_; // one row's pressures when force_at has no out
     KernelIsa isa_ = best_kernel_isa(); // the rows' semi-ellipses' copy
