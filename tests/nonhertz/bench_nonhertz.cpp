@@ -35,6 +35,7 @@
 #include <string>
 #include <vector>
 
+#include "gap_shape_grid.hpp"
 #include "gap_shapes.hpp"
 #include "nonhertz/semi_hertz.hpp"
 #include "solver.hpp"
@@ -94,19 +95,6 @@ Inputs creepages_of(const std::string& id)
     return in;
 }
 
-cw::GridSpec grid_of(const gapshapes::Shape& s)
-{
-    cw::GridSpec g;
-    g.kind = cw::GridKind::gap;
-    g.nx = s.nx;
-    g.ny = s.ny;
-    g.x0 = s.x0;
-    g.y0 = s.y0;
-    g.dx = s.dx;
-    g.dy = s.dy;
-    return g;
-}
-
 std::string sig3(double v)
 {
     char b[32];
@@ -150,7 +138,7 @@ int fast_table(const std::vector<std::string>& ids, const std::vector<gapshapes:
         const int reps = quick ? 200 : 2000;
         cw::SemiHertz sh(s.nx, s.ny);
         std::vector<double> p(s.h.size());
-        cw::Solver solver(grid_of(s));
+        cw::Solver solver(gapshapes::grid_of(s));
         cw::SolveTotals t = solver.solve(in, cw::SolveMode::full);
         double normal = 1e300, forces = 1e300, full = 1e300;
         for (int run = 0; run < 3; ++run) {
@@ -286,7 +274,7 @@ int main(int argc, char** argv)
         in.phi = c.phi;
         in.rolling_direction = s.rolling_direction;
         in.warm_start = false;
-        const cw::GridSpec g = grid_of(s);
+        const cw::GridSpec g = gapshapes::grid_of(s);
 
         // Cold: create + solve, best of samples.
         double cold = 1e300;

@@ -8,6 +8,7 @@
 // lateral ripple of N11 is 11.3 % short; doc/validation/non-hertzian.md).
 // `test_nonhertz_fast --markdown dev|new` prints the page's tables (the same
 // comparisons; scripts/doc-tables.sh pastes and checks them).
+#include "gap_shape_grid.hpp"
 #include "gap_shapes.hpp"
 #include "gap_test_support.hpp"
 #include "test_support.h"
@@ -77,14 +78,7 @@ double run_new(std::string& table)
     const std::vector<gapshapes::Shape> shapes = gapshapes::shapes();
     for (size_t r = 0; r < shapes.size(); ++r) {
         const gapshapes::Shape& s = shapes[r];
-        cw::GridSpec g;
-        g.kind = cw::GridKind::gap;
-        g.nx = s.nx;
-        g.ny = s.ny;
-        g.x0 = s.x0;
-        g.y0 = s.y0;
-        g.dx = s.dx;
-        g.dy = s.dy;
+        const cw::GridSpec g = gapshapes::grid_of(s);
         cw::ContactInput in;
         in.model = cw::ModelKind::exact;
         in.gap = s.h.data();

@@ -14,6 +14,7 @@
 //    and zero in adhesion; rolling towards -x mirrors; errors name inputs.
 // `test_nonhertz_fastsim --markdown` prints the accuracy table of
 // doc/validation/non-hertzian.md (scripts/doc-tables.sh pastes and checks it).
+#include "gap_shape_grid.hpp"
 #include "gap_shapes.hpp"
 #include "gap_test_support.hpp"
 #include "test_support.h"
@@ -81,19 +82,6 @@ void compare(const std::string& id, const cw::GridSpec& g, cw::ContactInput in, 
     w.march_mz = std::max(w.march_mz, moment(m));
 }
 
-cw::GridSpec grid_of(const gapshapes::Shape& s)
-{
-    cw::GridSpec g;
-    g.kind = cw::GridKind::gap;
-    g.nx = s.nx;
-    g.ny = s.ny;
-    g.x0 = s.x0;
-    g.y0 = s.y0;
-    g.dx = s.dx;
-    g.dy = s.dy;
-    return g;
-}
-
 cw::ContactInput input_of(const gapshapes::Shape& s)
 {
     cw::ContactInput in;
@@ -133,7 +121,7 @@ Worst run_all(std::string& table)
         in.xi_x = t.number(r, "xi_x");
         in.xi_y = t.number(r, "xi_y");
         in.phi = t.number(r, "phi_per_m");
-        compare(shapes[r].id, grid_of(shapes[r]), in, w, table);
+        compare(shapes[r].id, gapshapes::grid_of(shapes[r]), in, w, table);
     }
     char b[256];
     std::snprintf(b, sizeof b, "| worst | %s | %s | %s | %s | %s | %s |\n",
@@ -212,10 +200,10 @@ void moving_the_contact_changes_only_the_transfer_term(void**)
         in.xi_x = 2e-4;
         in.xi_y = -1e-4;
         in.phi = 0.6;
-        cw::Solver a(grid_of(s));
+        cw::Solver a(gapshapes::grid_of(s));
         const cw::SolveTotals ta = a.solve(in, cw::SolveMode::full);
         const double X = 7.0 * s.dx, Y = -3.0 * s.dy;
-        cw::GridSpec g = grid_of(s);
+        cw::GridSpec g = gapshapes::grid_of(s);
         g.x0 += X;
         g.y0 += Y;
         cw::ContactInput im = in;
@@ -240,7 +228,7 @@ void rolling_direction_mirrors(void**)
     cw::ContactInput in = input_of(s);
     in.rolling_direction = 1;
     in.xi_x = 3e-4, in.xi_y = -2e-4, in.phi = 0.4;
-    cw::Solver a(grid_of(s));
+    cw::Solver a(gapshapes::grid_of(s));
     const cw::SolveTotals ta = a.solve(in, cw::SolveMode::full);
     gapshapes::Shape m = s;
     for (int j = 0; j < s.ny; ++j)
@@ -249,7 +237,7 @@ void rolling_direction_mirrors(void**)
     cw::ContactInput im = input_of(m);
     im.rolling_direction = -1;
     im.xi_x = -3e-4, im.xi_y = -2e-4, im.phi = -0.4;
-    cw::Solver b(grid_of(m));
+    cw::Solver b(gapshapes::grid_of(m));
     const cw::SolveTotals tb = b.solve(im, cw::SolveMode::full);
     const double muN = s.mu * s.normal_force;
     assert_close(tb.Fx, -ta.Fx, 0.0, 1e-12 * muN);
@@ -276,7 +264,7 @@ void patches_and_work_maps_add_up(void**)
             for (const cwtest::GapCase& c : cwtest::dev_cases())
                 if (c.id == id) dc = c;
         const gapshapes::Shape* sp = dev ? nullptr : &shape(id);
-        const cw::GridSpec g = dev ? dc.gap.grid : grid_of(*sp);
+        const cw::GridSpec g = dev ? dc.gap.grid : gapshapes::grid_of(*sp);
         cw::ContactInput in = dev ? dc.bind() : input_of(*sp);
         in.model = cw::ModelKind::fastsim;
         in.warm_start = false;
@@ -373,7 +361,7 @@ void expect_error(cw::Solver& s, const cw::ContactInput& in, cw::ErrorKind kind,
 void errors_name_the_input(void**)
 {
     const gapshapes::Shape& s = shape("N10_tall_cells");
-    cw::Solver solver(grid_of(s));
+    cw::Solver solver(gapshapes::grid_of(s));
     cw::ContactInput ok = input_of(s);
     ok.xi_x = 1e-4;
     solver.solve(ok, cw::SolveMode::full);

@@ -21,6 +21,7 @@
 //  - normal_force = 0 is an error naming it; mu = 0 gives zeros.
 // `test_nonhertz_jacobian --markdown` prints the accuracy table of
 // doc/validation/jacobians.md (scripts/doc-tables.sh).
+#include "gap_shape_grid.hpp"
 #include "gap_shapes.hpp"
 #include "gap_test_support.hpp"
 #include "test_support.h"
@@ -41,19 +42,6 @@
 namespace cw = creepwork;
 
 namespace {
-
-cw::GridSpec grid_of(const gapshapes::Shape& s)
-{
-    cw::GridSpec g;
-    g.kind = cw::GridKind::gap;
-    g.nx = s.nx;
-    g.ny = s.ny;
-    g.x0 = s.x0;
-    g.y0 = s.y0;
-    g.dx = s.dx;
-    g.dy = s.dy;
-    return g;
-}
 
 const gapshapes::Shape& shape(const std::string& id)
 {
@@ -215,7 +203,7 @@ const Case kCases[] = {
 double best_agreement(const Case& c)
 {
     const gapshapes::Shape& sh = shape(c.id);
-    cw::Solver s(grid_of(sh));
+    cw::Solver s(gapshapes::grid_of(sh));
     cw::ContactInput in;
     in.model = c.model;
     in.normal_method = c.normal;
@@ -299,7 +287,7 @@ void invalid_inputs(void**)
 {
     const gapshapes::Shape& sh = shape("N06_flange_root");
     for (cw::ModelKind model : {cw::ModelKind::exact, cw::ModelKind::fastsim}) {
-        cw::Solver s(grid_of(sh));
+        cw::Solver s(gapshapes::grid_of(sh));
         cw::ContactInput in;
         in.model = model;
         in.gap = sh.h.data();

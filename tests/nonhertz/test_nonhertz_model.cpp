@@ -4,6 +4,7 @@
 // and rolled the other way gives the mirrored solution; patches add up to
 // the totals; the work maps obey exact_work.hpp's rules; warm starts give
 // the cold answer; the degenerate loads; the errors name their input.
+#include "gap_shape_grid.hpp"
 #include "gap_shapes.hpp"
 #include "gap_test_support.hpp"
 #include "test_support.h"
@@ -18,19 +19,6 @@
 namespace cw = creepwork;
 
 namespace {
-
-cw::GridSpec grid_of(const gapshapes::Shape& s)
-{
-    cw::GridSpec g;
-    g.kind = cw::GridKind::gap;
-    g.nx = s.nx;
-    g.ny = s.ny;
-    g.x0 = s.x0;
-    g.y0 = s.y0;
-    g.dx = s.dx;
-    g.dy = s.dy;
-    return g;
-}
 
 cw::ContactInput input_of(const gapshapes::Shape& s, double xi_x, double xi_y, double phi)
 {
@@ -131,7 +119,7 @@ void rolling_direction_mirrors(void**)
 {
     const gapshapes::Shape& s = shape("N04_crescent");
     cw::ContactInput in = input_of(s, 3e-4, -2e-4, 0.4);
-    cw::Solver a(grid_of(s));
+    cw::Solver a(gapshapes::grid_of(s));
     const cw::SolveTotals ta = a.solve(in, cw::SolveMode::full);
 
     gapshapes::Shape m = s;
@@ -140,7 +128,7 @@ void rolling_direction_mirrors(void**)
     m.x0 = -(s.x0 + (s.nx - 1) * s.dx);
     cw::ContactInput im = input_of(m, -3e-4, -2e-4, -0.4);
     im.rolling_direction = -1;
-    cw::Solver b(grid_of(m));
+    cw::Solver b(gapshapes::grid_of(m));
     const cw::SolveTotals tb = b.solve(im, cw::SolveMode::full);
     const double muN = s.mu * s.normal_force;
     assert_close(tb.Fx, -ta.Fx, 0.0, 1e-12 * muN);
@@ -162,7 +150,7 @@ void patches_and_work_maps_add_up(void**)
 {
     for (const char* id : {"N03_three_lobes", "N06_flange_root", "N05_ring"}) {
         const gapshapes::Shape& s = shape(id);
-        cw::Solver solver(grid_of(s));
+        cw::Solver solver(gapshapes::grid_of(s));
         const cw::SolveTotals t = solver.solve(input_of(s, 5e-4, 4e-4, 0.6), cw::SolveMode::full);
         const std::vector<cw::PatchTotals>& P = solver.patches();
         assert_int_equal(static_cast<int>(P.size()), t.n_patches);
@@ -206,7 +194,7 @@ void patches_and_work_maps_add_up(void**)
 void warm_start_equals_cold_start(void**)
 {
     const gapshapes::Shape& s = shape("N01_hollow");
-    cw::Solver warm(grid_of(s));
+    cw::Solver warm(gapshapes::grid_of(s));
     cw::ContactInput in = input_of(s, 2e-4, 1e-4, 0.2);
     in.warm_start = true;
     warm.solve(in, cw::SolveMode::forces_only);
@@ -225,7 +213,7 @@ void warm_start_equals_cold_start(void**)
         const cw::SolveTotals tw = warm.solve(in, cw::SolveMode::full);
         assert_true(warm.gap_model()->info().warm);
         assert_true(warm.gap_model()->info().normal_reused == st.reuse);
-        cw::Solver cold(grid_of(s));
+        cw::Solver cold(gapshapes::grid_of(s));
         cw::ContactInput ic = in;
         ic.warm_start = false;
         const cw::SolveTotals tc = cold.solve(ic, cw::SolveMode::full);
@@ -244,7 +232,7 @@ void warm_start_equals_cold_start(void**)
 void degenerate_and_alternative_loads(void**)
 {
     const gapshapes::Shape& s = shape("N02_cubic_x");
-    cw::Solver solver(grid_of(s));
+    cw::Solver solver(gapshapes::grid_of(s));
     cw::ContactInput in = input_of(s, 3e-4, 0.0, 0.0);
     const cw::SolveTotals full = solver.solve(in, cw::SolveMode::full);
 
@@ -303,7 +291,7 @@ void expect_error(cw::Solver& s, const cw::ContactInput& in, cw::ErrorKind kind,
 void errors_name_the_input(void**)
 {
     const gapshapes::Shape& s = shape("N10_tall_cells");
-    cw::Solver solver(grid_of(s));
+    cw::Solver solver(gapshapes::grid_of(s));
     const cw::ContactInput ok = input_of(s, 1e-4, 0.0, 0.0);
     cw::ContactInput in = ok;
     in.gap = nullptr;

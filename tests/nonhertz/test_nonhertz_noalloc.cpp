@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "count_malloc.h"
+#include "gap_shape_grid.hpp"
 #include "gap_shapes.hpp"
 #include "solver.hpp"
 #include "test_support.h"
@@ -19,14 +20,7 @@ void gap_solves_allocate_nothing(void**)
 {
     const std::vector<gapshapes::Shape> shapes = gapshapes::shapes();
     const gapshapes::Shape& s = shapes[2]; // three lobes: three patches
-    cw::GridSpec g;
-    g.kind = cw::GridKind::gap;
-    g.nx = s.nx;
-    g.ny = s.ny;
-    g.x0 = s.x0;
-    g.y0 = s.y0;
-    g.dx = s.dx;
-    g.dy = s.dy;
+    const cw::GridSpec g = gapshapes::grid_of(s);
     cw_count_start();
     cw::Solver solver(g);
     solver.prepare(cw::ModelKind::fastsim); // FASTSIM's memory on a gap grid
