@@ -6,7 +6,9 @@
 #include <string>
 
 #include "contact/error.hpp"
+#include "contact/jacobian.hpp"
 #include "contact/number_text.hpp"
+#include "contact/params.hpp"
 
 namespace creepwork {
 
@@ -24,6 +26,21 @@ inline Error unloaded_approach_jacobian_error(double approach)
                  "approach = " + number_text(approach) +
                      " m gives no contact: the forces are not differentiable in N there; "
                      "the Jacobian needs a loaded contact");
+}
+
+// The start of a gap grid's Jacobian, after its solve: true with J zeroed
+// when mu = 0 (no traction whatever the inputs); the errors above for a
+// zero prescribed force or an approach that leaves no element in contact.
+inline bool gap_jacobian_is_zero(const ContactInput& in, int n_contact, Jacobian& J)
+{
+    if (in.mu == 0.0) {
+        J = Jacobian{};
+        return true;
+    }
+    if (in.normal_load == NormalLoad::force && in.normal_force == 0.0)
+        throw zero_load_jacobian_error();
+    if (!(n_contact > 0)) throw unloaded_approach_jacobian_error(in.approach);
+    return false;
 }
 
 } // namespace creepwork

@@ -33,15 +33,8 @@ constexpr int kMaxJacobianIterations = 2000;
 SolveTotals GapModel::solve_jacobian(const ContactInput& in, SolveMode mode, Jacobian& J)
 {
     const SolveTotals t = solve(in, mode);
+    if (gap_jacobian_is_zero(in, setup_.loaded ? t.n_contact : 0, J)) return t;
     Jacobian out;
-    if (in.mu == 0.0) { // no traction whatever the inputs
-        J = out;
-        return t;
-    }
-    if (in.normal_load == NormalLoad::force && in.normal_force == 0.0)
-        throw zero_load_jacobian_error();
-    if (!setup_.loaded)
-        throw unloaded_approach_jacobian_error(in.approach);
 
     Level& fine = *levels_[0];
     const Setup& s = setup_;

@@ -16,15 +16,8 @@ namespace creepwork {
 SolveTotals GapFastsimModel::solve_jacobian(const ContactInput& in, SolveMode mode, Jacobian& J)
 {
     const SolveTotals t = solve(in, mode);
+    if (gap_jacobian_is_zero(in, t.n_contact, J)) return t;
     Jacobian out;
-    if (in.mu == 0.0) { // no traction whatever the inputs
-        J = out;
-        return t;
-    }
-    if (in.normal_load == NormalLoad::force && in.normal_force == 0.0)
-        throw zero_load_jacobian_error();
-    if (!(t.n_contact > 0))
-        throw unloaded_approach_jacobian_error(in.approach);
     pressure_by_load(in.normal_method, *normal_, *conv_, semi_hertz_, pressure_.data(),
                      static_cast<size_t>(nx_) * ny_, grid_.dx, grid_.dy, dp_dN_.data());
 

@@ -2,6 +2,9 @@
 // benchmark that solve the shapes through the C++ core.
 #pragma once
 
+#include <vector>
+
+#include "contact/hertz.hpp"
 #include "contact/params.hpp"
 #include "gap_shapes.hpp"
 
@@ -17,6 +20,31 @@ inline creepwork::GridSpec grid_of(const Shape& s)
     g.y0 = s.y0;
     g.dx = s.dx;
     g.dy = s.dy;
+    return g;
+}
+
+// The Hertzian gap of an elliptic contact on the cells of the elliptic exact
+// model's uniform n x n grid of box scale S (cell centres): the grid, and
+// the gap in h. On it the exact model on a gap solves the elliptic model's
+// discrete problem.
+inline creepwork::GridSpec hertzian_gap(const creepwork::ContactInput& e, int n, double S,
+                                        std::vector<double>& h)
+{
+    creepwork::GridSpec g;
+    g.kind = creepwork::GridKind::gap;
+    g.nx = g.ny = n;
+    g.dx = 2 * S * e.a / n;
+    g.dy = 2 * S * e.b / n;
+    g.x0 = -S * e.a + 0.5 * g.dx;
+    g.y0 = -S * e.b + 0.5 * g.dy;
+    const creepwork::HertzCurvatures hz =
+        creepwork::hertz_from_semi_axes(e.a, e.b, e.normal_force, e.G / (1.0 - e.nu));
+    h.assign(static_cast<size_t>(n) * n, 0.0);
+    for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i) {
+            const double x = g.x0 + i * g.dx, y = g.y0 + j * g.dy;
+            h[i + static_cast<size_t>(n) * j] = hz.A * x * x + hz.B * y * y;
+        }
     return g;
 }
 

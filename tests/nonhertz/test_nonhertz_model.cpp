@@ -63,21 +63,8 @@ void hertzian_gap_reproduces_the_elliptic_model(void**)
     cw::Solver elliptic(cwtest::uniform_grid(n, n, S));
     const cw::SolveTotals te = elliptic.solve(e, cw::SolveMode::full);
 
-    cw::GridSpec g;
-    g.kind = cw::GridKind::gap;
-    g.nx = g.ny = n;
-    g.dx = 2 * S * e.a / n;
-    g.dy = 2 * S * e.b / n;
-    g.x0 = -S * e.a + 0.5 * g.dx;
-    g.y0 = -S * e.b + 0.5 * g.dy;
-    const cw::HertzCurvatures hz = cw::hertz_from_semi_axes(e.a, e.b, e.normal_force,
-                                                            e.G / (1.0 - e.nu));
-    std::vector<double> h(n * n);
-    for (int j = 0; j < n; ++j)
-        for (int i = 0; i < n; ++i) {
-            const double x = g.x0 + i * g.dx, y = g.y0 + j * g.dy;
-            h[i + n * j] = hz.A * x * x + hz.B * y * y;
-        }
+    std::vector<double> h;
+    const cw::GridSpec g = gapshapes::hertzian_gap(e, n, S, h);
     cw::ContactInput in = e;
     in.gap = h.data();
     in.gap_len = h.size();
