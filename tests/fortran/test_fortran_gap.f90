@@ -57,16 +57,15 @@ contains
       g%dy = dy
    end function gap_grid
 
-   subroutine hertzian_gap()
-      integer, parameter :: n = 24
-      real(c_double), parameter :: S = 1.2_c_double
-      real(c_double), parameter :: A = 1/(2*0.46_c_double), B = 1/(2*0.30_c_double)
-      real(c_double), target :: h(n, n)
-      real(c_double) :: hz(4), x, y
-      type(cw_grid) :: g
-      type(cw_solver_type) :: gap, elliptic
-      type(cw_params) :: p
-      type(cw_result) :: rg, re
+   ! The Hertzian gap A x^2 + B y^2 of the ellipse Hertz gives for the
+   ! curvatures A, B under the load, on the cell centres of the elliptic
+   ! exact model's uniform n x n grid of box scale S; hz: Hertz's a, b, ...
+   subroutine hertz_gap(n, S, A, B, hz, g, h)
+      integer, intent(in) :: n
+      real(c_double), intent(in) :: S, A, B
+      real(c_double), intent(out) :: hz(4), h(n, n)
+      type(cw_grid), intent(out) :: g
+      real(c_double) :: x, y
       integer :: i, j
       call cw_hertz_solve(A, B, load, 82e9_c_double/(1 - 0.28_c_double), hz)
       g = gap_grid(n, n, -S*hz(1) + S*hz(1)/n, -S*hz(2) + S*hz(2)/n, 2*S*hz(1)/n, 2*S*hz(2)/n)
@@ -77,6 +76,19 @@ contains
             h(i, j) = A*x**2 + B*y**2
          end do
       end do
+   end subroutine hertz_gap
+
+   subroutine hertzian_gap()
+      integer, parameter :: n = 24
+      real(c_double), parameter :: S = 1.2_c_double
+      real(c_double), parameter :: A = 1/(2*0.46_c_double), B = 1/(2*0.30_c_double)
+      real(c_double), target :: h(n, n)
+      real(c_double) :: hz(4)
+      type(cw_grid) :: g
+      type(cw_solver_type) :: gap, elliptic
+      type(cw_params) :: p
+      type(cw_result) :: rg, re
+      call hertz_gap(n, S, A, B, hz, g, h)
       call gap%create(grid=g)
       p = creep()
       p%gap = c_loc(h)
@@ -150,22 +162,14 @@ contains
       real(c_double), parameter :: S = 1.2_c_double, sentinel = -12345.0_c_double
       real(c_double), parameter :: A = 1/(2*0.46_c_double), B = 1/(2*0.30_c_double)
       real(c_double), target :: h(n, n)
-      real(c_double) :: hz(4), x, y, jg(4, 4), je(4, 4), scale(4), row_scale, dn, fd
+      real(c_double) :: hz(4), jg(4, 4), je(4, 4), scale(4), row_scale, dn, fd
       type(cw_grid) :: g
       type(cw_solver_type) :: gap, elliptic
       type(cw_params) :: p, q
       type(cw_result) :: rg, re, up, down
-      integer :: i, j, row, k, stat
+      integer :: row, k, stat
       character(len=:), allocatable :: message
-      call cw_hertz_solve(A, B, load, 82e9_c_double/(1 - 0.28_c_double), hz)
-      g = gap_grid(n, n, -S*hz(1) + S*hz(1)/n, -S*hz(2) + S*hz(2)/n, 2*S*hz(1)/n, 2*S*hz(2)/n)
-      do j = 1, n
-         do i = 1, n
-            x = g%x0 + (i - 1)*g%dx
-            y = g%y0 + (j - 1)*g%dy
-            h(i, j) = A*x**2 + B*y**2
-         end do
-      end do
+      call hertz_gap(n, S, A, B, hz, g, h)
       call gap%create(grid=g)
       p = creep()
       p%gap = c_loc(h)
