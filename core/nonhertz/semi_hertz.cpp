@@ -104,8 +104,8 @@ const ShapeTable& shape_table()
     return table;
 }
 
-constexpr int kMaxFitHalfWidth = 10; // elements on each side of the locus
 constexpr double kFitDepth = 0.3;    // fit over elements penetrating > 30 % of the locus
+constexpr double kWidenScale = 1.0 / (1.0 - kFitDepth);
 constexpr int kMaxForceIterations = 100;
 
 } // namespace
@@ -118,7 +118,22 @@ SemiHertz::SemiHertz(int nx, int ny) : nx_(nx), ny_(ny), rows_(ny), scratch_(nx 
     shape_table();
 }
 
-int SemiHertz::shape_at(int j, double d)
+SemiHertz::FitMoments::FitMoments()
+{
+    double M0 = 1.0, M2 = 0.0, M4 = 0.0;
+    m0[0] = m2[0] = inv_den[0] = 0.0;
+    for (int k = 1; k <= kMaxFitHalfWidth; ++k) {
+        const double k2 = double(k) * k;
+        M0 += 2.0;
+        M2 += 2.0 * k2;
+        M4 += 2.0 * k2 * k2;
+        m0[k] = M0;
+        m2[k] = M2;
+        inv_den[k] = 1.0 / (M0 * M4 - M2 * M2);
+    }
+}
+
+int SemiHertz::shape_change(int j, double d)
 {
     Row& R = rows_[j];
     // The fit's half-width: as long as the next pair still penetrates by
@@ -157,24 +172,38 @@ int SemiHertz::shape_at(int j, double d)
 namespace {
 
 // One row's semi-ellipse on the elements m = m0 .. m0 + count - 1 from the
-// locus: p = scale sqrt(local - c m^2) (Hertz's p0 sqrt(1 - (x / a)^2) with
-// p0 = scale sqrt(local), a^2 = local / c), written to p; their sum to *sum.
-// Vectorised: the root of the elements and the sum in four partial sums. A
-// kernel of march/kernel_isa.hpp, so that the solver's ISA picks the copy
-// (AVX2: four roots at a time; W itself is unused, the compiler vectorises
-// the loops for the copy's ISA), bitwise the same result in every copy (each
-// element and each partial sum the same operations in the same order). Not
-// a target_clones function: its load-time resolver runs before a sanitizer's
-// runtime is ready (ThreadSanitizer faults in it).
+// locus (m0 <= 0 < m0 + count): p = scale sqrt(local - c m^2) (Hertz's
+// p0 sqrt(1 - (x / a)^2) with p0 = scale sqrt(local), a^2 = local / c),
+// written to p; their sum to *sum. The roots are taken once per |m|, on the
+// side of the locus with more elements, and mirrored (the value at -m is
+// the one at m, bitwise); the sum goes over p in order, in four partial
+// sums. A kernel of march/kernel_isa.hpp, so that the solver's ISA picks the
+// copy (AVX2: four roots at a time; W itself is unused, the compiler
+// vectorises the loops for the copy's ISA), bitwise the same result in
+// every copy (each element and each partial sum the same operations in the
+// same order). Not a target_clones function: its load-time resolver runs
+// before a sanitizer's runtime is ready (ThreadSanitizer faults in it).
 struct SemiEllipse : KernelWidths {
     template <int W>
     CREEPWORK_INLINE static void run(const double& local, const double& c, const int& m0,
                                      const int& count, const double& scale, double* const& p,
                                      double* const& sum)
     {
-        for (int i = 0; i < count; ++i) {
-            const double m = m0 + i;
-            p[i] = scale * std::sqrt(std::max(local - c * m * m, 0.0));
+        const int left = -m0, right = m0 + count - 1; // elements on each side of the locus
+        if (right >= left) {
+            double* q = p + left; // q[m], m = -left .. right
+            for (int m = 0; m <= right; ++m) {
+                const double mm = m;
+                q[m] = scale * std::sqrt(std::max(local - c * mm * mm, 0.0));
+            }
+            for (int m = 1; m <= left; ++m) q[-m] = q[m];
+        } else {
+            for (int i = 0; i <= left; ++i) { // m = i - left
+                const double mm = left - i;
+                p[i] = scale * std::sqrt(std::max(local - c * mm * mm, 0.0));
+            }
+            double* q = p + left;
+            for (int m = 1; m <= right; ++m) q[m] = q[-m];
         }
         double s0 = 0.0, s1 = 0.0, s2 = 0.0, s3 = 0.0;
         int i = 0;
@@ -268,25 +297,27 @@ SemiHertzResult SemiHertz::solve(const double* h, double dx, double dy, double E
     h_min_ = h[0];
     for (int j = 0; j < ny_; ++j) {
         const double* row = h + static_cast<size_t>(nx_) * j;
-        // Four partial minima, then the first element at the row's minimum.
-        double m0 = row[0], m1 = row[0], m2 = row[0], m3 = row[0];
-        int i = 0;
-        for (; i + 3 < nx_; i += 4) {
-            m0 = row[i] < m0 ? row[i] : m0; // selects, not branches
-            m1 = row[i + 1] < m1 ? row[i + 1] : m1;
-            m2 = row[i + 2] < m2 ? row[i + 2] : m2;
-            m3 = row[i + 3] < m3 ? row[i + 3] : m3;
-        }
-        for (; i < nx_; ++i) m0 = row[i] < m0 ? row[i] : m0;
-        const double lowest = std::min(std::min(m0, m1), std::min(m2, m3));
-        int at = 0;
-        while (row[at] != lowest) ++at;
-        rows_[j].locus = at;
-        h_min_ = std::min(h_min_, lowest);
+        // Four lanes, each its first lowest element (independent chains),
+        // then the lowest of theirs, the first of equals.
+        const int last = std::min(3, nx_ - 1); // nx >= 3
+        double m[4] = {row[0], row[1], row[2], row[last]};
+        int at[4] = {0, 1, 2, last};
+        int i = 4;
+        for (; i + 3 < nx_; i += 4)
+            for (int l = 0; l < 4; ++l)
+                if (row[i + l] < m[l]) m[l] = row[i + l], at[l] = i + l;
+        for (; i < nx_; ++i)
+            if (row[i] < m[0]) m[0] = row[i], at[0] = i;
+        int best = 0;
+        for (int l = 1; l < 4; ++l)
+            if (m[l] < m[best] || (m[l] == m[best] && at[l] < at[best])) best = l;
+        rows_[j].locus = at[best];
+        h_min_ = std::min(h_min_, m[best]);
     }
     // Per row: the locus, its height, the curvature across and the
     // least-squares curvature along x for each half-width k (the parabola
     // c0 + c1 t + c2 t^2 over t = -k..k: c2 from the even moments).
+    const double inv_dx2 = 1.0 / (dx * dx);
     for (int j = 0; j < ny_; ++j) {
         Row& R = rows_[j];
         const double* row = h + static_cast<size_t>(nx_) * j;
@@ -297,16 +328,13 @@ SemiHertzResult SemiHertz::solve(const double* h, double dx, double dy, double E
         R.B = std::max(0.5 * (r0[R.locus] - 2.0 * r0[R.locus + nx_] + r0[R.locus + 2 * nx_]) /
                            (dy * dy),
                        kMinCurvature);
-        double s0 = row[R.locus], s2 = 0.0, m0 = 1.0, m2 = 0.0, m4 = 0.0;
+        double s0 = row[R.locus], s2 = 0.0;
         for (int k = 1; k <= kMaxFitHalfWidth; ++k) {
             const int l = std::max(R.locus - k, 0), r = std::min(R.locus + k, nx_ - 1);
             const double k2 = double(k) * k;
             s0 += row[l] + row[r];
             s2 += k2 * (row[l] + row[r]);
-            m0 += 2.0;
-            m2 += 2.0 * k2;
-            m4 += 2.0 * k2 * k2;
-            R.A[k] = (m0 * s2 - m2 * s0) / ((m0 * m4 - m2 * m2) * dx * dx);
+            R.A[k] = (fit_.m0[k] * s2 - fit_.m2[k] * s0) * fit_.inv_den[k] * inv_dx2;
         }
         // pair[k] - d <= kFitDepth (g - d) where d >= (pair[k] - kFitDepth g)
         // / (1 - kFitDepth).
@@ -316,7 +344,7 @@ SemiHertzResult SemiHertz::solve(const double* h, double dx, double dy, double E
             const double pair = R.locus - k - 1 >= 0 && R.locus + k + 1 < nx_
                                     ? std::max(row[R.locus - k - 1], row[R.locus + k + 1]) - h_min_
                                     : std::numeric_limits<double>::infinity();
-            widen = std::max(widen, (pair - kFitDepth * R.g) / (1.0 - kFitDepth));
+            widen = std::max(widen, (pair - kFitDepth * R.g) * kWidenScale);
             R.widen[k] = widen;
         }
         R.known = 0;

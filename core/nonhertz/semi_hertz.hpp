@@ -33,6 +33,9 @@ namespace creepwork {
 
 // Smallest curvature of a row [1/m] (a 5 m radius): CONTACT's 1e-4 1/mm.
 constexpr double kMinCurvature = 0.1;
+// The widest least-squares fit along x: this many elements on each side of
+// the row's locus.
+constexpr int kMaxFitHalfWidth = 10;
 
 struct SemiHertzResult {
     double approach = 0;    // [m] from the gap's datum h = 0
@@ -61,19 +64,20 @@ private:
         int locus = 0;        // i of the lowest element (kept one cell inside the row)
         double g = 0;         // its height above the lowest element of the gap [m]
         double B = 0;         // curvature across [1/m]
-        double A[11] = {};    // curvature along x fitted over +-k elements, k = 1..10
+        double A[kMaxFitHalfWidth + 1] = {}; // curvature along x fitted over +-k elements, k >= 1
         int shape_k = -1;     // the k of the cached shape factors
         double alpha = 0, beta = 0, p_factor = 0;
         int written_lo = 0, written_hi = -1; // the elements of out the last force_at wrote
         // For k = 1..9: the least depth at which the fit is wider than k, from
         // the heights of the pairs of elements locus -+ (k' + 1), k' <= k
         // (nondecreasing in k; infinite from a pair past the row's ends on).
-        double widen[10] = {};
+        double widen[kMaxFitHalfWidth] = {};
         // Per k, known once computed in this solve (bit k of known): the
         // shape factors, and the continuous semi-ellipse's force per unit
         // local depth [N/m].
         unsigned known = 0;
-        double alpha_k[11] = {}, beta_k[11] = {}, p_factor_k[11] = {}, slope_k[11] = {};
+        double alpha_k[kMaxFitHalfWidth + 1] = {}, beta_k[kMaxFitHalfWidth + 1] = {},
+               p_factor_k[kMaxFitHalfWidth + 1] = {}, slope_k[kMaxFitHalfWidth + 1] = {};
     };
     // Total force [N] at depth d, and the pressures when out is given (out
     // holds zeros but for the rows' written elements, kept so).
@@ -84,8 +88,27 @@ private:
     double continuous_depth(double N);
     double continuous_slope_ = 0; // that force's slope at that depth [N/m]
     // The fit's half-width k of row j at depth d, and the row's shape factors
-    // for it.
-    int shape_at(int j, double d);
+    // for it: inline where k stays the last depth's (the depths of an
+    // iteration lie close together), else shape_change.
+    int shape_at(int j, double d)
+    {
+        const Row& R = rows_[j];
+        const int k = R.shape_k;
+        const bool in = d > R.g;
+        if (k >= 1 && (k == kMaxFitHalfWidth || !(in && d >= R.widen[k])) &&
+            (k == 1 || (in && d >= R.widen[k - 1])))
+            return k;
+        return shape_change(j, d);
+    }
+    int shape_change(int j, double d);
+
+    // The least-squares parabola over t = -k..k, per half-width k: the
+    // moments m0 = sum 1, m2 = sum t^2 and 1 / (m0 m4 - m2^2) (m4 = sum t^4).
+    struct FitMoments {
+        double m0[kMaxFitHalfWidth + 1], m2[kMaxFitHalfWidth + 1], inv_den[kMaxFitHalfWidth + 1];
+        FitMoments();
+    };
+    FitMoments fit_;
 
     int nx_, ny_;
     double dx_ = 0, dy_ = 0, E_star_ = 0, h_min_ = 0;
