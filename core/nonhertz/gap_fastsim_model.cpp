@@ -40,6 +40,8 @@ GapFastsimModel::GapFastsimModel(const GridSpec& grid)
     elements_.reserve(n / 2 + 1);
     patches_.reserve(n / 2 + 1);
     for (auto* v : {&profile_, &row_d_, &row_pool_}) v->assign(ny_, 0.0);
+    row_first_.assign(ny_, nx_);
+    row_last_.assign(ny_, -1);
 }
 
 void GapFastsimModel::validate(const ContactInput& in) const
@@ -123,6 +125,8 @@ void GapFastsimModel::set_patches(const ContactInput& in)
         const double y = grid_.y0 + j * grid_.dy;
         const int first = labels_.row_start(j), end = labels_.row_start(j + 1);
         if (first < end) j_lo = std::min(j_lo, j), j_hi = j;
+        row_first_[j] = nx_;
+        row_last_[j] = -1;
         for (int r = first; r < end; ++r) {
             const int p = labels_.run_patch(r);
             // The run's elements a .. b in the rolling frame.
@@ -130,6 +134,8 @@ void GapFastsimModel::set_patches(const ContactInput& in)
             const int b = direction_ > 0 ? labels_.run_hi(r) : nx_ - 1 - labels_.run_lo(r);
             const double elements = b - a + 1;
             i_lo = std::min(i_lo, a), i_hi = std::max(i_hi, b);
+            row_first_[j] = std::min(row_first_[j], a);
+            row_last_[j] = std::max(row_last_[j], b);
             P[p].xc += elements * (left + 0.5 * (a + b) * grid_.dx);
             P[p].yc += elements * y;
             elements_[p] += elements;
@@ -290,6 +296,8 @@ GapMarchInput GapFastsimModel::march_input(const ContactInput& in) const
     m.eta = in.xi_y;
     m.phi = d * in.phi;
     m.spin_offset = in.spin_offset >= 0.0 ? in.spin_offset : 0.0;
+    m.row_first = row_first_.data();
+    m.row_last = row_last_.data();
     return m;
 }
 

@@ -113,6 +113,7 @@ private:
     std::vector<double> longest_, elements_; // longest row [m], element count
     std::vector<PatchTotals> patches_;
     std::vector<double> profile_, row_d_, row_pool_; // per row
+    std::vector<int> row_first_, row_last_; // per row: the contact's extent, rolling frame
     std::vector<double> dp_dN_; // solve_jacobian's dpz/dN [1/m^2], rolling frame
 };
 

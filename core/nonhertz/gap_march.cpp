@@ -1,5 +1,6 @@
 #include "nonhertz/gap_march.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 
@@ -122,30 +123,68 @@ inline void step(const MarchFrame& frame, RowMarch& r, int i)
     r.py = qy;
 }
 
-// The march; Full: also the slip and the rigid slip of every element. Two
+// Zeros in the outputs of row j's elements i0 .. i1.
+template <bool Full>
+void zero_elements(const MarchFrame& frame, int j, int i0, int i1)
+{
+    if (i1 < i0) return;
+    const size_t k0 = static_cast<size_t>(frame.in.nx) * j + i0, n = i1 - i0 + 1;
+    const GapMarchOutput& out = frame.out;
+    std::fill_n(out.p + k0, n, std::complex<double>(0.0, 0.0));
+    if (Full) {
+        std::fill_n(out.slip + k0, n, std::complex<double>(0.0, 0.0));
+        std::fill_n(out.rigid + k0, n, std::complex<double>(0.0, 0.0));
+    }
+    std::fill_n(out.state + k0, n, static_cast<signed char>(0));
+}
+
+// The march; Full: also the slip and the rigid slip of every element. Four
 // rows at a time, element by element: each element's traction depends on the
-// one ahead (in slip through a root and a division), two independent rows
-// keep the processor busy while one waits.
+// one ahead (in slip through a root and a division), independent rows keep
+// the processor busy while one waits. With the rows' contact extents given,
+// the steps go over the four rows' common extent (and the element behind
+// it, which closes the segments), the rest is filled with zeros.
 template <bool Full>
 void march(const GapMarchInput& input, const GapMarchOutput& output)
 {
     const MarchFrame f(input, output);
     const GapMarchInput& in = f.in;
     const int nx = in.nx;
-    int j = 0;
-    for (; j + 1 < in.ny; j += 2) {
-        RowMarch a, b;
-        a.start(in, j);
-        b.start(in, j + 1);
-        for (int i = nx - 1; i >= -1; --i) {
-            step<Full>(f, a, i);
-            step<Full>(f, b, i);
+    constexpr int kRows = 4;
+    for (int j = 0; j < in.ny; j += kRows) {
+        const int rows = std::min(kRows, in.ny - j);
+        int first = 0, last = nx - 1; // the steps: last .. first - 1
+        if (in.row_first) {
+            first = nx, last = -1;
+            for (int r = 0; r < rows; ++r) {
+                first = std::min(first, in.row_first[j + r]);
+                last = std::max(last, in.row_last[j + r]);
+            }
+            if (last < first) first = nx; // no contact: zeros only
+            for (int r = 0; r < rows; ++r) {
+                zero_elements<Full>(f, j + r, 0, first - 2);
+                zero_elements<Full>(f, j + r, std::max(last + 1, first - 1), nx - 1);
+            }
+            if (last < 0) continue;
         }
-    }
-    if (j < in.ny) {
-        RowMarch a;
-        a.start(in, j);
-        for (int i = nx - 1; i >= -1; --i) step<Full>(f, a, i);
+        if (rows == kRows) {
+            RowMarch a, b, c, e;
+            a.start(in, j);
+            b.start(in, j + 1);
+            c.start(in, j + 2);
+            e.start(in, j + 3);
+            for (int i = last; i >= first - 1; --i) {
+                step<Full>(f, a, i);
+                step<Full>(f, b, i);
+                step<Full>(f, c, i);
+                step<Full>(f, e, i);
+            }
+        } else
+            for (int r = 0; r < rows; ++r) {
+                RowMarch a;
+                a.start(in, j + r);
+                for (int i = last; i >= first - 1; --i) step<Full>(f, a, i);
+            }
     }
 }
 

@@ -45,6 +45,12 @@ struct GapMarchInput {
     double mu = 0;
     double xi = 0, eta = 0, phi = 0;       // rolling frame [-, -, 1/m]
     double spin_offset = 0;                // fraction of dx, >= 0
+    // Optional, per row j: the first and last contact element (rolling
+    // frame; last < first in a row without contact). Given, the march
+    // steps over each group of rows' contact extent alone and fills the
+    // rest of the row with zeros; null, it steps over every element.
+    const int* row_first = nullptr;
+    const int* row_last = nullptr;
 };
 
 // Rolling frame; Mz about the frame's origin.
