@@ -110,7 +110,9 @@ constexpr int kMaxForceIterations = 100;
 
 } // namespace
 
-SemiHertz::SemiHertz(int nx, int ny) : nx_(nx), ny_(ny), rows_(ny), scratch_(nx > 0 ? nx : 0)
+SemiHertz::SemiHertz(int nx, int ny)
+    : nx_(nx), ny_(ny), rows_(ny > 0 ? ny : 0),
+      roots_(nx > 0 && ny > 0 ? static_cast<size_t>(nx) * ny : 0)
 {
     if (nx < 3 || ny < 3)
         throw Error(ErrorKind::grid_out_of_range, "the semi-Hertzian normal method needs at "
@@ -171,50 +173,18 @@ int SemiHertz::shape_change(int j, double d)
 
 namespace {
 
-// One row's semi-ellipse on the elements m = m0 .. m0 + count - 1 from the
-// locus (m0 <= 0 < m0 + count): p = scale sqrt(local - c m^2) (Hertz's
-// p0 sqrt(1 - (x / a)^2) with p0 = scale sqrt(local), a^2 = local / c),
-// written to p; their sum to *sum. The roots are taken once per |m|, on the
-// side of the locus with more elements, and mirrored (the value at -m is
-// the one at m, bitwise); the sum goes over p in order, in four partial
-// sums. A kernel of march/kernel_isa.hpp, so that the solver's ISA picks the
-// copy (AVX2: four roots at a time; W itself is unused, the compiler
-// vectorises the loops for the copy's ISA), bitwise the same result in
-// every copy (each element and each partial sum the same operations in the
-// same order). Not a target_clones function: its load-time resolver runs
-// before a sanitizer's runtime is ready (ThreadSanitizer faults in it).
-struct SemiEllipse : KernelWidths {
+// The roots sqrt(max(v, 0)) of n packed values, in place: every row's in
+// one long loop, so that the roots' latency overlaps (a row has a few
+// dozen). A kernel of march/kernel_isa.hpp, so that the solver's ISA picks
+// the copy (AVX2: four roots at a time; W itself is unused, the compiler
+// vectorises the loop for the copy's ISA), bitwise the same result in every
+// copy. Not a target_clones function: its load-time resolver runs before a
+// sanitizer's runtime is ready (ThreadSanitizer faults in it).
+struct PackedRoots : KernelWidths {
     template <int W>
-    CREEPWORK_INLINE static void run(const double& local, const double& c, const int& m0,
-                                     const int& count, const double& scale, double* const& p,
-                                     double* const& sum)
+    CREEPWORK_INLINE static void run(double* const& v, const int& n)
     {
-        const int left = -m0, right = m0 + count - 1; // elements on each side of the locus
-        if (right >= left) {
-            double* q = p + left; // q[m], m = -left .. right
-            for (int m = 0; m <= right; ++m) {
-                const double mm = m;
-                q[m] = scale * std::sqrt(std::max(local - c * mm * mm, 0.0));
-            }
-            for (int m = 1; m <= left; ++m) q[-m] = q[m];
-        } else {
-            for (int i = 0; i <= left; ++i) { // m = i - left
-                const double mm = left - i;
-                p[i] = scale * std::sqrt(std::max(local - c * mm * mm, 0.0));
-            }
-            double* q = p + left;
-            for (int m = 1; m <= right; ++m) q[m] = q[-m];
-        }
-        double s0 = 0.0, s1 = 0.0, s2 = 0.0, s3 = 0.0;
-        int i = 0;
-        for (; i + 3 < count; i += 4) {
-            s0 += p[i];
-            s1 += p[i + 1];
-            s2 += p[i + 2];
-            s3 += p[i + 3];
-        }
-        for (; i < count; ++i) s0 += p[i];
-        *sum = (s0 + s1) + (s2 + s3);
+        for (int e = 0; e < n; ++e) v[e] = std::sqrt(std::max(v[e], 0.0));
     }
 };
 
@@ -222,32 +192,61 @@ struct SemiEllipse : KernelWidths {
 
 double SemiHertz::force_at(double d, double* out)
 {
-    double force = 0.0;
+    // Per row its elements in contact, lo .. hi, and the semi-ellipse
+    // p = p_factor sqrt(local - c m^2) on them (Hertz's p0 sqrt(1 - (x /
+    // a)^2) with p0 = p_factor sqrt(local), a^2 = local / c; m = i - locus):
+    // the roots' arguments packed, once per |m| (the value at -m is the one
+    // at m, bitwise) on the side of the locus with more elements.
+    int n = 0;
     for (int j = 0; j < ny_; ++j) {
         Row& R = rows_[j];
         const int k = shape_at(j, d);
         const double local = d - R.beta * R.g;
-        int lo = 0, hi = -1;
-        double* p = out ? out + static_cast<size_t>(nx_) * j : nullptr;
-        if (local > 0.0) {
-            const double A = std::max(R.A[k], kMinCurvature);
-            const double half = std::sqrt(local / (R.alpha * A)) / dx_; // in elements
-            lo = std::max(0, static_cast<int>(std::ceil(R.locus - half)));
-            hi = std::min(nx_ - 1, static_cast<int>(std::floor(R.locus + half)));
-            if (hi >= lo) {
-                double sum = 0.0;
-                run_kernel<SemiEllipse>(isa_, local, R.alpha * A * dx_ * dx_, lo - R.locus,
-                                        hi - lo + 1, R.p_factor, p ? p + lo : scratch_.data(),
-                                        &sum);
-                force += sum;
+        R.lo = 0;
+        R.hi = -1;
+        R.packed = n;
+        if (!(local > 0.0)) continue;
+        const double A = std::max(R.A[k], kMinCurvature);
+        const double half = std::sqrt(local / (R.alpha * A)) / dx_; // in elements
+        R.lo = std::max(0, static_cast<int>(std::ceil(R.locus - half)));
+        R.hi = std::min(nx_ - 1, static_cast<int>(std::floor(R.locus + half)));
+        if (R.hi < R.lo) continue;
+        const int M = std::max(R.locus - R.lo, R.hi - R.locus);
+        const double c = R.alpha * A * dx_ * dx_;
+        double* v = roots_.data() + n;
+        for (int m = 0; m <= M; ++m) {
+            const double mm = m;
+            v[m] = local - c * mm * mm;
+        }
+        n += M + 1;
+    }
+    run_kernel<PackedRoots>(isa_, roots_.data(), n);
+    // The pressures and their sum, row by row in order, each row's in four
+    // partial sums; zeros where the last evaluation wrote outside lo .. hi.
+    double force = 0.0;
+    for (int j = 0; j < ny_; ++j) {
+        Row& R = rows_[j];
+        double* p = out + static_cast<size_t>(nx_) * j;
+        const int lo = R.lo, hi = R.hi;
+        if (hi >= lo) {
+            const double* r = roots_.data() + R.packed; // r[|i - locus|]
+            for (int i = lo; i < R.locus; ++i) p[i] = R.p_factor * r[R.locus - i];
+            for (int i = std::max(lo, R.locus); i <= hi; ++i) p[i] = R.p_factor * r[i - R.locus];
+            double s0 = 0.0, s1 = 0.0, s2 = 0.0, s3 = 0.0;
+            int i = lo;
+            for (; i + 3 <= hi; i += 4) {
+                s0 += p[i];
+                s1 += p[i + 1];
+                s2 += p[i + 2];
+                s3 += p[i + 3];
             }
+            for (; i <= hi; ++i) s0 += p[i];
+            force += (s0 + s1) + (s2 + s3);
         }
-        if (p) { // zero what the last evaluation wrote outside lo .. hi
-            for (int i = R.written_lo; i <= std::min(R.written_hi, lo - 1); ++i) p[i] = 0.0;
-            for (int i = std::max(R.written_lo, hi + 1); i <= R.written_hi; ++i) p[i] = 0.0;
-            R.written_lo = lo;
-            R.written_hi = hi;
-        }
+        for (int i = R.written_lo; i <= std::min(R.written_hi, lo - 1); ++i) p[i] = 0.0;
+        for (int i = std::max(R.written_lo, hi + 1); i <= R.written_hi; ++i) p[i] = 0.0;
+        R.written_lo = lo;
+        R.written_hi = hi;
     }
     return force * dx_ * dy_;
 }

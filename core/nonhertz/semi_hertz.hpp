@@ -68,6 +68,7 @@ private:
         int shape_k = -1;     // the k of the cached shape factors
         double alpha = 0, beta = 0, p_factor = 0;
         int written_lo = 0, written_hi = -1; // the elements of out the last force_at wrote
+        int lo = 0, hi = -1, packed = 0;     // force_at's: in contact, its roots in roots_
         // For k = 1..9: the least depth at which the fit is wider than k, from
         // the heights of the pairs of elements locus -+ (k' + 1), k' <= k
         // (nondecreasing in k; infinite from a pair past the row's ends on).
@@ -79,8 +80,8 @@ private:
         double alpha_k[kMaxFitHalfWidth + 1] = {}, beta_k[kMaxFitHalfWidth + 1] = {},
                p_factor_k[kMaxFitHalfWidth + 1] = {}, slope_k[kMaxFitHalfWidth + 1] = {};
     };
-    // Total force [N] at depth d, and the pressures when out is given (out
-    // holds zeros but for the rows' written elements, kept so).
+    // Total force [N] at depth d, and the pressures in out (out holds zeros
+    // but for the rows' written elements, kept so).
     double force_at(double d, double* out);
     // The force of the rows' semi-ellipses over the continuous x, a
     // piecewise-linear function of d with the shape factors held: d where it
@@ -113,7 +114,7 @@ private:
     int nx_, ny_;
     double dx_ = 0, dy_ = 0, E_star_ = 0, h_min_ = 0;
     std::vector<Row> rows_;
-    std::vector<double> scratch_; // one row's pressures when force_at has no out
+    std::vector<double> roots_; // force_at's roots of all rows, packed (at most nx ny)
     KernelIsa isa_ = best_kernel_isa(); // the rows' semi-ellipses' copy
 };
 
