@@ -179,14 +179,24 @@ SolveTotals GapFastsimModel::solve(const ContactInput& in, SolveMode mode)
     SolveTotals t;
     double p_max = 0.0;
     // pz(row, i): element i (caller's layout) of a row in the rolling frame.
+    // The semi-Hertzian method's rows are zero outside their extents: only
+    // those are scanned.
+    const bool extents = in.normal_method == NormalMethod::semi_hertz;
     auto scan = [&](auto pz) {
         labels_.clear_runs();
         for (int j = 0; j < ny_; ++j) {
             const double* row = pressure_.data() + static_cast<size_t>(nx_) * j;
-            for (int i = 0; i < nx_; ++i) {
+            int first = 0, last = nx_ - 1; // caller's layout
+            if (extents) {
+                int lo, hi; // rolling frame
+                semi_hertz_.row_extent(j, lo, hi);
+                first = direction_ > 0 ? lo : nx_ - 1 - hi;
+                last = direction_ > 0 ? hi : nx_ - 1 - lo;
+            }
+            for (int i = first; i <= last; ++i) {
                 if (!(pz(row, i) > 0.0)) continue;
                 const int lo = i;
-                for (; i < nx_ && pz(row, i) > 0.0; ++i) p_max = std::max(p_max, pz(row, i));
+                for (; i <= last && pz(row, i) > 0.0; ++i) p_max = std::max(p_max, pz(row, i));
                 labels_.add_run(lo, i - 1);
             }
             labels_.end_row();

@@ -112,7 +112,7 @@ constexpr int kMaxForceIterations = 100;
 
 SemiHertz::SemiHertz(int nx, int ny)
     : nx_(nx), ny_(ny), rows_(ny > 0 ? ny : 0),
-      roots_(nx > 0 && ny > 0 ? static_cast<size_t>(nx) * ny : 0)
+      roots_(nx > 0 && ny > 0 ? static_cast<size_t>(nx) * ny : 0), weights_(roots_.size())
 {
     if (nx < 3 || ny < 3)
         throw Error(ErrorKind::grid_out_of_range, "the semi-Hertzian normal method needs at "
@@ -173,82 +173,91 @@ int SemiHertz::shape_change(int j, double d)
 
 namespace {
 
-// The roots sqrt(max(v, 0)) of n packed values, in place: every row's in
-// one long loop, so that the roots' latency overlaps (a row has a few
-// dozen). A kernel of march/kernel_isa.hpp, so that the solver's ISA picks
-// the copy (AVX2: four roots at a time; W itself is unused, the compiler
-// vectorises the loop for the copy's ISA), bitwise the same result in every
-// copy. Not a target_clones function: its load-time resolver runs before a
-// sanitizer's runtime is ready (ThreadSanitizer faults in it).
-struct PackedRoots : KernelWidths {
+// The roots sqrt(max(v, 0)) of n packed values, in place, and their sum
+// weighted by w, in eight partial sums: every row's in one long loop, so
+// that the roots' latency overlaps (a row has a few dozen). A kernel of
+// march/kernel_isa.hpp, so that the solver's ISA picks the copy (AVX2: four
+// roots at a time; W itself is unused, the compiler vectorises the loops
+// for the copy's ISA), bitwise the same result in every copy (each root and
+// each partial sum the same operations in the same order). Not a
+// target_clones function: its load-time resolver runs before a sanitizer's
+// runtime is ready (ThreadSanitizer faults in it).
+struct WeightedRoots : KernelWidths {
     template <int W>
-    CREEPWORK_INLINE static void run(double* const& v, const int& n)
+    CREEPWORK_INLINE static void run(double* const& v, const double* const& w, const int& n,
+                                     double* const& sum)
     {
         for (int e = 0; e < n; ++e) v[e] = std::sqrt(std::max(v[e], 0.0));
+        double s[8] = {};
+        int e = 0;
+        for (; e + 7 < n; e += 8)
+            for (int l = 0; l < 8; ++l) s[l] += w[e + l] * v[e + l];
+        for (; e < n; ++e) s[0] += w[e] * v[e];
+        *sum = ((s[0] + s[1]) + (s[2] + s[3])) + ((s[4] + s[5]) + (s[6] + s[7]));
     }
 };
 
 } // namespace
 
-double SemiHertz::force_at(double d, double* out)
+double SemiHertz::force_at(double d)
 {
     // Per row its elements in contact, lo .. hi, and the semi-ellipse
     // p = p_factor sqrt(local - c m^2) on them (Hertz's p0 sqrt(1 - (x /
     // a)^2) with p0 = p_factor sqrt(local), a^2 = local / c; m = i - locus):
     // the roots' arguments packed, once per |m| (the value at -m is the one
-    // at m, bitwise) on the side of the locus with more elements.
-    int n = 0;
+    // at m, bitwise) on the side of the locus with more elements, each
+    // weighted by p_factor and the number of its elements (1 or 2).
+    // First each row's contact elements (the rows independent, so that
+    // their divisions and roots overlap), then the packing.
     for (int j = 0; j < ny_; ++j) {
         Row& R = rows_[j];
         const int k = shape_at(j, d);
         const double local = d - R.beta * R.g;
-        R.lo = 0;
-        R.hi = -1;
-        R.packed = n;
-        if (!(local > 0.0)) continue;
         const double A = std::max(R.A[k], kMinCurvature);
-        const double half = std::sqrt(local / (R.alpha * A)) / dx_; // in elements
-        R.lo = std::max(0, static_cast<int>(std::ceil(R.locus - half)));
-        R.hi = std::min(nx_ - 1, static_cast<int>(std::floor(R.locus + half)));
+        const double half = std::sqrt(std::max(local, 0.0) / (R.alpha * A)) / dx_; // in elements
+        R.local = local;
+        R.c = R.alpha * A * dx_ * dx_;
+        R.lo = local > 0.0 ? std::max(0, static_cast<int>(std::ceil(R.locus - half))) : 0;
+        R.hi = local > 0.0 ? std::min(nx_ - 1, static_cast<int>(std::floor(R.locus + half))) : -1;
+    }
+    int n = 0;
+    for (int j = 0; j < ny_; ++j) {
+        Row& R = rows_[j];
+        R.packed = n;
         if (R.hi < R.lo) continue;
+        const int both = std::min(R.locus - R.lo, R.hi - R.locus); // |m| on both sides
         const int M = std::max(R.locus - R.lo, R.hi - R.locus);
-        const double c = R.alpha * A * dx_ * dx_;
         double* v = roots_.data() + n;
+        double* w = weights_.data() + n;
         for (int m = 0; m <= M; ++m) {
             const double mm = m;
-            v[m] = local - c * mm * mm;
+            v[m] = R.local - R.c * mm * mm;
+            w[m] = m >= 1 && m <= both ? 2.0 * R.p_factor : R.p_factor;
         }
         n += M + 1;
     }
-    run_kernel<PackedRoots>(isa_, roots_.data(), n);
-    // The pressures and their sum, row by row in order, each row's in four
-    // partial sums; zeros where the last evaluation wrote outside lo .. hi.
-    double force = 0.0;
+    double sum = 0.0;
+    run_kernel<WeightedRoots>(isa_, roots_.data(), static_cast<const double*>(weights_.data()), n,
+                              &sum);
+    return sum * dx_ * dy_;
+}
+
+int SemiHertz::write_pressure(double scale, double* out)
+{
+    int n_contact = 0;
     for (int j = 0; j < ny_; ++j) {
         Row& R = rows_[j];
+        R.written_lo = R.lo;
+        R.written_hi = R.hi;
+        if (R.hi < R.lo) continue;
         double* p = out + static_cast<size_t>(nx_) * j;
-        const int lo = R.lo, hi = R.hi;
-        if (hi >= lo) {
-            const double* r = roots_.data() + R.packed; // r[|i - locus|]
-            for (int i = lo; i < R.locus; ++i) p[i] = R.p_factor * r[R.locus - i];
-            for (int i = std::max(lo, R.locus); i <= hi; ++i) p[i] = R.p_factor * r[i - R.locus];
-            double s0 = 0.0, s1 = 0.0, s2 = 0.0, s3 = 0.0;
-            int i = lo;
-            for (; i + 3 <= hi; i += 4) {
-                s0 += p[i];
-                s1 += p[i + 1];
-                s2 += p[i + 2];
-                s3 += p[i + 3];
-            }
-            for (; i <= hi; ++i) s0 += p[i];
-            force += (s0 + s1) + (s2 + s3);
-        }
-        for (int i = R.written_lo; i <= std::min(R.written_hi, lo - 1); ++i) p[i] = 0.0;
-        for (int i = std::max(R.written_lo, hi + 1); i <= R.written_hi; ++i) p[i] = 0.0;
-        R.written_lo = lo;
-        R.written_hi = hi;
+        const double* r = roots_.data() + R.packed; // r[|i - locus|]
+        for (int i = R.lo; i < R.locus; ++i) p[i] = R.p_factor * r[R.locus - i] * scale;
+        for (int i = std::max(R.lo, R.locus); i <= R.hi; ++i)
+            p[i] = R.p_factor * r[i - R.locus] * scale;
+        for (int i = R.lo; i <= R.hi; ++i) n_contact += p[i] > 0.0;
     }
-    return force * dx_ * dy_;
+    return n_contact;
 }
 
 double SemiHertz::continuous_depth(double N)
@@ -357,7 +366,7 @@ SemiHertzResult SemiHertz::solve(const double* h, double dx, double dy, double E
     double d = 0.0, F = 0.0;
     if (!force) {
         d = value - h_min_;
-        F = force_at(d, pressure);
+        F = force_at(d);
     } else {
         // Bracket [lo, hi] with F(lo) < N <= F(hi); log d interpolated in
         // log F (F grows like d^(3/2) for a Hertzian gap): a secant step
@@ -368,9 +377,9 @@ SemiHertzResult SemiHertz::solve(const double* h, double dx, double dy, double E
         // First guess: the depth of the continuous semi-ellipses' force.
         d = continuous_depth(N);
         double d_prev = 0.0, f_prev = 0.0, d_prev2 = 0.0, f_prev2 = 0.0;
-        // Each evaluation writes the pressures: the last one is the answer.
+        // The last evaluation is the answer (write_pressure after the loop).
         for (res.iterations = 1; res.iterations <= kMaxForceIterations; ++res.iterations) {
-            F = force_at(d, pressure);
+            F = force_at(d);
             (F < N ? lo : hi) = d;
             if (std::fabs(F - N) <= 1e-13 * N || (hi > 0.0 && hi - lo <= 1e-15 * hi)) break;
             double next;
@@ -410,17 +419,11 @@ SemiHertzResult SemiHertz::solve(const double* h, double dx, double dy, double E
         if (res.iterations > kMaxForceIterations || (F < N && std::fabs(F - N) > 1e-13 * N &&
                                                      hi > 0.0)) {
             d = hi > 0.0 ? hi : d;
-            F = force_at(d, pressure);
+            F = force_at(d);
         }
     }
     const double scale = force && F > 0.0 ? value / F : 1.0;
-    for (int j = 0; j < ny_; ++j) {
-        double* p = pressure + static_cast<size_t>(nx_) * j;
-        for (int i = rows_[j].written_lo; i <= rows_[j].written_hi; ++i) {
-            p[i] *= scale;
-            res.n_contact += p[i] > 0.0;
-        }
-    }
+    res.n_contact = write_pressure(scale, pressure);
     res.normal_force = F * scale;
     res.approach = d + h_min_;
     if (force && !(F > 0.0))

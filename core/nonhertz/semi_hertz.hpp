@@ -58,6 +58,13 @@ public:
     // dp/dN [1/m^2] per element [i + nx j] (semi_hertz_derivative.cpp),
     // from that solve's pressure [Pa].
     void load_derivative(const double* pressure, double* dp_dN) const;
+    // The elements lo .. hi of row j outside which the last solve's
+    // pressure is zero (hi < lo: the whole row).
+    void row_extent(int j, int& lo, int& hi) const
+    {
+        lo = rows_[j].written_lo;
+        hi = rows_[j].written_hi;
+    }
 
 private:
     struct Row {
@@ -67,8 +74,11 @@ private:
         double A[kMaxFitHalfWidth + 1] = {}; // curvature along x fitted over +-k elements, k >= 1
         int shape_k = -1;     // the k of the cached shape factors
         double alpha = 0, beta = 0, p_factor = 0;
-        int written_lo = 0, written_hi = -1; // the elements of out the last force_at wrote
-        int lo = 0, hi = -1, packed = 0;     // force_at's: in contact, its roots in roots_
+        int written_lo = 0, written_hi = -1; // the elements the last solve's pressure has
+        // force_at's: the elements in contact, the first of its roots in
+        // roots_, the local depth [m] and c = alpha A dx^2 [m].
+        int lo = 0, hi = -1, packed = 0;
+        double local = 0, c = 0;
         // For k = 1..9: the least depth at which the fit is wider than k, from
         // the heights of the pairs of elements locus -+ (k' + 1), k' <= k
         // (nondecreasing in k; infinite from a pair past the row's ends on).
@@ -80,9 +90,12 @@ private:
         double alpha_k[kMaxFitHalfWidth + 1] = {}, beta_k[kMaxFitHalfWidth + 1] = {},
                p_factor_k[kMaxFitHalfWidth + 1] = {}, slope_k[kMaxFitHalfWidth + 1] = {};
     };
-    // Total force [N] at depth d, and the pressures in out (out holds zeros
-    // but for the rows' written elements, kept so).
-    double force_at(double d, double* out);
+    // Total force [N] at depth d; the rows' contact elements and roots kept
+    // for write_pressure.
+    double force_at(double d);
+    // The last force_at's pressures times scale into out (zero elsewhere
+    // already); the number of elements with pressure > 0.
+    int write_pressure(double scale, double* out);
     // The force of the rows' semi-ellipses over the continuous x, a
     // piecewise-linear function of d with the shape factors held: d where it
     // is N (the discrete iteration's first guess).
@@ -114,7 +127,8 @@ private:
     int nx_, ny_;
     double dx_ = 0, dy_ = 0, E_star_ = 0, h_min_ = 0;
     std::vector<Row> rows_;
-    std::vector<double> roots_; // force_at's roots of all rows, packed (at most nx ny)
+    // force_at's roots of all rows, packed (at most nx ny), and their weights.
+    std::vector<double> roots_, weights_;
     KernelIsa isa_ = best_kernel_isa(); // the rows' semi-ellipses' copy
 };
 
