@@ -30,7 +30,10 @@ ContactModel& Solver::gap_grid_model(ModelKind kind)
 {
     check_gap_model(kind);
     if (kind == ModelKind::exact) return *gap_;
-    if (!gap_fastsim_) gap_fastsim_ = std::make_unique<GapFastsimModel>(grid_);
+    if (!gap_fastsim_) {
+        gap_fastsim_ = std::make_unique<GapFastsimModel>(grid_);
+        gap_fastsim_->set_kernel_isa(fastsim_->kernel_isa());
+    }
     return *gap_fastsim_;
 }
 
@@ -98,6 +101,7 @@ void Solver::set_kernel_isa(KernelIsa isa)
     fastsim_->set_kernel_isa(isa); // throws when this CPU cannot run it
     for (const auto& m : models_) m.second->set_kernel_isa(isa);
     if (gap_) gap_->set_kernel_isa(isa);
+    if (gap_fastsim_) gap_fastsim_->set_kernel_isa(isa);
 }
 
 const SolveTotals& Solver::solve(const ContactInput& input, SolveMode mode)

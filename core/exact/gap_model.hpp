@@ -102,6 +102,8 @@ public:
     void copy_strips(double* y, double* width) const;
     // The separate patches of the last solve (4-connected), caller's frame.
     const std::vector<PatchTotals>* patches() const override { return &patches_; }
+    // The semi-Hertzian start's kernel (every ISA gives the same bits).
+    void set_kernel_isa(KernelIsa isa) override { semi_hertz_.set_kernel_isa(isa); }
 
 private:
     struct Level {

@@ -76,6 +76,8 @@ public:
     void copy_state(int* out) const override;
     void copy_profile(double W, double* y, double* work, double* parabola) const override;
     const std::vector<PatchTotals>* patches() const override { return &patches_; }
+    // The semi-Hertzian method's kernel (every ISA gives the same bits).
+    void set_kernel_isa(KernelIsa isa) override { semi_hertz_.set_kernel_isa(isa); }
     // The flexibilities and spin centres (rolling frame) of the last solve's
     // patches, in the order of patches().
     const std::vector<GapMarchPatch>& march_patches() const { return march_patches_; }

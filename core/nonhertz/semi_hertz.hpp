@@ -58,6 +58,8 @@ public:
     // dp/dN [1/m^2] per element [i + nx j] (semi_hertz_derivative.cpp),
     // from that solve's pressure [Pa].
     void load_derivative(const double* pressure, double* dp_dN) const;
+    // The copy of the roots' kernel to run (every copy gives the same bits).
+    void set_kernel_isa(KernelIsa isa) { isa_ = isa; }
     // The elements lo .. hi of row j outside which the last solve's
     // pressure is zero (hi < lo: the whole row).
     void row_extent(int j, int& lo, int& hi) const

@@ -20,6 +20,7 @@
 
 #include "core_test_support.hpp"
 #include "contact/error.hpp"
+#include "gap_shape_grid.hpp"
 #include "test_support.h"
 
 namespace cw = creepwork;
@@ -112,6 +113,49 @@ void kernel_gives_the_baseline_bits(void**)
             }
     }
     assert_int_equal(compared, grids().size() * inputs().size() * 2);
+}
+
+// The same on gap grids: the fast model (FASTSIM with the semi-Hertzian
+// normal method, whose roots are a kernel) and the exact model (which starts
+// from that method), on shapes of one and of several patches, force and
+// approach prescribed, both rolling directions.
+void gap_kernel_gives_the_baseline_bits(void**)
+{
+    size_t compared = 0;
+    for (const gapshapes::Shape& sh : gapshapes::shapes()) {
+        if (sh.id != "N03_three_lobes" && sh.id != "N08_approach" && sh.id != "N10_tall_cells")
+            continue;
+        cw::ContactInput in;
+        in.gap = sh.h.data();
+        in.gap_len = sh.h.size();
+        in.normal_load = sh.approach_given ? cw::NormalLoad::approach : cw::NormalLoad::force;
+        in.normal_force = sh.normal_force;
+        in.approach = sh.approach;
+        in.G = sh.G;
+        in.nu = sh.nu;
+        in.mu = sh.mu;
+        in.xi_x = 4e-4;
+        in.xi_y = -3e-4;
+        in.phi = 0.5;
+        in.warm_start = false;
+        cw::Solver reference(gapshapes::grid_of(sh));
+        reference.set_kernel_isa(cw::KernelIsa::baseline);
+        cw::Solver s(gapshapes::grid_of(sh));
+        s.set_kernel_isa(g_isa);
+        for (cw::ModelKind model : {cw::ModelKind::fastsim, cw::ModelKind::exact})
+            for (int direction : {1, -1}) {
+                in.model = model;
+                in.normal_method = model == cw::ModelKind::fastsim ? cw::NormalMethod::semi_hertz
+                                                                   : cw::NormalMethod::exact;
+                in.rolling_direction = direction;
+                const std::string a = outputs(reference, in, cw::SolveMode::full);
+                const std::string b = outputs(s, in, cw::SolveMode::full);
+                assert_int_equal(a.size(), b.size());
+                assert_true(std::memcmp(a.data(), b.data(), a.size()) == 0);
+                ++compared;
+            }
+    }
+    assert_int_equal(compared, 3 * 2 * 2);
 }
 
 void best_kernel_is_the_default(void**)
@@ -207,7 +251,8 @@ int main(int argc, char** argv)
             printf("kernel %s: not supported by this CPU: SKIP\n", argv[1]);
             return kSkip;
         }
-        const struct CMUnitTest tests[] = {cmocka_unit_test(kernel_gives_the_baseline_bits)};
+        const struct CMUnitTest tests[] = {cmocka_unit_test(kernel_gives_the_baseline_bits),
+                                           cmocka_unit_test(gap_kernel_gives_the_baseline_bits)};
         return cmocka_run_group_tests(tests, nullptr, nullptr);
     }
     const struct CMUnitTest tests[] = {
