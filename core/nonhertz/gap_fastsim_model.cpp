@@ -10,6 +10,8 @@
 #include "contact/number_text.hpp"
 #include "exact/exact_work.hpp"
 #include "exact/gap_model.hpp"
+#include "march/kernel_isa.hpp"
+#include "march/simd.hpp"
 
 namespace creepwork {
 namespace {
@@ -19,6 +21,21 @@ constexpr double kPi = 3.14159265358979323846;
 constexpr double kNormalTolerance = 1e-10;
 constexpr double kNormalFirstTolerance = 1e-4;
 constexpr int kNormalMaxIterations = 500;
+
+// Whether every one of n values lies within [-1, 1] (false for NaN and
+// infinities too), by a branch-free pass: a select per value, so that the
+// loop vectorises. A kernel of march/kernel_isa.hpp (W unused: the compiler
+// vectorises the loop for the copy's ISA); a yes or no, the same in every
+// copy.
+struct AllWithinOne : KernelWidths {
+    template <int W>
+    CREEPWORK_INLINE static void run(const double* const& v, const size_t& n, bool* const& yes)
+    {
+        double bad = 0.0;
+        for (size_t k = 0; k < n; ++k) bad = std::fabs(v[k]) <= 1.0 ? bad : 1.0;
+        *yes = bad == 0.0;
+    }
+};
 
 } // namespace
 
@@ -52,14 +69,13 @@ void GapFastsimModel::validate(const ContactInput& in) const
         throw Error(ErrorKind::invalid_input,
                     "flexibility = given is invalid on a gap grid: FASTSIM takes each patch's "
                     "flexibilities from the material (G, nu) and the patch's size");
-    // The gap's values by one branch-free pass (|h| <= 1 is false for NaN and
-    // infinities too); validate_gap_input names the first bad one, and checks
-    // the other inputs.
+    // The gap's values by one branch-free pass; validate_gap_input names the
+    // first bad one, and checks the other inputs.
     const size_t n = static_cast<size_t>(nx_) * ny_;
     if (!in.gap || in.gap_len < n) validate_gap_input(in, n);
-    double bad = 0.0; // a select, not a branch: the loop vectorises
-    for (size_t k = 0; k < n; ++k) bad = std::fabs(in.gap[k]) <= 1.0 ? bad : 1.0;
-    validate_gap_input(in, bad == 0.0 ? 0 : n);
+    bool within = false;
+    run_kernel<AllWithinOne>(isa_, in.gap, n, &within);
+    validate_gap_input(in, within ? 0 : n);
 }
 
 void GapFastsimModel::solve_normal(const ContactInput& in, const double* gap)
@@ -110,7 +126,8 @@ void GapFastsimModel::solve_normal(const ContactInput& in, const double* gap)
 
 // Each patch's "patch ellipse" and its flexibilities, and its spin centre
 // (the centroid of its elements), rolling frame, from the labels' runs (in
-// the caller's layout); patch_of_ in the rolling frame.
+// the caller's layout); patch_of_ in the rolling frame, on the contact's
+// elements (the march reads no other).
 void GapFastsimModel::set_patches(const ContactInput& in)
 {
     const int count = labels_.count();
@@ -119,7 +136,6 @@ void GapFastsimModel::set_patches(const ContactInput& in)
     elements_.assign(count, 0.0);
     std::vector<GapMarchPatch>& P = march_patches_;
     const double left = direction_ > 0 ? grid_.x0 : -(grid_.x0 + (nx_ - 1) * grid_.dx);
-    std::fill(patch_of_.begin(), patch_of_.end(), -1);
     int i_lo = nx_, i_hi = -1, j_lo = ny_, j_hi = -1; // the contact's extent
     for (int j = 0; j < ny_; ++j) {
         const double y = grid_.y0 + j * grid_.dy;

@@ -76,8 +76,12 @@ public:
     void copy_state(int* out) const override;
     void copy_profile(double W, double* y, double* work, double* parabola) const override;
     const std::vector<PatchTotals>* patches() const override { return &patches_; }
-    // The semi-Hertzian method's kernel (every ISA gives the same bits).
-    void set_kernel_isa(KernelIsa isa) override { semi_hertz_.set_kernel_isa(isa); }
+    // The kernels' ISA (every ISA gives the same bits).
+    void set_kernel_isa(KernelIsa isa) override
+    {
+        isa_ = isa;
+        semi_hertz_.set_kernel_isa(isa);
+    }
     // The flexibilities and spin centres (rolling frame) of the last solve's
     // patches, in the order of patches().
     const std::vector<GapMarchPatch>& march_patches() const { return march_patches_; }
@@ -103,12 +107,13 @@ private:
     // The last solve: rolling direction, spin offset, mode, extent.
     int direction_ = 1;
     bool full_ = false;
+    KernelIsa isa_ = best_kernel_isa(); // the gap check's and the semi-Hertzian method's
     double approach_ = 0, force_ = 0, y_mid_ = 0, half_width_ = 0, extent_x_ = 0, extent_y_ = 0;
     // Per element, rolling frame [i + nx j].
     std::vector<double> gap_, gap_in_dx_, pressure_, start_, paper_, consistent_;
     std::vector<std::complex<double>> p_, slip_, rigid_;
     std::vector<signed char> state_;
-    std::vector<int> patch_of_;
+    std::vector<int> patch_of_; // on the contact's elements alone
     // Per patch (reserved for the most patches a grid can hold).
     std::vector<GapMarchPatch> march_patches_;
     std::vector<GapMarchTotals> march_totals_;
