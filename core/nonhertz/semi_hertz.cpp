@@ -197,6 +197,35 @@ struct WeightedRoots : KernelWidths {
     }
 };
 
+// A row's lowest value and the index of its first occurrence: W lanes,
+// each its own first lowest element by selects (no branch to mispredict
+// where the row turns), then the lowest of the lanes', the first of equals.
+// The answer does not depend on W. A kernel of march/kernel_isa.hpp.
+struct RowMinimum : KernelWidths {
+    template <int W>
+    CREEPWORK_INLINE static void run(const double* const& row, const int& n, double* const& lowest,
+                                     int* const& at)
+    {
+        using V = simd::Vec<W>;
+        V m = simd::broadcast<W>(row[0]), index{}, lane{};
+        for (int l = 0; l < W; ++l) lane[l] = l;
+        int i = 0;
+        for (; i + W <= n; i += W) {
+            const V v = simd::load<W>(row + i);
+            const auto lower = v < m;
+            index = lower ? lane + double(i) : index;
+            m = lower ? v : m;
+        }
+        double best = m[0], first = index[0];
+        for (int l = 1; l < W; ++l)
+            if (m[l] < best || (m[l] == best && index[l] < first)) best = m[l], first = index[l];
+        for (; i < n; ++i)
+            if (row[i] < best) best = row[i], first = i;
+        *lowest = best;
+        *at = static_cast<int>(first);
+    }
+};
+
 } // namespace
 
 double SemiHertz::force_at(double d)
@@ -304,23 +333,11 @@ SemiHertzResult SemiHertz::solve(const double* h, double dx, double dy, double E
     // Each row's lowest element (the first of equals), then the gap's.
     h_min_ = h[0];
     for (int j = 0; j < ny_; ++j) {
-        const double* row = h + static_cast<size_t>(nx_) * j;
-        // Four lanes, each its first lowest element (independent chains),
-        // then the lowest of theirs, the first of equals.
-        const int last = std::min(3, nx_ - 1); // nx >= 3
-        double m[4] = {row[0], row[1], row[2], row[last]};
-        int at[4] = {0, 1, 2, last};
-        int i = 4;
-        for (; i + 3 < nx_; i += 4)
-            for (int l = 0; l < 4; ++l)
-                if (row[i + l] < m[l]) m[l] = row[i + l], at[l] = i + l;
-        for (; i < nx_; ++i)
-            if (row[i] < m[0]) m[0] = row[i], at[0] = i;
-        int best = 0;
-        for (int l = 1; l < 4; ++l)
-            if (m[l] < m[best] || (m[l] == m[best] && at[l] < at[best])) best = l;
-        rows_[j].locus = at[best];
-        h_min_ = std::min(h_min_, m[best]);
+        double lowest = 0.0;
+        int at = 0;
+        run_kernel<RowMinimum>(isa_, h + static_cast<size_t>(nx_) * j, nx_, &lowest, &at);
+        rows_[j].locus = at;
+        h_min_ = std::min(h_min_, lowest);
     }
     // Per row: the locus, its height, the curvature across and the
     // least-squares curvature along x for each half-width k (the parabola
