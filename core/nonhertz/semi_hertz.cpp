@@ -161,11 +161,15 @@ int SemiHertz::shape_change(int j, double d)
             // pi/2 p_factor local / sqrt(alpha A), times dy.
             R.slope_k[k] = 1.57079632679489661923 * R.p_factor_k[k] * dy_ /
                            std::sqrt(R.alpha_k[k] * A);
+            R.c_k[k] = R.alpha_k[k] * A * dx_ * dx_;
+            R.inv_c_k[k] = 1.0 / R.c_k[k];
             R.known |= 1u << k;
         }
         R.alpha = R.alpha_k[k];
         R.beta = R.beta_k[k];
         R.p_factor = R.p_factor_k[k];
+        R.c = R.c_k[k];
+        R.inv_c = R.inv_c_k[k];
         R.shape_k = k;
     }
     return k;
@@ -240,12 +244,10 @@ double SemiHertz::force_at(double d)
     // their divisions and roots overlap), then the packing.
     for (int j = 0; j < ny_; ++j) {
         Row& R = rows_[j];
-        const int k = shape_at(j, d);
+        shape_at(j, d);
         const double local = d - R.beta * R.g;
-        const double A = std::max(R.A[k], kMinCurvature);
-        const double half = std::sqrt(std::max(local, 0.0) / (R.alpha * A)) / dx_; // in elements
+        const double half = std::sqrt(std::max(local, 0.0) * R.inv_c); // in elements
         R.local = local;
-        R.c = R.alpha * A * dx_ * dx_;
         R.lo = local > 0.0 ? std::max(0, static_cast<int>(std::ceil(R.locus - half))) : 0;
         R.hi = local > 0.0 ? std::min(nx_ - 1, static_cast<int>(std::floor(R.locus + half))) : -1;
     }
@@ -281,10 +283,14 @@ int SemiHertz::write_pressure(double scale, double* out)
         if (R.hi < R.lo) continue;
         double* p = out + static_cast<size_t>(nx_) * j;
         const double* r = roots_.data() + R.packed; // r[|i - locus|]
-        for (int i = R.lo; i < R.locus; ++i) p[i] = R.p_factor * r[R.locus - i] * scale;
-        for (int i = std::max(R.lo, R.locus); i <= R.hi; ++i)
+        for (int i = R.lo; i < R.locus; ++i) {
+            p[i] = R.p_factor * r[R.locus - i] * scale;
+            n_contact += p[i] > 0.0;
+        }
+        for (int i = std::max(R.lo, R.locus); i <= R.hi; ++i) {
             p[i] = R.p_factor * r[i - R.locus] * scale;
-        for (int i = R.lo; i <= R.hi; ++i) n_contact += p[i] > 0.0;
+            n_contact += p[i] > 0.0;
+        }
     }
     return n_contact;
 }

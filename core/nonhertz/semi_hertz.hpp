@@ -75,12 +75,12 @@ private:
         double B = 0;         // curvature across [1/m]
         double A[kMaxFitHalfWidth + 1] = {}; // curvature along x fitted over +-k elements, k >= 1
         int shape_k = -1;     // the k of the cached shape factors
-        double alpha = 0, beta = 0, p_factor = 0;
+        double alpha = 0, beta = 0, p_factor = 0, c = 0, inv_c = 0; // at shape_k
         int written_lo = 0, written_hi = -1; // the elements the last solve's pressure has
         // force_at's: the elements in contact, the first of its roots in
-        // roots_, the local depth [m] and c = alpha A dx^2 [m].
+        // roots_, the local depth [m].
         int lo = 0, hi = -1, packed = 0;
-        double local = 0, c = 0;
+        double local = 0;
         // For k = 1..9: the least depth at which the fit is wider than k, from
         // the heights of the pairs of elements locus -+ (k' + 1), k' <= k
         // (nondecreasing in k; infinite from a pair past the row's ends on).
@@ -91,6 +91,8 @@ private:
         unsigned known = 0;
         double alpha_k[kMaxFitHalfWidth + 1] = {}, beta_k[kMaxFitHalfWidth + 1] = {},
                p_factor_k[kMaxFitHalfWidth + 1] = {}, slope_k[kMaxFitHalfWidth + 1] = {};
+        // c = alpha A dx^2 [m] (the semi-ellipse's local - c m^2) and 1 / c.
+        double c_k[kMaxFitHalfWidth + 1] = {}, inv_c_k[kMaxFitHalfWidth + 1] = {};
     };
     // Total force [N] at depth d; the rows' contact elements and roots kept
     // for write_pressure.
