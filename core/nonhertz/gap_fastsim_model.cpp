@@ -111,16 +111,24 @@ void GapFastsimModel::solve_normal(const ContactInput& in, const double* gap)
             approach_ = normal_->approach() * dx;
         }
     }
-    // Four partial sums (independent additions; the pressures are >= 0).
+    // Row by row, over the semi-Hertzian method's extents (the pressure is
+    // zero elsewhere; all of it when N = 0), in four partial sums
+    // (independent additions).
+    const bool extents = in.normal_method == NormalMethod::semi_hertz;
     double s0 = 0.0, s1 = 0.0, s2 = 0.0, s3 = 0.0;
-    size_t k = 0;
-    for (; k + 3 < n; k += 4) {
-        s0 += pressure_[k];
-        s1 += pressure_[k + 1];
-        s2 += pressure_[k + 2];
-        s3 += pressure_[k + 3];
+    for (int j = 0; j < ny_; ++j) {
+        int lo = 0, hi = nx_ - 1;
+        if (extents) semi_hertz_.row_extent(j, lo, hi);
+        const double* p = pressure_.data() + static_cast<size_t>(nx_) * j;
+        int i = lo;
+        for (; i + 3 <= hi; i += 4) {
+            s0 += p[i];
+            s1 += p[i + 1];
+            s2 += p[i + 2];
+            s3 += p[i + 3];
+        }
+        for (; i <= hi; ++i) s0 += p[i];
     }
-    for (; k < n; ++k) s0 += pressure_[k];
     force_ = ((s0 + s1) + (s2 + s3)) * dx * dy;
 }
 

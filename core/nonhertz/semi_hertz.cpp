@@ -148,21 +148,23 @@ int SemiHertz::shape_change(int j, double d)
     if (k != R.shape_k) {
         if (!(R.known & (1u << k))) {
             const double A = std::max(R.A[k], kMinCurvature), B = R.B;
-            const double small = std::min(A, B);
+            const double small = std::min(A, B), big = std::max(A, B);
             double f, w2, K;
-            shape_table().at(std::max(A, B) / small, f, w2, K);
+            shape_table().at(big / small, f, w2, K);
             // alpha = d/(A a^2), beta = d/(B b^2); the major axis lies along
-            // the smaller curvature.
-            const double across = f / (std::max(A, B) / small * w2);
+            // the smaller curvature. (Few divisions, and none waiting on
+            // another: a row's shape is a chain of roots and divisions.)
+            const double across = f * small / (big * w2);
             R.alpha_k[k] = A <= B ? f : across;
             R.beta_k[k] = A <= B ? across : f;
-            R.p_factor_k[k] = E_star_ * std::sqrt(small * f / w2) / K;
-            // The semi-ellipse p_factor sqrt(local - alpha A x^2) over x:
-            // pi/2 p_factor local / sqrt(alpha A), times dy.
-            R.slope_k[k] = 1.57079632679489661923 * R.p_factor_k[k] * dy_ /
-                           std::sqrt(R.alpha_k[k] * A);
+            R.p_factor_k[k] = E_star_ * std::sqrt(small * f / (w2 * K * K));
             R.c_k[k] = R.alpha_k[k] * A * dx_ * dx_;
             R.inv_c_k[k] = 1.0 / R.c_k[k];
+            // The semi-ellipse p_factor sqrt(local - alpha A x^2) over x:
+            // pi/2 p_factor local / sqrt(alpha A), times dy (sqrt(alpha A)
+            // = sqrt(c) / dx).
+            R.slope_k[k] = 1.57079632679489661923 * R.p_factor_k[k] * dy_ * dx_ *
+                           std::sqrt(R.inv_c_k[k]);
             R.known |= 1u << k;
         }
         R.alpha = R.alpha_k[k];
