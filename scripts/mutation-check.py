@@ -319,11 +319,19 @@ GAP_MUTANTS = [
          tests=GAP),
     dict(id="semi-hertz-pressure", what="the semi-Hertzian peak pressure grows with the depth, not its root",
          file="core/nonhertz/semi_hertz.cpp",
-         old="            p[i] = scale * std::sqrt(std::max(local - c * m * m, 0.0));",
-         new="            p[i] = scale * std::max(local - c * m * m, 0.0);", tests=GAP),
+         old="        for (int e = 0; e < n; ++e) v[e] = std::sqrt(std::max(v[e], 0.0));",
+         new="        for (int e = 0; e < n; ++e) v[e] = std::max(v[e], 0.0);", tests=GAP),
+    dict(id="semi-hertz-mirror-once", what="a semi-Hertzian row's roots count once, not on both sides",
+         file="core/nonhertz/semi_hertz.cpp",
+         old="            w[m] = m >= 1 && m <= both ? 2.0 * R.p_factor : R.p_factor;",
+         new="            w[m] = R.p_factor;", tests=GAP),
     # FASTSIM on a gap grid: caught by the exact model on the 26 shapes
     # (test_nonhertz_fastsim), the elliptic FASTSIM on a shifted Hertzian gap
     # and the hand-computed adhesion limit per patch (test_nonhertz_capi).
+    dict(id="gap-fastsim-segment-count", what="a gap FASTSIM segment counts one element short",
+         file="core/nonhertz/gap_march.cpp",
+         old="        t.n_contact += first - last + 1;",
+         new="        t.n_contact += first - last;", tests=GAP),
     dict(id="gap-fastsim-spin-origin", what="FASTSIM on a gap takes the spin about the grid's origin",
          file="core/nonhertz/gap_march.cpp",
          old="        r.ox = (in.xi - in.phi * M.yc) / M.L1 - in.phi * (r.y - M.yc) / M.L3;",

@@ -9,18 +9,21 @@ namespace {
 
 // A segment's sums, kept in registers along it (the output arrays could
 // alias a patch's totals) and added to its patch's at its trailing edge.
+// Per element only what varies along the row: sum qx, sum qy, sum x qy,
+// sum pz; the row's y, the element area and the count come in at the
+// trailing edge (Mz = area (sum x qy - y sum qx)).
 struct SegmentSums {
-    double Fx = 0, Fy = 0, Mz = 0, Fn = 0, p_max = 0;
-    int n_contact = 0, n_slip = 0;
+    double qx = 0, qy = 0, xqy = 0, pz = 0, p_max = 0;
+    int first = 0, n_slip = 0; // the segment's first element (its leading edge)
 
-    void add_to(GapMarchTotals& t) const
+    void add_to(GapMarchTotals& t, double y, double area, int last) const
     {
-        t.Fx += Fx;
-        t.Fy += Fy;
-        t.Mz += Mz;
-        t.Fn += Fn;
+        t.Fx += qx * area;
+        t.Fy += qy * area;
+        t.Mz += (xqy - y * qx) * area;
+        t.Fn += pz * area;
         t.p_max = p_max > t.p_max ? p_max : t.p_max;
-        t.n_contact += n_contact;
+        t.n_contact += first - last + 1;
         t.n_slip += n_slip;
     }
 };
@@ -70,8 +73,8 @@ inline void step(const MarchFrame& frame, RowMarch& r, int i)
     const size_t k = r.row + i;
     const double pz = i >= 0 ? in.pressure[k] : 0.0;
     if (!(pz > 0.0)) {
-        if (r.patch >= 0) { // a trailing edge
-            r.sums.add_to(out.patch_totals[r.patch]);
+        if (r.patch >= 0) { // a trailing edge: element i + 1 was the last
+            r.sums.add_to(out.patch_totals[r.patch], r.y, area, i + 1);
             r.sums = SegmentSums{};
             r.patch = -1;
         }
@@ -84,6 +87,7 @@ inline void step(const MarchFrame& frame, RowMarch& r, int i)
     }
     if (r.patch < 0) {
         r.patch = in.patch[k];
+        r.sums.first = i;
         const GapMarchPatch& M = in.patches[r.patch];
         r.L1 = M.L1;
         r.L2 = M.L2;
@@ -112,12 +116,11 @@ inline void step(const MarchFrame& frame, RowMarch& r, int i)
     }
     out.state[k] = slips ? 2 : 1;
     SegmentSums& s = r.sums;
-    s.Fx += qx * area;
-    s.Fy += qy * area;
-    s.Mz += (x * qy - r.y * qx) * area;
-    s.Fn += pz * area;
+    s.qx += qx;
+    s.qy += qy;
+    s.xqy += x * qy;
+    s.pz += pz;
     s.p_max = pz > s.p_max ? pz : s.p_max;
-    ++s.n_contact;
     s.n_slip += slips;
     r.px = qx;
     r.py = qy;
