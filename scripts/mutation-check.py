@@ -323,8 +323,8 @@ GAP_MUTANTS = [
          new="        for (int e = 0; e < n; ++e) v[e] = std::max(v[e], 0.0);", tests=GAP),
     dict(id="semi-hertz-mirror-once", what="a semi-Hertzian row's roots count once, not on both sides",
          file="core/nonhertz/semi_hertz.cpp",
-         old="            w[m] = m >= 1 && m <= both ? 2.0 * R.p_factor : R.p_factor;",
-         new="            w[m] = R.p_factor;", tests=GAP),
+         old="                wr[m] = m >= 1 && m <= both ? two : pf;",
+         new="                wr[m] = pf;", tests=GAP),
     # FASTSIM on a gap grid: caught by the exact model on the 26 shapes
     # (test_nonhertz_fastsim), the elliptic FASTSIM on a shifted Hertzian gap
     # and the hand-computed adhesion limit per patch (test_nonhertz_capi).

@@ -112,7 +112,9 @@ constexpr int kMaxForceIterations = 100;
 
 SemiHertz::SemiHertz(int nx, int ny)
     : nx_(nx), ny_(ny), rows_(ny > 0 ? ny : 0),
-      roots_(nx > 0 && ny > 0 ? static_cast<size_t>(nx) * ny : 0), weights_(roots_.size())
+      roots_(nx > 0 && ny > 0 ? static_cast<size_t>(nx) * ny : 0), weights_(roots_.size()),
+      list_local_(rows_.size()), list_c_(rows_.size()), list_p_factor_(rows_.size()),
+      list_both_(rows_.size()), list_M_(rows_.size()), list_offset_(rows_.size())
 {
     if (nx < 3 || ny < 3)
         throw Error(ErrorKind::grid_out_of_range, "the semi-Hertzian normal method needs at "
@@ -179,20 +181,42 @@ int SemiHertz::shape_change(int j, double d)
 
 namespace {
 
-// The roots sqrt(max(v, 0)) of n packed values, in place, and their sum
-// weighted by w, in eight partial sums: every row's in one long loop, so
-// that the roots' latency overlaps (a row has a few dozen). A kernel of
-// march/kernel_isa.hpp, so that the solver's ISA picks the copy (AVX2: four
-// roots at a time; W itself is unused, the compiler vectorises the loops
-// for the copy's ISA), bitwise the same result in every copy (each root and
-// each partial sum the same operations in the same order). Not a
+// The rows' semi-ellipses packed and summed: for each listed row r, the
+// roots' arguments local - c m^2 at m = 0 .. M (M + 1 values from
+// offset[r]), each weighted by the row's pressure factor times the number
+// of its elements (two for 1 <= m <= both, the |m| on both sides of the
+// locus; one otherwise); then the roots sqrt(max(v, 0)) in place and their
+// weighted sum, in eight partial sums, in one long loop over all rows (a
+// row has a few dozen elements: its own roots would leave the vector unit
+// waiting). A kernel of march/kernel_isa.hpp, so that the solver's ISA
+// picks the copy (W itself is unused, the compiler vectorises the loops
+// for the copy's ISA), bitwise the same result in every copy (each value,
+// root and partial sum the same operations in the same order). Not a
 // target_clones function: its load-time resolver runs before a sanitizer's
 // runtime is ready (ThreadSanitizer faults in it).
+struct PackedRows {
+    const double *local, *c, *p_factor;
+    const int *both, *M, *offset;
+    int rows = 0;
+};
 struct WeightedRoots : KernelWidths {
     template <int W>
-    CREEPWORK_INLINE static void run(double* const& v, const double* const& w, const int& n,
+    CREEPWORK_INLINE static void run(const PackedRows& rows, double* const& v, double* const& w,
                                      double* const& sum)
     {
+        for (int r = 0; r < rows.rows; ++r) {
+            double* vr = v + rows.offset[r];
+            double* wr = w + rows.offset[r];
+            const double local = rows.local[r], c = rows.c[r], pf = rows.p_factor[r];
+            const double two = 2.0 * pf;
+            const int both = rows.both[r], M = rows.M[r];
+            for (int m = 0; m <= M; ++m) {
+                const double mm = m;
+                vr[m] = local - c * mm * mm;
+                wr[m] = m >= 1 && m <= both ? two : pf;
+            }
+        }
+        const int n = rows.rows > 0 ? rows.offset[rows.rows - 1] + rows.M[rows.rows - 1] + 1 : 0;
         for (int e = 0; e < n; ++e) v[e] = std::sqrt(std::max(v[e], 0.0));
         double s[8] = {};
         int e = 0;
@@ -253,25 +277,26 @@ double SemiHertz::force_at(double d)
         R.lo = local > 0.0 ? std::max(0, static_cast<int>(std::ceil(R.locus - half))) : 0;
         R.hi = local > 0.0 ? std::min(nx_ - 1, static_cast<int>(std::floor(R.locus + half))) : -1;
     }
-    int n = 0;
+    // The rows in contact, listed for the kernel.
+    int n = 0, listed = 0;
     for (int j = 0; j < ny_; ++j) {
         Row& R = rows_[j];
         R.packed = n;
         if (R.hi < R.lo) continue;
-        const int both = std::min(R.locus - R.lo, R.hi - R.locus); // |m| on both sides
         const int M = std::max(R.locus - R.lo, R.hi - R.locus);
-        double* v = roots_.data() + n;
-        double* w = weights_.data() + n;
-        for (int m = 0; m <= M; ++m) {
-            const double mm = m;
-            v[m] = R.local - R.c * mm * mm;
-            w[m] = m >= 1 && m <= both ? 2.0 * R.p_factor : R.p_factor;
-        }
+        list_local_[listed] = R.local;
+        list_c_[listed] = R.c;
+        list_p_factor_[listed] = R.p_factor;
+        list_both_[listed] = std::min(R.locus - R.lo, R.hi - R.locus); // |m| on both sides
+        list_M_[listed] = M;
+        list_offset_[listed] = n;
+        ++listed;
         n += M + 1;
     }
+    const PackedRows rows{list_local_.data(), list_c_.data(),  list_p_factor_.data(),
+                          list_both_.data(),  list_M_.data(), list_offset_.data(), listed};
     double sum = 0.0;
-    run_kernel<WeightedRoots>(isa_, roots_.data(), static_cast<const double*>(weights_.data()), n,
-                              &sum);
+    run_kernel<WeightedRoots>(isa_, rows, roots_.data(), weights_.data(), &sum);
     return sum * dx_ * dy_;
 }
 

@@ -133,6 +133,10 @@ private:
     std::vector<Row> rows_;
     // force_at's roots of all rows, packed (at most nx ny), and their weights.
     std::vector<double> roots_, weights_;
+    // force_at's rows in contact, for the roots' kernel: local depth, c,
+    // pressure factor, |m| on both sides, largest |m|, first packed value.
+    std::vector<double> list_local_, list_c_, list_p_factor_;
+    std::vector<int> list_both_, list_M_, list_offset_;
     KernelIsa isa_ = best_kernel_isa(); // the rows' semi-ellipses' copy
 };
 
