@@ -87,11 +87,13 @@ void GapFastsimModel::solve_normal(const ContactInput& in, const double* gap)
         std::fill(pressure_.begin(), pressure_.end(), 0.0);
         approach_ = *std::min_element(gap, gap + n); // the surfaces just touch
     } else {
-        const SemiHertzResult r =
-            semi_hertz_.solve(gap, dx, dy, in.G / (1.0 - in.nu), force,
-                              force ? in.normal_force : in.approach, pressure_.data());
+        const SemiHertzResult r = semi_hertz_.solve(
+            gap, dx, dy, in.G / (1.0 - in.nu), force, force ? in.normal_force : in.approach,
+            pressure_.data(), pressure_semi_hertz_);
+        pressure_semi_hertz_ = true;
         approach_ = r.approach;
         if (in.normal_method == NormalMethod::exact) {
+            pressure_semi_hertz_ = false; // overwritten below
             for (size_t k = 0; k < n; ++k) {
                 start_[k] = pressure_[k] / in.G;
                 gap_in_dx_[k] = gap[k] / dx;

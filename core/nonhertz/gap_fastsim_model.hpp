@@ -114,6 +114,9 @@ private:
     std::vector<std::complex<double>> p_, slip_, rigid_;
     std::vector<signed char> state_;
     std::vector<int> patch_of_; // on the contact's elements alone
+    // pressure_ is zero outside the semi-Hertzian method's last extents (it
+    // holds that method's pressure, or zeros).
+    bool pressure_semi_hertz_ = false;
     // Per patch (reserved for the most patches a grid can hold).
     std::vector<GapMarchPatch> march_patches_;
     std::vector<GapMarchTotals> march_totals_;

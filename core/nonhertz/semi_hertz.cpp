@@ -357,12 +357,22 @@ double SemiHertz::continuous_depth(double N)
 }
 
 SemiHertzResult SemiHertz::solve(const double* h, double dx, double dy, double E_star,
-                                 bool force, double value, double* pressure)
+                                 bool force, double value, double* pressure,
+                                 bool zero_outside_extents)
 {
+    // Zeros where the pressure may be nonzero: the last solve's extents, or
+    // everywhere.
+    if (zero_outside_extents)
+        for (int j = 0; j < ny_; ++j) {
+            const Row& R = rows_[j];
+            double* p = pressure + static_cast<size_t>(nx_) * j;
+            if (R.written_hi >= R.written_lo) std::fill(p + R.written_lo, p + R.written_hi + 1, 0.0);
+        }
+    else
+        std::fill(pressure, pressure + static_cast<size_t>(nx_) * ny_, 0.0);
     dx_ = dx;
     dy_ = dy;
     E_star_ = E_star;
-    const int n = nx_ * ny_;
     // Each row's lowest element (the first of equals), then the gap's.
     h_min_ = h[0];
     for (int j = 0; j < ny_; ++j) {
@@ -410,7 +420,6 @@ SemiHertzResult SemiHertz::solve(const double* h, double dx, double dy, double E
         R.written_lo = 0;
         R.written_hi = -1;
     }
-    std::fill(pressure, pressure + n, 0.0);
 
     SemiHertzResult res;
     double d = 0.0, F = 0.0;

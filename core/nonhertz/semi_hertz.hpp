@@ -51,9 +51,11 @@ public:
     // h [i + nx j]: the gap [m] on cells of size dx x dy; E* = G / (1 - nu).
     // force = true: value = N [N] > 0; false: value = the approach [m] from
     // the datum. pressure [i + nx j] (nx ny values) receives the pressure
-    // [Pa]. Allocates nothing.
+    // [Pa]; zero_outside_extents = true says it is zero outside the last
+    // solve's row extents (row_extent) already, so that only those are
+    // cleared. Allocates nothing.
     SemiHertzResult solve(const double* h, double dx, double dy, double E_star, bool force,
-                          double value, double* pressure);
+                          double value, double* pressure, bool zero_outside_extents = false);
     // The derivative of the last solve's pressure by the normal force,
     // dp/dN [1/m^2] per element [i + nx j] (semi_hertz_derivative.cpp),
     // from that solve's pressure [Pa].
