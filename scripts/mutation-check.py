@@ -332,6 +332,11 @@ GAP_MUTANTS = [
          file="core/nonhertz/gap_march.cpp",
          old="        t.n_contact += first - last + 1;",
          new="        t.n_contact += first - last;", tests=GAP),
+    dict(id="gap-fastsim-stale-pressure", what="after the exact normal problem the semi-Hertzian "
+         "method clears only its own last extents", file="core/nonhertz/gap_fastsim_model.cpp",
+         old="            pressure_semi_hertz_ = false; // overwritten below",
+         new="            pressure_semi_hertz_ = true;", tests=GAP,
+         require=["test_nonhertz_fastsim"]),
     dict(id="gap-fastsim-spin-origin", what="FASTSIM on a gap takes the spin about the grid's origin",
          file="core/nonhertz/gap_march.cpp",
          old="        r.ox = (in.xi - in.phi * M.yc) / M.L1 - in.phi * (r.y - M.yc) / M.L3;",

@@ -344,6 +344,42 @@ void patches_and_work_maps_add_up(void**)
     }
 }
 
+// A solver's solve does not depend on what it solved before: after solves
+// with the exact normal problem, another load and the other rolling
+// direction, a semi-Hertzian solve gives bitwise what a new solver's does
+// (pressure, traction, state, totals).
+void a_solve_does_not_depend_on_the_last(void**)
+{
+    for (const char* id : {"N03_three_lobes", "N06_flange_root"}) {
+        const gapshapes::Shape& s = shape(id);
+        cw::ContactInput in = input_of(s);
+        in.normal_method = cw::NormalMethod::semi_hertz;
+        cw::Solver fresh(gapshapes::grid_of(s));
+        const cw::SolveTotals expected = fresh.solve(in, cw::SolveMode::full);
+        cw::Solver used(gapshapes::grid_of(s));
+        cw::ContactInput other = in;
+        other.normal_method = cw::NormalMethod::exact;
+        used.solve(other, cw::SolveMode::full);
+        const cw::SolveTotals after_exact = used.solve(in, cw::SolveMode::full);
+        other = in;
+        other.normal_force *= 1.7;
+        other.rolling_direction = -in.rolling_direction;
+        used.solve(other, cw::SolveMode::forces_only);
+        const cw::SolveTotals after_other = used.solve(in, cw::SolveMode::full);
+        for (const cw::SolveTotals* t : {&after_exact, &after_other}) {
+            for (auto m : {&cw::SolveTotals::Fx, &cw::SolveTotals::Fy, &cw::SolveTotals::Mz,
+                           &cw::SolveTotals::normal_force, &cw::SolveTotals::approach,
+                           &cw::SolveTotals::p_max, &cw::SolveTotals::W_consistent})
+                assert_true(std::memcmp(&(t->*m), &(expected.*m), sizeof(double)) == 0);
+            assert_int_equal(t->n_contact, expected.n_contact);
+            assert_int_equal(t->n_slip, expected.n_slip);
+            for (cw::Field f : {cw::Field::pz, cw::Field::px, cw::Field::py})
+                assert_true(cwtest::field(used, f) == cwtest::field(fresh, f));
+            assert_true(cwtest::states(used) == cwtest::states(fresh));
+        }
+    }
+}
+
 void expect_error(cw::Solver& s, const cw::ContactInput& in, cw::ErrorKind kind,
                   const char* names)
 {
@@ -454,6 +490,7 @@ int main(int argc, char** argv)
         cmocka_unit_test(moving_the_contact_changes_only_the_transfer_term),
         cmocka_unit_test(rolling_direction_mirrors),
         cmocka_unit_test(patches_and_work_maps_add_up),
+        cmocka_unit_test(a_solve_does_not_depend_on_the_last),
         cmocka_unit_test(errors_name_the_input),
         cmocka_unit_test(accuracy_against_the_exact_model),
     };
