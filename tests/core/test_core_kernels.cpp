@@ -125,15 +125,7 @@ void gap_kernel_gives_the_baseline_bits(void**)
     for (const gapshapes::Shape& sh : gapshapes::shapes()) {
         if (sh.id != "N03_three_lobes" && sh.id != "N08_approach" && sh.id != "N10_tall_cells")
             continue;
-        cw::ContactInput in;
-        in.gap = sh.h.data();
-        in.gap_len = sh.h.size();
-        in.normal_load = sh.approach_given ? cw::NormalLoad::approach : cw::NormalLoad::force;
-        in.normal_force = sh.normal_force;
-        in.approach = sh.approach;
-        in.G = sh.G;
-        in.nu = sh.nu;
-        in.mu = sh.mu;
+        cw::ContactInput in = gapshapes::contact_input(sh);
         in.xi_x = 4e-4;
         in.xi_y = -3e-4;
         in.phi = 0.5;

@@ -23,6 +23,7 @@
 #include <vector>
 
 #include "contact/kalker_coefficients.hpp"
+#include "gap_shape_grid.hpp"
 #include "gap_shapes.hpp"
 #include "gap_test_support.hpp"
 #include "solver.hpp"
@@ -161,17 +162,8 @@ int main()
     const std::vector<gapshapes::Shape> shapes = gapshapes::shapes();
     for (size_t r = 0; r < shapes.size(); ++r) {
         const gapshapes::Shape& s = shapes[r];
-        cw::GridSpec g;
-        g.kind = cw::GridKind::gap;
-        g.nx = s.nx, g.ny = s.ny, g.x0 = s.x0, g.y0 = s.y0, g.dx = s.dx, g.dy = s.dy;
-        cw::ContactInput in;
-        in.model = cw::ModelKind::exact;
-        in.gap = s.h.data();
-        in.gap_len = s.h.size();
-        in.normal_load = s.approach_given ? cw::NormalLoad::approach : cw::NormalLoad::force;
-        in.normal_force = s.normal_force;
-        in.approach = s.approach;
-        in.G = s.G, in.nu = s.nu, in.mu = s.mu;
+        const cw::GridSpec g = gapshapes::grid_of(s);
+        cw::ContactInput in = gapshapes::contact_input(s);
         in.rolling_direction = 1; // the march rolls towards +x
         in.xi_x = t.number(r, "xi_x"), in.xi_y = t.number(r, "xi_y"), in.phi = t.number(r, "phi_per_m");
         study(s.id, g, in, worst);

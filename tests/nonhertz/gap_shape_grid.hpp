@@ -23,6 +23,25 @@ inline creepwork::GridSpec grid_of(const Shape& s)
     return g;
 }
 
+// The contact of a shape: its gap (borrowed: s must outlive the input),
+// load, material and rolling direction; model, normal method and creepages
+// are the caller's (the defaults: exact, exact, none).
+inline creepwork::ContactInput contact_input(const Shape& s)
+{
+    creepwork::ContactInput in;
+    in.gap = s.h.data();
+    in.gap_len = s.h.size();
+    in.normal_load = s.approach_given ? creepwork::NormalLoad::approach
+                                      : creepwork::NormalLoad::force;
+    in.normal_force = s.normal_force;
+    in.approach = s.approach;
+    in.G = s.G;
+    in.nu = s.nu;
+    in.mu = s.mu;
+    in.rolling_direction = s.rolling_direction;
+    return in;
+}
+
 // The Hertzian gap of an elliptic contact on the cells of the elliptic exact
 // model's uniform n x n grid of box scale S (cell centres): the grid, and
 // the gap in h. On it the exact model on a gap solves the elliptic model's

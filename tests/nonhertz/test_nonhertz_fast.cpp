@@ -79,17 +79,8 @@ double run_new(std::string& table)
     for (size_t r = 0; r < shapes.size(); ++r) {
         const gapshapes::Shape& s = shapes[r];
         const cw::GridSpec g = gapshapes::grid_of(s);
-        cw::ContactInput in;
+        cw::ContactInput in = gapshapes::contact_input(s);
         in.model = cw::ModelKind::exact;
-        in.gap = s.h.data();
-        in.gap_len = s.h.size();
-        in.normal_load = s.approach_given ? cw::NormalLoad::approach : cw::NormalLoad::force;
-        in.normal_force = s.normal_force;
-        in.approach = s.approach;
-        in.G = s.G;
-        in.nu = s.nu;
-        in.mu = s.mu;
-        in.rolling_direction = s.rolling_direction;
         in.xi_x = t.number(r, "xi_x");
         in.xi_y = t.number(r, "xi_y");
         in.phi = t.number(r, "phi_per_m");

@@ -84,17 +84,8 @@ void compare(const std::string& id, const cw::GridSpec& g, cw::ContactInput in, 
 
 cw::ContactInput input_of(const gapshapes::Shape& s)
 {
-    cw::ContactInput in;
+    cw::ContactInput in = gapshapes::contact_input(s);
     in.model = cw::ModelKind::fastsim;
-    in.gap = s.h.data();
-    in.gap_len = s.h.size();
-    in.normal_load = s.approach_given ? cw::NormalLoad::approach : cw::NormalLoad::force;
-    in.normal_force = s.normal_force;
-    in.approach = s.approach;
-    in.G = s.G;
-    in.nu = s.nu;
-    in.mu = s.mu;
-    in.rolling_direction = s.rolling_direction;
     in.warm_start = false;
     return in;
 }
