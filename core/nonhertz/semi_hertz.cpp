@@ -169,7 +169,6 @@ int SemiHertz::shape_change(int j, double d)
                            std::sqrt(R.inv_c_k[k]);
             R.known |= 1u << k;
         }
-        R.alpha = R.alpha_k[k];
         R.beta = R.beta_k[k];
         R.p_factor = R.p_factor_k[k];
         R.c = R.c_k[k];

@@ -77,7 +77,7 @@ private:
         double B = 0;         // curvature across [1/m]
         double A[kMaxFitHalfWidth + 1] = {}; // curvature along x fitted over +-k elements, k >= 1
         int shape_k = -1;     // the k of the cached shape factors
-        double alpha = 0, beta = 0, p_factor = 0, c = 0, inv_c = 0; // at shape_k
+        double beta = 0, p_factor = 0, c = 0, inv_c = 0; // at shape_k
         int written_lo = 0, written_hi = -1; // the elements the last solve's pressure has
         // force_at's: the elements in contact, the first of its roots in
         // roots_, the local depth [m].
