@@ -2,7 +2,8 @@
 // centres of a regular grid, ../shared/reference/nonhertz/README.md), the
 // DEV cases of ../shared/reference/nonhertz/dev/cases.csv and the cases of
 // tests/core/data/nonhertz (CONTACT commit d431cdb, module 3) as solver
-// inputs, and a reading of CONTACT's element fields.
+// inputs, a reading of CONTACT's element fields, and the elliptic contact of
+// the Hertzian-gap checks.
 #pragma once
 
 #include <algorithm>
@@ -181,6 +182,24 @@ inline ContactFields read_contact_fields(const std::string& path, const creepwor
         f.py[k] = t.number(r, "py_Pa");
     }
     return f;
+}
+
+// The elliptic contact whose Hertzian gap the gap models must reproduce:
+// steel, a / b = 1.4, partial slip with spin, the exact model at tolerance
+// 1e-12, cold; on a kHertzianGapCells-square uniform grid of box scale
+// kHertzianGapScale (gapshapes::hertzian_gap builds that grid's gap).
+constexpr int kHertzianGapCells = 24;
+constexpr double kHertzianGapScale = 1.2;
+inline creepwork::ContactInput hertzian_gap_reference()
+{
+    creepwork::ContactInput e = steel_contact(1.4);
+    e.model = creepwork::ModelKind::exact;
+    e.xi_x = 4e-4;
+    e.xi_y = -3e-4;
+    e.phi = 0.3;
+    e.tolerance = 1e-12;
+    e.warm_start = false;
+    return e;
 }
 
 } // namespace cwtest

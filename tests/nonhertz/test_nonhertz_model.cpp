@@ -51,15 +51,9 @@ const gapshapes::Shape& shape(const std::string& id)
 // tolerance 1e-12: one discrete problem reached by two paths.
 void hertzian_gap_reproduces_the_elliptic_model(void**)
 {
-    const int n = 24;
-    const double S = 1.2;
-    cw::ContactInput e = cwtest::steel_contact(1.4);
-    e.model = cw::ModelKind::exact;
-    e.xi_x = 4e-4;
-    e.xi_y = -3e-4;
-    e.phi = 0.3;
-    e.tolerance = 1e-12;
-    e.warm_start = false;
+    const int n = cwtest::kHertzianGapCells;
+    const double S = cwtest::kHertzianGapScale;
+    cw::ContactInput e = cwtest::hertzian_gap_reference();
     cw::Solver elliptic(cwtest::uniform_grid(n, n, S));
     const cw::SolveTotals te = elliptic.solve(e, cw::SolveMode::full);
 
