@@ -157,10 +157,10 @@ int SemiHertz::shape_change(int j, double d)
             // the smaller curvature. (Few divisions, and none waiting on
             // another: a row's shape is a chain of roots and divisions.)
             const double across = f * small / (big * w2);
-            R.alpha_k[k] = A <= B ? f : across;
+            const double alpha = A <= B ? f : across;
             R.beta_k[k] = A <= B ? across : f;
             R.p_factor_k[k] = E_star_ * std::sqrt(small * f / (w2 * K * K));
-            R.c_k[k] = R.alpha_k[k] * A * dx_ * dx_;
+            R.c_k[k] = alpha * A * dx_ * dx_;
             R.inv_c_k[k] = 1.0 / R.c_k[k];
             // The semi-ellipse p_factor sqrt(local - alpha A x^2) over x:
             // pi/2 p_factor local / sqrt(alpha A), times dy (sqrt(alpha A)

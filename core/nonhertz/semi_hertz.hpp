@@ -91,8 +91,8 @@ private:
         // shape factors, and the continuous semi-ellipse's force per unit
         // local depth [N/m].
         unsigned known = 0;
-        double alpha_k[kMaxFitHalfWidth + 1] = {}, beta_k[kMaxFitHalfWidth + 1] = {},
-               p_factor_k[kMaxFitHalfWidth + 1] = {}, slope_k[kMaxFitHalfWidth + 1] = {};
+        double beta_k[kMaxFitHalfWidth + 1] = {}, p_factor_k[kMaxFitHalfWidth + 1] = {},
+               slope_k[kMaxFitHalfWidth + 1] = {};
         // c = alpha A dx^2 [m] (the semi-ellipse's local - c m^2) and 1 / c.
         double c_k[kMaxFitHalfWidth + 1] = {}, inv_c_k[kMaxFitHalfWidth + 1] = {};
     };
