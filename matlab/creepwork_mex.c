@@ -16,7 +16,7 @@
  * Errors: mexErrMsgIdAndTxt with the identifier creepwork:<CW_ERR_ name> and
  * the library's message naming the input. Implausible units warn with the
  * identifier creepwork:implausibleUnits, with the CLI's thresholds
- * (examples/cli/contact_inputs.cpp, plausibility_warnings).
+ * (programs/cli/contact_inputs.cpp, plausibility_warnings).
  *
  * The same source builds as an Octave MEX (mkoctfile --mex) and a MATLAB
  * MEX (mex); it uses only the MEX API both provide. */
@@ -317,7 +317,7 @@ static mxArray* from_structs(const struct_info* s, const void* in, size_t size, 
 
 /* ------------------------------------------------------- unit plausibility */
 
-/* The CLI's rules (examples/cli/contact_inputs.cpp, plausibility_warnings):
+/* The CLI's rules (programs/cli/contact_inputs.cpp, plausibility_warnings):
  * one warning per rule, with how many contacts break it. */
 typedef struct {
     const char* field;

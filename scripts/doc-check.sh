@@ -96,7 +96,7 @@ fi
 
 # 5. No development history in user-facing text.
 history='issue [0-9]|item [0-9]|this stop|stop [0-9]|start of this|not kept|once available|other developers'
-if hits=$(grep -rniE "$history" README.md doc capi/include examples/cli fortran core 2>/dev/null |
+if hits=$(grep -rniE "$history" README.md doc capi/include programs/cli fortran core 2>/dev/null |
           grep -v '^doc/dev/'); then
   echo "$hits" >&2
   problem "the lines above carry development history into user-facing text"

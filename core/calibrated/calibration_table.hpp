@@ -13,7 +13,7 @@
 // fade, equalise, edge, blend and blend_half from the table, linear in
 // ln(a/b) between its nodes and constant beyond them. The pressure scale is
 // the parabolic law's.
-// The alphas were fitted by creepwork_calibration fit (tests/calibration/)
+// The alphas were fitted by creepwork_calibration fit (tools/calibration/)
 // on the training set only; calibration_table_data.cpp is its output.
 #pragma once
 
@@ -49,7 +49,7 @@ extern const CalibrationNode kCalibrationTable[kCalibrationNodes]; // ascending 
 CalibrationParams calibration_params(const CalibrationNode& alphas, const NormalisedCreepage& s);
 // The alphas of table (kCalibrationNodes nodes, ascending a/b) at a/b:
 // every member linear in ln(a/b) between nodes, constant beyond them. The
-// fit (tests/calibration/) reads its trial tables through this too.
+// fit (tools/calibration/) reads its trial tables through this too.
 CalibrationNode calibration_node(const CalibrationNode* table, double a_over_b);
 // The built-in table's alphas at a/b.
 inline CalibrationNode calibration_node(double a_over_b)

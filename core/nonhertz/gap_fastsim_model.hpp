@@ -16,7 +16,7 @@
 //     patch Kalker's flexibilities L1, L2, L3 of its "patch ellipse": a =
 //     half the patch's largest row length along x, b = its area / (pi a),
 //     from G and nu (kalker_flexibilities). Measured against the exact model
-//     on 26 shapes (tests/nonhertz/fastsim_flexibility_study.cpp) this rule
+//     on 26 shapes (bench/fastsim_flexibility_study.cpp) this rule
 //     beats flexibilities per row (each segment's own half length) and one
 //     ellipse for the whole contact: a patch deforms as one elastic body, so
 //     its flexibility follows its own size, and two patches far apart do not

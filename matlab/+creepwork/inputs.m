@@ -8,7 +8,7 @@ function [p, opt] = inputs(varargin)
 %   functions of the package; users call those.
 %
 %   Without a 'grid', the exact model gets the creepwork CLI's grid
-%   (examples/cli/contact_inputs.hpp, kExactBoxScale): uniform, 24 x 24
+%   (programs/cli/contact_inputs.hpp, kExactBoxScale): uniform, 24 x 24
 %   elements over 1.2 times the semi-axes (20 across the ellipse, two guard
 %   cells on each side); the other models the library's (Kalker's strips,
 %   20 x 20).

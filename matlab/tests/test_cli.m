@@ -1,4 +1,4 @@
-% creepwork.solve against the creepwork program (examples/cli) on the same
+% creepwork.solve against the creepwork program (programs/cli) on the same
 % inputs: every number of cw_result that `creepwork solve --format json`
 % prints equals the MEX's (== on doubles), for FASTSIM, the calibrated and
 % the exact model (each with the CLI's default grid), and the fields of

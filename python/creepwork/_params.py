@@ -151,7 +151,7 @@ WEAR_PARAMS = Keywords("cw_wear_params")
 
 def exact_default_grid():
     """The grid the exact model gets when none is given, as the CLI's
-    (examples/cli/contact_inputs.hpp, kExactBoxScale): CONTACT's layout, the
+    (programs/cli/contact_inputs.hpp, kExactBoxScale): CONTACT's layout, the
     uniform grid over a box 1.2 times the semi-axes with 1.2 times the
     library's default element count (24 x 24: 20 elements across the
     ellipse, two guard cells on each side)."""

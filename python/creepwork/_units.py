@@ -2,7 +2,7 @@
 contact: millimetres typed as metres, kN as N, MPa as Pa, per cent as a ratio.
 
 The rules and thresholds are the creepwork CLI's, plausibility_warnings() in
-examples/cli/contact_inputs.cpp, so every door warns about the same inputs
+programs/cli/contact_inputs.cpp, so every door warns about the same inputs
 (tests/test_units.py runs both on values either side of each threshold).
 The library itself never warns: it works in any consistent units.
 """

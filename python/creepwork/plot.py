@@ -1,5 +1,5 @@
 """Pictures of one contact, as the creepwork CLI draws them
-(examples/cli/patch_plots.cpp): maps over the patch of the slip/adhesion
+(programs/cli/patch_plots.cpp): maps over the patch of the slip/adhesion
 states, the energy-consistent work per unit area, the tractions and
 micro-slips along x and y, the moment per unit area and the traction-bound
 utilisation |p|/(mu pz), each titled with its total; and the lateral work
@@ -25,7 +25,7 @@ from ._library import CONSTANTS
 if TYPE_CHECKING:
     from ._solver import Result
 
-# The CLI's palettes (examples/cli/gnuplot.cpp): white to brown for values
+# The CLI's palettes (programs/cli/gnuplot.cpp): white to brown for values
 # of one sign, blue-white-red for signed ones, blue adhesion / red slip.
 _SEQUENTIAL = [(0.0, "white"), (0.2, "#fee391"), (0.55, "#fe9929"), (1.0, "#8c2d04")]
 _DIVERGING = [(0.0, "#2166ac"), (0.3, "#92c5de"), (0.5, "white"), (0.7, "#f4a582"),

@@ -1,4 +1,4 @@
-"""creepwork.solve against the creepwork program (examples/cli) on the same
+"""creepwork.solve against the creepwork program (programs/cli) on the same
 inputs: the totals of `creepwork solve --format json` and the fields of
 `creepwork solve --out DIR` (fields.csv, profile.csv, written with the
 shortest decimal that reads back as the same double) are bitwise the

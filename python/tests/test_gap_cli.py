@@ -1,5 +1,5 @@
 """The Jacobian on a gap grid through the package against the creepwork
-program (examples/cli): `creepwork solve --gap FILE --jacobian` gives the
+program (programs/cli): `creepwork solve --gap FILE --jacobian` gives the
 same numbers bitwise (one library behind two interfaces)."""
 
 import json

@@ -1,5 +1,5 @@
 """Implausible units warn with creepwork.UnitWarning exactly where the CLI
-warns (its plausibility_warnings, examples/cli/contact_inputs.cpp): each
+warns (its plausibility_warnings, programs/cli/contact_inputs.cpp): each
 rule is tried just beyond and just inside its threshold, through solve(),
 solve_many() and the CLI, and all three must agree."""
 

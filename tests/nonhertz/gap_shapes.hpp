@@ -1,6 +1,6 @@
 // The non-Hertzian validation shapes of tests/nonhertz: gaps made by formula
 // on a regular grid, with the load, material and creepages of each case.
-// tools/make_contact_reference.cpp gave exactly these inputs to CONTACT
+// tools/contact_reference/make_contact_reference.cpp gave exactly these inputs to CONTACT
 // (data/README.md) and the tests rebuild them here, so the data files hold
 // only CONTACT's results. None of these shapes was used to choose anything
 // in the model (the DEV shapes of ../shared/reference/nonhertz were the ones

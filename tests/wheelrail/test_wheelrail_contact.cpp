@@ -3,7 +3,7 @@
 // shifts x 2 wheels, CONTACT's own example) and 21 patches of 18 new cases
 // with other shifts, yaw, roll, velocities, grids, cant, curvature, rail
 // placement, patch separation and turned contact angles
-// (tests/wheelrail/contact_reference). The
+// (tools/contact_reference/wheelrail). The
 // vertical position is CONTACT's z_ws for 10-20 kN in full precision, so the
 // comparison is of the geometry alone; CONTACT's reference point is its
 // geometric weighted centre, fixed before its normal solution.
