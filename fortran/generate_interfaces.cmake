@@ -34,7 +34,8 @@ set(nullable
   cw_wear_get_strips.y cw_wear_get_strips.width cw_wear_get_strips.depth
   cw_wear_get_strips.parabola cw_wheelrail_add_wear.result)
 # Struct pointers that are arrays (count elements): bound as type(cw_s) :: x(*).
-set(struct_arrays cw_batch_solve.params cw_batch_solve.results cw_solver_get_patches.out)
+set(struct_arrays cw_batch_solve.params cw_batch_solve.results cw_solver_get_patches.out
+  cw_params_check.params cw_params_check.out cw_wheelrail_check.out)
 
 if(NOT HEADER OR NOT TYPES OR NOT BINDINGS)
   message(FATAL_ERROR "usage: cmake -DHEADER=<creepwork.h> -DTYPES=<file.inc> "
@@ -75,6 +76,7 @@ function(fortran_scalar ctype out)
   set(map_size_t "integer(c_size_t)")
   set(map_int64_t "integer(c_int64_t)")
   set(map_uint64_t "integer(c_int64_t)") # no unsigned kinds in Fortran: the bits pass unchanged
+  set(map_char "character(kind=c_char)") # char x[N]: N characters, NUL-terminated text
   if(DEFINED map_${ctype})
     set(${out} "${map_${ctype}}" PARENT_SCOPE)
   else()
@@ -183,6 +185,9 @@ foreach(body IN LISTS bodies)
       message(FATAL_ERROR "${sname}: no Fortran type for field type '${ctype}' in '${line}'")
     endif()
     set(zero "0")
+    if(ctype STREQUAL "char")
+      set(zero "c_null_char")
+    endif()
     if(pointer_field)
       set(ftype "type(c_ptr)")
       set(zero "c_null_ptr")
