@@ -8,7 +8,10 @@ extern "C" {
 int cw_wheelrail_check(const cw_wheelrail* wheelrail, cw_check* out, size_t len, size_t* found)
 {
     if (!wheelrail) return CW_ERR_NULL_POINTER;
-    return guarded(&wheelrail->last_error, [&] {
+    // The handle's last error stays the last solve's unless this call fails:
+    // a caller checks after a failed solve and reports both.
+    std::string message;
+    const int status = guarded(&message, [&] {
         const std::vector<cw::Implausible> w =
             wr::check_wheelrail(wheelrail->contact.geometry(), wheelrail->inputs);
         std::vector<cw_check> checks(w.size());
@@ -16,6 +19,8 @@ int cw_wheelrail_check(const cw_wheelrail* wheelrail, cw_check* out, size_t len,
         write_checks(checks, out, len, found);
         return CW_OK;
     });
+    if (status != CW_OK) wheelrail->last_error = message;
+    return status;
 }
 
 } // extern "C"

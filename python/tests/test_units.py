@@ -70,7 +70,7 @@ def test_solve_many_warns_once_per_rule_with_the_count():
         out = creepwork.solve_many(a=a, b=a, N=100e3, xi_x=1e-3)
     messages = [str(w.message) for w in caught if w.category is creepwork.UnitWarning]
     assert len(messages) == 2  # a and b, once each
-    assert "(2 of 1000 values)" in messages[0] and "millimetres" in messages[0]
+    assert "(2 of 1000 contacts)" in messages[0] and "millimetres" in messages[0]
     assert caught[0].filename == __file__  # points at the caller's line
     assert out.ok.all()
 

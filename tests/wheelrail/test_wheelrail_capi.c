@@ -8,6 +8,7 @@
 #include <stdint.h>
 
 #include <math.h>
+#include <stdio.h>
 #include <string.h>
 
 #include <cmocka.h>
@@ -300,7 +301,11 @@ static void check_finds_unit_mistakes_and_flange_climbs(void** state)
     m.y = 3.0;
     m.yaw = 0.0;
     assert_true(cw_wheelrail_solve(w, &m, CW_WHEELRAIL_FORCE, 1e4, &t) != CW_OK);
+    char error[512];
+    snprintf(error, sizeof error, "%s", cw_wheelrail_last_error(w));
+    assert_true(error[0] != '\0');
     assert_int_equal(checks(w, c), 1);
+    assert_string_equal(cw_wheelrail_last_error(w), error); /* the solve's, still */
     assert_int_equal(c[0].rule, CW_CHECK_WHEELSET_SHIFT);
     assert_true(c[0].value == 3.0);
     size_t count = 0;

@@ -236,8 +236,9 @@ CW_API const char* cw_wheelrail_last_error(const cw_wheelrail* wheelrail);
  * patch on the flange, each with its likely cause (a profile origin off,
  * a lateral shift in mm typed as m); and, from the profiles alone, a wheel
  * whose flange tip lies on the field side of its origin. Before any solve
- * only params and the profiles are checked. Fills out as cw_params_check.
- * Errors: CW_ERR_NULL_POINTER (wheelrail, found), CW_ERR_STRUCT_SIZE,
+ * only params and the profiles are checked. Fills out as cw_params_check;
+ * leaves cw_wheelrail_last_error as the last solve left it unless this call
+ * fails. Errors: CW_ERR_NULL_POINTER (wheelrail, found), CW_ERR_STRUCT_SIZE,
  * CW_ERR_BUFFER_TOO_SMALL. */
 CW_API int cw_wheelrail_check(const cw_wheelrail* wheelrail, cw_check* out, size_t len,
                               size_t* found);
