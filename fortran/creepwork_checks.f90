@@ -10,6 +10,7 @@ module creepwork_checks
    implicit none
    private
    public :: cw_check_init, cw_params_check, cw_check_text, cw_grid_init_model, cw_input_name
+   public :: allocate_checks
 
 contains
 
@@ -19,6 +20,19 @@ contains
       integer(c_int) :: status
       status = capi_check_init(check)
    end subroutine cw_check_init
+
+   ! checks := found initialised cw_check records (a count query's answer),
+   ! ready for the check function to fill.
+   subroutine allocate_checks(checks, found)
+      type(cw_check), allocatable, intent(inout) :: checks(:)
+      integer(c_size_t), intent(in) :: found
+      integer :: k
+      if (allocated(checks)) deallocate (checks)
+      allocate (checks(found))
+      do k = 1, int(found)
+         call cw_check_init(checks(k))
+      end do
+   end subroutine allocate_checks
 
    ! The grid a model gets when none is given: for CW_MODEL_EXACT CONTACT's
    ! layout (uniform, 24 x 24 over 1.2 times the semi-axes), for the others
@@ -55,15 +69,11 @@ contains
       type(cw_check) :: none(1)
       integer(c_size_t) :: found
       integer(c_int) :: status
-      integer :: k
       type(outcome) :: o
       found = 0
       status = capi_params_check(grid, params, size(params, kind=c_size_t), none, 0_c_size_t, found)
       if (status == CW_OK) then
-         allocate (checks(found))
-         do k = 1, int(found)
-            call cw_check_init(checks(k))
-         end do
+         call allocate_checks(checks, found)
          if (found > 0) status = capi_params_check(grid, params, size(params, kind=c_size_t), &
                                                    checks, found, found)
       end if

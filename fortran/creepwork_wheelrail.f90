@@ -12,6 +12,7 @@ module creepwork_wheelrail
    use creepwork_capi
    use creepwork_handle
    use creepwork_wear, only: cw_wear_profile_type
+   use creepwork_checks, only: allocate_checks
    implicit none
    private
    public :: cw_wheelrail_params_init, cw_wheelrail_motion_init, cw_wheelrail_totals_init, &
@@ -291,8 +292,6 @@ contains
       character(len=:), allocatable, intent(out), optional :: errmsg
       type(cw_check) :: none(1)
       integer(c_size_t) :: found
-      integer(c_int) :: status
-      integer :: k
       type(outcome) :: o
       o = created(self)
       if (o%status == CW_OK) then
@@ -300,10 +299,7 @@ contains
          o = status_outcome(self, capi_wheelrail_check(handle_of(self), none, 0_c_size_t, found))
       end if
       if (o%status == CW_OK) then
-         allocate (checks(found))
-         do k = 1, int(found)
-            status = capi_check_init(checks(k))
-         end do
+         call allocate_checks(checks, found)
          if (found > 0) o = status_outcome(self, capi_wheelrail_check(handle_of(self), checks, found, found))
       end if
       if (.not. allocated(checks)) allocate (checks(0))

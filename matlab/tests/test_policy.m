@@ -68,16 +68,3 @@ function test_policy()
   assert(all(size(e.state) == [24 24]));
   disp('one policy at the Octave door');
 end
-
-function expect_error(f, id, pattern)
-  try
-    f();
-  catch err
-    assert(strcmp(err.identifier, id), sprintf('identifier %s, expected %s (%s)', ...
-                                               err.identifier, id, err.message));
-    assert(~isempty(regexp(err.message, pattern, 'once')), ...
-           sprintf('message "%s" does not match %s', err.message, pattern));
-    return;
-  end
-  error('test:noError', 'no error, expected %s', id);
-end

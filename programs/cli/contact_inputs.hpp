@@ -50,8 +50,6 @@ public:
     virtual std::string label(Input in) const = 0;
     // The units the values are given in (files: SI).
     virtual const Units& units() const = 0;
-    // How the source reads units, said after "millimetres typed as metres?".
-    virtual std::string units_note() const = 0;
 };
 
 // Where the values come from. has/number/... are asked only about inputs

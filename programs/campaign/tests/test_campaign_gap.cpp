@@ -276,7 +276,7 @@ void gap_bad_rows_fail_alone(void** state)
                "line 8, column N: empty: a row with a gap_file needs the normal force N or the "
                "approach");
     expect_row(8, "method", "ROW_UNREADABLE",
-               "line 9, column normal_method: 'semi' is not one of exact|semi-hertz");
+               "line 9, column normal_method: 'semi' is not one of exact|semi_hertz");
     expect_row(9, "elliptic-approach", "ROW_UNREADABLE",
                "line 10, column approach: only used on a row with a gap_file (a contact of any "
                "shape)");
@@ -323,7 +323,7 @@ void gap_unit_mistakes_are_warned(void** state)
     expect_contains(m, "warning: column gap_file: " + file + ": dx = 0.3485 m is "
                        "implausible for a wheel-rail contact: gap cells are 0.05-1 mm (a gap "
                        "grid in millimetres typed as metres?)");
-    expect_contains(m, ": dy = 0.41714285714");
+    expect_contains(m, ": dy = 0.417143 m is implausible");
     // the heights' spread, to 1 um
     expect_contains(m, ": gap = 0.203864 m is implausible for a wheel-rail contact: its heights "
                        "span this much");
