@@ -314,6 +314,56 @@ static void check_finds_unit_mistakes_and_flange_climbs(void** state)
     cw_wheelrail_destroy(w);
 }
 
+/* A rail placed 10 mm too low (rail_z0, placed absolutely): the flat wheel
+ * of points_against_hertz drops 10 mm onto its tread, which no tread
+ * contact does; placed right, nothing is found. */
+static void check_finds_a_wheelset_off_its_height(void** state)
+{
+    (void)state;
+    enum { NR = 241, NW = 121 };
+    const double R = 0.46;
+    double ry[NR], rz[NR], wy[NW], wz[NW];
+    for (int i = 0; i < NR; ++i) {
+        ry[i] = -30.0 + 0.25 * i;
+        rz[i] = R * 1e3 - sqrt(R * R * 1e6 - ry[i] * ry[i]);
+    }
+    for (int i = 0; i < NW; ++i) {
+        wy[i] = 60.0 - i;
+        wz[i] = 0.0;
+    }
+    cw_wheelrail_params p;
+    cw_wheelrail_params_init(&p);
+    p.gauge_height = -1.0;
+    p.nominal_radius = R;
+    p.flange_back_position = 0.3;
+    p.flange_back_distance = 0.6;
+    p.profile_unit = 1e-3;
+    cw_wheelrail_motion m;
+    cw_wheelrail_motion_init(&m);
+    m.vs = 10.0;
+    m.vpitch = -10.0 / R;
+    cw_wheelrail_totals t;
+    cw_wheelrail_totals_init(&t);
+    cw_check c[8];
+    for (int low = 0; low < 2; ++low) {
+        p.rail_z0 = low ? 10e-3 : 0.0;
+        cw_wheelrail* w = NULL;
+        assert_int_equal(cw_wheelrail_create_points(&p, ry, rz, NR, wy, wz, NW, &w, NULL, 0), CW_OK);
+        assert_int_equal(cw_wheelrail_solve(w, &m, CW_WHEELRAIL_FORCE, 2e4, &t), CW_OK);
+        const size_t n = checks(w, c);
+        if (!low) {
+            assert_int_equal(n, 0);
+        } else {
+            assert_close(t.z, 10e-3, 0, 0.2e-3); /* the rail's 10 mm, less the approach */
+            assert_int_equal(n, 1);
+            assert_int_equal(c[0].rule, CW_CHECK_WHEELSET_HEIGHT);
+            assert_string_equal(c[0].input, "z");
+            assert_non_null(strstr(c[0].reason, "a profile's origin is off"));
+        }
+        cw_wheelrail_destroy(w);
+    }
+}
+
 /* wheel_y_offset and rail_y_offset move the profiles' points, mirror_wheel
  * turns y round: the benchmark with both profiles 1 mm to the field side
  * and the flange back and the gauge moved to match is the same contact; a
@@ -411,6 +461,7 @@ int main(int argc, char** argv)
         cmocka_unit_test(check_finds_a_misplaced_wheel),
         cmocka_unit_test(check_finds_unit_mistakes_and_flange_climbs),
         cmocka_unit_test(offsets_and_mirror_place_the_profiles),
+        cmocka_unit_test(check_finds_a_wheelset_off_its_height),
     };
     return cw_run_tests(tests, argc > 1 ? argv[1] : NULL);
 }
