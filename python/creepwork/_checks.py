@@ -42,9 +42,10 @@ def records(fill):
 def findings(grid, recs):
     """The cw_check records cw_params_check gives for the cw_params record(s)
     recs (any shape) on grid (a cw_grid record)."""
-    flat = np.ascontiguousarray(recs).reshape(-1)
-    return records(lambda out, n, found: lib.cw_params_check(address(grid), address(flat),
-                                                             flat.size, out, n, found))
+    flat = recs if recs.flags.c_contiguous else np.ascontiguousarray(recs)
+    where, count = address(flat), flat.size
+    return records(lambda out, n, found: lib.cw_params_check(address(grid), where, count, out, n,
+                                                             found))
 
 
 def warnings_for(grid, recs, typed):
