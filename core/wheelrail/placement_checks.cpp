@@ -1,5 +1,6 @@
 #include "wheelrail/placement_checks.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -24,11 +25,10 @@ std::string mm(double metres)
     return buf;
 }
 
-// The wheel's flange: its tip (the point of largest z, z down) and how far
-// it stands out below the tread's point at the profile's origin.
+// The wheel's flange: its tip, the knot of largest z (z down), and
+// whether it stands out below both ends of the profile as a flange does.
 struct Flange {
     double y_tip = 0, z_tip = 0;
-    double height = 0; // z_tip - z at y = 0; 0 when the profile misses y = 0
     bool real = false; // stands out by kFlangeHeight or more
 };
 
@@ -42,10 +42,7 @@ Flange flange_of(const Profile& wheel)
         if (z[k] > z[tip]) tip = k;
     f.y_tip = y[tip];
     f.z_tip = z[tip];
-    double s0 = 0.0;
-    const double z_ends = std::min(z.front(), z.back());
-    f.height = wheel.visible_s_at_y(0.0, s0) ? f.z_tip - wheel.at(s0).z : f.z_tip - z_ends;
-    f.real = f.z_tip - z_ends >= kFlangeHeight;
+    f.real = f.z_tip - std::min(z.front(), z.back()) >= kFlangeHeight;
     return f;
 }
 
