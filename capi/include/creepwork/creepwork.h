@@ -344,9 +344,9 @@ CW_API int cw_check_init(cw_check* check);
  * (out may then be NULL). On a gap grid (CW_GRID_GAP) a and b are not
  * used; the grid's spacing and params->gap's heights (when given, nx*ny
  * values) are checked instead. Values a solve refuses (negative, NaN) are
- * left to the solve's errors. Prints nothing, allocates nothing, and the
- * library never calls it by itself: a solve in other consistent units
- * stays silent. Errors: CW_ERR_NULL_POINTER (grid, params with count > 0,
+ * left to the solve's errors. Prints nothing, and the library never calls
+ * it by itself: a solve in other consistent units stays silent. Cost:
+ * linear in count (and in nx*ny with a gap); it allocates its findings. Errors: CW_ERR_NULL_POINTER (grid, params with count > 0,
  * found), CW_ERR_STRUCT_SIZE, CW_ERR_BUFFER_TOO_SMALL (len < *found:
  * *found is set, nothing else is written). */
 CW_API int cw_params_check(const cw_grid* grid, const cw_params* params, size_t count,
