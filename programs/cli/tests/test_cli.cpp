@@ -494,6 +494,9 @@ void one_vocabulary(void**)
     expect_refusal(cli(with(base, {"--phi", "abc"})), 2, "--phi: expected a finite number", "--phi as typed");
     expect_refusal(cli(with(base, {"--spin", "1", "--phi", "2"})), 2, "given twice, as --spin and --phi",
                    "--spin and --phi");
+    // the library's finding, named as typed (spin above 50 1/m)
+    expect_contains(cli_ok(with(base, {"--phi", "60"})).err,
+                    "warning: --phi = 60 1/m is implausible for a wheel-rail contact");
     const Json e = parse_or_fail(cli_ok(with(base, {"--model", "exact"})).out);
     assert_true(e.at("input").num("tolerance") == CW_DEFAULT_TOLERANCE);
     assert_true(e.at("input").num("max_iterations") == CW_DEFAULT_MAX_ITERATIONS);
