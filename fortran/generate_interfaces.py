@@ -246,18 +246,6 @@ def bindings_source(header):
     return "\n".join(out) + "\n"
 
 
-def write_if_changed(path, text):
-    try:
-        with open(path, encoding="utf-8") as f:
-            if f.read() == text:
-                return
-    except OSError:
-        pass
-    os.makedirs(os.path.dirname(os.path.abspath(path)), exist_ok=True)
-    with open(path, "w", encoding="utf-8") as f:
-        f.write(text)
-
-
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("--header", required=True)
@@ -273,7 +261,7 @@ def main(argv=None):
     except (creepwork_header.HeaderError, GeneratorError) as e:
         sys.exit("%s: %s: %s" % (GENERATOR, args.header, e))
     for path, text in texts:
-        write_if_changed(path, text)
+        creepwork_header.write_if_changed(path, text)
 
 
 if __name__ == "__main__":

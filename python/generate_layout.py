@@ -170,16 +170,7 @@ def probe_source(layout):
 def write_if_changed(path, text):
     """Writes text to path unless it holds it already; then only touches it
     (the build compares times: the output must be newer than the header)."""
-    try:
-        with open(path, encoding="utf-8") as f:
-            if f.read() == text:
-                os.utime(path)
-                return
-    except OSError:
-        pass
-    os.makedirs(os.path.dirname(os.path.abspath(path)), exist_ok=True)
-    with open(path, "w", encoding="utf-8") as f:
-        f.write(text)
+    creepwork_header.write_if_changed(path, text, touch=True)
 
 
 def main(argv=None):

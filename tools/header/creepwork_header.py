@@ -67,6 +67,24 @@ def load(path):
     return parse(read_header(path), os.path.basename(path))
 
 
+def write_if_changed(path, text, touch=False):
+    """Writes a generated file unless it holds text already, so that an
+    unchanged header rebuilds nothing; with touch, an unchanged file's time
+    is still set to now (for a build that compares the output's time with
+    the header's)."""
+    try:
+        with open(path, encoding="utf-8") as f:
+            if f.read() == text:
+                if touch:
+                    os.utime(path)
+                return
+    except OSError:
+        pass
+    os.makedirs(os.path.dirname(os.path.abspath(path)), exist_ok=True)
+    with open(path, "w", encoding="utf-8") as f:
+        f.write(text)
+
+
 def split_comments(text):
     """Yields ("code", str, start) and ("comment", str, start) in order; a
     comment's str is what lies between /* and */."""
