@@ -47,15 +47,15 @@ class HeaderError(ValueError):
 def read_header(path):
     """The text of creepwork.h with each `#include "creepwork/creepwork_<part>.h"`
     of a part beside it replaced by that part's text: the whole C API as the
-    compiler reads it (creepwork_export.h, generated into the build tree, is
-    not beside it and stays an include)."""
+    compiler reads it. creepwork_export.h (CW_API's definition, generated
+    into the build tree and installed beside the header) stays an include."""
     directory = os.path.dirname(path)
     with open(path, encoding="utf-8") as f:
         text = f.read()
 
     def part(match):
         name = os.path.join(directory, match.group(1))
-        if not os.path.isfile(name):
+        if match.group(1) == "creepwork_export.h" or not os.path.isfile(name):
             return match.group(0)
         with open(name, encoding="utf-8") as f:
             return f.read()
@@ -483,7 +483,9 @@ def parse(text, header_name="creepwork.h"):
                                   comment or "", section, text.count("\n", 0, m.start()) + 1))
     if not functions:
         raise HeaderError("no CW_API prototypes found")
-    declared = len(re.findall(r"\bCW_API\b", code)) - len(re.findall(r"#\s*define\s+CW_API\b", code))
+    # Every CW_API outside preprocessor lines must have been read as a prototype.
+    declared = sum(len(re.findall(r"\bCW_API\b", line)) for line in code.split("\n")
+                   if not line.lstrip().startswith("#"))
     if declared != len(functions):
         raise HeaderError("%d CW_API declarations, %d of them read as 'CW_API <type> cw_x(...);'"
                           % (declared, len(functions)))

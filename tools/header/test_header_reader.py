@@ -172,6 +172,22 @@ class Page(unittest.TestCase):
             self.assertEqual(table.count("| `%s(" % f.name), 1, f.name)
 
 
+class InstalledHeader(unittest.TestCase):
+    def test_the_export_header_beside_it_stays_an_include(self):
+        """Installed, creepwork_export.h (CW_API's definition) sits beside the
+        header: its preprocessor lines are not prototypes."""
+        import shutil
+        import tempfile
+        with tempfile.TemporaryDirectory() as d:
+            for name in os.listdir(os.path.dirname(REAL_HEADER)):
+                shutil.copy(os.path.join(os.path.dirname(REAL_HEADER), name), d)
+            with open(os.path.join(d, "creepwork_export.h"), "w") as f:
+                f.write("#ifndef CW_API\n#  ifdef CW_BUILDING\n#    define CW_API __attribute__((visibility(\"default\")))\n"
+                        "#  else\n#    define CW_API\n#  endif\n#endif\n")
+            installed = ch.load(os.path.join(d, "creepwork.h"))
+        self.assertEqual([f.name for f in installed.functions], [f.name for f in ch.load(REAL_HEADER).functions])
+
+
 class RealHeader(unittest.TestCase):
     def test_every_prototype_is_read(self):
         text = ch.read_header(REAL_HEADER)
