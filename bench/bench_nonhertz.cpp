@@ -3,7 +3,7 @@
 // CREEPWORK_CONTACT_DIR -- CONTACT's full solve of the same gap in the same
 // run (module 3, exact normal and tangential problems, cntc_calculate
 // repeated: CONTACT recomputes everything on every call). Not a test: no
-// timed assertion anywhere (doc/validation/non-hertzian.md has the table).
+// timed assertion anywhere (doc/performance.md has the table).
 //
 //   creepwork_bench_nonhertz [--contact-eps E] [--quick] [--fast] [--cases ID,ID...]
 //

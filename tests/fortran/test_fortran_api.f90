@@ -1,5 +1,5 @@
 ! Every function of the C ABI through module creepwork, so that the module
-! cannot drift from the header unnoticed (check_fortran_bindings.cmake checks
+! cannot drift from the header unnoticed (check_fortran_bindings.py checks
 ! that the two lists of symbols agree; this test calls each one):
 !   constants   generated from creepwork.h: versions against the library,
 !               every status code against cw_status_string
