@@ -1,6 +1,6 @@
 % solve_many: one cw_batch_solve call; its totals equal creepwork.solve one
-% by one (==), and a bad contact among 2000 gets its status and message
-% while the others are solved.
+% by one (==), a bad contact among 2000 gets its status and message while
+% the others are solved, and an enumeration's name is one value for all.
 n = 2000;
 bad = 1234;
 xi_x = linspace(-3e-3, 3e-3, n);
@@ -23,4 +23,21 @@ end
 r1 = creepwork.solve_many('a', 7e-3, 'b', 5e-3, 'N', 100e3, 'xi_y', xi_x', 'threads', 1);
 r2 = creepwork.solve_many('a', 7e-3, 'b', 5e-3, 'N', 100e3, 'xi_y', xi_x', 'threads', 2);
 assert(isequal(size(r1.Fy), [n, 1]) && isequal(r1.Fy, r2.Fy) && isequal(r1.Mz, r2.Mz));
+% An enumeration given as text is one value for every contact, never one
+% contact per character: 'fastsim' (7 characters) with scalars is one
+% contact, 'exact' (5) with three creepages three, each equal to the
+% one-by-one solve (cold, as the batch solves the exact model).
+one = creepwork.solve_many('a', 7e-3, 'b', 5e-3, 'N', 100e3, 'xi_x', 1e-3, 'model', 'fastsim');
+ref = creepwork.solve('a', 7e-3, 'b', 5e-3, 'N', 100e3, 'xi_x', 1e-3, 'fields', false);
+assert(isequal(size(one.Fx), [1, 1]) && one.status == 0 && one.model == c.CW_MODEL_FASTSIM);
+assert(one.Fx == ref.Fx && one.Fy == ref.Fy && one.W_macro == ref.W_macro);
+xi = [2e-4, 6e-4, 1.2e-3];
+three = creepwork.solve_many('a', 7e-3, 'b', 5e-3, 'N', 100e3, 'xi_x', xi, 'model', 'exact');
+assert(isequal(size(three.Fx), [1, 3]) && all(three.status == 0));
+assert(all(three.model == c.CW_MODEL_EXACT));
+for k = 1:3
+  e = creepwork.solve('a', 7e-3, 'b', 5e-3, 'N', 100e3, 'xi_x', xi(k), 'model', 'exact', ...
+                      'warm_start', 0, 'fields', false);
+  assert(three.Fx(k) == e.Fx && three.Mz(k) == e.Mz, sprintf('exact contact %d', k));
+end
 disp('solve_many equals solve one by one; the bad contact is reported alone');

@@ -407,9 +407,10 @@ CW_API int cw_patch_init(cw_patch* patch);
  * number (cw_result.n_patches) and out[k], k < *count, the patch totals
  * (the result's totals are their sums, to rounding). out is an array of len
  * structs of size out[0].struct_size (every element must carry the same
- * struct_size). len = 0 asks for the count only (out may then be NULL). Off a
- * gap grid a contact is one patch (centroid at the ellipse centre).
- * Allocates nothing. Errors: CW_ERR_NULL_POINTER (solver, count),
+ * struct_size): patch k is written at byte k * out[0].struct_size, so a
+ * program built against an older or newer cw_patch gets every patch. len =
+ * 0 asks for the count only (out may then be NULL). Off a gap grid a
+ * contact is one patch (centroid at the ellipse centre). Allocates nothing. Errors: CW_ERR_NULL_POINTER (solver, count),
  * CW_ERR_NO_SOLUTION, CW_ERR_STRUCT_SIZE, CW_ERR_BUFFER_TOO_SMALL (len <
  * *count: *count is set, nothing else is written). */
 CW_API int cw_solver_get_patches(const cw_solver* solver, cw_patch* out, size_t len,
