@@ -536,11 +536,10 @@ def main():
 
     tmp = tempfile.mkdtemp(prefix="creepwork-mutation-")
     src, bld = os.path.join(tmp, "src"), os.path.join(tmp, "build")
-    shared = os.path.realpath(os.path.join(root, "..", "shared"))
     try:
         copy_tree(root, src)
         rc, out = run(["cmake", "-S", src, "-B", bld, "-DCMAKE_BUILD_TYPE=Release",
-                       "-DCREEPWORK_BUILD_BENCH=OFF", f"-DCREEPWORK_SHARED_DIR={shared}"])
+                       "-DCREEPWORK_BUILD_BENCH=OFF"])
         if rc:
             sys.exit(out)
         if args.all_tests:

@@ -4,7 +4,7 @@
 // itself with the approach prescribed; the semi-Hertzian method against
 // Hertz's closed form on a paraboloid and against CONTACT's own ANALYN (B = 6)
 // on the DEV gaps (an independent implementation of the same method,
-// ../shared/reference/nonhertz/dev/fast_methods.csv); the patch labels
+// tests/data/nonhertz/dev/fast_methods.csv); the patch labels
 // against masks labelled by hand; the products on a box of the grid
 // (GridConvolution::set_size, other FFT lengths) against the whole grid's,
 // and the normal problem with its products on the contact set's box against
@@ -230,7 +230,7 @@ void semi_hertz_reproduces_hertz_on_a_paraboloid(void**)
 void semi_hertz_matches_contacts_analyn(void**)
 {
     const cwtest::CsvTable fm =
-        cwtest::read_csv(cwtest::shared_path("reference/nonhertz/dev/fast_methods.csv"));
+        cwtest::read_csv(cwtest::test_data_path("nonhertz/dev/fast_methods.csv"));
     int compared = 0;
     double dp = 0.0, da = 0.0;
     for (const cwtest::GapCase& c : cwtest::dev_cases()) {
