@@ -24,8 +24,7 @@
 // Thread CPU time of the calling thread (CONTACT runs on it, one thread).
 // Run CONTACT with GLIBC_TUNABLES=glibc.malloc.trim_threshold=536870912:
 // glibc.malloc.mmap_threshold=33554432:glibc.malloc.top_pad=67108864 (it
-// frees and reallocates its work arrays on every call; ../shared/tools/
-// contact/README.md).
+// frees and reallocates its work arrays on every call).
 #include <algorithm>
 #include <cmath>
 #include <cstdio>

@@ -40,4 +40,34 @@ for k = 1:3
                       'warm_start', 0, 'fields', false);
   assert(three.Fx(k) == e.Fx && three.Mz(k) == e.Mz, sprintf('exact contact %d', k));
 end
-disp('solve_many equals solve one by one; the bad contact is reported alone');
+% 'progress': a function handle sees the contacts done rise to the total
+% (2000 contacts, 20 a part: 100 calls) and the results (the bad contact
+% among them) equal one call's bit for bit; a bad value names the option.
+function note_progress(done, total)  % defined before its use: a script
+  global seen
+  seen(end + 1, :) = [done, total];
+end
+global seen
+seen = zeros(0, 2);
+rp = creepwork.solve_many('a', 7e-3, 'b', 5e-3, 'N', 100e3, 'xi_x', xi_x, 'xi_y', 1e-3, ...
+                          'phi', 0.4, 'nu', nu, 'progress', @(done, total) note_progress(done, total));
+assert(rows(seen) == 100 && isequal(seen(end, :), [n, n]) && all(diff(seen(:, 1)) > 0));
+assert(isequal(rp.status, r.status) && isequal(rp.message, r.message));
+assert(isequal(rp.Fy(~rp.status), r.Fy(~r.status)) && isequal(rp.Mz(~rp.status), r.Mz(~r.status)));
+assert(isequal(isnan(rp.Fx), isnan(r.Fx)));
+try
+  creepwork.solve_many('a', 7e-3, 'b', 5e-3, 'N', 100e3, 'xi_x', xi_x, 'progress', -1);
+  error('no error for progress = -1');
+catch err
+  assert(strcmp(err.identifier, 'creepwork:badValue'), err.message);
+  assert(~isempty(strfind(err.message, 'progress')), err.message);
+end
+% A progress function that fails stops the solve with its own error.
+try
+  creepwork.solve_many('a', 7e-3, 'b', 5e-3, 'N', 100e3, 'xi_x', xi_x, ...
+                       'progress', @(done, total) error('user:stop', 'stopped at %d', done));
+  error('no error from the progress function');
+catch err
+  assert(strcmp(err.identifier, 'user:stop') && strcmp(err.message, 'stopped at 20'), err.message);
+end
+disp('solve_many equals solve one by one; the bad contact is reported alone; progress');

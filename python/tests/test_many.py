@@ -4,6 +4,7 @@ broadcasting checked element by element); a bad contact among 10^4 gets its
 own status and message while the others are solved; gaps and implausible
 units come inside params arrays as they come in keywords."""
 
+import re
 import struct
 import warnings
 
@@ -152,3 +153,32 @@ def test_batch_reuse_and_empty():
         assert empty.Fx.shape == (0,)
     with pytest.raises(ValueError, match="closed"):
         batch.solve(**BASE)
+
+
+def test_progress_reports_every_part_and_changes_no_bit(capsys):
+    """progress: a callable sees the contacts done rise to the total, the
+    totals (a bad contact among them) equal one call's bitwise; a number of
+    seconds prints the CLI's line on stderr; nothing is printed without it."""
+    n, bad = 2_345, 1_000
+    xi_x = np.linspace(-3e-3, 3e-3, n)
+    nu = np.full(n, 0.28)
+    nu[bad] = 0.6
+    one = creepwork.solve_many(**BASE, xi_x=xi_x, phi=0.5, nu=nu, full=True)
+    seen = []
+    parts = creepwork.solve_many(**BASE, xi_x=xi_x, phi=0.5, nu=nu, full=True,
+                                 progress=lambda done, total: seen.append((done, total)))
+    assert len(seen) == 98 and seen[-1] == (n, n)  # 24 contacts a part: ceil(2345 / 100)
+    assert all(t == n for _, t in seen) and all(b > a for (a, _), (b, _) in zip(seen, seen[1:]))
+    assert np.array_equal(parts.status, one.status) and list(parts.messages) == [(bad,)]
+    for name in ("Fx", "Fy", "Mz", "W_macro", "K", "n_slip"):
+        assert getattr(parts, name).tobytes() == getattr(one, name).tobytes(), name
+    assert capsys.readouterr().err == ""
+    with creepwork.Batch() as batch:
+        batch.solve(**BASE, xi_x=xi_x, progress=1e-9)
+    lines = capsys.readouterr().err.splitlines()
+    assert 1 <= len(lines) <= 100
+    assert re.fullmatch(r"creepwork: solve: %d of %d contacts done \(100 %%\), \d+ contacts/s, "
+                        r"about 0 s to go" % (n, n), lines[-1]), lines[-1]
+    for wrong in (0, -1.0, "often", float("nan"), 1e6):
+        with pytest.raises(ValueError, match="solve_many\\(\\): progress = .* is invalid"):
+            creepwork.solve_many(**BASE, xi_x=xi_x[:3], progress=wrong)

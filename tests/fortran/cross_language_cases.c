@@ -37,7 +37,7 @@ static void print_map(FILE* f, char tag, int field, const double* v, int n)
 
 static void normalised_cases(FILE* f)
 {
-    /* Kalker's check rows (shared/reference/kalker1982_checks.csv) and more. */
+    /* Kalker's check rows (tests/data/kalker1982_checks.csv) and more. */
     const double cases[][7] = {
         {0, -2, 2, 4, 5, 5, 3},     {0, -2, 2, 4, 5, 5, 0.09}, {1, -2, 2, 4, 5, 5, 0.09},
         {1, -2, 2, 4, 5, 5, 3},     {1, -2, 2, 1, 5, 5, 0.09}, {0.3, 0.2, 0, 0, 8, 6, 1},

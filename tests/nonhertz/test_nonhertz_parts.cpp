@@ -5,7 +5,7 @@
 // Hertz's closed form on a paraboloid (also with a raised band on one side,
 // which the row fit must not reach) and against CONTACT's own ANALYN (B = 6)
 // on the DEV gaps (an independent implementation of the same method,
-// ../shared/reference/nonhertz/dev/fast_methods.csv); the patch labels
+// tests/data/nonhertz/dev/fast_methods.csv); the patch labels
 // against masks labelled by hand; the products on a box of the grid
 // (GridConvolution::set_size, other FFT lengths) against the whole grid's,
 // and the normal problem with its products on the contact set's box against
@@ -285,7 +285,7 @@ void semi_hertz_fit_stops_at_the_higher_of_a_pair(void**)
 void semi_hertz_matches_contacts_analyn(void**)
 {
     const cwtest::CsvTable fm =
-        cwtest::read_csv(cwtest::shared_path("reference/nonhertz/dev/fast_methods.csv"));
+        cwtest::read_csv(cwtest::test_data_path("nonhertz/dev/fast_methods.csv"));
     int compared = 0;
     double dp = 0.0, da = 0.0;
     for (const cwtest::GapCase& c : cwtest::dev_cases()) {
