@@ -24,7 +24,7 @@
 # "needs CONTACT": CONTACT's columns come from the same run, so the section
 # is measured only when the build names a CONTACT build
 # (-DCREEPWORK_CONTACT_DIR=<dir with bin/libcontact.so, bin/contact and
-# CONTACT/examples>, ../shared/tools/contact); otherwise it is left as it
+# CONTACT/examples>; tools/contact_reference says how to build one); otherwise it is left as it
 # is, with a note.
 #
 # The stamp must name a real commit and a quiet machine, so the script
