@@ -158,9 +158,9 @@ static void stamp(void)
     char date[32];
     const time_t t = time(NULL);
     strftime(date, sizeof date, "%Y-%m-%d", gmtime(&t));
-    printf("%s; %s (%s); commit %s (configured), library %s; %s; load average %.1f\n", cpu,
-           CW_BENCH_COMPILER, CW_BENCH_BUILD_TYPE, CW_BENCH_COMMIT, cw_version_string(), date,
-           load);
+    /* The machine only: scripts/bench-report.sh stamps the commit of the tree it measures. */
+    printf("%s; %s (%s); library %s; %s; load average %.1f\n\n", cpu, CW_BENCH_COMPILER,
+           CW_BENCH_BUILD_TYPE, cw_version_string(), date, load);
 }
 
 int main(int argc, char** argv)

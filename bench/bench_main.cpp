@@ -495,6 +495,7 @@ double thread_seconds()
 
 void exact_bench(const Options& o)
 {
+    if (o.exact_grids.empty()) return;
     std::printf("\nExact model (Kalker's exact theory, CONTACT's grid MX = MY = N + 4, box scale "
                 "(N + 4)/N), a = 7.17 mm, b = 5.42 mm, N = 100 kN, mu = 0.3, G = 82 GPa, "
                 "nu = 0.28, CW_SOLVE_FULL, one core, thread CPU time:\n\n");

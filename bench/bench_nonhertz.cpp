@@ -3,7 +3,7 @@
 // CREEPWORK_CONTACT_DIR -- CONTACT's full solve of the same gap in the same
 // run (module 3, exact normal and tangential problems, cntc_calculate
 // repeated: CONTACT recomputes everything on every call). Not a test: no
-// timed assertion anywhere (doc/validation/non-hertzian.md has the table).
+// timed assertion anywhere (doc/performance.md has the table).
 //
 //   creepwork_bench_nonhertz [--contact-eps E] [--quick] [--fast] [--cases ID,ID...]
 //
@@ -24,8 +24,7 @@
 // Thread CPU time of the calling thread (CONTACT runs on it, one thread).
 // Run CONTACT with GLIBC_TUNABLES=glibc.malloc.trim_threshold=536870912:
 // glibc.malloc.mmap_threshold=33554432:glibc.malloc.top_pad=67108864 (it
-// frees and reallocates its work arrays on every call; ../shared/tools/
-// contact/README.md).
+// frees and reallocates its work arrays on every call).
 #include <algorithm>
 #include <cmath>
 #include <cstdio>

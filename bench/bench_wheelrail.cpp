@@ -193,8 +193,8 @@ int main(int argc, char** argv)
     char date[32];
     const time_t now = time(nullptr);
     strftime(date, sizeof date, "%Y-%m-%d", gmtime(&now));
-    std::printf("Stamp: %s; %s %s (%s); commit %s (at configure time); %s; measured under load on a "
-                "shared machine\n",
-                cpu_model().c_str(), CW_BENCH_COMPILER, CW_BENCH_FLAGS, CW_BENCH_BUILD_TYPE, CW_BENCH_COMMIT, date);
+    // The machine only: scripts/bench-report.sh stamps the commit of the tree it measures.
+    std::printf("Machine: %s; %s %s (%s); %s\n", cpu_model().c_str(), CW_BENCH_COMPILER, CW_BENCH_FLAGS,
+                CW_BENCH_BUILD_TYPE, date);
     return 0;
 }

@@ -1,14 +1,13 @@
 ! The C header creepwork/creepwork.h as Fortran sees it, generated from the
 ! header at build time so that the two cannot drift:
-!   creepwork_types  every status code and #define as a named constant
-!                    (generate_constants.cmake) and every struct as a bind(C)
-!                    derived type (generate_interfaces.cmake); module
+!   creepwork_types  every status code and #define as a named constant and
+!                    every struct as a bind(C) derived type; module
 !                    creepwork makes all of it public
-!   creepwork_capi   every CW_API function cw_x as a bind(C) interface capi_x
-!                    (generate_interfaces.cmake), for the library's own
-!                    modules only: callers use the wrappers of module creepwork
-! tests/fortran/check_fortran_bindings.cmake checks that every interface is
-! wrapped by module creepwork.
+!   creepwork_capi   every CW_API function cw_x as a bind(C) interface capi_x,
+!                    for the library's own modules only: callers use the
+!                    wrappers of module creepwork
+! (generate_interfaces.py writes both.) tests/fortran/check_fortran_bindings.py
+! checks that every interface is wrapped by module creepwork.
 
 module creepwork_types
    use, intrinsic :: iso_c_binding, only: c_int, c_size_t, c_double, c_int64_t, c_char, c_null_char, &

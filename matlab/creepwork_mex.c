@@ -574,9 +574,28 @@ static mxArray* solve_one(cw_solver* s, int owned, cw_params p, int fields, int 
     return out;
 }
 
-/* Many contacts in one cw_batch_solve call. */
-static mxArray* solve_many(const mxArray* params_in, const mxArray* grid_in, int full, int threads)
+/* After each part of a solve_many: progress(done, total), a function
+ * handle. Its error is raised again once the batch is destroyed. */
+static void call_progress(const mxArray* progress, size_t done, size_t count, cw_batch* batch)
 {
+    mxArray* args[3] = {(mxArray*)progress, mxCreateDoubleScalar((double)done),
+                        mxCreateDoubleScalar((double)count)};
+    mxArray* error = mexCallMATLABWithTrap(0, NULL, 3, args, "feval");
+    mxDestroyArray(args[1]);
+    mxDestroyArray(args[2]);
+    if (!error) return;
+    cw_batch_destroy(batch);
+    mexCallMATLAB(0, NULL, 1, &error, "rethrow");
+}
+
+/* Many contacts in one cw_batch_solve call; with a progress function handle
+ * in about a hundred calls (the same results bitwise), after each of which
+ * it is called. */
+static mxArray* solve_many(const mxArray* params_in, const mxArray* grid_in, int full, int threads,
+                           const mxArray* progress)
+{
+    if (progress && !mxIsClass(progress, "function_handle"))
+        FAIL("badValue", "progress must be a function handle");
     const mxArray* shape = NULL;
     const size_t count = contact_count(params_in, &shape);
     cw_params* p = mxMalloc(count * sizeof *p);
@@ -595,7 +614,12 @@ static mxArray* solve_many(const mxArray* params_in, const mxArray* grid_in, int
     int status = cw_batch_create(&grid, threads, &batch, message, sizeof message);
     if (status != CW_OK) fail_status(status, message);
     const int mode = full ? CW_SOLVE_FULL : CW_SOLVE_FORCES;
-    status = cw_batch_solve(batch, count, p, mode, r, st);
+    const size_t step = progress ? (count + 99) / 100 : count;
+    for (size_t first = 0; first < count; first += step) {
+        const size_t n = count - first < step ? count - first : step;
+        status = cw_batch_solve(batch, n, p + first, mode, r + first, st + first);
+        if (progress) call_progress(progress, first + n, count, batch);
+    }
     cw_batch_destroy(batch);
     static const char* extra_names[] = {"status", "message"};
     mxArray* out = from_structs(&RESULT, r, sizeof *r, count, shape, 2, extra_names);
@@ -702,8 +726,9 @@ void mexFunction(int nlhs, mxArray* plhs[], int nrhs, const mxArray* prhs[])
         cw_solver* s = make_solver(&grid);
         plhs[0] = solve_one(s, 1, p, flag(a3), flag(a4), a1);
         cw_solver_destroy(s);
-    } else if (strcmp(command, "solve_many") == 0) { /* params, grid, full, threads */
-        plhs[0] = solve_many(a1, a2, flag(a3), a4 ? (int)scalar(a4, "threads") : 0);
+    } else if (strcmp(command, "solve_many") == 0) { /* params, grid, full, threads, progress */
+        plhs[0] = solve_many(a1, a2, flag(a3), a4 ? (int)scalar(a4, "threads") : 0,
+                             nrhs > 5 && !mxIsEmpty(prhs[5]) ? prhs[5] : NULL);
     } else if (strcmp(command, "solver_create") == 0) { /* grid -> id */
         int k = 0;
         while (k < MAX_SOLVERS && solvers[k]) ++k;

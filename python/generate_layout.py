@@ -12,23 +12,23 @@ need to know about it, so that neither holds a hand-copied layout:
                   layout test: the compiler's debug information is the
                   independent truth the generated layout is checked against
 
-The header's conventions it relies on (checked: anything else is an error,
-so a header change that the parser does not understand fails the build):
-  typedef struct cw_x { <type> <name>[, <name>...][<n>]; /* doc */ ... } cw_x;
-  #define CW_NAME <number or constant expression of CW_ macros> /* doc */
-  X(CW_NAME, value, "message") entries of CW_STATUS_LIST
-  CW_API <return type> cw_name(<parameters>);
-  a comment "/* cw_struct.field ..." right before a block of #defines (up to
-  the next blank line) names the field those values are for.
-Only the standard library is used (no numpy), so the build needs nothing but
-a Python 3 interpreter.
+The header is read by tools/header/creepwork_header.py, the one reader of
+every generator and checker (its docstring lists the conventions it
+accepts); this file turns what it reads into the layouts above. Only the
+standard library is used (no numpy), so the build needs nothing but a
+Python 3 interpreter.
 """
 
 import argparse
-import ast
 import os
-import re
 import sys
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(HERE, "..", "tools", "header"))
+import creepwork_header  # noqa: E402  (tools/header)
+
+HeaderError = creepwork_header.HeaderError
+read_header = creepwork_header.read_header
 
 # C scalar types the structs and prototypes may use, by their kind; the
 # package maps kinds to numpy and ctypes types.
@@ -47,141 +47,31 @@ SCALAR_KINDS = {
 }
 
 
-class HeaderError(ValueError):
-    """The header does not follow the conventions above."""
+def layout_field(f, struct):
+    if not f.pointer and f.ctype not in SCALAR_KINDS:
+        raise HeaderError("%s: field %s has type %r, not one of %s (teach generate_layout.py)"
+                          % (struct, f.name, f.ctype, ", ".join(sorted(SCALAR_KINDS))))
+    return {"name": f.name, "ctype": f.ctype, "kind": "pointer" if f.pointer else SCALAR_KINDS[f.ctype],
+            "pointer": f.pointer, "count": f.count, "doc": f.doc}
 
 
-def split_comments(text):
-    """Yields ("code", str) and ("comment", str) tokens, in order."""
-    pos = 0
-    while pos < len(text):
-        start = text.find("/*", pos)
-        if start < 0:
-            yield ("code", text[pos:])
-            return
-        if start > pos:
-            yield ("code", text[pos:start])
-        end = text.find("*/", start + 2)
-        if end < 0:
-            raise HeaderError("unterminated comment")
-        yield ("comment", text[start + 2:end])
-        pos = end + 2
+def type_kind(base, stars, where):
+    """Kind of a type: a scalar kind, "pointer", "char_p" or "void"."""
+    if stars:
+        return "char_p" if (base, stars) == ("char", 1) else "pointer"
+    if base == "void":
+        return "void"
+    if base not in SCALAR_KINDS:
+        raise HeaderError("%s: type %r (teach generate_layout.py)" % (where, base))
+    return SCALAR_KINDS[base]
 
 
-def clean_doc(comment):
-    return " ".join(comment.split())
-
-
-def strip_comments(text):
-    return "".join(t[1] if t[0] == "code" else " " for t in split_comments(text))
-
-
-def parse_declarator(words, constants, where):
-    """words: tokens of one declarator, e.g. ['*', 'name'] or ['name', '[4]']."""
-    stars = words.count("*")
-    rest = [w for w in words if w != "*"]
-    count = None
-    if rest and rest[-1].startswith("["):
-        dim = rest.pop()[1:-1].strip()
-        if re.fullmatch(r"\d+", dim):
-            count = int(dim)
-        elif dim in constants and isinstance(constants[dim], int):
-            count = constants[dim]
-        else:
-            raise HeaderError("%s: array length %r is not a number or CW_ constant" % (where, dim))
-    if len(rest) != 1 or not re.fullmatch(r"[A-Za-z_]\w*", rest[0]):
-        raise HeaderError("%s: cannot read the declarator %r" % (where, " ".join(words)))
-    return rest[0], stars, count
-
-
-def parse_declaration(decl, constants, where):
-    """'double L1, L2, L3' -> [(name, ctype, pointer_depth, count), ...]."""
-    decl = " ".join(decl.split())
-    parts = [p.strip() for p in decl.split(",")]
-    words = c_words(parts[0])
-    # The name is the last identifier; everything before it (minus stars) is the type.
-    ids = [k for k, w in enumerate(words) if re.fullmatch(r"[A-Za-z_]\w*", w)]
-    if len(ids) < 2:
-        raise HeaderError("%s: cannot read the declaration %r" % (where, decl))
-    type_words = [w for w in words[:ids[-1]] if w != "*"]
-    ctype = " ".join(type_words)
-    out = []
-    # First declarator: the stars between type and name, the name, a dimension.
-    declarators = [words[len(type_words):]]
-    declarators += [c_words(p) for p in parts[1:]]
-    for d in declarators:
-        name, stars, count = parse_declarator(d, constants, where)
-        if stars == 0 and ctype not in SCALAR_KINDS:
-            raise HeaderError("%s: field %s has type %r, not one of %s (teach generate_layout.py)"
-                              % (where, name, ctype, ", ".join(sorted(SCALAR_KINDS))))
-        out.append((name, ctype, stars, count))
-    return out
-
-
-def parse_struct(name, body, constants):
-    fields = []
-    pending = None  # fields of the last declaration, waiting for a trailing comment
-    code = ""
-    for token in split_comments(body):
-        if token[0] == "code":
-            chunk = token[1]
-            while ";" in chunk:
-                before, chunk = chunk.split(";", 1)
-                decl = (code + before).strip()
-                code = ""
-                if not decl:
-                    raise HeaderError("%s: empty declaration" % name)
-                pending = []
-                for fname, ctype, stars, count in parse_declaration(decl, constants, name):
-                    kind = "pointer" if stars else SCALAR_KINDS[ctype]
-                    field = {"name": fname, "ctype": ctype, "kind": kind, "pointer": stars,
-                             "count": count, "doc": ""}
-                    fields.append(field)
-                    pending.append(field)
-            code += chunk
-            if "\n" in chunk:
-                pending = None
-        else:
-            # A comment on the line of a declaration's ';' documents its fields.
-            text = token[1]
-            if pending is not None:
-                for f in pending:
-                    f["doc"] = clean_doc(text)
-            pending = None
-    if code.strip():
-        raise HeaderError("%s: text after the last ';': %r" % (name, code.strip()))
-    names = [f["name"] for f in fields]
-    if len(set(names)) != len(names):
-        raise HeaderError("%s: a field name repeats" % name)
-    if not fields or fields[0]["name"] != "struct_size" or fields[0]["ctype"] != "size_t":
-        raise HeaderError("%s: the first field must be size_t struct_size" % name)
-    return fields
-
-
-def evaluate(expr, constants, where):
-    """A numeric literal or a constant expression of earlier CW_ macros."""
-    expr = expr.strip()
-    try:
-        tree = ast.parse(expr, mode="eval")
-    except SyntaxError:
-        raise HeaderError("%s: cannot read the value %r" % (where, expr))
-
-    def value(node):
-        if isinstance(node, ast.Constant) and isinstance(node.value, (int, float)):
-            return node.value
-        if isinstance(node, ast.Name):
-            if node.id not in constants:
-                raise HeaderError("%s: %s is not defined before" % (where, node.id))
-            return constants[node.id]
-        if isinstance(node, ast.UnaryOp) and isinstance(node.op, (ast.USub, ast.UAdd)):
-            v = value(node.operand)
-            return -v if isinstance(node.op, ast.USub) else v
-        if isinstance(node, ast.BinOp) and isinstance(node.op, (ast.Add, ast.Sub, ast.Mult)):
-            a, b = value(node.left), value(node.right)
-            return a + b if isinstance(node.op, ast.Add) else a - b if isinstance(node.op, ast.Sub) else a * b
-        raise HeaderError("%s: unsupported expression %r" % (where, expr))
-
-    return value(tree.body)
+def layout_function(f):
+    ret = [w for w in creepwork_header.c_words(f.return_type) if w not in ("const", "volatile")]
+    base = " ".join(w for w in ret if w != "*")
+    # An array parameter (double coefficients[4]) is a pointer.
+    args = [type_kind(p.base, p.stars + (p.dim is not None), f.name) for p in f.params]
+    return {"restype": type_kind(base, ret.count("*"), f.name), "argtypes": args}
 
 
 def enum_member_name(macro, group, field):
@@ -196,135 +86,22 @@ def enum_member_name(macro, group, field):
     return name.lower()
 
 
-def parse_defines(text, constants, constant_docs, enums):
-    """Object-like #defines (with their docs) and the enumeration groups."""
-    lines = text.split("\n")
-    group = None  # (struct, field, [macros])
-    k = 0
-    while k < len(lines):
-        line = lines[k]
-        stripped = line.strip()
-        if not stripped:
-            group = None
-        m = re.match(r"/\*\s*(cw_\w+)\.(\w+)\b", stripped)
-        if m:
-            group = (m.group(1), m.group(2), [])
-            enums.setdefault(m.group(1) + "." + m.group(2), {})
-            enums[m.group(1) + "." + m.group(2)] = group[2]
-        m = re.match(r"#define\s+(CW_\w+)(\(?)\s*(.*)$", stripped)
-        if m and not m.group(2) and not m.group(1).endswith("_"):
-            name, rest = m.group(1), m.group(3)
-            doc = ""
-            if "/*" in rest:
-                rest, comment = rest.split("/*", 1)
-                while "*/" not in comment:
-                    k += 1
-                    comment += " " + lines[k].strip()
-                doc = clean_doc(comment.split("*/", 1)[0])
-            rest = rest.split("//", 1)[0].strip()
-            if rest:
-                constants[name] = evaluate(rest, constants, name)
-                if doc:
-                    constant_docs[name] = doc
-                if group is not None:
-                    group[2].append(name)
-        k += 1
-
-
-def parse_functions(code):
-    functions = {}
-    for m in re.finditer(r"CW_API\s+([^;()]*?)\b(cw_\w+)\s*\(([^)]*)\)\s*;", code):
-        ret, name, params = m.group(1), m.group(2), m.group(3).strip()
-        args = []
-        if params and params != "void":
-            for p in params.split(","):
-                words = c_words(p)
-                # Drop the parameter's name (every prototype names them).
-                if len(words) > 1 and re.fullmatch(r"[A-Za-z_]\w*", words[-1]):
-                    words = words[:-1]
-                elif len(words) > 2 and words[-1].startswith("["):
-                    words = words[:-2] + ["*"]
-                args.append(type_kind(words, name))
-        functions[name] = {"restype": type_kind(c_words(ret), name), "argtypes": args}
-    if not functions:
-        raise HeaderError("no CW_API prototypes found")
-    return functions
-
-
-def c_words(declaration):
-    """The tokens of a C declaration that matter here: identifiers, stars,
-    array dimensions; without const and volatile."""
-    return [w for w in re.findall(r"\[[^\]]*\]|\*|[A-Za-z_]\w*", declaration)
-            if w not in ("const", "volatile")]
-
-
-def type_kind(words, where):
-    """Kind of a type without a name: a scalar kind, "pointer", "char_p" or "void"."""
-    if "*" in words:
-        return "char_p" if words == ["char", "*"] else "pointer"
-    ctype = " ".join(words)
-    if ctype == "void":
-        return "void"
-    if ctype not in SCALAR_KINDS:
-        raise HeaderError("%s: type %r (teach generate_layout.py)" % (where, ctype))
-    return SCALAR_KINDS[ctype]
-
-
-def read_header(path):
-    """The text of creepwork.h with each `#include "creepwork/creepwork_<part>.h"`
-    of a part beside it (creepwork_wear.h, creepwork_wheelrail.h) replaced by
-    that part's text: the whole C API as the compiler reads it."""
-    directory = os.path.dirname(path)
-    with open(path, encoding="utf-8") as f:
-        text = f.read()
-
-    def part(match):
-        name = os.path.join(directory, match.group(1))
-        if not os.path.isfile(name):
-            return match.group(0)  # creepwork_export.h: generated, not a part
-        with open(name, encoding="utf-8") as f:
-            return f.read()
-    return re.sub(r'#include "creepwork/(creepwork_\w+\.h)"', part, text)
-
-
 def parse_header(text, header_name="creepwork.h"):
-    joined = re.sub(r"\\\r?\n", " ", text)  # continued macro lines
-    constants, constant_docs, enums = {}, {}, {}
-    m = re.search(r"#define CW_STATUS_LIST\(X\)([^\n]*)", joined)
-    if not m:
-        raise HeaderError("CW_STATUS_LIST not found")
-    statuses = [(n, int(v), msg) for n, v, msg in
-                re.findall(r'X\((CW_[A-Z0-9_]+),\s*(-?\d+),\s*"([^"]*)"\)', m.group(1))]
-    if not statuses:
-        raise HeaderError("CW_STATUS_LIST has no X(name, value, message) entries")
-    for n, v, _ in statuses:
-        constants[n] = v
-    parse_defines(joined, constants, constant_docs, enums)
-    enum_values = {}
-    for key, macros in enums.items():
-        if macros:
-            struct, field = key.split(".")
-            enum_values[key] = {enum_member_name(mac, macros, field): constants[mac]
-                                for mac in macros}
-    structs = {}
-    for sm in re.finditer(r"typedef\s+struct\s+(cw_\w+)\s*\{(.*?)\}\s*(cw_\w+)\s*;", joined, re.S):
-        if sm.group(1) != sm.group(3):
-            raise HeaderError("typedef struct %s ... %s: names differ" % (sm.group(1), sm.group(3)))
-        structs[sm.group(1)] = parse_struct(sm.group(1), sm.group(2), constants)
-    if not structs:
-        raise HeaderError("no typedef struct cw_... { ... } found")
-    for key in enum_values:
-        struct, field = key.split(".")
-        if struct not in structs or field not in [f["name"] for f in structs[struct]]:
-            raise HeaderError("enumeration comment names %s, which is not a struct field" % key)
+    header = creepwork_header.parse(text, header_name)
+    constants = header.constants
+    enums = {}
+    for key, macros in header.enums.items():
+        field = key.split(".")[1]
+        enums[key] = {enum_member_name(mac, macros, field): constants[mac] for mac in macros}
     return {
         "header": header_name,
-        "structs": structs,
+        "structs": {name: [layout_field(f, name) for f in s.fields]
+                    for name, s in header.structs.items()},
         "constants": constants,
-        "constant_docs": constant_docs,
-        "enums": enum_values,
-        "statuses": statuses,
-        "functions": parse_functions(strip_comments(joined)),
+        "constant_docs": {m.name: m.doc for m in header.macros if m.doc},
+        "enums": enums,
+        "statuses": header.statuses,
+        "functions": {f.name: layout_function(f) for f in header.functions},
     }
 
 
@@ -393,16 +170,7 @@ def probe_source(layout):
 def write_if_changed(path, text):
     """Writes text to path unless it holds it already; then only touches it
     (the build compares times: the output must be newer than the header)."""
-    try:
-        with open(path, encoding="utf-8") as f:
-            if f.read() == text:
-                os.utime(path)
-                return
-    except OSError:
-        pass
-    os.makedirs(os.path.dirname(os.path.abspath(path)), exist_ok=True)
-    with open(path, "w", encoding="utf-8") as f:
-        f.write(text)
+    creepwork_header.write_if_changed(path, text, touch=True)
 
 
 def main(argv=None):

@@ -12,7 +12,12 @@
 #   5. user-facing text carries no development history: README.md, doc/
 #      outside doc/dev/, the public header and the sources of the CLI, the
 #      Fortran layer and the core name no issue, item or stop;
-#   6. README.md stays an entry point: at most 200 lines.
+#   6. README.md stays an entry point: at most 200 lines;
+#   7. timings live in doc/performance.md only (no load average or stamp
+#      elsewhere but doc/dev/), and every timing table there sits in a
+#      "<!-- timing: SECTION -->" block of scripts/bench-report.sh under a
+#      stamp that names a commit and a load average below 1.5, or says it
+#      is to be re-measured.
 # usage: doc-check.sh [SOURCE_DIR]
 set -euo pipefail
 cd "${1:-$(dirname "$0")/..}"
@@ -105,6 +110,35 @@ fi
 # 6. The README is an entry point.
 lines=$(wc -l <README.md)
 [ "$lines" -le 200 ] || problem "README.md has $lines lines (at most 200)"
+
+# 7. Timings: in doc/performance.md only, each under an honest stamp.
+if hits=$(grep -nE 'load average|^\*[Mm]easured (on|by) |^[Ss]tamp:' README.md CHANGELOG.md \
+            $(find doc -name '*.md' ! -path 'doc/dev/*' ! -name performance.md | sort)); then
+  echo "$hits" >&2
+  problem "the lines above hold timings or their stamps: timings live in doc/performance.md"
+fi
+sections=" $(bash scripts/bench-report.sh --list | tr '\n' ' ') "
+while IFS='|' read -r line kind text; do
+  case "$kind" in
+    unknown) problem "doc/performance.md:$line: no bench-report.sh section '$text'" ;;
+    open) problem "doc/performance.md:$line: timing block '$text' has no <!-- end timing -->" ;;
+    nostamp) problem "doc/performance.md:$line: a timing block starts without a stamp (*Measured ...*)" ;;
+    stamp)
+      if ! grep -q 'to be re-measured' <<<"$text" &&
+         { ! grep -Eq 'commit [0-9a-f]{7,40}[,;]' <<<"$text" || ! grep -q '(below 1\.5)' <<<"$text" ||
+           grep -Eq 'not for the page|uncommitted|\+changes' <<<"$text"; }; then
+        problem "doc/performance.md:$line: the stamp names no clean commit and load below 1.5: $text"
+      fi ;;
+  esac
+done < <(awk -v sections="$sections" '
+  /^<!-- timing: .* -->$/ {
+    name = $3; open = NR; first = 1
+    if (index(sections, " " name " ") == 0) print NR "|unknown|" name
+    next
+  }
+  /^<!-- end timing -->$/ { open = 0; next }
+  open && first && NF { first = 0; print NR "|" ($0 ~ /^\*Measured / ? "stamp" : "nostamp") "|" $0 }
+  END { if (open) print open "|open|" name }' doc/performance.md)
 
 if [ $problems -gt 0 ]; then
   echo "doc-check: $problems problem(s)" >&2

@@ -6,7 +6,10 @@
 #      (groff, when installed) and equals the page made now from the
 #      installed program's help texts (it cannot drift from them);
 #   3. every doc/....md path that `creepwork --help`, a command's help or
-#      the campaign runner's help names exists under share/doc/creepwork.
+#      the campaign runner's help names exists under share/doc/creepwork;
+#   4. every example input the manual's commands read ($E/NAME, E being
+#      PREFIX/share/creepwork/examples) is installed there (the recipe
+#      test runs those commands).
 # usage: cmake -DBUILD_DIR=... -DWORK_DIR=... -DSOURCE_DIR=... [-DCONFIG=Release]
 #              -P doc-installed.cmake
 cmake_minimum_required(VERSION 3.25)
@@ -28,6 +31,25 @@ if(NOT rc EQUAL 0)
 endif()
 set(docdir ${prefix}/share/doc/creepwork)
 set(problems "")
+
+# expect_files(<dir> <least> <what> <count-var> <names>...): each name (once)
+# is a file under dir, and there are at least `least` of them; else a line
+# of problems saying `what` named it. count-var gets the number of names.
+function(expect_files dir least what count_var)
+  set(names ${ARGN})
+  list(REMOVE_DUPLICATES names)
+  list(LENGTH names count)
+  if(count LESS least)
+    string(APPEND problems "\n  ${what} name fewer than ${least} files (${names})")
+  endif()
+  foreach(name IN LISTS names)
+    if(NOT EXISTS ${dir}/${name})
+      string(APPEND problems "\n  ${what} name ${name}, which is not in ${dir}")
+    endif()
+  endforeach()
+  set(problems "${problems}" PARENT_SCOPE)
+  set(${count_var} ${count} PARENT_SCOPE)
+endfunction()
 
 # 1.
 foreach(file README.md CHANGELOG.md LICENSE doc/index.md)
@@ -81,18 +103,21 @@ if(EXISTS ${campaign})
   string(APPEND helps "${text}")
 endif()
 string(REGEX MATCHALL "doc/[A-Za-z0-9_./-]*\\.md" paths "${helps}")
-list(REMOVE_DUPLICATES paths)
-list(LENGTH paths count)
-if(count EQUAL 0)
-  string(APPEND problems "\n  the help texts name no documentation file")
-endif()
-foreach(path IN LISTS paths)
-  if(NOT EXISTS ${docdir}/${path})
-    string(APPEND problems "\n  a help text names ${path}, which is not in ${docdir}")
-  endif()
+expect_files(${docdir} 1 "the help texts" count ${paths})
+
+# 4.
+set(inputs README.md)
+foreach(page doc/cli.md doc/input-schema.md)
+  file(READ ${SOURCE_DIR}/${page} text)
+  string(REGEX MATCHALL "\\$E/[A-Za-z0-9_.-]+" named "${text}")
+  list(TRANSFORM named REPLACE "^\\$E/" "")
+  list(APPEND inputs ${named})
 endforeach()
+expect_files(${prefix}/share/creepwork/examples 5 "the manual's commands ($E/NAME)" inputs_count
+             ${inputs})
 
 if(problems)
   message(FATAL_ERROR "installed documentation:${problems}")
 endif()
-message(STATUS "installed documentation: man page, doc/index.md and the ${count} doc paths the help texts name")
+message(STATUS "installed documentation: man page, doc/index.md, the ${count} doc paths the help "
+               "texts name and the ${inputs_count} example files the manual names")

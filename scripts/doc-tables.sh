@@ -15,7 +15,7 @@
 #   check   exit 1, with a diff, when a block differs from what its command
 #           prints (the CTest test doc_tables_current runs this)
 #   list    the files and commands, one "FILE: COMMAND" per line
-# FILEs default to README.md and every doc/**/*.md (doc/dev/ too); --work defaults to
+# FILEs default to README.md, CONTRIBUTING.md and every doc/**/*.md (doc/dev/ too); --work defaults to
 # BUILD_DIR/doc-tables. --skip leaves the blocks whose command matches the
 # (extended) regular expression as they are: the CTest test skips the
 # calibration tool's tables, whose exact references take minutes to compute
@@ -39,7 +39,8 @@ done
 case "$mode" in update|check|list) ;; *) echo "unknown mode '$mode'" >&2; exit 2 ;; esac
 if [ ${#files[@]} -eq 0 ]; then
   mapfile -t files < <(cd "$source_dir" &&
-    { echo README.md; find doc -name '*.md' | LC_ALL=C sort; } | sed "s|^|$source_dir/|")
+    { echo README.md; echo CONTRIBUTING.md; find doc -name '*.md' | LC_ALL=C sort; } |
+    sed "s|^|$source_dir/|")
 fi
 
 if [ "$mode" = list ]; then

@@ -6,7 +6,7 @@
 #                          gfortran, cmocka, clang for fuzzing and TSan,
 #                          valgrind, Open MPI for creepwork campaign and
 #                          its tests (the demo builds without it), numpy,
-#                          pytest, venv and setuptools for the Python
+#                          pytest, venv, setuptools and wheel for the Python
 #                          package and its tests, Octave for the MEX
 #   install-deps.sh python what the Python package needs (doc/python.md)
 #   install-deps.sh octave what the Octave interface needs (doc/octave.md)
@@ -14,11 +14,11 @@ set -euo pipefail
 
 demo=(cmake g++ make libeigen3-dev gnuplot-nox)
 library=(cmake g++ make libeigen3-dev python3)
-python=(python3-numpy)
+# numpy at run time; venv, setuptools and wheel for doc/python.md's offline pip route
+python=(python3-numpy python3-venv python3-setuptools python3-wheel)
 octave=(octave liboctave-dev)
 all=("${demo[@]}" gfortran pkg-config libcmocka-dev clang-14 libclang-rt-14-dev libomp-14-dev
-     valgrind libopenmpi-dev openmpi-bin "${python[@]}" python3-pytest python3-venv
-     python3-setuptools "${octave[@]}")
+     valgrind libopenmpi-dev openmpi-bin "${python[@]}" python3-pytest "${octave[@]}")
 case "${1:-all}" in
   demo) packages=("${demo[@]}") ;;
   all) packages=("${all[@]}") ;;

@@ -525,6 +525,87 @@ MUTANTS += POLICY_MUTANTS
 # ----------------------------------------------------- end the shared policy
 
 
+# ---------------------------------------------------------------- progress
+# The progress line of long work (programs/cli/progress.cpp), which the
+# campaign prints through the same code as wear and sweep: caught by the
+# CLI's progress tests and the campaign's.
+PROGRESS = [
+    "cli_wear_reports_progress", "cli_sweep_reports_progress", "cli_the_line",
+    "campaign_progress_lines",
+]
+MUTANTS += [
+    dict(id="progress-only-at-end", what="progress printed only once the work is done",
+         file="programs/cli/progress.cpp",
+         old="    if (seconds < next_) return;",
+         new="    if (seconds < next_ || done < total_) return;", tests=PROGRESS),
+    dict(id="progress-line-words", what="the progress line loses its 'done'",
+         file="programs/cli/progress.cpp",
+         old='"%s: %llu of %llu %s done (%.0f %%), %.0f %s/s, about %.0f s to go",',
+         new='"%s: %llu of %llu %s (%.0f %%), %.0f %s/s, about %.0f s to go",', tests=PROGRESS),
+]
+# ------------------------------------------------------------ end progress
+
+
+# ------------------------------------------------------------ promises pinned
+# What the newest code promises at the door where a user meets it (issue 40):
+# the semi-Hertzian fit's rule, the rail offset with the gauge measured, the
+# wear of several wheel/rail patches, the patch array's stride, the Python
+# package's pointer fields and unit checks, the MEX gateway's enumeration
+# names, the batch's refusal of a smaller result element, the Fortran
+# module's strip order. Each is caught by a hand-computed value, a mirrored
+# or translated solution, or another door's bits.
+PROMISE_MUTANTS = [
+    dict(id="semi-hertz-fit-lower-decides", what="the semi-Hertzian fit widens while the lower "
+         "element of the next pair penetrates enough, not both",
+         file="core/nonhertz/semi_hertz.cpp",
+         old="? std::max(row[R.locus - k - 1], row[R.locus + k + 1]) - h_min_",
+         new="? std::min(row[R.locus - k - 1], row[R.locus + k + 1]) - h_min_",
+         tests=GAP + ["test_nonhertz_parts"]),
+    dict(id="wheelrail-gauge-offset-unmirrored", what="with the gauge measured, rail_dy moves the "
+         "left rail in its mirrored frame as given (not in track coordinates)",
+         file="core/wheelrail/placement.cpp",
+         old="f.o = Vec3(0.0, 0.5 * track.gauge_width - y_gauge + sgn * track.rail_dy, -z_top + track.rail_dz);",
+         new="f.o = Vec3(0.0, 0.5 * track.gauge_width - y_gauge + track.rail_dy, -z_top + track.rail_dz);",
+         tests=WHEELRAIL + ["test_wheelrail_geometry", "test_wheelrail_patch_capi",
+                            "test_wheelrail_contact", "python_test_wheelrail"]),
+    dict(id="wheelrail-wear-max-depth-sum", what="add_wear's max_depth the patches' sum, not the "
+         "deepest's", file="capi/capi_wheelrail_patch.cpp",
+         old="            sum.max_depth = std::fmax(sum.max_depth, r.max_depth);",
+         new="            sum.max_depth += r.max_depth;", tests=WHEELRAIL_PATCH),
+    dict(id="patches-own-stride", what="cw_solver_get_patches writes patch k at k sizeof(cw_patch), "
+         "not k out[0].struct_size", file="capi/capi_patches.cpp",
+         old="            write_struct(reinterpret_cast<cw_patch*>(bytes + k * size), c);",
+         new="            write_struct(&out[k], c);",
+         tests=ABI + ["test_nonhertz_capi", "test_fortran_gap", "python_test_gap",
+                      "octave_test_gap"]),
+    dict(id="python-pointer-memory-order", what="Python passes a pointer field's array in its own "
+         "memory order", file="python/creepwork/_params.py",
+         old='arr = np.ascontiguousarray(value, dtype=_NUMPY[spec["ctype"]])',
+         new='arr = np.asarray(value, dtype=_NUMPY[spec["ctype"]])',
+         tests=["python_test_gap", "python_test_many", "python_test_gap_cli",
+                "python_test_solver"]),
+    dict(id="python-units-keywords-only", what="solve_many and Batch check the keywords' units, "
+         "not a params array's", file="python/creepwork/_batch.py",
+         old="            _errors.warn_units(_checks.warnings_for(self._grid, recs, typed), stacklevel)",
+         new="            _errors.warn_units(_checks.warnings_for(self._grid, recs if params_in is None "
+             "else recs[:0], typed), stacklevel)",
+         tests=["python_test_units", "python_test_many", "python_test_solver"]),
+    dict(id="mex-text-one-contact-per-character", what="the MEX gateway counts an enumeration's "
+         "name as one contact per character", file="matlab/creepwork_mex.c",
+         old="        if (!v || mxIsChar(v)) continue;", new="        if (!v) continue;",
+         tests=["octave_test_many", "octave_test_cli", "octave_test_solver",
+                "octave_test_units"]),
+    dict(id="batch-smaller-result-element", what="a batch accepts a result element smaller than "
+         "results[0]", file="capi/capi_batch.cpp",
+         old="            if (p->struct_size != pstride || r->struct_size != rstride)",
+         new="            if (p->struct_size != pstride || r->struct_size > rstride)", tests=ABI),
+    dict(id="f-wear-strips-order", what="the module's get_strips swaps width and depth",
+         file="fortran/creepwork_wear.f90", old="py, pw, pd, pp, n))", new="py, pd, pw, pp, n))",
+         tests=FORTRAN),
+]
+MUTANTS += PROMISE_MUTANTS
+# -------------------------------------------------------- end promises pinned
+
 def run(cmd, cwd=None, quiet=True):
     r = subprocess.run(cmd, cwd=cwd, stdout=subprocess.PIPE if quiet else None,
                        stderr=subprocess.STDOUT if quiet else None, text=True)
@@ -605,11 +686,10 @@ def main():
 
     tmp = tempfile.mkdtemp(prefix="creepwork-mutation-")
     src, bld = os.path.join(tmp, "src"), os.path.join(tmp, "build")
-    shared = os.path.realpath(os.path.join(root, "..", "shared"))
     try:
         copy_tree(root, src)
         rc, out = run(["cmake", "-S", src, "-B", bld, "-DCMAKE_BUILD_TYPE=Release",
-                       "-DCREEPWORK_BUILD_BENCH=OFF", f"-DCREEPWORK_SHARED_DIR={shared}"])
+                       "-DCREEPWORK_BUILD_BENCH=OFF"])
         if rc:
             sys.exit(out)
         if args.all_tests:

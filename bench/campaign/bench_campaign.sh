@@ -1,13 +1,13 @@
 #!/usr/bin/env bash
 # Contacts per second of creepwork campaign against ranks and threads on
-# this machine (doc/campaigns.md, benchmark table). Timing, so not a test.
+# this machine (doc/performance.md, campaigns). Timing, so not a test.
 #   bench_campaign.sh <creepwork> [fastsim rows (100000)] [exact rows (480)] [repeats (3)]
 # For each model it generates contacts (FASTSIM: Kalker strip grid 20 x 20;
 # exact: uniform grid 44 x 44, box scale 1.1, i.e. 40 elements across the
 # ellipse), runs them on 1-3 ranks x 1-2 threads (mpirun --oversubscribe)
-# and prints the best solve-phase rate of the repeats (campaign.json:
-# rows_per_second_this_run, the scheduling loop without start-up and
-# writing) and the whole command's wall time. The exact model is skipped
+# and prints, as Markdown tables, the best solve-phase rate of the repeats
+# (campaign.json: rows_per_second_this_run, the scheduling loop without
+# start-up and writing) and the whole command's wall time. The exact model is skipped
 # when the library says it is not available. Also checks that every
 # configuration wrote the same results.csv.
 set -euo pipefail
@@ -44,9 +44,10 @@ wear_args=()
 run_model() { # run_model <model> <rows>
   local model=$1 rows=$2
   make_input "$model" "$rows" "$dir/$model.csv"
-  printf '\n%s%s, %d contacts (%s)\n' "$model" "$([ "${WEAR:-0}" = 1 ] && echo ' with --wear')" "$rows" \
-    "$([ "$model" = exact ] && echo 'uniform 44 x 44, 40 across' || echo 'strips 20 x 20')"
-  printf '%-6s %-8s %14s %12s %10s\n' ranks threads "contacts/s" "s/contact" "wall s"
+  printf '\n%s%s, %d contacts (%s), best of %d:\n\n' "$model" \
+    "$([ "${WEAR:-0}" = 1 ] && echo ' with --wear')" "$rows" \
+    "$([ "$model" = exact ] && echo 'uniform 44 x 44, 40 across' || echo 'strips 20 x 20')" "$repeats"
+  printf '| ranks | threads | contacts/s | s per contact | wall s |\n|---:|---:|---:|---:|---:|\n'
   local reference=""
   for cfg in "1 1" "1 2" "2 1" "3 1" "2 2"; do
     set -- $cfg
@@ -71,7 +72,7 @@ run_model() { # run_model <model> <rows>
         cmp -s "$dir/out/results.csv" "$reference" || { echo "results differ: $cfg"; exit 1; }
       fi
     done
-    printf '%-6s %-8s %14.0f %12.3g %10s\n' "$1" "$2" "$best" \
+    printf '| %s | %s | %.0f | %.3g | %s |\n' "$1" "$2" "$best" \
       "$(awk -v r="$best" 'BEGIN { print 1 / r }')" "$wall_best"
   done
 }
@@ -88,4 +89,5 @@ else
   echo
   echo "exact: not available in this build ($(tail -1 "$dir/probe/results.csv" | sed 's/.*,//'))"
 fi
-echo "(all configurations wrote the same results.csv)"
+echo
+echo "Every configuration wrote the same results.csv, bitwise."

@@ -1,7 +1,8 @@
 % creepwork.solve against the creepwork program (programs/cli) on the same
 % inputs: every number of cw_result that `creepwork solve --format json`
 % prints equals the MEX's (== on doubles), for FASTSIM, the calibrated and
-% the exact model (each with the CLI's default grid), and the fields of
+% the exact model (each with the CLI's default grid), through
+% creepwork.solve and creepwork.solve_many (the model by name), and the fields of
 % fields.csv (`creepwork solve --out DIR`) equal R.fields element by element.
 cli = getenv('CREEPWORK_CLI');
 base = {'a', 7e-3, 'b', 5e-3, 'N', 100e3, 'xi_x', 1e-3, 'xi_y', 5e-4, 'phi', 0.5};
@@ -15,6 +16,10 @@ for m = 1:numel(models)
   % rounded; jsondecode's parser is not, in the last bit).
   pairs = regexp(out, '\n  "(\w+)": (-?[0-9][-+.eE0-9]*)', 'tokens');
   r = creepwork.solve(base{:}, 'model', models{m});
+  % solve_many with the model's name: one contact (the name is one value,
+  % not one contact per character), the same numbers.
+  many = creepwork.solve_many(base{:}, 'model', models{m}, 'full', true);
+  assert(numel(many.Fx) == 1, sprintf('%s: %d contacts', models{m}, numel(many.Fx)));
   compared = 0;
   for k = 1:numel(pairs)
     name = pairs{k}{1};
@@ -22,6 +27,8 @@ for m = 1:numel(models)
     if isfield(r, name)
       assert(r.(name) == v, sprintf('%s %s: %.17g (MEX) vs %.17g (CLI)', models{m}, name, ...
                                     r.(name), v));
+      assert(many.(name) == v, sprintf('%s %s: %.17g (solve_many) vs %.17g (CLI)', ...
+                                       models{m}, name, many.(name), v));
       compared = compared + 1;
     end
   end

@@ -1,17 +1,17 @@
 % The helpers against published values: the header's Hertz example,
 % Kalker 1990 Table E.3 (a/b = 1, nu = 0.25: C11 = 4.12, C22 = 3.67,
-% C23 = 1.47, C33 = 1.19, ../shared/reference/kalker_cij.csv) and Kalker's
+% C23 = 1.47, C33 = 1.19, tests/data/kalker_cij.csv) and Kalker's
 % 1982 check values (kalker1982_checks.csv) to their 4 decimals.
 h = creepwork.hertz(1 / (2 * 0.457), 1 / (2 * 0.3), 100e3, 82e9 / (1 - 0.28));
 assert(round(h.a * 1e6) == 7170 && round(h.b * 1e6) == 5417 && round(h.p0 / 1e6) == 1229);
 c = creepwork.kalker_coefficients(1, 0.25);
-table = dlmread(fullfile(getenv('CREEPWORK_SHARED_DIR'), 'reference', 'kalker_cij.csv'), ',', 1, 0);
+table = dlmread(fullfile(getenv('CREEPWORK_TEST_DATA_DIR'), 'kalker_cij.csv'), ',', 1, 0);
 row = table(table(:, 2) == 1 & table(:, 3) == 0.25, :);
 assert(rows(row) == 1 && max(abs(c - row(4:7))) < 1e-12);
 L = creepwork.kalker_flexibilities(7e-3, 5e-3, 82e9, 0.28);
 c = creepwork.kalker_coefficients(7 / 5, 0.28);
 assert(abs(L(1) - 8 * 7e-3 / (3 * c(1) * 82e9)) < 1e-12 * L(1));
-checks = dlmread(fullfile(getenv('CREEPWORK_SHARED_DIR'), 'reference', 'kalker1982_checks.csv'), ...
+checks = dlmread(fullfile(getenv('CREEPWORK_TEST_DATA_DIR'), 'kalker1982_checks.csv'), ...
                  ',', 1, 0);
 assert(rows(checks) == 5);
 for k = 1:5

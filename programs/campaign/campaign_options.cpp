@@ -5,6 +5,7 @@
 #include "../cli/cli_error.hpp"
 #include "../cli/contact_inputs.hpp"
 #include "../cli/options.hpp"
+#include "../cli/progress.hpp"
 
 namespace cwcampaign {
 
@@ -274,15 +275,10 @@ CampaignOptions read_campaign_options(int argc, char** argv, int first)
     c.out = o.text("out", "");
     c.resume = o.has("resume");
     c.force = o.has("force");
-    c.quiet = o.has("quiet");
+    const cwcli::ProgressOptions progress = cwcli::read_progress_options(o);
+    c.quiet = progress.quiet;
+    c.progress = progress.every;
     c.strict = o.has("strict");
-    if (o.has("progress")) {
-        if (c.quiet) throw usage_error("--progress", "and --quiet contradict each other");
-        c.progress = o.number("progress", 0);
-        if (!(c.progress > 0 && c.progress <= 86400))
-            throw usage_error("--progress", "must lie in (0, 86400] seconds (got " +
-                                                cwcli::round_trip_text(c.progress) + ")");
-    }
     if (c.resume && c.force)
         throw usage_error("--resume", "and --force contradict each other: continue, or start "
                                       "over?");

@@ -1,9 +1,9 @@
 #include "coordinator.hpp"
 
 #include <chrono>
-#include <cstdio>
 #include <memory>
 
+#include "../cli/progress.hpp"
 #include "chunk_planner.hpp"
 #include "mpi_link.hpp"
 #include "wire.hpp"
@@ -43,7 +43,9 @@ public:
         for (int w = 0; w < static_cast<int>(workers_.size()); ++w) top_up(w);
         mpi::Backoff backoff;
         Clock::time_point last_sync = Clock::now();
-        double next_report = config_.first_report;
+        cwcli::Progress progress("campaign", "rows", total_,
+                                 {config_.progress, config_.first_report, config_.report_every},
+                                 already_);
         Bytes bytes;
         int source = 0;
         while (!finished()) {
@@ -63,10 +65,7 @@ public:
                 journal_.sync();
                 last_sync = Clock::now();
             }
-            if (config_.progress && since(start) >= next_report) {
-                report(since(start));
-                next_report = since(start) + config_.report_every;
-            }
+            progress.update(already_ + stats_.rows);
             if (progressed)
                 backoff.reset();
             else
@@ -134,18 +133,6 @@ private:
             s.rate = s.rate > 0.0 ? 0.5 * (s.rate + rate) : rate;
         }
         top_up(w);
-    }
-
-    void report(double seconds) const
-    {
-        const uint64_t done = already_ + stats_.rows;
-        const double rate = seconds > 0.0 ? static_cast<double>(stats_.rows) / seconds : 0.0;
-        const double left = rate > 0.0 ? static_cast<double>(total_ - done) / rate : 0.0;
-        std::fprintf(stderr,
-                     "creepwork: campaign: %llu of %llu rows done (%.0f %%), %.0f rows/s, about "
-                     "%.0f s to go\n",
-                     static_cast<unsigned long long>(done), static_cast<unsigned long long>(total_),
-                     100.0 * static_cast<double>(done) / static_cast<double>(total_), rate, left);
     }
 
     const std::vector<ContactCase>& cases_;

@@ -10,6 +10,7 @@
 #include "contact_solver.hpp"
 #include "json.hpp"
 #include "output_dir.hpp"
+#include "progress.hpp"
 #include "report.hpp"
 #include "sweep_plots.hpp"
 #include "sweep_series.hpp"
@@ -76,8 +77,10 @@ void write_cases_csv(const std::string& path, const std::vector<SweepFigure>& fi
 
 int command_sweep(int argc, char** argv, int first)
 {
-    const auto specs = join(join(join(material_and_load_options(), model_options()), grid_options()),
-                            output_options());
+    const auto specs =
+        join(join(join(join(material_and_load_options(), model_options()), grid_options()),
+                  output_options()),
+             progress_option_specs());
     ParsedOptions opts;
     if (parse_or_help(specs, argc, argv, first, usage_sweep(), opts)) return kExitOk;
     cw_params defaults;
@@ -87,6 +90,7 @@ int command_sweep(int argc, char** argv, int first)
     const std::string out = opts.text("out", "");
     if (out.empty()) throw usage_error("--out", "missing: sweep writes its maps to a directory");
     check_output_target(out, "--out", opts.has("force"));
+    const ProgressSchedule schedule = interactive_schedule(read_progress_options(opts));
 
     ContactSolver solver(c.grid);
     // One full solve at zero creepage gives the flexibilities and the grid geometry.
@@ -95,6 +99,9 @@ int command_sweep(int argc, char** argv, int first)
     const Saturation sat = saturation_creepages(c.params, base.result);
     const std::vector<SweepFigure> figs = paper_sweep_figures(sat);
     std::vector<std::vector<SweepPanel>> panels(figs.size());
+    size_t total = 0, done = 0;
+    for (const SweepFigure& f : figs) total += f.cases.size();
+    Progress progress("sweep", "maps", total, schedule);
     for (size_t k = 0; k < figs.size(); ++k)
         for (const SweepCase& sc : figs[k].cases) {
             cw_params p = c.params;
@@ -104,6 +111,7 @@ int command_sweep(int argc, char** argv, int first)
             SweepPanel panel{sc, {}, {}};
             panel.result = solver.solve_states(p, panel.state);
             panels[k].push_back(std::move(panel));
+            progress.update(++done);
         }
 
     const Units& u = c.units;

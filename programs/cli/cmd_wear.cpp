@@ -25,6 +25,7 @@
 #include "gnuplot.hpp"
 #include "json.hpp"
 #include "output_dir.hpp"
+#include "progress.hpp"
 #include "report.hpp"
 
 namespace cwcli {
@@ -408,7 +409,7 @@ int command_wear(int argc, char** argv, int first)
                                             {"force", K::flag, {}},
                                             {"no-plots", K::flag, {}},
                                             {"help", K::flag, {}}};
-    const auto specs = join(join(own, grid_options()), output);
+    const auto specs = join(join(join(own, grid_options()), output), progress_option_specs());
     ParsedOptions opts;
     if (parse_or_help(specs, argc, argv, first, usage_wear(), opts)) return kExitOk;
     if (!opts.has("in")) throw usage_error("--in", "missing: the CSV file of contact states");
@@ -416,6 +417,7 @@ int command_wear(int argc, char** argv, int first)
     const std::string file = opts.text("in", "");
     const std::string out = opts.text("out", "");
     check_output_target(out, "--out", opts.has("force"));
+    const ProgressSchedule schedule = interactive_schedule(read_progress_options(opts));
     Setup u = read_setup(opts);
     // Every state checked before anything is solved or written.
     const std::vector<State> states = read_states(file, opts, u);
@@ -438,6 +440,7 @@ int command_wear(int argc, char** argv, int first)
     std::vector<double> y(ny), width(ny), depth(ny), par(ny);
     std::vector<StateResult> rows;
     double mass = 0.0;
+    Progress progress("wear", "states", states.size(), schedule);
     for (size_t k = 0; k < states.size(); ++k) {
         const State& s = states[k];
         const auto row_error = [&](const std::string& what) {
@@ -469,6 +472,7 @@ int command_wear(int argc, char** argv, int first)
         if (sp != CW_OK) row_error(cw_wear_profile_last_error(h.parabola));
         mass += passes * r.wear.mass_per_pass;
         rows.push_back(r);
+        progress.update(k + 1);
     }
     const size_t n = prof.s.size();
     for (auto* v : {&prof.normal, &prof.height, &prof.par_normal, &prof.par_height}) v->resize(n);

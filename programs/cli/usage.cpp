@@ -252,6 +252,9 @@ output: --out DIR (required), --force, --format text|json (the table of
 cases on stdout), --no-plots. DIR gets cases.csv (one row per panel: figure,
 panel, xi_x, xi_y, spin, Fx, Fy, Mz on the wheel, adhesion_fraction, n_slip,
 n_contact) and fig2.png .. fig5.png with their gnuplot/ scripts.
+progress: on a terminal, a line on stderr after 2 s and then every 10 s
+(maps solved, rate, time to go); --progress S a line every S seconds,
+terminal or not; --quiet none.
 )";
 }
 
@@ -371,6 +374,9 @@ profile grid: --profile-from S --profile-to S --profile-step DS [m]
   narrowest strip)
 output: --out DIR (required; all or nothing), --force, --no-plots,
   --format text|json (the summary on stdout)
+progress: on a terminal, a line on stderr after 2 s and then every 10 s
+  (states solved, rate, time to go); --progress S a line every S seconds,
+  terminal or not; --quiet none
 
 files in DIR:
   wear_profile.csv  k,s_m,depth_normal_m,depth_height_m,

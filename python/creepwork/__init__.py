@@ -27,6 +27,17 @@ subclasses, UnitWarning; the header's constants (CW_*); creepwork.plot
 (needs matplotlib).
 """
 
+try:
+    import numpy as _numpy  # noqa: F401  the one run-time dependency: say how to get it
+except ImportError as _missing:
+    import sys as _sys
+    raise ImportError(
+        "creepwork needs numpy, which this Python (%s, %s) does not have. On Debian, "
+        "/usr/bin/python3 has it with the package python3-numpy (apt-get install "
+        "python3-numpy): run your script with /usr/bin/python3. Or install numpy into this "
+        "Python: %s -m pip install numpy"
+        % (_sys.executable, _sys.version.split()[0], _sys.executable)) from _missing
+
 from ._errors import Error, UnitWarning, EXCEPTION_NAMES, BY_STATUS as _BY_STATUS
 from ._library import CONSTANTS as _CONSTANTS, DTYPES, LIBRARY_PATH
 from ._solver import (FIELDS, JACOBIAN_COLUMNS, JACOBIAN_ROWS, Profile, Result, Solver,

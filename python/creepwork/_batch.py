@@ -13,7 +13,7 @@ from typing import Any, List, Optional, Tuple, Union
 
 import numpy as np
 
-from . import _checks, _errors
+from . import _checks, _errors, _progress
 from ._handle import Handle
 from ._library import CONSTANTS, DTYPES, address, defaults, filled, lib
 from ._params import PARAMS, grid_record, require_geometry
@@ -106,21 +106,25 @@ class Batch(Handle):
         self._check(lib.cw_batch_prepare(self._live(), int(PARAMS.convert("model", model))))
 
     def solve(self, params: Optional[np.ndarray] = None, *, full: bool = False, warn: bool = True,
-              **keywords: Any) -> ManyResult:
+              progress: Any = False, **keywords: Any) -> ManyResult:
         """Solves every contact the keywords describe (solve()'s keywords, each
         a scalar or an array; numpy broadcasting) and returns a ManyResult.
         params: a cw_params structured array (any shape) the keywords
         override. full=True also computes the totals marked (FULL) in the
         header (W_micro_paper, K, ...; CW_SOLVE_FULL). A failed contact does
-        not stop the others: see ManyResult.status and messages."""
-        return self._solve(params, keywords, full, warn, "solve", 2)
+        not stop the others: see ManyResult.status and messages.
+        progress: True for a progress line on stderr after 2 s and then
+        every 10 s, a number S for one every S seconds, or a callable
+        progress(done, total) called as the contacts are solved."""
+        return self._solve(params, keywords, full, warn, progress, "solve", 2)
 
-    def _solve(self, params_in, keywords, full, warn, caller, stacklevel):
+    def _solve(self, params_in, keywords, full, warn, progress, caller, stacklevel):
         handle = self._live()
         typed = typed_names(None, keywords, caller)
         if params_in is None:
             require_geometry(typed, caller)
         recs, _ = _records(params_in, keywords, caller)
+        report = _progress.reporter(progress, recs.size, caller)
         if warn:
             _errors.warn_units(_checks.warnings_for(self._grid, recs, typed), stacklevel)
         flat = recs.reshape(-1)
@@ -128,11 +132,16 @@ class Batch(Handle):
         results = filled("cw_result", count)
         status = np.zeros(count, np.intc)
         mode = CONSTANTS["CW_SOLVE_FULL"] if full else CONSTANTS["CW_SOLVE_FORCES"]
-        if count:
-            code = lib.cw_batch_solve(handle, count, address(flat), mode, address(results),
-                                      address(status))
-            if code != 0 and not status.any():  # the call itself failed, no contact did
+        # One call, or with progress about a hundred (bitwise the same results).
+        step = max(1, count if report is None else -(-count // _progress.PARTS))
+        for first in range(0, count, step):
+            last = min(count, first + step)
+            code = lib.cw_batch_solve(handle, last - first, address(flat[first:last]), mode,
+                                      address(results[first:last]), address(status[first:last]))
+            if code != 0 and not status[first:last].any():  # the call failed, no contact did
                 _errors.check(code, lambda: lib.cw_batch_last_error(handle))
+            if report is not None:
+                report(last)
         messages = {}
         bad = np.flatnonzero(status)
         for k in bad:
@@ -187,7 +196,8 @@ def _records(params_in, keywords, caller):
 
 
 def solve_many(params: Optional[np.ndarray] = None, *, grid: GridLike = None, full: bool = False,
-               threads: int = 0, warn: bool = True, **keywords: Any) -> ManyResult:
+               threads: int = 0, warn: bool = True, progress: Any = False,
+               **keywords: Any) -> ManyResult:
     """Solves many contacts in one call to the C batch API (cw_batch_solve),
     on threads (threads <= 0: every core), with the GIL released, and returns
     a creepwork.ManyResult of arrays (Fx, Fy, Mz, W_macro, ..., status).
@@ -204,7 +214,9 @@ def solve_many(params: Optional[np.ndarray] = None, *, grid: GridLike = None, fu
     are solved: nothing is raised for them (out.raise_first() raises).
     Results are bitwise those of solve() one by one; the exact model is
     solved cold (warm_start ignored). For repeated calls on one grid keep a
-    creepwork.Batch."""
+    creepwork.Batch. progress: True for a progress line on stderr after 2 s
+    and then every 10 s, a number S for one every S seconds, or a callable
+    progress(done, total) called as the contacts are solved."""
     grid = _grid_for(grid, params, keywords)
     with Batch(grid, threads) as batch:
-        return batch._solve(params, keywords, full, warn, "solve_many", 2)
+        return batch._solve(params, keywords, full, warn, progress, "solve_many", 2)

@@ -9,12 +9,13 @@ keywords without an edit here.
 
 import difflib
 import textwrap
+import weakref
 
 import numpy as np
 
 from . import _checks, _errors
 from ._layout import LAYOUT
-from ._library import DTYPES, address, defaults, lib
+from ._library import _NUMPY, DTYPES, address, defaults, lib
 
 _ENUMS = {}
 for _key, _members in LAYOUT["enums"].items():
@@ -100,9 +101,13 @@ class Keywords:
     def fill(self, record, keywords, caller, keep=None):
         """Sets record[field] = value for each keyword (record: a numpy record of
         this struct, any shape; values broadcast). Pointer fields take a numpy
-        array, whose address is stored (and its size in the field <name>_len,
-        unless that is given too); it is appended to keep, so that the caller
-        holds it alive while the library may read it."""
+        array, whose values the library reads in C order as the field's C
+        type whatever the array's memory order and dtype (a C-ordered copy
+        where they differ); the address is stored (and the size in the field
+        <name>_len, unless that is given too). The array read is appended to
+        keep, so that the caller holds it alive while the library may read
+        it; without keep (a record that outlives the call) a copy lives as
+        long as the array given."""
         for key, value in keywords.items():
             field = self.field(key, caller)
             spec = self.fields[field]
@@ -110,9 +115,11 @@ class Keywords:
                 if value is None:
                     record[field] = 0
                     continue
-                arr = np.ascontiguousarray(value)
+                arr = np.ascontiguousarray(value, dtype=_NUMPY[spec["ctype"]])
                 if keep is not None:
                     keep.append(arr)
+                elif not (isinstance(value, np.ndarray) and np.may_share_memory(arr, value)):
+                    _outlive(value, arr, field, caller)
                 record[field] = arr.__array_interface__["data"][0]
                 # Its length field (gap -> gap_len) follows the array unless given.
                 length = field + "_len"
@@ -152,6 +159,24 @@ class Keywords:
 
 def _status(name):
     return LAYOUT["constants"][name]
+
+
+def _outlive(source, copy, field, caller):
+    """Keeps copy, the C-ordered values of source that a record's pointer
+    field holds, alive as long as the array source views (or source itself):
+    the record then reads them while the caller's array lives, as it reads
+    a C-ordered array in place."""
+    owner = source
+    while isinstance(owner, np.ndarray) and isinstance(owner.base, np.ndarray):
+        owner = owner.base
+    if not isinstance(owner, np.ndarray):
+        raise TypeError("%s(): %s must be a numpy array, got %s: the record keeps the address "
+                        "of its values" % (caller, field, type(source).__name__))
+    weakref.finalize(owner, _release, copy)
+
+
+def _release(copy):
+    """The finalizer's callback: the copy goes with its last reference."""
 
 
 PARAMS = Keywords("cw_params")

@@ -100,7 +100,10 @@ def params(**keywords: Any) -> np.ndarray:
         p["xi_x"] = 2e-3
         solver.solve(p)
 
-    The keywords are solve()'s (help(creepwork.solve))."""
+    The keywords are solve()'s (help(creepwork.solve)). A pointer field
+    (gap=h) holds the address of h's values in C order as doubles (a copy
+    where h is not that): the record reads them while h, or the array h
+    views, lives."""
     return PARAMS.record(keywords, "params")
 
 

@@ -2,7 +2,7 @@
 CMakeLists.txt) runs each test file with PYTHONPATH at the staged package
 and these environment variables naming what the tests compare with:
   CREEPWORK_SOURCE_DIR   the source tree (header, generator, docs, examples)
-  CREEPWORK_SHARED_DIR   reference data (Kalker's published check values)
+  CREEPWORK_TEST_DATA_DIR reference data (tests/data: Kalker's published values)
   CREEPWORK_CLI          the creepwork program (bitwise comparisons)
   CREEPWORK_C_QUICKSTART the C quick start program
   CREEPWORK_LAYOUT_PROBE layout_probe.c compiled with -g; CREEPWORK_READELF
@@ -29,8 +29,8 @@ def source_dir():
 
 
 @pytest.fixture(scope="session")
-def shared_dir():
-    return env_path("CREEPWORK_SHARED_DIR")
+def test_data_dir():
+    return env_path("CREEPWORK_TEST_DATA_DIR")
 
 
 @pytest.fixture(scope="session")

@@ -1,7 +1,8 @@
 """Contacts of any shape through the package: a gap grid (kind "gap") with
 the gap as a numpy array. Checked against the elliptic exact model (a
-Hertzian gap is the same discrete problem, header: CW_GRID_GAP) and against
-the definitions of the patches (their totals add up to the result's)."""
+Hertzian gap is the same discrete problem, header: CW_GRID_GAP), against
+the definitions of the patches (their totals add up to the result's), and
+against the C-ordered gap's bits for a gap in another memory order or dtype."""
 
 import numpy as np
 import pytest
@@ -88,6 +89,38 @@ def test_fastsim_on_a_gap_grid_patches_add_up():
     assert p["n_contact"].sum() == r.n_contact
     assert np.all(np.hypot(p["Fx"], p["Fy"]) <= 0.3 * p["Fn"] * (1 + 1e-12))
     assert abs(r.W_consistent - r.W_macro) <= 1e-12 * r.W_macro
+
+
+def test_gap_in_any_memory_order_is_read_in_c_order():
+    """The gap is read as the (ny, nx) array it is, element (i, j) at [j, i]
+    (header: [i + j*nx]), whatever its memory order: a Fortran-ordered copy,
+    the transpose of a transposed copy and a strided slice of a larger array
+    give the C-ordered array's results bitwise; so does a float32 gap the
+    float32 values as doubles. The gap is not symmetric (a ripple along x,
+    the lobes 2 um apart in height), so a transposed or strided read would
+    change the contact."""
+    grid = gap_grid(30, 56, -5e-3, -12e-3, 0.35e-3, 0.45e-3)
+    x, y = centres(grid)
+    lobe = lambda yc, lift: x ** 2 / 0.9 + (y - yc) ** 2 / 0.5 + lift
+    h = np.minimum(lobe(-6e-3, 0.0), lobe(6e-3, 2e-6)) + 0.3e-6 * np.sin(x / 0.7e-3)
+    larger = np.zeros((3 * 56, 2 * 30))
+    larger[1::3, ::2] = h
+    single = h.astype(np.float32)
+    kw = dict(CREEP, N=N, model="fastsim", normal_method="semi_hertz")
+    with creepwork.Solver(grid=grid) as s:
+        ref = s.solve(**kw, gap=h)
+        base = s.solve(**kw, gap=single.astype(np.float64))
+        cases = [("Fortran order", np.asfortranarray(h), ref),
+                 ("transposed copy", h.T.copy().T, ref),
+                 ("slice", larger[1::3, ::2], ref),
+                 ("float32", single, base)]
+        for name, gap, expected in cases:
+            assert not gap.flags.c_contiguous or gap.dtype != np.float64, name
+            r = s.solve(**kw, gap=gap)
+            for key in ("Fx", "Fy", "Mz", "normal_force", "p_max"):
+                assert getattr(r, key) == getattr(expected, key), (name, key)
+            assert np.array_equal(r.pz, expected.pz), name
+    assert ref.n_patches == 2 and base.Fx != ref.Fx  # the float32 gap is another gap
 
 
 def test_one_patch_off_a_gap_grid_and_errors_name_the_input():

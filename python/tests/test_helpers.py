@@ -1,6 +1,6 @@
 """The linear-theory and Hertz helpers and Kalker's normalised FASTSIM
 against published values: Kalker 1990 Table E.3, Kalker's 1982 check
-values (../shared/reference), the header's Hertz example."""
+values (tests/data), the header's Hertz example."""
 
 import csv
 import math
@@ -11,15 +11,15 @@ import pytest
 import creepwork
 
 
-def read(shared_dir, name):
-    with open(os.path.join(shared_dir, "reference", name), newline="") as f:
+def read(test_data_dir, name):
+    with open(os.path.join(test_data_dir, name), newline="") as f:
         return list(csv.DictReader(f))
 
 
-def test_kalker_coefficients_reproduce_table_e3(shared_dir):
+def test_kalker_coefficients_reproduce_table_e3(test_data_dir):
     """Every entry of Kalker 1990, Table E.3 at its table point (the CSV's a/b
     is rounded; the exact point is its g column), to 1e-12."""
-    rows = read(shared_dir, "kalker_cij.csv")
+    rows = read(test_data_dir, "kalker_cij.csv")
     assert len(rows) == 57
     for row in rows:
         g, a_over_b = float(row["g"]), float(row["a_over_b"])
@@ -52,9 +52,9 @@ def test_hertz_example_of_the_header():
         creepwork.hertz(1.0, 1.0, 100e3, -1.0)
 
 
-def test_fastsim_normalised_reproduces_kalker_1982(shared_dir):
+def test_fastsim_normalised_reproduces_kalker_1982(test_data_dir):
     """Kalker's published check values (Kalker 1982, 5 x 5), to their 4 decimals."""
-    rows = read(shared_dir, "kalker1982_checks.csv")
+    rows = read(test_data_dir, "kalker1982_checks.csv")
     assert len(rows) == 5
     for row in rows:
         tx, ty = creepwork.fastsim_normalised(*(float(row[k]) for k in ("ux", "uy", "fx", "fy")),

@@ -1,7 +1,8 @@
 """Implausible units warn with creepwork.UnitWarning exactly where the CLI
 warns (its plausibility_warnings, programs/cli/contact_inputs.cpp): each
 rule is tried just beyond and just inside its threshold, through solve(),
-solve_many() and the CLI, and all three must agree."""
+solve_many() and the CLI, and all three must agree; a params array's values
+warn as keywords do."""
 
 import warnings
 
@@ -73,6 +74,32 @@ def test_solve_many_warns_once_per_rule_with_the_count():
     assert "(2 of 1000 contacts)" in messages[0] and "millimetres" in messages[0]
     assert caught[0].filename == __file__  # points at the caller's line
     assert out.ok.all()
+
+
+def test_params_array_warns_like_keywords():
+    """Values inside a params array are checked as keywords are: records
+    with the semi-axes in millimetres or the load in kN among plausible ones
+    warn once per rule with the count, through solve_many and Batch.solve,
+    with the keywords plausible; warn=False is silent."""
+    p = np.empty(50, creepwork.DTYPES["cw_params"])
+    p[...] = creepwork.params(**BASE)
+    p["a"][[7, 31, 40]] = 7.0  # mm typed as m
+    p["b"][[7, 31, 40]] = 5.0
+    p["normal_force"][12] = 100.0  # kN typed as N
+    for call in (lambda **k: creepwork.solve_many(p, xi_x=1e-3, **k),
+                 lambda **k: creepwork.Batch(threads=1).solve(p, xi_x=1e-3, **k)):
+        with warnings.catch_warnings(record=True) as caught:
+            warnings.simplefilter("always")
+            out = call()
+        messages = sorted(str(w.message) for w in caught if w.category is creepwork.UnitWarning)
+        assert len(messages) == 3, messages
+        assert messages[0].startswith("N = 100 N (1 of 50 values) is implausible"), messages
+        assert messages[1].startswith("a = 7 m (3 of 50 values) is implausible"), messages
+        assert messages[2].startswith("b = 5 m (3 of 50 values) is implausible"), messages
+        assert out.ok.all()
+        with warnings.catch_warnings():
+            warnings.simplefilter("error", creepwork.UnitWarning)
+            call(warn=False)
 
 
 def test_warn_false_and_the_warning_filter():

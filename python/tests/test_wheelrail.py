@@ -4,9 +4,11 @@ FS -2902 N, p_max 713.2 N/mm^2, z_ws 0.1143 mm; CONTACT's
 examples/mbench_a22_right.ref_out): forces within 1 % of the load, p_max
 within 3 %; the height prescribed gives the same forces; the patch's fields
 add up to its forces (their definition) and its wear on a rail grid to
-passes x the volume per distance; the fast model is within 3 % of mu Fn of
-the exact one; errors name the input; implausible units warn."""
+passes x the volume per distance, and two patches' wear adds up as the
+header says; the fast model is within 3 % of mu Fn of the exact one; errors
+name the input; implausible units warn."""
 
+import ctypes
 import os
 import warnings
 
@@ -14,6 +16,7 @@ import numpy as np
 import pytest
 
 import creepwork
+from creepwork._library import DTYPES, address, defaults, lib
 
 DATA = os.path.join(os.environ.get("CREEPWORK_SOURCE_DIR", "."), "tests", "wheelrail", "data")
 RAIL = os.path.join(DATA, "MBench_UIC60_v3.prr")
@@ -111,6 +114,41 @@ def test_patch_fields_and_wear():
             w.patch_field(1, "pz")
         with pytest.raises(creepwork.UnknownOptionError, match="'pressure'"):
             w.patch_field(0, "pressure")
+
+
+def _patch_wear(w, k):
+    """Patch k's own wear per pass (USFD, the defaults), through the C ABI:
+    its solver view (cw_wheelrail_patch_solver) and cw_wear_compute."""
+    view = lib.cw_wheelrail_patch_solver(w._live(), k)
+    assert view
+    wear = ctypes.c_void_p()
+    assert lib.cw_wear_create(view, ctypes.byref(wear)) == 0
+    out = np.zeros((), DTYPES["cw_wear_result"])
+    lib.cw_wear_result_init(address(out))
+    law = defaults("cw_wear_params").copy()
+    assert lib.cw_wear_compute(wear, view, address(law), address(out)) == 0
+    lib.cw_wear_destroy(wear)
+    return out
+
+
+def test_wear_of_two_patches():
+    """Two patches (the reference case b11, tools/contact_reference/wheelrail:
+    y = 5 mm, yaw 0.012, roll -0.00035, 10 kN, D_SEP = 2 mm and D_COMB = 1 mm
+    keeping the two regions apart): add_wear's result sums the patches'
+    mass, volume and work per pass, and its max_depth is the deeper patch's
+    (header, cw_wheelrail_add_wear), each patch's wear its own."""
+    motion = dict(y=5e-3, yaw=0.012, roll=-0.00035, vs=2.0, vpitch=-4.335)
+    with creepwork.WheelRail(RAIL, WHEEL, d_sep=2e-3, d_comb=1e-3) as w, \
+            creepwork.WearProfile(np.linspace(-0.04, 0.04, 801)) as rail:
+        totals, _ = w.solve(Fz=1e4, **motion)
+        assert totals["n_patches"] == 2
+        worn = w.add_wear(1e3, rail=rail)
+        each = [_patch_wear(w, k) for k in range(2)]
+    depths = [float(e["max_depth"]) for e in each]
+    assert min(depths) > 0 and worn["max_depth"] == max(depths)
+    assert worn["max_depth"] < sum(depths)
+    for name in ("mass_per_distance", "volume_per_distance", "work"):
+        assert worn[name] == pytest.approx(sum(float(e[name]) for e in each), rel=1e-15), name
 
 
 def test_fast_model_follows_exact():

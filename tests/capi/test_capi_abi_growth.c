@@ -1,9 +1,11 @@
 /* ABI growth (header, "Structs"): a program built against an older, smaller
  * struct keeps working. The library reads and writes min(struct_size,
  * sizeof) bytes; fields beyond the caller's struct_size take their defaults
- * on input and are never written on output; batch arrays are strided by
- * element 0's struct_size. The "old" structs below are the current ones cut
- * before a field, exactly what an old header would have declared. */
+ * on input and are never written on output; batch arrays and the patch
+ * array are strided by element 0's struct_size, and a result element
+ * smaller than element 0 is refused. The "old" structs below are the
+ * current ones cut before a field, exactly what an old header would have
+ * declared. */
 #include "capi_fixtures.h"
 
 #include <stdlib.h>
@@ -365,6 +367,82 @@ static void batch_with_old_and_new_strides(void** state)
     cw_batch_destroy(b);
 }
 
+/* A results array is strided by results[0].struct_size, so an element that
+ * carries a smaller one (an old struct among today's, or an older one among
+ * old ones) would be written past its own end: the batch is refused with
+ * CW_ERR_STRUCT_SIZE naming the element, before anything is written (every
+ * result and status as it was). */
+static void batch_refuses_a_smaller_result_element(void** state)
+{
+    (void)state;
+    cw_batch* b = cw_test_batch(CW_GRID_KALKER_STRIPS, 15, 12, 1.0, 3);
+    cw_params p[COUNT];
+    for (int k = 0; k < COUNT; ++k) cw_test_case(k, &p[k]);
+    int statuses[COUNT];
+
+    result_next next_r[COUNT];
+    cw_poison(next_r, sizeof next_r);
+    for (int k = 0; k < COUNT; ++k) next_r[k].r.struct_size = sizeof next_r[k];
+    next_r[6].r.struct_size = sizeof(cw_result); /* today's among future ones */
+    result_next next_before[COUNT];
+    memcpy(next_before, next_r, sizeof next_r);
+    cw_fill_int(statuses, COUNT, CW_INT_SENTINEL);
+    assert_status(cw_batch_solve(b, COUNT, p, CW_SOLVE_FULL, &next_r[0].r, statuses),
+                  CW_ERR_STRUCT_SIZE);
+    assert_names(cw_batch_last_error(b), "results[6]");
+    assert_memory_equal(next_r, next_before, sizeof next_r);
+    assert_untouched_int(statuses, COUNT);
+
+    result_v0 old_r[COUNT];
+    cw_poison(old_r, sizeof old_r);
+    for (int k = 0; k < COUNT; ++k) old_r[k].struct_size = sizeof old_r[k];
+    old_r[3].struct_size = offsetof(cw_result, K); /* older still */
+    result_v0 old_before[COUNT];
+    memcpy(old_before, old_r, sizeof old_r);
+    assert_status(cw_batch_solve(b, COUNT, p, CW_SOLVE_FULL, (cw_result*)old_r, statuses),
+                  CW_ERR_STRUCT_SIZE);
+    assert_names(cw_batch_last_error(b), "results[3]");
+    assert_memory_equal(old_r, old_before, sizeof old_r);
+    assert_untouched_int(statuses, COUNT);
+
+    /* The same arrays with every element alike are solved. */
+    old_r[3].struct_size = sizeof old_r[3];
+    assert_status(cw_batch_solve(b, COUNT, p, CW_SOLVE_FULL, (cw_result*)old_r, statuses), CW_OK);
+    cw_batch_destroy(b);
+}
+
+/* cw_solver_get_patches strides the caller's array by out[0].struct_size:
+ * patch k of two lands at k times it, for an old cw_patch (cut before Fn,
+ * the leading fields written) and a future one (today's fields written, its
+ * tail untouched), each the patch of today's struct. */
+static void patches_with_old_and_new_strides(void** state)
+{
+    (void)state;
+    double h[CW_LOBES_NX * CW_LOBES_NY];
+    const cw_grid g = cw_test_two_lobes(h);
+    cw_solver* s = NULL;
+    assert_int_equal(cw_solver_create(&g, &s, NULL, 0), CW_OK);
+    cw_params p;
+    cw_params_init(&p);
+    p.model = CW_MODEL_EXACT;
+    p.normal_force = 60e3;
+    p.xi_x = 4e-4;
+    p.xi_y = -3e-4;
+    p.phi = 0.3;
+    p.gap = h;
+    p.gap_len = CW_LOBES_NX * CW_LOBES_NY;
+    assert_int_equal(cw_solver_solve(s, &p, CW_SOLVE_FORCES, NULL), CW_OK);
+    cw_patch today[2];
+    cw_patch_init(&today[0]);
+    cw_patch_init(&today[1]);
+    size_t count = 0;
+    assert_int_equal(cw_solver_get_patches(s, today, 2, &count), CW_OK);
+    assert_int_equal(count, 2);
+    assert_true(today[0].Fn > today[1].Fn && today[1].Fn > 0.0); /* two different patches */
+    cw_check_patch_strides(s, today, 2);
+    cw_solver_destroy(s);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -377,6 +455,8 @@ int main(void)
         cmocka_unit_test(smaller_grid_takes_defaults),
         cmocka_unit_test(zero_struct_size_is_refused),
         cmocka_unit_test(batch_with_old_and_new_strides),
+        cmocka_unit_test(batch_refuses_a_smaller_result_element),
+        cmocka_unit_test(patches_with_old_and_new_strides),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

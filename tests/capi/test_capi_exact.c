@@ -1,7 +1,7 @@
 /* The exact model through the C ABI: cw_solver_prepare and
  * cw_batch_prepare, the result's p_max/approach/iterations/residual, named
  * errors, CW_ERR_NOT_CONVERGED leaving no solution, and one CONTACT row
- * (ab1_cmb, 20 elements across, ../shared/reference/contact_exact_dev.csv;
+ * (ab1_cmb, 20 elements across, tests/data/contact_exact_dev.csv;
  * CONTACT's units mm, N, N/mm^2). */
 #include "capi_fixtures.h"
 

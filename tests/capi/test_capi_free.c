@@ -16,7 +16,7 @@ static const double pi = 3.14159265358979323846;
 static void coefficients_reproduce_table_e3(void** state)
 {
     (void)state;
-    FILE* f = fopen(CW_SHARED_DIR "/reference/kalker_cij.csv", "r");
+    FILE* f = fopen(CW_TEST_DATA_DIR "/kalker_cij.csv", "r");
     assert_non_null(f);
     char line[256];
     assert_non_null(fgets(line, sizeof line, f));

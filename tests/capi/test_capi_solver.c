@@ -678,7 +678,7 @@ static int split_csv(char* line, char* cols[CSV_COLUMNS])
 static void contact_reference_rows(void** state)
 {
     (void)state;
-    FILE* f = fopen(CW_SHARED_DIR "/reference/contact_fastsim_dev.csv", "r");
+    FILE* f = fopen(CW_TEST_DATA_DIR "/contact_fastsim_dev.csv", "r");
     assert_non_null(f);
     char line[2048];
     char* cols[CSV_COLUMNS];

@@ -164,7 +164,7 @@ void test_plain_fastsim_differs_from_contact_default(void**)
 void test_blended_flexibilities_match_contact_rows(void**)
 {
     const compat::CsvTable t =
-        compat::read_csv(CW_SHARED_DIR "/reference/contact_fastsim_dev.csv");
+        compat::read_csv(CW_TEST_DATA_DIR "/contact_fastsim_dev.csv");
     int checked = 0;
     for (size_t r = 0; r < t.rows.size(); ++r) {
         const std::string m = t.text(r, "method");

@@ -55,9 +55,10 @@ inline CsvTable read_csv(const std::string& path)
     return t;
 }
 
-inline std::string shared_path(const std::string& relative)
+// A file of the tests' reference data (tests/data, its README.md).
+inline std::string test_data_path(const std::string& relative)
 {
-    return std::string(CW_SHARED_DIR) + "/" + relative;
+    return std::string(CW_TEST_DATA_DIR) + "/" + relative;
 }
 
 // A steel wheel on rail, SI units: the CONTACT reference case (a = b = 6 mm,

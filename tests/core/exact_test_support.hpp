@@ -1,5 +1,5 @@
 // Helpers for the exact model's tests: CONTACT's exact rows
-// (../shared/reference/contact_exact_dev.csv, CONTACT method a, commit
+// (tests/data/contact_exact_dev.csv, CONTACT method a, commit
 // d431cdb) as solver inputs, in CONTACT's units (mm, N, N/mm^2; the library
 // is unit-consistent).
 #pragma once
@@ -23,7 +23,7 @@ struct ExactRow {
 
 inline std::vector<ExactRow> exact_rows(int only_N = 0)
 {
-    const CsvTable t = read_csv(shared_path("reference/contact_exact_dev.csv"));
+    const CsvTable t = read_csv(test_data_path("contact_exact_dev.csv"));
     std::vector<ExactRow> rows;
     for (size_t r = 0; r < t.rows.size(); ++r) {
         ExactRow row;

@@ -1,6 +1,6 @@
 // Helpers for the non-Hertzian tests: gap files (x_m,y_m,h_m at the cell
-// centres of a regular grid, ../shared/reference/nonhertz/README.md), the
-// DEV cases of ../shared/reference/nonhertz/dev/cases.csv and the cases of
+// centres of a regular grid, tests/data/README.md), the
+// DEV cases of tests/data/nonhertz/dev/cases.csv and the cases of
 // tests/core/data/nonhertz (CONTACT commit d431cdb, module 3) as solver
 // inputs, a reading of CONTACT's element fields, and the elliptic contact of
 // the Hertzian-gap checks.
@@ -153,7 +153,7 @@ inline std::vector<GapCase> gap_cases(const std::string& folder, const std::stri
 
 inline std::vector<GapCase> dev_cases()
 {
-    return gap_cases(shared_path("reference/nonhertz/dev"), "cases.csv");
+    return gap_cases(test_data_path("nonhertz/dev"), "cases.csv");
 }
 
 // CONTACT's element fields of a case (x_m,y_m,eldiv,pn_Pa,px_Pa,py_Pa) on the

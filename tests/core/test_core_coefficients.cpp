@@ -9,12 +9,12 @@ namespace cw = creepwork;
 
 namespace {
 
-// Every entry of Kalker 1990, Table E.3 (../shared/reference/kalker_cij.csv)
+// Every entry of Kalker 1990, Table E.3 (tests/data/kalker_cij.csv)
 // is reproduced at its table point. The CSV's a/b is rounded (1.11111), so
 // the exact point is taken from its g column.
 void table_points_reproduced(void**)
 {
-    const cwtest::CsvTable t = cwtest::read_csv(cwtest::shared_path("reference/kalker_cij.csv"));
+    const cwtest::CsvTable t = cwtest::read_csv(cwtest::test_data_path("kalker_cij.csv"));
     assert_int_equal(t.rows.size(), 57);
     for (size_t r = 0; r < t.rows.size(); ++r) {
         const double g = t.number(r, "g");
@@ -84,7 +84,7 @@ void asymptotes_meet_the_table(void**)
 void flexibilities_match_contact(void**)
 {
     const cwtest::CsvTable t =
-        cwtest::read_csv(cwtest::shared_path("reference/contact_fastsim_dev.csv"));
+        cwtest::read_csv(cwtest::test_data_path("contact_fastsim_dev.csv"));
     int checked = 0;
     for (size_t r = 0; r < t.rows.size(); ++r) {
         if (t.text(r, "method") != "bk") continue;

@@ -1,6 +1,6 @@
 // CONTACT cross-check: on the uniform grid, with each row's L1, L2, L3 and
 // box scale, creepwork reproduces every FASTSIM row of
-// ../shared/reference/contact_fastsim_dev.csv (CONTACT, Vollebregt & Kalker,
+// tests/data/contact_fastsim_dev.csv (CONTACT, Vollebregt & Kalker,
 // commit d431cdb): methods b and c for pure creepage, b0 and bk with spin.
 // With --markdown the program prints the simplified theory's error against
 // CONTACT's exact theory per case, the table of doc/validation/contact.md,
@@ -27,7 +27,7 @@ struct Row {
 std::vector<Row> fastsim_rows()
 {
     const cwtest::CsvTable t =
-        cwtest::read_csv(cwtest::shared_path("reference/contact_fastsim_dev.csv"));
+        cwtest::read_csv(cwtest::test_data_path("contact_fastsim_dev.csv"));
     std::vector<Row> rows;
     for (size_t r = 0; r < t.rows.size(); ++r) {
         const std::string m = t.text(r, "method");
@@ -131,7 +131,7 @@ struct ExactComparison {
 std::vector<ExactComparison> against_exact_theory()
 {
     const cwtest::CsvTable t =
-        cwtest::read_csv(cwtest::shared_path("reference/contact_fastsim_dev.csv"));
+        cwtest::read_csv(cwtest::test_data_path("contact_fastsim_dev.csv"));
     const std::vector<Row> rows = fastsim_rows();
     std::vector<ExactComparison> out;
     for (size_t r = 0; r < t.rows.size(); ++r) {

@@ -2,7 +2,7 @@
 //  - linear theory: C11, C22, C23, C33 at vanishing creepage (full
 //    adhesion), extrapolated to zero element size from N = 40, 80, 160
 //    elements across the ellipse, within 2 % of Kalker's Table E.3
-//    (../shared/reference/kalker_cij.csv, nu = 0.25, a/b = 0.5, 1, 2);
+//    (tests/data/kalker_cij.csv, nu = 0.25, a/b = 0.5, 1, 2);
 //  - the reference cases of contact_exact_dev.csv (a/b = 1 and 2, every
 //    creepage set) on N = 20, 40, 80, 160: observed orders and continuum
 //    (Richardson) estimates of Fx, Fy, Mz and W_macro, committed in
@@ -47,7 +47,7 @@ Extrapolation extrapolate(const double f[4])
     return e;
 }
 
-// Kalker's coefficients at vanishing creepage (signs of ../shared/README.md):
+// Kalker's coefficients at vanishing creepage (signs of tests/data/README.md):
 // Fx = -G c^2 C11 xi; Fy = -G c^2 C22 eta - G c^3 C23 phi; Mz = -G c^4 C33 phi.
 void coefficients(int N, double a_over_b, double C[4])
 {
@@ -79,7 +79,7 @@ void coefficients(int N, double a_over_b, double C[4])
 
 void linear_theory_matches_kalker(void**)
 {
-    const cwtest::CsvTable k = cwtest::read_csv(cwtest::shared_path("reference/kalker_cij.csv"));
+    const cwtest::CsvTable k = cwtest::read_csv(cwtest::test_data_path("kalker_cij.csv"));
     const char* names[4] = {"C11", "C22", "C23", "C33"};
     for (double ab : {0.5, 1.0, 2.0}) {
         double C[4][4];
@@ -168,7 +168,7 @@ int write_table(const char* path)
 void committed_table_is_current(void**)
 {
     const cwtest::CsvTable t =
-        cwtest::read_csv(std::string(CW_TEST_DATA_DIR) + "/exact_convergence.csv");
+        cwtest::read_csv(std::string(CW_CORE_DATA_DIR) + "/exact_convergence.csv");
     const std::vector<cwtest::ExactRow> rows = cwtest::exact_rows(20);
     assert_int_equal(t.rows.size(), rows.size() * 4);
     const auto all = reference_solves(2);

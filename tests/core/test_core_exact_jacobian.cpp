@@ -7,7 +7,7 @@
 //  - the linear limit: in full adhesion the system is linear, so the
 //    Jacobian equals the secant F(1e-9)/1e-9 of the same grid (1e-7: the
 //    linear solves' tolerance), and Kalker's C11, C22, C23
-//    (../shared/reference/kalker_cij.csv) within this coarse grid's
+//    (tests/data/kalker_cij.csv) within this coarse grid's
 //    discretisation error (test_core_exact_convergence: 20 elements across
 //    is not yet asymptotic; measured 2-4.4 % here, held to 5 %);
 //  - Euler's relation N dF/dN + xi.dF/dxi = F holds by construction, so the
@@ -77,7 +77,7 @@ void against_central_differences(void**)
 
 void linear_limit(void**)
 {
-    const cwtest::CsvTable k = cwtest::read_csv(cwtest::shared_path("reference/kalker_cij.csv"));
+    const cwtest::CsvTable k = cwtest::read_csv(cwtest::test_data_path("kalker_cij.csv"));
     cw::Solver s(cwtest::guarded_grid(20));
     for (double ab : {0.5, 1.0, 2.0}) {
         cw::ContactInput in = exact_contact(ab);

@@ -1,5 +1,5 @@
 // Kalker's exact theory against CONTACT (method a, commit d431cdb): every row
-// of ../shared/reference/contact_exact_dev.csv on the 20 and 40 grids (the
+// of tests/data/contact_exact_dev.csv on the 20 and 40 grids (the
 // 100 grid: test_core_exact_reference_100, same executable) with the same
 // discretisation must agree to solver tolerance: Fx, Fy within 1e-5 of |F|,
 // Mz within 1e-5 of |F| c (c = sqrt(ab)), p_max and approach within 1e-5
@@ -76,7 +76,7 @@ void check_rows(int N)
 }
 
 // CONTACT's element fields on the 44 x 44 box (N = 40) for ab1_lonM and
-// ab1_cmb (../shared/reference/fields/): pressure and tractions within 1e-4
+// ab1_cmb (tests/data/fields/): pressure and tractions within 1e-4
 // of mu p_max, the state of every element, and the micro-slip of slip
 // elements within 1e-4 of the largest.
 struct FieldDifference {
@@ -90,7 +90,7 @@ std::vector<FieldDifference> measure_fields()
     std::vector<FieldDifference> out;
     for (const char* id : {"ab1_lonM", "ab1_cmb"}) {
         const cwtest::CsvTable f =
-            cwtest::read_csv(cwtest::shared_path(std::string("reference/fields/") + id + "_a_40.csv"));
+            cwtest::read_csv(cwtest::test_data_path(std::string("fields/") + id + "_a_40.csv"));
         for (const cwtest::ExactRow& row : cwtest::exact_rows(40)) {
             if (row.case_id != id) continue;
             cw::Solver s(row.grid);
@@ -147,7 +147,7 @@ void element_fields_match_contact(void**)
 // A1_per_mm, B1_per_mm of every row to 1e-15 relative (E* = G / (1 - nu)).
 void hertz_curvatures_match_contact(void**)
 {
-    const cwtest::CsvTable t = cwtest::read_csv(cwtest::shared_path("reference/contact_exact_dev.csv"));
+    const cwtest::CsvTable t = cwtest::read_csv(cwtest::test_data_path("contact_exact_dev.csv"));
     for (size_t r = 0; r < t.rows.size(); ++r) {
         const double G = t.number(r, "G_N_per_mm2"), nu = t.number(r, "nu");
         const cw::HertzCurvatures h = cw::hertz_from_semi_axes(

@@ -50,7 +50,7 @@ void discrete_energy_identity(void**)
 }
 
 // With three flexibilities and spin the simplified theory is not energy
-// consistent (../shared/README.md): its own dissipation differs from W_macro
+// consistent (doc/theory/work.md): its own dissipation differs from W_macro
 // by a model factor that does not depend on the grid. Measured here for the
 // uniform grid; the map absorbs it through the balance factor.
 void spin_defect_is_a_model_property(void**)

@@ -8,6 +8,7 @@
  *     Fx Fy Mz W_macro W_micro_paper K W_consistent n_slip  a dimensional solve
  *   F field count v1 .. vcount                          a field of the solve above
  *   Z count s1 .. scount                                its element states
+ *   R ny count y1 .. yny width.. depth.. parabola..      its wear strips (USFD, defaults)
  *   B nx ny a b                                         the accumulation's grid and contact
  *   A xi eta phi distance                               one accumulated step
  *   T distance W_macro W_micro_paper K W_consistent steps  accumulator totals
@@ -36,7 +37,7 @@ static void print_map(FILE* f, char tag, int field, const double* v, int n)
 
 static void normalised_cases(FILE* f)
 {
-    /* Kalker's check rows (shared/reference/kalker1982_checks.csv) and more. */
+    /* Kalker's check rows (tests/data/kalker1982_checks.csv) and more. */
     const double cases[][7] = {
         {0, -2, 2, 4, 5, 5, 3},     {0, -2, 2, 4, 5, 5, 0.09}, {1, -2, 2, 4, 5, 5, 0.09},
         {1, -2, 2, 4, 5, 5, 3},     {1, -2, 2, 1, 5, 5, 0.09}, {0.3, 0.2, 0, 0, 8, 6, 1},
@@ -102,6 +103,21 @@ static void solve_case(FILE* f, int kind, int nx, int ny, int pressure, int flex
     fprintf(f, "Z %d", n);
     for (int k = 0; k < n; ++k) fprintf(f, " %d", st[k]);
     fprintf(f, "\n");
+    /* The lateral wear profile (USFD, the defaults): y, width, depth,
+     * parabola per strip, in the header's order. */
+    cw_wear* w = NULL;
+    require_ok(cw_wear_create(s, &w), "cw_wear_create");
+    cw_wear_params wp;
+    cw_wear_params_init(&wp);
+    require_ok(cw_wear_compute(w, s, &wp, NULL), "cw_wear_compute");
+    double* strips = malloc(sizeof(double) * 4 * (size_t)ny);
+    if (!strips) exit(1);
+    require_ok(cw_wear_get_strips(w, strips, strips + ny, strips + 2 * ny, strips + 3 * ny,
+                                  (size_t)ny),
+               "cw_wear_get_strips");
+    print_map(f, 'R', ny, strips, 4 * ny);
+    free(strips);
+    cw_wear_destroy(w);
     free(st);
     free(v);
     cw_solver_destroy(s);

@@ -19,7 +19,7 @@ C     P is the traction on body 1 (the wheel) in units of mu*p0.
 
 C     KRSTRP: Kalker's 1982 strip layout for MY strips and tolerance TOL,
 C     identified by reproducing his published check values
-C     (shared/reference/kalker1982_checks.csv):
+C     (tests/data/kalker1982_checks.csv):
 C       - the spin pole (X0, Y0) = (-UY/FY, UX/FX) is where the rigid slip
 C         vanishes; inside the unit disk the strips are cut at YS = Y0,
 C         otherwise at YS = 0;

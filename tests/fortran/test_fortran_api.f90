@@ -1,5 +1,5 @@
 ! Every function of the C ABI through module creepwork, so that the module
-! cannot drift from the header unnoticed (check_fortran_bindings.cmake checks
+! cannot drift from the header unnoticed (check_fortran_bindings.py checks
 ! that the two lists of symbols agree; this test calls each one):
 !   constants   generated from creepwork.h: versions against the library,
 !               every status code against cw_status_string
@@ -148,7 +148,7 @@ contains
       ! Forces act on the wheel, opposite to the creepages (header "Forces"):
       ! Fx against xi_x; Fy against the lateral creepage and the spin, which
       ! here both ask for a positive Fy (Kalker's linear theory:
-      ! Fy = -G c^2 C22 eta - G c^3 C23 phi, shared/README.md).
+      ! Fy = -G c^2 C22 eta - G c^3 C23 phi, tests/data/README.md).
       call check_true(r%Fx < 0 .and. r%Fy > 0, 'force on the wheel opposes the creepage')
       call check_true(r%W_macro > 0, 'W_macro > 0 (dissipation)')
       ! Header: W_consistent = sum of the energy-consistent map = W_macro.
@@ -396,7 +396,7 @@ contains
       real(c_double) :: c(4), l(3), h(4), tx, ty
       integer :: stat
       character(len=:), allocatable :: msg
-      ! Kalker 1990, Table E.3 (shared/reference/kalker_cij.csv): a/b = 1, nu = 0.25.
+      ! Kalker 1990, Table E.3 (tests/data/kalker_cij.csv): a/b = 1, nu = 0.25.
       call cw_kalker_coefficients(1.0_c_double, 0.25_c_double, c)
       call check_close(c(1), 4.12_c_double, 1e-12_c_double, 0.0_c_double, 'C11(1, 0.25)')
       call check_close(c(2), 3.67_c_double, 1e-12_c_double, 0.0_c_double, 'C22(1, 0.25)')

@@ -3,26 +3,31 @@
 ! module creepwork and, where the legacy layer covers them (Kalker strips,
 ! parabolic bound, rolling towards +x), through CWFSIM / CWSOLM / CWSOLL and
 ! CWACCU. Every number must be bitwise identical to C's: forces, moment,
-! work totals and K, every field and state of each solve, and the totals
-! and maps of a 60-step accumulation (C accumulator = module accumulator =
-! legacy CWACCU). The only allowed difference between the paths is none.
+! work totals and K, every field and state of each solve, its wear strips
+! (module get_strips: y, width, depth, parabola in the header's order;
+! legacy CWWEAR: YS, DYS, DEPTH), and the totals and maps of a 60-step
+! accumulation (C accumulator = module accumulator = legacy CWACCU). The
+! only allowed difference between the paths is none.
 program test_fortran_cross
    use, intrinsic :: iso_c_binding, only: c_double, c_int, c_int64_t
    use creepwork
    use cw_test_support
    implicit none
-   external :: CWFSIM, CWSOLM, CWSOLL, CWACCU
+   external :: CWFSIM, CWSOLM, CWSOLL, CWACCU, CWWEAR
 
    integer, parameter :: line_capacity = 16384
    character(len=line_capacity) :: line
    character(len=:), allocatable :: path
-   integer :: unit, ios, n_records(8)
+   integer :: unit, ios, n_records(9)
 
    ! The current dimensional case: module maps for every field, the legacy
    ! maps when the legacy layer covers the case.
    real(c_double), allocatable :: module_maps(:, :), legacy_maps(:, :)
    integer(c_int), allocatable :: module_states(:), legacy_states(:)
-   logical :: have_legacy = .false.
+   ! Its wear strips (columns y, width, depth, parabola; the legacy CWWEAR's
+   ! first three when it covers the case: flexibilities from the material).
+   real(c_double), allocatable :: module_strips(:, :), legacy_strips(:, :)
+   logical :: have_legacy = .false., have_legacy_wear = .false.
    integer :: case_no = 0
 
    ! The accumulation replay.
@@ -68,17 +73,24 @@ program test_fortran_cross
       case ('W')
          n_records(8) = n_records(8) + 1
          call accumulated_map_record(line(2:))
+      case ('R')
+         n_records(9) = n_records(9) + 1
+         call strips_record(line(2:))
       end select
    end do
    close (unit)
-   ! The C program wrote 8 normalised cases, 5 solves of 11 fields each,
-   ! one accumulation of 60 steps with 2 maps.
-   call check_true(all(n_records == [8, 5, 55, 5, 1, 60, 1, 2]), 'every record of the C file seen')
+   ! The C program wrote 8 normalised cases, 5 solves of 11 fields each
+   ! with their states and wear strips, one accumulation of 60 steps with 2
+   ! maps.
+   call check_true(all(n_records == [8, 5, 55, 5, 1, 60, 1, 2, 5]), &
+                   'every record of the C file seen')
    call acc%destroy()
    call acc_solver%destroy()
    ! Main-program allocatables are not freed at the end (LeakSanitizer).
    if (allocated(module_maps)) deallocate (module_maps, module_states)
    if (allocated(legacy_maps)) deallocate (legacy_maps, legacy_states)
+   if (allocated(module_strips)) deallocate (module_strips)
+   if (allocated(legacy_strips)) deallocate (legacy_strips)
    if (allocated(l_wpap)) deallocate (l_wpap, l_wcon, l_px, l_py, l_sx, l_sy, l_zmap, l_wpacc, &
                                       l_wcacc, l_state)
    deallocate (path)
@@ -105,9 +117,10 @@ contains
       integer :: kind, nx, ny, pressure, flexibility, direction, n_slip, field, ierr
       real(c_double) :: c(12), t(7)
       type(cw_solver_type) :: s
+      type(cw_wear_type) :: wear
       type(cw_params) :: p
       type(cw_result) :: r
-      real(c_double) :: fx, fy, fmz, wmac, wmic, ck
+      real(c_double) :: fx, fy, fmz, wmac, wmic, ck, wmass
       real(c_double), allocatable :: px(:, :), py(:, :), sx(:, :), sy(:, :), zmap(:, :)
       real(c_double), allocatable :: wpap(:, :), wcon(:, :)
       integer(c_int), allocatable :: istate(:, :)
@@ -148,10 +161,26 @@ contains
          call s%get_field(field, module_maps(:, field))
       end do
       call s%get_state(module_states)
+      if (allocated(module_strips)) deallocate (module_strips)
+      allocate (module_strips(ny, 4))
+      call wear%create(s)
+      call wear%compute(s) ! USFD, the defaults
+      call wear%get_strips(y=module_strips(:, 1), width=module_strips(:, 2), &
+                           depth=module_strips(:, 3), parabola=module_strips(:, 4))
+      call wear%destroy()
       call s%destroy()
 
       have_legacy = kind == CW_GRID_KALKER_STRIPS .and. pressure == CW_PRESSURE_PARABOLIC .and. &
                     direction == 1
+      have_legacy_wear = have_legacy .and. flexibility == CW_FLEX_FROM_MATERIAL
+      if (have_legacy_wear) then
+         if (allocated(legacy_strips)) deallocate (legacy_strips)
+         allocate (legacy_strips(ny, 3))
+         call CWWEAR(p%a, p%b, p%normal_force, p%mu, p%G, p%nu, p%xi_x, p%xi_y, p%phi, nx, ny, &
+                     0_c_int, 0.0_c_double, legacy_strips(:, 1), legacy_strips(:, 2), &
+                     legacy_strips(:, 3), wmass, ierr)
+         call check_int(ierr, 0, trim(label)//'CWWEAR IERR')
+      end if
       if (.not. have_legacy) return
       allocate (px(nx, ny), py(nx, ny), sx(nx, ny), sy(nx, ny), zmap(nx, ny), wpap(nx, ny), &
                 wcon(nx, ny), istate(nx, ny))
@@ -208,6 +237,28 @@ contains
       call check_true(all(module_states == v), 'states module = C')
       if (have_legacy) call check_true(all(legacy_states == v), 'states legacy = C')
    end subroutine state_record
+
+   subroutine strips_record(text)
+      character(len=*), intent(in) :: text
+      character(len=*), parameter :: names(4) = [character(len=8) :: 'y', 'width', 'depth', &
+                                                 'parabola']
+      integer :: ny, n, k
+      real(c_double), allocatable :: v(:)
+      character(len=48) :: label
+      read (text, *) ny, n
+      allocate (v(n))
+      read (text, *) ny, n, v
+      call check_int(n, 4*size(module_strips, 1), 'strips: 4 ny values')
+      if (n /= 4*size(module_strips, 1)) return
+      do k = 1, 4
+         write (label, '(a,i0,a,a)') 'solve ', case_no, ' strips ', trim(names(k))
+         call check_true(all(module_strips(:, k) == v((k - 1)*ny + 1:k*ny)), &
+                         trim(label)//' module = C')
+         if (have_legacy_wear .and. k <= 3) &
+            call check_true(all(legacy_strips(:, k) == v((k - 1)*ny + 1:k*ny)), &
+                            trim(label)//' CWWEAR = C')
+      end do
+   end subroutine strips_record
 
    subroutine begin_accumulation(text)
       character(len=*), intent(in) :: text

@@ -6,7 +6,7 @@
 !              declared here, bypassing the module
 ! Asserts:
 !   1. the reference and the library reproduce every row of Kalker's
-!      published check values (shared/reference/kalker1982_checks.csv, Kalker
+!      published check values (tests/data/kalker1982_checks.csv, Kalker
 !      1982, 5x5 grid) to 4 decimals, the last row included (the CSV allows
 !      0.5 % there), signs included;
 !   2. the library equals the reference to 1e-12 relative on those rows and

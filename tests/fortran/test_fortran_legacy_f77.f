@@ -5,7 +5,7 @@ C      - CWTYPE accepts REAL*8 and INTEGER*4 (this program's kinds);
 C      - CWERRM gives the header's message for IERR = 2;
 C      - CWKALK: Kalker 1990 Table E.3 at a/b = 1, nu = 0.25
 C        (C11 4.12, C22 3.67, C23 1.47, C33 1.19 as printed there,
-C        ../shared/reference/kalker_cij.csv);
+C        tests/data/kalker_cij.csv);
 C      - CWFLEX: L1 = 8A/(3 C11 G) etc. from those coefficients;
 C      - CWHERT: doc/validation/index.md (R 457 mm wheel on a 300 mm crown,
 C        100 kN, G 82 GPa, nu 0.28): A = 7.169984332 mm, B = 5.416941278

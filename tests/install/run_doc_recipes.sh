@@ -30,14 +30,8 @@ fi
 cd "$work/clone"
 export HOME="$work/home"
 
-# The recipes of doc/python.md call `python3`, meaning one with numpy
-# (Debian's /usr/bin/python3 with python3-numpy): when the python3 on PATH
-# lacks numpy (a pyenv or conda one), Debian's is put first on PATH.
-if ! python3 -c 'import numpy' >/dev/null 2>&1 && /usr/bin/python3 -c 'import numpy' >/dev/null 2>&1; then
-  mkdir -p "$work/bin"
-  ln -sf /usr/bin/python3 "$work/bin/python3"
-  export PATH="$work/bin:$PATH"
-fi
+# PATH stays the user's: a recipe that works only with a particular python3
+# first on PATH must say so itself (doc/python.md names /usr/bin/python3).
 
 # Every block as "FILE KIND NAME", in run order; a name used twice is an
 # error (recipes and outputs pair by name, files would overwrite).

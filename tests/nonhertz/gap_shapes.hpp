@@ -3,7 +3,7 @@
 // tools/contact_reference/make_contact_reference.cpp gave exactly these inputs to CONTACT
 // (data/README.md) and the tests rebuild them here, so the data files hold
 // only CONTACT's results. None of these shapes was used to choose anything
-// in the model (the DEV shapes of ../shared/reference/nonhertz were the ones
+// in the model (the DEV shapes of tests/data/nonhertz were the ones
 // looked at while it was written).
 //
 // SI units; x along the rolling direction, positive gap = separation.

@@ -1,6 +1,6 @@
 // The exact model on a gap grid against CONTACT (module 3, commit d431cdb,
 // the same undeformed distance per element, exact normal and tangential
-// problems): the 15 DEV cases of ../shared/reference/nonhertz/dev (solved
+// problems): the 15 DEV cases of tests/data/nonhertz/dev (solved
 // at EPS 1e-10; element fields too) and the 11 shapes of gap_shapes.hpp,
 // which no choice in the model was made on (data/contact_cases.csv, CONTACT
 // at EPS 1e-12, and data/contact_patches.csv per patch).
@@ -111,7 +111,7 @@ Run run_dev()
         // Element by element: CONTACT's element division, pressure and
         // traction (1e-5 of p_max and of mu p_max).
         const cwtest::ContactFields f = cwtest::read_contact_fields(
-            cwtest::shared_path("reference/nonhertz/dev/fields/" + c.id + ".csv"), c.gap.grid);
+            cwtest::test_data_path("nonhertz/dev/fields/" + c.id + ".csv"), c.gap.grid);
         const auto pz = cwtest::field(s, cw::Field::pz), px = cwtest::field(s, cw::Field::px),
                    py = cwtest::field(s, cw::Field::py);
         const std::vector<int> st = cwtest::states(s);

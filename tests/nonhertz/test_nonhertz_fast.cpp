@@ -1,7 +1,7 @@
 // The semi-Hertzian normal method (nonhertz/semi_hertz.hpp) against the
 // exact half-space normal problem on the same gaps, with the exact model's
 // tangential problem on each pressure: the DEV shapes of
-// ../shared/reference/nonhertz/dev and the shapes of gap_shapes.hpp.
+// tests/data/nonhertz/dev and the shapes of gap_shapes.hpp.
 //
 // Bounds: contact area (element count) within 10 % of the exact problem's on
 // the DEV shapes (issue 24's target) and within 12 % on the new shapes (the

@@ -2,7 +2,7 @@
 // Solver:
 //  - against the exact model (Kalker's exact theory on the same gap, the
 //    source of every accuracy bound here) on the DEV shapes of
-//    ../shared/reference/nonhertz/dev and the shapes of gap_shapes.hpp, with
+//    tests/data/nonhertz/dev and the shapes of gap_shapes.hpp, with
 //    the semi-Hertzian normal method (the fast path) and with the exact
 //    normal problem (FASTSIM's tangential part alone);
 //  - the march on an elliptic patch with the ellipse's flexibilities is the

@@ -2,9 +2,10 @@
 // reference: the normal problem on a given gap against the Hertzian path of
 // the same solver (the same discrete problem built two ways) and against
 // itself with the approach prescribed; the semi-Hertzian method against
-// Hertz's closed form on a paraboloid and against CONTACT's own ANALYN (B = 6)
+// Hertz's closed form on a paraboloid (also with a raised band on one side,
+// which the row fit must not reach) and against CONTACT's own ANALYN (B = 6)
 // on the DEV gaps (an independent implementation of the same method,
-// ../shared/reference/nonhertz/dev/fast_methods.csv); the patch labels
+// tests/data/nonhertz/dev/fast_methods.csv); the patch labels
 // against masks labelled by hand; the products on a box of the grid
 // (GridConvolution::set_size, other FFT lengths) against the whole grid's,
 // and the normal problem with its products on the contact set's box against
@@ -221,6 +222,60 @@ void semi_hertz_reproduces_hertz_on_a_paraboloid(void**)
     }
 }
 
+// The row fit widens only while both elements of the next pair penetrate by
+// more than 30 % of the row's locus; the higher of the pair decides. Hertz's
+// paraboloid (A < B: alpha = f, the rigid overlap at 30 % of the depth lies
+// at 1.2 a on the middle row, outside the contact) with every element from
+// x = 1.07 a on raised by 1 mm, on one side only: the band lies outside the
+// contact, but within the fit's reach on the other side. The fit stops at
+// the pair that holds the band's first element, so it sees the paraboloid
+// alone (exact: a least-squares parabola of a parabola) and every element's
+// pressure is Hertz's p0^2 (1 - x^2/a^2 - y^2/b^2) at the approach of N
+// (Johnson 1985, eqs. 4.38-4.39), to the shape table's 1e-8; a fit that
+// reaches the band curves the rows far more.
+void semi_hertz_fit_stops_at_the_higher_of_a_pair(void**)
+{
+    const double A = 1.0 / (2 * 0.46), B = 1.0 / (2 * 0.3), N = 80e3, G = 82e9, nu = 0.28;
+    const double E = G / (1.0 - nu), datum = 1e-6;
+    const cw::HertzContact hz = cw::hertz_from_curvatures(A, B, N, E);
+    const int n = 17, mid = n / 2; // element mid at x = y = 0
+    const double dx = 2.6 * hz.a / n, dy = 2.6 * hz.b / n;
+    std::vector<double> h(n * n), p(n * n), plain(n * n);
+    for (int banded = 0; banded < 2; ++banded) {
+        for (int j = 0; j < n; ++j)
+            for (int i = 0; i < n; ++i) {
+                const double x = (i - mid) * dx, y = (j - mid) * dy;
+                const bool band = banded && x >= 1.07 * hz.a;
+                h[i + n * j] = A * x * x + B * y * y + datum + (band ? 1e-3 : 0.0);
+            }
+        cw::SemiHertz sh(n, n);
+        const cw::SemiHertzResult r =
+            sh.solve(h.data(), dx, dy, E, false, hz.approach + datum, p.data());
+        double worst = 0.0, sum = 0.0;
+        int in_band = 0;
+        for (int j = 0; j < n; ++j)
+            for (int i = 0; i < n; ++i) {
+                const double x = (i - mid) * dx, y = (j - mid) * dy;
+                const double q = 1.0 - x * x / (hz.a * hz.a) - y * y / (hz.b * hz.b);
+                const double expected = q > 0.0 ? hz.p0 * hz.p0 * q : 0.0;
+                const double pk = p[i + n * j];
+                worst = std::max(worst, std::fabs(pk * pk - expected));
+                sum += pk;
+                in_band += x >= 1.07 * hz.a && pk > 0.0;
+            }
+        print_message("%s: p^2 within %.2g p0^2 of Hertz's, Fn %.6g N\n",
+                      banded ? "band on one side" : "paraboloid", worst / (hz.p0 * hz.p0),
+                      r.normal_force);
+        assert_true(worst <= 1e-7 * hz.p0 * hz.p0);
+        assert_int_equal(in_band, 0);
+        assert_close(r.normal_force, sum * dx * dy, 1e-12, 0.0);
+        if (!banded)
+            plain = p;
+        else
+            for (int k = 0; k < n * n; ++k) assert_close(p[k], plain[k], 1e-12, 1e-12 * hz.p0);
+    }
+}
+
 // The DEV gaps through the semi-Hertzian method against CONTACT's ANALYN
 // (B = 6, its approach iterated to the force, |Fn/N - 1| <= 1e-12): an
 // independent implementation of one method, so element counts are equal
@@ -230,7 +285,7 @@ void semi_hertz_reproduces_hertz_on_a_paraboloid(void**)
 void semi_hertz_matches_contacts_analyn(void**)
 {
     const cwtest::CsvTable fm =
-        cwtest::read_csv(cwtest::shared_path("reference/nonhertz/dev/fast_methods.csv"));
+        cwtest::read_csv(cwtest::test_data_path("nonhertz/dev/fast_methods.csv"));
     int compared = 0;
     double dp = 0.0, da = 0.0;
     for (const cwtest::GapCase& c : cwtest::dev_cases()) {
@@ -300,6 +355,7 @@ int main(int argc, char** argv)
         cmocka_unit_test(box_products_match_the_whole_grid),
         cmocka_unit_test(normal_problem_on_the_box_matches_the_whole_grid),
         cmocka_unit_test(semi_hertz_reproduces_hertz_on_a_paraboloid),
+        cmocka_unit_test(semi_hertz_fit_stops_at_the_higher_of_a_pair),
         cmocka_unit_test(semi_hertz_matches_contacts_analyn),
         cmocka_unit_test(patches_are_edge_connected),
     };

@@ -60,6 +60,27 @@ static inline cw_batch* cw_test_batch(int kind, int nx, int ny, double box_scale
     return b;
 }
 
+/* A gap grid (30 x 56 cells of 0.35 x 0.45 mm) holding two paraboloid
+ * lobes 12 mm apart across, the upper one 2 um higher: under a load two
+ * separate contact patches, lower y first. h receives its 30 * 56 values. */
+enum { CW_LOBES_NX = 30, CW_LOBES_NY = 56 };
+static inline cw_grid cw_test_two_lobes(double* h)
+{
+    cw_grid g = cw_test_grid(CW_GRID_GAP, CW_LOBES_NX, CW_LOBES_NY, 1.0);
+    g.dx = 0.35e-3;
+    g.dy = 0.45e-3;
+    g.x0 = -5e-3;
+    g.y0 = -12e-3;
+    for (int j = 0; j < CW_LOBES_NY; ++j)
+        for (int i = 0; i < CW_LOBES_NX; ++i) {
+            const double x = g.x0 + i * g.dx, y = g.y0 + j * g.dy;
+            const double lower = x * x / 0.9 + (y + 6e-3) * (y + 6e-3) / 0.5;
+            const double upper = x * x / 0.9 + (y - 6e-3) * (y - 6e-3) / 0.5 + 2e-6;
+            h[i + CW_LOBES_NX * j] = lower < upper ? lower : upper;
+        }
+    return g;
+}
+
 /* Elements of the solver's grid. */
 static inline size_t cw_cells(const cw_solver* s)
 {
@@ -135,6 +156,50 @@ static inline size_t cw_count_changed_int(const int* v, size_t n, int value)
 static inline int cw_same_bits(double a, double b)
 {
     return memcmp(&a, &b, sizeof a) == 0;
+}
+
+/* The solver's last patches read into an older cw_patch (cut before Fn)
+ * and a newer one (three doubles appended), each array with room for one
+ * patch more: patch k lands at k times the caller's struct_size holding
+ * expected[k]'s fields up to that size, and nothing is written past the
+ * fields the library knows or past the last patch. */
+typedef struct {
+    cw_patch p;
+    double future[3];
+} cw_patch_next;
+
+static inline void cw_check_patch_strides(const cw_solver* s, const cw_patch* expected,
+                                          size_t count)
+{
+    enum { OLD = offsetof(cw_patch, Fn) };
+    const size_t room = count + 1, head = sizeof(size_t);
+    unsigned char* old = (unsigned char*)malloc(room * OLD);
+    cw_patch_next* next = (cw_patch_next*)malloc(room * sizeof *next);
+    assert_non_null(old);
+    assert_non_null(next);
+    cw_poison(old, room * OLD);
+    cw_poison(next, room * sizeof *next);
+    for (size_t k = 0; k < room; ++k) {
+        const size_t size = OLD;
+        memcpy(old + k * OLD, &size, sizeof size);
+        next[k].p.struct_size = sizeof next[k];
+    }
+    size_t n = 0;
+    assert_int_equal(cw_solver_get_patches(s, (cw_patch*)(void*)old, room, &n), CW_OK);
+    assert_int_equal(n, count);
+    assert_int_equal(cw_solver_get_patches(s, &next[0].p, room, &n), CW_OK);
+    for (size_t k = 0; k < count; ++k) {
+        const unsigned char* today = (const unsigned char*)&expected[k];
+        assert_memory_equal(old + k * OLD + head, today + head, OLD - head);
+        assert_int_equal(next[k].p.struct_size, sizeof next[k]);
+        assert_memory_equal((const unsigned char*)&next[k].p + head, today + head,
+                            sizeof(cw_patch) - head);
+        assert_true(cw_poisoned(next[k].future, sizeof next[k].future));
+    }
+    assert_true(cw_poisoned(old + count * OLD + head, OLD - head));
+    assert_true(cw_poisoned((const unsigned char*)&next[count] + head, sizeof next[count] - head));
+    free(old);
+    free(next);
 }
 
 /* ------------------------------------------------- messages, statuses */

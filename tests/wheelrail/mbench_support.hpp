@@ -22,10 +22,10 @@ inline std::string wheelrail_data(const std::string& name)
     return std::string(CW_WHEELRAIL_DATA) + "/" + name;
 }
 
-// CONTACT's shipped results in the shared reference folder.
-inline std::string shared_path_nonhertz(const std::string& name)
+// CONTACT's printed results of the Manchester benchmark (tests/data/nonhertz).
+inline std::string contact_benchmark_results(const std::string& name)
 {
-    return std::string(CW_SHARED_DIR) + "/reference/nonhertz/" + name;
+    return std::string(CW_TEST_DATA_DIR) + "/nonhertz/" + name;
 }
 
 // One row of a CSV file with a header, cells by column name.

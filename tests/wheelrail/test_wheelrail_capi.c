@@ -32,7 +32,7 @@ static cw_wheelrail* benchmark(int side)
 }
 
 /* Case A-2.2, right wheel, y_ws = 3 mm (CONTACT's examples/mbench_a22_right
- * .ref_out, ../shared/reference/nonhertz/mbench_a22.csv): FN 9774 N, FX
+ * .ref_out, tests/data/nonhertz/mbench_a22.csv): FN 9774 N, FX
  * -417.5 N, FS -2902 N, MN -23.90 N mm, p_max 713.2 N/mm^2, z_ws 0.1143 mm,
  * totals on the rail -417.5, -1988, 10000 N. Forces within 1 % of the
  * 10 kN load, p_max within 3 %. */

@@ -1,7 +1,7 @@
 // The wheel/rail chain up to the forces: every patch solved by the exact
 // model on its undeformed distance grid, against CONTACT's module 1 on the
 // Manchester benchmark (case, CONTACT's shipped results,
-// ../shared/reference/nonhertz/mbench_a22.csv, 4 printed digits), the fast
+// tests/data/nonhertz/mbench_a22.csv, 4 printed digits), the fast
 // model against the exact one on the same positions, and the solver's
 // origin shift against a solver on the patch's own grid.
 //
@@ -119,7 +119,7 @@ struct Position {
 std::vector<Position> solve_benchmark(bool fast = false)
 {
     const cwtest::Benchmark b;
-    const auto rows = cwtest::read_rows(cwtest::shared_path_nonhertz("mbench_a22.csv"));
+    const auto rows = cwtest::read_rows(cwtest::contact_benchmark_results("mbench_a22.csv"));
     if (rows.size() != 42) throw std::runtime_error("mbench_a22.csv: 42 rows expected");
     wr::PatchContactSettings set = benchmark_settings(rows.at(0));
     set.mode = cw::SolveMode::forces_only;

@@ -1,8 +1,9 @@
 // Wheel/rail geometry against closed forms: a cylindrical wheel on a rail
 // with a circular crown, where the contact locus, the undeformed distance
 // and the creepages are known exactly; the patch grid's row interpolation
-// against the exact wheel surface; the left side as the mirror of the right;
-// input errors.
+// against the exact wheel surface; the left side as the mirror of the right,
+// also with a rail offset under the gauge placement, and a rail offset as a
+// translation; input errors.
 #include <cmath>
 #include <sstream>
 #include <string>
@@ -212,36 +213,10 @@ void test_profile_table(void**)
     assert_false(t.at(0.1, z, d));
 }
 
-// The left wheel at (y, roll, yaw) is the mirror image of the right wheel at
-// (-y, -roll, -yaw): positions and contact angle mirrored, ceta and cphi
-// reversed, the grid's s axis reversed.
-void test_left_mirrors_right(void**)
+// The left patch l as the mirror image of the right patch r: positions and
+// contact angle mirrored, ceta and cphi reversed, the grid's s axis reversed.
+void assert_mirrored(const wr::ContactPatch& l, const wr::ContactPatch& r)
 {
-    cwtest::Benchmark b;
-    wr::WheelRailGeometry right = b.geometry(wr::Side::right), left = b.geometry(wr::Side::left);
-    wr::WheelsetPosition p;
-    p.y = 3.7e-3;
-    p.z = 0.1e-3;
-    p.roll = -0.0002;
-    p.yaw = 0.006;
-    wr::WheelsetVelocity v;
-    v.vs = 12.0;
-    v.vy = 0.05;
-    v.vyaw = 0.01;
-    v.vroll = -0.02;
-    v.vpitch = -12.0 / 0.46;
-    const wr::ContactPatch r = right.evaluate(p, v).patches.at(0);
-    wr::WheelsetPosition q = p;
-    q.y = -p.y;
-    q.roll = -p.roll;
-    q.yaw = -p.yaw;
-    wr::WheelsetVelocity u = v;
-    u.vy = -v.vy;
-    u.vyaw = -v.vyaw;
-    u.vroll = -v.vroll;
-    const wr::WheelRailState& sl = left.evaluate(q, u);
-    assert_int_equal(sl.patches.size(), 1);
-    const wr::ContactPatch& l = sl.patches[0];
     assert_close(l.x_tr, r.x_tr, 0, 1e-15);
     assert_close(l.y_tr, -r.y_tr, 0, 1e-15);
     assert_close(l.z_tr, r.z_tr, 0, 1e-15);
@@ -257,6 +232,102 @@ void test_left_mirrors_right(void**)
     for (int j = 0; j < l.ny; ++j)
         for (int i = 0; i < l.nx; ++i)
             assert_close(l.h[i + j * l.nx], r.h[i + (r.ny - 1 - j) * r.nx], 0, 1e-15);
+}
+
+// A wheelset position and velocity off the centre line, and their mirror
+// images (y, roll, yaw and their rates negated).
+struct Motion {
+    wr::WheelsetPosition p;
+    wr::WheelsetVelocity v;
+    Motion mirrored() const
+    {
+        Motion m = *this;
+        m.p.y = -p.y;
+        m.p.roll = -p.roll;
+        m.p.yaw = -p.yaw;
+        m.v.vy = -v.vy;
+        m.v.vyaw = -v.vyaw;
+        m.v.vroll = -v.vroll;
+        return m;
+    }
+};
+
+Motion off_centre()
+{
+    Motion m;
+    m.p.y = 3.7e-3;
+    m.p.z = 0.1e-3;
+    m.p.roll = -0.0002;
+    m.p.yaw = 0.006;
+    m.v.vs = 12.0;
+    m.v.vy = 0.05;
+    m.v.vyaw = 0.01;
+    m.v.vroll = -0.02;
+    m.v.vpitch = -12.0 / 0.46;
+    return m;
+}
+
+wr::ContactPatch only_patch(wr::WheelRailGeometry& g, const Motion& m)
+{
+    const wr::WheelRailState& s = g.evaluate(m.p, m.v);
+    assert_int_equal(s.patches.size(), 1);
+    return s.patches[0];
+}
+
+// The left wheel at (y, roll, yaw) is the mirror image of the right wheel at
+// (-y, -roll, -yaw).
+void test_left_mirrors_right(void**)
+{
+    cwtest::Benchmark b;
+    wr::WheelRailGeometry right = b.geometry(wr::Side::right), left = b.geometry(wr::Side::left);
+    const Motion m = off_centre();
+    assert_mirrored(only_patch(left, m.mirrored()), only_patch(right, m));
+}
+
+// A rail deviation rail_dy is a lateral shift in track coordinates on either
+// side, with the rail placed by its gauge point as with rail_y0 (CONTACT's
+// wr_set_rail_marker: sgn dy in the side's mirrored frame). So the left rail
+// moved by -dy (outwards) under the left wheel at the mirrored position is
+// the mirror image of the right rail moved by +dy; and a rail moved by dy
+// under a wheelset moved by dy is the undisturbed contact moved by dy: the
+// same grid, undeformed distance and creepages (to rounding), the reference
+// point dy further along y.
+void test_rail_offset_mirrors_with_the_gauge(void**)
+{
+    cwtest::Benchmark b;
+    assert_true(b.track.gauge_height > 0.0); // the rail placed by its gauge point
+    const double dy = 0.6e-3;
+    wr::Track out_right = b.track, out_left = b.track;
+    out_right.rail_dy = dy;
+    out_left.rail_dy = -dy;
+    const wr::SearchOptions o = b.options(0.2, 0.2);
+    wr::WheelRailGeometry right(b.rail, b.wheel, out_right, b.wheelset, wr::Side::right, o);
+    wr::WheelRailGeometry left(b.rail, b.wheel, out_left, b.wheelset, wr::Side::left, o);
+    const Motion m = off_centre();
+    const wr::ContactPatch r = only_patch(right, m), l = only_patch(left, m.mirrored());
+    assert_mirrored(l, r);
+
+    wr::WheelRailGeometry right0 = b.geometry(wr::Side::right), left0 = b.geometry(wr::Side::left);
+    for (const double side : {1.0, -1.0}) {
+        wr::WheelRailGeometry& moved = side > 0 ? right : left;
+        wr::WheelRailGeometry& fixed = side > 0 ? right0 : left0;
+        const Motion at = side > 0 ? m : m.mirrored();
+        Motion shifted = at;
+        shifted.p.y += side * dy; // the rail's own dy in track coordinates
+        const wr::ContactPatch c = only_patch(moved, shifted), c0 = only_patch(fixed, at);
+        print_message("side %+g: the shifted contact lies %.3g mm along y from the "
+                      "undisturbed one\n", side, (c.y_tr - c0.y_tr) * 1e3);
+        assert_close(c.y_tr, c0.y_tr + side * dy, 0, 1e-12);
+        assert_close(c.z_tr, c0.z_tr, 0, 1e-12);
+        assert_close(c.delta, c0.delta, 0, 1e-12);
+        assert_close(c.y_r, c0.y_r, 0, 1e-12);
+        assert_close(c.cksi, c0.cksi, 1e-9, 0);
+        assert_close(c.ceta, c0.ceta, 1e-9, 0);
+        assert_close(c.cphi, c0.cphi, 1e-9, 0);
+        assert_int_equal(c.nx, c0.nx);
+        assert_int_equal(c.ny, c0.ny);
+        for (size_t k = 0; k < c.h.size(); ++k) assert_close(c.h[k], c0.h[k], 0, 1e-12);
+    }
 }
 
 template <class F> std::string error_of(F f)
@@ -314,6 +385,7 @@ int main(int argc, char** argv)
         cmocka_unit_test(test_grid_rows_against_exact_surface),
         cmocka_unit_test(test_profile_table),
         cmocka_unit_test(test_left_mirrors_right),
+        cmocka_unit_test(test_rail_offset_mirrors_with_the_gauge),
         cmocka_unit_test(test_input_errors),
     };
     return cw_run_tests(tests, argc > 1 ? argv[1] : nullptr);

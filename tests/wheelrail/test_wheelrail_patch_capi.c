@@ -2,8 +2,10 @@
  * wheel/rail conventions add up to the patch's forces and moment, its
  * solver view carries the same solution in creepwork's conventions, its
  * wear lands on the profiles where the documented placement puts it (and
- * mirrors between the sides), the fast model follows the exact one, and
- * every documented error names its input. */
+ * mirrors between the sides), two patches' wear adds up as documented, a
+ * rail offset mirrors between the sides and translates the contact, the
+ * fast model follows the exact one, and every documented error names its
+ * input. */
 #include <stdlib.h>
 
 #include "creepwork/creepwork.h"
@@ -13,8 +15,38 @@ static const char* rail_file = CW_WHEELRAIL_DATA "/MBench_UIC60_v3.prr";
 static const char* wheel_file = CW_WHEELRAIL_DATA "/MBench_S1002_v3.prw";
 
 
-/* Case A-2.2, y_ws = 3 mm (mbench_a22.csv) on the given side; sign mirrors
- * the wheelset position for the left wheel (y, yaw, roll negated). */
+/* The wheelset at (y, yaw, roll), rolling at 2 m/s, under 10 kN on
+ * params->side: the handle, solved, with n_patches patches. */
+static cw_wheelrail* solved_at(const cw_wheelrail_params* p, double y, double yaw, double roll,
+                               double vpitch, int n_patches)
+{
+    cw_wheelrail* w = NULL;
+    char msg[256];
+    assert_int_equal(cw_wheelrail_create(p, rail_file, wheel_file, &w, msg, sizeof msg), CW_OK);
+    cw_wheelrail_motion m;
+    cw_wheelrail_motion_init(&m);
+    m.y = y;
+    m.yaw = yaw;
+    m.roll = roll;
+    m.vs = 2.0;
+    m.vpitch = vpitch;
+    cw_wheelrail_totals t;
+    cw_wheelrail_totals_init(&t);
+    assert_int_equal(cw_wheelrail_solve(w, &m, CW_WHEELRAIL_FORCE, 1e4, &t), CW_OK);
+    assert_int_equal(t.n_patches, n_patches);
+    return w;
+}
+
+/* Case A-2.2, y_ws = 3 mm (mbench_a22.csv) plus y_extra, on params->side;
+ * the wheelset position is mirrored for the left wheel (y, yaw, roll
+ * negated). */
+static cw_wheelrail* solved_with(const cw_wheelrail_params* p, double y_extra)
+{
+    const double sign = p->side == CW_WHEELRAIL_RIGHT ? 1.0 : -1.0;
+    return solved_at(p, sign * 3.0e-3 + y_extra, sign * 0.0072, -sign * 0.00018030,
+                     -4.34515030, 1);
+}
+
 static cw_wheelrail* solved(int side, int model, int normal_method, int solve_mode)
 {
     cw_wheelrail_params p;
@@ -23,22 +55,7 @@ static cw_wheelrail* solved(int side, int model, int normal_method, int solve_mo
     p.model = model;
     p.normal_method = normal_method;
     p.solve_mode = solve_mode;
-    cw_wheelrail* w = NULL;
-    char msg[256];
-    assert_int_equal(cw_wheelrail_create(&p, rail_file, wheel_file, &w, msg, sizeof msg), CW_OK);
-    const double sign = side == CW_WHEELRAIL_RIGHT ? 1.0 : -1.0;
-    cw_wheelrail_motion m;
-    cw_wheelrail_motion_init(&m);
-    m.y = sign * 3.0e-3;
-    m.yaw = sign * 0.0072;
-    m.roll = -sign * 0.00018030;
-    m.vs = 2.0;
-    m.vpitch = -4.34515030;
-    cw_wheelrail_totals t;
-    cw_wheelrail_totals_init(&t);
-    assert_int_equal(cw_wheelrail_solve(w, &m, CW_WHEELRAIL_FORCE, 1e4, &t), CW_OK);
-    assert_int_equal(t.n_patches, 1);
-    return w;
+    return solved_with(&p, 0.0);
 }
 
 static cw_wheelrail_patch patch0(const cw_wheelrail* w)
@@ -200,6 +217,50 @@ static void wear_lands_where_documented(void** state)
     cw_wheelrail_destroy(w);
 }
 
+/* Two patches (case b11 of tools/contact_reference/wheelrail: the
+ * right wheel at y = 5 mm, yaw 0.012, roll -0.00035, 10 kN, with D_SEP =
+ * 2 mm and D_COMB = 1 mm keeping the two interpenetration regions apart):
+ * the wear result of cw_wheelrail_add_wear sums the patches' mass, volume
+ * and work per pass and takes the deeper patch's max_depth (header), each
+ * patch's own wear computed through its solver view with cw_wear_compute. */
+static void wear_of_two_patches(void** state)
+{
+    (void)state;
+    cw_wheelrail_params p;
+    cw_wheelrail_params_init(&p);
+    p.d_sep = 2e-3;
+    p.d_comb = 1e-3;
+    cw_wheelrail* w = solved_at(&p, 5.0e-3, 0.012, -0.00035, -4.335, 2);
+    cw_wear_params law;
+    cw_wear_params_init(&law);
+    cw_wear_result sum;
+    cw_wear_result_init(&sum);
+    cw_wear_profile* rail = profile_grid();
+    assert_int_equal(cw_wheelrail_add_wear(w, &law, 1e3, rail, NULL, &sum), CW_OK);
+    cw_wear_result one[2];
+    for (int k = 0; k < 2; ++k) {
+        const cw_solver* view = cw_wheelrail_patch_solver(w, (size_t)k);
+        assert_non_null(view);
+        cw_wear* wear = NULL;
+        assert_int_equal(cw_wear_create(view, &wear), CW_OK);
+        cw_wear_result_init(&one[k]);
+        assert_int_equal(cw_wear_compute(wear, view, &law, &one[k]), CW_OK);
+        assert_true(one[k].max_depth > 0.0);
+        cw_wear_destroy(wear);
+    }
+    print_message("max_depth per pass: patches %.4g and %.4g m, together %.4g m\n",
+                  one[0].max_depth, one[1].max_depth, sum.max_depth);
+    assert_true(sum.max_depth == fmax(one[0].max_depth, one[1].max_depth));
+    assert_true(sum.max_depth < one[0].max_depth + one[1].max_depth);
+    assert_close(sum.mass_per_distance, one[0].mass_per_distance + one[1].mass_per_distance,
+                 1e-15, 0);
+    assert_close(sum.volume_per_distance,
+                 one[0].volume_per_distance + one[1].volume_per_distance, 1e-15, 0);
+    assert_close(sum.work, one[0].work + one[1].work, 1e-15, 0);
+    cw_wear_profile_destroy(rail);
+    cw_wheelrail_destroy(w);
+}
+
 /* Mirror symmetry: the left wheel at the mirrored position wears the same
  * profiles (as their points are given) as the right wheel, and its forces
  * mirror (Fs and Mn change sign). */
@@ -233,6 +294,58 @@ static void sides_mirror(void** state)
     cw_wear_profile_destroy(wheel_r), cw_wear_profile_destroy(wheel_l);
     cw_wheelrail_destroy(r);
     cw_wheelrail_destroy(l);
+}
+
+/* A rail deviation rail_dy is a lateral shift in track coordinates on
+ * either side (header, cw_wheelrail_params), also with the rail placed by
+ * its gauge point (the default gauge_height, 14 mm): the left rail moved by
+ * -0.6 mm (outwards) under the left wheel at the mirrored position carries
+ * the right wheel's forces over the right rail moved by +0.6 mm, mirrored;
+ * and a rail moved by dy under a wheelset moved by dy is the undisturbed
+ * contact moved by dy (the same forces, the reference point dy along y). */
+static void rail_offset_mirrors_with_the_gauge(void** state)
+{
+    (void)state;
+    const double dy = 0.6e-3;
+    cw_wheelrail* moved[2];
+    cw_wheelrail_patch p[2], p0[2];
+    for (int side = CW_WHEELRAIL_RIGHT; side <= CW_WHEELRAIL_LEFT; ++side) {
+        const double sign = side == CW_WHEELRAIL_RIGHT ? 1.0 : -1.0;
+        cw_wheelrail_params params;
+        cw_wheelrail_params_init(&params);
+        assert_true(params.gauge_height > 0.0);
+        params.side = side;
+        params.rail_dy = sign * dy;
+        /* At the benchmark's position over the moved rail, and moved with it. */
+        moved[side] = solved_with(&params, 0.0);
+        p[side] = patch0(moved[side]);
+        cw_wheelrail* with_rail = solved_with(&params, sign * dy);
+        const cw_wheelrail_patch shifted = patch0(with_rail);
+        cw_wheelrail* fixed = solved(side, CW_MODEL_EXACT, CW_NORMAL_EXACT, CW_SOLVE_FULL);
+        p0[side] = patch0(fixed);
+        assert_close(shifted.y_contact, p0[side].y_contact + sign * dy, 0, 1e-12);
+        assert_close(shifted.Fn, p0[side].Fn, 1e-9, 0);
+        assert_close(shifted.Fx, p0[side].Fx, 1e-9, 0);
+        assert_close(shifted.Fs, p0[side].Fs, 1e-9, 0);
+        assert_close(shifted.Mn, p0[side].Mn, 1e-9, 1e-12);
+        cw_wheelrail_destroy(with_rail);
+        cw_wheelrail_destroy(fixed);
+    }
+    const cw_wheelrail_patch r = p[CW_WHEELRAIL_RIGHT], l = p[CW_WHEELRAIL_LEFT];
+    /* The offset matters: the right patch moved by more than 1 % of its Fs. */
+    /* The offset matters: the right contact moved outwards with the rail
+     * (by 1.17 mm: 0.6 mm and a new point on the wheel's tread). */
+    assert_true(r.y_contact - p0[CW_WHEELRAIL_RIGHT].y_contact > 0.5 * dy);
+    assert_close(l.y_contact, -r.y_contact, 0, 1e-12);
+    assert_close(l.contact_angle, -r.contact_angle, 0, 1e-12);
+    assert_close(l.Fn, r.Fn, 1e-9, 0);
+    assert_close(l.Fx, r.Fx, 1e-9, 0);
+    assert_close(l.Fs, -r.Fs, 1e-9, 0);
+    assert_close(l.Mn, -r.Mn, 1e-9, 1e-12);
+    assert_close(l.cksi, r.cksi, 1e-12, 0);
+    assert_close(l.ceta, -r.ceta, 1e-12, 0);
+    cw_wheelrail_destroy(moved[0]);
+    cw_wheelrail_destroy(moved[1]);
 }
 
 /* The fast model (FASTSIM with the semi-Hertzian normal problem) against
@@ -390,7 +503,9 @@ int main(int argc, char** argv)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(fields_add_up_to_the_patch),
         cmocka_unit_test(wear_lands_where_documented),
+        cmocka_unit_test(wear_of_two_patches),
         cmocka_unit_test(sides_mirror),
+        cmocka_unit_test(rail_offset_mirrors_with_the_gauge),
         cmocka_unit_test(fast_model_follows_exact),
         cmocka_unit_test(profiles_meet_at_the_contact),
         cmocka_unit_test(errors_name_their_input),

@@ -1,5 +1,5 @@
 // The geometry against CONTACT's printed benchmark results as they ship
-// (../shared/reference/nonhertz/mbench_a22.csv, parsed from CONTACT's
+// (tests/data/nonhertz/mbench_a22.csv, parsed from CONTACT's
 // examples/mbench_a22_*.ref_out): at the printed wheelset height z_ws (4
 // decimals in mm), every printed geometric quantity -- the number of
 // patches, the contact location in track, rail and wheel coordinates, the
@@ -59,7 +59,7 @@ void test_printed_a22(void**)
 {
     cwtest::Benchmark b;
     wr::WheelRailGeometry right = b.geometry(wr::Side::right), left = b.geometry(wr::Side::left);
-    const auto rows = cwtest::read_rows(cwtest::shared_path_nonhertz("mbench_a22.csv"));
+    const auto rows = cwtest::read_rows(cwtest::contact_benchmark_results("mbench_a22.csv"));
     assert_int_equal(rows.size(), 42);
     int checked = 0;
     double worst = 0.0; // |difference| / tolerance

@@ -48,7 +48,7 @@ struct Cylinder {
 // angle reproduces them to their 4 printed digits.
 void test_track_forces_against_contact(void**)
 {
-    const auto rows = cwtest::read_rows(cwtest::shared_path_nonhertz("mbench_a22.csv"));
+    const auto rows = cwtest::read_rows(cwtest::contact_benchmark_results("mbench_a22.csv"));
     assert_int_equal(rows.size(), 42);
     for (const cwtest::Row& r : rows) {
         wr::ContactPatch p;

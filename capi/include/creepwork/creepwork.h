@@ -1,7 +1,9 @@
 /*
- * creepwork -- creep forces, creep moment and frictional-work distributions
- * of a wheel rolling on a rail, by Kalker's simplified theory (FASTSIM, 1982)
- * extended to the moment and an energy-consistent work map.
+ * creepwork -- creep forces, creep moment, frictional-work distributions and
+ * wear of a wheel rolling on a rail: Kalker's simplified theory (FASTSIM,
+ * 1982) extended to the moment and an energy-consistent work map, a
+ * simplified theory calibrated to the exact one, Kalker's exact half-space
+ * theory, contacts of any shape, and wheel/rail contact from the profiles.
  *
  * This header is the whole public contract of libcreepwork. It is C99 and
  * C++ compatible and includes only <stddef.h> and <stdint.h>.
@@ -17,8 +19,8 @@
  *   Forces    Fx, Fy, Mz act on the wheel (body 1), as in Kalker's and
  *             CONTACT's conventions: opposite in sign to the creepages.
  *             The paper (Determination of Creep Force, Moment, and Work
- *             Distribution in Rolling Contact With Slip; README.md, "How
- *             to cite") prints the force on the rail.
+ *             Distribution in Rolling Contact With Slip;
+ *             doc/reference/conventions.md) prints the force on the rail.
  *   Work      Positive when dissipated; per unit rolling distance [J/m].
  *             Multiply by V*dt for the work of a time step.
  *   Grids     Element (i, j), i = 0..nx-1 along x (increasing x),
@@ -77,7 +79,7 @@ extern "C" {
  * that the loaded library is the one the program was built against. */
 CW_API int cw_version_number(void);
 CW_API int cw_abi_version(void);
-CW_API const char* cw_version_string(void); /* "1.2.0", static */
+CW_API const char* cw_version_string(void); /* The release as text, "1.2.0"; static. */
 
 /* ------------------------------------------------------------ status codes */
 
@@ -144,7 +146,7 @@ CW_API const char* cw_status_string(int status);
 /* cw_params.model: how the tangential tractions are found */
 #define CW_MODEL_FASTSIM 0    /* Kalker's simplified theory, FASTSIM (default) */
 #define CW_MODEL_EXACT 1      /* Kalker's exact half-space theory (CONTACT's method),
-                                 uniform grid and G, nu needed */
+                                 on a uniform or gap grid, G, nu needed */
 #define CW_MODEL_CALIBRATED 2 /* simplified theory calibrated to the exact theory */
 
 /* cw_params.spin_offset: the model's own default (0 FASTSIM, 1/6 exact) */
@@ -336,8 +338,8 @@ CW_API int cw_check_init(cw_check* check);
 /* Checks count contacts (params[k], k < count, elements of size
  * params[0].struct_size, each carrying the same struct_size) solved on grid
  * for values that are valid but implausible for a wheel-rail contact, one
- * rule at a time (doc/input-schema.md, "Plausibility"): *found receives the
- * number of rules broken, out[k], k < *found, one entry each, in a fixed
+ * rule at a time (doc/input-schema.md, "Plausibility warnings"): *found
+ * receives the number of rules broken, out[k], k < *found, one entry each, in a fixed
  * order, with the number of contacts that break it and the first's index
  * and value. out is an array of len structs of size out[0].struct_size
  * (each initialised by cw_check_init); len = 0 asks for the number only
@@ -410,7 +412,8 @@ typedef struct cw_solver cw_solver;
 /* Creates a solver for one grid: all memory is allocated here, none in
  * solve. message (may be NULL) receives a NUL-terminated explanation of an
  * error, truncated to message_len bytes. A CW_GRID_GAP solver makes the
- * exact model's memory here (its only model).
+ * exact model's memory here (FASTSIM's on that grid comes with its first
+ * solve or cw_solver_prepare).
  * Errors: CW_ERR_NULL_POINTER, CW_ERR_STRUCT_SIZE, CW_ERR_UNKNOWN_OPTION
  * (kind), CW_ERR_GRID_OUT_OF_RANGE, CW_ERR_INVALID_INPUT (a gap grid's
  * origin or spacing), CW_ERR_OUT_OF_MEMORY. On error *solver is set to
@@ -496,9 +499,10 @@ CW_API int cw_patch_init(cw_patch* patch);
  * number (cw_result.n_patches) and out[k], k < *count, the patch totals
  * (the result's totals are their sums, to rounding). out is an array of len
  * structs of size out[0].struct_size (every element must carry the same
- * struct_size). len = 0 asks for the count only (out may then be NULL). Off a
- * gap grid a contact is one patch (centroid at the ellipse centre).
- * Allocates nothing. Errors: CW_ERR_NULL_POINTER (solver, count),
+ * struct_size): patch k is written at byte k * out[0].struct_size, so a
+ * program built against an older or newer cw_patch gets every patch. len =
+ * 0 asks for the count only (out may then be NULL). Off a gap grid a
+ * contact is one patch (centroid at the ellipse centre). Allocates nothing. Errors: CW_ERR_NULL_POINTER (solver, count),
  * CW_ERR_NO_SOLUTION, CW_ERR_STRUCT_SIZE, CW_ERR_BUFFER_TOO_SMALL (len <
  * *count: *count is set, nothing else is written). */
 CW_API int cw_solver_get_patches(const cw_solver* solver, cw_patch* out, size_t len,
@@ -560,6 +564,7 @@ CW_API int cw_accumulator_get_field(const cw_accumulator* accumulator, int field
 CW_API int cw_accumulator_get_strip_work(const cw_accumulator* accumulator, double* out,
                                          size_t len);
 
+/* Detailed message of the last error on this handle, as cw_solver_last_error. */
 CW_API const char* cw_accumulator_last_error(const cw_accumulator* accumulator);
 
 /* ------------------------------------------------------------------ batch */
@@ -590,6 +595,7 @@ CW_API int cw_batch_destroy(cw_batch* batch); /* NULL: no-op */
 CW_API int cw_batch_solve(cw_batch* batch, size_t count, const cw_params* params, int mode,
                           cw_result* results, int* statuses);
 
+/* Detailed message of the last error on this handle, as cw_solver_last_error. */
 CW_API const char* cw_batch_last_error(const cw_batch* batch);
 
 /* ------------------------------------------- linear theory and Hertz helpers */
@@ -645,14 +651,15 @@ CW_API int cw_fastsim_normalised(double ux, double uy, double fx, double fy, int
 /* ----------------------------------------------------------- model memory */
 
 /* Makes one model's memory now, so that its solves allocate nothing
- * afterwards. CW_MODEL_FASTSIM: nothing to do (made by create).
+ * afterwards. CW_MODEL_FASTSIM: nothing to do (made by create), but on
+ * CW_GRID_GAP its march and normal-method workspace.
  * CW_MODEL_EXACT: influence tables, FFT plans and spectra, Krylov basis and
  * every workspace of the grid and of its coarser levels (memory linear in
  * nx*ny, doc/theory/exact.md); without prepare the first exact solve
  * makes them. CW_MODEL_CALIBRATED: its FASTSIM march workspace (every
  * grid). Idempotent. Errors: CW_ERR_NULL_POINTER,
  * CW_ERR_UNKNOWN_OPTION (model), CW_ERR_INVALID_INPUT (CW_MODEL_EXACT on
- * CW_GRID_KALKER_STRIPS; another model on CW_GRID_GAP),
+ * CW_GRID_KALKER_STRIPS; CW_MODEL_CALIBRATED on CW_GRID_GAP),
  * CW_ERR_GRID_OUT_OF_RANGE (exact: nx or ny > CW_MAX_EXACT_CELLS),
  * CW_ERR_OUT_OF_MEMORY. */
 CW_API int cw_solver_prepare(cw_solver* solver, int model);

@@ -146,6 +146,7 @@ CW_API int cw_wear_get_strips(const cw_wear* wear, double* y, double* width, dou
  * CW_ERR_STRUCT_SIZE, CW_ERR_NO_SOLUTION. */
 CW_API int cw_wear_get_result(const cw_wear* wear, cw_wear_result* result);
 
+/* Detailed message of the last error on this handle, as cw_solver_last_error. */
 CW_API const char* cw_wear_last_error(const cw_wear* wear);
 
 /* ---------------------------------------------- wear on a profile grid */
@@ -213,7 +214,7 @@ CW_API int cw_wear_profile_add_strips(cw_wear_profile* profile, const double* y,
  * CW_ERR_NULL_POINTER, CW_ERR_UNKNOWN_OPTION, CW_ERR_BUFFER_TOO_SMALL. */
 CW_API int cw_wear_profile_get_depth(const cw_wear_profile* profile, int kind, double* out,
                                      size_t out_len);
-/* Errors: CW_ERR_NULL_POINTER, CW_ERR_STRUCT_SIZE. */
+/* Copies the totals. Errors: CW_ERR_NULL_POINTER, CW_ERR_STRUCT_SIZE. */
 CW_API int cw_wear_profile_get_totals(const cw_wear_profile* profile,
                                       cw_wear_profile_totals* totals);
 
@@ -235,6 +236,7 @@ CW_API int cw_wear_profile_get_state(const cw_wear_profile* profile, uint64_t* s
 CW_API int cw_wear_profile_add_state(cw_wear_profile* profile, const uint64_t* state,
                                      size_t len);
 
+/* Detailed message of the last error on this handle, as cw_solver_last_error. */
 CW_API const char* cw_wear_profile_last_error(const cw_wear_profile* profile);
 
 /* The profile update, a helper the host calls when it chooses:

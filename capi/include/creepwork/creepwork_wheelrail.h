@@ -40,7 +40,11 @@ typedef struct cw_wheelrail_params {
     double gauge_width;          /* [m] between the gauge faces (1.435) */
     double cant;                 /* [rad] rail inclination towards the track centre (0) */
     double rail_y0, rail_z0;     /* [m] absolute rail placement (gauge_height <= 0) */
-    double rail_dy, rail_dz, rail_roll; /* [m, m, rad] rail deviations (0) */
+    double rail_dy, rail_dz, rail_roll; /* [m, m, rad] rail deviations (0), in track
+                                    coordinates on either side and with either
+                                    placement: rail_dy > 0 moves the rail to the
+                                    right, so the left rail at -rail_dy under the
+                                    mirrored position is the right one's mirror image */
     double curvature;            /* [1/m] track curvature, > 0 in a right-hand curve (0) */
     double flange_back_distance; /* [m] (1.360) */
     double flange_back_position; /* [m] flange back in wheel profile y (-0.070) */

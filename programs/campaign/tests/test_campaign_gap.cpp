@@ -1,6 +1,6 @@
 /* Tests of campaign rows with a gap_file (contacts of any shape), run as a
  * user runs them: a campaign mixing elliptic rows with rows on two of
- * CONTACT's DEV gaps (../shared/reference/nonhertz/dev: D03_twolobes, two
+ * CONTACT's DEV gaps (tests/data/nonhertz/dev: D03_twolobes, two
  * Hertzian lobes; D14_prof_y5, S1002 on UIC60 at a 5 mm lateral shift, a
  * tread and a flange-root patch), by the exact model and FASTSIM, with the
  * force or the approach prescribed and both normal methods. Every gap row's
@@ -32,7 +32,7 @@ using namespace cwtest;
 
 namespace {
 
-const std::string kDev = std::string(CW_SHARED_DIR) + "/reference/nonhertz/dev";
+const std::string kDev = std::string(CW_TEST_DATA_DIR) + "/nonhertz/dev";
 
 // CONTACT's DEV cases: the inputs and results of dev/cases.csv, by case id.
 std::map<std::string, std::map<std::string, std::string>> dev_cases()
@@ -43,14 +43,6 @@ std::map<std::string, std::map<std::string, std::string>> dev_cases()
     for (size_t k = 1; k < records.size(); ++k)
         for (const auto& [name, column] : idx) out[records[k][idx.at("case_id")]][name] = records[k][column];
     return out;
-}
-
-bool have_data()
-{
-    if (fs::exists(kDev + "/gaps/D03_twolobes.csv") && fs::exists(kDev + "/gaps/D14_prof_y5.csv"))
-        return true;
-    print_message("skipped: no CONTACT reference data in %s\n", kDev.c_str());
-    return false;
 }
 
 const std::vector<std::string> kColumns = {
@@ -126,7 +118,6 @@ double number(const std::string& cell) { return std::strtod(cell.c_str(), nullpt
 void gap_rows_match_solve_gap_on_any_ranks(void** state)
 {
     (void)state;
-    if (!have_data()) cw_skip();
     fs::create_directories(path("gaps"));
     fs::copy_file(kDev + "/gaps/D03_twolobes.csv", path("gaps/D03.csv"));
     const std::string d14 = kDev + "/gaps/D14_prof_y5.csv";
@@ -217,7 +208,6 @@ void gap_rows_match_solve_gap_on_any_ranks(void** state)
 void gap_bad_rows_fail_alone(void** state)
 {
     (void)state;
-    if (!have_data()) cw_skip();
     const std::string d03 = kDev + "/gaps/D03_twolobes.csv";
     std::string text = slurp(d03);
     // Line 4 of the copy: a value that is not a number.
@@ -299,7 +289,6 @@ void gap_bad_rows_fail_alone(void** state)
 void gap_unit_mistakes_are_warned(void** state)
 {
     (void)state;
-    if (!have_data()) cw_skip();
     // D03 with every value in millimetres: cells of 0.3485 "m", gaps of 0.2 "m".
     const auto records = read_csv(kDev + "/gaps/D03_twolobes.csv");
     std::string mm = "x_m,y_m,h_m\n";
@@ -353,7 +342,6 @@ void gap_unit_mistakes_are_warned(void** state)
 void gap_files_are_part_of_the_identity(void** state)
 {
     (void)state;
-    if (!have_data()) cw_skip();
     const std::string text = slurp(kDev + "/gaps/D03_twolobes.csv");
     scratch_file("gap.csv", text);
     scratch_file("in.csv", "id,gap_file,N,xi_x\ng,gap.csv,60000,0.001\n");

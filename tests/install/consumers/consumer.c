@@ -1,7 +1,7 @@
 /* A program outside the creepwork tree, built against an installed prefix
  * (find_package or pkg-config). Checks that the header and the loaded library
  * agree and that one of Kalker's 1982 check values comes out
- * (shared/reference/kalker1982_checks.csv, row 4: TX = 0.5684). */
+ * (tests/data/kalker1982_checks.csv, row 4: TX = 0.5684). */
 #include <math.h>
 #include <stdio.h>
 
