@@ -298,8 +298,9 @@ end subroutine CWTYPE
 ! never fail.
 subroutine CWCHEK(A, B, FN, FMU, G, PNU, XI, ETA, PHI, K, MSG, NWARN, IERR)
    use, intrinsic :: iso_c_binding, only: c_double, c_int
-   use creepwork, only: cw_grid, cw_check, cw_grid_init, cw_params_check, cw_check_text, &
+   use creepwork, only: cw_grid, cw_check, cw_grid_init, cw_params_check, &
                         CW_CHECK_DEFAULT_GEOMETRY, CW_OK
+   use creepwork_handle, only: buffer_text
    use creepwork_legacy_support, only: check_normal, material_params, remember
    implicit none
    real(c_double), intent(in) :: A, B, FN, FMU, G, PNU, XI, ETA, PHI
@@ -309,6 +310,9 @@ subroutine CWCHEK(A, B, FN, FMU, G, PNU, XI, ETA, PHI, K, MSG, NWARN, IERR)
    type(cw_grid) :: grid
    type(cw_check), allocatable :: checks(:)
    logical, allocatable :: shown(:)
+   ! A subroutine's deferred-length result, not a function's: gfortran keeps
+   ! a function result's length in static data (tests/fortran, static data).
+   character(len=:), allocatable :: text
    integer :: i, n
    MSG = ' '
    NWARN = 0
@@ -322,7 +326,10 @@ subroutine CWCHEK(A, B, FN, FMU, G, PNU, XI, ETA, PHI, K, MSG, NWARN, IERR)
    do i = 1, size(checks)
       if (.not. shown(i)) cycle
       n = n + 1
-      if (n == K) MSG = cw_check_text(checks(i)%message)
+      if (n == K) then
+         call buffer_text(checks(i)%message, text)
+         MSG = text
+      end if
    end do
    call remember('')
 end subroutine CWCHEK
