@@ -86,12 +86,13 @@ static void benchmark_against_contact(void** state)
  * exact model on the 0.2 mm grid (a = 3.9 mm): p_max within 1 % (0.01 %
  * measured); no creepage, so no
  * tangential force. */
-static void points_against_hertz(void** state)
+enum { NR = 241, NW = 121 };
+static const double R = 0.46;
+
+/* A rail crowned with the radius R (points in mm) under a flat wheel of
+ * radius R, the rail's origin at the track origin. */
+static cw_wheelrail_params hertz_points(double ry[NR], double rz[NR], double wy[NW], double wz[NW])
 {
-    (void)state;
-    enum { NR = 241, NW = 121 };
-    const double R = 0.46;
-    double ry[NR], rz[NR], wy[NW], wz[NW];
     for (int i = 0; i < NR; ++i) {
         ry[i] = -30.0 + 0.25 * i;
         rz[i] = R * 1e3 - sqrt(R * R * 1e6 - ry[i] * ry[i]);
@@ -107,6 +108,14 @@ static void points_against_hertz(void** state)
     p.flange_back_position = 0.3;
     p.flange_back_distance = 0.6;
     p.profile_unit = 1e-3;
+    return p;
+}
+
+static void points_against_hertz(void** state)
+{
+    (void)state;
+    double ry[NR], rz[NR], wy[NW], wz[NW];
+    cw_wheelrail_params p = hertz_points(ry, rz, wy, wz);
     cw_wheelrail* w = NULL;
     char msg[256] = "x";
     assert_int_equal(cw_wheelrail_create_points(&p, ry, rz, NR, wy, wz, NW, &w, msg, sizeof msg), CW_OK);
@@ -320,24 +329,8 @@ static void check_finds_unit_mistakes_and_flange_climbs(void** state)
 static void check_finds_a_wheelset_off_its_height(void** state)
 {
     (void)state;
-    enum { NR = 241, NW = 121 };
-    const double R = 0.46;
     double ry[NR], rz[NR], wy[NW], wz[NW];
-    for (int i = 0; i < NR; ++i) {
-        ry[i] = -30.0 + 0.25 * i;
-        rz[i] = R * 1e3 - sqrt(R * R * 1e6 - ry[i] * ry[i]);
-    }
-    for (int i = 0; i < NW; ++i) {
-        wy[i] = 60.0 - i;
-        wz[i] = 0.0;
-    }
-    cw_wheelrail_params p;
-    cw_wheelrail_params_init(&p);
-    p.gauge_height = -1.0;
-    p.nominal_radius = R;
-    p.flange_back_position = 0.3;
-    p.flange_back_distance = 0.6;
-    p.profile_unit = 1e-3;
+    cw_wheelrail_params p = hertz_points(ry, rz, wy, wz);
     cw_wheelrail_motion m;
     cw_wheelrail_motion_init(&m);
     m.vs = 10.0;
@@ -400,14 +393,13 @@ static void offsets_and_mirror_place_the_profiles(void** state)
     assert_close(t1.z, t0.z, 0, 1e-9);
     cw_wheelrail_destroy(w);
 
-    enum { NR = 241, NW = 101 };
-    const double R = 0.46;
-    double ry[NR], rz[NR], wy[NW], wz[NW], wy_in[NW];
+    enum { NC = 101 }; /* the cone's points */
+    double ry[NR], rz[NR], wy[NC], wz[NC], wy_in[NC];
     for (int i = 0; i < NR; ++i) {
         ry[i] = -30.0 + 0.25 * i;
         rz[i] = 0.3e3 - sqrt(0.3e3 * 0.3e3 - ry[i] * ry[i]);
     }
-    for (int i = 0; i < NW; ++i) {
+    for (int i = 0; i < NC; ++i) {
         wy[i] = 60.0 - i;
         wz[i] = -0.05 * wy[i]; /* 1:20 cone, larger towards the track centre */
         wy_in[i] = -wy[i];     /* measured with y towards the track centre */
@@ -422,19 +414,19 @@ static void offsets_and_mirror_place_the_profiles(void** state)
     cw_wheelrail_patch q0, q1;
     cw_wheelrail_patch_init(&q0);
     cw_wheelrail_patch_init(&q1);
-    assert_int_equal(cw_wheelrail_create_points(&p, ry, rz, NR, wy, wz, NW, &w, NULL, 0), CW_OK);
+    assert_int_equal(cw_wheelrail_create_points(&p, ry, rz, NR, wy, wz, NC, &w, NULL, 0), CW_OK);
     assert_int_equal(cw_wheelrail_solve(w, &m, CW_WHEELRAIL_FORCE, 2e4, &t0), CW_OK);
     assert_int_equal(cw_wheelrail_get_patch(w, 0, &q0), CW_OK);
     cw_wheelrail_destroy(w);
     p.mirror_wheel = 1;
-    assert_int_equal(cw_wheelrail_create_points(&p, ry, rz, NR, wy_in, wz, NW, &w, NULL, 0), CW_OK);
+    assert_int_equal(cw_wheelrail_create_points(&p, ry, rz, NR, wy_in, wz, NC, &w, NULL, 0), CW_OK);
     assert_int_equal(cw_wheelrail_solve(w, &m, CW_WHEELRAIL_FORCE, 2e4, &t1), CW_OK);
     assert_int_equal(cw_wheelrail_get_patch(w, 0, &q1), CW_OK);
     assert_memory_equal(&t0, &t1, sizeof t0);
     assert_true(q0.contact_angle == q1.contact_angle && q0.cksi == q1.cksi);
     cw_wheelrail_destroy(w);
     p.mirror_wheel = 0; /* the cone the other way round: the contact tilts the other way */
-    assert_int_equal(cw_wheelrail_create_points(&p, ry, rz, NR, wy_in, wz, NW, &w, NULL, 0), CW_OK);
+    assert_int_equal(cw_wheelrail_create_points(&p, ry, rz, NR, wy_in, wz, NC, &w, NULL, 0), CW_OK);
     assert_int_equal(cw_wheelrail_solve(w, &m, CW_WHEELRAIL_FORCE, 2e4, &t1), CW_OK);
     assert_int_equal(cw_wheelrail_get_patch(w, 0, &q1), CW_OK);
     assert_true(q1.contact_angle * q0.contact_angle < 0.0);
@@ -442,12 +434,12 @@ static void offsets_and_mirror_place_the_profiles(void** state)
     /* out of range */
     p.mirror_wheel = 2;
     char msg[256];
-    assert_int_equal(cw_wheelrail_create_points(&p, ry, rz, NR, wy, wz, NW, &w, msg, sizeof msg),
+    assert_int_equal(cw_wheelrail_create_points(&p, ry, rz, NR, wy, wz, NC, &w, msg, sizeof msg),
                      CW_ERR_INVALID_INPUT);
     assert_non_null(strstr(msg, "mirror_wheel"));
     p.mirror_wheel = 0;
     p.wheel_y_offset = 2.0;
-    assert_int_equal(cw_wheelrail_create_points(&p, ry, rz, NR, wy, wz, NW, &w, msg, sizeof msg),
+    assert_int_equal(cw_wheelrail_create_points(&p, ry, rz, NR, wy, wz, NC, &w, msg, sizeof msg),
                      CW_ERR_INVALID_INPUT);
     assert_non_null(strstr(msg, "wheel_y_offset"));
 }
