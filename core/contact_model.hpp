@@ -10,7 +10,7 @@
 #include "contact/fields.hpp"
 #include "contact/jacobian.hpp"
 #include "contact/params.hpp"
-#include "march/kernel_isa.hpp"
+#include "simd/kernel_isa.hpp"
 
 namespace creepwork {
 
@@ -45,7 +45,7 @@ public:
     // as one patch).
     virtual const std::vector<PatchTotals>* patches() const { return nullptr; }
 
-    // The ISA of the model's SIMD kernels (march/kernel_isa.hpp), supported
+    // The ISA of the model's SIMD kernels (simd/kernel_isa.hpp), supported
     // by this CPU; every ISA gives bitwise the same results. Models without
     // such kernels ignore it.
     virtual void set_kernel_isa(KernelIsa) {}

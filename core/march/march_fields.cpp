@@ -5,7 +5,7 @@
 #include <type_traits>
 
 #include "march/march_model.hpp"
-#include "march/simd.hpp"
+#include "simd/simd.hpp"
 
 // The vector types below never cross a non-inlined call: their ABI is moot.
 #if defined(__GNUC__) || defined(__clang__)

@@ -12,7 +12,7 @@
 
 #include "contact/contact_grid.hpp"
 #include "contact_model.hpp"
-#include "march/kernel_isa.hpp"
+#include "simd/kernel_isa.hpp"
 #include "march/march.hpp"
 #include "march/march_geometry.hpp"
 #include "march/march_setup.hpp"

@@ -10,8 +10,8 @@
 #include "contact/number_text.hpp"
 #include "exact/exact_work.hpp"
 #include "exact/gap_model.hpp"
-#include "march/kernel_isa.hpp"
-#include "march/simd.hpp"
+#include "simd/kernel_isa.hpp"
+#include "simd/simd.hpp"
 
 namespace creepwork {
 namespace {
@@ -24,7 +24,7 @@ constexpr int kNormalMaxIterations = 500;
 
 // Whether every one of n values lies within [-1, 1] (false for NaN and
 // infinities too), by a branch-free pass: a select per value, so that the
-// loop vectorises. A kernel of march/kernel_isa.hpp (W unused: the compiler
+// loop vectorises. A kernel of simd/kernel_isa.hpp (W unused: the compiler
 // vectorises the loop for the copy's ISA); a yes or no, the same in every
 // copy.
 struct AllWithinOne : KernelWidths {

@@ -6,8 +6,8 @@
 
 #include "contact/error.hpp"
 #include "contact/hertz.hpp"
-#include "march/kernel_isa.hpp"
-#include "march/simd.hpp"
+#include "simd/kernel_isa.hpp"
+#include "simd/simd.hpp"
 
 namespace creepwork {
 namespace {
@@ -187,7 +187,7 @@ namespace {
 // locus; one otherwise); then the roots sqrt(max(v, 0)) in place and their
 // weighted sum, in eight partial sums, in one long loop over all rows (a
 // row has a few dozen elements: its own roots would leave the vector unit
-// waiting). A kernel of march/kernel_isa.hpp, so that the solver's ISA
+// waiting). A kernel of simd/kernel_isa.hpp, so that the solver's ISA
 // picks the copy (W itself is unused, the compiler vectorises the loops
 // for the copy's ISA), bitwise the same result in every copy (each value,
 // root and partial sum the same operations in the same order). Not a
@@ -229,7 +229,7 @@ struct WeightedRoots : KernelWidths {
 // A row's lowest value and the index of its first occurrence: W lanes,
 // each its own first lowest element by selects (no branch to mispredict
 // where the row turns), then the lowest of the lanes', the first of equals.
-// The answer does not depend on W. A kernel of march/kernel_isa.hpp.
+// The answer does not depend on W. A kernel of simd/kernel_isa.hpp.
 struct RowMinimum : KernelWidths {
     template <int W>
     CREEPWORK_INLINE static void run(const double* const& row, const int& n, double* const& lowest,

@@ -27,7 +27,7 @@
 
 #include <vector>
 
-#include "march/kernel_isa.hpp"
+#include "simd/kernel_isa.hpp"
 
 namespace creepwork {
 

@@ -1,4 +1,4 @@
-#include "march/kernel_isa.hpp"
+#include "simd/kernel_isa.hpp"
 
 namespace creepwork {
 

@@ -1,5 +1,6 @@
-// The instruction sets the march's kernels are compiled for, and the one
-// way a kernel gets its per-ISA entry points and their dispatch.
+// The instruction sets the core's SIMD kernels are compiled for (the march's
+// and the semi-Hertzian method's), and the one way a kernel gets its
+// per-ISA entry points and their dispatch.
 //
 // A kernel is written once, as a struct with a static member template
 // run<W>(args...) that works on W doubles per vector (simd.hpp) and is
@@ -7,7 +8,7 @@
 // compiled for isa: the build's baseline (SSE2 on x86-64, W = 2) and, on
 // x86-64 with GCC or Clang, AVX2 (W = 4) and AVX-512 (W = 8). A solver picks
 // the widest ISA the CPU runs once, when it is made. Every copy gives
-// bitwise the same results (march.hpp says why), which test_core_kernels
+// bitwise the same results (march/march.hpp says why), which test_core_kernels
 // checks, so no copy is kept equal by hand.
 #pragma once
 
