@@ -3,6 +3,9 @@
 #include <cmath>
 #include <cstring>
 
+#include "simd/kernel_isa.hpp"
+#include "simd/simd.hpp"
+
 namespace creepwork {
 namespace {
 
@@ -13,8 +16,8 @@ constexpr double kPi = 3.14159265358979323846;
 //   y[s (r p + j) + q] = w_n^(p j) sum_k x[s (p + k m) + q] w_r^(j k).
 // Sign = -1 forward, +1 inverse (the sign of the exponent).
 template <int R, int Sign>
-__attribute__((always_inline)) inline void stage(int m, int s, int L, const double* xr, const double* xi, double* yr, double* yi,
-           const double* twr, const double* twi)
+CREEPWORK_INLINE void stage(int m, int s, int L, const double* xr, const double* xi, double* yr,
+                            double* yi, const double* twr, const double* twi)
 {
     const size_t run = static_cast<size_t>(s) * L; // contiguous values per (p, k)
     for (int p = 0; p < m; ++p) {
@@ -114,8 +117,9 @@ __attribute__((always_inline)) inline void stage(int m, int s, int L, const doub
 }
 
 template <int Sign>
-__attribute__((always_inline)) inline void run_stage(int radix, int m, int s, int L, const double* xr, const double* xi, double* yr,
-               double* yi, const double* twr, const double* twi)
+CREEPWORK_INLINE void run_stage(int radix, int m, int s, int L, const double* xr,
+                                const double* xi, double* yr, double* yi, const double* twr,
+                                const double* twi)
 {
     switch (radix) {
     case 2: stage<2, Sign>(m, s, L, xr, xi, yr, yi, twr, twi); break;
@@ -125,29 +129,25 @@ __attribute__((always_inline)) inline void run_stage(int radix, int m, int s, in
     }
 }
 
-// One stage, compiled for AVX-512, AVX2 and the baseline; each transform
-// calls the version its CPU runs (chosen by the constructor: explicit
-// dispatch, as FASTSIM's kernels, not ifunc multiversioning, which the
-// ThreadSanitizer runtime cannot start with). 10-25 % faster on this
-// machine's AVX-512 cores. The same operations on every lane and no fused
-// multiply-add (-ffp-contract=off), so every version gives the same bits.
-#define CW_ANY_STAGE_BODY                                                              \
-    {                                                                                  \
-        if (inverse)                                                                   \
-            run_stage<1>(radix, m, s, L, xr, xi, yr, yi, twr, twi);                    \
-        else                                                                           \
-            run_stage<-1>(radix, m, s, L, xr, xi, yr, yi, twr, twi);                   \
+// One stage, a kernel of simd/kernel_isa.hpp: compiled for every ISA and
+// run by run_kernel in the copy the FFT's owner chose (W unused: the compiler
+// vectorises the butterflies over the lines for the copy's ISA). The same
+// operations on every lane and no fused multiply-add (-ffp-contract=off), so
+// every copy gives the same bits.
+struct StageKernel : KernelWidths {
+    template <int W>
+    CREEPWORK_INLINE static void run(const bool& inverse, const int& radix, const int& m,
+                                     const int& s, const int& L, const double* const& xr,
+                                     const double* const& xi, double* const& yr,
+                                     double* const& yi, const double* const& twr,
+                                     const double* const& twi)
+    {
+        if (inverse)
+            run_stage<1>(radix, m, s, L, xr, xi, yr, yi, twr, twi);
+        else
+            run_stage<-1>(radix, m, s, L, xr, xi, yr, yi, twr, twi);
     }
-#define CW_ANY_STAGE_ARGS                                                              \
-    (bool inverse, int radix, int m, int s, int L, const double* xr, const double* xi, \
-     double* yr, double* yi, const double* twr, const double* twi)
-
-void stage_baseline CW_ANY_STAGE_ARGS CW_ANY_STAGE_BODY
-#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
-#define CW_FFT_X86 1
-__attribute__((target("avx2"))) void stage_avx2 CW_ANY_STAGE_ARGS CW_ANY_STAGE_BODY
-__attribute__((target("avx512f"))) void stage_avx512 CW_ANY_STAGE_ARGS CW_ANY_STAGE_BODY
-#endif
+};
 
 } // namespace
 
@@ -182,15 +182,8 @@ int BatchedFft::good_size(int n)
     return best;
 }
 
-BatchedFft::BatchedFft(int n) : stage_(&stage_baseline)
+BatchedFft::BatchedFft(int n) : isa_(best_kernel_isa())
 {
-#ifdef CW_FFT_X86
-    __builtin_cpu_init();
-    if (__builtin_cpu_supports("avx512f"))
-        stage_ = &stage_avx512;
-    else if (__builtin_cpu_supports("avx2"))
-        stage_ = &stage_avx2;
-#endif
     // A length n has at most log2(n) stages and n - 1 twiddles (stage by
     // stage (r - 1) m = rest - rest / r, a telescoping sum).
     stages_.reserve(32);
@@ -237,7 +230,8 @@ void BatchedFft::transform(double* re, double* im, int lines, bool inverse, doub
     for (const Stage& st : stages_) {
         const double* twr = tw_re_.data() + st.twiddle;
         const double* twi = tw_im_.data() + st.twiddle;
-        stage_(inverse, st.radix, st.m, st.stride, lines, xr, xi, yr, yi, twr, twi);
+        run_kernel<StageKernel>(isa_, inverse, st.radix, st.m, st.stride, lines, xr, xi, yr, yi,
+                                twr, twi);
         std::swap(xr, yr);
         std::swap(xi, yi);
     }
@@ -266,8 +260,10 @@ void BatchedFft::transform(const double* in_re, const double* in_im, double* out
         double* yr = to_out ? out_re : work;
         double* yi = to_out ? out_im : work + total;
         const Stage& st = stages_[k];
-        stage_(inverse, st.radix, st.m, st.stride, lines, xr, xi, yr, yi,
-               tw_re_.data() + st.twiddle, tw_im_.data() + st.twiddle);
+        const double* twr = tw_re_.data() + st.twiddle;
+        const double* twi = tw_im_.data() + st.twiddle;
+        run_kernel<StageKernel>(isa_, inverse, st.radix, st.m, st.stride, lines, xr, xi, yr, yi,
+                                twr, twi);
         xr = yr;
         xi = yi;
     }

@@ -15,6 +15,8 @@
 #include <cstddef>
 #include <vector>
 
+#include "simd/kernel_isa.hpp"
+
 namespace creepwork {
 
 class BatchedFft {
@@ -35,17 +37,17 @@ public:
                    int lines, bool inverse, double* work) const;
     // A cheap 2^a 3^b 5^c length >= n (at most 1.1 n; see the .cpp).
     static int good_size(int n);
+    // The copy of the stages to run: best_kernel_isa() unless set (isa must
+    // be supported; every copy gives the same bits).
+    void set_kernel_isa(KernelIsa isa) { isa_ = isa; }
 
 private:
     struct Stage {
         int radix, m, stride; // length n = radix * m of this stage, stride of the sub-transforms
         std::size_t twiddle;      // offset of (radix - 1) * m twiddles in re_/im_
     };
-    using StageFunction = void (*)(bool inverse, int radix, int m, int stride, int lines,
-                                   const double* xr, const double* xi, double* yr, double* yi,
-                                   const double* twr, const double* twi);
     int n_ = 0;
-    StageFunction stage_; // this CPU's version (AVX-512, AVX2 or baseline)
+    KernelIsa isa_; // the stages' copy (simd/kernel_isa.hpp)
     std::vector<Stage> stages_;
     std::vector<double> tw_re_, tw_im_;
 };

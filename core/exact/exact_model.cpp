@@ -73,6 +73,11 @@ ExactModel::ExactModel(const GridSpec& grid)
 
 ExactModel::~ExactModel() = default;
 
+void ExactModel::set_kernel_isa(KernelIsa isa)
+{
+    for (auto& L : levels_) L->conv.set_kernel_isa(isa);
+}
+
 void ExactModel::solve_normal(Level& L, double ratio, bool warm, const char* which)
 {
     const double nu = L.conv.nu();

@@ -82,6 +82,8 @@ public:
     // Per row j < ny: centre y [m], energy-consistent work per unit width
     // [J/m per m], and the equal-area parabola of total W at y.
     void copy_profile(double W, double* y, double* work, double* parabola) const override;
+    // The FFTs' kernel (every ISA gives the same bits).
+    void set_kernel_isa(KernelIsa isa) override;
 
 private:
     // One grid of the hierarchy with its coefficients and solvers.

@@ -95,6 +95,14 @@ GapModel::GapModel(const GridSpec& grid)
 
 GapModel::~GapModel() = default;
 
+void GapModel::set_kernel_isa(KernelIsa isa)
+{
+    semi_hertz_.set_kernel_isa(isa);
+    normal_conv_.set_kernel_isa(isa);
+    normal_box_conv_.set_kernel_isa(isa);
+    for (auto& L : levels_) L->conv.set_kernel_isa(isa);
+}
+
 void GapModel::validate(const ContactInput& in) const
 {
     if (in.model != ModelKind::exact)

@@ -102,8 +102,9 @@ public:
     void copy_strips(double* y, double* width) const;
     // The separate patches of the last solve (4-connected), caller's frame.
     const std::vector<PatchTotals>* patches() const override { return &patches_; }
-    // The semi-Hertzian start's kernel (every ISA gives the same bits).
-    void set_kernel_isa(KernelIsa isa) override { semi_hertz_.set_kernel_isa(isa); }
+    // The kernels of the semi-Hertzian start and the FFTs (every ISA gives
+    // the same bits).
+    void set_kernel_isa(KernelIsa isa) override;
 
 private:
     struct Level {

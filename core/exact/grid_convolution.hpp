@@ -55,6 +55,13 @@ public:
     bool copy_coefficients(const GridConvolution& from);
     double rho() const { return rho_; }
     double nu() const { return nu_; }
+    // The copy of the FFTs' kernels to run (supported by this CPU; every copy
+    // gives the same bits).
+    void set_kernel_isa(KernelIsa isa)
+    {
+        fft_x_.set_kernel_isa(isa);
+        fft_y_.set_kernel_isa(isa);
+    }
 
     // Normal (use both or normal): u[i + nx j] = sum_J cf33(I - J) p[J] (dx = 1). Real fields:
     // two columns go into one complex transform and only half the spectrum

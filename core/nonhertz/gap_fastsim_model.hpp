@@ -81,6 +81,7 @@ public:
     {
         isa_ = isa;
         semi_hertz_.set_kernel_isa(isa);
+        conv_->set_kernel_isa(isa);
     }
     // The flexibilities and spin centres (rolling frame) of the last solve's
     // patches, in the order of patches().

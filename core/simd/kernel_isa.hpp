@@ -1,5 +1,5 @@
-// The instruction sets the core's SIMD kernels are compiled for (the march's
-// and the semi-Hertzian method's), and the one way a kernel gets its
+// The instruction sets the core's SIMD kernels are compiled for (the march's,
+// the semi-Hertzian method's, the FFT's), and the one way a kernel gets its
 // per-ISA entry points and their dispatch.
 //
 // A kernel is written once, as a struct with a static member template
