@@ -4,8 +4,8 @@
 // Made once per grid -- it owns every workspace, FFT plan and coefficient
 // table -- then solve() many times without allocating.
 //
-// One solve: the half-space coefficients of the grid (influence.hpp,
-// grid_convolution.hpp; recomputed only when a/b or nu change), the normal
+// One solve: the half-space coefficients of the grid (halfspace/influence.hpp,
+// halfspace/grid_convolution.hpp; recomputed only when a/b or nu change), the normal
 // problem with the force prescribed (normal_problem.hpp; its normalised
 // pressure depends only on the grid and a/b, so it is kept and reused), then
 // the tangential problem (steady_rolling.hpp) and, in full mode, the work
@@ -32,8 +32,8 @@
 #include "contact/jacobian.hpp"
 #include "contact/params.hpp"
 #include "exact/creepage_history.hpp"
-#include "exact/exact_geometry.hpp"
-#include "exact/grid_convolution.hpp"
+#include "halfspace/exact_geometry.hpp"
+#include "halfspace/grid_convolution.hpp"
 #include "exact/normal_problem.hpp"
 #include "exact/steady_rolling.hpp"
 

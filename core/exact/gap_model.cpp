@@ -8,7 +8,7 @@
 #include "contact/error.hpp"
 #include "contact/number_text.hpp"
 #include "contact/kalker_coefficients.hpp"
-#include "exact/cell_box.hpp"
+#include "halfspace/cell_box.hpp"
 #include "exact/exact_work.hpp"
 
 namespace creepwork {

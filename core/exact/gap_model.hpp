@@ -40,7 +40,7 @@
 #include "contact/params.hpp"
 #include "exact/creepage_history.hpp"
 #include "exact/exact_model.hpp"
-#include "exact/grid_convolution.hpp"
+#include "halfspace/grid_convolution.hpp"
 #include "exact/normal_problem.hpp"
 #include "exact/steady_rolling.hpp"
 #include "nonhertz/patches.hpp"

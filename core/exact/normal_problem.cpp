@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "contact/hertz.hpp"
-#include "exact/cell_box.hpp"
+#include "halfspace/cell_box.hpp"
 
 namespace creepwork {
 namespace {

@@ -32,8 +32,8 @@
 
 #include <vector>
 
-#include "exact/exact_geometry.hpp"
-#include "exact/grid_convolution.hpp"
+#include "halfspace/exact_geometry.hpp"
+#include "halfspace/grid_convolution.hpp"
 
 namespace creepwork {
 

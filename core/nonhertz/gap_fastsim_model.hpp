@@ -48,7 +48,7 @@
 #include "contact/fields.hpp"
 #include "contact/params.hpp"
 #include "contact_model.hpp"
-#include "exact/grid_convolution.hpp"
+#include "halfspace/grid_convolution.hpp"
 #include "exact/normal_problem.hpp"
 #include "nonhertz/gap_march.hpp"
 #include "nonhertz/patches.hpp"

@@ -9,7 +9,7 @@
 #include <cstddef>
 
 #include "contact/params.hpp"
-#include "exact/grid_convolution.hpp"
+#include "halfspace/grid_convolution.hpp"
 #include "exact/normal_problem.hpp"
 #include "nonhertz/semi_hertz.hpp"
 

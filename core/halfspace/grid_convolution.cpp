@@ -1,9 +1,9 @@
-#include "exact/grid_convolution.hpp"
+#include "halfspace/grid_convolution.hpp"
 
 #include <algorithm>
 #include <cmath>
 
-#include "exact/influence.hpp"
+#include "halfspace/influence.hpp"
 
 namespace creepwork {
 namespace {

@@ -3,7 +3,7 @@
 // [-S a, S a] x [-S b, S b], element (i, j) at [i + nx j], i along x in the
 // rolling frame (leading edge at +x). Lengths are in units of the element
 // length dx = 2 S a / nx, so the normalised problems depend only on the
-// grid and a/b (exact_model.hpp).
+// grid and a/b (exact/exact_model.hpp).
 #pragma once
 
 namespace creepwork {

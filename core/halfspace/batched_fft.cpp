@@ -1,4 +1,4 @@
-#include "exact/batched_fft.hpp"
+#include "halfspace/batched_fft.hpp"
 
 #include <cmath>
 #include <cstring>

@@ -1,4 +1,4 @@
-#include "exact/influence.hpp"
+#include "halfspace/influence.hpp"
 
 #include <cmath>
 

@@ -22,7 +22,7 @@
 #include <complex>
 #include <vector>
 
-#include "exact/batched_fft.hpp"
+#include "halfspace/batched_fft.hpp"
 
 namespace creepwork {
 
