@@ -14,8 +14,6 @@
 
 namespace creepwork {
 
-struct PatchTotals; // nonhertz/patches.hpp
-
 class ContactModel {
 public:
     virtual ~ContactModel() = default;

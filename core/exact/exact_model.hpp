@@ -34,15 +34,11 @@
 #include "exact/creepage_history.hpp"
 #include "halfspace/exact_geometry.hpp"
 #include "halfspace/grid_convolution.hpp"
-#include "exact/normal_problem.hpp"
+#include "normal/normal_problem.hpp"
 #include "exact/steady_rolling.hpp"
 
 namespace creepwork {
 
-// Largest grid of the exact model per direction (memory grows with the
-// square: about 2 kB per element with all levels and the Krylov basis, most
-// of it in the FFT arrays of the 4x larger padded grid).
-constexpr int kMaxExactCells = 256;
 // Defaults of ContactInput::tolerance and max_iterations for this model.
 constexpr double kExactDefaultTolerance = 1e-8;
 constexpr int kExactDefaultMaxIterations = 50;

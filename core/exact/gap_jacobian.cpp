@@ -9,7 +9,7 @@
 //
 // N: the column is d/dN along the solution, whether the force or the
 // approach is prescribed. The normal method gives dp/dN per element
-// (nonhertz/pressure_by_load.hpp: the exact normal problem linearised at its
+// (normal/pressure_by_load.hpp: the exact normal problem linearised at its
 // contact set, or the semi-Hertzian closed form). The normalisation T is
 // held fixed (any constant scale describes the same discrete problem; p_ref,
 // the largest pressure, moves with N but only rescales the unknowns), so the
@@ -20,7 +20,7 @@
 
 #include "contact/jacobian_load.hpp"
 #include "exact/gap_model.hpp"
-#include "nonhertz/pressure_by_load.hpp"
+#include "normal/pressure_by_load.hpp"
 
 namespace creepwork {
 namespace {

@@ -7,7 +7,7 @@
 // One solve:
 //  1. the normal problem on the gap (normal_problem.hpp, solve_gap), with the
 //     normal force or the approach prescribed, started from the last solution
-//     or from the semi-Hertzian method (nonhertz/semi_hertz.hpp); or, with
+//     or from the semi-Hertzian method (normal/semi_hertz.hpp); or, with
 //     NormalMethod::semi_hertz, that method alone;
 //  2. the tangential problem of steady rolling (steady_rolling.hpp) with the
 //     rigid slip w = (xi - phi y, eta + phi (x + spin_offset dx)) at the
@@ -16,7 +16,7 @@
 //     (tractions vanish outside it, and the influence coefficients depend
 //     only on the offset: the same discrete problem on fewer elements, with
 //     FFTs of the box's size);
-//  3. the separate patches (nonhertz/patches.hpp) and their totals, and in
+//  3. the separate patches (normal/patches.hpp) and their totals, and in
 //     full mode the work maps (exact_work.hpp).
 // The tangential problem starts from the last solution (warm) or from a
 // hierarchy of coarser grids over the contact's box, each solved from the one
@@ -41,26 +41,13 @@
 #include "exact/creepage_history.hpp"
 #include "exact/exact_model.hpp"
 #include "halfspace/grid_convolution.hpp"
-#include "exact/normal_problem.hpp"
+#include "normal/normal_problem.hpp"
 #include "exact/steady_rolling.hpp"
-#include "nonhertz/patches.hpp"
-#include "nonhertz/semi_hertz.hpp"
+#include "normal/gap_grid.hpp"
+#include "normal/patches.hpp"
+#include "normal/semi_hertz.hpp"
 
 namespace creepwork {
-
-// Smallest gap grid per direction (the semi-Hertzian method fits curvatures
-// over three cells).
-constexpr int kMinGapCells = 3;
-
-// The grid of a model on a gap grid, checked before anything is allocated
-// for it: throws Error(invalid_input) unless grid.kind is gap with finite
-// origin and positive spacing, Error(grid_out_of_range) outside
-// kMinGapCells ... kMaxExactCells cells per direction.
-const GridSpec& checked_gap_grid(const GridSpec& grid);
-// What every model on a gap grid needs of its input (n elements): the gap,
-// the load, the normal method, mu, G, nu, the creepages, the rolling
-// direction and the spin offset. Throws Error(invalid_input) naming the input.
-void validate_gap_input(const ContactInput& in, size_t n);
 
 // Diagnostics of the last solve.
 struct GapSolveInfo {

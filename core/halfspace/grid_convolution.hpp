@@ -26,6 +26,12 @@
 
 namespace creepwork {
 
+// Largest grid per direction of the problems solved on the half-space (the
+// exact model's, any gap grid's): memory grows with the square, about 2 kB
+// per element for the exact model with all levels and the Krylov basis, most
+// of it in the FFT arrays of the 4x larger padded grid.
+constexpr int kMaxExactCells = 256;
+
 // The products a convolution serves; only their spectra are computed.
 enum class ConvolutionUse { both, normal, tangential };
 

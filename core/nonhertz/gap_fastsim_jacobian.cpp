@@ -9,7 +9,7 @@
 #include "contact/jacobian_load.hpp"
 #include "nonhertz/gap_fastsim_model.hpp"
 #include "nonhertz/gap_march_tangent.hpp"
-#include "nonhertz/pressure_by_load.hpp"
+#include "normal/pressure_by_load.hpp"
 
 namespace creepwork {
 

@@ -9,7 +9,7 @@
 #include "contact/kalker_coefficients.hpp"
 #include "contact/number_text.hpp"
 #include "exact/exact_work.hpp"
-#include "exact/gap_model.hpp"
+#include "normal/gap_grid.hpp"
 #include "simd/kernel_isa.hpp"
 #include "simd/simd.hpp"
 

@@ -5,14 +5,14 @@
 // One solve:
 //  1. the normal problem on the gap, with the normal force or the approach
 //     prescribed, by the method normal_method names: the semi-Hertzian
-//     method (nonhertz/semi_hertz.hpp; the fast path, its cost measured in
+//     method (normal/semi_hertz.hpp; the fast path, its cost measured in
 //     doc/validation/non-hertzian.md),
-//     or the exact half-space problem (exact/normal_problem.hpp, started from
+//     or the exact half-space problem (normal/normal_problem.hpp, started from
 //     the semi-Hertzian pressure; as the exact model's, so that FASTSIM's
 //     tangential part can be judged on the exact pressure). normal_method's
 //     default is exact, as for the exact model: the same input describes the
 //     same contact whichever model solves it;
-//  2. the separate patches (4-connected, nonhertz/patches.hpp), and per
+//  2. the separate patches (4-connected, normal/patches.hpp), and per
 //     patch Kalker's flexibilities L1, L2, L3 of its "patch ellipse": a =
 //     half the patch's largest row length along x, b = its area / (pi a),
 //     from G and nu (kalker_flexibilities). Measured against the exact model
@@ -49,10 +49,10 @@
 #include "contact/params.hpp"
 #include "contact_model.hpp"
 #include "halfspace/grid_convolution.hpp"
-#include "exact/normal_problem.hpp"
+#include "normal/normal_problem.hpp"
 #include "nonhertz/gap_march.hpp"
-#include "nonhertz/patches.hpp"
-#include "nonhertz/semi_hertz.hpp"
+#include "normal/patches.hpp"
+#include "normal/semi_hertz.hpp"
 
 namespace creepwork {
 

@@ -20,9 +20,9 @@
 #include "contact/hertz.hpp"
 #include "halfspace/exact_geometry.hpp"
 #include "halfspace/grid_convolution.hpp"
-#include "exact/normal_problem.hpp"
-#include "nonhertz/patches.hpp"
-#include "nonhertz/semi_hertz.hpp"
+#include "normal/normal_problem.hpp"
+#include "normal/patches.hpp"
+#include "normal/semi_hertz.hpp"
 
 namespace cw = creepwork;
 

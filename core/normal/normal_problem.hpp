@@ -6,7 +6,7 @@
 // with either the normal force prescribed, dx dy sum pn = N (pen unknown),
 // or the approach pen prescribed. Two gaps:
 //  - solve(): the Hertzian gap h = A x^2 + B y^2 of the semi-axes a, b
-//    (hertz.hpp), force prescribed. Normalised: lengths in units of dx,
+//    (contact/hertz.hpp), force prescribed. Normalised: lengths in units of dx,
 //    pressures in units of the Hertz maximum p0 = 3N/(2 pi a b), gaps in
 //    units of p0 dx / G. Then q = pn/p0 depends only on the grid and a/b
 //    (nu enters as a common factor 1 - nu), so one solution serves every N,

@@ -1,4 +1,4 @@
-#include "nonhertz/patches.hpp"
+#include "normal/patches.hpp"
 
 #include <algorithm>
 #include <cstddef>

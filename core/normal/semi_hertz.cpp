@@ -1,4 +1,4 @@
-#include "nonhertz/semi_hertz.hpp"
+#include "normal/semi_hertz.hpp"
 
 #include <algorithm>
 #include <cmath>

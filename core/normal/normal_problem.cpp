@@ -1,4 +1,4 @@
-#include "exact/normal_problem.hpp"
+#include "normal/normal_problem.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -9,7 +9,7 @@
 // differentiating p = N p(d) / F(d) along F(d(N)) = N gives the same
 // (dp/dd) / (dF/dd). The ratio does not depend on the scale of p, so the
 // scaled pressure serves.
-#include "nonhertz/semi_hertz.hpp"
+#include "normal/semi_hertz.hpp"
 
 #include <cstddef>
 

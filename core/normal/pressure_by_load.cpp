@@ -1,4 +1,4 @@
-#include "nonhertz/pressure_by_load.hpp"
+#include "normal/pressure_by_load.hpp"
 
 #include "contact/error.hpp"
 

@@ -10,8 +10,8 @@
 
 #include "contact/params.hpp"
 #include "halfspace/grid_convolution.hpp"
-#include "exact/normal_problem.hpp"
-#include "nonhertz/semi_hertz.hpp"
+#include "normal/normal_problem.hpp"
+#include "normal/semi_hertz.hpp"
 
 namespace creepwork {
 

@@ -1,0 +1,27 @@
+// The gap grid: the regular grid of cells on which the caller gives a
+// contact of any shape by its undeformed distance (the gap), and what every
+// model on it needs of its input. Checked here once for the normal problem
+// and both tangential models.
+#pragma once
+
+#include <cstddef>
+
+#include "contact/params.hpp"
+
+namespace creepwork {
+
+// Smallest gap grid per direction (the semi-Hertzian method fits curvatures
+// over three cells).
+constexpr int kMinGapCells = 3;
+
+// The grid of a model on a gap grid, checked before anything is allocated
+// for it: throws Error(invalid_input) unless grid.kind is gap with finite
+// origin and positive spacing, Error(grid_out_of_range) outside
+// kMinGapCells ... kMaxExactCells cells per direction.
+const GridSpec& checked_gap_grid(const GridSpec& grid);
+// What every model on a gap grid needs of its input (n elements): the gap,
+// the load, the normal method, mu, G, nu, the creepages, the rolling
+// direction and the spin offset. Throws Error(invalid_input) naming the input.
+void validate_gap_input(const ContactInput& in, size_t n);
+
+} // namespace creepwork
