@@ -14,6 +14,7 @@ void GapModel::export_field(Field f, const Op& op, double* out) const
     const auto& q = traction_;
     const auto& sl = slip_;
     const auto& state = state_;
+    const std::vector<double>& pressure = normal_.pressure();
     const double d = s.direction, T = s.traction_scale, area = grid_.dx * grid_.dy;
     for (int j = 0; j < ny_; ++j) {
         const double y = grid_.y0 + j * grid_.dy;
@@ -27,7 +28,7 @@ void GapModel::export_field(Field f, const Op& op, double* out) const
             case Field::x: v = x; break;
             case Field::y: v = y; break;
             case Field::area: v = state[k] != 0 ? area : 0.0; break;
-            case Field::pz: v = pressure_[k]; break;
+            case Field::pz: v = pressure[k]; break;
             case Field::px: v = px; break;
             case Field::py: v = py; break;
             case Field::sx: v = slips ? d * s.slip_scale * sl[k].real() : 0.0; break;

@@ -9,7 +9,7 @@
 //
 // N: the column is d/dN along the solution, whether the force or the
 // approach is prescribed. The normal method gives dp/dN per element
-// (normal/pressure_by_load.hpp: the exact normal problem linearised at its
+// (normal/gap_normal.hpp: the exact normal problem linearised at its
 // contact set, or the semi-Hertzian closed form). The normalisation T is
 // held fixed (any constant scale describes the same discrete problem; p_ref,
 // the largest pressure, moves with N but only rescales the unknowns), so the
@@ -20,7 +20,6 @@
 
 #include "contact/jacobian_load.hpp"
 #include "exact/gap_model.hpp"
-#include "normal/pressure_by_load.hpp"
 
 namespace creepwork {
 namespace {
@@ -40,8 +39,7 @@ SolveTotals GapModel::solve_jacobian(const ContactInput& in, SolveMode mode, Jac
     const Setup& s = setup_;
     const double tolerance = in.tolerance > 0.0 ? in.tolerance : kExactDefaultTolerance;
     const size_t nb = static_cast<size_t>(fine.nx) * fine.ny;
-    pressure_by_load(in.normal_method, normal_, normal_conv_, semi_hertz_, pressure_.data(),
-                     static_cast<size_t>(nx_) * ny_, grid_.dx, grid_.dy, dp_dN_.data());
+    normal_.load_derivative(dp_dN_.data());
     tangent_w_.resize(nb);
     dg_.resize(nb);
     for (int j = 0; j < fine.ny; ++j)

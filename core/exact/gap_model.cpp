@@ -18,14 +18,6 @@ namespace {
 constexpr int kKrylovDimension = 40;
 constexpr int kMinCoarseCells = 10;
 constexpr double kCoarseTolerance = 1e-1;
-constexpr double kNormalTolerance = 1e-10;
-// The normal problem's passes that still change the contact set are solved
-// to this only (NormalProblem::solve_gap). Conjugate-gradient iterations
-// from the semi-Hertzian start, N07_wide / N04_crescent: 39 / 37 at 1e-10
-// throughout, 25 / 26 at 1e-6, 17 / 20 at 1e-4, 24 / 15 at 1e-3, 31 / 21
-// at 1e-2.
-constexpr double kNormalFirstTolerance = 1e-4;
-constexpr int kNormalMaxIterations = 500;
 constexpr double kMaxNormalisedCreepage = 1e100;
 
 } // namespace
@@ -38,11 +30,8 @@ GapModel::Level::Level(int nx_, int ny_)
 
 GapModel::GapModel(const GridSpec& grid)
     : grid_(checked_gap_grid(grid)), nx_(grid.nx), ny_(grid.ny),
-      normal_conv_(grid.nx, grid.ny, ConvolutionUse::normal),
-      normal_box_conv_(grid.nx, grid.ny, ConvolutionUse::normal), normal_(grid.nx, grid.ny),
-      semi_hertz_(grid.nx, grid.ny), labels_(grid.nx, grid.ny)
+      normal_(grid, GapNormalOptions{true, true}), labels_(grid.nx, grid.ny)
 {
-    normal_.set_box_convolution(&normal_box_conv_);
     int nx = nx_, ny = ny_;
     levels_.push_back(std::make_unique<Level>(nx, ny));
     while ((nx + 1) / 2 >= kMinCoarseCells && (ny + 1) / 2 >= kMinCoarseCells) {
@@ -55,8 +44,7 @@ GapModel::GapModel(const GridSpec& grid)
     dp_dN_.assign(n, 0.0);
     dg_.assign(n, 0.0);
     state_.assign(n, 0);
-    for (auto* v : {&gap_, &gap_in_dx_, &pressure_, &start_, &held_gap_, &paper_, &consistent_})
-        v->assign(n, 0.0);
+    for (auto* v : {&paper_, &consistent_}) v->assign(n, 0.0);
     in_contact_.assign(n, 0);
     history_.resize(n);
     for (auto* v : {&profile_, &row_d_, &row_pool_}) v->assign(ny_, 0.0);
@@ -69,9 +57,7 @@ GapModel::~GapModel() = default;
 
 void GapModel::set_kernel_isa(KernelIsa isa)
 {
-    semi_hertz_.set_kernel_isa(isa);
-    normal_conv_.set_kernel_isa(isa);
-    normal_box_conv_.set_kernel_isa(isa);
+    normal_.set_kernel_isa(isa);
     for (auto& L : levels_) L->conv.set_kernel_isa(isa);
 }
 
@@ -87,7 +73,7 @@ void GapModel::validate(const ContactInput& in) const
         throw Error(ErrorKind::invalid_input,
                     "flexibility = given is invalid for model = exact: the exact theory needs "
                     "the material (G, nu), not L1, L2, L3");
-    validate_gap_input(in, static_cast<size_t>(nx_) * ny_);
+    validate_gap_input(in, static_cast<size_t>(nx_) * ny_, normal_.kernel_isa());
     require_non_negative("tolerance", in.tolerance);
     if (in.tolerance != 0.0 && !(in.tolerance >= 1e-13 && in.tolerance < 1.0))
         reject_input("tolerance", in.tolerance,
@@ -95,77 +81,6 @@ void GapModel::validate(const ContactInput& in) const
                      "double precision cannot resolve less");
     if (in.max_iterations < 0)
         reject_input("max_iterations", in.max_iterations, "must be >= 0 (0: the model's default)");
-}
-
-bool GapModel::same_normal_problem(const ContactInput& in) const
-{
-    if (!held_.valid || held_.load != in.normal_load || held_.method != in.normal_method ||
-        held_.nu != in.nu || held_.G != in.G || held_.direction != in.rolling_direction)
-        return false;
-    const double value = in.normal_load == NormalLoad::force ? in.normal_force : in.approach;
-    if (held_.value != value) return false;
-    const size_t n = static_cast<size_t>(nx_) * ny_;
-    for (size_t k = 0; k < n; ++k)
-        if (held_gap_[k] != in.gap[k]) return false;
-    return true;
-}
-
-void GapModel::solve_normal(const ContactInput& in, bool warm)
-{
-    const double dx = grid_.dx, dy = grid_.dy;
-    const size_t n = static_cast<size_t>(nx_) * ny_;
-    const bool force = in.normal_load == NormalLoad::force;
-    const double E_star = in.G / (1.0 - in.nu);
-    held_.valid = false;
-    // A start from the last pressure, mirrored if the rolling direction changed.
-    const bool from_last = warm && held_.force > 0.0 && held_.method == NormalMethod::exact;
-    if (from_last)
-        for (int j = 0; j < ny_; ++j)
-            for (int i = 0; i < nx_; ++i)
-                start_[i + nx_ * j] =
-                    pressure_[(held_.direction == setup_.direction ? i : nx_ - 1 - i) + nx_ * j] /
-                    in.G;
-
-    double approach = 0.0, total = 0.0;
-    if (force && in.normal_force == 0.0) {
-        std::fill(pressure_.begin(), pressure_.end(), 0.0);
-        approach = *std::min_element(gap_.begin(), gap_.end()); // the surfaces just touch
-    } else if (in.normal_method == NormalMethod::semi_hertz || !from_last) {
-        const SemiHertzResult r = semi_hertz_.solve(gap_.data(), dx, dy, E_star, force,
-                                                    force ? in.normal_force : in.approach,
-                                                    pressure_.data());
-        info_.semi_hertz_iterations = r.iterations;
-        approach = r.approach;
-        if (in.normal_method == NormalMethod::exact)
-            for (size_t k = 0; k < n; ++k) start_[k] = pressure_[k] / in.G;
-    }
-    if (in.normal_method == NormalMethod::exact && !(force && in.normal_force == 0.0)) {
-        for (size_t k = 0; k < n; ++k) gap_in_dx_[k] = gap_[k] / dx;
-        const double value = force ? in.normal_force / (in.G * dx * dy) : in.approach / dx;
-        const NormalSolveInfo ni =
-            normal_.solve_gap(normal_conv_, gap_in_dx_.data(), start_.data(), force, value,
-                              kNormalTolerance, kNormalMaxIterations, kNormalFirstTolerance);
-        info_.normal_iterations += ni.iterations;
-        if (!ni.converged)
-            throw Error(ErrorKind::not_converged,
-                        "the normal problem on the gap did not converge (residual " +
-                            number_text(ni.residual) + " after " + std::to_string(ni.iterations) +
-                            " iterations)");
-        const std::vector<double>& q = normal_.pressure();
-        for (size_t k = 0; k < n; ++k) pressure_[k] = q[k] * in.G;
-        approach = normal_.approach() * dx;
-    }
-    for (size_t k = 0; k < n; ++k) total += pressure_[k];
-    held_.force = total * dx * dy;
-    held_.approach = approach;
-    held_.load = in.normal_load;
-    held_.method = in.normal_method;
-    held_.value = force ? in.normal_force : in.approach;
-    held_.nu = in.nu;
-    held_.G = in.G;
-    held_.direction = in.rolling_direction;
-    std::copy(in.gap, in.gap + n, held_gap_.begin());
-    held_.valid = true;
 }
 
 void GapModel::set_rigid_slip(Level& L) const
@@ -284,13 +199,14 @@ void GapModel::march_start(Level& L, double nu, double G)
     }
 }
 
-// The smallest box of the grid holding the contact (pressure_ > 0; without
+// The smallest box of the grid holding the contact (pressure > 0; without
 // contact the whole grid), in the rolling frame, is level 0; the coarser
 // levels cover it with half as many cells per direction each while both
 // keep kMinCoarseCells (made ready by the cold start, which alone uses them).
-void GapModel::set_box()
+void GapModel::set_box(const GridConvolution& coefficients)
 {
-    const CellBox box = cell_box(nx_, ny_, [&](std::size_t k) { return pressure_[k] > 0.0; });
+    const std::vector<double>& pressure = normal_.pressure();
+    const CellBox box = cell_box(nx_, ny_, [&](std::size_t k) { return pressure[k] > 0.0; });
     const int i0 = box.i0, j0 = box.j0;
     box_i0_ = i0;
     box_j0_ = j0;
@@ -305,7 +221,7 @@ void GapModel::set_box()
     fine.ny = ny;
     fine.conv.set_size(nx, ny);
     fine.tangential.set_size(nx, ny);
-    fine.conv.copy_coefficients(normal_conv_);
+    fine.conv.copy_coefficients(coefficients);
     fine.dx = grid_.dx;
     fine.dy = grid_.dy;
     n_levels_ = 1;
@@ -351,9 +267,10 @@ void GapModel::scatter_box()
 void GapModel::label_patches(SolveTotals& t)
 {
     // Caller's layout.
+    const std::vector<double>& pressure = normal_.pressure();
     for (int j = 0; j < ny_; ++j)
         for (int i = 0; i < nx_; ++i)
-            in_contact_[i + nx_ * j] = pressure_[caller_index(i) + nx_ * j] > 0.0;
+            in_contact_[i + nx_ * j] = pressure[caller_index(i) + nx_ * j] > 0.0;
     t.n_patches = labels_.label(in_contact_.data());
 }
 
@@ -374,25 +291,24 @@ SolveTotals GapModel::solve(const ContactInput& in, SolveMode mode)
     s.full = mode == SolveMode::full;
     s.G = G;
 
-    normal_conv_.set_coefficients(grid_.dy / grid_.dx, nu);
     Level& fine = *levels_[0];
-    for (int j = 0; j < ny_; ++j)
-        for (int i = 0; i < nx_; ++i) gap_[i + nx_ * j] = in.gap[caller_index(i) + nx_ * j];
-
     const bool warm = in.warm_start && had_previous;
-    if (!(warm && same_normal_problem(in))) solve_normal(in, warm);
-    else info_.normal_reused = true;
+    const GapNormalInfo& ni = normal_.solve(in, warm);
+    info_.normal_iterations = ni.normal_iterations;
+    info_.semi_hertz_iterations = ni.semi_hertz_iterations;
+    info_.normal_reused = ni.reused;
+    const std::vector<double>& pressure = normal_.pressure();
 
     const size_t n = static_cast<size_t>(nx_) * ny_;
     double p_ref = 0.0;
-    for (size_t k = 0; k < n; ++k) p_ref = std::max(p_ref, pressure_[k]);
+    for (size_t k = 0; k < n; ++k) p_ref = std::max(p_ref, pressure[k]);
     const bool loaded = p_ref > 0.0;
     s.loaded = loaded;
     s.p_ref = p_ref;
     s.traction_scale = in.mu * p_ref;
     SolveTotals t;
     label_patches(t);
-    set_box();
+    set_box(normal_.half_space(nu));
 
     // Rigid slip over mu p_max / G (the rigid slip itself without friction
     // or load), scaled down together beyond kMaxNormalisedCreepage.
@@ -419,7 +335,7 @@ SolveTotals GapModel::solve(const ContactInput& in, SolveMode mode)
     std::vector<double>& g = fine.tangential.bound();
     for (int j = 0; j < fine.ny; ++j)
         for (int i = 0; i < fine.nx; ++i) {
-            const double p = pressure_[box_i0_ + i + static_cast<size_t>(nx_) * (box_j0_ + j)];
+            const double p = pressure[box_i0_ + i + static_cast<size_t>(nx_) * (box_j0_ + j)];
             g[i + static_cast<size_t>(fine.nx) * j] = loaded ? p / p_ref : 0.0;
         }
     set_rigid_slip(fine);
@@ -516,8 +432,8 @@ SolveTotals GapModel::solve(const ContactInput& in, SolveMode mode)
             P.Fx += px;
             P.Fy += py;
             P.Mz += x * py - y * px;
-            P.Fn += pressure_[k] * area;
-            P.p_max = std::max(P.p_max, pressure_[k]);
+            P.Fn += pressure[k] * area;
+            P.p_max = std::max(P.p_max, pressure[k]);
             if (first) {
                 x_lo = x_hi = x;
                 y_lo = y_hi = y;
@@ -548,8 +464,11 @@ SolveTotals GapModel::solve(const ContactInput& in, SolveMode mode)
     s.y_mid = first ? 0.0 : 0.5 * (y_lo + y_hi);
     s.half_width = t.b;
     t.p_max = p_ref;
-    t.approach = held_.approach;
-    t.normal_force = held_.force;
+    t.approach = normal_.approach();
+    // The normal force: the pressures summed in the layout's order.
+    double total = 0.0;
+    for (size_t k = 0; k < n; ++k) total += pressure[k];
+    t.normal_force = total * grid_.dx * grid_.dy;
     t.iterations = ti.newton_steps;
     t.residual = ti.residual;
 

@@ -41,11 +41,10 @@
 #include "exact/creepage_history.hpp"
 #include "exact/exact_model.hpp"
 #include "halfspace/grid_convolution.hpp"
-#include "normal/normal_problem.hpp"
 #include "exact/steady_rolling.hpp"
 #include "normal/gap_grid.hpp"
+#include "normal/gap_normal.hpp"
 #include "normal/patches.hpp"
-#include "normal/semi_hertz.hpp"
 
 namespace creepwork {
 
@@ -105,10 +104,10 @@ private:
     template <class Op>
     void export_field(Field f, const Op& op, double* out) const;
     void validate(const ContactInput& in) const;
-    bool same_normal_problem(const ContactInput& in) const;
-    void solve_normal(const ContactInput& in, bool warm);
     void set_rigid_slip(Level& L) const;
-    void set_box(); // the tangential problem's box and levels from pressure_
+    // The tangential problem's box and levels from the pressure; coefficients:
+    // the half-space's for this solve's nu.
+    void set_box(const GridConvolution& coefficients);
     void scatter_box(); // level 0's solution onto the whole grid
     void sample_bound(Level& fine, Level& coarse) const; // fine is only read
     void interpolate(const Level& coarse, Level& fine) const;
@@ -121,10 +120,7 @@ private:
     std::vector<std::unique_ptr<Level>> levels_; // [0]: the contact's box on the caller's grid
     int n_levels_ = 1;                            // those of the contact's box
     int box_i0_ = 0, box_j0_ = 0;                 // its first element (rolling frame)
-    GridConvolution normal_conv_;                 // the whole grid: the normal problem
-    GridConvolution normal_box_conv_;             // its products on the contact set's box
-    NormalProblem normal_;
-    SemiHertz semi_hertz_;
+    GapNormal normal_;                            // the normal problem (rolling frame)
     PatchLabels labels_;
     GapSolveInfo info_;
     bool has_previous_ = false;
@@ -141,17 +137,6 @@ private:
         double y_mid = 0, half_width = 0;       // lateral centre and half extent of the contact [m]
         bool full = false, loaded = false;
     } setup_;
-    // The normal problem held: its gap (rolling frame, in dx), load and
-    // material, and the pressure it gave [Pa] (rolling frame).
-    struct NormalHeld {
-        bool valid = false;
-        NormalLoad load = NormalLoad::force;
-        NormalMethod method = NormalMethod::exact;
-        double value = 0, nu = 0, G = 0;
-        int direction = 1;
-        double approach = 0, force = 0;
-    } held_;
-    std::vector<double> gap_, gap_in_dx_, pressure_, start_, held_gap_;
     // The tangential solution on the whole grid (rolling frame): traction,
     // slip, rigid slip and element states (zero outside the box).
     std::vector<SteadyRolling::Complex> traction_, slip_, rigid_;

@@ -12,6 +12,7 @@ template <class Op>
 void GapFastsimModel::export_field(Field f, const Op& op, double* out) const
 {
     const double d = direction_, area = grid_.dx * grid_.dy;
+    const std::vector<double>& pressure = normal_.pressure();
     for (int j = 0; j < ny_; ++j) {
         const double y = grid_.y0 + j * grid_.dy;
         for (int i = 0; i < nx_; ++i) {
@@ -23,7 +24,7 @@ void GapFastsimModel::export_field(Field f, const Op& op, double* out) const
             case Field::x: v = x; break;
             case Field::y: v = y; break;
             case Field::area: v = state_[k] != 0 ? area : 0.0; break;
-            case Field::pz: v = pressure_[k]; break;
+            case Field::pz: v = pressure[k]; break;
             case Field::px: v = px; break;
             case Field::py: v = py; break;
             case Field::sx: v = d * slip_[k].real(); break; // zero unless slipping

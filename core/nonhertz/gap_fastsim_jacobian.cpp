@@ -1,7 +1,7 @@
 // FASTSIM's Jacobian on a gap grid: the march of the solve again in forward
 // mode (gap_march_tangent.hpp) with the solve's pressure, patches,
 // flexibilities and spin centres, and the normal method's dp/dN
-// (pressure_by_load.hpp) in the N column: d/dN along the solution, whether
+// (normal/gap_normal.hpp) in the N column: d/dN along the solution, whether
 // the force or the approach is prescribed. Held fixed: the contact set, the
 // patches and so their flexibilities and spin centres (they change only
 // where an element enters or leaves contact).
@@ -9,7 +9,6 @@
 #include "contact/jacobian_load.hpp"
 #include "nonhertz/gap_fastsim_model.hpp"
 #include "nonhertz/gap_march_tangent.hpp"
-#include "normal/pressure_by_load.hpp"
 
 namespace creepwork {
 
@@ -18,8 +17,7 @@ SolveTotals GapFastsimModel::solve_jacobian(const ContactInput& in, SolveMode mo
     const SolveTotals t = solve(in, mode);
     if (gap_jacobian_is_zero(in, t.n_contact, J)) return t;
     Jacobian out;
-    pressure_by_load(in.normal_method, *normal_, *conv_, semi_hertz_, pressure_.data(),
-                     static_cast<size_t>(nx_) * ny_, grid_.dx, grid_.dy, dp_dN_.data());
+    normal_.load_derivative(dp_dN_.data());
 
     // The march's input as solve() gives it (rolling frame).
     const double d = direction_;

@@ -10,43 +10,20 @@
 #include "contact/number_text.hpp"
 #include "exact/exact_work.hpp"
 #include "normal/gap_grid.hpp"
-#include "simd/kernel_isa.hpp"
-#include "simd/simd.hpp"
 
 namespace creepwork {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-// The exact normal problem's, as the exact model's (gap_model.cpp).
-constexpr double kNormalTolerance = 1e-10;
-constexpr double kNormalFirstTolerance = 1e-4;
-constexpr int kNormalMaxIterations = 500;
-
-// Whether every one of n values lies within [-1, 1] (false for NaN and
-// infinities too), by a branch-free pass: a select per value, so that the
-// loop vectorises. A kernel of simd/kernel_isa.hpp (W unused: the compiler
-// vectorises the loop for the copy's ISA); a yes or no, the same in every
-// copy.
-struct AllWithinOne : KernelWidths {
-    template <int W>
-    CREEPWORK_INLINE static void run(const double* const& v, const size_t& n, bool* const& yes)
-    {
-        double bad = 0.0;
-        for (size_t k = 0; k < n; ++k) bad = std::fabs(v[k]) <= 1.0 ? bad : 1.0;
-        *yes = bad == 0.0;
-    }
-};
 
 } // namespace
 
 GapFastsimModel::GapFastsimModel(const GridSpec& grid)
-    : grid_(checked_gap_grid(grid)), nx_(grid.nx), ny_(grid.ny), semi_hertz_(grid.nx, grid.ny),
-      conv_(std::make_unique<GridConvolution>(grid.nx, grid.ny)),
-      normal_(std::make_unique<NormalProblem>(grid.nx, grid.ny)), labels_(grid.nx, grid.ny)
+    : grid_(checked_gap_grid(grid)), nx_(grid.nx), ny_(grid.ny),
+      normal_(grid, GapNormalOptions{}), labels_(grid.nx, grid.ny)
 {
     const size_t n = static_cast<size_t>(nx_) * ny_;
-    for (auto* v : {&gap_, &gap_in_dx_, &pressure_, &start_, &paper_, &consistent_, &dp_dN_})
-        v->assign(n, 0.0);
+    for (auto* v : {&paper_, &consistent_, &dp_dN_}) v->assign(n, 0.0);
     for (auto* v : {&p_, &slip_, &rigid_}) v->assign(n, {0.0, 0.0});
     state_.assign(n, 0);
     patch_of_.assign(n, -1);
@@ -69,69 +46,7 @@ void GapFastsimModel::validate(const ContactInput& in) const
         throw Error(ErrorKind::invalid_input,
                     "flexibility = given is invalid on a gap grid: FASTSIM takes each patch's "
                     "flexibilities from the material (G, nu) and the patch's size");
-    // The gap's values by one branch-free pass; validate_gap_input names the
-    // first bad one, and checks the other inputs.
-    const size_t n = static_cast<size_t>(nx_) * ny_;
-    if (!in.gap || in.gap_len < n) validate_gap_input(in, n);
-    bool within = false;
-    run_kernel<AllWithinOne>(isa_, in.gap, n, &within);
-    validate_gap_input(in, within ? 0 : n);
-}
-
-void GapFastsimModel::solve_normal(const ContactInput& in, const double* gap)
-{
-    const size_t n = static_cast<size_t>(nx_) * ny_;
-    const bool force = in.normal_load == NormalLoad::force;
-    const double dx = grid_.dx, dy = grid_.dy;
-    if (force && in.normal_force == 0.0) {
-        std::fill(pressure_.begin(), pressure_.end(), 0.0);
-        approach_ = *std::min_element(gap, gap + n); // the surfaces just touch
-    } else {
-        const SemiHertzResult r = semi_hertz_.solve(
-            gap, dx, dy, in.G / (1.0 - in.nu), force, force ? in.normal_force : in.approach,
-            pressure_.data(), pressure_semi_hertz_);
-        pressure_semi_hertz_ = true;
-        approach_ = r.approach;
-        if (in.normal_method == NormalMethod::exact) {
-            pressure_semi_hertz_ = false; // overwritten below
-            for (size_t k = 0; k < n; ++k) {
-                start_[k] = pressure_[k] / in.G;
-                gap_in_dx_[k] = gap[k] / dx;
-            }
-            conv_->set_coefficients(dy / dx, in.nu);
-            const double value = force ? in.normal_force / (in.G * dx * dy) : in.approach / dx;
-            const NormalSolveInfo ni =
-                normal_->solve_gap(*conv_, gap_in_dx_.data(), start_.data(), force, value,
-                                   kNormalTolerance, kNormalMaxIterations, kNormalFirstTolerance);
-            if (!ni.converged)
-                throw Error(ErrorKind::not_converged,
-                            "the normal problem on the gap did not converge (residual " +
-                                number_text(ni.residual) + " after " +
-                                std::to_string(ni.iterations) + " iterations)");
-            const std::vector<double>& q = normal_->pressure();
-            for (size_t k = 0; k < n; ++k) pressure_[k] = q[k] * in.G;
-            approach_ = normal_->approach() * dx;
-        }
-    }
-    // Row by row, over the semi-Hertzian method's extents (the pressure is
-    // zero elsewhere; all of it when N = 0), in four partial sums
-    // (independent additions).
-    const bool extents = in.normal_method == NormalMethod::semi_hertz;
-    double s0 = 0.0, s1 = 0.0, s2 = 0.0, s3 = 0.0;
-    for (int j = 0; j < ny_; ++j) {
-        int lo = 0, hi = nx_ - 1;
-        if (extents) semi_hertz_.row_extent(j, lo, hi);
-        const double* p = pressure_.data() + static_cast<size_t>(nx_) * j;
-        int i = lo;
-        for (; i + 3 <= hi; i += 4) {
-            s0 += p[i];
-            s1 += p[i + 1];
-            s2 += p[i + 2];
-            s3 += p[i + 3];
-        }
-        for (; i <= hi; ++i) s0 += p[i];
-    }
-    force_ = ((s0 + s1) + (s2 + s3)) * dx * dy;
+    validate_gap_input(in, static_cast<size_t>(nx_) * ny_, normal_.kernel_isa());
 }
 
 // Each patch's "patch ellipse" and its flexibilities, and its spin centre
@@ -191,34 +106,22 @@ SolveTotals GapFastsimModel::solve(const ContactInput& in, SolveMode mode)
     validate(in);
     direction_ = in.rolling_direction;
     full_ = mode == SolveMode::full;
-    // The gap in the rolling frame: the caller's itself (rolling_direction
-    // +1), or its rows reversed into gap_ (-1).
-    if (direction_ < 0)
-        for (int j = 0; j < ny_; ++j) {
-            const double* from = in.gap + static_cast<size_t>(nx_) * j;
-            std::reverse_copy(from, from + nx_, gap_.begin() + static_cast<ptrdiff_t>(nx_) * j);
-        }
-    solve_normal(in, direction_ > 0 ? in.gap : gap_.data());
+    normal_.solve(in, false); // no warm start: every solve from scratch
 
     // The contact's runs, row by row in the caller's layout (the patches'
     // numbering), and the largest pressure.
     SolveTotals t;
     double p_max = 0.0;
     // pz(row, i): element i (caller's layout) of a row in the rolling frame.
-    // The semi-Hertzian method's rows are zero outside their extents: only
-    // those are scanned.
-    const bool extents = in.normal_method == NormalMethod::semi_hertz;
+    // Only the rows' extents are scanned (the pressure is zero elsewhere).
     auto scan = [&](auto pz) {
         labels_.clear_runs();
         for (int j = 0; j < ny_; ++j) {
-            const double* row = pressure_.data() + static_cast<size_t>(nx_) * j;
-            int first = 0, last = nx_ - 1; // caller's layout
-            if (extents) {
-                int lo, hi; // rolling frame
-                semi_hertz_.row_extent(j, lo, hi);
-                first = direction_ > 0 ? lo : nx_ - 1 - hi;
-                last = direction_ > 0 ? hi : nx_ - 1 - lo;
-            }
+            const double* row = normal_.pressure().data() + static_cast<size_t>(nx_) * j;
+            int lo, hi; // rolling frame
+            normal_.row_extent(j, lo, hi);
+            const int first = direction_ > 0 ? lo : nx_ - 1 - hi; // caller's layout
+            const int last = direction_ > 0 ? hi : nx_ - 1 - lo;
             for (int i = first; i <= last; ++i) {
                 if (!(pz(row, i) > 0.0)) continue;
                 const int lo = i;
@@ -288,8 +191,8 @@ SolveTotals GapFastsimModel::solve(const ContactInput& in, SolveMode mode)
     t.b = 0.5 * extent_y_;
     half_width_ = t.b;
     t.p_max = p_max;
-    t.approach = approach_;
-    t.normal_force = force_;
+    t.approach = normal_.approach();
+    t.normal_force = normal_.force();
 
     if (full_) {
         // The march's tractions in Pa and slips as numbers: unit scales.
@@ -324,7 +227,7 @@ GapMarchInput GapFastsimModel::march_input(const ContactInput& in) const
     m.y0 = grid_.y0;
     m.dx = grid_.dx;
     m.dy = grid_.dy;
-    m.pressure = pressure_.data();
+    m.pressure = normal_.pressure().data();
     m.patch = patch_of_.data();
     m.patches = march_patches_.data();
     m.mu = in.mu;

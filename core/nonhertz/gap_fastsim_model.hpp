@@ -48,11 +48,9 @@
 #include "contact/fields.hpp"
 #include "contact/params.hpp"
 #include "contact_model.hpp"
-#include "halfspace/grid_convolution.hpp"
-#include "normal/normal_problem.hpp"
 #include "nonhertz/gap_march.hpp"
+#include "normal/gap_normal.hpp"
 #include "normal/patches.hpp"
-#include "normal/semi_hertz.hpp"
 
 namespace creepwork {
 
@@ -77,12 +75,7 @@ public:
     void copy_profile(double W, double* y, double* work, double* parabola) const override;
     const std::vector<PatchTotals>* patches() const override { return &patches_; }
     // The kernels' ISA (every ISA gives the same bits).
-    void set_kernel_isa(KernelIsa isa) override
-    {
-        isa_ = isa;
-        semi_hertz_.set_kernel_isa(isa);
-        conv_->set_kernel_isa(isa);
-    }
+    void set_kernel_isa(KernelIsa isa) override { normal_.set_kernel_isa(isa); }
     // The flexibilities and spin centres (rolling frame) of the last solve's
     // patches, in the order of patches().
     const std::vector<GapMarchPatch>& march_patches() const { return march_patches_; }
@@ -91,8 +84,6 @@ private:
     template <class Op>
     void export_field(Field f, const Op& op, double* out) const;
     void validate(const ContactInput& in) const;
-    // gap: in the rolling frame (the caller's, or its rows reversed in gap_).
-    void solve_normal(const ContactInput& in, const double* gap);
     void set_patches(const ContactInput& in);
     // The march's input for the last solve's pressure and patches (rolling frame).
     GapMarchInput march_input(const ContactInput& in) const;
@@ -100,24 +91,18 @@ private:
 
     GridSpec grid_;
     int nx_, ny_;
-    SemiHertz semi_hertz_;
-    std::unique_ptr<GridConvolution> conv_; // the exact normal problem's
-    std::unique_ptr<NormalProblem> normal_;
+    GapNormal normal_; // the normal problem (rolling frame)
     PatchLabels labels_;
 
     // The last solve: rolling direction, spin offset, mode, extent.
     int direction_ = 1;
     bool full_ = false;
-    KernelIsa isa_ = best_kernel_isa(); // the gap check's and the semi-Hertzian method's
-    double approach_ = 0, force_ = 0, y_mid_ = 0, half_width_ = 0, extent_x_ = 0, extent_y_ = 0;
+    double y_mid_ = 0, half_width_ = 0, extent_x_ = 0, extent_y_ = 0;
     // Per element, rolling frame [i + nx j].
-    std::vector<double> gap_, gap_in_dx_, pressure_, start_, paper_, consistent_;
+    std::vector<double> paper_, consistent_;
     std::vector<std::complex<double>> p_, slip_, rigid_;
     std::vector<signed char> state_;
     std::vector<int> patch_of_; // on the contact's elements alone
-    // pressure_ is zero outside the semi-Hertzian method's last extents (it
-    // holds that method's pressure, or zeros).
-    bool pressure_semi_hertz_ = false;
     // Per patch (reserved for the most patches a grid can hold).
     std::vector<GapMarchPatch> march_patches_;
     std::vector<GapMarchTotals> march_totals_;

@@ -7,6 +7,7 @@
 #include <cstddef>
 
 #include "contact/params.hpp"
+#include "simd/kernel_isa.hpp"
 
 namespace creepwork {
 
@@ -21,7 +22,9 @@ constexpr int kMinGapCells = 3;
 const GridSpec& checked_gap_grid(const GridSpec& grid);
 // What every model on a gap grid needs of its input (n elements): the gap,
 // the load, the normal method, mu, G, nu, the creepages, the rolling
-// direction and the spin offset. Throws Error(invalid_input) naming the input.
-void validate_gap_input(const ContactInput& in, size_t n);
+// direction and the spin offset. Throws Error(invalid_input) naming the
+// input. isa: the gap check's kernel (one branch-free pass; every ISA gives
+// the same answer).
+void validate_gap_input(const ContactInput& in, size_t n, KernelIsa isa);
 
 } // namespace creepwork
