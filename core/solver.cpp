@@ -44,7 +44,7 @@ Solver::Solver(const GridSpec& grid) : grid_(grid)
     // A gap grid has one model, made now so that its grid is checked at
     // creation; it is not registered by ModelKind (no other model runs there).
     if (gap_grid()) {
-        gap_ = std::make_unique<GapModel>(grid);
+        gap_ = std::make_unique<GapExactModel>(grid);
         last_ = gap_.get();
     }
     one_patch_.reserve(1);

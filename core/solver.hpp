@@ -16,9 +16,9 @@
 #include "contact/params.hpp"
 #include "contact_model.hpp"
 #include "exact/exact_model.hpp"
-#include "exact/gap_model.hpp"
 #include "fastsim/fastsim_model.hpp"
-#include "nonhertz/gap_fastsim_model.hpp"
+#include "gap/gap_exact_model.hpp"
+#include "gap/gap_fastsim_model.hpp"
 
 namespace creepwork {
 
@@ -26,7 +26,7 @@ class Solver {
 public:
     // On a gap grid (GridKind::gap) the exact model of any contact shape is
     // made here (the grid's origin and spacing are checked); FASTSIM's model
-    // of any contact shape (nonhertz/gap_fastsim_model.hpp) on first use or
+    // of any contact shape (gap/gap_fastsim_model.hpp) on first use or
     // by prepare(). The calibrated model does not run on a gap grid.
     explicit Solver(const GridSpec& grid);
 
@@ -52,7 +52,7 @@ public:
     // The exact model, if made (diagnostics of its last solve: info()).
     const ExactModel* exact_model() const;
     // On a gap grid: the exact model of any contact shape.
-    const GapModel* gap_model() const { return gap_.get(); }
+    const GapExactModel* gap_model() const { return gap_.get(); }
     // The separate patches of the last solve: on a gap grid each 4-connected
     // patch, otherwise the contact as one patch (none when nothing touches).
     const std::vector<PatchTotals>& patches() const;
@@ -106,7 +106,7 @@ private:
     std::vector<std::pair<ModelKind, std::unique_ptr<ContactModel>>> models_;
     FastsimModel* fastsim_ = nullptr; // models_' FASTSIM: the grid and the default kernel
     ContactModel* last_ = nullptr;    // the model of the last solve (its fields are exported)
-    std::unique_ptr<GapModel> gap_;   // on a gap grid: the exact model
+    std::unique_ptr<GapExactModel> gap_; // on a gap grid: the exact model
     std::unique_ptr<GapFastsimModel> gap_fastsim_; // on a gap grid: FASTSIM, made on first use
     std::vector<PatchTotals> one_patch_; // off a gap grid: the contact, if any
     SolveTotals totals_;

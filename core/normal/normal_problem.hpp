@@ -12,7 +12,7 @@
 //    (nu enters as a common factor 1 - nu), so one solution serves every N,
 //    G and creepage.
 //  - solve_gap(): any gap the caller gives, in units of dx, with q = pn / G,
-//    force or approach prescribed (non-Hertzian contact, gap_model.hpp).
+//    force or approach prescribed (contacts of any shape, gap_normal.hpp).
 //
 // Method: an active-set iteration whose linear problems (a symmetric
 // positive definite system on the contact set with the force as a linear

@@ -2,9 +2,9 @@
 // (i, j) of the caller's layout [i + nx j] is element (i', j) of the rolling
 // frame with i' = i, or i' = nx - 1 - i when rolling towards -x (then the x
 // parts of tractions and slips change sign), as the exact gap model's
-// (exact/gap_fields.cpp). The moment is about the grid's origin.
+// (gap/gap_exact_fields.cpp). The moment is about the grid's origin.
 #include "exact/exact_work.hpp"
-#include "nonhertz/gap_fastsim_model.hpp"
+#include "gap/gap_fastsim_model.hpp"
 
 namespace creepwork {
 

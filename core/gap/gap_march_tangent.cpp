@@ -1,4 +1,4 @@
-#include "nonhertz/gap_march_tangent.hpp"
+#include "gap/gap_march_tangent.hpp"
 
 #include <cmath>
 #include <cstddef>

@@ -4,14 +4,13 @@
 //
 // One solve:
 //  1. the normal problem on the gap, with the normal force or the approach
-//     prescribed, by the method normal_method names: the semi-Hertzian
-//     method (normal/semi_hertz.hpp; the fast path, its cost measured in
-//     doc/validation/non-hertzian.md),
-//     or the exact half-space problem (normal/normal_problem.hpp, started from
-//     the semi-Hertzian pressure; as the exact model's, so that FASTSIM's
-//     tangential part can be judged on the exact pressure). normal_method's
-//     default is exact, as for the exact model: the same input describes the
-//     same contact whichever model solves it;
+//     prescribed, by the method normal_method names (normal/gap_normal.hpp):
+//     the semi-Hertzian method (the fast path, its cost measured in
+//     doc/validation/non-hertzian.md), or the exact half-space problem (as
+//     the exact model's, so that FASTSIM's tangential part can be judged on
+//     the exact pressure). normal_method's default is exact, as for the
+//     exact model: the same input describes the same contact whichever model
+//     solves it. Each solve starts afresh (no warm start);
 //  2. the separate patches (4-connected, normal/patches.hpp), and per
 //     patch Kalker's flexibilities L1, L2, L3 of its "patch ellipse": a =
 //     half the patch's largest row length along x, b = its area / (pi a),
@@ -22,7 +21,7 @@
 //     its flexibility follows its own size, and two patches far apart do not
 //     share one;
 //  3. the march of every contact segment of every row from its own leading
-//     edge (nonhertz/gap_march.hpp), traction bound mu pz, with the rigid
+//     edge (gap/gap_march.hpp), traction bound mu pz, with the rigid
 //     slip split per patch into the patch's creepage (over L1, L2) and a
 //     spin about the patch's centroid (over L3): Kalker's L3 is the
 //     flexibility of a rotation about the ellipse's centre, and the spin
@@ -48,7 +47,7 @@
 #include "contact/fields.hpp"
 #include "contact/params.hpp"
 #include "contact_model.hpp"
-#include "nonhertz/gap_march.hpp"
+#include "gap/gap_march.hpp"
 #include "normal/gap_normal.hpp"
 #include "normal/patches.hpp"
 
@@ -56,7 +55,7 @@ namespace creepwork {
 
 class GapFastsimModel : public ContactModel {
 public:
-    // Throws as GapModel's constructor (the same grid checks).
+    // Throws as GapExactModel's constructor (the same grid checks).
     explicit GapFastsimModel(const GridSpec& grid);
 
     // Throws Error naming a bad input, or Error(not_converged) from the

@@ -5,11 +5,10 @@
 // coefficient table -- then solve() many times without allocating.
 //
 // One solve:
-//  1. the normal problem on the gap (normal_problem.hpp, solve_gap), with the
-//     normal force or the approach prescribed, started from the last solution
-//     or from the semi-Hertzian method (normal/semi_hertz.hpp); or, with
-//     NormalMethod::semi_hertz, that method alone;
-//  2. the tangential problem of steady rolling (steady_rolling.hpp) with the
+//  1. the normal problem on the gap by the method the input names
+//     (normal/gap_normal.hpp), with the normal force or the approach
+//     prescribed; warm solves start it from the last solution;
+//  2. the tangential problem of steady rolling (exact/steady_rolling.hpp) with the
 //     rigid slip w = (xi - phi y, eta + phi (x + spin_offset dx)) at the
 //     element centres, x and y from the grid's origin; every patch of the
 //     grid at once, on the smallest box of the grid that holds the contact
@@ -17,7 +16,7 @@
 //     only on the offset: the same discrete problem on fewer elements, with
 //     FFTs of the box's size);
 //  3. the separate patches (normal/patches.hpp) and their totals, and in
-//     full mode the work maps (exact_work.hpp).
+//     full mode the work maps (exact/exact_work.hpp).
 // The tangential problem starts from the last solution (warm) or from a
 // hierarchy of coarser grids over the contact's box, each solved from the one
 // below it, the coarsest from a march of Kalker's simplified theory with the
@@ -49,7 +48,7 @@
 namespace creepwork {
 
 // Diagnostics of the last solve.
-struct GapSolveInfo {
+struct GapExactSolveInfo {
     int levels_used = 0;           // grids of the tangential solve (1 for a warm start)
     int newton_steps = 0;          // on the finest grid
     int products = 0;              // FFT products of the tangential solve, all grids
@@ -60,23 +59,23 @@ struct GapSolveInfo {
     bool retried_cold = false;
 };
 
-class GapModel : public ContactModel {
+class GapExactModel : public ContactModel {
 public:
     // Throws Error(invalid_input) unless grid.kind is gap with finite origin
     // and positive spacing, Error(grid_out_of_range) outside 3 ...
     // kMaxExactCells cells per direction.
-    explicit GapModel(const GridSpec& grid);
-    ~GapModel() override;
+    explicit GapExactModel(const GridSpec& grid);
+    ~GapExactModel() override;
 
     // Throws Error naming a bad input, or Error(not_converged).
     SolveTotals solve(const ContactInput& input, SolveMode mode) override;
-    // The solve and its Jacobian (gap_jacobian.cpp): derivatives of the
+    // The solve and its Jacobian (gap_exact_jacobian.cpp): derivatives of the
     // converged discrete system. Throws as solve(), and Error(invalid_input)
     // for normal_force = 0 (or an approach without contact) when mu > 0.
     SolveTotals solve_jacobian(const ContactInput& input, SolveMode mode,
                                Jacobian& jacobian) override;
 
-    const GapSolveInfo& info() const { return info_; }
+    const GapExactSolveInfo& info() const { return info_; }
 
     // The exports of ContactModel; the profile's parabola spans the
     // contact's lateral extent (centred on it), positions are the grid's.
@@ -122,7 +121,7 @@ private:
     int box_i0_ = 0, box_j0_ = 0;                 // its first element (rolling frame)
     GapNormal normal_;                            // the normal problem (rolling frame)
     PatchLabels labels_;
-    GapSolveInfo info_;
+    GapExactSolveInfo info_;
     bool has_previous_ = false;
 
     // The last solve (rolling frame).

@@ -7,8 +7,8 @@
 // where an element enters or leaves contact).
 
 #include "contact/jacobian_load.hpp"
-#include "nonhertz/gap_fastsim_model.hpp"
-#include "nonhertz/gap_march_tangent.hpp"
+#include "gap/gap_fastsim_model.hpp"
+#include "gap/gap_march_tangent.hpp"
 
 namespace creepwork {
 

@@ -1,4 +1,4 @@
-#include "exact/gap_model.hpp"
+#include "gap/gap_exact_model.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -22,13 +22,13 @@ constexpr double kMaxNormalisedCreepage = 1e100;
 
 } // namespace
 
-GapModel::Level::Level(int nx_, int ny_)
+GapExactModel::Level::Level(int nx_, int ny_)
     : nx(nx_), ny(ny_), conv(nx_, ny_, ConvolutionUse::tangential),
       tangential(nx_, ny_, kKrylovDimension)
 {
 }
 
-GapModel::GapModel(const GridSpec& grid)
+GapExactModel::GapExactModel(const GridSpec& grid)
     : grid_(checked_gap_grid(grid)), nx_(grid.nx), ny_(grid.ny),
       normal_(grid, GapNormalOptions{true, true}), labels_(grid.nx, grid.ny)
 {
@@ -53,15 +53,15 @@ GapModel::GapModel(const GridSpec& grid)
     patches_.reserve(n / 2 + 1);
 }
 
-GapModel::~GapModel() = default;
+GapExactModel::~GapExactModel() = default;
 
-void GapModel::set_kernel_isa(KernelIsa isa)
+void GapExactModel::set_kernel_isa(KernelIsa isa)
 {
     normal_.set_kernel_isa(isa);
     for (auto& L : levels_) L->conv.set_kernel_isa(isa);
 }
 
-void GapModel::validate(const ContactInput& in) const
+void GapExactModel::validate(const ContactInput& in) const
 {
     if (in.model != ModelKind::exact)
         throw Error(ErrorKind::invalid_input,
@@ -83,7 +83,7 @@ void GapModel::validate(const ContactInput& in) const
         reject_input("max_iterations", in.max_iterations, "must be >= 0 (0: the model's default)");
 }
 
-void GapModel::set_rigid_slip(Level& L) const
+void GapExactModel::set_rigid_slip(Level& L) const
 {
     // w = (xi - phi y, eta + phi (x + spin_offset dx)) at element centres, in
     // units of mu p_max / G (setup_: already divided), rolling frame.
@@ -99,7 +99,7 @@ void GapModel::set_rigid_slip(Level& L) const
 }
 
 // Bilinear interpolation of the fine bound at the coarse element centres.
-void GapModel::sample_bound(Level& F, Level& C) const
+void GapExactModel::sample_bound(Level& F, Level& C) const
 {
     const std::vector<double>& gf = F.tangential.bound();
     std::vector<double>& gc = C.tangential.bound();
@@ -121,7 +121,7 @@ void GapModel::sample_bound(Level& F, Level& C) const
 
 // Bilinear interpolation of the coarse traction at the fine element centres
 // (clipped to the fine bound by the fine solver).
-void GapModel::interpolate(const Level& C, Level& F) const
+void GapExactModel::interpolate(const Level& C, Level& F) const
 {
     const std::vector<SteadyRolling::Complex>& qc = C.tangential.traction();
     std::vector<SteadyRolling::Complex>& qf = F.tangential.traction();
@@ -150,7 +150,7 @@ void GapModel::interpolate(const Level& C, Level& F) const
 // contact, with the flexibilities of one ellipse: the patches' equivalent
 // ellipses (semi-axes twice the root-mean-square extent of their elements)
 // averaged by area.
-void GapModel::march_start(Level& L, double nu, double G)
+void GapExactModel::march_start(Level& L, double nu, double G)
 {
     const int count = labels_.count();
     double a = 0.0, b = 0.0, weight = 0.0;
@@ -203,7 +203,7 @@ void GapModel::march_start(Level& L, double nu, double G)
 // contact the whole grid), in the rolling frame, is level 0; the coarser
 // levels cover it with half as many cells per direction each while both
 // keep kMinCoarseCells (made ready by the cold start, which alone uses them).
-void GapModel::set_box(const GridConvolution& coefficients)
+void GapExactModel::set_box(const GridConvolution& coefficients)
 {
     const std::vector<double>& pressure = normal_.pressure();
     const CellBox box = cell_box(nx_, ny_, [&](std::size_t k) { return pressure[k] > 0.0; });
@@ -242,7 +242,7 @@ void GapModel::set_box(const GridConvolution& coefficients)
     }
 }
 
-void GapModel::scatter_box()
+void GapExactModel::scatter_box()
 {
     Level& F = *levels_[0];
     std::fill(traction_.begin(), traction_.end(), 0.0);
@@ -264,7 +264,7 @@ void GapModel::scatter_box()
         }
 }
 
-void GapModel::label_patches(SolveTotals& t)
+void GapExactModel::label_patches(SolveTotals& t)
 {
     // Caller's layout.
     const std::vector<double>& pressure = normal_.pressure();
@@ -274,11 +274,11 @@ void GapModel::label_patches(SolveTotals& t)
     t.n_patches = labels_.label(in_contact_.data());
 }
 
-SolveTotals GapModel::solve(const ContactInput& in, SolveMode mode)
+SolveTotals GapExactModel::solve(const ContactInput& in, SolveMode mode)
 {
     const bool had_previous = has_previous_;
     has_previous_ = false; // until this solve succeeds
-    info_ = GapSolveInfo{};
+    info_ = GapExactSolveInfo{};
     validate(in);
     const double tolerance = in.tolerance > 0.0 ? in.tolerance : kExactDefaultTolerance;
     const int max_steps = in.max_iterations > 0 ? in.max_iterations : kExactDefaultMaxIterations;

@@ -1,4 +1,4 @@
-#include "nonhertz/gap_fastsim_model.hpp"
+#include "gap/gap_fastsim_model.hpp"
 
 #include <algorithm>
 #include <cmath>

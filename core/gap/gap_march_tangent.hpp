@@ -11,7 +11,7 @@
 // fixed. An element exactly on the bound takes the state the march found.
 #pragma once
 
-#include "nonhertz/gap_march.hpp"
+#include "gap/gap_march.hpp"
 
 namespace creepwork {
 

@@ -1,4 +1,4 @@
-#include "nonhertz/gap_march.hpp"
+#include "gap/gap_march.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,14 +1,14 @@
-// Field export of the gap model (gap_model.hpp): element (i, j) of the
+// Field export of the exact gap model (gap_exact_model.hpp): element (i, j) of the
 // caller's layout [i + nx j] is element (i', j) of the rolling frame with
 // i' = i, or i' = nx - 1 - i when rolling towards -x (then the x parts of
 // tractions and slips change sign). Positions are the grid's own: x0 + i dx,
 // y0 + j dy; the moment is about the grid's origin.
 #include "exact/exact_work.hpp"
-#include "exact/gap_model.hpp"
+#include "gap/gap_exact_model.hpp"
 
 namespace creepwork {
 template <class Op>
-void GapModel::export_field(Field f, const Op& op, double* out) const
+void GapExactModel::export_field(Field f, const Op& op, double* out) const
 {
     const Setup& s = setup_;
     const auto& q = traction_;
@@ -42,20 +42,20 @@ void GapModel::export_field(Field f, const Op& op, double* out) const
     }
 }
 
-void GapModel::copy_field(Field f, double* out) const { export_field(f, StoreField{}, out); }
+void GapExactModel::copy_field(Field f, double* out) const { export_field(f, StoreField{}, out); }
 
-void GapModel::add_field(Field f, double scale, double* out) const
+void GapExactModel::add_field(Field f, double scale, double* out) const
 {
     export_field(f, AddScaledField{scale}, out);
 }
 
-void GapModel::copy_state(int* out) const
+void GapExactModel::copy_state(int* out) const
 {
     for (int j = 0; j < ny_; ++j)
         for (int i = 0; i < nx_; ++i) out[i + nx_ * j] = state_[caller_index(i) + nx_ * j];
 }
 
-void GapModel::copy_profile(double W, double* y, double* work, double* parabola) const
+void GapExactModel::copy_profile(double W, double* y, double* work, double* parabola) const
 {
     const double b = setup_.half_width > 0.0 ? setup_.half_width : grid_.dy;
     for (int j = 0; j < ny_; ++j) {
@@ -66,7 +66,7 @@ void GapModel::copy_profile(double W, double* y, double* work, double* parabola)
     }
 }
 
-void GapModel::copy_strips(double* y, double* width) const
+void GapExactModel::copy_strips(double* y, double* width) const
 {
     for (int j = 0; j < ny_; ++j) {
         y[j] = grid_.y0 + j * grid_.dy;

@@ -19,7 +19,7 @@
 // load where no element enters or leaves contact.
 
 #include "contact/jacobian_load.hpp"
-#include "exact/gap_model.hpp"
+#include "gap/gap_exact_model.hpp"
 
 namespace creepwork {
 namespace {
@@ -29,7 +29,7 @@ constexpr int kMaxJacobianIterations = 2000;
 
 } // namespace
 
-SolveTotals GapModel::solve_jacobian(const ContactInput& in, SolveMode mode, Jacobian& J)
+SolveTotals GapExactModel::solve_jacobian(const ContactInput& in, SolveMode mode, Jacobian& J)
 {
     const SolveTotals t = solve(in, mode);
     if (gap_jacobian_is_zero(in, setup_.loaded ? t.n_contact : 0, J)) return t;
