@@ -9,7 +9,7 @@ namespace creepwork {
 namespace {
 
 // The models a solver can make, by ModelKind: a new model is one class
-// implementing ContactModel (contact_model.hpp), one ModelKind value
+// implementing ContactModel (contact/contact_model.hpp), one ModelKind value
 // (contact/params.hpp) and one case here.
 std::unique_ptr<ContactModel> make_model(ModelKind kind, const GridSpec& grid)
 {

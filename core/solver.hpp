@@ -1,5 +1,5 @@
 // The solver object: one per grid, holding the models of the contact
-// (contact_model.hpp; FASTSIM's made with the solver, the others on first
+// (contact/contact_model.hpp; FASTSIM's made with the solver, the others on first
 // use or by prepare()), running each solve on the model the input asks for,
 // and exporting the fields of the last solve in the caller's layout
 // (contact/fields.hpp). The models a solver can make are registered in one
@@ -11,10 +11,10 @@
 #include <vector>
 
 #include "calibrated/calibrated_model.hpp"
+#include "contact/contact_model.hpp"
 #include "contact/fields.hpp"
 #include "contact/jacobian.hpp"
 #include "contact/params.hpp"
-#include "contact_model.hpp"
 #include "exact/exact_model.hpp"
 #include "fastsim/fastsim_model.hpp"
 #include "gap/gap_exact_model.hpp"

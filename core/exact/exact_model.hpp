@@ -27,15 +27,15 @@
 #include <memory>
 #include <vector>
 
+#include "contact/contact_model.hpp"
 #include "contact/fields.hpp"
-#include "contact_model.hpp"
 #include "contact/jacobian.hpp"
 #include "contact/params.hpp"
 #include "exact/creepage_history.hpp"
+#include "exact/steady_rolling.hpp"
 #include "halfspace/exact_geometry.hpp"
 #include "halfspace/grid_convolution.hpp"
 #include "normal/normal_problem.hpp"
-#include "exact/steady_rolling.hpp"
 
 namespace creepwork {
 

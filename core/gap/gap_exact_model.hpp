@@ -34,13 +34,13 @@
 #include <memory>
 #include <vector>
 
+#include "contact/contact_model.hpp"
 #include "contact/fields.hpp"
-#include "contact_model.hpp"
 #include "contact/params.hpp"
 #include "exact/creepage_history.hpp"
 #include "exact/exact_model.hpp"
-#include "halfspace/grid_convolution.hpp"
 #include "exact/steady_rolling.hpp"
+#include "halfspace/grid_convolution.hpp"
 #include "normal/gap_grid.hpp"
 #include "normal/gap_normal.hpp"
 #include "normal/patches.hpp"

@@ -44,9 +44,9 @@
 #include <memory>
 #include <vector>
 
+#include "contact/contact_model.hpp"
 #include "contact/fields.hpp"
 #include "contact/params.hpp"
-#include "contact_model.hpp"
 #include "gap/gap_march.hpp"
 #include "normal/gap_normal.hpp"
 #include "normal/patches.hpp"

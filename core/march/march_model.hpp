@@ -11,13 +11,13 @@
 #pragma once
 
 #include "contact/contact_grid.hpp"
-#include "contact_model.hpp"
-#include "simd/kernel_isa.hpp"
+#include "contact/contact_model.hpp"
 #include "march/march.hpp"
 #include "march/march_geometry.hpp"
 #include "march/march_setup.hpp"
 #include "march/march_step.hpp"
 #include "march/march_work.hpp"
+#include "simd/kernel_isa.hpp"
 
 namespace creepwork {
 

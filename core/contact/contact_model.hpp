@@ -1,6 +1,6 @@
 // The interface every model of the contact implements: how the tangential
-// tractions are found differs (fastsim/, calibrated/, exact/), what a solve
-// returns does not. The solver (solver.hpp) makes each model on first use
+// tractions are found differs (fastsim/, calibrated/, exact/, gap/), what a solve
+// returns does not. The solver (../solver.hpp) makes each model on first use
 // from one registration (make_model in solver.cpp) and holds the one that
 // solved last, whose fields it exports.
 #pragma once
