@@ -42,6 +42,10 @@ public:
     // (those on a gap grid); null otherwise (the solver reports the contact
     // as one patch).
     virtual const std::vector<PatchTotals>* patches() const { return nullptr; }
+    // Per row j < ny of a model whose rows have sizes of their own (those on
+    // a gap grid): centre y [m] and width [m]; false otherwise (the solver
+    // scales its grid's strips by the last solve's semi-axis b).
+    virtual bool copy_strips(double* /*y*/, double* /*width*/) const { return false; }
 
     // The ISA of the model's SIMD kernels (simd/kernel_isa.hpp), supported
     // by this CPU; every ISA gives bitwise the same results. Models without

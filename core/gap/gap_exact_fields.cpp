@@ -66,12 +66,10 @@ void GapExactModel::copy_profile(double W, double* y, double* work, double* para
     }
 }
 
-void GapExactModel::copy_strips(double* y, double* width) const
+bool GapExactModel::copy_strips(double* y, double* width) const
 {
-    for (int j = 0; j < ny_; ++j) {
-        y[j] = grid_.y0 + j * grid_.dy;
-        width[j] = grid_.dy;
-    }
+    copy_gap_rows(grid_, y, width);
+    return true;
 }
 
 } // namespace creepwork

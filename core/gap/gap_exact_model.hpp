@@ -84,7 +84,7 @@ public:
     void copy_state(int* out) const override;
     void copy_profile(double W, double* y, double* work, double* parabola) const override;
     // Per row j < ny: centre y [m] and width dy [m] (the wear's strips).
-    void copy_strips(double* y, double* width) const;
+    bool copy_strips(double* y, double* width) const override;
     // The separate patches of the last solve (4-connected), caller's frame.
     const std::vector<PatchTotals>* patches() const override { return &patches_; }
     // The kernels of the semi-Hertzian start and the FFTs (every ISA gives

@@ -48,6 +48,7 @@
 #include "contact/fields.hpp"
 #include "contact/params.hpp"
 #include "gap/gap_march.hpp"
+#include "normal/gap_grid.hpp"
 #include "normal/gap_normal.hpp"
 #include "normal/patches.hpp"
 
@@ -73,6 +74,12 @@ public:
     void copy_state(int* out) const override;
     void copy_profile(double W, double* y, double* work, double* parabola) const override;
     const std::vector<PatchTotals>* patches() const override { return &patches_; }
+    // Per row j < ny: centre y [m] and width dy [m] (the wear's strips).
+    bool copy_strips(double* y, double* width) const override
+    {
+        copy_gap_rows(grid_, y, width);
+        return true;
+    }
     // The kernels' ISA (every ISA gives the same bits).
     void set_kernel_isa(KernelIsa isa) override { normal_.set_kernel_isa(isa); }
     // The flexibilities and spin centres (rolling frame) of the last solve's

@@ -58,6 +58,14 @@ const GridSpec& checked_gap_grid(const GridSpec& g)
     return g;
 }
 
+void copy_gap_rows(const GridSpec& grid, double* y, double* width)
+{
+    for (int j = 0; j < grid.ny; ++j) {
+        y[j] = grid.y0 + j * grid.dy;
+        width[j] = grid.dy;
+    }
+}
+
 void validate_gap_input(const ContactInput& in, size_t n, KernelIsa isa)
 {
     if (!in.gap)

@@ -20,6 +20,8 @@ constexpr int kMinGapCells = 3;
 // origin and positive spacing, Error(grid_out_of_range) outside
 // kMinGapCells ... kMaxExactCells cells per direction.
 const GridSpec& checked_gap_grid(const GridSpec& grid);
+// Per row j < ny of a gap grid: centre y [m] and width dy [m].
+void copy_gap_rows(const GridSpec& grid, double* y, double* width);
 // What every model on a gap grid needs of its input (n elements): the gap,
 // the load, the normal method, mu, G, nu, the creepages, the rolling
 // direction and the spin offset. Throws Error(invalid_input) naming the
