@@ -372,6 +372,31 @@ SemiHertzResult SemiHertz::solve(const double* h, double dx, double dy, double E
     dx_ = dx;
     dy_ = dy;
     E_star_ = E_star;
+    fit_rows(h);
+
+    SemiHertzResult res;
+    double d = 0.0, F = 0.0;
+    if (!force) {
+        d = value - h_min_;
+        F = force_at(d);
+    } else {
+        res.iterations = depth_for_force(value, d, F);
+    }
+    const double scale = force && F > 0.0 ? value / F : 1.0;
+    res.n_contact = write_pressure(scale, pressure);
+    res.normal_force = F * scale;
+    res.approach = d + h_min_;
+    if (force && !(F > 0.0))
+        throw Error(ErrorKind::not_converged,
+                    "the semi-Hertzian normal method found no contact for the normal force");
+    return res;
+}
+
+// The rows' loci, heights and curvatures, and the depths at which their
+// fits widen, for the gap h (dx_, dy_ set).
+void SemiHertz::fit_rows(const double* h)
+{
+    const double dx = dx_, dy = dy_;
     // Each row's lowest element (the first of equals), then the gap's.
     h_min_ = h[0];
     for (int j = 0; j < ny_; ++j) {
@@ -420,74 +445,67 @@ SemiHertzResult SemiHertz::solve(const double* h, double dx, double dy, double E
         R.written_hi = -1;
     }
 
-    SemiHertzResult res;
-    double d = 0.0, F = 0.0;
-    if (!force) {
-        d = value - h_min_;
+}
+
+// The depth d that carries the normal force N, and the force F there (the
+// last evaluation's, whose pressures write_pressure writes); returns the
+// force evaluations.
+int SemiHertz::depth_for_force(double N, double& d, double& F)
+{
+    // Bracket [lo, hi] with F(lo) < N <= F(hi); log d interpolated in
+    // log F (F grows like d^(3/2) for a Hertzian gap): a secant step
+    // from two evaluations, an inverse quadratic one from three;
+    // bisection in log d when a step leaves the bracket.
+    double lo = 0.0, hi = 0.0;
+    // First guess: the depth of the continuous semi-ellipses' force.
+    d = continuous_depth(N);
+    double d_prev = 0.0, f_prev = 0.0, d_prev2 = 0.0, f_prev2 = 0.0;
+    // The last evaluation is the answer (write_pressure after the loop).
+    int iterations = 1;
+    for (; iterations <= kMaxForceIterations; ++iterations) {
         F = force_at(d);
-    } else {
-        // Bracket [lo, hi] with F(lo) < N <= F(hi); log d interpolated in
-        // log F (F grows like d^(3/2) for a Hertzian gap): a secant step
-        // from two evaluations, an inverse quadratic one from three;
-        // bisection in log d when a step leaves the bracket.
-        const double N = value;
-        double lo = 0.0, hi = 0.0;
-        // First guess: the depth of the continuous semi-ellipses' force.
-        d = continuous_depth(N);
-        double d_prev = 0.0, f_prev = 0.0, d_prev2 = 0.0, f_prev2 = 0.0;
-        // The last evaluation is the answer (write_pressure after the loop).
-        for (res.iterations = 1; res.iterations <= kMaxForceIterations; ++res.iterations) {
-            F = force_at(d);
-            (F < N ? lo : hi) = d;
-            if (std::fabs(F - N) <= 1e-13 * N || (hi > 0.0 && hi - lo <= 1e-15 * hi)) break;
-            double next;
-            if (F > 0.0 && f_prev > 0.0 && f_prev2 > 0.0 && F != f_prev && F != f_prev2 &&
-                f_prev != f_prev2) {
-                // Inverse quadratic interpolation of log d in log F through
-                // the last three evaluations.
-                const double y0 = std::log(F), y1 = std::log(f_prev), y2 = std::log(f_prev2);
-                const double Y = std::log(N);
-                next = std::exp(std::log(d) * (Y - y1) * (Y - y2) / ((y0 - y1) * (y0 - y2)) +
-                                std::log(d_prev) * (Y - y0) * (Y - y2) / ((y1 - y0) * (y1 - y2)) +
-                                std::log(d_prev2) * (Y - y0) * (Y - y1) / ((y2 - y0) * (y2 - y1)));
-            } else if (F > 0.0 && f_prev > 0.0 && d != d_prev)
-                next = std::exp(std::log(d) + (std::log(N) - std::log(F)) *
-                                                  (std::log(d) - std::log(d_prev)) /
-                                                  (std::log(F) - std::log(f_prev)));
-            else if (F > 0.0 && res.iterations == 1)
-                // The discrete force as the continuous one times F / N:
-                // Newton's step on that.
-                next = d + N * (N / F - 1.0) / continuous_slope_;
-            else
-                next = F > 0.0 ? d * std::pow(N / F, 2.0 / 3.0) : 2.0 * d;
-            if (hi == 0.0) {
-                next = std::max(next, (1.0 + 1e-6) * d); // still below N: grow
-            } else if (!(next > lo && next < hi)) {
-                next = lo > 0.0 ? std::sqrt(lo * hi) : 0.5 * hi;
-            }
-            d_prev2 = d_prev;
-            f_prev2 = f_prev;
-            d_prev = d;
-            f_prev = F;
-            d = next;
+        (F < N ? lo : hi) = d;
+        if (std::fabs(F - N) <= 1e-13 * N || (hi > 0.0 && hi - lo <= 1e-15 * hi)) break;
+        double next;
+        if (F > 0.0 && f_prev > 0.0 && f_prev2 > 0.0 && F != f_prev && F != f_prev2 &&
+            f_prev != f_prev2) {
+            // Inverse quadratic interpolation of log d in log F through
+            // the last three evaluations.
+            const double y0 = std::log(F), y1 = std::log(f_prev), y2 = std::log(f_prev2);
+            const double Y = std::log(N);
+            next = std::exp(std::log(d) * (Y - y1) * (Y - y2) / ((y0 - y1) * (y0 - y2)) +
+                            std::log(d_prev) * (Y - y0) * (Y - y2) / ((y1 - y0) * (y1 - y2)) +
+                            std::log(d_prev2) * (Y - y0) * (Y - y1) / ((y2 - y0) * (y2 - y1)));
+        } else if (F > 0.0 && f_prev > 0.0 && d != d_prev)
+            next = std::exp(std::log(d) + (std::log(N) - std::log(F)) *
+                                              (std::log(d) - std::log(d_prev)) /
+                                              (std::log(F) - std::log(f_prev)));
+        else if (F > 0.0 && iterations == 1)
+            // The discrete force as the continuous one times F / N:
+            // Newton's step on that.
+            next = d + N * (N / F - 1.0) / continuous_slope_;
+        else
+            next = F > 0.0 ? d * std::pow(N / F, 2.0 / 3.0) : 2.0 * d;
+        if (hi == 0.0) {
+            next = std::max(next, (1.0 + 1e-6) * d); // still below N: grow
+        } else if (!(next > lo && next < hi)) {
+            next = lo > 0.0 ? std::sqrt(lo * hi) : 0.5 * hi;
         }
-        // Where the force jumps past N (the fit widening at a row), the
-        // bracket closes on the jump: the answer is its upper end, whatever
-        // side the iteration ended on.
-        if (res.iterations > kMaxForceIterations || (F < N && std::fabs(F - N) > 1e-13 * N &&
-                                                     hi > 0.0)) {
-            d = hi > 0.0 ? hi : d;
-            F = force_at(d);
-        }
+        d_prev2 = d_prev;
+        f_prev2 = f_prev;
+        d_prev = d;
+        f_prev = F;
+        d = next;
     }
-    const double scale = force && F > 0.0 ? value / F : 1.0;
-    res.n_contact = write_pressure(scale, pressure);
-    res.normal_force = F * scale;
-    res.approach = d + h_min_;
-    if (force && !(F > 0.0))
-        throw Error(ErrorKind::not_converged,
-                    "the semi-Hertzian normal method found no contact for the normal force");
-    return res;
+    // Where the force jumps past N (the fit widening at a row), the
+    // bracket closes on the jump: the answer is its upper end, whatever
+    // side the iteration ended on.
+    if (iterations > kMaxForceIterations ||
+        (F < N && std::fabs(F - N) > 1e-13 * N && hi > 0.0)) {
+        d = hi > 0.0 ? hi : d;
+        F = force_at(d);
+    }
+    return iterations;
 }
 
 } // namespace creepwork

@@ -96,6 +96,8 @@ private:
         // c = alpha A dx^2 [m] (the semi-ellipse's local - c m^2) and 1 / c.
         double c_k[kMaxFitHalfWidth + 1] = {}, inv_c_k[kMaxFitHalfWidth + 1] = {};
     };
+    void fit_rows(const double* h);
+    int depth_for_force(double N, double& d, double& F);
     // Total force [N] at depth d; the rows' contact elements and roots kept
     // for write_pressure.
     double force_at(double d);
