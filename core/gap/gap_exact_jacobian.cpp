@@ -22,13 +22,6 @@
 #include "gap/gap_exact_model.hpp"
 
 namespace creepwork {
-namespace {
-
-// GMRES iterations per derivative, as ExactModel's.
-constexpr int kMaxJacobianIterations = 2000;
-
-} // namespace
-
 SolveTotals GapExactModel::solve_jacobian(const ContactInput& in, SolveMode mode, Jacobian& J)
 {
     const SolveTotals t = solve(in, mode);
@@ -48,34 +41,20 @@ SolveTotals GapExactModel::solve_jacobian(const ContactInput& in, SolveMode mode
                 dp_dN_[box_i0_ + i + static_cast<size_t>(nx_) * (box_j0_ + j)] / s.p_ref;
 
     // d(rolling-frame sums of q: x, y, x qy - y qx [m])/d(s.xi, s.eta, s.phi, N)
+    auto x = [&](int i) { return fine.x0 + i * fine.dx; };
+    auto y = [&](int j) { return fine.y0 + j * fine.dy; };
     double dS[3][4] = {};
     for (int k = 0; k < 4; ++k) {
-        if (k < 3)
-            for (int j = 0; j < fine.ny; ++j) {
-                const double y = fine.y0 + j * fine.dy;
-                for (int i = 0; i < fine.nx; ++i) {
-                    const double x = fine.x0 + i * fine.dx;
-                    tangent_w_[i + static_cast<size_t>(fine.nx) * j] =
-                        k == 0   ? SteadyRolling::Complex(1.0, 0.0)
-                        : k == 1 ? SteadyRolling::Complex(0.0, 1.0)
-                                 : SteadyRolling::Complex(-y, x + s.spin_offset * fine.dx);
-                }
-            }
+        if (k < 3) creepage_tangent(tangent_w_, fine.nx, fine.ny, k, x, y, s.spin_offset * fine.dx);
         const std::vector<SteadyRolling::Complex>& dq =
             k < 3 ? fine.tangential.tangent(fine.conv, tangent_w_, tolerance,
                                             kMaxJacobianIterations)
                   : fine.tangential.tangent_bound(fine.conv, dg_, tolerance,
                                                   kMaxJacobianIterations);
-        for (int j = 0; j < fine.ny; ++j) {
-            const double y = fine.y0 + j * fine.dy;
-            for (int i = 0; i < fine.nx; ++i) {
-                const SteadyRolling::Complex v = dq[i + static_cast<size_t>(fine.nx) * j];
-                const double x = fine.x0 + i * fine.dx;
-                dS[0][k] += v.real();
-                dS[1][k] += v.imag();
-                dS[2][k] += x * v.imag() - y * v.real();
-            }
-        }
+        const TractionMoments m = traction_moments(dq, fine.nx, fine.ny, x, y);
+        dS[0][k] = m.x;
+        dS[1][k] = m.y;
+        dS[2][k] = m.z;
     }
 
     // s.xi = d xi_x / slip_scale, s.eta = xi_y / slip_scale, s.phi = d phi /

@@ -10,23 +10,32 @@
 #include "contact/kalker_coefficients.hpp"
 #include "halfspace/cell_box.hpp"
 #include "exact/exact_work.hpp"
+#include "exact/tangential_solve.hpp"
 
 namespace creepwork {
-namespace {
-
-// As ExactModel's (exact_model.cpp, where each is measured).
-constexpr int kKrylovDimension = 40;
-constexpr int kMinCoarseCells = 10;
-constexpr double kCoarseTolerance = 1e-1;
-constexpr double kMaxNormalisedCreepage = 1e100;
-
-} // namespace
-
 GapExactModel::Level::Level(int nx_, int ny_)
-    : nx(nx_), ny(ny_), conv(nx_, ny_, ConvolutionUse::tangential),
-      tangential(nx_, ny_, kKrylovDimension)
+    : TangentialLevel(nx_, ny_, ConvolutionUse::tangential)
 {
 }
+
+// The model's steps of the tangential solve (exact/tangential_solve.hpp).
+struct GapExactModel::Steps {
+    GapExactModel& m;
+    const ContactInput& in;
+    TangentialLevel& level(int l) { return *m.levels_[l]; }
+    void prepare(int l)
+    {
+        Level& L = *m.levels_[l];
+        L.conv.set_size(L.nx, L.ny);
+        L.tangential.set_size(L.nx, L.ny);
+        L.conv.set_coefficients(L.dy / L.dx, in.nu);
+        m.sample_bound(*m.levels_[0], L);
+        m.set_rigid_slip(L);
+    }
+    void first_guess(int l) { m.march_start(*m.levels_[l], in.nu, in.G); }
+    void interpolate(int l) { m.interpolate(*m.levels_[l + 1], *m.levels_[l]); }
+    void predict() { m.predict_start(in.nu); }
+};
 
 GapExactModel::GapExactModel(const GridSpec& grid)
     : grid_(checked_gap_grid(grid)), nx_(grid.nx), ny_(grid.ny),
@@ -34,11 +43,7 @@ GapExactModel::GapExactModel(const GridSpec& grid)
 {
     int nx = nx_, ny = ny_;
     levels_.push_back(std::make_unique<Level>(nx, ny));
-    while ((nx + 1) / 2 >= kMinCoarseCells && (ny + 1) / 2 >= kMinCoarseCells) {
-        nx = (nx + 1) / 2;
-        ny = (ny + 1) / 2;
-        levels_.push_back(std::make_unique<Level>(nx, ny));
-    }
+    while (coarser(nx, ny)) levels_.push_back(std::make_unique<Level>(nx, ny));
     const size_t n = static_cast<size_t>(nx_) * ny_;
     for (auto* v : {&traction_, &slip_, &rigid_, &tangent_w_}) v->assign(n, 0.0);
     dp_dN_.assign(n, 0.0);
@@ -123,26 +128,9 @@ void GapExactModel::sample_bound(Level& F, Level& C) const
 // (clipped to the fine bound by the fine solver).
 void GapExactModel::interpolate(const Level& C, Level& F) const
 {
-    const std::vector<SteadyRolling::Complex>& qc = C.tangential.traction();
-    std::vector<SteadyRolling::Complex>& qf = F.tangential.traction();
-    for (int j = 0; j < F.ny; ++j) {
-        const double ty = (F.y0 + j * F.dy - C.y0) / C.dy;
-        const int j0 = static_cast<int>(std::floor(ty));
-        const double fy = ty - j0;
-        for (int i = 0; i < F.nx; ++i) {
-            const double tx = (F.x0 + i * F.dx - C.x0) / C.dx;
-            const int i0 = static_cast<int>(std::floor(tx));
-            const double fx = tx - i0;
-            SteadyRolling::Complex v(0.0, 0.0);
-            for (int dj = 0; dj < 2; ++dj)
-                for (int di = 0; di < 2; ++di) {
-                    const int ii = std::min(std::max(i0 + di, 0), C.nx - 1);
-                    const int jj = std::min(std::max(j0 + dj, 0), C.ny - 1);
-                    v += (di ? fx : 1.0 - fx) * (dj ? fy : 1.0 - fy) * qc[ii + C.nx * jj];
-                }
-            qf[i + F.nx * j] = v;
-        }
-    }
+    interpolate_traction(
+        C, F, [&](int i) { return (F.x0 + i * F.dx - C.x0) / C.dx; },
+        [&](int j) { return (F.y0 + j * F.dy - C.y0) / C.dy; });
 }
 
 // Kalker's simplified theory as the first guess on the coarsest grid: each
@@ -178,25 +166,9 @@ void GapExactModel::march_start(Level& L, double nu, double G)
     const Flexibilities F = kalker_flexibilities(a, b, G, kalker_coefficients(ratio, nu));
     const double l1 = L.dx / (F.L1 * G), l2 = L.dx / (F.L2 * G), l3 = L.dx / (F.L3 * G);
     const Setup& s = setup_;
-    const std::vector<double>& g = L.tangential.bound();
-    std::vector<SteadyRolling::Complex>& q = L.tangential.traction();
-    for (int j = 0; j < L.ny; ++j) {
-        const double y = L.y0 + j * L.dy;
-        SteadyRolling::Complex prev(0.0, 0.0);
-        for (int i = L.nx - 1; i >= 0; --i) {
-            const int k = i + L.nx * j;
-            if (!(g[k] > 0.0)) {
-                q[k] = prev = 0.0;
-                continue;
-            }
-            const double x = L.x0 + i * L.dx;
-            SteadyRolling::Complex next =
-                prev - SteadyRolling::Complex(l1 * s.xi - l3 * s.phi * y, l2 * s.eta + l3 * s.phi * x);
-            const double m = std::abs(next);
-            if (m > g[k]) next *= g[k] / m;
-            q[k] = prev = next;
-        }
-    }
+    simplified_march(
+        L, l1, l2, l3, s.xi, s.eta, s.phi, [&](int i) { return L.x0 + i * L.dx; },
+        [&](int j) { return L.y0 + j * L.dy; });
 }
 
 // The smallest box of the grid holding the contact (pressure > 0; without
@@ -225,11 +197,8 @@ void GapExactModel::set_box(const GridConvolution& coefficients)
     fine.dx = grid_.dx;
     fine.dy = grid_.dy;
     n_levels_ = 1;
-    while (n_levels_ < static_cast<int>(levels_.size()) && (nx + 1) / 2 >= kMinCoarseCells &&
-           (ny + 1) / 2 >= kMinCoarseCells) {
+    while (n_levels_ < static_cast<int>(levels_.size()) && coarser(nx, ny)) {
         Level& L = *levels_[n_levels_++];
-        nx = (nx + 1) / 2;
-        ny = (ny + 1) / 2;
         L.nx = nx;
         L.ny = ny;
         L.dx = grid_.dx * bx / nx;
@@ -274,6 +243,54 @@ void GapExactModel::label_patches(SolveTotals& t)
     t.n_patches = labels_.label(in_contact_.data());
 }
 
+// The rigid slip over mu p_max / G (the rigid slip itself without friction
+// or load), scaled down together beyond the largest normalised creepage.
+void GapExactModel::set_normalised_creepages(const ContactInput& in)
+{
+    Setup& s = setup_;
+    const double T = s.traction_scale;
+    const double inv = T > 0.0 ? in.G / T : 1.0;
+    s.slip_scale = T > 0.0 ? T / in.G : 1.0;
+    s.xi = s.direction * in.xi_x * inv;
+    s.eta = in.xi_y * inv;
+    s.phi = s.direction * in.phi * inv;
+    const double reach = std::max({std::fabs(grid_.x0), std::fabs(grid_.x0 + nx_ * grid_.dx),
+                                   std::fabs(grid_.y0), std::fabs(grid_.y0 + ny_ * grid_.dy)});
+    limit_rigid_slip(s.xi, s.eta, s.phi, reach, s.slip_scale);
+}
+
+// Warm start: traction_ holds the last solution on the whole grid, the start
+// on this solve's box once predicted along the creepages' drift (the
+// history, kept as physical tractions, outlives changes of the gap or the
+// load: a vehicle loop's gap drifts with its creepages, and the secant step
+// follows both; measured on N07_wide, 37.5 -> 24.5 FFT products a step with
+// the gap drifting).
+void GapExactModel::predict_start(double nu)
+{
+    const Setup& s = setup_;
+    const double T = s.traction_scale;
+    const double key[CreepageHistory::kKey] = {nu, s.spin_offset, double(s.direction), 0.0};
+    const double c[3] = {s.xi, s.eta, s.phi};
+    if (!history_.predict(key, c, traction_, 1.0 / T)) {
+        const double f = previous_traction_scale_ / T;
+        for (auto& v : traction_) v *= f;
+    }
+    Level& fine = *levels_[0];
+    std::vector<SteadyRolling::Complex>& q = fine.tangential.traction();
+    for (int j = 0; j < fine.ny; ++j)
+        for (int i = 0; i < fine.nx; ++i)
+            q[i + static_cast<size_t>(fine.nx) * j] =
+                traction_[box_i0_ + i + static_cast<size_t>(nx_) * (box_j0_ + j)];
+}
+
+void GapExactModel::remember(double nu)
+{
+    const Setup& s = setup_;
+    const double key[CreepageHistory::kKey] = {nu, s.spin_offset, double(s.direction), 0.0};
+    const double c[3] = {s.xi, s.eta, s.phi};
+    history_.remember(key, c, traction_, s.traction_scale, state_.data());
+}
+
 SolveTotals GapExactModel::solve(const ContactInput& in, SolveMode mode)
 {
     const bool had_previous = has_previous_;
@@ -282,137 +299,66 @@ SolveTotals GapExactModel::solve(const ContactInput& in, SolveMode mode)
     validate(in);
     const double tolerance = in.tolerance > 0.0 ? in.tolerance : kExactDefaultTolerance;
     const int max_steps = in.max_iterations > 0 ? in.max_iterations : kExactDefaultMaxIterations;
-    const double nu = in.nu, G = in.G;
 
     Setup& s = setup_;
     s = Setup{};
     s.direction = in.rolling_direction;
     s.spin_offset = in.spin_offset >= 0.0 ? in.spin_offset : kExactDefaultSpinOffset;
     s.full = mode == SolveMode::full;
-    s.G = G;
+    s.G = in.G;
 
-    Level& fine = *levels_[0];
     const bool warm = in.warm_start && had_previous;
     const GapNormalInfo& ni = normal_.solve(in, warm);
     info_.normal_iterations = ni.normal_iterations;
     info_.semi_hertz_iterations = ni.semi_hertz_iterations;
     info_.normal_reused = ni.reused;
     const std::vector<double>& pressure = normal_.pressure();
-
-    const size_t n = static_cast<size_t>(nx_) * ny_;
     double p_ref = 0.0;
-    for (size_t k = 0; k < n; ++k) p_ref = std::max(p_ref, pressure[k]);
-    const bool loaded = p_ref > 0.0;
-    s.loaded = loaded;
+    for (double p : pressure) p_ref = std::max(p_ref, p);
+    s.loaded = p_ref > 0.0;
     s.p_ref = p_ref;
     s.traction_scale = in.mu * p_ref;
     SolveTotals t;
     label_patches(t);
-    set_box(normal_.half_space(nu));
+    set_box(normal_.half_space(in.nu));
+    set_normalised_creepages(in);
 
-    // Rigid slip over mu p_max / G (the rigid slip itself without friction
-    // or load), scaled down together beyond kMaxNormalisedCreepage.
-    const double T = s.traction_scale;
-    const double inv = T > 0.0 ? G / T : 1.0;
-    s.slip_scale = T > 0.0 ? T / G : 1.0;
-    s.xi = s.direction * in.xi_x * inv;
-    s.eta = in.xi_y * inv;
-    s.phi = s.direction * in.phi * inv;
-    const double reach = std::max({std::fabs(grid_.x0), std::fabs(grid_.x0 + nx_ * grid_.dx),
-                                   std::fabs(grid_.y0), std::fabs(grid_.y0 + ny_ * grid_.dy)});
-    const double largest = std::max({std::fabs(s.xi), std::fabs(s.eta), std::fabs(s.phi) * reach});
-    if (!std::isfinite(largest))
-        throw Error(ErrorKind::invalid_input,
-                    "xi_x, xi_y or phi is so large that the rigid slip overflows");
-    if (largest > kMaxNormalisedCreepage) {
-        const double f = kMaxNormalisedCreepage / largest;
-        s.xi *= f;
-        s.eta *= f;
-        s.phi *= f;
-        s.slip_scale /= f;
-    }
-
+    Level& fine = *levels_[0];
     std::vector<double>& g = fine.tangential.bound();
     for (int j = 0; j < fine.ny; ++j)
         for (int i = 0; i < fine.nx; ++i) {
             const double p = pressure[box_i0_ + i + static_cast<size_t>(nx_) * (box_j0_ + j)];
-            g[i + static_cast<size_t>(fine.nx) * j] = loaded ? p / p_ref : 0.0;
+            g[i + static_cast<size_t>(fine.nx) * j] = s.loaded ? p / p_ref : 0.0;
         }
     set_rigid_slip(fine);
-    const bool trivial = !loaded || !(T > 0.0);
-
-    SteadyRollingInfo ti;
-    auto cold = [&] {
-        const int coarsest = n_levels_ - 1;
-        for (int l = coarsest; l >= 0; --l) {
-            Level& L = *levels_[l];
-            if (l > 0) {
-                L.conv.set_size(L.nx, L.ny);
-                L.tangential.set_size(L.nx, L.ny);
-                L.conv.set_coefficients(L.dy / L.dx, nu);
-                sample_bound(fine, L);
-                set_rigid_slip(L);
-            }
-            if (l == coarsest)
-                march_start(L, nu, G);
-            else
-                interpolate(*levels_[l + 1], L);
-            ti = L.tangential.solve(L.conv, l == 0 ? tolerance
-                                                   : std::max(tolerance, kCoarseTolerance),
-                                    max_steps);
-            info_.products += ti.products;
-            ++info_.levels_used;
-        }
-    };
+    const bool trivial = !s.loaded || !(s.traction_scale > 0.0);
     const bool rolling_freely = s.xi == 0.0 && s.eta == 0.0 && s.phi == 0.0;
-    const double key[CreepageHistory::kKey] = {nu, s.spin_offset, double(s.direction), 0.0};
-    const double c[3] = {s.xi, s.eta, s.phi};
     if (!had_previous) history_.clear();
-    std::vector<SteadyRolling::Complex>& q = fine.tangential.traction();
-    if (rolling_freely && !trivial) {
-        std::fill(q.begin(), q.end(), 0.0);
-        ti = fine.tangential.solve(fine.conv, tolerance, max_steps); // one sweep
-        info_.products += ti.products;
-        info_.levels_used = 1;
-    } else if (trivial) {
-        fine.tangential.slide_freely(g);
-        ti.converged = true;
-        info_.levels_used = 1;
-    } else if (warm) {
-        info_.warm = true;
-        // traction_ holds the last solution on the whole grid, the start on
-        // this solve's box once predicted along the creepages' drift
-        // (the history, kept as physical tractions, outlives changes of the
-        // gap or the load: a vehicle loop's gap drifts with its creepages,
-        // and the secant step follows both; measured on N07_wide, 37.5 ->
-        // 24.5 FFT products a step with the gap drifting).
-        if (!history_.predict(key, c, traction_, 1.0 / T)) {
-            const double f = previous_traction_scale_ / T;
-            for (size_t k = 0; k < n; ++k) traction_[k] *= f;
-        }
-        for (int j = 0; j < fine.ny; ++j)
-            for (int i = 0; i < fine.nx; ++i)
-                q[i + static_cast<size_t>(fine.nx) * j] =
-                    traction_[box_i0_ + i + static_cast<size_t>(nx_) * (box_j0_ + j)];
-        ti = fine.tangential.solve(fine.conv, tolerance, max_steps, true);
-        info_.products += ti.products;
-        info_.levels_used = 1;
-        if (!ti.converged) {
-            info_.retried_cold = true;
-            cold();
-        }
-    } else {
-        cold();
-    }
-    info_.newton_steps = ti.newton_steps;
-    require_converged(ti, tolerance);
+    Steps steps{*this, in};
+    const SteadyRollingInfo ti =
+        solve_tangential(steps, n_levels_, tangential_start(trivial, rolling_freely, warm),
+                         tolerance, max_steps, info_);
     scatter_box();
 
-    // Totals and patches in the caller's frame, element by element in the
-    // caller's layout.
+    set_totals(in, t);
+    t.iterations = ti.newton_steps;
+    t.residual = ti.residual;
+    if (s.full) add_work(t);
+    has_previous_ = !trivial;
+    if (!trivial) previous_traction_scale_ = s.traction_scale;
+    if (!trivial && !rolling_freely) remember(in.nu);
+    return t;
+}
+
+// Totals and patches in the caller's frame, element by element in the
+// caller's layout; the contact's extent.
+void GapExactModel::set_totals(const ContactInput& in, SolveTotals& t)
+{
+    Setup& s = setup_;
+    const std::vector<double>& pressure = normal_.pressure();
     const std::vector<signed char>& state = state_;
     const std::vector<SteadyRolling::Complex>& qa = traction_;
-    const double area = grid_.dx * grid_.dy, d = s.direction;
+    const double area = grid_.dx * grid_.dy, d = s.direction, T = s.traction_scale;
     patches_.assign(labels_.count(), PatchTotals{});
     double y_lo = 0.0, y_hi = 0.0, x_lo = 0.0, x_hi = 0.0;
     bool first = true;
@@ -449,52 +395,42 @@ SolveTotals GapExactModel::solve(const ContactInput& in, SolveMode mode)
         P.x_centroid /= P.n_contact;
         P.y_centroid /= P.n_contact;
         P.W_macro = -(P.Fx * in.xi_x + P.Fy * in.xi_y + P.Mz * in.phi);
-        t.Fx += P.Fx;
-        t.Fy += P.Fy;
-        t.Mz += P.Mz;
-        t.n_contact += P.n_contact;
-        t.n_slip += P.n_slip;
     }
-    t.W_macro = -(t.Fx * in.xi_x + t.Fy * in.xi_y + t.Mz * in.phi);
-    t.n_adhesion = t.n_contact - t.n_slip;
-    t.adhesion_fraction = t.n_contact > 0 ? double(t.n_adhesion) / t.n_contact : 0.0;
+    add_patch_totals(patches_, in, t);
     // Half the extent of the contact along x and y (element edges).
     t.a = first ? 0.0 : 0.5 * (x_hi - x_lo + grid_.dx);
     t.b = first ? 0.0 : 0.5 * (y_hi - y_lo + grid_.dy);
     s.y_mid = first ? 0.0 : 0.5 * (y_lo + y_hi);
     s.half_width = t.b;
-    t.p_max = p_ref;
+    t.p_max = s.p_ref;
     t.approach = normal_.approach();
     // The normal force: the pressures summed in the layout's order.
     double total = 0.0;
-    for (size_t k = 0; k < n; ++k) total += pressure[k];
+    for (double p : pressure) total += p;
     t.normal_force = total * grid_.dx * grid_.dy;
-    t.iterations = ti.newton_steps;
-    t.residual = ti.residual;
+}
 
-    if (s.full) {
-        ExactWorkInput w;
-        w.nx = nx_;
-        w.ny = ny_;
-        w.q = traction_.data();
-        w.s = slip_.data();
-        w.w = rigid_.data();
-        w.state = state.data();
-        w.traction_scale = T;
-        w.slip_scale = s.slip_scale;
-        w.area = area;
-        w.dy = grid_.dy;
-        w.b = s.half_width > 0.0 ? s.half_width : grid_.dy;
-        w.y0 = grid_.y0 - s.y_mid;
-        w.W_macro = t.W_macro;
-        set_work_totals(exact_work(w, paper_.data(), consistent_.data(), profile_.data(),
-                                   row_d_.data(), row_pool_.data()),
-                        t);
-    }
-    has_previous_ = !trivial;
-    if (!trivial) previous_traction_scale_ = T;
-    if (!trivial && !rolling_freely) history_.remember(key, c, traction_, T, state_.data());
-    return t;
+// The work maps and their totals (full mode).
+void GapExactModel::add_work(SolveTotals& t)
+{
+    const Setup& s = setup_;
+    ExactWorkInput w;
+    w.nx = nx_;
+    w.ny = ny_;
+    w.q = traction_.data();
+    w.s = slip_.data();
+    w.w = rigid_.data();
+    w.state = state_.data();
+    w.traction_scale = s.traction_scale;
+    w.slip_scale = s.slip_scale;
+    w.area = grid_.dx * grid_.dy;
+    w.dy = grid_.dy;
+    w.b = s.half_width > 0.0 ? s.half_width : grid_.dy;
+    w.y0 = grid_.y0 - s.y_mid;
+    w.W_macro = t.W_macro;
+    set_work_totals(exact_work(w, paper_.data(), consistent_.data(), profile_.data(),
+                               row_d_.data(), row_pool_.data()),
+                    t);
 }
 
 } // namespace creepwork

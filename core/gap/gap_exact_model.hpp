@@ -40,6 +40,7 @@
 #include "exact/creepage_history.hpp"
 #include "exact/exact_model.hpp"
 #include "exact/steady_rolling.hpp"
+#include "exact/tangential_solve.hpp"
 #include "halfspace/grid_convolution.hpp"
 #include "normal/gap_grid.hpp"
 #include "normal/gap_normal.hpp"
@@ -47,16 +48,12 @@
 
 namespace creepwork {
 
-// Diagnostics of the last solve.
-struct GapExactSolveInfo {
-    int levels_used = 0;           // grids of the tangential solve (1 for a warm start)
-    int newton_steps = 0;          // on the finest grid
-    int products = 0;              // FFT products of the tangential solve, all grids
+// Diagnostics of the last solve: the tangential solve's and the normal
+// problem's (normal/gap_normal.hpp).
+struct GapExactSolveInfo : TangentialInfo {
     int normal_iterations = 0;     // conjugate-gradient iterations of the normal problem
     int semi_hertz_iterations = 0; // force evaluations of the semi-Hertzian method
     bool normal_reused = false;    // the last normal solution was kept (same gap and load)
-    bool warm = false;             // the tangential problem started from the last solution
-    bool retried_cold = false;
 };
 
 class GapExactModel : public ContactModel {
@@ -92,17 +89,21 @@ public:
     void set_kernel_isa(KernelIsa isa) override;
 
 private:
-    struct Level {
+    // One grid of the hierarchy over the contact's box, with its geometry.
+    struct Level : TangentialLevel {
         Level(int nx, int ny);
-        int nx, ny;
         double dx = 0, dy = 0; // [m]
         double x0 = 0, y0 = 0; // centre of element (0, 0), rolling frame [m]
-        GridConvolution conv;
-        SteadyRolling tangential;
     };
+    struct Steps; // of the tangential solve
     template <class Op>
     void export_field(Field f, const Op& op, double* out) const;
     void validate(const ContactInput& in) const;
+    void set_normalised_creepages(const ContactInput& in);
+    void predict_start(double nu); // level 0's warm start
+    void remember(double nu);      // the solution, for the next warm start
+    void set_totals(const ContactInput& in, SolveTotals& t); // and the patches'
+    void add_work(SolveTotals& t);
     void set_rigid_slip(Level& L) const;
     // The tangential problem's box and levels from the pressure; coefficients:
     // the half-space's for this solve's nu.

@@ -108,9 +108,32 @@ SolveTotals GapFastsimModel::solve(const ContactInput& in, SolveMode mode)
     full_ = mode == SolveMode::full;
     normal_.solve(in, false); // no warm start: every solve from scratch
 
-    // The contact's runs, row by row in the caller's layout (the patches'
-    // numbering), and the largest pressure.
     SolveTotals t;
+    const double p_max = label_contact();
+    t.n_patches = labels_.count();
+    set_patches(in);
+    check_rigid_slip(in);
+
+    const GapMarchInput m = march_input(in);
+    march_totals_.assign(labels_.count(), GapMarchTotals{});
+    GapMarchOutput out;
+    out.p = p_.data();
+    out.slip = full_ ? slip_.data() : nullptr; // the slips feed the work maps alone
+    out.rigid = full_ ? rigid_.data() : nullptr;
+    out.state = state_.data();
+    out.patch_totals = march_totals_.data();
+    gap_march(m, out);
+
+    set_totals(in, t);
+    t.p_max = p_max;
+    if (full_) add_work(t);
+    return t;
+}
+
+// The contact's runs, row by row in the caller's layout (the patches'
+// numbering), labelled; returns the largest pressure.
+double GapFastsimModel::label_contact()
+{
     double p_max = 0.0;
     // pz(row, i): element i (caller's layout) of a row in the rolling frame.
     // Only the rows' extents are scanned (the pressure is zero elsewhere).
@@ -135,10 +158,14 @@ SolveTotals GapFastsimModel::solve(const ContactInput& in, SolveMode mode)
         scan([](const double* row, int i) { return row[i]; });
     else
         scan([this](const double* row, int i) { return row[nx_ - 1 - i]; });
-    t.n_patches = labels_.label_runs();
-    set_patches(in);
-    // The largest rigid slip step dx |omega| of any patch: far below
-    // overflow, so that |q|^2 is finite (the march compares it squared).
+    labels_.label_runs();
+    return p_max;
+}
+
+// The largest rigid slip step dx |omega| of any patch: far below overflow,
+// so that |q|^2 is finite (the march compares it squared).
+void GapFastsimModel::check_rigid_slip(const ContactInput& in) const
+{
     const double reach = std::max({std::fabs(grid_.x0), std::fabs(grid_.x0 + nx_ * grid_.dx),
                                    std::fabs(grid_.y0), std::fabs(grid_.y0 + ny_ * grid_.dy)});
     for (const GapMarchPatch& P : march_patches_) {
@@ -149,19 +176,12 @@ SolveTotals GapFastsimModel::solve(const ContactInput& in, SolveMode mode)
             throw Error(ErrorKind::invalid_input,
                         "xi_x, xi_y or phi is so large that the rigid slip overflows");
     }
+}
 
+// Totals and patches in the caller's frame, patch by patch.
+void GapFastsimModel::set_totals(const ContactInput& in, SolveTotals& t)
+{
     const double d = direction_;
-    const GapMarchInput m = march_input(in);
-    march_totals_.assign(labels_.count(), GapMarchTotals{});
-    GapMarchOutput out;
-    out.p = p_.data();
-    out.slip = full_ ? slip_.data() : nullptr; // the slips feed the work maps alone
-    out.rigid = full_ ? rigid_.data() : nullptr;
-    out.state = state_.data();
-    out.patch_totals = march_totals_.data();
-    gap_march(m, out);
-
-    // Totals and patches in the caller's frame, patch by patch.
     patches_.assign(labels_.count(), PatchTotals{});
     t.model = ModelKind::fastsim;
     for (int p = 0; p < labels_.count(); ++p) {
@@ -178,43 +198,36 @@ SolveTotals GapFastsimModel::solve(const ContactInput& in, SolveMode mode)
         P.Fn = M.Fn;
         P.p_max = M.p_max;
         P.W_macro = -(P.Fx * in.xi_x + P.Fy * in.xi_y + P.Mz * in.phi);
-        t.Fx += P.Fx;
-        t.Fy += P.Fy;
-        t.Mz += P.Mz;
-        t.n_contact += P.n_contact;
-        t.n_slip += P.n_slip;
     }
-    t.W_macro = -(t.Fx * in.xi_x + t.Fy * in.xi_y + t.Mz * in.phi);
-    t.n_adhesion = t.n_contact - t.n_slip;
-    t.adhesion_fraction = t.n_contact > 0 ? double(t.n_adhesion) / t.n_contact : 0.0;
+    add_patch_totals(patches_, in, t);
     t.a = 0.5 * extent_x_;
     t.b = 0.5 * extent_y_;
     half_width_ = t.b;
-    t.p_max = p_max;
     t.approach = normal_.approach();
     t.normal_force = normal_.force();
+}
 
-    if (full_) {
-        // The march's tractions in Pa and slips as numbers: unit scales.
-        ExactWorkInput w;
-        w.nx = nx_;
-        w.ny = ny_;
-        w.q = p_.data();
-        w.s = slip_.data();
-        w.w = rigid_.data();
-        w.state = state_.data();
-        w.traction_scale = 1.0;
-        w.slip_scale = 1.0;
-        w.area = grid_.dx * grid_.dy;
-        w.dy = grid_.dy;
-        w.b = half_width_ > 0.0 ? half_width_ : grid_.dy;
-        w.y0 = grid_.y0 - y_mid_;
-        w.W_macro = t.W_macro;
-        set_work_totals(exact_work(w, paper_.data(), consistent_.data(), profile_.data(),
-                                   row_d_.data(), row_pool_.data()),
-                        t);
-    }
-    return t;
+// The work maps and their totals (full mode): the march's tractions in Pa
+// and slips as numbers, unit scales.
+void GapFastsimModel::add_work(SolveTotals& t)
+{
+    ExactWorkInput w;
+    w.nx = nx_;
+    w.ny = ny_;
+    w.q = p_.data();
+    w.s = slip_.data();
+    w.w = rigid_.data();
+    w.state = state_.data();
+    w.traction_scale = 1.0;
+    w.slip_scale = 1.0;
+    w.area = grid_.dx * grid_.dy;
+    w.dy = grid_.dy;
+    w.b = half_width_ > 0.0 ? half_width_ : grid_.dy;
+    w.y0 = grid_.y0 - y_mid_;
+    w.W_macro = t.W_macro;
+    set_work_totals(exact_work(w, paper_.data(), consistent_.data(), profile_.data(),
+                               row_d_.data(), row_pool_.data()),
+                    t);
 }
 
 GapMarchInput GapFastsimModel::march_input(const ContactInput& in) const

@@ -90,6 +90,10 @@ private:
     template <class Op>
     void export_field(Field f, const Op& op, double* out) const;
     void validate(const ContactInput& in) const;
+    double label_contact(); // the contact's patches; returns the largest pressure
+    void check_rigid_slip(const ContactInput& in) const;
+    void set_totals(const ContactInput& in, SolveTotals& t); // and the patches'
+    void add_work(SolveTotals& t);
     void set_patches(const ContactInput& in);
     // The march's input for the last solve's pressure and patches (rolling frame).
     GapMarchInput march_input(const ContactInput& in) const;

@@ -5,6 +5,21 @@
 
 namespace creepwork {
 
+void add_patch_totals(const std::vector<PatchTotals>& patches, const ContactInput& in,
+                      SolveTotals& t)
+{
+    for (const PatchTotals& P : patches) {
+        t.Fx += P.Fx;
+        t.Fy += P.Fy;
+        t.Mz += P.Mz;
+        t.n_contact += P.n_contact;
+        t.n_slip += P.n_slip;
+    }
+    t.W_macro = -(t.Fx * in.xi_x + t.Fy * in.xi_y + t.Mz * in.phi);
+    t.n_adhesion = t.n_contact - t.n_slip;
+    t.adhesion_fraction = t.n_contact > 0 ? double(t.n_adhesion) / t.n_contact : 0.0;
+}
+
 PatchLabels::PatchLabels(int nx, int ny)
     : nx_(nx), ny_(ny), label_(static_cast<std::size_t>(nx) * ny, -1),
       row_start_(static_cast<std::size_t>(ny) + 1, 0)

@@ -11,7 +11,15 @@
 
 #include <vector>
 
+#include "contact/params.hpp"
+
 namespace creepwork {
+
+// The contact's totals from its patches' (each complete): Fx, Fy, Mz and the
+// element counts summed in the patches' order, then W_macro, n_adhesion and
+// the adhesion fraction.
+void add_patch_totals(const std::vector<PatchTotals>& patches, const ContactInput& in,
+                      SolveTotals& t);
 
 class PatchLabels {
 public:
