@@ -8,6 +8,7 @@
 #include "contact/error.hpp"
 #include "contact/number_text.hpp"
 #include "halfspace/grid_convolution.hpp"
+#include "normal/gap_normal.hpp"
 #include "simd/simd.hpp"
 
 namespace creepwork {
@@ -91,7 +92,7 @@ void validate_gap_input(const ContactInput& in, size_t n, KernelIsa isa)
             reject_input("approach", in.approach, "must lie within 1 m of the gap's datum");
     } else
         reject_input("normal_load", static_cast<double>(in.normal_load), "unknown normal load");
-    if (in.normal_method != NormalMethod::exact && in.normal_method != NormalMethod::semi_hertz)
+    if (!normal_method_known(in.normal_method))
         reject_input("normal_method", static_cast<double>(in.normal_method),
                      "unknown normal method");
     require_non_negative("mu", in.mu);

@@ -14,8 +14,9 @@
 //
 // The pressure is kept in the rolling frame [i + nx j] (the caller's rows
 // reversed when rolling towards -x), where the tangential models work.
-// Adding a method: its NormalMethod value, its class beside these, and one
-// case in GapNormal::solve and load_derivative (CONTRIBUTING.md).
+// Adding a method: its NormalMethod value, its class beside these, and here
+// normal_method_known(), a member and a case in solve(), row_extent() and
+// load_derivative() (CONTRIBUTING.md, "Adding a normal method").
 #pragma once
 
 #include <memory>
@@ -28,6 +29,12 @@
 #include "simd/kernel_isa.hpp"
 
 namespace creepwork {
+
+// The methods GapNormal solves by (validate_gap_input rejects the others).
+inline bool normal_method_known(NormalMethod method)
+{
+    return method == NormalMethod::exact || method == NormalMethod::semi_hertz;
+}
 
 // How a tangential model uses the normal problem.
 struct GapNormalOptions {
