@@ -163,16 +163,6 @@ void GapNormal::hold(const ContactInput& in)
     h.valid = true;
 }
 
-void GapNormal::row_extent(int j, int& lo, int& hi) const
-{
-    if (method_ == NormalMethod::semi_hertz) {
-        semi_hertz_.row_extent(j, lo, hi);
-    } else {
-        lo = 0;
-        hi = nx_ - 1;
-    }
-}
-
 double GapNormal::force() const
 {
     // Four partial sums: independent additions.

@@ -73,7 +73,15 @@ public:
     double approach() const { return approach_; }
     // The elements lo .. hi of row j (rolling frame) outside which the
     // pressure is zero (hi < lo: the whole row is).
-    void row_extent(int j, int& lo, int& hi) const;
+    void row_extent(int j, int& lo, int& hi) const
+    {
+        if (method_ == NormalMethod::semi_hertz) {
+            semi_hertz_.row_extent(j, lo, hi);
+        } else {
+            lo = 0;
+            hi = nx_ - 1;
+        }
+    }
     // The normal force [N]: the pressure summed row by row over its extents,
     // in four partial sums.
     double force() const;
