@@ -36,7 +36,7 @@
 
 #include "gap_shape_grid.hpp"
 #include "gap_shapes.hpp"
-#include "nonhertz/semi_hertz.hpp"
+#include "normal/semi_hertz.hpp"
 #include "solver.hpp"
 
 #ifdef CW_BENCH_CONTACT

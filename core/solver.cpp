@@ -3,50 +3,75 @@
 #include <cmath>
 #include <string>
 
+#include "contact/contact_input.hpp"
 #include "contact/error.hpp"
 
 namespace creepwork {
 namespace {
 
-// The models a solver can make, by ModelKind: a new model is one class
-// implementing ContactModel (contact_model.hpp), one ModelKind value
-// (contact/params.hpp) and one case here.
-std::unique_ptr<ContactModel> make_model(ModelKind kind, const GridSpec& grid)
+using Grid = std::shared_ptr<const ContactGrid>;
+
+template <class Model>
+std::unique_ptr<ContactModel> on_shared_grid(const Grid& grid)
 {
-    switch (kind) {
-    case ModelKind::fastsim: return std::make_unique<FastsimModel>(grid);
-    case ModelKind::exact: return std::make_unique<ExactModel>(grid);
-    case ModelKind::calibrated: return std::make_unique<CalibratedModel>(grid);
-    }
+    return std::make_unique<Model>(grid);
+}
+template <class Model>
+std::unique_ptr<ContactModel> on_spec(const Grid& grid)
+{
+    return std::make_unique<Model>(grid->spec());
+}
+
+// The models a solver can make: one row per grid and model. A new model is
+// one class implementing ContactModel (contact/contact_model.hpp), one
+// ModelKind value (contact/params.hpp) and one row here. The first row of a
+// grid is its first model, made with the solver (which so checks the grid).
+struct Registration {
+    bool gap_grid; // a gap grid (GridKind::gap), or the ellipse's grids
+    ModelKind kind;
+    std::unique_ptr<ContactModel> (*make)(const Grid&);
+};
+constexpr Registration kModels[] = {
+    {false, ModelKind::fastsim, &on_shared_grid<FastsimModel>},
+    {false, ModelKind::exact, &on_spec<ExactModel>},
+    {false, ModelKind::calibrated, &on_shared_grid<CalibratedModel>},
+    {true, ModelKind::exact, &on_spec<GapExactModel>},
+    {true, ModelKind::fastsim, &on_spec<GapFastsimModel>},
+};
+
+std::string model_name(ModelKind kind)
+{
+    return kind == ModelKind::calibrated ? "calibrated" : std::to_string(static_cast<int>(kind));
+}
+
+std::unique_ptr<ContactModel> make_model(ModelKind kind, const Grid& grid)
+{
+    const bool gap_grid = grid->spec().kind == GridKind::gap;
+    for (const Registration& r : kModels)
+        if (r.gap_grid == gap_grid && r.kind == kind) return r.make(grid);
+    if (gap_grid)
+        throw Error(ErrorKind::invalid_input,
+                    "model = " + model_name(kind) +
+                        " is invalid on a gap grid: a contact of any shape is solved by the "
+                        "exact model (model = exact) or FASTSIM (model = fastsim)");
     throw Error(ErrorKind::invalid_input,
                 "model = " + std::to_string(static_cast<int>(kind)) + " is unknown");
 }
 
-} // namespace
-
-// The models of a gap grid: the exact model, made with the solver, and
-// FASTSIM's, made on first use.
-ContactModel& Solver::gap_grid_model(ModelKind kind)
+// The grid's first model: its first row in kModels.
+ModelKind first_model(const GridSpec& grid)
 {
-    check_gap_model(kind);
-    if (kind == ModelKind::exact) return *gap_;
-    if (!gap_fastsim_) {
-        gap_fastsim_ = std::make_unique<GapFastsimModel>(grid_);
-        gap_fastsim_->set_kernel_isa(fastsim_->kernel_isa());
-    }
-    return *gap_fastsim_;
+    for (const Registration& r : kModels)
+        if (r.gap_grid == (grid.kind == GridKind::gap)) return r.kind;
+    return ModelKind::fastsim;
 }
 
-Solver::Solver(const GridSpec& grid) : grid_(grid)
+} // namespace
+
+Solver::Solver(const GridSpec& grid)
+    : grid_(std::make_shared<const ContactGrid>(grid)), isa_(best_kernel_isa())
 {
-    last_ = &model(ModelKind::fastsim);
-    fastsim_ = static_cast<FastsimModel*>(last_);
-    // A gap grid has one model, made now so that its grid is checked at
-    // creation; it is not registered by ModelKind (no other model runs there).
-    if (gap_grid()) {
-        gap_ = std::make_unique<GapModel>(grid);
-        last_ = gap_.get();
-    }
+    last_ = &model(first_model(grid));
     one_patch_.reserve(1);
 }
 
@@ -61,34 +86,21 @@ ContactModel& Solver::model(ModelKind kind)
 {
     if (ContactModel* m = find(kind)) return *m;
     std::unique_ptr<ContactModel> made = make_model(kind, grid_);
-    if (fastsim_) made->set_kernel_isa(fastsim_->kernel_isa());
+    made->set_kernel_isa(isa_);
     models_.emplace_back(kind, std::move(made));
     return *models_.back().second;
 }
 
-void Solver::prepare(ModelKind kind)
-{
-    if (gap_grid()) {
-        gap_grid_model(kind);
-        return;
-    }
-    model(kind);
-}
-
-void Solver::check_gap_model(ModelKind kind) const
-{
-    if (kind != ModelKind::exact && kind != ModelKind::fastsim)
-        throw Error(ErrorKind::invalid_input,
-                    std::string("model = ") +
-                        (kind == ModelKind::calibrated ? "calibrated"
-                                                       : std::to_string(static_cast<int>(kind))) +
-                        " is invalid on a gap grid: a contact of any shape is solved by the "
-                        "exact model (model = exact) or FASTSIM (model = fastsim)");
-}
+void Solver::prepare(ModelKind kind) { model(kind); }
 
 const ExactModel* Solver::exact_model() const
 {
-    return static_cast<const ExactModel*>(find(ModelKind::exact));
+    return dynamic_cast<const ExactModel*>(find(ModelKind::exact));
+}
+
+const GapExactModel* Solver::gap_model() const
+{
+    return dynamic_cast<const GapExactModel*>(find(ModelKind::exact));
 }
 
 CalibratedModel& Solver::calibrated_model()
@@ -98,10 +110,11 @@ CalibratedModel& Solver::calibrated_model()
 
 void Solver::set_kernel_isa(KernelIsa isa)
 {
-    fastsim_->set_kernel_isa(isa); // throws when this CPU cannot run it
+    if (!kernel_isa_supported(isa))
+        throw Error(ErrorKind::invalid_input,
+                    std::string("kernel ") + kernel_isa_name(isa) + " is not supported by this CPU");
+    isa_ = isa;
     for (const auto& m : models_) m.second->set_kernel_isa(isa);
-    if (gap_) gap_->set_kernel_isa(isa);
-    if (gap_fastsim_) gap_fastsim_->set_kernel_isa(isa);
 }
 
 const SolveTotals& Solver::solve(const ContactInput& input, SolveMode mode)
@@ -132,14 +145,8 @@ const SolveTotals& Solver::solve_impl(const ContactInput& input, SolveMode mode,
 {
     solved_ = false;
     mode_ = mode;
-    if (!gap_grid() && (input.gap || input.normal_load != NormalLoad::force ||
-                        input.normal_method != NormalMethod::exact))
-        throw Error(ErrorKind::invalid_input,
-                    input.gap ? "gap is given but the grid is not a gap grid (CW_GRID_GAP)"
-                    : input.normal_load != NormalLoad::force
-                        ? "normal_load = approach needs a gap grid (CW_GRID_GAP)"
-                        : "normal_method = semi_hertz needs a gap grid (CW_GRID_GAP)");
-    ContactModel& m = gap_grid() ? gap_grid_model(input.model) : model(input.model);
+    validate_grid_input(grid_->spec(), input);
+    ContactModel& m = model(input.model);
     SolveTotals t = jacobian ? m.solve_jacobian(input, mode, *jacobian) : m.solve(input, mode);
     last_ = &m;
 
@@ -149,8 +156,9 @@ const SolveTotals& Solver::solve_impl(const ContactInput& input, SolveMode mode,
         if (!std::isfinite(v))
             throw Error(ErrorKind::numeric_failure,
                         "a result overflowed: the inputs are too extreme for double precision");
-    // Off a gap grid the contact is one patch: its totals.
-    if (!gap_grid()) {
+    // A model that does not find separate patches (the ellipse's) reports the
+    // contact as one patch: its totals.
+    if (!m.patches()) {
         t.normal_force = input.normal_force;
         t.n_patches = t.n_contact > 0 ? 1 : 0;
         one_patch_.clear();
@@ -181,10 +189,7 @@ const std::vector<PatchTotals>& Solver::patches() const
 
 void Solver::copy_strips(double* y, double* width) const
 {
-    if (gap_) {
-        gap_->copy_strips(y, width);
-        return;
-    }
+    if (last_->copy_strips(y, width)) return;
     // The strip grids are normalised by the semi-axis b of the last solve.
     const ContactGrid& g = grid();
     for (int j = 0; j < g.ny(); ++j) {

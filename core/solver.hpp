@@ -1,9 +1,9 @@
 // The solver object: one per grid, holding the models of the contact
-// (contact_model.hpp; FASTSIM's made with the solver, the others on first
-// use or by prepare()), running each solve on the model the input asks for,
-// and exporting the fields of the last solve in the caller's layout
-// (contact/fields.hpp). The models a solver can make are registered in one
-// place, make_model() in solver.cpp.
+// (contact/contact_model.hpp; the grid's first model made with the solver,
+// the others on first use or by prepare()), running each solve on the model
+// the input asks for, and exporting the fields of the last solve in the
+// caller's layout (contact/fields.hpp). The models a solver can make are
+// registered in one place, by grid and model: make_model() in solver.cpp.
 #pragma once
 
 #include <memory>
@@ -11,28 +11,29 @@
 #include <vector>
 
 #include "calibrated/calibrated_model.hpp"
+#include "contact/contact_model.hpp"
 #include "contact/fields.hpp"
 #include "contact/jacobian.hpp"
 #include "contact/params.hpp"
-#include "contact_model.hpp"
 #include "exact/exact_model.hpp"
-#include "exact/gap_model.hpp"
 #include "fastsim/fastsim_model.hpp"
-#include "nonhertz/gap_fastsim_model.hpp"
+#include "gap/gap_exact_model.hpp"
+#include "gap/gap_fastsim_model.hpp"
 
 namespace creepwork {
 
 class Solver {
 public:
-    // On a gap grid (GridKind::gap) the exact model of any contact shape is
-    // made here (the grid's origin and spacing are checked); FASTSIM's model
-    // of any contact shape (nonhertz/gap_fastsim_model.hpp) on first use or
-    // by prepare(). The calibrated model does not run on a gap grid.
+    // Makes the grid's first model: FASTSIM on the ellipse's grids; on a gap
+    // grid (GridKind::gap) the exact model of any contact shape (so the
+    // grid's origin and spacing are checked here), FASTSIM's model of any
+    // contact shape (gap/gap_fastsim_model.hpp) on first use or by
+    // prepare(). The calibrated model does not run on a gap grid.
     explicit Solver(const GridSpec& grid);
 
     // Throws Error naming a bad input; the previous solution is then marked
-    // absent. A model other than FASTSIM is made on its first solve unless
-    // prepare() made it before.
+    // absent. A model other than the grid's first is made on its first solve
+    // unless prepare() made it before.
     const SolveTotals& solve(const ContactInput& input, SolveMode mode = SolveMode::full);
     // The same solve and the Jacobian of its Fx, Fy, Mz, W_macro with
     // respect to xi_x, xi_y, phi, N (contact/jacobian.hpp;
@@ -44,7 +45,7 @@ public:
                                       Jacobian& jacobian);
 
     // Makes a model's memory now, so that its solves allocate nothing
-    // (FASTSIM's is made with the solver). Throws Error(invalid_input) when
+    // (the grid's first model is made with the solver). Throws Error(invalid_input) when
     // the model is unknown or cannot run on this grid (exact: needs the
     // uniform or a gap grid; calibrated: not a gap grid) and
     // Error(grid_out_of_range) beyond its grid limit.
@@ -52,7 +53,7 @@ public:
     // The exact model, if made (diagnostics of its last solve: info()).
     const ExactModel* exact_model() const;
     // On a gap grid: the exact model of any contact shape.
-    const GapModel* gap_model() const { return gap_.get(); }
+    const GapExactModel* gap_model() const;
     // The separate patches of the last solve: on a gap grid each 4-connected
     // patch, otherwise the contact as one patch (none when nothing touches).
     const std::vector<PatchTotals>& patches() const;
@@ -60,7 +61,9 @@ public:
     // with its own parameters).
     CalibratedModel& calibrated_model();
 
-    const ContactGrid& grid() const { return fastsim_->grid(); }
+    // The grid's size and kind; on the ellipse's grids also its geometry
+    // (a gap grid's contact is the caller's gap).
+    const ContactGrid& grid() const { return *grid_; }
     const SolveTotals& totals() const { return totals_; }
     bool has_solution() const { return solved_; }
     bool has_work() const { return solved_ && mode_ == SolveMode::full; }
@@ -73,7 +76,7 @@ public:
     // Every kernel gives bitwise the same results; set_kernel_isa is for
     // tests and benchmarks, applies to every model (also those made later)
     // and throws Error(invalid_input) when this CPU cannot run it.
-    KernelIsa kernel_isa() const { return fastsim_->kernel_isa(); }
+    KernelIsa kernel_isa() const { return isa_; }
     void set_kernel_isa(KernelIsa isa);
 
     // out[i + j*nx] for i < nx, j < ny. Preconditions (checked by the
@@ -96,19 +99,12 @@ private:
     // The model of this kind, made (and registered) on first use.
     ContactModel& model(ModelKind kind);
     ContactModel* find(ModelKind kind) const;
-    bool gap_grid() const { return grid_.kind == GridKind::gap; }
-    // Throws Error(invalid_input) naming the model unless it runs on a gap grid.
-    void check_gap_model(ModelKind kind) const;
-    // On a gap grid: the model of this kind (checked), made on first use.
-    ContactModel& gap_grid_model(ModelKind kind);
 
-    GridSpec grid_;
+    std::shared_ptr<const ContactGrid> grid_; // shared with the march models
     std::vector<std::pair<ModelKind, std::unique_ptr<ContactModel>>> models_;
-    FastsimModel* fastsim_ = nullptr; // models_' FASTSIM: the grid and the default kernel
+    KernelIsa isa_;                   // of every model's kernels
     ContactModel* last_ = nullptr;    // the model of the last solve (its fields are exported)
-    std::unique_ptr<GapModel> gap_;   // on a gap grid: the exact model
-    std::unique_ptr<GapFastsimModel> gap_fastsim_; // on a gap grid: FASTSIM, made on first use
-    std::vector<PatchTotals> one_patch_; // off a gap grid: the contact, if any
+    std::vector<PatchTotals> one_patch_; // of a model without patches: the contact, if any
     SolveTotals totals_;
     SolveMode mode_ = SolveMode::full;
     bool solved_ = false;

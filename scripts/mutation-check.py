@@ -294,7 +294,7 @@ MUTANTS += CAMPAIGN_MUTANTS
 # ------------------------------------------------------------ end campaign
 
 # ------------------------------------------------------ contacts of any shape
-# The gap model (core/exact/gap_model.cpp), its patches and the fast normal
+# The gap model (core/gap/gap_exact_model.cpp), its patches and the fast normal
 # method: caught by CONTACT's rows on gap grids (test_nonhertz_contact), the
 # Hertzian gap against the elliptic model and the patch sums, and the doors.
 GAP = [
@@ -304,53 +304,53 @@ GAP = [
 ]
 GAP_MUTANTS = [
     dict(id="gap-spin-slip", what="the gap model's rigid slip takes +phi y along x",
-         file="core/exact/gap_model.cpp",
+         file="core/gap/gap_exact_model.cpp",
          old="            w[i + L.nx * j] = {s.xi - s.phi * y, s.eta + s.phi * (x + s.spin_offset * L.dx)};",
          new="            w[i + L.nx * j] = {s.xi + s.phi * y, s.eta + s.phi * (x + s.spin_offset * L.dx)};",
          tests=GAP, require=["test_nonhertz_contact"]),
     dict(id="gap-patch-force", what="a patch's normal force sums pressures without the area",
-         file="core/exact/gap_model.cpp",
-         old="            P.Fn += pressure_[k] * area;",
-         new="            P.Fn += pressure_[k];", tests=GAP),
+         file="core/gap/gap_exact_model.cpp",
+         old="            P.Fn += pressure[k] * area;",
+         new="            P.Fn += pressure[k];", tests=GAP),
     dict(id="patches-no-up-neighbour", what="patch labels never join runs of neighbouring rows",
-         file="core/nonhertz/patches.cpp",
+         file="core/normal/patches.cpp",
          old="                if (ra != rb) parent_[std::max(ra, rb)] = std::min(ra, rb);",
          new="                if (ra != rb && false) parent_[std::max(ra, rb)] = std::min(ra, rb);",
          tests=GAP),
     dict(id="semi-hertz-pressure", what="the semi-Hertzian peak pressure grows with the depth, not its root",
-         file="core/nonhertz/semi_hertz.cpp",
+         file="core/normal/semi_hertz.cpp",
          old="        for (int e = 0; e < n; ++e) v[e] = std::sqrt(std::max(v[e], 0.0));",
          new="        for (int e = 0; e < n; ++e) v[e] = std::max(v[e], 0.0);", tests=GAP),
     dict(id="semi-hertz-mirror-once", what="a semi-Hertzian row's roots count once, not on both sides",
-         file="core/nonhertz/semi_hertz.cpp",
+         file="core/normal/semi_hertz.cpp",
          old="                wr[m] = m >= 1 && m <= both ? two : pf;",
          new="                wr[m] = pf;", tests=GAP),
     # FASTSIM on a gap grid: caught by the exact model on the 26 shapes
     # (test_nonhertz_fastsim), the elliptic FASTSIM on a shifted Hertzian gap
     # and the hand-computed adhesion limit per patch (test_nonhertz_capi).
     dict(id="gap-fastsim-segment-count", what="a gap FASTSIM segment counts one element short",
-         file="core/nonhertz/gap_march.cpp",
+         file="core/gap/gap_march.cpp",
          old="        t.n_contact += first - last + 1;",
          new="        t.n_contact += first - last;", tests=GAP),
     dict(id="gap-fastsim-stale-pressure", what="after the exact normal problem the semi-Hertzian "
-         "method clears only its own last extents", file="core/nonhertz/gap_fastsim_model.cpp",
-         old="            pressure_semi_hertz_ = false; // overwritten below",
-         new="            pressure_semi_hertz_ = true;", tests=GAP,
+         "method clears only its own last extents", file="core/normal/gap_normal.cpp",
+         old="    zero_outside_extents_ = false; // the half-space pressure overwrites it below",
+         new="    zero_outside_extents_ = true;", tests=GAP,
          require=["test_nonhertz_fastsim"]),
     dict(id="gap-fastsim-spin-origin", what="FASTSIM on a gap takes the spin about the grid's origin",
-         file="core/nonhertz/gap_march.cpp",
+         file="core/gap/gap_march.cpp",
          old="        r.ox = (in.xi - in.phi * M.yc) / M.L1 - in.phi * (r.y - M.yc) / M.L3;",
          new="        r.ox = in.xi / M.L1 - in.phi * r.y / M.L3;", tests=GAP,
          require=["test_nonhertz_fastsim"]),
     dict(id="gap-fastsim-patch-ellipse", what="the patch ellipse's a is the longest row, not half of it",
-         file="core/nonhertz/gap_fastsim_model.cpp",
+         file="core/gap/gap_fastsim_model.cpp",
          old="        const double a = 0.5 * longest_[p], b = elements * grid_.dx * grid_.dy / (kPi * a);",
          new="        const double a = longest_[p], b = elements * grid_.dx * grid_.dy / (kPi * a);",
          tests=GAP, require=["test_nonhertz_fastsim"]),
 ]
 MUTANTS += GAP_MUTANTS
-# The Jacobians on a gap grid (core/exact/gap_jacobian.cpp,
-# core/nonhertz/gap_fastsim_jacobian.cpp and their parts): caught by central
+# The Jacobians on a gap grid (core/gap/gap_exact_jacobian.cpp,
+# core/gap/gap_fastsim_jacobian.cpp and their parts): caught by central
 # differences of the solves and the elliptic exact model's Jacobian
 # (test_nonhertz_jacobian), and the C and Fortran doors' own differences.
 GAP_JACOBIAN = [
@@ -364,37 +364,37 @@ GAP_JACOBIAN_MUTANTS = [
          new="                d += gq_[k] * (dg[k] / g_[k]);",
          tests=GAP_JACOBIAN, require=["test_nonhertz_jacobian"]),
     dict(id="gap-jac-normal-cg-step", what="the normal problem's derivative takes unit CG steps",
-         file="core/exact/normal_problem.cpp",
+         file="core/normal/normal_problem.cpp",
          old="            z[k] += step * p_[k];",
          new="            z[k] += p_[k];",
          tests=GAP_JACOBIAN, require=["test_nonhertz_jacobian"]),
     dict(id="gap-jac-bound-scale", what="the bound's change divided by mu p_max, not p_max",
-         file="core/exact/gap_jacobian.cpp",
+         file="core/gap/gap_exact_jacobian.cpp",
          old="                dp_dN_[box_i0_ + i + static_cast<size_t>(nx_) * (box_j0_ + j)] / s.p_ref;",
          new="                dp_dN_[box_i0_ + i + static_cast<size_t>(nx_) * (box_j0_ + j)] / s.traction_scale;",
          tests=GAP_JACOBIAN, require=["test_nonhertz_jacobian"]),
-    dict(id="gap-jac-spin-column", what="the spin's rigid slip takes +y along x in the Jacobian",
-         file="core/exact/gap_jacobian.cpp",
-         old="                                 : SteadyRolling::Complex(-y, x + s.spin_offset * fine.dx);",
-         new="                                 : SteadyRolling::Complex(y, x + s.spin_offset * fine.dx);",
+    dict(id="gap-jac-spin-column", what="the spin's rigid slip takes +y along x in the exact "
+         "models' Jacobians", file="core/exact/tangential_solve.hpp",
+         old="                                                          : Complex(-yj, x(i) + offset);",
+         new="                                                          : Complex(yj, x(i) + offset);",
          tests=GAP_JACOBIAN, require=["test_nonhertz_jacobian"]),
     dict(id="semi-hertz-derivative", what="the semi-Hertzian dp/dd grows with p instead of 1/p",
-         file="core/nonhertz/semi_hertz_derivative.cpp",
+         file="core/normal/semi_hertz_derivative.cpp",
          old="            dp_dN[k] = p > 0.0 ? 0.5 * P2 / p : 0.0;",
          new="            dp_dN[k] = p > 0.0 ? 0.5 * P2 * p : 0.0;",
          tests=GAP_JACOBIAN, require=["test_nonhertz_jacobian"]),
     dict(id="gap-march-tangent-projection", what="FASTSIM's slip derivative skips the projection",
-         file="core/nonhertz/gap_march_tangent.cpp",
+         file="core/gap/gap_march_tangent.cpp",
          old="                    dqx[c] = f * (dqx[c] - ex * along);",
          new="                    dqx[c] = f * dqx[c];",
          tests=GAP_JACOBIAN, require=["test_nonhertz_jacobian"]),
     dict(id="gap-march-tangent-bound", what="FASTSIM's N column misses the bound's own change",
-         file="core/nonhertz/gap_march_tangent.cpp",
+         file="core/gap/gap_march_tangent.cpp",
          old="                dqx[3] += ex * dbound;",
          new="                dqx[3] += 0.0 * dbound;",
          tests=GAP_JACOBIAN, require=["test_nonhertz_jacobian"]),
     dict(id="gap-fastsim-jac-frame", what="FASTSIM's gap Jacobian ignores the rolling direction for xi_x",
-         file="core/nonhertz/gap_fastsim_jacobian.cpp",
+         file="core/gap/gap_fastsim_jacobian.cpp",
          old="    const double frame[3] = {d, 1.0, d}, dc[4] = {d, 1.0, d, 1.0};",
          new="    const double frame[3] = {d, 1.0, d}, dc[4] = {1.0, 1.0, d, 1.0};",
          tests=GAP_JACOBIAN, require=["test_nonhertz_jacobian"]),
@@ -557,7 +557,7 @@ MUTANTS += [
 PROMISE_MUTANTS = [
     dict(id="semi-hertz-fit-lower-decides", what="the semi-Hertzian fit widens while the lower "
          "element of the next pair penetrates enough, not both",
-         file="core/nonhertz/semi_hertz.cpp",
+         file="core/normal/semi_hertz.cpp",
          old="? std::max(row[R.locus - k - 1], row[R.locus + k + 1]) - h_min_",
          new="? std::min(row[R.locus - k - 1], row[R.locus + k + 1]) - h_min_",
          tests=GAP + ["test_nonhertz_parts"]),

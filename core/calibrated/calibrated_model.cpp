@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include "calibrated/calibration_table.hpp"
 #include "calibrated/moment_flexibility.hpp"
@@ -122,7 +123,13 @@ void calibrated_rigid_slip(const ContactGrid& grid, const CalibratedSetup& setup
     }
 }
 
-CalibratedModel::CalibratedModel(const GridSpec& grid) : MarchModel(grid), bound_(geometry())
+CalibratedModel::CalibratedModel(const GridSpec& grid)
+    : CalibratedModel(std::make_shared<const ContactGrid>(grid))
+{
+}
+
+CalibratedModel::CalibratedModel(std::shared_ptr<const ContactGrid> grid)
+    : MarchModel(std::move(grid)), bound_(geometry())
 {
     // Its solves, with or without the Jacobian, allocate nothing.
     geometry().march_from_leading_edges(this->grid());

@@ -42,6 +42,7 @@ void calibrated_rigid_slip(const ContactGrid& grid, const CalibratedSetup& setup
 class CalibratedModel : public MarchModel {
 public:
     explicit CalibratedModel(const GridSpec& grid);
+    explicit CalibratedModel(std::shared_ptr<const ContactGrid> grid); // a solver's grid
 
     // Throws Error(invalid_input) naming a bad input (the model needs the
     // flexibilities from G and nu: its table is in Kalker's normalisation).

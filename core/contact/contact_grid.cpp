@@ -27,6 +27,7 @@ ContactGrid::ContactGrid(const GridSpec& spec) : spec_(spec), ny_(spec.ny)
         throw Error(ErrorKind::grid_out_of_range,
                     "box_scale = " + std::to_string(spec.box_scale) +
                         " is outside [1, 100] (the box must hold the ellipse)");
+    if (spec.kind == GridKind::gap) return; // the caller's gap gives the contact
     allocate();
     if (spec.kind == GridKind::uniform) {
         build_uniform();

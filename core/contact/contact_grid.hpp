@@ -17,7 +17,9 @@ namespace creepwork {
 class ContactGrid {
 public:
     // Throws Error(grid_out_of_range) outside 1..kMaxGridCells or box scale
-    // outside [1, kMaxBoxScale].
+    // outside [1, kMaxBoxScale]. A gap grid (GridKind::gap) has no ellipse:
+    // its grid holds the size alone (its per-element and per-strip arrays
+    // are empty; the models on it read the caller's gap).
     explicit ContactGrid(const GridSpec& spec);
 
     // Kalker strip grid with explicit strip boundaries Y (ascending, from -1

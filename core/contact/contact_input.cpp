@@ -72,4 +72,18 @@ void validate_contact_input(const ContactInput& in)
                      "for the model's default");
 }
 
+void validate_grid_input(const GridSpec& grid, const ContactInput& in)
+{
+    if (grid.kind == GridKind::gap) return;
+    if (in.gap)
+        throw Error(ErrorKind::invalid_input,
+                    "gap is given but the grid is not a gap grid (CW_GRID_GAP)");
+    if (in.normal_load != NormalLoad::force)
+        throw Error(ErrorKind::invalid_input,
+                    "normal_load = approach needs a gap grid (CW_GRID_GAP)");
+    if (in.normal_method != NormalMethod::exact)
+        throw Error(ErrorKind::invalid_input,
+                    "normal_method = semi_hertz needs a gap grid (CW_GRID_GAP)");
+}
+
 } // namespace creepwork

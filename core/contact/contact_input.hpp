@@ -9,6 +9,10 @@ namespace creepwork {
 
 // Throws Error(invalid_input) naming the first offending input.
 void validate_contact_input(const ContactInput& in);
+// What a grid's kind allows of the input: a gap, the approach prescribed
+// and the semi-Hertzian method need a gap grid (a gap grid's models check
+// their own inputs). Throws Error(invalid_input).
+void validate_grid_input(const GridSpec& grid, const ContactInput& in);
 
 // The building blocks, for the models' own checks.
 [[noreturn]] void reject_input(const char* name, double value, const char* rule);

@@ -9,7 +9,7 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 
 // Kalker, J.J., Three-dimensional elastic bodies in rolling contact, 1990,
-// Table E.3 (also ../shared/reference/kalker_cij.csv). Rows g = 0.1 .. 1.0;
+// Table E.3 (also tests/data/kalker_cij.csv). Rows g = 0.1 .. 1.0;
 // per row and coefficient the values for nu = 0, 0.25, 0.5.
 // Index: [case][row][coefficient C11, C22, C23, C33][nu].
 // case 0: a <= b, g = a/b;  case 1: a > b, g = b/a.

@@ -131,4 +131,16 @@ struct SolveTotals {
     // (n_patches fills the gap after iterations: tests compare the bytes.)
 };
 
+// What one separate patch of a contact carries (normal/patches.hpp finds
+// them on a gap grid), in the caller's frame (SI).
+struct PatchTotals {
+    int n_contact = 0, n_adhesion = 0, n_slip = 0; // elements
+    double x_centroid = 0, y_centroid = 0;         // of the elements' area [m]
+    double Fx = 0, Fy = 0;                         // on the wheel [N]
+    double Mz = 0;                                 // about the grid's origin [N m]
+    double Fn = 0;                                 // normal force [N]
+    double p_max = 0;                              // [Pa]
+    double W_macro = 0;                            // -(Fx xi_x + Fy xi_y + Mz phi) [J/m]
+};
+
 } // namespace creepwork

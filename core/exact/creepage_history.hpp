@@ -1,5 +1,5 @@
 // The warm start's prediction of the exact models (exact_model.hpp,
-// gap_model.hpp). The solution of one normalised tangential problem is a
+// gap/gap_exact_model.hpp). The solution of one normalised tangential problem is a
 // function of its normalised creepages c = (c_xi, c_eta, c_phi) alone. From
 // the last solutions q_0 (latest), q_1, q_2 and their c_i, the start for c
 // is

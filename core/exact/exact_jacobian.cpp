@@ -16,14 +16,6 @@
 #include "exact/exact_model.hpp"
 
 namespace creepwork {
-namespace {
-
-// GMRES iterations per derivative (each one FFT product); the linear systems
-// are those of a Newton step near convergence, which take 10-40.
-constexpr int kMaxJacobianIterations = 2000;
-
-} // namespace
-
 SolveTotals ExactModel::solve_jacobian(const ContactInput& in, SolveMode mode, Jacobian& J)
 {
     const SolveTotals t = solve(in, mode);
@@ -41,25 +33,17 @@ SolveTotals ExactModel::solve_jacobian(const ContactInput& in, SolveMode mode, J
     // d(rolling-frame sums of q: x, y, x qy - y qx)/d(c_xi, c_eta, c_phi)
     double dS[3][3] = {};
     for (int k = 0; k < 3; ++k) {
-        for (int j = 0; j < ny_; ++j)
-            for (int i = 0; i < nx_; ++i) {
-                const double X = fine.geom.X(i), Y = fine.geom.Y(j);
-                tangent_w_[i + nx_ * j] = k == 0   ? SteadyRolling::Complex(1.0, 0.0)
-                                          : k == 1 ? SteadyRolling::Complex(0.0, 1.0)
-                                                   : SteadyRolling::Complex(-Y, X + s.spin_offset);
-            }
+        creepage_tangent(
+            tangent_w_, nx_, ny_, k, [&](int i) { return fine.geom.X(i); },
+            [&](int j) { return fine.geom.Y(j); }, s.spin_offset);
         const std::vector<SteadyRolling::Complex>& dq =
             fine.tangential.tangent(fine.conv, tangent_w_, tolerance, kMaxJacobianIterations);
-        for (int j = 0; j < ny_; ++j) {
-            const double y = fine.geom.Y(j) * s.dx;
-            for (int i = 0; i < nx_; ++i) {
-                const SteadyRolling::Complex v = dq[i + nx_ * j];
-                const double x = fine.geom.X(i) * s.dx;
-                dS[0][k] += v.real();
-                dS[1][k] += v.imag();
-                dS[2][k] += x * v.imag() - y * v.real();
-            }
-        }
+        const TractionMoments m = traction_moments(
+            dq, nx_, ny_, [&](int i) { return fine.geom.X(i) * s.dx; },
+            [&](int j) { return fine.geom.Y(j) * s.dx; });
+        dS[0][k] = m.x;
+        dS[1][k] = m.y;
+        dS[2][k] = m.z;
     }
 
     // c = rolling-frame creepage / slip_scale (phi per element length dx);

@@ -9,32 +9,41 @@
 #include "contact/number_text.hpp"
 #include "contact/kalker_coefficients.hpp"
 #include "exact/exact_work.hpp"
+#include "exact/tangential_solve.hpp"
 
 namespace creepwork {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-constexpr int kKrylovDimension = 40;
-// Coarse grids: each about half the elements of the next finer one per
-// direction, while both directions keep at least this many.
-constexpr int kMinCoarseCells = 10;
-// Coarse grids only give the next one a start (where the slip zone lies):
-// solved this far. Measured on the benchmark contact: 1e-1 needs fewer FFT
-// products in all than 1e-2 ... 1e-6 (72 against 80 ... 114 at N = 40).
-constexpr double kCoarseTolerance = 1e-1;
 // The normal problem: max |gap| / approach on the contact set, and bounds.
 constexpr double kNormalTolerance = 1e-10;
 constexpr int kNormalMaxIterations = 500;
-// Normalised creepages beyond this slide everywhere; they are scaled down
-// together (as FASTSIM does, march/march_setup.hpp) so nothing can overflow.
-constexpr double kMaxNormalisedCreepage = 1e100;
-
 } // namespace
 
+// The level's convolution serves its normal problem too.
 ExactModel::Level::Level(int nx_, int ny_)
-    : nx(nx_), ny(ny_), conv(nx_, ny_), normal(nx_, ny_), tangential(nx_, ny_, kKrylovDimension)
+    : TangentialLevel(nx_, ny_, ConvolutionUse::both), normal(nx_, ny_)
 {
 }
+
+// The model's steps of the tangential solve (tangential_solve.hpp).
+struct ExactModel::Steps {
+    ExactModel& m;
+    const ContactInput& in;
+    double ratio; // a / b
+    TangentialLevel& level(int l) { return *m.levels_[l]; }
+    void prepare(int l)
+    {
+        Level& L = *m.levels_[l];
+        m.solve_normal(L, ratio, in.warm_start, "coarse");
+        std::vector<double>& gl = L.tangential.bound();
+        for (size_t k = 0; k < gl.size(); ++k) gl[k] = L.normal.pressure()[k];
+        m.set_rigid_slip(L);
+    }
+    void first_guess(int l) { m.fastsim_start(*m.levels_[l], ratio, in.nu, in.G, in.a, in.b); }
+    void interpolate(int l) { m.interpolate(*m.levels_[l + 1], *m.levels_[l]); }
+    void predict() { m.predict_start(ratio, in.nu); }
+};
 
 ExactModel::ExactModel(const GridSpec& grid)
     : nx_(grid.nx), ny_(grid.ny), box_scale_(grid.box_scale)
@@ -56,11 +65,7 @@ ExactModel::ExactModel(const GridSpec& grid)
                     "box_scale = " + number_text(grid.box_scale) + " is outside [1, 100]");
     int nx = nx_, ny = ny_;
     levels_.push_back(std::make_unique<Level>(nx, ny));
-    while ((nx + 1) / 2 >= kMinCoarseCells && (ny + 1) / 2 >= kMinCoarseCells) {
-        nx = (nx + 1) / 2;
-        ny = (ny + 1) / 2;
-        levels_.push_back(std::make_unique<Level>(nx, ny));
-    }
+    while (coarser(nx, ny)) levels_.push_back(std::make_unique<Level>(nx, ny));
     const size_t n = static_cast<size_t>(nx_) * ny_;
     history_.resize(n);
     paper_.assign(n, 0.0);
@@ -72,6 +77,11 @@ ExactModel::ExactModel(const GridSpec& grid)
 }
 
 ExactModel::~ExactModel() = default;
+
+void ExactModel::set_kernel_isa(KernelIsa isa)
+{
+    for (auto& L : levels_) L->conv.set_kernel_isa(isa);
+}
 
 void ExactModel::solve_normal(Level& L, double ratio, bool warm, const char* which)
 {
@@ -119,51 +129,18 @@ void ExactModel::fastsim_start(Level& L, double ratio, double nu, double G, doub
     const double l1 = dx / (F.L1 * G), l2 = dx / (F.L2 * G), l3 = dx / (F.L3 * G);
     const double h = levels_[0]->geom.alpha / L.geom.alpha;
     const double cphi = setup_.c_phi * h;
-    const std::vector<double>& g = L.tangential.bound();
-    std::vector<SteadyRolling::Complex>& q = L.tangential.traction();
-    for (int j = 0; j < L.ny; ++j) {
-        SteadyRolling::Complex prev(0.0, 0.0);
-        for (int i = L.nx - 1; i >= 0; --i) {
-            const int k = i + L.nx * j;
-            if (!(g[k] > 0.0)) {
-                q[k] = prev = 0.0;
-                continue;
-            }
-            const double X = L.geom.X(i), Y = L.geom.Y(j);
-            SteadyRolling::Complex next =
-                prev - SteadyRolling::Complex(l1 * setup_.c_xi - l3 * cphi * Y,
-                                              l2 * setup_.c_eta + l3 * cphi * X);
-            const double m = std::abs(next);
-            if (m > g[k]) next *= g[k] / m;
-            q[k] = prev = next;
-        }
-    }
+    simplified_march(
+        L, l1, l2, l3, setup_.c_xi, setup_.c_eta, cphi, [&](int i) { return L.geom.X(i); },
+        [&](int j) { return L.geom.Y(j); });
 }
 
 // Bilinear interpolation of the coarse traction at the fine element centres
 // (both grids cover the same box), then clipped by the fine solver.
 void ExactModel::interpolate(const Level& C, Level& F) const
 {
-    const std::vector<SteadyRolling::Complex>& qc = C.tangential.traction();
-    std::vector<SteadyRolling::Complex>& qf = F.tangential.traction();
-    for (int j = 0; j < F.ny; ++j) {
-        const double ty = (j + 0.5) / F.ny * C.ny - 0.5;
-        const int j0 = static_cast<int>(std::floor(ty));
-        const double fy = ty - j0;
-        for (int i = 0; i < F.nx; ++i) {
-            const double tx = (i + 0.5) / F.nx * C.nx - 0.5;
-            const int i0 = static_cast<int>(std::floor(tx));
-            const double fx = tx - i0;
-            SteadyRolling::Complex v(0.0, 0.0);
-            for (int dj = 0; dj < 2; ++dj)
-                for (int di = 0; di < 2; ++di) {
-                    const int ii = std::min(std::max(i0 + di, 0), C.nx - 1);
-                    const int jj = std::min(std::max(j0 + dj, 0), C.ny - 1);
-                    v += (di ? fx : 1.0 - fx) * (dj ? fy : 1.0 - fy) * qc[ii + C.nx * jj];
-                }
-            qf[i + F.nx * j] = v;
-        }
-    }
+    interpolate_traction(
+        C, F, [&](int i) { return (i + 0.5) / F.nx * C.nx - 0.5; },
+        [&](int j) { return (j + 0.5) / F.ny * C.ny - 0.5; });
 }
 
 // Warm start: the secant prediction of creepage_history.hpp (the history is
@@ -183,12 +160,8 @@ void ExactModel::remember(double ratio, double nu)
                       levels_[0]->tangential.state().data());
 }
 
-SolveTotals ExactModel::solve(const ContactInput& in, SolveMode mode)
+void ExactModel::validate(const ContactInput& in) const
 {
-    const bool had_previous = has_previous_;
-    has_previous_ = false; // until this solve succeeds
-    if (!had_previous) history_.clear();
-    info_ = ExactSolveInfo{};
     validate_contact_input(in);
     if (in.flexibility != FlexibilitySource::kalker_from_material)
         throw Error(ErrorKind::invalid_input,
@@ -199,11 +172,11 @@ SolveTotals ExactModel::solve(const ContactInput& in, SolveMode mode)
         reject_input("tolerance", in.tolerance,
                      "must be 0 (the default, 1e-8) or in [1e-13, 1) for model = exact: "
                      "double precision cannot resolve less");
-    const int max_steps = in.max_iterations > 0 ? in.max_iterations : kExactDefaultMaxIterations;
+}
 
-    Level& fine = *levels_[0];
+void ExactModel::set_up(const ContactInput& in, SolveMode mode)
+{
     const double ratio = in.a / in.b;
-    const double nu = in.nu, G = in.G;
     Setup& s = setup_;
     s = Setup{};
     s.direction = in.rolling_direction;
@@ -225,14 +198,15 @@ SolveTotals ExactModel::solve(const ContactInput& in, SolveMode mode)
 
     for (auto& L : levels_) {
         L->geom = ExactGeometry(L->nx, L->ny, box_scale_, ratio);
-        L->conv.set_coefficients(L->geom.rho, nu);
+        L->conv.set_coefficients(L->geom.rho, in.nu);
     }
+}
 
-    const bool loaded = in.normal_force > 0.0;
-    const bool warm_normal = in.warm_start;
-    if (loaded) solve_normal(fine, ratio, warm_normal, "finest");
-
-    // Rigid slip over mu p0 / G, with phi per element length dx.
+// The rigid slip over mu p0 / G, with phi per element length dx; without
+// friction or load the rigid slip itself.
+void ExactModel::set_normalised_creepages(double G)
+{
+    Setup& s = setup_;
     const double inv = s.traction_scale > 0.0 ? G / s.traction_scale : 0.0;
     double cx = s.xi * inv, cy = s.eta * inv, cp = s.phi * s.dx * inv;
     s.slip_scale = s.traction_scale > 0.0 ? s.traction_scale / G : 1.0;
@@ -241,20 +215,28 @@ SolveTotals ExactModel::solve(const ContactInput& in, SolveMode mode)
         cy = s.eta;
         cp = s.phi * s.dx;
     }
-    const double largest = std::max({std::fabs(cx), std::fabs(cy), std::fabs(cp) * nx_});
-    if (!std::isfinite(largest))
-        throw Error(ErrorKind::invalid_input,
-                    "xi_x, xi_y or phi is so large that the rigid slip overflows");
-    if (largest > kMaxNormalisedCreepage) {
-        const double f = kMaxNormalisedCreepage / largest;
-        cx *= f;
-        cy *= f;
-        cp *= f;
-        s.slip_scale /= f;
-    }
+    limit_rigid_slip(cx, cy, cp, nx_, s.slip_scale);
     s.c_xi = cx;
     s.c_eta = cy;
     s.c_phi = cp;
+}
+
+SolveTotals ExactModel::solve(const ContactInput& in, SolveMode mode)
+{
+    const bool had_previous = has_previous_;
+    has_previous_ = false; // until this solve succeeds
+    if (!had_previous) history_.clear();
+    info_ = ExactSolveInfo{};
+    validate(in);
+    const double tolerance = in.tolerance > 0.0 ? in.tolerance : kExactDefaultTolerance;
+    const int max_steps = in.max_iterations > 0 ? in.max_iterations : kExactDefaultMaxIterations;
+    set_up(in, mode);
+
+    Level& fine = *levels_[0];
+    const double ratio = in.a / in.b;
+    const bool loaded = in.normal_force > 0.0;
+    if (loaded) solve_normal(fine, ratio, in.warm_start, "finest");
+    set_normalised_creepages(in.G);
 
     std::vector<double>& g = fine.tangential.bound();
     const std::vector<double>& qn = fine.normal.pressure();
@@ -263,61 +245,33 @@ SolveTotals ExactModel::solve(const ContactInput& in, SolveMode mode)
     set_rigid_slip(fine);
 
     // No load: no contact. No friction: no traction, and the contact slips
-    // with the rigid slip.
+    // with the rigid slip. Without creepage the solution is zero traction,
+    // exactly.
+    const Setup& s = setup_;
     const bool trivial = !loaded || !(s.traction_scale > 0.0);
+    const bool rolling_freely = s.c_xi == 0.0 && s.c_eta == 0.0 && s.c_phi == 0.0;
+    Steps steps{*this, in, ratio};
+    const SteadyRollingInfo ti = solve_tangential(
+        steps, static_cast<int>(levels_.size()),
+        tangential_start(trivial, rolling_freely, in.warm_start && had_previous), tolerance,
+        max_steps, info_);
 
-    SteadyRollingInfo ti;
-    auto cold = [&] {
-        const int coarsest = static_cast<int>(levels_.size()) - 1;
-        for (int l = coarsest; l >= 0; --l) {
-            Level& L = *levels_[l];
-            if (l > 0) {
-                solve_normal(L, ratio, warm_normal, "coarse");
-                std::vector<double>& gl = L.tangential.bound();
-                for (size_t k = 0; k < gl.size(); ++k) gl[k] = L.normal.pressure()[k];
-                set_rigid_slip(L);
-            }
-            if (l == coarsest)
-                fastsim_start(L, ratio, nu, G, in.a, in.b);
-            else
-                interpolate(*levels_[l + 1], L);
-            ti = L.tangential.solve(L.conv, l == 0 ? tolerance : std::max(tolerance,
-                                                                           kCoarseTolerance),
-                                    max_steps);
-            info_.products += ti.products;
-            ++info_.levels_used;
-        }
-    };
-    // Without creepage the solution is zero traction, exactly.
-    const bool rolling_freely = cx == 0.0 && cy == 0.0 && cp == 0.0;
-    if (rolling_freely && !trivial) {
-        std::fill(fine.tangential.traction().begin(), fine.tangential.traction().end(), 0.0);
-        ti = fine.tangential.solve(fine.conv, tolerance, max_steps); // one sweep
-        info_.products += ti.products;
-        info_.levels_used = 1;
-    } else if (trivial) {
-        fine.tangential.slide_freely(g);
-        ti.converged = true;
-        info_.levels_used = 1;
-    } else if (in.warm_start && had_previous) {
-        info_.warm = true;
-        predict_start(ratio, nu);
-        ti = fine.tangential.solve(fine.conv, tolerance, max_steps, true);
-        info_.products += ti.products;
-        info_.levels_used = 1;
-        if (!ti.converged) {
-            info_.retried_cold = true;
-            cold();
-        }
-    } else {
-        cold();
-    }
-    info_.newton_steps = ti.newton_steps;
-    require_converged(ti, tolerance);
+    SolveTotals t = totals(in, ti);
+    if (s.full) add_work(t);
+    has_previous_ = !trivial;
+    if (!trivial && !rolling_freely) remember(ratio, in.nu);
+    return t;
+}
 
-    // Totals in the caller's frame, summed element by element in a fixed order.
+// Totals in the caller's frame, summed element by element in a fixed order.
+SolveTotals ExactModel::totals(const ContactInput& in, const SteadyRollingInfo& ti) const
+{
+    const Level& fine = *levels_[0];
+    const Setup& s = setup_;
+    const bool loaded = in.normal_force > 0.0;
     const std::vector<SteadyRolling::Complex>& q = fine.tangential.traction();
     const std::vector<signed char>& state = fine.tangential.state();
+    const std::vector<double>& qn = fine.normal.pressure();
     const double T = s.traction_scale, area = s.dx * s.dy;
     double fx = 0.0, fy = 0.0, mz = 0.0, pmax = 0.0;
     int n_contact = 0, n_slip = 0;
@@ -348,8 +302,8 @@ SolveTotals ExactModel::solve(const ContactInput& in, SolveMode mode)
     t.adhesion_fraction = n_contact > 0 ? double(t.n_adhesion) / n_contact : 0.0;
     t.a = in.a;
     t.b = in.b;
-    const CreepCoefficients C = kalker_coefficients(ratio, nu);
-    const Flexibilities F = kalker_flexibilities(in.a, in.b, G, C);
+    const CreepCoefficients C = kalker_coefficients(in.a / in.b, in.nu);
+    const Flexibilities F = kalker_flexibilities(in.a, in.b, in.G, C);
     t.C11 = C.C11;
     t.C22 = C.C22;
     t.C23 = C.C23;
@@ -358,32 +312,34 @@ SolveTotals ExactModel::solve(const ContactInput& in, SolveMode mode)
     t.L2 = F.L2;
     t.L3 = F.L3;
     t.p_max = s.p0 * pmax;
-    t.approach = loaded ? fine.normal.approach() * s.p0 * s.dx / G : 0.0;
+    t.approach = loaded ? fine.normal.approach() * s.p0 * s.dx / in.G : 0.0;
     t.iterations = ti.newton_steps;
     t.residual = ti.residual;
-
-    if (s.full) {
-        ExactWorkInput w;
-        w.nx = nx_;
-        w.ny = ny_;
-        w.q = q.data();
-        w.s = fine.tangential.slip().data();
-        w.w = fine.tangential.rigid_slip().data();
-        w.state = state.data();
-        w.traction_scale = T;
-        w.slip_scale = s.slip_scale;
-        w.area = area;
-        w.dy = s.dy;
-        w.b = in.b;
-        w.y0 = fine.geom.Y(0) * s.dx;
-        w.W_macro = t.W_macro;
-        set_work_totals(exact_work(w, paper_.data(), consistent_.data(), profile_.data(),
-                                   row_d_.data(), row_pool_.data()),
-                        t);
-    }
-    has_previous_ = !trivial;
-    if (!trivial && !rolling_freely) remember(ratio, nu);
     return t;
+}
+
+// The work maps and their totals (full mode).
+void ExactModel::add_work(SolveTotals& t)
+{
+    Level& fine = *levels_[0];
+    const Setup& s = setup_;
+    ExactWorkInput w;
+    w.nx = nx_;
+    w.ny = ny_;
+    w.q = fine.tangential.traction().data();
+    w.s = fine.tangential.slip().data();
+    w.w = fine.tangential.rigid_slip().data();
+    w.state = fine.tangential.state().data();
+    w.traction_scale = s.traction_scale;
+    w.slip_scale = s.slip_scale;
+    w.area = s.dx * s.dy;
+    w.dy = s.dy;
+    w.b = s.b;
+    w.y0 = fine.geom.Y(0) * s.dx;
+    w.W_macro = t.W_macro;
+    set_work_totals(exact_work(w, paper_.data(), consistent_.data(), profile_.data(),
+                               row_d_.data(), row_pool_.data()),
+                    t);
 }
 
 } // namespace creepwork

@@ -1,15 +1,15 @@
 // Kalker's exact half-space theory of steady rolling on CONTACT's uniform
-// grid, as one model of the contact (../shared/reference/
-// doc/theory/exact-discretisation.md lists the discretisation; CONTACT's method a).
+// grid, as one model of the contact (doc/theory/exact-discretisation.md
+// lists the discretisation; CONTACT's method a).
 // Made once per grid -- it owns every workspace, FFT plan and coefficient
 // table -- then solve() many times without allocating.
 //
-// One solve: the half-space coefficients of the grid (influence.hpp,
-// grid_convolution.hpp; recomputed only when a/b or nu change), the normal
+// One solve: the half-space coefficients of the grid (halfspace/influence.hpp,
+// halfspace/grid_convolution.hpp; recomputed only when a/b or nu change), the normal
 // problem with the force prescribed (normal_problem.hpp; its normalised
 // pressure depends only on the grid and a/b, so it is kept and reused), then
 // the tangential problem (steady_rolling.hpp) and, in full mode, the work
-// maps (exact_work.hpp). The tangential problem starts from
+// maps (exact_work.hpp). The tangential problem (tangential_solve.hpp) starts from
 //  - the last solution on this model (tractions in units of mu p0) when
 //    warm_start is set and the last exact solve succeeded, else
 //  - a hierarchy of coarser grids over the same box (about half the
@@ -27,35 +27,28 @@
 #include <memory>
 #include <vector>
 
+#include "contact/contact_model.hpp"
 #include "contact/fields.hpp"
-#include "contact_model.hpp"
 #include "contact/jacobian.hpp"
 #include "contact/params.hpp"
 #include "exact/creepage_history.hpp"
-#include "exact/exact_geometry.hpp"
-#include "exact/grid_convolution.hpp"
-#include "exact/normal_problem.hpp"
+#include "exact/tangential_solve.hpp"
 #include "exact/steady_rolling.hpp"
+#include "halfspace/exact_geometry.hpp"
+#include "halfspace/grid_convolution.hpp"
+#include "normal/normal_problem.hpp"
 
 namespace creepwork {
 
-// Largest grid of the exact model per direction (memory grows with the
-// square: about 2 kB per element with all levels and the Krylov basis, most
-// of it in the FFT arrays of the 4x larger padded grid).
-constexpr int kMaxExactCells = 256;
 // Defaults of ContactInput::tolerance and max_iterations for this model.
 constexpr double kExactDefaultTolerance = 1e-8;
 constexpr int kExactDefaultMaxIterations = 50;
 constexpr double kExactDefaultSpinOffset = 1.0 / 6.0; // CONTACT's facphi
 
-// Diagnostics of the last solve.
-struct ExactSolveInfo {
-    int levels_used = 0;      // grids solved (1 for a warm start)
-    int newton_steps = 0;     // on the finest grid
-    int products = 0;         // FFT products, all grids (each ~ the cost of one)
+// Diagnostics of the last solve: the tangential solve's, and the normal
+// problem's conjugate-gradient iterations.
+struct ExactSolveInfo : TangentialInfo {
     int normal_iterations = 0;
-    bool warm = false;        // started from the last solution
-    bool retried_cold = false;
 };
 
 class ExactModel : public ContactModel {
@@ -82,24 +75,29 @@ public:
     // Per row j < ny: centre y [m], energy-consistent work per unit width
     // [J/m per m], and the equal-area parabola of total W at y.
     void copy_profile(double W, double* y, double* work, double* parabola) const override;
+    // The FFTs' kernel (every ISA gives the same bits).
+    void set_kernel_isa(KernelIsa isa) override;
 
 private:
-    // One grid of the hierarchy with its coefficients and solvers.
-    struct Level {
+    // One grid of the hierarchy with its geometry and normal problem.
+    struct Level : TangentialLevel {
         Level(int nx, int ny);
-        int nx, ny;
         ExactGeometry geom;
-        GridConvolution conv;
         NormalProblem normal;
-        SteadyRolling tangential;
         // The normal solution held: for which a/b and nu, and whether it was
         // computed from scratch (a cold solve reuses only such a one, so that
         // results never depend on what was solved before).
         bool normal_valid = false, normal_cold = false;
         double normal_ratio = 0, normal_nu = 0;
     };
+    struct Steps; // of the tangential solve
     template <class Op>
     void export_field(Field f, const Op& op, double* out) const;
+    void validate(const ContactInput& in) const;
+    void set_up(const ContactInput& in, SolveMode mode); // setup_, the levels' geometry
+    void set_normalised_creepages(double G);
+    SolveTotals totals(const ContactInput& in, const SteadyRollingInfo& ti) const;
+    void add_work(SolveTotals& t);
     void solve_normal(Level& level, double ratio, bool warm, const char* which);
     void interpolate(const Level& coarse, Level& fine) const;
     void fastsim_start(Level& level, double ratio, double nu, double G, double a, double b) const;

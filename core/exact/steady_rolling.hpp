@@ -3,7 +3,7 @@
 // element lengths dx, tractions q = p / (mu p0), slips s = (S / dq) G / (mu p0)
 // -- the shift of element I per step dq = dx is
 //   s_I = w_I + sum_J B(I - J) q_J,   B(k, l) = A(k, l) - A(k + 1, l),
-// with w the rigid slip and A the half-space coefficients (influence.hpp),
+// with w the rigid slip and A the half-space coefficients (halfspace/influence.hpp),
 // and Coulomb's law holds element by element with bound g_I = pn_I / p0.
 //
 // Method. B is dominated by its diagonal and the coupling to the element
@@ -27,7 +27,7 @@
 #include <memory>
 #include <vector>
 
-#include "exact/grid_convolution.hpp"
+#include "halfspace/grid_convolution.hpp"
 #include "exact/local_friction.hpp"
 
 namespace creepwork {

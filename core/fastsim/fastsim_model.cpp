@@ -1,10 +1,17 @@
 #include "fastsim/fastsim_model.hpp"
 
+#include <utility>
+
 #include "fastsim/fastsim_jacobian.hpp"
 
 namespace creepwork {
 
-FastsimModel::FastsimModel(const GridSpec& grid) : MarchModel(grid)
+FastsimModel::FastsimModel(const GridSpec& grid)
+    : FastsimModel(std::make_shared<const ContactGrid>(grid))
+{
+}
+
+FastsimModel::FastsimModel(std::shared_ptr<const ContactGrid> grid) : MarchModel(std::move(grid))
 {
     tangent_.resize(geometry());
 }

@@ -16,6 +16,7 @@ namespace creepwork {
 class FastsimModel : public MarchModel {
 public:
     explicit FastsimModel(const GridSpec& grid);
+    explicit FastsimModel(std::shared_ptr<const ContactGrid> grid); // a solver's grid
 
     // Throws Error(invalid_input) naming a bad input.
     SolveTotals solve(const ContactInput& input, SolveMode mode) override;

@@ -18,7 +18,7 @@ void require_finite(const char* name, double v)
 }
 
 // Kalker's 1982 strip layout, reconstructed from his published check values
-// (../shared/reference/kalker1982_checks.csv: all five rows to 4 decimals;
+// (tests/data/kalker1982_checks.csv: all five rows to 4 decimals;
 // the rules below were identified by reproducing them, see doc/migrating.md):
 //  1. The spin pole (x0, y0) = (-uy/fy, ux/fx) is where the rigid slip
 //     (ux - y fx, uy + x fy) vanishes. If it lies inside the unit disk, the

@@ -14,7 +14,7 @@
 #pragma once
 
 #include "contact/contact_grid.hpp"
-#include "march/kernel_isa.hpp"
+#include "simd/kernel_isa.hpp"
 #include "march/march_geometry.hpp"
 #include "march/march_setup.hpp"
 

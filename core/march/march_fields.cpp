@@ -5,7 +5,7 @@
 #include <type_traits>
 
 #include "march/march_model.hpp"
-#include "march/simd.hpp"
+#include "simd/simd.hpp"
 
 // The vector types below never cross a non-inlined call: their ABI is moot.
 #if defined(__GNUC__) || defined(__clang__)
@@ -259,7 +259,7 @@ ExportArgs export_args(const MarchGeometry& geo, const double* bound, const Cont
 template <class Op>
 void MarchModel::export_field(Field f, const Op& op, double* out) const
 {
-    const ExportArgs A = export_args(geometry_, bound_, grid_, setup_, state_, work_);
+    const ExportArgs A = export_args(geometry_, bound_, *grid_, setup_, state_, work_);
     run_kernel<ExportKernel>(isa_, A, f, op, out);
 }
 
@@ -272,7 +272,7 @@ void MarchModel::add_field(Field f, double scale, double* out) const
 
 void MarchModel::copy_state(int* out) const
 {
-    const ExportArgs A = export_args(geometry_, bound_, grid_, setup_, state_, work_);
+    const ExportArgs A = export_args(geometry_, bound_, *grid_, setup_, state_, work_);
     run_kernel<StateKernel>(isa_, A, out);
 }
 

@@ -1,6 +1,7 @@
 #include "march/march_model.hpp"
 
 #include <string>
+#include <utility>
 
 #include "contact/error.hpp"
 #include "contact/fp_safe.hpp"
@@ -8,11 +9,16 @@
 
 namespace creepwork {
 
-MarchModel::MarchModel(const GridSpec& grid)
-    : grid_(grid), geometry_(grid_), isa_(best_kernel_isa()), load_(creepwork::discrete_load(grid_))
+MarchModel::MarchModel(const GridSpec& grid) : MarchModel(std::make_shared<const ContactGrid>(grid))
 {
-    state_.resize(grid_.size(), grid_.ny());
-    work_.resize(grid_.size(), grid_.ny());
+}
+
+MarchModel::MarchModel(std::shared_ptr<const ContactGrid> grid)
+    : grid_(std::move(grid)), geometry_(*grid_), isa_(best_kernel_isa()),
+      load_(creepwork::discrete_load(*grid_))
+{
+    state_.resize(grid_->size(), grid_->ny());
+    work_.resize(grid_->size(), grid_->ny());
     bound_ = geometry_.shape(PressureKind::parabolic).data();
 }
 
@@ -29,14 +35,14 @@ void MarchModel::begin(const ModelSetup& setup, const double* bound, double boun
     setup_ = setup;
     bound_ = bound;
     bound_max_ = bound_max;
-    set_rigid_slip(grid_, setup_.kin, state_, 0, grid_.ny());
+    set_rigid_slip(*grid_, setup_.kin, state_, 0, grid_->ny());
 }
 
 void MarchModel::march() { creepwork::march(view(), isa_); }
 
 void MarchModel::march_with_work()
 {
-    creepwork::march_with_work(geometry_, bound_, grid_, setup_, state_, work_, isa_);
+    creepwork::march_with_work(geometry_, bound_, *grid_, setup_, state_, work_, isa_);
 }
 
 SolveTotals MarchModel::totals(const ContactInput& input, SolveMode mode, ModelKind model)
@@ -44,10 +50,10 @@ SolveTotals MarchModel::totals(const ContactInput& input, SolveMode mode, ModelK
     // Totals in the rolling frame: F = T a b sum(p' A'), A' per strip.
     const double T = setup_.traction_scale, a = setup_.a, b = setup_.b;
     double Phi[3];
-    scaled_forces(grid_, a, b, state_, Phi);
+    scaled_forces(*grid_, a, b, state_, Phi);
     const double fx = Phi[0] * T, fy = Phi[1] * T, mz = Phi[2] * T;
     int n_slip = 0;
-    for (int j = 0; j < grid_.ny(); ++j) n_slip += static_cast<int>(state_.slip_count[j]);
+    for (int j = 0; j < grid_->ny(); ++j) n_slip += static_cast<int>(state_.slip_count[j]);
 
     SolveTotals t;
     const double d = setup_.direction;
@@ -76,7 +82,7 @@ SolveTotals MarchModel::totals(const ContactInput& input, SolveMode mode, ModelK
             hertz_from_semi_axes(a, b, input.normal_force, input.G / (1.0 - input.nu)).approach;
 
     if (mode == SolveMode::full) {
-        const WorkTotals w = distribute_work(geometry_, grid_, setup_, t.W_macro, work_, isa_);
+        const WorkTotals w = distribute_work(geometry_, *grid_, setup_, t.W_macro, work_, isa_);
         t.W_micro_paper = w.W_micro_paper;
         t.K = quotient_or_zero(t.W_macro, w.W_micro_paper);
         t.W_consistent = w.W_consistent;
@@ -90,8 +96,8 @@ SolveTotals MarchModel::totals(const ContactInput& input, SolveMode mode, ModelK
 
 void MarchModel::copy_profile(double W, double* y, double* work, double* parabola) const
 {
-    for (int j = 0; j < grid_.ny(); ++j) {
-        const double yj = setup_.b * grid_.y_centre()[j];
+    for (int j = 0; j < grid_->ny(); ++j) {
+        const double yj = setup_.b * grid_->y_centre()[j];
         if (y) y[j] = yj;
         if (work) work[j] = work_.profile[j];
         if (parabola) parabola[j] = equal_area_parabola(W, setup_.b, yj);

@@ -10,20 +10,22 @@
 // computed from them while it is copied out (march_fields.cpp).
 #pragma once
 
+#include <memory>
+
 #include "contact/contact_grid.hpp"
-#include "contact_model.hpp"
-#include "march/kernel_isa.hpp"
+#include "contact/contact_model.hpp"
 #include "march/march.hpp"
 #include "march/march_geometry.hpp"
 #include "march/march_setup.hpp"
 #include "march/march_step.hpp"
 #include "march/march_work.hpp"
+#include "simd/kernel_isa.hpp"
 
 namespace creepwork {
 
 class MarchModel : public ContactModel {
 public:
-    const ContactGrid& grid() const { return grid_; }
+    const ContactGrid& grid() const { return *grid_; }
     KernelIsa kernel_isa() const { return isa_; }
     // Throws Error(invalid_input) when this CPU cannot run isa.
     void set_kernel_isa(KernelIsa isa) override;
@@ -34,7 +36,9 @@ public:
     void copy_profile(double W, double* y, double* work, double* parabola) const override;
 
 protected:
-    explicit MarchModel(const GridSpec& grid);
+    explicit MarchModel(const GridSpec& grid); // on a grid of its own
+    // On a grid shared with other models (a solver's).
+    explicit MarchModel(std::shared_ptr<const ContactGrid> grid);
 
     // One solve: the setup and the traction bound (per element, the
     // kernels' layout, in units of setup.pressure_scale; largest value
@@ -46,7 +50,10 @@ protected:
     void march();
     void march_with_work();
     // The view of every strip for a model's own kernels (a Jacobian march).
-    MarchView view() { return march_view(geometry_, bound_, setup_.kin.cy, state_, 0, grid_.ny()); }
+    MarchView view()
+    {
+        return march_view(geometry_, bound_, setup_.kin.cy, state_, 0, grid_->ny());
+    }
     // Totals of the march just done, reported as model; full mode also
     // distributes the work.
     SolveTotals totals(const ContactInput& input, SolveMode mode, ModelKind model);
@@ -63,7 +70,7 @@ private:
     template <class Op>
     void export_field(Field f, const Op& op, double* out) const;
 
-    ContactGrid grid_;
+    std::shared_ptr<const ContactGrid> grid_;
     MarchGeometry geometry_; // the grid in the kernels' layout
     MarchState state_;
     WorkState work_;

@@ -9,7 +9,7 @@
 #pragma once
 
 #include "march/march_geometry.hpp"
-#include "march/simd.hpp"
+#include "simd/simd.hpp"
 
 namespace creepwork {
 

@@ -1,8 +1,8 @@
 // The contact problem of each wheel/rail patch solved on its undeformed
 // distance grid through creepwork::Solver on a gap grid: by Kalker's exact
-// theory (exact/gap_model.hpp) as CONTACT's module 1 solves it, or by the
+// theory (gap/gap_exact_model.hpp) as CONTACT's module 1 solves it, or by the
 // fast model, FASTSIM with the semi-Hertzian normal problem
-// (nonhertz/gap_fastsim_model.hpp). The
+// (gap/gap_fastsim_model.hpp). The
 // approach of a patch is its penetration at the wheelset's height (the
 // grid's datum, approach 0), the creepages are the patch's own. Results are
 // in CONTACT's module-1 conventions (forces on the rail, patch frame; MN

@@ -9,7 +9,7 @@
 
 #include <algorithm>
 
-#include "exact/influence.hpp"
+#include "halfspace/influence.hpp"
 
 namespace cw = creepwork;
 

@@ -11,10 +11,10 @@
 
 #include "test_support.h"
 
-#include "exact/batched_fft.hpp"
+#include "halfspace/batched_fft.hpp"
 #include "exact/creepage_history.hpp"
-#include "exact/grid_convolution.hpp"
-#include "exact/influence.hpp"
+#include "halfspace/grid_convolution.hpp"
+#include "halfspace/influence.hpp"
 #include "exact/local_friction.hpp"
 
 namespace cw = creepwork;

@@ -1,4 +1,4 @@
-// The semi-Hertzian normal method (nonhertz/semi_hertz.hpp) against the
+// The semi-Hertzian normal method (normal/semi_hertz.hpp) against the
 // exact half-space normal problem on the same gaps, with the exact model's
 // tangential problem on each pressure: the DEV shapes of
 // tests/data/nonhertz/dev and the shapes of gap_shapes.hpp.

@@ -1,4 +1,4 @@
-// FASTSIM on a gap grid (nonhertz/gap_fastsim_model.hpp) through the core's
+// FASTSIM on a gap grid (gap/gap_fastsim_model.hpp) through the core's
 // Solver:
 //  - against the exact model (Kalker's exact theory on the same gap, the
 //    source of every accuracy bound here) on the DEV shapes of
@@ -25,7 +25,7 @@
 #include <cstring>
 
 #include "contact/error.hpp"
-#include "nonhertz/gap_march.hpp"
+#include "gap/gap_march.hpp"
 
 namespace cw = creepwork;
 

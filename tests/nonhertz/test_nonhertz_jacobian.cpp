@@ -1,5 +1,5 @@
-// The Jacobians on a gap grid (core/exact/gap_jacobian.cpp,
-// core/nonhertz/gap_fastsim_jacobian.cpp) against independent numbers:
+// The Jacobians on a gap grid (core/gap/gap_exact_jacobian.cpp,
+// core/gap/gap_fastsim_jacobian.cpp) against independent numbers:
 //  - on the Hertzian gap of a uniform grid the exact model on the gap solves
 //    the elliptic exact model's discrete problem (test_nonhertz_model), so
 //    its creepage columns must be the elliptic model's (exact_jacobian.cpp,

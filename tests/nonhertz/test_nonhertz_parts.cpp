@@ -19,11 +19,11 @@
 #include <vector>
 
 #include "contact/hertz.hpp"
-#include "exact/exact_geometry.hpp"
-#include "exact/grid_convolution.hpp"
-#include "exact/normal_problem.hpp"
-#include "nonhertz/patches.hpp"
-#include "nonhertz/semi_hertz.hpp"
+#include "halfspace/exact_geometry.hpp"
+#include "halfspace/grid_convolution.hpp"
+#include "normal/normal_problem.hpp"
+#include "normal/patches.hpp"
+#include "normal/semi_hertz.hpp"
 
 namespace cw = creepwork;
 

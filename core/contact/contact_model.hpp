@@ -1,0 +1,56 @@
+// The interface every model of the contact implements: how the tangential
+// tractions are found differs (fastsim/, calibrated/, exact/, gap/), what a solve
+// returns does not. The solver (../solver.hpp) makes each model on first use
+// from one registration (make_model in solver.cpp) and holds the one that
+// solved last, whose fields it exports.
+#pragma once
+
+#include <vector>
+
+#include "contact/fields.hpp"
+#include "contact/jacobian.hpp"
+#include "contact/params.hpp"
+#include "simd/kernel_isa.hpp"
+
+namespace creepwork {
+
+class ContactModel {
+public:
+    virtual ~ContactModel() = default;
+
+    // Throws Error naming a bad input (or not_converged, numeric_failure).
+    // A model is made once per grid and solves many times without
+    // allocating.
+    virtual SolveTotals solve(const ContactInput& input, SolveMode mode) = 0;
+    // The same solve (totals bitwise those of solve()) and rows Fx, Fy, Mz
+    // of the Jacobian by xi_x, xi_y, phi, N (contact/jacobian.hpp; the
+    // W_macro row is the solver's). jacobian is written only on success.
+    virtual SolveTotals solve_jacobian(const ContactInput& input, SolveMode mode,
+                                       Jacobian& jacobian) = 0;
+
+    // Of the last successful solve (the caller checks that there is one,
+    // and that it was full for fields that need the work), in the caller's
+    // layout [i + j*nx] (contact/fields.hpp).
+    virtual void copy_field(Field f, double* out) const = 0;
+    virtual void add_field(Field f, double scale, double* out) const = 0; // out += scale * f
+    virtual void copy_state(int* out) const = 0;
+    // Per strip j < ny: centre y [m], energy-consistent work per unit width
+    // [J/m per m], and the equal-area parabola of total W at y; null
+    // pointers are skipped.
+    virtual void copy_profile(double W, double* y, double* work, double* parabola) const = 0;
+    // The separate patches of the last solve, for models that find them
+    // (those on a gap grid); null otherwise (the solver reports the contact
+    // as one patch).
+    virtual const std::vector<PatchTotals>* patches() const { return nullptr; }
+    // Per row j < ny of a model whose rows have sizes of their own (those on
+    // a gap grid): centre y [m] and width [m]; false otherwise (the solver
+    // scales its grid's strips by the last solve's semi-axis b).
+    virtual bool copy_strips(double* /*y*/, double* /*width*/) const { return false; }
+
+    // The ISA of the model's SIMD kernels (simd/kernel_isa.hpp), supported
+    // by this CPU; every ISA gives bitwise the same results. Models without
+    // such kernels ignore it.
+    virtual void set_kernel_isa(KernelIsa) {}
+};
+
+} // namespace creepwork

@@ -1,0 +1,36 @@
+// FASTSIM's Jacobian on a gap grid: the march of the solve again in forward
+// mode (gap_march_tangent.hpp) with the solve's pressure, patches,
+// flexibilities and spin centres, and the normal method's dp/dN
+// (normal/gap_normal.hpp) in the N column: d/dN along the solution, whether
+// the force or the approach is prescribed. Held fixed: the contact set, the
+// patches and so their flexibilities and spin centres (they change only
+// where an element enters or leaves contact).
+
+#include "contact/jacobian_load.hpp"
+#include "gap/gap_fastsim_model.hpp"
+#include "gap/gap_march_tangent.hpp"
+
+namespace creepwork {
+
+SolveTotals GapFastsimModel::solve_jacobian(const ContactInput& in, SolveMode mode, Jacobian& J)
+{
+    const SolveTotals t = solve(in, mode);
+    if (gap_jacobian_is_zero(in, t.n_contact, J)) return t;
+    Jacobian out;
+    normal_.load_derivative(dp_dN_.data());
+
+    // The march's input as solve() gives it (rolling frame).
+    const double d = direction_;
+    const GapMarchInput m = march_input(in);
+    double dF[3][4];
+    gap_march_tangent(m, dp_dN_.data(), dF);
+
+    // Caller's frame: Fx = d Fx', Mz = d Mz' (x = d x'), xi = d xi_x, phi = d phi.
+    const double frame[3] = {d, 1.0, d}, dc[4] = {d, 1.0, d, 1.0};
+    for (int r = 0; r < 3; ++r)
+        for (int c = 0; c < 4; ++c) out.d[r][c] = frame[r] * dF[r][c] * dc[c];
+    J = out;
+    return t;
+}
+
+} // namespace creepwork

@@ -1,0 +1,23 @@
+// Forward-mode derivatives of the march on a gap grid (gap_march.hpp): the
+// march again, each element carrying the derivative of its traction by the
+// rolling-frame creepages xi, eta, phi and by the normal force N. Per
+// element q = p_prev - dx omega with omega linear in (xi, eta, phi), so
+//   adhesion: dp = dq,
+//   slip:     p = g q / |q| (g = mu pz), dp = (g / |q|) (I - e e^T) dq + e dg,
+//             e = q / |q|,
+// with dg = mu dpz/dN in the N column (the normal method's derivative) and
+// dq = dp_prev - dx domega. The patches' flexibilities and spin centres
+// depend on their sizes in whole elements, piecewise constant in N: held
+// fixed. An element exactly on the bound takes the state the march found.
+#pragma once
+
+#include "gap/gap_march.hpp"
+
+namespace creepwork {
+
+// dF[r][c]: r = Fx, Fy, Mz (rolling frame, Mz about its origin; N, N m),
+// c = xi, eta, phi (rolling frame), N. dpressure: dpz/dN [1/m^2] per element
+// [i + nx j] (rolling frame), or null (N column zero). Allocates nothing.
+void gap_march_tangent(const GapMarchInput& in, const double* dpressure, double dF[3][4]);
+
+} // namespace creepwork

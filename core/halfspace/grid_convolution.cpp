@@ -1,0 +1,420 @@
+#include "halfspace/grid_convolution.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "halfspace/influence.hpp"
+
+namespace creepwork {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+// The distance between one element of a batch and the next (the lines are
+// contiguous, BatchedFft): a multiple of 16 lines puts every element of a
+// stage's butterflies on the same few cache sets (a 128 x 128 batch took
+// 2.5 times as long per point as a 132 x 128 one on this machine's cores;
+// 128, 144 and 160 lines were slow, 120 ... 168 otherwise not), so such a
+// count gets 4 lines more, zero and transformed with the rest.
+int line_stride(int lines) { return lines % 16 == 0 ? lines + 4 : lines; }
+
+// One column kx of the tangential product in Fourier space (apply_tangential).
+void multiply_column(int n, double fr, double fi, const double* __restrict al,
+                     const double* __restrict br, const double* __restrict bi,
+                     const double* __restrict zr, const double* __restrict zi,
+                     const double* __restrict mr, const double* __restrict mi,
+                     double* __restrict sr, double* __restrict si)
+{
+    for (int k = 0; k < n; ++k) {
+        const double tr = al[k] * zr[k] + br[k] * mr[k] + bi[k] * mi[k];
+        const double ti = al[k] * zi[k] + bi[k] * mr[k] - br[k] * mi[k];
+        sr[k] = fr * tr - fi * ti;
+        si[k] = fr * ti + fi * tr;
+    }
+}
+
+} // namespace
+
+GridConvolution::GridConvolution(int nx, int ny, ConvolutionUse use)
+    : nx_(nx), ny_(ny), nx_max_(nx), ny_max_(ny), use_(use),
+      // The steady shift needs A(k + 1) for k up to nx - 1, and the kernels
+      // are stored symmetrically (real spectra): offsets -nx..nx along x
+      // without wrap-around, -(ny - 1)..(ny - 1) along y.
+      mx_(BatchedFft::good_size(2 * nx + 1)), my_(BatchedFft::good_size(2 * ny - 1)),
+      fft_x_(mx_), fft_y_(my_)
+{
+    // Offsets to tabulate: |k| <= nx, |l| <= ny - 1 for the products, and the
+    // whole periodic cell |k| <= mx/2, |l| <= my/2 for the preconditioner.
+    kmax_ = std::max(nx_, mx_ / 2);
+    lmax_ = std::max(ny_ - 1, my_ / 2);
+    const size_t parts = static_cast<size_t>(kmax_ + 1) * (lmax_ + 1);
+    X_.resize(parts);
+    Y_.resize(parts);
+    R_.resize(parts);
+    corner_work_.resize(3 * static_cast<size_t>(kmax_ + 2) * (lmax_ + 2));
+    const size_t m = static_cast<size_t>(mx_) * my_;
+    sy_ = line_stride(my_);
+    // The largest batch of any size up to this one: the padded field by rows
+    // (my lines of mx columns and padding) or by columns (mx lines of my and
+    // padding); line_stride adds at most 4.
+    const size_t cap = static_cast<size_t>(mx_ + 4) * (my_ + 4);
+    kern1_.resize(m);
+    kern2_.resize(m);
+    alpha_.resize(m);
+    beta_re_.resize(m);
+    beta_im_.resize(m);
+    k33_.resize(m);
+    k33_inv_.resize(m);
+    shift_.resize(mx_);
+    set_shift();
+    rows_re_.assign(cap, 0.0);
+    rows_im_.assign(cap, 0.0);
+    spec_re_.assign(cap, 0.0);
+    spec_im_.assign(cap, 0.0);
+    out_re_.assign(cap, 0.0);
+    out_im_.assign(cap, 0.0);
+    back_re_.assign(cap, 0.0);
+    back_im_.assign(cap, 0.0);
+    mirror_.assign(2 * static_cast<size_t>(my_), 0.0);
+    work_.assign(2 * cap, 0.0);
+}
+
+void GridConvolution::set_shift()
+{
+    for (int kx = 0; kx < mx_; ++kx) {
+        const double t = 2.0 * kPi * kx / mx_;
+        shift_[kx] = Complex(1.0 - std::cos(t), -std::sin(t));
+    }
+}
+
+bool GridConvolution::set_size(int nx, int ny)
+{
+    nx_ = nx;
+    ny_ = ny;
+    padded_cols_ = padded_rows_ = -1;
+    const int mx = BatchedFft::good_size(2 * nx + 1), my = BatchedFft::good_size(2 * ny - 1);
+    if (mx == mx_ && my == my_) return false;
+    mx_ = mx;
+    my_ = my;
+    sy_ = line_stride(my_);
+    fft_x_.plan(mx_);
+    fft_y_.plan(my_);
+    set_shift();
+    spectra_ready_ = false;
+    return true;
+}
+
+double GridConvolution::cf11(int k, int l) const
+{
+    const int i = part_index(std::abs(k), std::abs(l));
+    return ((1.0 - nu_) * X_[i] + Y_[i]) / kPi;
+}
+
+double GridConvolution::cf22(int k, int l) const
+{
+    const int i = part_index(std::abs(k), std::abs(l));
+    return (X_[i] + (1.0 - nu_) * Y_[i]) / kPi;
+}
+
+double GridConvolution::cf12(int k, int l) const
+{
+    const int i = part_index(std::abs(k), std::abs(l));
+    return ((k < 0) != (l < 0) ? -nu_ : nu_) * R_[i] / kPi;
+}
+
+double GridConvolution::cf33(int k, int l) const
+{
+    const int i = part_index(std::abs(k), std::abs(l));
+    return (1.0 - nu_) * (X_[i] + Y_[i]) / kPi;
+}
+
+bool GridConvolution::set_coefficients(double rho, double nu)
+{
+    if (rho == rho_ && nu == nu_) return false;
+    if (rho != rho_)
+        influence_quadrant(kmax_, lmax_, rho, X_.data(), Y_.data(), R_.data(),
+                           corner_work_.data());
+    rho_ = rho;
+    nu_ = nu;
+    spectra_ready_ = false;
+    return true;
+}
+
+bool GridConvolution::copy_coefficients(const GridConvolution& from)
+{
+    if (from.rho_ == rho_ && from.nu_ == nu_) return false;
+    if (from.rho_ != rho_) {
+        std::copy(from.X_.begin(), from.X_.end(), X_.begin());
+        std::copy(from.Y_.begin(), from.Y_.end(), Y_.begin());
+        std::copy(from.R_.begin(), from.R_.end(), R_.begin());
+    }
+    rho_ = from.rho_;
+    nu_ = from.nu_;
+    spectra_ready_ = false;
+    return true;
+}
+
+void GridConvolution::compute_spectra()
+{
+    spectra_ready_ = true;
+    // Real-space kernels on the padded grid, offsets -ex..ex along x and
+    // -(ey-1)..(ey-1) along y, zero elsewhere: the largest field this FFT
+    // size holds without wrap-around, within the tabulated offsets (the
+    // constructor's nx x ny field: ex = nx, ey = ny). So the spectra depend
+    // on the FFT size only, not on the field's size below it.
+    const int ex = std::min(nx_max_, (mx_ - 1) / 2), ey = std::min(ny_max_, (my_ + 1) / 2);
+    const size_t m = static_cast<size_t>(mx_) * my_;
+    auto fill = [&](auto value, std::vector<double>& out) {
+        std::fill(out.begin(), out.begin() + m, 0.0);
+        for (int l = -(ey - 1); l <= ey - 1; ++l)
+            for (int k = -ex; k <= ex; ++k)
+                out[(k < 0 ? k + mx_ : k) + static_cast<size_t>(mx_) * (l < 0 ? l + my_ : l)] =
+                    value(k, l);
+    };
+    fill([&](int k, int l) { return 0.5 * (cf11(k, l) + cf22(k, l)); }, kern1_);
+    fill([&](int k, int l) { return cf33(k, l); }, kern2_);
+    kernel_spectrum_pair(kern1_, kern2_, alpha_, k33_);
+
+    if (use_ != ConvolutionUse::tangential) {
+        // The preconditioner: the kernel over the whole periodic cell, not cut
+        // off at the grid's offsets. Cut off, its spectrum has negative values
+        // when dy != dx (measured: a/b = 2 on 24 x 24 and 44 x 44 grids); over
+        // the whole cell it stayed positive for dy/dx = 0.05 ... 20 (min/max
+        // 1e-3 ... 1e-2). The clamp only keeps the inverse finite regardless.
+        for (int l = 0; l < my_; ++l)
+            for (int k = 0; k < mx_; ++k) {
+                const int kk = k <= mx_ / 2 ? k : k - mx_, ll = l <= my_ / 2 ? l : l - my_;
+                kern1_[k + static_cast<size_t>(mx_) * l] = cf33(kk, ll);
+            }
+        std::fill(kern2_.begin(), kern2_.begin() + m, 0.0);
+        kernel_spectrum_pair(kern1_, kern2_, k33_inv_, beta_re_); // beta_re_: scratch here
+        // k33_inv_ holds spectrum / (mx my); the inverse needs 1 / (spectrum mx my).
+        const double m2 = static_cast<double>(mx_) * my_ * static_cast<double>(mx_) * my_;
+        double largest = 0.0;
+        for (size_t i = 0; i < m; ++i) largest = std::max(largest, k33_inv_[i]);
+        for (size_t i = 0; i < m; ++i)
+            k33_inv_[i] = 1.0 / (std::max(k33_inv_[i], 1e-6 * largest) * m2);
+    }
+    if (use_ != ConvolutionUse::normal) {
+        fill([&](int k, int l) { return 0.5 * (cf11(k, l) - cf22(k, l)); }, kern1_);
+        fill([&](int k, int l) { return cf12(k, l); }, kern2_);
+        kernel_spectrum_pair(kern1_, kern2_, beta_re_, beta_im_);
+    }
+}
+
+// Two real kernels with real spectra (even, or odd in both directions) in one
+// complex FFT: the spectrum of k1 + i k2 is s1 + i s2.
+void GridConvolution::kernel_spectrum_pair(const std::vector<double>& k1,
+                                           const std::vector<double>& k2, std::vector<double>& s1,
+                                           std::vector<double>& s2)
+{
+    const double scale = 1.0 / (static_cast<double>(mx_) * my_);
+    // The kernel fills the padded grid; k1 and k2 are [kx + mx ky].
+    const size_t rc = line_stride(mx_);
+    for (int ky = 0; ky < my_; ++ky)
+        for (int kx = 0; kx < mx_; ++kx) {
+            rows_re_[ky * rc + kx] = k1[kx + static_cast<size_t>(mx_) * ky];
+            rows_im_[ky * rc + kx] = k2[kx + static_cast<size_t>(mx_) * ky];
+        }
+    forward(mx_, my_);
+    for (int kx = 0; kx < mx_; ++kx)
+        for (int ky = 0; ky < my_; ++ky) {
+            s1[ky + static_cast<size_t>(my_) * kx] = out_re_[ky + sy_ * kx] * scale;
+            s2[ky + static_cast<size_t>(my_) * kx] = out_im_[ky + sy_ * kx] * scale;
+        }
+}
+
+void GridConvolution::forward(int cols, int rows)
+{
+    // Along y: lines are the columns, element j at [j * rc + i] (rc >= cols:
+    // the columns cols ... rc - 1 are zero).
+    const size_t rc = line_stride(cols);
+    // The zeros around the field (rows_) and its columns (spec_) stay from the
+    // last call of the same size: nothing else writes there meanwhile.
+    const bool padded = cols == padded_cols_ && rows == padded_rows_;
+    padded_cols_ = cols;
+    padded_rows_ = rows;
+    if (!padded) {
+        clear_padding(rows_re_.data(), rows_im_.data(), rows, rc, cols);
+        const size_t used = static_cast<size_t>(rows) * rc;
+        std::fill(rows_re_.begin() + used, rows_re_.begin() + static_cast<size_t>(my_) * rc, 0.0);
+        std::fill(rows_im_.begin() + used, rows_im_.begin() + static_cast<size_t>(my_) * rc, 0.0);
+    }
+    fft_y_.transform(rows_re_.data(), rows_im_.data(), out_re_.data(), out_im_.data(),
+                     static_cast<int>(rc), false, work_.data());
+    // Transpose [ky][i] -> [i][ky], zero columns i >= cols, then along x:
+    // lines are the my rows ky (and sy_ - my zero ones), element i at
+    // [i * sy_ + ky].
+    for (int i = 0; i < cols; ++i) {
+        for (int ky = 0; ky < my_; ++ky) {
+            spec_re_[static_cast<size_t>(i) * sy_ + ky] = out_re_[ky * rc + i];
+            spec_im_[static_cast<size_t>(i) * sy_ + ky] = out_im_[ky * rc + i];
+        }
+    }
+    if (!padded) {
+        clear_padding(spec_re_.data(), spec_im_.data(), cols, sy_, my_);
+        std::fill(spec_re_.begin() + static_cast<size_t>(cols) * sy_,
+                  spec_re_.begin() + static_cast<size_t>(mx_) * sy_, 0.0);
+        std::fill(spec_im_.begin() + static_cast<size_t>(cols) * sy_,
+                  spec_im_.begin() + static_cast<size_t>(mx_) * sy_, 0.0);
+    }
+    fft_x_.transform(spec_re_.data(), spec_im_.data(), out_re_.data(), out_im_.data(),
+                     static_cast<int>(sy_), false, work_.data());
+}
+
+// Zero the values lines ... stride - 1 of the first count elements (the
+// padding lines of a batch: transformed, never read).
+void GridConvolution::clear_padding(double* re, double* im, int count, size_t stride, int lines)
+{
+    if (stride == static_cast<size_t>(lines)) return;
+    for (int e = 0; e < count; ++e) {
+        std::fill(re + e * stride + lines, re + (e + 1) * stride, 0.0);
+        std::fill(im + e * stride + lines, im + (e + 1) * stride, 0.0);
+    }
+}
+
+void GridConvolution::inverse()
+{
+    fft_x_.transform(back_re_.data(), back_im_.data(), out_re_.data(), out_im_.data(),
+                     static_cast<int>(sy_), true, work_.data());
+    const size_t rc = line_stride(nx_);
+    for (int ky = 0; ky < my_; ++ky)
+        for (int i = 0; i < nx_; ++i) {
+            back_re_[ky * rc + i] = out_re_[static_cast<size_t>(i) * sy_ + ky];
+            back_im_[ky * rc + i] = out_im_[static_cast<size_t>(i) * sy_ + ky];
+        }
+    clear_padding(back_re_.data(), back_im_.data(), my_, rc, nx_);
+    fft_y_.transform(back_re_.data(), back_im_.data(), out_re_.data(), out_im_.data(),
+                     static_cast<int>(rc), true, work_.data());
+}
+
+void GridConvolution::real_product(const double* p, double* u,
+                                   const std::vector<double>& spectrum)
+{
+    padded_cols_ = padded_rows_ = -1; // rows_ and spec_ in other layouts
+    const int nc = (nx_ + 1) / 2;  // complex columns: x-columns 2c and 2c + 1
+    const int h = my_ / 2;         // spectrum rows ky = 0 .. h (the rest by symmetry)
+    const size_t hl = static_cast<size_t>(h) + 1;
+    const size_t rc = line_stride(nc), sh = line_stride(static_cast<int>(hl));
+    // Along y: column pairs as one complex line, element j at [j * rc + c].
+    for (int j = 0; j < ny_; ++j)
+        for (int c = 0; c < nc; ++c) {
+            const size_t k = j * rc + c;
+            rows_re_[k] = p[2 * c + static_cast<size_t>(nx_) * j];
+            rows_im_[k] = 2 * c + 1 < nx_ ? p[2 * c + 1 + static_cast<size_t>(nx_) * j] : 0.0;
+        }
+    clear_padding(rows_re_.data(), rows_im_.data(), ny_, rc, nc);
+    const size_t used = static_cast<size_t>(ny_) * rc, total = static_cast<size_t>(my_) * rc;
+    std::fill(rows_re_.begin() + used, rows_re_.begin() + total, 0.0);
+    std::fill(rows_im_.begin() + used, rows_im_.begin() + total, 0.0);
+    fft_y_.transform(rows_re_.data(), rows_im_.data(), static_cast<int>(rc), false, work_.data());
+    // Separate the pair, Z = A + i B: A(k) = (Z(k) + conj Z(-k)) / 2,
+    // B(k) = (Z(k) - conj Z(-k)) / 2i, for ky <= h, into [i][ky] (stride sh).
+    for (int c = 0; c < nc; ++c)
+        for (int ky = 0; ky <= h; ++ky) {
+            const int km = ky == 0 ? 0 : my_ - ky;
+            const double zr = rows_re_[ky * rc + c];
+            const double zi = rows_im_[ky * rc + c];
+            const double wr = rows_re_[km * rc + c];
+            const double wi = rows_im_[km * rc + c];
+            const size_t a = static_cast<size_t>(2 * c) * sh + ky;
+            spec_re_[a] = 0.5 * (zr + wr);
+            spec_im_[a] = 0.5 * (zi - wi);
+            if (2 * c + 1 < nx_) {
+                spec_re_[a + sh] = 0.5 * (zi + wi);
+                spec_im_[a + sh] = -0.5 * (zr - wr);
+            }
+        }
+    clear_padding(spec_re_.data(), spec_im_.data(), nx_, sh, static_cast<int>(hl));
+    std::fill(spec_re_.begin() + static_cast<size_t>(nx_) * sh,
+              spec_re_.begin() + static_cast<size_t>(mx_) * sh, 0.0);
+    std::fill(spec_im_.begin() + static_cast<size_t>(nx_) * sh,
+              spec_im_.begin() + static_cast<size_t>(mx_) * sh, 0.0);
+    // Along x on the h + 1 lines, times the (real) kernel, and back.
+    fft_x_.transform(spec_re_.data(), spec_im_.data(), static_cast<int>(sh), false, work_.data());
+    for (int kx = 0; kx < mx_; ++kx)
+        for (int ky = 0; ky <= h; ++ky) {
+            const double k = spectrum[ky + static_cast<size_t>(my_) * kx];
+            spec_re_[static_cast<size_t>(kx) * sh + ky] *= k;
+            spec_im_[static_cast<size_t>(kx) * sh + ky] *= k;
+        }
+    fft_x_.transform(spec_re_.data(), spec_im_.data(), static_cast<int>(sh), true, work_.data());
+    // Each column's y-spectrum is Hermitian (the column is real): complete it
+    // and pair the columns again, W = T_2c + i T_2c+1, into [ky][c].
+    for (int c = 0; c < nc; ++c) {
+        const size_t a = static_cast<size_t>(2 * c) * sh;
+        const bool second = 2 * c + 1 < nx_;
+        for (int ky = 0; ky < my_; ++ky) {
+            const bool mirrored = ky > h;
+            const int kk = mirrored ? my_ - ky : ky;
+            const double s = mirrored ? -1.0 : 1.0; // conjugate
+            const double ar = spec_re_[a + kk], ai = s * spec_im_[a + kk];
+            const double br = second ? spec_re_[a + sh + kk] : 0.0;
+            const double bi = second ? s * spec_im_[a + sh + kk] : 0.0;
+            rows_re_[ky * rc + c] = ar - bi;
+            rows_im_[ky * rc + c] = ai + br;
+        }
+    }
+    clear_padding(rows_re_.data(), rows_im_.data(), my_, rc, nc);
+    fft_y_.transform(rows_re_.data(), rows_im_.data(), static_cast<int>(rc), true, work_.data());
+    for (int j = 0; j < ny_; ++j)
+        for (int c = 0; c < nc; ++c) {
+            const size_t k = j * rc + c;
+            u[2 * c + static_cast<size_t>(nx_) * j] = rows_re_[k];
+            if (2 * c + 1 < nx_) u[2 * c + 1 + static_cast<size_t>(nx_) * j] = rows_im_[k];
+        }
+}
+
+void GridConvolution::apply_normal(const double* p, double* u)
+{
+    if (!spectra_ready_) compute_spectra();
+    real_product(p, u, k33_);
+}
+
+void GridConvolution::apply_normal_inverse(const double* u, double* p)
+{
+    if (!spectra_ready_) compute_spectra();
+    real_product(u, p, k33_inv_);
+}
+
+void GridConvolution::apply_tangential(const Complex* z, Complex* s, bool steady)
+{
+    if (!spectra_ready_) compute_spectra();
+    const size_t rc = line_stride(nx_);
+    for (int j = 0; j < ny_; ++j)
+        for (int i = 0; i < nx_; ++i) {
+            rows_re_[j * rc + i] = z[i + static_cast<size_t>(nx_) * j].real();
+            rows_im_[j * rc + i] = z[i + static_cast<size_t>(nx_) * j].imag();
+        }
+    forward(nx_, ny_);
+    // s^(k) = f(kx) (alpha^(k) z^(k) + beta^(k) conj(z^(-k))), f the shift
+    // factor of column kx for the steady operator (1 otherwise). The spectrum
+    // z is read from out_ and s written to back_, every k on its own; z^(-k)
+    // is first copied in the order of k (mirror_), so that the loop runs
+    // forward and vectorises.
+    double* mirror_re = mirror_.data();
+    double* mirror_im = mirror_.data() + my_;
+    for (int kx = 0; kx < mx_; ++kx) {
+        const int kxm = kx == 0 ? 0 : mx_ - kx;
+        const double* mr = out_re_.data() + sy_ * kxm;
+        const double* mi = out_im_.data() + sy_ * kxm;
+        mirror_re[0] = mr[0];
+        mirror_im[0] = mi[0];
+        for (int ky = 1; ky < my_; ++ky) {
+            mirror_re[ky] = mr[my_ - ky];
+            mirror_im[ky] = mi[my_ - ky];
+        }
+        multiply_column(my_, steady ? shift_[kx].real() : 1.0, steady ? shift_[kx].imag() : 0.0,
+                        alpha_.data() + static_cast<size_t>(my_) * kx,
+                        beta_re_.data() + static_cast<size_t>(my_) * kx,
+                        beta_im_.data() + static_cast<size_t>(my_) * kx,
+                        out_re_.data() + sy_ * kx, out_im_.data() + sy_ * kx, mirror_re,
+                        mirror_im, back_re_.data() + sy_ * kx, back_im_.data() + sy_ * kx);
+    }
+    inverse();
+    for (int j = 0; j < ny_; ++j)
+        for (int i = 0; i < nx_; ++i)
+            s[i + static_cast<size_t>(nx_) * j] = Complex(out_re_[j * rc + i], out_im_[j * rc + i]);
+}
+
+} // namespace creepwork
