@@ -43,6 +43,7 @@ double best_of(int samples, int reps, Body&& body)
 
 void contact_table()
 {
+    std::printf("FASTSIM, Kalker strip grid, core, one core; us per contact (best of 21 samples)\n\n");
     std::printf("| grid | solve (full) us | fields us | temperature us | damage us | "
                 "(fields + temperature + damage) / solve |\n"
                 "|---|---:|---:|---:|---:|---:|\n");
@@ -114,7 +115,9 @@ void contact_table()
 
 void kernel_table()
 {
-    std::printf("\n| row length | direct ns/element | FFT ns/element (two rows per transform) |\n"
+    std::printf("\nThe moving-source kernel on one row, two rows per call; ns per element (best of 11 "
+                "samples)\n\n");
+    std::printf("| row length | direct ns/element | FFT ns/element (two rows per transform) |\n"
                 "|---:|---:|---:|\n");
     for (int n : {16, 32, 64, 96, 128, 256, 512, 1000}) {
         th::MovingSourceKernel direct(n, n), fft(n, 0);
