@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 
 #include "contact/contact_input.hpp"
@@ -13,6 +14,7 @@ namespace {
 
 constexpr double kPi = 3.141592653589793238462643383279502884;
 constexpr double kAbsoluteZero = -273.15; // [deg C]
+constexpr double kMaxHeat = 1e300;        // [W/m^2]: finite, with room for the sums
 
 void require_in(const char* name, double v, double lo, double hi, const char* rule)
 {
@@ -80,20 +82,39 @@ void validate_contact(const HeatedContact& in, int nx, int ny)
     for (int j = 0; j < ny; ++j)
         if (!(std::isfinite(in.row_dx[j]) && in.row_dx[j] > 0.0))
             reject_input("row_dx", in.row_dx[j], "must be a finite length > 0");
-    const long n = static_cast<long>(nx) * ny;
-    for (long e = 0; e < n; ++e)
-        if (!(std::isfinite(in.q[e]) && in.q[e] >= 0.0))
-            reject_input("q (frictional power density)", in.q[e], "must be finite and >= 0");
 }
 
-void track(TemperatureMaximum& m, double T, long e, const HeatedContact& in)
+// The heat q of the elements that heat is checked as the rows are read;
+// this names the first offender.
+[[noreturn]] void reject_heat(const HeatedContact& in)
 {
-    const bool better = m.element < 0 || T > m.T || (T == m.T && e < m.element);
-    if (!better) return;
-    m.T = T;
-    m.element = e;
-    m.x = in.x[e];
-    m.y = in.y[e];
+    const long n = static_cast<long>(in.nx) * in.ny;
+    long e = 0;
+    while (e + 1 < n && in.q[e] >= 0.0 && in.q[e] <= kMaxHeat) ++e;
+    reject_input("q (frictional power density)", in.q[e], "must be finite and >= 0");
+}
+
+// The first contact element (state >= 1) of T[lo..hi] holding the largest
+// value; the span holds at least one. Four running maxima, so that no
+// comparison waits for the one before (max is exact in any order).
+int hottest(const double* T, const int* state, int lo, int hi)
+{
+    const double none = -std::numeric_limits<double>::infinity();
+    double m[4] = {none, none, none, none};
+    int i = lo;
+    for (; i + 3 <= hi; i += 4)
+        for (int k = 0; k < 4; ++k) {
+            const double v = state[i + k] >= 1 ? T[i + k] : none;
+            m[k] = v > m[k] ? v : m[k];
+        }
+    for (; i <= hi; ++i) {
+        const double v = state[i] >= 1 ? T[i] : none;
+        m[0] = v > m[0] ? v : m[0];
+    }
+    const double top = std::max(std::max(m[0], m[1]), std::max(m[2], m[3]));
+    for (i = lo; i < hi; ++i)
+        if (state[i] >= 1 && T[i] == top) break;
+    return i;
 }
 
 } // namespace
@@ -131,53 +152,78 @@ TemperatureTotals FlashTemperature::compute(const HeatedContact& in, const Therm
     validate_contact(in, nx_, ny_);
     const Partition part = partition(p, in.rolling_direction);
     const int nx = nx_;
-    // Time order: t = 0 is the element a material point meets first.
-    auto element = [&](int t, int j) {
-        const int i = in.rolling_direction > 0 ? nx - 1 - t : t;
-        return i + static_cast<long>(j) * nx;
-    };
+    // Time order: t = 0 is the element a material point meets first; with
+    // rolling_direction +1 that is the last element of the row in storage.
+    const bool reversed = in.rolling_direction > 0;
+    const double T0[2] = {p.rail.T0, p.wheel.T0}, f[2] = {part.f1, part.f2};
+    double* T[2] = {T1, T2};
+    TemperatureMaximum* best[2] = {nullptr, nullptr};
     TemperatureTotals totals;
     totals.contact_temperature = part.Tc;
     totals.rail.T = p.rail.T0;
     totals.wheel.T = p.wheel.T0;
+    best[0] = &totals.rail;
+    best[1] = &totals.wheel;
     for (int j0 = 0; j0 < ny_; j0 += 2) {
         const int rows = std::min(2, ny_ - j0);
-        for (int r = 0; r < rows; ++r)
+        for (int r = 0; r < rows; ++r) {
+            const long base = static_cast<long>(j0 + r) * nx;
+            const int* st = in.state + base;
+            const double* q = in.q + base;
+            double* qt = q_[r].data();
+            bool bad = false;
             for (int t = 0; t < nx; ++t) {
-                const long e = element(t, j0 + r);
-                q_[r][t] = in.state[e] >= part.heat_state ? in.q[e] : 0.0;
+                const int i = reversed ? nx - 1 - t : t;
+                qt[t] = st[i] >= part.heat_state ? q[i] : 0.0;
+                bad |= !(qt[t] >= 0.0 && qt[t] <= kMaxHeat);
             }
+            if (bad) reject_heat(in);
+        }
         kernel_.apply(q_[0].data(), rows > 1 ? q_[1].data() : nullptr, flash_[0].data(),
                       rows > 1 ? flash_[1].data() : nullptr, part.self_weight);
         for (int r = 0; r < rows; ++r) {
-            const int j = j0 + r;
-            int first = -1, last = -1; // the row's contact span, time order
-            for (int t = 0; t < nx; ++t)
-                if (in.state[element(t, j)] >= 1) {
-                    if (first < 0) first = t;
-                    last = t;
+            const long base = static_cast<long>(j0 + r) * nx;
+            const int* st = in.state + base;
+            int lo = nx, hi = -1; // the row's contact span, storage order
+            for (int i = 0; i < nx; ++i)
+                if (st[i] >= 1) {
+                    lo = std::min(lo, i);
+                    hi = i;
                 }
-            const double dx = in.row_dx[j];
-            const double flash_scale = std::sqrt(dx);
+            const double dx = in.row_dx[j0 + r];
+            const double scale = std::sqrt(dx);
+            const double* flash = flash_[r].data();
+            for (int b = 0; b < 2; ++b) {
+                double* Tb = T[b] + base;
+                const double fb = f[b] * scale;
+                for (int i = 0; i < nx; ++i) {
+                    const double Fi = flash[reversed ? nx - 1 - i : i];
+                    Tb[i] = (st[i] >= 1 ? part.Tc : T0[b]) + fb * Fi;
+                }
+            }
+            if (hi < 0) continue;
+            // Behind the span each surface relaxes from T_c towards its own T0.
+            const int first = reversed ? nx - 1 - hi : lo, last = reversed ? nx - 1 - lo : hi;
             const double half_span = 0.5 * (last - first + 1) * dx;
-            for (int t = 0; t < nx; ++t) {
-                const long e = element(t, j);
-                const bool contact = in.state[e] >= 1;
-                double g = 0.0; // share of T_c - T0 in the bulk part behind the span
-                if (!contact && first >= 0 && t > last) {
-                    const double from_centre =
-                        (t - 0.5 * (first + last) + part.relax_shift) * dx;
-                    const double ratio = std::min(1.0, 2.0 * half_span / (half_span + from_centre));
-                    g = 2.0 / kPi * std::asin(std::sqrt(ratio));
-                }
-                const double flash = flash_scale * flash_[r][t];
-                const double base1 = contact ? part.Tc : p.rail.T0 + g * (part.Tc - p.rail.T0);
-                const double base2 = contact ? part.Tc : p.wheel.T0 + g * (part.Tc - p.wheel.T0);
-                T1[e] = base1 + part.f1 * flash;
-                T2[e] = base2 + part.f2 * flash;
-                if (contact) {
-                    track(totals.rail, T1[e], e, in);
-                    track(totals.wheel, T2[e], e, in);
+            for (int t = last + 1; t < nx; ++t) {
+                const int i = reversed ? nx - 1 - t : t;
+                if (st[i] >= 1) continue;
+                const double from_centre = (t - 0.5 * (first + last) + part.relax_shift) * dx;
+                const double ratio = std::min(1.0, 2.0 * half_span / (half_span + from_centre));
+                const double g = 2.0 / kPi * std::asin(std::sqrt(ratio));
+                const double Fi = flash[t];
+                for (int b = 0; b < 2; ++b)
+                    T[b][base + i] = T0[b] + g * (part.Tc - T0[b]) + f[b] * scale * Fi;
+            }
+            // The hottest contact element of each body (the first in storage
+            // order on a tie: rows in order, strict comparison).
+            for (int b = 0; b < 2; ++b) {
+                const long at = base + hottest(T[b] + base, st, lo, hi);
+                if (best[b]->element < 0 || T[b][at] > best[b]->T) {
+                    best[b]->T = T[b][at];
+                    best[b]->element = at;
+                    best[b]->x = in.x[at];
+                    best[b]->y = in.y[at];
                 }
             }
         }

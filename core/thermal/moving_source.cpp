@@ -1,5 +1,6 @@
 #include "thermal/moving_source.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "contact/error.hpp"
@@ -29,7 +30,10 @@ MovingSourceKernel::MovingSourceKernel(int length, int direct_max) : n_(length)
                     "row length " + std::to_string(length) + " must be >= 1");
     w_.assign(n_, 0.0);
     for (int k = 1; k < n_; ++k) w_[k] = weight(k);
-    if (n_ <= direct_max) return;
+    if (n_ <= direct_max) {
+        pair_.resize(2 * static_cast<size_t>(n_));
+        return;
+    }
     int L = 2;
     while (L < 2 * n_) L *= 2; // linear, not circular, convolution of two length-n rows
     fft_ = std::make_unique<RowFft>(L);
@@ -39,25 +43,61 @@ MovingSourceKernel::MovingSourceKernel(int length, int direct_max) : n_(length)
     buffer_.assign(L, {0.0, 0.0});
 }
 
-void MovingSourceKernel::direct(const double* q, double* out, double self_weight) const
+namespace {
+
+inline auto both(double v)
 {
-    for (int t = 0; t < n_; ++t) out[t] = self_weight * q[t];
-    // Source by source: only heated elements cost anything (adhesion and the
-    // exterior release no heat), and the inner loop vectorises.
-    for (int s = first_nonzero(q, n_); s < n_; ++s) {
-        const double qs = q[s];
-        if (qs == 0.0) continue;
-        const double* w = w_.data() - s; // w[t] = w_k for k = t - s
-        for (int t = s + 1; t < n_; ++t) out[t] += qs * w[t];
+    typedef double Pair __attribute__((vector_size(16)));
+    const Pair p = {v, v};
+    return p;
+}
+
+} // namespace
+
+void MovingSourceKernel::direct(const double* q_a, const double* q_b, double* out_a,
+                                double* out_b, double self_weight)
+{
+    Pair* __restrict__ q = pair_.data();
+    Pair* __restrict__ out = pair_.data() + n_;
+    for (int t = 0; t < n_; ++t) {
+        const Pair v = {q_a[t], q_b ? q_b[t] : 0.0};
+        q[t] = v;
+        out[t] = both(self_weight) * v;
     }
+    const double* w = w_.data(); // w[k] = w_k, w[0] unused
+    // Four sources at a time (each output loaded and stored once per four
+    // products); a block of unheated elements (adhesion, exterior) is skipped.
+    const int first = std::min(first_nonzero(q_a, n_), q_b ? first_nonzero(q_b, n_) : n_);
+    int s = first;
+    for (; s + 3 < n_; s += 4) {
+        const Pair p0 = q[s], p1 = q[s + 1], p2 = q[s + 2], p3 = q[s + 3];
+        const Pair any = (p0 != 0.0) | (p1 != 0.0) | (p2 != 0.0) | (p3 != 0.0);
+        if (!(any[0] || any[1])) continue;
+        out[s + 1] += p0 * both(w[1]);
+        out[s + 2] += p0 * both(w[2]) + p1 * both(w[1]);
+        out[s + 3] += p0 * both(w[3]) + p1 * both(w[2]) + p2 * both(w[1]);
+        Pair* __restrict__ o = out + s + 4;
+        const int m = n_ - s - 4;
+        for (int k = 0; k < m; ++k)
+            o[k] += (p0 * both(w[k + 4]) + p1 * both(w[k + 3])) +
+                    (p2 * both(w[k + 2]) + p3 * both(w[k + 1]));
+    }
+    for (; s < n_; ++s) {
+        const Pair p0 = q[s];
+        Pair* __restrict__ o = out + s + 1;
+        const int m = n_ - s - 1;
+        for (int k = 0; k < m; ++k) o[k] += p0 * both(w[k + 1]);
+    }
+    for (int t = 0; t < n_; ++t) out_a[t] = out[t][0];
+    if (out_b)
+        for (int t = 0; t < n_; ++t) out_b[t] = out[t][1];
 }
 
 void MovingSourceKernel::apply(const double* q_a, const double* q_b, double* out_a,
                                double* out_b, double self_weight)
 {
     if (!fft_) {
-        direct(q_a, out_a, self_weight);
-        if (q_b) direct(q_b, out_b, self_weight);
+        direct(q_a, q_b, out_a, out_b, self_weight);
         return;
     }
     // Both rows in one complex transform: the kernel is real, so the real

@@ -48,13 +48,19 @@ public:
                double self_weight);
 
 private:
-    void direct(const double* q, double* out, double self_weight) const;
+    void direct(const double* q_a, const double* q_b, double* out_a, double* out_b,
+                double self_weight);
 
     int n_ = 0;
     std::vector<double> w_;                        // w_[k], k < n (w_[0] = 0: the self term is apart)
     std::unique_ptr<RowFft> fft_;                  // rows longer than kDirectMaxLength
     std::vector<std::complex<double>> spectrum_;   // FFT of w, scaled by 1/L
     std::vector<std::complex<double>> buffer_;
+    // Two rows side by side, one vector operation for both (GCC's vector
+    // extension, as march/simd.hpp: plain IEEE multiply and add, so the
+    // result does not depend on the instruction set).
+    typedef double Pair __attribute__((vector_size(16)));
+    std::vector<Pair> pair_;                       // direct path: in and out
 };
 
 } // namespace creepwork::thermal
