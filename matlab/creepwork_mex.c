@@ -68,12 +68,22 @@ static const field_info params_fields[] = {CW_FIELDS_cw_params(FIELD_ENTRY)};
 static const field_info grid_fields[] = {CW_FIELDS_cw_grid(FIELD_ENTRY)};
 static const field_info result_fields[] = {CW_FIELDS_cw_result(FIELD_ENTRY)};
 static const field_info patch_fields[] = {CW_FIELDS_cw_patch(FIELD_ENTRY)};
+static const field_info tparams_fields[] = {CW_FIELDS_cw_temperature_params(FIELD_ENTRY)};
+static const field_info tresult_fields[] = {CW_FIELDS_cw_temperature_result(FIELD_ENTRY)};
+static const field_info dparams_fields[] = {CW_FIELDS_cw_damage_params(FIELD_ENTRY)};
+static const field_info dresult_fields[] = {CW_FIELDS_cw_damage_result(FIELD_ENTRY)};
 #undef FIELD_ENTRY
 #define COUNT(a) (sizeof(a) / sizeof((a)[0]))
 static const struct_info PARAMS = {"cw_params", params_fields, COUNT(params_fields)};
 static const struct_info GRID = {"cw_grid", grid_fields, COUNT(grid_fields)};
 static const struct_info RESULT = {"cw_result", result_fields, COUNT(result_fields)};
 static const struct_info PATCH = {"cw_patch", patch_fields, COUNT(patch_fields)};
+static const struct_info TPARAMS = {"cw_temperature_params", tparams_fields,
+                                    COUNT(tparams_fields)};
+static const struct_info TRESULT = {"cw_temperature_result", tresult_fields,
+                                    COUNT(tresult_fields)};
+static const struct_info DPARAMS = {"cw_damage_params", dparams_fields, COUNT(dparams_fields)};
+static const struct_info DRESULT = {"cw_damage_result", dresult_fields, COUNT(dresult_fields)};
 
 typedef struct {
     const char* struct_name;
@@ -385,6 +395,7 @@ static void warn_units(const cw_params* p, size_t count)
 /* ------------------------------------------------------------- solvers */
 
 static cw_solver* solvers[MAX_SOLVERS]; /* handles of creepwork.Solver objects */
+static int directions[MAX_SOLVERS];     /* rolling_direction of each one's last solve */
 
 static void destroy_all(void)
 {
@@ -518,6 +529,83 @@ static mxArray* solve_one(cw_solver* s, int owned, cw_params p, int fields, int 
     mxSetField(prof, 0, "w", w);
     mxSetField(prof, 0, "parabola", par);
     mxSetField(out, 0, "profile", prof);
+    return out;
+}
+
+/* ------------------------------------------------- surface post-processors */
+
+/* An nx-by-ny matrix of one field of a temperature or damage handle. */
+static mxArray* handle_field(int (*get)(const void*, int, double*, size_t), const void* h, int id,
+                             int nx, int ny)
+{
+    mxArray* m = mxCreateDoubleMatrix((size_t)nx, (size_t)ny, mxREAL);
+    if (get(h, id, mxGetPr(m), (size_t)nx * (size_t)ny) != CW_OK)
+        FAIL("internal", "reading a field of a surface post-processor");
+    return m;
+}
+
+static int temperature_field(const void* h, int id, double* out, size_t n)
+{
+    return cw_temperature_get_field((const cw_temperature*)h, id, out, n);
+}
+
+static int damage_field(const void* h, int id, double* out, size_t n)
+{
+    return cw_damage_get_field((const cw_damage*)h, id, out, n);
+}
+
+/* Both bodies' temperatures of s's last solve (the result's fields, and
+ * rail, wheel, heat as nx-by-ny matrices). */
+static mxArray* temperature_of(cw_solver* s, const cw_temperature_params* p)
+{
+    cw_temperature* t = NULL;
+    int status = cw_temperature_create(s, &t);
+    if (status != CW_OK) fail_status(status, "making the temperature workspace");
+    cw_temperature_result r;
+    cw_temperature_result_init(&r);
+    status = cw_temperature_compute(t, s, p, &r);
+    if (status != CW_OK) {
+        char message[MESSAGE_LEN];
+        snprintf(message, sizeof message, "%s", cw_temperature_last_error(t));
+        cw_temperature_destroy(t);
+        fail_status(status, message);
+    }
+    static const char* extra[] = {"rail", "wheel", "heat"};
+    mxArray* out = from_structs(&TRESULT, &r, sizeof r, 1, NULL, 3, extra);
+    int nx = 0, ny = 0;
+    cw_solver_grid_size(s, &nx, &ny);
+    const int ids[] = {CW_TEMPERATURE_FIELD_RAIL, CW_TEMPERATURE_FIELD_WHEEL,
+                       CW_TEMPERATURE_FIELD_HEAT};
+    for (int k = 0; k < 3; ++k)
+        mxSetField(out, 0, extra[k], handle_field(temperature_field, t, ids[k], nx, ny));
+    cw_temperature_destroy(t);
+    return out;
+}
+
+/* The damage indices of s's last solve (the result's fields, and
+ * rcf_index, t_gamma_density as nx-by-ny matrices). */
+static mxArray* damage_of(cw_solver* s, const cw_damage_params* p)
+{
+    cw_damage* d = NULL;
+    int status = cw_damage_create(s, &d);
+    if (status != CW_OK) fail_status(status, "making the damage workspace");
+    cw_damage_result r;
+    cw_damage_result_init(&r);
+    status = cw_damage_compute(d, s, p, &r);
+    if (status != CW_OK) {
+        char message[MESSAGE_LEN];
+        snprintf(message, sizeof message, "%s", cw_damage_last_error(d));
+        cw_damage_destroy(d);
+        fail_status(status, message);
+    }
+    static const char* extra[] = {"rcf_index", "t_gamma_density"};
+    mxArray* out = from_structs(&DRESULT, &r, sizeof r, 1, NULL, 2, extra);
+    int nx = 0, ny = 0;
+    cw_solver_grid_size(s, &nx, &ny);
+    const int ids[] = {CW_DAMAGE_FIELD_RCF_INDEX, CW_DAMAGE_FIELD_T_GAMMA_DENSITY};
+    for (int k = 0; k < 2; ++k)
+        mxSetField(out, 0, extra[k], handle_field(damage_field, d, ids[k], nx, ny));
+    cw_damage_destroy(d);
     return out;
 }
 
@@ -677,6 +765,7 @@ void mexFunction(int nlhs, mxArray* plhs[], int nrhs, const mxArray* prhs[])
         while (k < MAX_SOLVERS && solvers[k]) ++k;
         if (k == MAX_SOLVERS) FAIL("tooManySolvers", "more than %d solvers open", MAX_SOLVERS);
         solvers[k] = make_solver(a1);
+        directions[k] = 1;
         int nx = 0, ny = 0;
         cw_solver_grid_size(solvers[k], &nx, &ny);
         plhs[0] = mxCreateDoubleScalar(k + 1);
@@ -684,7 +773,22 @@ void mexFunction(int nlhs, mxArray* plhs[], int nrhs, const mxArray* prhs[])
         if (nlhs > 2) plhs[2] = mxCreateDoubleScalar(ny);
     } else if (strcmp(command, "solver_solve") == 0) { /* id, params, fields, jacobian */
         const int k = solver_id(a1);
-        plhs[0] = solve_one(solvers[k], 0, params_of(a2), flag(a3), flag(a4));
+        const cw_params p = params_of(a2);
+        plhs[0] = solve_one(solvers[k], 0, p, flag(a3), flag(a4));
+        directions[k] = p.rolling_direction;
+    } else if (strcmp(command, "solver_temperature") == 0) { /* id, params */
+        const int k = solver_id(a1);
+        cw_temperature_params tp;
+        cw_temperature_params_init(&tp);
+        tp.rolling_direction = directions[k]; /* the last solve's, unless given */
+        to_structs(&TPARAMS, a2, &tp, sizeof tp, 1);
+        plhs[0] = temperature_of(solvers[k], &tp);
+    } else if (strcmp(command, "solver_damage") == 0) { /* id, params */
+        const int k = solver_id(a1);
+        cw_damage_params dp;
+        cw_damage_params_init(&dp);
+        to_structs(&DPARAMS, a2, &dp, sizeof dp, 1);
+        plhs[0] = damage_of(solvers[k], &dp);
     } else if (strcmp(command, "solver_destroy") == 0) {
         const int k = solver_id(a1);
         cw_solver_destroy(solvers[k]);
