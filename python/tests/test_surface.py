@@ -49,6 +49,32 @@ def test_temperature_of_dissimilar_bodies():
         np.testing.assert_allclose(c.rail[inside], b2 / b1 * c.wheel[inside], rtol=1e-12)
 
 
+def test_temperature_against_a_direct_sum():
+    """Every element against the moving-source sum written here with numpy
+    from the solve's fields (Kalker's strip grid: each strip its own element
+    length, taken from the centres): per row, in the order the material
+    meets the elements, the heat V W/A of each upstream element integrated
+    exactly, half the element itself; equal bodies at one bulk temperature."""
+    with creepwork.Solver({"nx": 18, "ny": 12}) as s:
+        r = s.solve(**CONTACT)
+        t = s.temperature(rolling_speed=25.0, T0_1=20.0, T0_2=20.0)
+        q = np.where(r.area > 0, 25.0 * np.maximum(r.work_consistent, 0) / np.where(
+            r.area > 0, r.area, 1), 0.0)
+        C = 1.0 / (2 * steel_beta() * np.sqrt(np.pi * 25.0))
+        ref = np.empty_like(q)
+        for j in range(r.x.shape[0]):
+            x = r.x[j, ::-1]  # rolling towards +x: the material meets high x first
+            h = 0.5 * abs(x[1] - x[0])
+            qr = q[j, ::-1]
+            d = np.abs(x[:, None] - x[None, :])  # [t, u]
+            w = np.where(np.arange(len(x))[None, :] < np.arange(len(x))[:, None],
+                         2 * (np.sqrt(d + h) - np.sqrt(np.maximum(d - h, 0))), 0.0)
+            w[np.diag_indices(len(x))] = 2 * np.sqrt(h)
+            ref[j, ::-1] = 20.0 + C * (w @ qr)
+        np.testing.assert_allclose(t.rail, ref, rtol=1e-10, atol=0)
+        assert np.array_equal(t.rail, t.wheel)
+
+
 def test_damage_indices_in_full_sliding():
     with creepwork.Solver(GRID) as s:
         r = s.solve(a=7e-3, b=5e-3, N=100e3, mu=0.3, xi_x=0.05)

@@ -275,6 +275,43 @@ static void damage_indices(void** state)
     cw_solver_destroy(s);
 }
 
+/* Burstow's damage function with the defaults, written here: 0 up to 20 N,
+ * rising to 1e-5 at 65 N, falling to 0 at 175 N; on every test contact (its
+ * T_gamma = W_macro), some of them on each slope. */
+static void wlrm_damage_of_every_contact(void** state)
+{
+    (void)state;
+    int rising = 0, falling = 0;
+    for (int k = 0; k < CW_TEST_CASES; ++k) {
+        cw_params p;
+        cw_solver* s = solved(k, CW_GRID_KALKER_STRIPS, &p);
+        cw_result r;
+        cw_result_init(&r);
+        assert_status(cw_solver_get_result(s, &r), CW_OK);
+        cw_damage* d = NULL;
+        assert_status(cw_damage_create(s, &d), CW_OK);
+        cw_damage_params dp;
+        cw_damage_params_init(&dp);
+        dp.k_yield = 3e8;
+        cw_damage_result dr;
+        cw_damage_result_init(&dr);
+        assert_status(cw_damage_compute(d, s, &dp, &dr), CW_OK);
+        const double T = r.W_macro;
+        double expect = 0.0;
+        if (T > 20.0 && T <= 65.0) {
+            expect = 1e-5 * (T - 20.0) / 45.0;
+            ++rising;
+        } else if (T > 65.0 && T < 175.0) {
+            expect = 1e-5 * (175.0 - T) / 110.0;
+            ++falling;
+        }
+        assert_close(dr.wlrm_damage, expect, 1e-13, 1e-22);
+        cw_damage_destroy(d);
+        cw_solver_destroy(s);
+    }
+    assert_true(rising > 0 && falling > 0);
+}
+
 /* Every invalid input: its status, a message naming it, nothing written,
  * and the handle holds no result afterwards. */
 static void invalid_inputs(void** state)
@@ -393,6 +430,7 @@ int main(int argc, char** argv)
         cmocka_unit_test(temperature_matches_its_definition),
         cmocka_unit_test(contact_example_through_the_door),
         cmocka_unit_test(damage_indices),
+        cmocka_unit_test(wlrm_damage_of_every_contact),
         cmocka_unit_test(invalid_inputs),
     };
     return cw_run_tests(tests, argc > 1 ? argv[1] : NULL);
