@@ -41,5 +41,9 @@ catch err
   assert(strcmp(err.identifier, 'creepwork:CW_ERR_INVALID_INPUT'), err.identifier);
   assert(~isempty(strfind(err.message, 'conductivity_1')), err.message);
 end
+lastwarn('');
+s.temperature('rolling_speed', 30, 'conductivity_1', 0.05);
+[msg, id] = lastwarn();
+assert(strcmp(id, 'creepwork:implausibleUnits') && ~isempty(strfind(msg, 'conductivity_1')), msg);
 delete(s);
 disp('temperature and damage indices as the header defines them');

@@ -40,6 +40,7 @@ int command_solve(int argc, char** argv, int first)
     const Solution s = solver.solve_full(c.params);
     const SurfaceOutput post = compute_surface(solver.handle(), surface);
     print_notes(c);
+    for (const std::string& w : surface.warnings) std::fprintf(stderr, "creepwork: %s\n", w.c_str());
     JsonObject json = result_json(s.result, s.params, s.grid, c.units);
     add_surface_json(json, post);
     double J[CW_JACOBIAN_LEN] = {};

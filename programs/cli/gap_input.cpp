@@ -393,6 +393,7 @@ int command_solve_gap(const ParsedOptions& opts)
     const std::vector<cw_patch> patches = solver.patches();
     const SurfaceOutput post = compute_surface(solver.handle(), surface);
     print_notes(c);
+    for (const std::string& w : surface.warnings) std::fprintf(stderr, "creepwork: %s\n", w.c_str());
     JsonObject json = gap_json(s, patches, file, c.units);
     add_surface_json(json, post);
     double J[CW_JACOBIAN_LEN] = {};

@@ -4,6 +4,7 @@
 
 #include "cli_error.hpp"
 #include "contact_solver.hpp"
+#include "options.hpp"
 #include "report.hpp"
 
 namespace cwcli {
@@ -43,6 +44,37 @@ struct Destroy {
     int (*destroy)(T*);
     void operator()(T* p) const { destroy(p); }
 };
+
+// Values valid but implausible for steel: the unit most likely meant.
+std::vector<std::string> implausible(const SurfaceRequest& r)
+{
+    std::vector<std::string> w;
+    const auto say = [&w](const char* option, double v, const char* why) {
+        w.push_back(std::string("warning: --") + option + " = " + round_trip_text(v) + " " + why);
+    };
+    if (r.temperature) {
+        const cw_temperature_params& p = r.temperature_params;
+        for (const auto& [option, v] : {std::pair{"conductivity-1", p.conductivity_1},
+                                        std::pair{"conductivity-2", p.conductivity_2}})
+            if (v < 1.0 || v > 1000.0)
+                say(option, v, "W/(m K) is implausible for steel (50; W/(mm K) typed?)");
+        for (const auto& [option, v] : {std::pair{"heat-capacity-1", p.heat_capacity_1},
+                                        std::pair{"heat-capacity-2", p.heat_capacity_2}})
+            if (v < 100.0 || v > 5000.0)
+                say(option, v, "J/(kg K) is implausible for steel (450; kJ/(kg K) typed?)");
+        for (const auto& [option, v] : {std::pair{"density-1", p.density_1},
+                                        std::pair{"density-2", p.density_2}})
+            if (v < 1000.0 || v > 25000.0)
+                say(option, v, "kg/m^3 is implausible for steel (7850; g/cm^3 typed?)");
+        if (p.rolling_speed > 150.0)
+            say("speed", p.rolling_speed, "m/s is implausible: trains run below 150 m/s (km/h "
+                                          "typed as m/s?)");
+    }
+    if (r.damage && r.damage_params.k_yield > 0.0 && r.damage_params.k_yield < 1e6)
+        say("k-yield", r.damage_params.k_yield,
+            "Pa is implausible for steel's shear yield stress (2-6e8 Pa; MPa typed as Pa?)");
+    return w;
+}
 
 } // namespace surface_options_detail
 
@@ -87,6 +119,7 @@ SurfaceRequest read_surface_request(const ParsedOptions& opts, int rolling_direc
     }
     r.damage = opts.has("k-yield");
     if (r.damage) r.damage_params.k_yield = opts.number("k-yield", 0.0);
+    r.warnings = implausible(r);
     return r;
 }
 

@@ -23,6 +23,9 @@ struct SurfaceRequest {
     bool temperature = false, damage = false;
     cw_temperature_params temperature_params{};
     cw_damage_params damage_params{};
+    // "warning: ..." for values valid but implausible for steel wheels and
+    // rails (W/(mm K) typed as W/(m K), km/h as m/s, MPa as Pa).
+    std::vector<std::string> warnings;
 };
 
 // Throws CliError(kExitUsage) naming the option: a temperature option

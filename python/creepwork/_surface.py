@@ -16,6 +16,29 @@ if TYPE_CHECKING:
     from ._solver import Solver
 
 
+# (field, unit, condition, what is plausible): the thresholds of the CLI's
+# (programs/cli/surface_outputs.cpp, implausible()).
+_STEEL = [
+    ("conductivity_1", "W/(m K)", lambda v: v < 1.0 or v > 1000.0, "steel is 50 (W/(mm K) typed?)"),
+    ("conductivity_2", "W/(m K)", lambda v: v < 1.0 or v > 1000.0, "steel is 50 (W/(mm K) typed?)"),
+    ("heat_capacity_1", "J/(kg K)", lambda v: v < 100.0 or v > 5000.0,
+     "steel is 450 (kJ/(kg K) typed?)"),
+    ("heat_capacity_2", "J/(kg K)", lambda v: v < 100.0 or v > 5000.0,
+     "steel is 450 (kJ/(kg K) typed?)"),
+    ("density_1", "kg/m^3", lambda v: v < 1000.0 or v > 25000.0, "steel is 7850 (g/cm^3 typed?)"),
+    ("density_2", "kg/m^3", lambda v: v < 1000.0 or v > 25000.0, "steel is 7850 (g/cm^3 typed?)"),
+    ("rolling_speed", "m/s", lambda v: v > 150.0, "trains run below 150 m/s (km/h typed?)"),
+    ("k_yield", "Pa", lambda v: 0.0 < v < 1e6,
+     "steel's shear yield stress is 2-6e8 Pa (MPa typed as Pa?)"),
+]
+
+
+def _implausible(rec):
+    return ["%s = %.10g %s is implausible: %s" % (field, rec[field], unit, why)
+            for field, unit, bad, why in _STEEL
+            if field in rec.dtype.names and bad(float(rec[field]))]
+
+
 def _named(prefix):
     return {n[len(prefix):].lower(): v for n, v in CONSTANTS.items() if n.startswith(prefix)}
 
@@ -66,8 +89,10 @@ class _Surface(Handle):
         _errors.check(getattr(lib, "cw_%s_create" % self._noun)(solver._live(),
                                                                   ctypes.byref(self._handle)))
 
-    def _compute(self, solver, keywords):
+    def _compute(self, solver, keywords, warn):
         rec = self._params.record(keywords, "compute")
+        if warn:
+            _errors.warn_units(_implausible(rec), 3)
         res = np.zeros((), DTYPES["cw_%s_result" % self._noun])
         getattr(lib, "cw_%s_result_init" % self._noun)(address(res))
         self._check(getattr(lib, "cw_%s_compute" % self._noun)(
@@ -99,14 +124,15 @@ class Temperature(_Surface):
     _fields = TEMPERATURE_FIELDS
     _result_class = TemperatureResult
 
-    def compute(self, solver: "Solver", **keywords: Any) -> TemperatureResult:
+    def compute(self, solver: "Solver", warn: bool = True, **keywords: Any) -> TemperatureResult:
         """The temperatures of solver's last solve (which needs fields=True)
         from the keywords (the fields of cw_temperature_params, with
         cw_temperature_params_init's defaults; rolling_direction defaults to
-        that of solver's last solve):
+        that of solver's last solve). warn=False skips the plausibility check
+        for steel (UnitWarning):
         """
         keywords.setdefault("rolling_direction", getattr(solver, "_rolling_direction", 1))
-        return self._compute(solver, keywords)
+        return self._compute(solver, keywords, warn)
 
 
 class Damage(_Surface):
@@ -120,11 +146,12 @@ class Damage(_Surface):
     _fields = DAMAGE_FIELDS
     _result_class = DamageResult
 
-    def compute(self, solver: "Solver", **keywords: Any) -> DamageResult:
+    def compute(self, solver: "Solver", warn: bool = True, **keywords: Any) -> DamageResult:
         """The damage indices of solver's last solve (fields=True) from the
-        keywords (the fields of cw_damage_params; k_yield has no default):
+        keywords (the fields of cw_damage_params; k_yield has no default).
+        warn=False skips the plausibility check (UnitWarning):
         """
-        return self._compute(solver, keywords)
+        return self._compute(solver, keywords, warn)
 
 
 Temperature.compute.__doc__ += "\n" + TEMPERATURE_PARAMS.doc(8)

@@ -109,3 +109,12 @@ def test_errors_name_the_input():
         s.solve(fields=False, **CONTACT)
         with pytest.raises(creepwork.NoWorkError):
             s.temperature(rolling_speed=30.0)
+
+
+def test_implausible_units_warn():
+    with creepwork.Solver() as s:
+        s.solve(**CONTACT)
+        with pytest.warns(creepwork.UnitWarning, match=r"conductivity_1 = 0.05 W/\(m K\)"):
+            s.temperature(rolling_speed=30.0, conductivity_1=0.05)
+        with pytest.warns(creepwork.UnitWarning, match="k_yield = 300 Pa"):
+            s.damage(k_yield=300.0)

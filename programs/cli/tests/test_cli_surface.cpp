@@ -133,6 +133,18 @@ void surface_bad_inputs_fail_cleanly(void**)
     }
 }
 
+// Valid but implausible values for steel are warned about, naming the
+// option and the unit most likely meant; the run goes on.
+void surface_warns_about_implausible_units(void**)
+{
+    const Run r = cli_ok(with(kContact, {"--temperature", "--speed", "30", "--conductivity-1",
+                                         "0.05", "--heat-capacity-2", "45", "--k-yield", "300"}));
+    expect_contains(r.err, "--conductivity-1 = 0.05 W/(m K) is implausible for steel");
+    expect_contains(r.err, "--heat-capacity-2 = 45 J/(kg K) is implausible");
+    expect_contains(r.err, "--k-yield = 300 Pa is implausible");
+    expect_lacks(r.err, "--conductivity-2");
+}
+
 void surface_writes_pictures(void**)
 {
     if (std::getenv("CW_TEST_NO_GNUPLOT")) {
@@ -158,6 +170,7 @@ int main(int argc, char** argv)
         cmocka_unit_test(surface_matches_library),
         cmocka_unit_test(surface_contact_example),
         cmocka_unit_test(surface_bad_inputs_fail_cleanly),
+        cmocka_unit_test(surface_warns_about_implausible_units),
         cmocka_unit_test(surface_writes_pictures),
     };
     return cw_run_tests(tests, g_tools.test);
