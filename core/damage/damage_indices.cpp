@@ -43,7 +43,8 @@ DamageTotals damage_indices(const DamageInput& in, const DamageParams& p,
             out.t_gamma_density[e] = quotient_if_positive(std::max(0.0, in.work[e]), in.area[e]);
     }
     if (in.normal_force > 0.0 && in.contact_area > 0.0) {
-        t.mu_eff = std::hypot(in.Fx, in.Fy) / in.normal_force;
+        // fp_safe.hpp: divisions the compiler cannot hoist above the test
+        t.mu_eff = quotient_if_positive(std::hypot(in.Fx, in.Fy), in.normal_force);
         t.FI_surf = t.mu_eff - 2.0 * in.contact_area * p.k_yield / (3.0 * in.normal_force);
     }
     t.T_gamma = in.W_macro;
