@@ -119,9 +119,10 @@ typedef struct cw_damage_params {
                                 must be set */
     /* Burstow's damage per pass against T_gamma [N]: 0 up to wlrm_onset,
      * rising linearly to wlrm_peak_damage at wlrm_peak, falling linearly to 0
-     * at wlrm_zero, 0 beyond. Defaults 20 N, 65 N, 175 N, 1e-5 (as coded in
-     * the open-source railway_project of aliSaleh123; check against the
-     * report). 0 <= onset < peak < zero <= 1e6 N, peak damage in [0, 1]. */
+     * at wlrm_zero, 0 beyond. Defaults 20 N, 65 N, 175 N, 1e-5: a published
+     * form of Burstow's function (its source and the 15 N onset also quoted:
+     * doc/theory/damage.md). 0 <= onset < peak < zero <= 1e6 N, peak damage
+     * in [0, 1]. */
     double wlrm_onset, wlrm_peak, wlrm_zero, wlrm_peak_damage;
 } cw_damage_params;
 
