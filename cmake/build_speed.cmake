@@ -7,6 +7,9 @@
 # ccache when it is installed (and no launcher was chosen): a rebuild of an
 # unchanged source costs a look-up. A precompiled header is only cached
 # when ccache ignores its macros and time stamps, so the launcher says so.
+# Paths are hashed relative to the top of the source tree, so that another
+# copy of the tree (the documentation's recipes build one) finds the
+# objects of this one.
 option(CREEPWORK_USE_CCACHE "Compile through ccache when it is installed" ON)
 if(CREEPWORK_USE_CCACHE)
   find_program(CREEPWORK_CCACHE ccache)
@@ -20,6 +23,7 @@ if(CREEPWORK_USE_CCACHE)
     if(_cw_launcher STREQUAL "ccache")
       set(CMAKE_${_cw_lang}_COMPILER_LAUNCHER ${CMAKE_COMMAND} -E env
           CCACHE_SLOPPINESS=pch_defines,time_macros,include_file_mtime,include_file_ctime
+          CCACHE_BASEDIR=${PROJECT_SOURCE_DIR}
           ${CMAKE_${_cw_lang}_COMPILER_LAUNCHER})
     endif()
   endforeach()
