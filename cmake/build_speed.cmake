@@ -43,17 +43,18 @@ endfunction()
 
 # creepwork_unity_folders(<target> BATCH <n> FOLDERS <folder>...): the
 # target's sources in each folder compiled as translation units of at most
-# <n> sources (a unity build: the headers, Eigen's templates and the inline
-# functions they share are compiled once per unit). Sources of other
-# folders, and sources with options of their own, stay units of their
-# own. A folder is listed once its sources share a namespace without a
-# clash (two private constants of one name do not compile).
+# <n> sources, as few units as that allows, of equal size (a unity build:
+# the headers, Eigen's templates and the inline functions they share are
+# compiled once per unit). Sources of other folders, and sources with
+# options of their own, stay units of their own. A folder is listed once its
+# sources share a namespace without a clash (two private constants of one
+# name do not compile).
 function(creepwork_unity_folders target)
   cmake_parse_arguments(U "" "BATCH" "FOLDERS" ${ARGN})
   get_target_property(_cw_sources ${target} SOURCES)
   get_target_property(_cw_dir ${target} SOURCE_DIR)
   foreach(_cw_folder IN LISTS U_FOLDERS)
-    set(_cw_count 0)
+    set(_cw_members "")
     foreach(_cw_source IN LISTS _cw_sources)
       if(IS_ABSOLUTE "${_cw_source}")
         file(RELATIVE_PATH _cw_relative ${_cw_dir} ${_cw_source})
@@ -61,11 +62,17 @@ function(creepwork_unity_folders target)
         set(_cw_relative ${_cw_source})
       endif()
       if(_cw_relative MATCHES "^${_cw_folder}/")
-        math(EXPR _cw_batch "${_cw_count} / ${U_BATCH}")
-        set_source_files_properties(${_cw_source} TARGET_DIRECTORY ${target}
-                                    PROPERTIES UNITY_GROUP ${_cw_folder}_${_cw_batch})
-        math(EXPR _cw_count "${_cw_count} + 1")
+        list(APPEND _cw_members ${_cw_source})
       endif()
+    endforeach()
+    list(LENGTH _cw_members _cw_count)
+    math(EXPR _cw_units "(${_cw_count} + ${U_BATCH} - 1) / ${U_BATCH}")
+    set(_cw_index 0)
+    foreach(_cw_source IN LISTS _cw_members)
+      math(EXPR _cw_unit "${_cw_index} * ${_cw_units} / ${_cw_count}")
+      set_source_files_properties(${_cw_source} TARGET_DIRECTORY ${target}
+                                  PROPERTIES UNITY_GROUP ${_cw_folder}_${_cw_unit})
+      math(EXPR _cw_index "${_cw_index} + 1")
     endforeach()
   endforeach()
   set_target_properties(${target} PROPERTIES UNITY_BUILD ON UNITY_BUILD_MODE GROUP)
