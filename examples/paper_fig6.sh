@@ -13,12 +13,15 @@ set -euo pipefail
 cli=${1:?usage: paper_fig6.sh <creepwork binary> <output dir>}
 out=${2:?usage: paper_fig6.sh <creepwork binary> <output dir>}
 
+# The same contacts in SI (pictures in mm, N/mm^2 and kN), beside the other
+# two runs (which write into one directory, one after the other).
+"$cli" fit-fig6 --units si --out "$out-si" --force >/dev/null &
+si=$!
 # The paper's figures in the paper's units (ft, lbf, psi), forces on the rail
 # as the paper prints them.
 "$cli" fit-fig6 --units paper --out "$out" --force
 "$cli" sweep --units paper --out "$out/maps" --force >/dev/null
-# The same contacts in SI: pictures in mm, N/mm^2 and kN.
-"$cli" fit-fig6 --units si --out "$out-si" --force >/dev/null
+wait "$si"
 cat <<TEXT
 
 Pictures (gnuplot scripts and data beside them; fields.csv, profile.csv and

@@ -7,7 +7,9 @@
 #                          valgrind, Open MPI for creepwork campaign and
 #                          its tests (the demo builds without it), numpy,
 #                          pytest, venv, setuptools and wheel for the Python
-#                          package and its tests, Octave for the MEX
+#                          package and its tests, Octave for the MEX,
+#                          ccache (the recipes' builds reuse the Release
+#                          build's objects)
 #   install-deps.sh python what the Python package needs (doc/python.md)
 #   install-deps.sh octave what the Octave interface needs (doc/octave.md)
 set -euo pipefail
@@ -17,7 +19,7 @@ library=(cmake g++ make libeigen3-dev python3)
 # numpy at run time; venv, setuptools and wheel for doc/python.md's offline pip route
 python=(python3-numpy python3-venv python3-setuptools python3-wheel)
 octave=(octave liboctave-dev)
-all=("${demo[@]}" gfortran pkg-config libcmocka-dev clang-14 libclang-rt-14-dev libomp-14-dev
+all=("${demo[@]}" ccache gfortran pkg-config libcmocka-dev clang-14 libclang-rt-14-dev libomp-14-dev
      valgrind libopenmpi-dev openmpi-bin "${python[@]}" python3-pytest "${octave[@]}")
 case "${1:-all}" in
   demo) packages=("${demo[@]}") ;;

@@ -6,9 +6,13 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 jobs=$(nproc 2>/dev/null || echo 2)
 
-# Stage timings, printed at the end (and on failure).
+# Stage timings, printed at the end (and on failure); each stage's header
+# says which of how many it is (the builds show their percentage, CTest its
+# count of tests).
 stage_name=""
 stage_start=$SECONDS
+stage_count=0
+stage_total=$(grep -c '^stage "' "$0")
 timings=()
 end_stage() {
   if [ -n "$stage_name" ]; then
@@ -16,7 +20,14 @@ end_stage() {
   fi
   stage_name=""
 }
-stage() { end_stage; stage_name="$*"; stage_start=$SECONDS; echo; echo "=== $*"; }
+stage() {
+  end_stage
+  stage_name="$*"
+  stage_start=$SECONDS
+  stage_count=$((stage_count + 1))
+  echo
+  echo "=== stage $stage_count of $stage_total: $*"
+}
 report() {
   end_stage
   echo

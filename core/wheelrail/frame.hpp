@@ -12,6 +12,10 @@
 
 namespace creepwork::wheelrail {
 
+// π, one definition for the geometry's angles (the sources share a
+// translation unit in the unity build).
+inline constexpr double kPi = 3.14159265358979323846;
+
 using Vec3 = Eigen::Vector3d;
 using Mat3 = Eigen::Matrix3d;
 

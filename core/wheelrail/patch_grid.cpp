@@ -8,7 +8,6 @@
 namespace creepwork::wheelrail {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kApart = 1.0; // [m] h where a surface is missing: far apart
 constexpr int kNodes = 5;      // exact wheel heights per row, quartic in between
 

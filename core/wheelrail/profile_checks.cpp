@@ -9,7 +9,6 @@
 namespace creepwork::wheelrail {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kMinLength = 5e-3;   // [m], CONTACT's min_prf_length
 constexpr double kMaxLength = 0.5;    // [m], CONTACT's max_prf_length
 constexpr double kFeatureDepth = 5e-3; // [m]: a flange or a rail head stands out this much

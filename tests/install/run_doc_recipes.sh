@@ -28,6 +28,12 @@ else
   (cd "$src" && tar --exclude='./build*' --exclude=./out -cf - .) | tar -xf - -C "$work/clone"
 fi
 cd "$work/clone"
+# ccache keeps its cache under HOME: the one of the build that runs this,
+# so that the recipes' builds of the same sources are look-ups.
+if command -v ccache >/dev/null; then
+  CCACHE_DIR=${CCACHE_DIR:-$(ccache -k cache_dir)}
+  export CCACHE_DIR
+fi
 export HOME="$work/home"
 
 # PATH stays the user's: a recipe that works only with a particular python3
