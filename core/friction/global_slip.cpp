@@ -1,0 +1,86 @@
+#include "friction/global_slip.hpp"
+
+#include "contact/error.hpp"
+#include "contact/kalker_coefficients.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace creepwork {
+
+GlobalSlip global_slip(const ContactInput& in, const FrictionLaw& law, const SlopeReduction& sr,
+                       double V, double GC11)
+{
+    constexpr double pi = 3.14159265358979323846;
+    GlobalSlip g;
+    g.slip_speed = V * std::hypot(in.xi_x, in.xi_y);
+    g.mu = friction_value(law, g.slip_speed).mu;
+    double nu_phi = in.xi_y + in.phi * in.a;
+    if (std::fabs(nu_phi) < std::fabs(in.xi_y)) nu_phi = in.xi_y;
+    const double nu = std::hypot(in.xi_x, nu_phi);
+    const double muN = g.mu * in.normal_force;
+    g.epsilon = muN > 0.0 ? pi * in.a * in.b * sr.k0 * GC11 * nu / (4.0 * muN) : 0.0;
+    g.k = sr.k0 * (sr.alpha_inf + (1.0 - sr.alpha_inf) / (1.0 + sr.beta * g.epsilon));
+    return g;
+}
+
+SemiAxes equivalent_ellipse(const ContactGrid& grid, double a, double b)
+{
+    constexpr double pi = 3.14159265358979323846;
+    if (grid.spec().kind != GridKind::uniform) return {a, b};
+    const int nx = grid.nx(), ny = grid.ny();
+    int n = 0, m_min = nx, m_max = -1, j_min = ny, j_max = -1;
+    for (int m = 0; m < nx; ++m)
+        for (int j = 0; j < ny; ++j)
+            if (grid.in_contact()[static_cast<Eigen::Index>(m) * ny + j] != 0.0) {
+                ++n;
+                m_min = std::min(m_min, m);
+                m_max = std::max(m_max, m);
+                j_min = std::min(j_min, j);
+                j_max = std::max(j_max, j);
+            }
+    if (n == 0) return {a, b};
+    const double dx = grid.x_length()[0] * a, dy = grid.y_width()[0] * b;
+    const double length = dx * (m_max - m_min + 1), width = dy * (j_max - j_min + 1);
+    const double r = std::sqrt(n * dx * dy / pi);
+    return {r * std::sqrt(length / width), r * std::sqrt(width / length)};
+}
+
+ContactInput global_slip_input(const ContactInput& in, const ContactGrid& grid,
+                               const FrictionLaw& law, const SlopeReduction& sr, double V,
+                               GlobalSlip* out)
+{
+    ContactInput r = in;
+    const SemiAxes e = equivalent_ellipse(grid, in.a, in.b);
+    Flexibilities L{in.L1, in.L2, in.L3};
+    double GC11 = 0.0;
+    if (in.flexibility == FlexibilitySource::kalker_from_material) {
+        L = kalker_flexibilities(in.a, in.b, in.G, kalker_coefficients(in.a / in.b, in.nu));
+        GC11 = in.G * kalker_coefficients(e.a / e.b, in.nu).C11;
+    } else {
+        GC11 = 8.0 * in.a / (3.0 * in.L1); // L1 = 8a / (3 C11 G) on the nominal ellipse
+    }
+    ContactInput on_e = in;
+    on_e.a = e.a;
+    on_e.b = e.b;
+    const GlobalSlip g = global_slip(on_e, law, sr, V, GC11);
+    r.mu = g.mu;
+    r.flexibility = FlexibilitySource::given;
+    r.L1 = L.L1 / g.k;
+    r.L2 = L.L2 / g.k;
+    r.L3 = L.L3 / g.k;
+    if (out) *out = g;
+    return r;
+}
+
+void check_slope_reduction(const SlopeReduction& sr)
+{
+    if (!(std::isfinite(sr.k0) && sr.k0 > 0.0))
+        throw Error(ErrorKind::invalid_input, "k0 must be finite and > 0");
+    if (!(std::isfinite(sr.alpha_inf) && sr.alpha_inf >= 0.0 && sr.alpha_inf <= 1.0))
+        throw Error(ErrorKind::invalid_input, "alpha_inf must lie in [0, 1]");
+    if (!(std::isfinite(sr.beta) && sr.beta >= 0.0))
+        throw Error(ErrorKind::invalid_input, "beta must be finite and >= 0");
+}
+
+} // namespace creepwork

@@ -1,0 +1,172 @@
+// CONTACT's FASTSIM with a law of the slip speed, as CONTACT's tractcurv
+// example runs it (its series 3 and 4: Coulomb 0.33, and the exponential
+// law with Spiryagin's slope reduction, mu at the contact's rigid slip
+// speed): creepwork's FASTSIM on the same 48 x 44 grid against CONTACT's
+// printed |Fx|/(mu_s N) (tests/data/contact_tractcurv.csv), and the
+// full-sliding closed form A + (1 - A) exp(-B xi V), B in s/m.
+#include "core_test_support.hpp"
+#include "test_support.h"
+
+#include "contact/contact_grid.hpp"
+#include "friction/global_slip.hpp"
+
+#include <cmath>
+#include <string>
+
+namespace cw = creepwork;
+
+namespace {
+
+const double kN = 106.7e3, kV = 10.0;
+
+cw::GridSpec tractcurv_grid()
+{
+    cw::GridSpec g;
+    g.kind = cw::GridKind::uniform;
+    g.nx = 48;
+    g.ny = 44;
+    g.box_scale = 1.1;
+    return g;
+}
+
+// tractcurv.inp: A1 = 0.0008/mm, a/b = 0.5, N = 106.7 kN, G = 82 GPa,
+// nu = 0.28; the Hertzian semi-axes CONTACT prints, 6.304 and 12.61 mm.
+// FASTSIM with the parabolic bound scaled to carry N (CONTACT's B=3).
+cw::ContactInput eurosprinter(double xi)
+{
+    cw::ContactInput in;
+    in.a = 6.304e-3;
+    in.b = 12.61e-3;
+    in.normal_force = kN;
+    in.G = 82e9;
+    in.nu = 0.28;
+    in.model = cw::ModelKind::fastsim;
+    in.pressure = cw::PressureKind::parabolic;
+    in.exact_load = true;
+    in.xi_x = xi;
+    return in;
+}
+
+// Series 4: Polach's mu0 = 0.36, A = 0.38, B = 0.7 s/m (CONTACT's FKIN
+// 0.1368, FEXP1 0.2232, SABSH1 990 mm/s), k0 = 0.54, alpha_inf = 0.02,
+// beta = 0.62.
+const cw::SlopeReduction kSpiryagin{0.54, 0.02, 0.62};
+cw::FrictionLaw series4_law()
+{
+    cw::FrictionLaw law;
+    law.kind = cw::FrictionLawKind::exponential;
+    law.mu_kin = 0.1368;
+    law.mu_e1 = 0.2232;
+    law.s_h1 = 0.990;
+    return law;
+}
+
+// |ours - CONTACT| within half a unit of the printed last digit plus 6e-5:
+// creepwork's FASTSIM and CONTACT's modified FASTSIM differ by up to 5e-5
+// on this grid with Coulomb's law already (series 3).
+double printed_tolerance(const std::string& text)
+{
+    const auto e = text.find_first_of("Ee");
+    const std::string mant = text.substr(0, e);
+    const auto dot = mant.find('.');
+    const int decimals = dot == std::string::npos ? 0 : int(mant.size() - dot - 1);
+    const int exponent = e == std::string::npos ? 0 : std::stoi(text.substr(e + 1));
+    return 0.5 * std::pow(10.0, exponent - decimals) + 6e-5;
+}
+
+void series3_coulomb_fastsim(void**)
+{
+    const cwtest::CsvTable t = cwtest::read_csv(cwtest::test_data_path("contact_tractcurv.csv"));
+    cw::Solver s(tractcurv_grid());
+    int rows = 0;
+    for (size_t r = 0; r < t.rows.size(); ++r) {
+        if (t.number(r, "series") != 3) continue;
+        cw::ContactInput in = eurosprinter(t.number(r, "CKSI"));
+        in.mu = 0.33;
+        const cw::SolveTotals& tot = s.solve(in);
+        const std::string ref = t.text(r, "FX_over_FSTAT_FN");
+        assert_close(tot.Fx / (0.33 * kN), std::stod(ref), 0.0, printed_tolerance(ref));
+        assert_int_equal(tot.n_contact, int(t.number(r, "NCON")));
+        // The slip area: CONTACT's count in 29 of 30 rows, 864 against 862
+        // at 0.24 %.
+        assert_true(std::abs(tot.n_slip - int(t.number(r, "NSLIP"))) <= 2);
+        ++rows;
+    }
+    assert_int_equal(rows, 30);
+}
+
+void series4_falling_friction_fastsim(void**)
+{
+    const cwtest::CsvTable t = cwtest::read_csv(cwtest::test_data_path("contact_tractcurv.csv"));
+    const cw::GridSpec spec = tractcurv_grid();
+    const cw::ContactGrid grid(spec);
+    cw::Solver s(spec);
+    int rows = 0;
+    for (size_t r = 0; r < t.rows.size(); ++r) {
+        if (t.number(r, "series") != 4) continue;
+        const double xi = t.number(r, "CKSI");
+        cw::GlobalSlip g;
+        const cw::ContactInput in =
+            cw::global_slip_input(eurosprinter(xi), grid, series4_law(), kSpiryagin, kV, &g);
+        const cw::SolveTotals& tot = s.solve(in);
+        const std::string ref = t.text(r, "FX_over_FSTAT_FN");
+        assert_close(tot.Fx / (0.36 * kN), std::stod(ref), 0.0, printed_tolerance(ref));
+        // CONTACT prints its slope reduction k where it prints the inputs.
+        if (!t.text(r, "K_EFF").empty())
+            assert_close(g.k, t.number(r, "K_EFF"), 0.0, 0.5e-4);
+        // The slip area is CONTACT's, element for element count.
+        assert_int_equal(tot.n_slip, int(t.number(r, "NSLIP")));
+        // Full sliding (from 12.5 % on; at 10 % 62 elements still adhere,
+        // in CONTACT too): F = mu(xi V) N, mu(w)/mu_s = A + (1 - A) exp(-B w).
+        if (tot.n_slip == tot.n_contact) {
+            const double closed = 0.38 + 0.62 * std::exp(-0.7 * xi * kV);
+            assert_close(-tot.Fx / (0.36 * kN), closed, 0.0, 2e-4);
+        }
+        ++rows;
+    }
+    assert_int_equal(rows, 30);
+}
+
+// The equivalent ellipse of CONTACT's discrete contact on this grid: 1376
+// elements spanning 44 x 40 of them (CONTACT's picture of series 3 and 4).
+void equivalent_ellipse_of_the_grid(void**)
+{
+    const cw::ContactGrid grid(tractcurv_grid());
+    const cw::SemiAxes e = cw::equivalent_ellipse(grid, 6.304e-3, 12.61e-3);
+    const double dx = 2.2 * 6.304e-3 / 48, dy = 2.2 * 12.61e-3 / 44;
+    const double r = std::sqrt(1376 * dx * dy / M_PI);
+    assert_close(e.a, r * std::sqrt(44 * dx / (40 * dy)), 1e-14, 0.0);
+    assert_close(e.b, r * std::sqrt(40 * dy / (44 * dx)), 1e-14, 0.0);
+    // The strip grid has no box: the nominal semi-axes.
+    cw::GridSpec strips;
+    const cw::SemiAxes n = cw::equivalent_ellipse(cw::ContactGrid(strips), 6e-3, 7e-3);
+    assert_true(n.a == 6e-3 && n.b == 7e-3);
+}
+
+// k0 = alpha_inf = 1 and Coulomb's law leave the input as it is: the
+// flexibilities Kalker's, mu the same.
+void no_reduction_is_fastsim(void**)
+{
+    const cw::GridSpec spec = tractcurv_grid();
+    const cw::ContactGrid grid(spec);
+    const cw::ContactInput base = eurosprinter(0.002);
+    cw::ContactInput coulomb = base;
+    coulomb.mu = 0.33;
+    const cw::ContactInput in =
+        cw::global_slip_input(base, grid, cw::coulomb_law(0.33), cw::SlopeReduction{}, kV);
+    cw::Solver s1(spec), s2(spec);
+    assert_true(s1.solve(in).Fx == s2.solve(coulomb).Fx);
+}
+
+} // namespace
+
+int main()
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(series3_coulomb_fastsim),
+        cmocka_unit_test(series4_falling_friction_fastsim),
+        cmocka_unit_test(equivalent_ellipse_of_the_grid),
+        cmocka_unit_test(no_reduction_is_fastsim),
+    };
+    return cmocka_run_group_tests(tests, nullptr, nullptr);
+}
