@@ -28,7 +28,11 @@ struct LocalSlip {
     int iterations = 0; // Newton steps taken
 };
 
-// P > p_n mu(0) >= 0 (the element slips), c > 0.
-LocalSlip local_slip(const FrictionLaw& law, double P, double pn, double c);
+// P > p_n mu(0) >= 0 (the element slips), c > 0. Newton starts from
+// t = p_n mu_guess (clamped into the bracket): a march passes the previous
+// element's mu, so that one or two steps suffice; a negative mu_guess starts
+// from the bracket's top.
+LocalSlip local_slip(const FrictionLaw& law, double P, double pn, double c,
+                     double mu_guess = -1.0);
 
 } // namespace creepwork

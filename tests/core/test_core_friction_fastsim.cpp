@@ -1,0 +1,154 @@
+// FASTSIM with a law of the slip speed at every element (FastsimLawModel):
+// Coulomb's law gives FASTSIM's forces; a falling law in full sliding gives
+// the closed form mu(xi V) N; a vanishing rolling speed gives Coulomb's
+// forces at the static coefficient; bad inputs are named.
+#include "core_test_support.hpp"
+#include "test_support.h"
+
+#include "contact/error.hpp"
+#include "fastsim/fastsim_law_model.hpp"
+#include "fastsim/fastsim_model.hpp"
+#include "friction/friction_law.hpp"
+
+#include <cmath>
+#include <string>
+
+namespace cw = creepwork;
+
+namespace {
+
+cw::GridSpec tractcurv_grid()
+{
+    cw::GridSpec g;
+    g.kind = cw::GridKind::uniform;
+    g.nx = 48;
+    g.ny = 44;
+    g.box_scale = 1.1;
+    return g;
+}
+
+// CONTACT's tractcurv contact (a = 6.304, b = 12.61 mm, N = 106.7 kN, steel),
+// FASTSIM's parabolic bound carrying N exactly.
+cw::ContactInput eurosprinter(double xi_x, double xi_y = 0.0, double phi = 0.0)
+{
+    cw::ContactInput in;
+    in.a = 6.304e-3;
+    in.b = 12.61e-3;
+    in.normal_force = 106.7e3;
+    in.G = 82e9;
+    in.nu = 0.28;
+    in.exact_load = true;
+    in.xi_x = xi_x;
+    in.xi_y = xi_y;
+    in.phi = phi;
+    return in;
+}
+
+// Coulomb's law through the law's march: FASTSIM's forces and slip counts,
+// with creepage and spin, on both grids.
+void coulomb_law_is_fastsim(void**)
+{
+    for (const cw::GridSpec& g : {tractcurv_grid(), cwtest::kalker_grid(30, 25)}) {
+        cw::FastsimModel plain(g);
+        cw::FastsimLawModel law(g);
+        law.set_law(cw::coulomb_law(0.33), 10.0);
+        for (double xi : {1e-5, 1e-3, 4e-3, 0.05}) {
+            cw::ContactInput in = eurosprinter(xi, -0.5 * xi, 2.0 * xi);
+            in.mu = 0.33;
+            const cw::SolveTotals a = plain.solve(in, cw::SolveMode::forces_only);
+            const cw::SolveTotals b = law.solve(in, cw::SolveMode::forces_only);
+            assert_close(b.Fx, a.Fx, 1e-13, 0.0);
+            assert_close(b.Fy, a.Fy, 1e-13, 0.0);
+            assert_close(b.Mz, a.Mz, 1e-13, 1e-16);
+            assert_int_equal(b.n_slip, a.n_slip);
+        }
+    }
+}
+
+// Polach's mu0 = 0.36, A = 0.38, B = 0.7 s/m at V = 10 m/s: in full sliding
+// every element slides at nearly xi V, so |Fx|/(mu_s N) -> A + (1 - A)
+// exp(-B xi V), within 2e-4 from xi = 10 % on.
+void full_sliding_closed_form(void**)
+{
+    cw::FastsimLawModel m(tractcurv_grid());
+    m.set_law(cw::polach_law(0.36, 0.38, 0.7), 10.0);
+    for (double xi : {0.10, 0.15, 0.25, 0.5}) {
+        const cw::SolveTotals t = m.solve(eurosprinter(xi), cw::SolveMode::forces_only);
+        assert_int_equal(t.n_slip, t.n_contact);
+        const double closed = 0.38 + 0.62 * std::exp(-0.7 * xi * 10.0);
+        assert_close(-t.Fx / (0.36 * 106.7e3), closed, 0.0, 2e-4);
+        assert_true(m.mu_min() < m.mu_max() && m.mu_max() < 0.36);
+    }
+}
+
+// V -> 0: every slip speed is ~0, mu = mu_s: Coulomb's forces at 0.36.
+void slow_rolling_is_coulomb(void**)
+{
+    cw::FastsimModel plain(tractcurv_grid());
+    cw::FastsimLawModel law(tractcurv_grid());
+    law.set_law(cw::polach_law(0.36, 0.38, 0.7), 1e-12);
+    cw::ContactInput in = eurosprinter(2e-3, 1e-3);
+    in.mu = 0.36;
+    const cw::SolveTotals a = plain.solve(in, cw::SolveMode::forces_only);
+    const cw::SolveTotals b = law.solve(in, cw::SolveMode::forces_only);
+    assert_close(b.Fx, a.Fx, 1e-10, 0.0);
+    assert_close(b.Fy, a.Fy, 1e-10, 0.0);
+}
+
+// A falling law lowers the force below Coulomb's at mu_s in partial slip,
+// and the curve falls past its peak.
+void falling_law_peaks(void**)
+{
+    cw::FastsimLawModel m(tractcurv_grid());
+    m.set_law(cw::polach_law(0.36, 0.38, 0.7), 10.0);
+    cw::FastsimModel plain(tractcurv_grid());
+    double previous = 0.0, peak = 0.0;
+    bool fell = false;
+    for (double xi = 0.001; xi < 0.1; xi *= 1.3) {
+        cw::ContactInput in = eurosprinter(xi);
+        in.mu = 0.36;
+        const double f = -m.solve(in, cw::SolveMode::forces_only).Fx;
+        assert_true(f <= -plain.solve(in, cw::SolveMode::forces_only).Fx);
+        peak = std::max(peak, f);
+        fell = fell || f < previous;
+        previous = f;
+    }
+    assert_true(fell && peak < 0.36 * 106.7e3);
+}
+
+void inputs_named(void**)
+{
+    cw::FastsimLawModel m(tractcurv_grid());
+    const auto expect = [&](auto&& call, const char* name) {
+        try {
+            call();
+            fail_msg("accepted, expected an error naming %s", name);
+        } catch (const cw::Error& e) {
+            assert_true(std::string(e.what()).rfind(name, 0) == 0);
+        }
+    };
+    expect([&] { m.solve(eurosprinter(1e-3), cw::SolveMode::forces_only); }, "V");
+    expect([&] { m.set_law(cw::coulomb_law(0.3), 0.0); }, "V");
+    expect([&] { m.set_law(cw::coulomb_law(0.3), NAN); }, "V");
+    cw::FrictionLaw bad = cw::polach_law(0.36, 0.38, 0.7);
+    bad.s_h1 = -1.0;
+    expect([&] { m.set_law(bad, 10.0); }, "s_h1");
+    m.set_law(cw::coulomb_law(0.3), 10.0);
+    expect([&] { m.solve(eurosprinter(1e-3), cw::SolveMode::full); }, "mode");
+    cw::Jacobian j;
+    expect([&] { m.solve_jacobian(eurosprinter(1e-3), cw::SolveMode::forces_only, j); }, "jacobian");
+}
+
+} // namespace
+
+int main()
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(coulomb_law_is_fastsim),
+        cmocka_unit_test(full_sliding_closed_form),
+        cmocka_unit_test(slow_rolling_is_coulomb),
+        cmocka_unit_test(falling_law_peaks),
+        cmocka_unit_test(inputs_named),
+    };
+    return cmocka_run_group_tests(tests, nullptr, nullptr);
+}
