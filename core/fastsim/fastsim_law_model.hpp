@@ -14,6 +14,7 @@
 
 #include "contact/params.hpp"
 #include "friction/friction_law.hpp"
+#include "fastsim/march_tangent.hpp"
 #include "march/march_model.hpp"
 
 namespace creepwork {
@@ -31,6 +32,12 @@ public:
     // coefficient. Forces mode only (full mode: Error naming the mode, the
     // work map under a local law is not made).
     SolveTotals solve(const ContactInput& input, SolveMode mode) override;
+    // The Jacobian by forward differentiation of the same march (the totals
+    // bitwise solve()'s): per slipping element the derivative of t through
+    // P = |q'|, the slip-speed factor c (which moves with q' and, through
+    // the traction unit, with N) and the law's slope, dt = (p_n mu' (c dP +
+    // (P - t) dc)) / (1 + p_n c mu'); held fixed as in FASTSIM's Jacobian
+    // (fastsim_jacobian.hpp), and V.
     SolveTotals solve_jacobian(const ContactInput& input, SolveMode mode,
                                Jacobian& jacobian) override;
 
@@ -41,12 +48,16 @@ public:
     int friction_iterations() const { return iterations_; }
 
 private:
-    void march_with_law();
+    void march_with_law(bool tangents);
+    void prepare(const ContactInput& input, SolveMode mode);
 
     FrictionLaw law_;
     double V_ = 0.0;
     double mu_min_ = 0.0, mu_max_ = 0.0;
     int iterations_ = 0;
+    ContactInput input_; // the last solve's, with mu = the law's static coefficient
+    TangentState tangent_;
+    Eigen::ArrayXd tau_px_, tau_py_, tau_x_py_; // per strip: sums' derivatives by ln T
 };
 
 } // namespace creepwork

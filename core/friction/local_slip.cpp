@@ -34,6 +34,7 @@ LocalSlip local_slip(const FrictionLaw& law, double P, double pn, double c, doub
     r.mu = v.mu;
     r.dt_dP = dg != 0.0 ? pn * c * v.dmu_ds / dg : 0.0;
     r.dt_dpn = dg != 0.0 ? v.mu / dg : 0.0;
+    r.dt_dc = dg != 0.0 ? pn * v.dmu_ds * (P - t) / dg : 0.0;
     return r;
 }
 

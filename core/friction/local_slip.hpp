@@ -25,6 +25,7 @@ struct LocalSlip {
     double mu = 0.0;    // mu(s)
     double dt_dP = 0.0; // derivative of t with respect to P at fixed p_n
     double dt_dpn = 0.0; // derivative of t with respect to p_n at fixed P
+    double dt_dc = 0.0;  // derivative of t with respect to c at fixed P, p_n
     int iterations = 0; // Newton steps taken
 };
 

@@ -135,10 +135,71 @@ void inputs_named(void**)
     expect([&] { m.set_law(bad, 10.0); }, "s_h1");
     m.set_law(cw::coulomb_law(0.3), 10.0);
     expect([&] { m.solve(eurosprinter(1e-3), cw::SolveMode::full); }, "mode");
-    cw::Jacobian j;
-    expect([&] { m.solve_jacobian(eurosprinter(1e-3), cw::SolveMode::forces_only, j); }, "jacobian");
 }
 
+// The Jacobian of Fx, Fy, Mz by xi_x, xi_y, phi, N against central
+// differences of the model itself, before the peak (0.4 %) and past it
+// (2 %, where dFx/dxi_x has changed sign), alone and with lateral creepage
+// and spin: the
+// worst entry, relative to its row's scale sum_c |J_rc| scale_c, over the
+// best of four steps that change no element's state, within 1e-4.
+double jacobian_error(cw::FastsimLawModel& m, const cw::ContactInput& in, const cw::Jacobian& J,
+                      int slips)
+{
+    const double scale[4] = {std::fabs(in.xi_x), std::fabs(in.xi_x), std::fabs(in.xi_x) / in.a,
+                             in.normal_force};
+    double best = INFINITY;
+    for (double rel : {1e-3, 1e-4, 1e-5, 1e-6}) {
+        double worst = 0.0;
+        bool changed = false;
+        double fd[3][4];
+        for (int c = 0; c < 4; ++c) {
+            cw::ContactInput up = in, down = in;
+            double* u[4] = {&up.xi_x, &up.xi_y, &up.phi, &up.normal_force};
+            double* d[4] = {&down.xi_x, &down.xi_y, &down.phi, &down.normal_force};
+            *u[c] += rel * scale[c];
+            *d[c] -= rel * scale[c];
+            const cw::SolveTotals a = m.solve(up, cw::SolveMode::forces_only);
+            const cw::SolveTotals b = m.solve(down, cw::SolveMode::forces_only);
+            changed |= a.n_slip != slips || b.n_slip != slips;
+            const double h2 = 2 * rel * scale[c];
+            fd[0][c] = (a.Fx - b.Fx) / h2;
+            fd[1][c] = (a.Fy - b.Fy) / h2;
+            fd[2][c] = (a.Mz - b.Mz) / h2;
+        }
+        for (int r = 0; r < 3; ++r) {
+            double row = 0.0;
+            for (int c = 0; c < 4; ++c) row += std::fabs(J.d[r][c]) * scale[c];
+            for (int c = 0; c < 4; ++c)
+                worst = std::max(worst, std::fabs(J.d[r][c] - fd[r][c]) * scale[c] / row);
+        }
+        if (!changed) best = std::min(best, worst);
+    }
+    return best;
+}
+
+void jacobian_across_the_peak(void**)
+{
+    cw::FastsimLawModel m(tractcurv_grid());
+    m.set_law(cw::polach_law(0.36, 0.38, 0.7), 10.0);
+    for (double xi : {0.004, 0.02})
+        for (double lateral : {0.0, 1.0}) {
+            const cw::ContactInput in =
+                eurosprinter(xi, 0.3 * lateral * xi, 0.2 * lateral * xi / 6.304e-3);
+            cw::Jacobian J;
+            const cw::SolveTotals t = m.solve_jacobian(in, cw::SolveMode::forces_only, J);
+            const cw::SolveTotals plain = m.solve(in, cw::SolveMode::forces_only);
+            assert_true(t.Fx == plain.Fx && t.Fy == plain.Fy && t.Mz == plain.Mz);
+            const double err = jacobian_error(m, in, J, t.n_slip);
+            print_message("xi_x %.3f (%s): dFx/dxi_x %.6g N, worst relative error %.2e\n", xi,
+                          lateral > 0 ? "with xi_y, phi" : "alone", J.d[0][0], err);
+            assert_true(err <= 1e-4);
+            // Pure rolling creepage: the force on the wheel opposes it, so
+            // dFx/dxi_x < 0 before the peak (about 0.5 % here) and > 0 past
+            // it, where |Fx| falls.
+            if (lateral == 0.0) assert_true(xi < 0.01 ? J.d[0][0] < 0.0 : J.d[0][0] > 0.0);
+        }
+}
 } // namespace
 
 int main()
@@ -149,6 +210,7 @@ int main()
         cmocka_unit_test(slow_rolling_is_coulomb),
         cmocka_unit_test(falling_law_peaks),
         cmocka_unit_test(inputs_named),
+        cmocka_unit_test(jacobian_across_the_peak),
     };
     return cmocka_run_group_tests(tests, nullptr, nullptr);
 }

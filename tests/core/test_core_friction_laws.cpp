@@ -210,6 +210,10 @@ void local_slip_solves_the_law(void**)
         const double dpn =
             (cw::local_slip(law, P, pn + hp, c).t - cw::local_slip(law, P, pn - hp, c).t) / (2 * hp);
         assert_close(r.dt_dpn, dpn, 1e-6, 1e-9);
+        const double hc = 1e-6 * c;
+        const double dc = (cw::local_slip(law, P, pn, c + hc).t - cw::local_slip(law, P, pn, c - hc).t) /
+                          (2 * hc);
+        assert_close(r.dt_dc, dc, 1e-6, 1e-9 * pn / c);
     }
 }
 
