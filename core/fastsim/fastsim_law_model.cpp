@@ -25,9 +25,9 @@ FastsimLawModel::FastsimLawModel(std::shared_ptr<const ContactGrid> grid)
     tau_x_py_.setZero(geometry().stride);
 }
 
-void FastsimLawModel::set_law(const FrictionLaw& law, double V)
+void FastsimLawModel::set_law(const SlipSpeedLaw& law, double V)
 {
-    check_friction_law(law);
+    check_slip_speed_law(law);
     if (!(std::isfinite(V) && V > 0.0))
         throw Error(ErrorKind::invalid_input,
                     "V (the rolling speed) must be finite and > 0 [m/s] for a law of the slip speed");

@@ -13,7 +13,7 @@
 #pragma once
 
 #include "contact/params.hpp"
-#include "friction/friction_law.hpp"
+#include "friction/slip_speed_law.hpp"
 #include "fastsim/march_tangent.hpp"
 #include "march/march_model.hpp"
 
@@ -26,7 +26,7 @@ public:
 
     // The law and the rolling speed V [m/s] > 0 the next solves use; throws
     // Error(invalid_input) naming the input (the law's parameters, V).
-    void set_law(const FrictionLaw& law, double V);
+    void set_law(const SlipSpeedLaw& law, double V);
 
     // input.mu is not read: the traction unit is the law's static
     // coefficient. Forces mode only (full mode: Error naming the mode, the
@@ -51,7 +51,7 @@ private:
     void march_with_law(bool tangents);
     void prepare(const ContactInput& input, SolveMode mode);
 
-    FrictionLaw law_;
+    SlipSpeedLaw law_;
     double V_ = 0.0;
     double mu_min_ = 0.0, mu_max_ = 0.0;
     int iterations_ = 0;

@@ -7,7 +7,7 @@
 
 namespace creepwork {
 
-void memory_row(const FrictionLaw& law, const FrictionMemory& memory, double dt, const double* s,
+void memory_row(const SlipSpeedLaw& law, const FrictionMemory& memory, double dt, const double* s,
                 int n, double* mu)
 {
     double previous = static_friction(law);

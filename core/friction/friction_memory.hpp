@@ -6,7 +6,7 @@
 // user guide, "friction memory"; Vollebregt & Schuttelaars, JSV 331 (2012)).
 #pragma once
 
-#include "friction/friction_law.hpp"
+#include "friction/slip_speed_law.hpp"
 
 namespace creepwork {
 
@@ -19,7 +19,7 @@ struct FrictionMemory {
 // edge: slip speed s[i] [m/s] in, mu[i] out. Before the leading edge mu is
 // the static coefficient; then mu_i = theta_i mu_{i-1} + (1 - theta_i)
 // mu_s(s_i), theta_i = d_c / (d_c + dt max(s_i, s0)), dt [s] > 0.
-void memory_row(const FrictionLaw& law, const FrictionMemory& memory, double dt, const double* s,
+void memory_row(const SlipSpeedLaw& law, const FrictionMemory& memory, double dt, const double* s,
                 int n, double* mu);
 
 // Throws Error(invalid_input) naming memory_distance or memory_s0 when one

@@ -8,7 +8,7 @@
 
 namespace creepwork {
 
-GlobalSlip global_slip(const ContactInput& in, const FrictionLaw& law, const SlopeReduction& sr,
+GlobalSlip global_slip(const ContactInput& in, const SlipSpeedLaw& law, const SlopeReduction& sr,
                        double V, double GC11)
 {
     constexpr double pi = 3.14159265358979323846;
@@ -47,7 +47,7 @@ SemiAxes equivalent_ellipse(const ContactGrid& grid, double a, double b)
 }
 
 ContactInput global_slip_input(const ContactInput& in, const ContactGrid& grid,
-                               const FrictionLaw& law, const SlopeReduction& sr, double V,
+                               const SlipSpeedLaw& law, const SlopeReduction& sr, double V,
                                GlobalSlip* out)
 {
     ContactInput r = in;

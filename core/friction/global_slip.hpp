@@ -12,7 +12,7 @@
 
 #include "contact/contact_grid.hpp"
 #include "contact/params.hpp"
-#include "friction/friction_law.hpp"
+#include "friction/slip_speed_law.hpp"
 
 namespace creepwork {
 
@@ -41,7 +41,7 @@ SemiAxes equivalent_ellipse(const ContactGrid& grid, double a, double b);
 
 // w, mu(w), eps and k for this contact: V [m/s], GC11 = G C11 [Pa] (the
 // shear modulus times Kalker's coefficient; 8a / (3 L1) from a given L1).
-GlobalSlip global_slip(const ContactInput& in, const FrictionLaw& law, const SlopeReduction& sr,
+GlobalSlip global_slip(const ContactInput& in, const SlipSpeedLaw& law, const SlopeReduction& sr,
                        double V, double GC11);
 
 // The input FASTSIM solves on this grid: mu = mu(w) and the flexibilities
@@ -49,7 +49,7 @@ GlobalSlip global_slip(const ContactInput& in, const FrictionLaw& law, const Slo
 // the grid's equivalent ellipse, C11 (or G C11 = 8 a_e / (3 L1(a_e, b_e))
 // from given ones) at its a_e / b_e.
 ContactInput global_slip_input(const ContactInput& in, const ContactGrid& grid,
-                               const FrictionLaw& law, const SlopeReduction& sr, double V,
+                               const SlipSpeedLaw& law, const SlopeReduction& sr, double V,
                                GlobalSlip* out = nullptr);
 
 // Throws Error(invalid_input) naming k0, alpha_inf or beta when out of range.

@@ -5,7 +5,7 @@
 
 namespace creepwork {
 
-LocalSlip local_slip(const FrictionLaw& law, double P, double pn, double c, double mu_guess)
+LocalSlip local_slip(const SlipSpeedLaw& law, double P, double pn, double c, double mu_guess)
 {
     LocalSlip r;
     double lo = 0.0, hi = std::min(P, pn * static_friction(law));

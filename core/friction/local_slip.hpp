@@ -15,7 +15,7 @@
 // inputs.
 #pragma once
 
-#include "friction/friction_law.hpp"
+#include "friction/slip_speed_law.hpp"
 
 namespace creepwork {
 
@@ -33,7 +33,7 @@ struct LocalSlip {
 // t = p_n mu_guess (clamped into the bracket): a march passes the previous
 // element's mu, so that one or two steps suffice; a negative mu_guess starts
 // from the bracket's top.
-LocalSlip local_slip(const FrictionLaw& law, double P, double pn, double c,
+LocalSlip local_slip(const SlipSpeedLaw& law, double P, double pn, double c,
                      double mu_guess = -1.0);
 
 } // namespace creepwork

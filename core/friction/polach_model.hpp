@@ -20,7 +20,7 @@
 // (body 1), creepwork's signs (Kalker's). The model has no moment Mz.
 #pragma once
 
-#include "friction/friction_law.hpp"
+#include "friction/slip_speed_law.hpp"
 
 namespace creepwork {
 
@@ -32,7 +32,7 @@ struct PolachInput {
     double xi_x = 0.0, xi_y = 0.0;       // creepages [-]
     double phi = 0.0;                    // spin creepage [1/m]
     double V = 0.0;                      // rolling speed [m/s] (read by a falling law)
-    FrictionLaw law;                     // mu of the slip speed w = s V
+    SlipSpeedLaw law;                     // mu of the slip speed w = s V
     double k_A = 1.0, k_S = 1.0;         // Polach 2005's reductions in adhesion and slip
 };
 

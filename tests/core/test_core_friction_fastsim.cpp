@@ -8,7 +8,7 @@
 #include "contact/error.hpp"
 #include "fastsim/fastsim_law_model.hpp"
 #include "fastsim/fastsim_model.hpp"
-#include "friction/friction_law.hpp"
+#include "friction/slip_speed_law.hpp"
 
 #include <cmath>
 #include <string>
@@ -130,7 +130,7 @@ void inputs_named(void**)
     expect([&] { m.solve(eurosprinter(1e-3), cw::SolveMode::forces_only); }, "V");
     expect([&] { m.set_law(cw::coulomb_law(0.3), 0.0); }, "V");
     expect([&] { m.set_law(cw::coulomb_law(0.3), NAN); }, "V");
-    cw::FrictionLaw bad = cw::polach_law(0.36, 0.38, 0.7);
+    cw::SlipSpeedLaw bad = cw::polach_law(0.36, 0.38, 0.7);
     bad.s_h1 = -1.0;
     expect([&] { m.set_law(bad, 10.0); }, "s_h1");
     m.set_law(cw::coulomb_law(0.3), 10.0);

@@ -51,10 +51,10 @@ cw::ContactInput eurosprinter(double xi)
 // 0.1368, FEXP1 0.2232, SABSH1 990 mm/s), k0 = 0.54, alpha_inf = 0.02,
 // beta = 0.62.
 const cw::SlopeReduction kSpiryagin{0.54, 0.02, 0.62};
-cw::FrictionLaw series4_law()
+cw::SlipSpeedLaw series4_law()
 {
-    cw::FrictionLaw law;
-    law.kind = cw::FrictionLawKind::exponential;
+    cw::SlipSpeedLaw law;
+    law.kind = cw::SlipSpeedLawKind::exponential;
     law.mu_kin = 0.1368;
     law.mu_e1 = 0.2232;
     law.s_h1 = 0.990;

@@ -8,7 +8,7 @@
 
 #include "contact/error.hpp"
 #include "contact/kalker_coefficients.hpp"
-#include "friction/friction_law.hpp"
+#include "friction/slip_speed_law.hpp"
 #include "friction/friction_memory.hpp"
 #include "friction/local_slip.hpp"
 #include "friction/polach_model.hpp"
@@ -34,10 +34,10 @@ double contact_mu_steady(int L, double fkin, double f1, double sh1, double f2, d
            f2 * std::exp(-std::log(2.0) * slpvel / sh2);
 }
 
-cw::FrictionLaw law_of(cw::FrictionLawKind kind, double kin, double e1, double h1, double e2,
+cw::SlipSpeedLaw law_of(cw::SlipSpeedLawKind kind, double kin, double e1, double h1, double e2,
                        double h2)
 {
-    cw::FrictionLaw law;
+    cw::SlipSpeedLaw law;
     law.kind = kind;
     law.mu_kin = kin;
     law.mu_e1 = e1;
@@ -47,15 +47,15 @@ cw::FrictionLaw law_of(cw::FrictionLawKind kind, double kin, double e1, double h
     return law;
 }
 
-const cw::FrictionLawKind kFalling[] = {cw::FrictionLawKind::linear, cw::FrictionLawKind::rational,
-                                        cw::FrictionLawKind::exponential};
+const cw::SlipSpeedLawKind kFalling[] = {cw::SlipSpeedLawKind::linear, cw::SlipSpeedLawKind::rational,
+                                        cw::SlipSpeedLawKind::exponential};
 
 // Every form, two terms (tractcurv's extended set plus a second term), over
 // 0 .. 20 m/s including both linear kinks: CONTACT's value to 1e-14.
 void laws_match_contact_formulas(void**)
 {
     for (const auto kind : kFalling) {
-        const cw::FrictionLaw law = law_of(kind, 0.14, 0.19, 1.25, 0.05, 0.3);
+        const cw::SlipSpeedLaw law = law_of(kind, 0.14, 0.19, 1.25, 0.05, 0.3);
         for (int i = 0; i <= 400; ++i) {
             const double s = 0.05 * i; // m/s; includes 2 s_h1 = 2.5 and 2 s_h2 = 0.6
             const double ref = contact_mu_steady(int(kind), 0.14, 0.19, 1250.0, 0.05, 300.0, 1e3 * s);
@@ -73,14 +73,14 @@ void laws_match_contact_formulas(void**)
 void terms_halve_at_half_speed(void**)
 {
     for (const auto kind : kFalling) {
-        const cw::FrictionLaw one = law_of(kind, 0.1, 0.2, 0.8, 0.0, 0.0);
+        const cw::SlipSpeedLaw one = law_of(kind, 0.1, 0.2, 0.8, 0.0, 0.0);
         assert_close(cw::friction_value(one, 0.8).mu, 0.1 + 0.1, 1e-15, 0.0);
-        const cw::FrictionLaw two = law_of(kind, 0.1, 0.0, 0.0, 0.2, 0.8);
+        const cw::SlipSpeedLaw two = law_of(kind, 0.1, 0.0, 0.0, 0.2, 0.8);
         assert_close(cw::friction_value(two, 0.8).mu, 0.1 + 0.1, 1e-15, 0.0);
         assert_close(cw::friction_value(one, 0.0).mu, 0.3, 1e-15, 0.0);
         assert_close(cw::friction_value(one, 1e6).mu, 0.1, 1e-5, 0.0);
     }
-    assert_true(cw::friction_value(law_of(cw::FrictionLawKind::linear, 0.1, 0.2, 0.8, 0, 0), 1.6).mu ==
+    assert_true(cw::friction_value(law_of(cw::SlipSpeedLawKind::linear, 0.1, 0.2, 0.8, 0, 0), 1.6).mu ==
                 0.1);
 }
 
@@ -90,7 +90,7 @@ void terms_halve_at_half_speed(void**)
 void slopes_match_differences(void**)
 {
     for (const auto kind : kFalling) {
-        const cw::FrictionLaw law = law_of(kind, 0.14, 0.19, 1.25, 0.05, 0.3);
+        const cw::SlipSpeedLaw law = law_of(kind, 0.14, 0.19, 1.25, 0.05, 0.3);
         for (double s : {0.01, 0.2, 0.55, 1.0, 2.0, 3.7}) {
             const double h = 1e-6;
             const double fd = (cw::friction_value(law, s + h).mu - cw::friction_value(law, s - h).mu) /
@@ -99,16 +99,16 @@ void slopes_match_differences(void**)
         }
     }
     const double sh = 0.5, e = 0.2;
-    assert_close(cw::friction_value(law_of(cw::FrictionLawKind::linear, 0, e, sh, 0, 0), 0).dmu_ds,
+    assert_close(cw::friction_value(law_of(cw::SlipSpeedLawKind::linear, 0, e, sh, 0, 0), 0).dmu_ds,
                  -e / (2 * sh), 1e-15, 0);
-    assert_close(cw::friction_value(law_of(cw::FrictionLawKind::rational, 0, e, sh, 0, 0), 0).dmu_ds,
+    assert_close(cw::friction_value(law_of(cw::SlipSpeedLawKind::rational, 0, e, sh, 0, 0), 0).dmu_ds,
                  -e / sh, 1e-15, 0);
-    assert_true(cw::friction_value(law_of(cw::FrictionLawKind::rational, 0, 0, 0, e, sh), 0).dmu_ds ==
+    assert_true(cw::friction_value(law_of(cw::SlipSpeedLawKind::rational, 0, 0, 0, e, sh), 0).dmu_ds ==
                 0.0);
-    assert_close(cw::friction_value(law_of(cw::FrictionLawKind::exponential, 0, e, sh, 0, 0), 0).dmu_ds,
+    assert_close(cw::friction_value(law_of(cw::SlipSpeedLawKind::exponential, 0, e, sh, 0, 0), 0).dmu_ds,
                  -std::log(2.0) * e / sh, 1e-15, 0);
     // The linear law's kink takes the right-hand slope.
-    assert_true(cw::friction_value(law_of(cw::FrictionLawKind::linear, 0, e, sh, 0, 0), 2 * sh).dmu_ds ==
+    assert_true(cw::friction_value(law_of(cw::SlipSpeedLawKind::linear, 0, e, sh, 0, 0), 2 * sh).dmu_ds ==
                 0.0);
 }
 
@@ -118,8 +118,8 @@ void slopes_match_differences(void**)
 // mu0 [(1 - A) exp(-B s) + A] itself.
 void polach_form_is_exponential(void**)
 {
-    const cw::FrictionLaw law = cw::polach_law(0.36, 0.38, 0.7);
-    assert_true(law.kind == cw::FrictionLawKind::exponential);
+    const cw::SlipSpeedLaw law = cw::polach_law(0.36, 0.38, 0.7);
+    assert_true(law.kind == cw::SlipSpeedLawKind::exponential);
     assert_close(law.mu_kin, 0.1368, 0.0, 0.5e-4);
     assert_close(law.mu_e1, 0.2232, 0.0, 0.5e-4);
     assert_close(law.s_h1, 0.990, 0.0, 0.5e-3);
@@ -128,10 +128,10 @@ void polach_form_is_exponential(void**)
                      2e-15, 0.0);
 }
 
-void expect_invalid(const cw::FrictionLaw& law, const char* name)
+void expect_invalid(const cw::SlipSpeedLaw& law, const char* name)
 {
     try {
-        cw::check_friction_law(law);
+        cw::check_slip_speed_law(law);
         fail_msg("law accepted, expected an error naming %s", name);
     } catch (const cw::Error& e) {
         assert_int_equal(int(e.kind()), int(cw::ErrorKind::invalid_input));
@@ -141,8 +141,8 @@ void expect_invalid(const cw::FrictionLaw& law, const char* name)
 
 void invalid_laws_name_their_input(void**)
 {
-    const auto E = cw::FrictionLawKind::exponential;
-    cw::check_friction_law(law_of(E, 0.1, 0.2, 1.0, 0.0, 0.0)); // valid: mu_e2 = 0, s_h2 unread
+    const auto E = cw::SlipSpeedLawKind::exponential;
+    cw::check_slip_speed_law(law_of(E, 0.1, 0.2, 1.0, 0.0, 0.0)); // valid: mu_e2 = 0, s_h2 unread
     expect_invalid(law_of(E, -0.1, 0.2, 1.0, 0, 0), "mu_kin");
     expect_invalid(law_of(E, NAN, 0.2, 1.0, 0, 0), "mu_kin");
     expect_invalid(law_of(E, 0.1, -0.2, 1.0, 0, 0), "mu_e1");
@@ -173,7 +173,7 @@ void invalid_laws_name_their_input(void**)
 // without memory mu_i = mu_s(s_i); below s0 the background speed counts.
 void memory_closed_form(void**)
 {
-    const cw::FrictionLaw law = law_of(cw::FrictionLawKind::exponential, 0.14, 0.19, 1.25, 0, 0);
+    const cw::SlipSpeedLaw law = law_of(cw::SlipSpeedLawKind::exponential, 0.14, 0.19, 1.25, 0, 0);
     const double dt = 0.2889e-3 / 10.0, d_c = 3e-6; // tractcurv: dx / V, d_c = 3 um
     for (double s : {0.5, 0.0002}) {
         const cw::FrictionMemory mem{d_c, 1e-3};
@@ -196,7 +196,7 @@ void local_slip_solves_the_law(void**)
     const double pn = 640e6, c = 10.0 * 5.5e-14 / 0.2889e-3; // V L / h, tractcurv
     const cw::LocalSlip coulomb = cw::local_slip(cw::coulomb_law(0.33), 300e6, pn, c);
     assert_close(coulomb.t, 0.33 * pn, 1e-15, 0.0);
-    const cw::FrictionLaw law = law_of(cw::FrictionLawKind::exponential, 0.14, 0.19, 1.25, 0, 0);
+    const cw::SlipSpeedLaw law = law_of(cw::SlipSpeedLawKind::exponential, 0.14, 0.19, 1.25, 0, 0);
     for (double P : {0.34 * pn, 0.5 * pn, 2.0 * pn, 40.0 * pn}) {
         const cw::LocalSlip r = cw::local_slip(law, P, pn, c);
         assert_close(r.t, pn * cw::friction_value(law, c * (P - r.t)).mu, 1e-14, 0.0);
