@@ -81,6 +81,32 @@ void full_sliding_closed_form(void**)
     }
 }
 
+// Every form of the law, two terms each (mu_kin 0.14, mu_e1 0.19 at
+// 1.25 m/s, mu_e2 0.05 at 0.3 m/s): in full sliding at 10 and 15 % (1 and
+// 1.5 m/s, short of the linear law's kink at 2.5 m/s) |Fx|/(mu_s N) ->
+// mu(xi V)/mu_s within 2e-4.
+void every_form_in_full_sliding(void**)
+{
+    cw::FastsimLawModel m(tractcurv_grid());
+    for (const auto kind : {cw::SlipSpeedLawKind::linear, cw::SlipSpeedLawKind::rational,
+                            cw::SlipSpeedLawKind::exponential}) {
+        cw::SlipSpeedLaw law;
+        law.kind = kind;
+        law.mu_kin = 0.14;
+        law.mu_e1 = 0.19;
+        law.s_h1 = 1.25;
+        law.mu_e2 = 0.05;
+        law.s_h2 = 0.3;
+        m.set_law(law, 10.0);
+        for (double xi : {0.10, 0.15}) {
+            const cw::SolveTotals t = m.solve(eurosprinter(xi), cw::SolveMode::forces_only);
+            assert_int_equal(t.n_slip, t.n_contact);
+            assert_close(-t.Fx / 106.7e3, cw::friction_value(law, xi * 10.0).mu, 0.0,
+                         2e-4 * cw::static_friction(law));
+        }
+    }
+}
+
 // V -> 0: every slip speed is ~0, mu = mu_s: Coulomb's forces at 0.36.
 void slow_rolling_is_coulomb(void**)
 {
@@ -207,6 +233,7 @@ int main()
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(coulomb_law_is_fastsim),
         cmocka_unit_test(full_sliding_closed_form),
+        cmocka_unit_test(every_form_in_full_sliding),
         cmocka_unit_test(slow_rolling_is_coulomb),
         cmocka_unit_test(falling_law_peaks),
         cmocka_unit_test(inputs_named),

@@ -8,6 +8,7 @@
 #include "test_support.h"
 
 #include "contact/contact_grid.hpp"
+#include "fastsim/fastsim_law_model.hpp"
 #include "friction/global_slip.hpp"
 
 #include <cmath>
@@ -127,6 +128,25 @@ void series4_falling_friction_fastsim(void**)
     assert_int_equal(rows, 30);
 }
 
+// The law at every element (FastsimLawModel, no slope reduction: it does
+// not matter where every element slides) against CONTACT's series 4 in
+// full sliding, from 12.5 % on: within 2e-4 of the printed value.
+void local_law_meets_series4_in_full_sliding(void**)
+{
+    const cwtest::CsvTable t = cwtest::read_csv(cwtest::test_data_path("contact_tractcurv.csv"));
+    cw::FastsimLawModel m(tractcurv_grid());
+    m.set_law(series4_law(), kV);
+    int rows = 0;
+    for (size_t r = 0; r < t.rows.size(); ++r) {
+        if (t.number(r, "series") != 4 || t.number(r, "NADH") != 0) continue;
+        const cw::SolveTotals tot = m.solve(eurosprinter(t.number(r, "CKSI")),
+                                            cw::SolveMode::forces_only);
+        assert_close(tot.Fx / (0.36 * kN), t.number(r, "FX_over_FSTAT_FN"), 0.0, 2e-4);
+        ++rows;
+    }
+    assert_int_equal(rows, 6);
+}
+
 // The equivalent ellipse of CONTACT's discrete contact on this grid: 1376
 // elements spanning 44 x 40 of them (CONTACT's picture of series 3 and 4).
 void equivalent_ellipse_of_the_grid(void**)
@@ -165,6 +185,7 @@ int main()
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(series3_coulomb_fastsim),
         cmocka_unit_test(series4_falling_friction_fastsim),
+        cmocka_unit_test(local_law_meets_series4_in_full_sliding),
         cmocka_unit_test(equivalent_ellipse_of_the_grid),
         cmocka_unit_test(no_reduction_is_fastsim),
     };

@@ -10,6 +10,7 @@
 #include "contact/kalker_coefficients.hpp"
 #include "friction/slip_speed_law.hpp"
 #include "friction/friction_memory.hpp"
+#include "friction/global_slip.hpp"
 #include "friction/local_slip.hpp"
 #include "friction/polach_model.hpp"
 
@@ -311,6 +312,37 @@ void polach_linear_and_saturation_limits(void**)
     assert_true(zero.Fx == 0.0 && zero.Fy == 0.0);
 }
 
+// Spiryagin's reduction k = k0 (alpha_inf + (1 - alpha_inf)/(1 + beta eps)),
+// eps = G pi a b k0 C11 nu / (4 mu N), written out here for one contact:
+// tractcurv's with mu(w) of Polach's 0.36, 0.38, 0.7 s/m at V = 10 m/s.
+void slope_reduction_formula(void**)
+{
+    cw::ContactInput in;
+    in.a = 6.304e-3;
+    in.b = 12.61e-3;
+    in.normal_force = 106.7e3;
+    in.xi_x = 0.004;
+    in.xi_y = -0.003;
+    in.phi = 0.5; // 1/m: xi_y + phi a = -0.00085, smaller: nu_phi = xi_y
+    const cw::SlipSpeedLaw law = cw::polach_law(0.36, 0.38, 0.7);
+    const double GC11 = 82e9 * 3.7334;
+    const cw::GlobalSlip g = cw::global_slip(in, law, {0.54, 0.02, 0.62}, 10.0, GC11);
+    const double w = 10.0 * std::hypot(0.004, 0.003);
+    const double mu = 0.36 * (0.62 * std::exp(-0.7 * w) + 0.38);
+    const double eps = M_PI * in.a * in.b * 0.54 * GC11 * std::hypot(0.004, 0.003) / (4 * mu * 106.7e3);
+    assert_close(g.slip_speed, w, 1e-15, 0.0);
+    assert_close(g.mu, mu, 1e-14, 0.0);
+    assert_close(g.epsilon, eps, 1e-14, 0.0);
+    assert_close(g.k, 0.54 * (0.02 + 0.98 / (1 + 0.62 * eps)), 1e-14, 0.0);
+    // Spin that enlarges the lateral creepage counts: nu_phi = xi_y + phi a.
+    in.phi = -0.5;
+    const double nu = std::hypot(0.004, -0.003 - 0.5 * in.a);
+    assert_close(cw::global_slip(in, law, {0.54, 0.02, 0.62}, 10.0, GC11).epsilon,
+                 eps * nu / std::hypot(0.004, 0.003), 1e-14, 0.0);
+    // No reduction: k = 1 whatever eps.
+    assert_true(cw::global_slip(in, law, {}, 10.0, GC11).k == 1.0);
+}
+
 } // namespace
 
 int main()
@@ -325,6 +357,7 @@ int main()
         cmocka_unit_test(local_slip_solves_the_law),
         cmocka_unit_test(polach_table),
         cmocka_unit_test(polach_linear_and_saturation_limits),
+        cmocka_unit_test(slope_reduction_formula),
     };
     return cmocka_run_group_tests(tests, nullptr, nullptr);
 }
