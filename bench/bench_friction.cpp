@@ -22,6 +22,7 @@
 #include "fastsim/fastsim_law_model.hpp"
 #include "fastsim/fastsim_model.hpp"
 #include "friction/global_slip.hpp"
+#include "tractcurv_contact.hpp"
 
 namespace cw = creepwork;
 
@@ -54,11 +55,7 @@ int main(int argc, char** argv)
     int n = 200;
     for (int i = 1; i + 1 < argc; ++i)
         if (!std::strcmp(argv[i], "--repeats")) n = std::atoi(argv[i + 1]);
-    cw::GridSpec g;
-    g.kind = cw::GridKind::uniform;
-    g.nx = 48;
-    g.ny = 44;
-    g.box_scale = 1.1;
+    const cw::GridSpec g = cwtest::tractcurv_grid();
     const cw::ContactGrid grid(g);
     cw::FastsimModel coulomb(g);
     cw::FastsimLawModel local(g);
@@ -71,15 +68,8 @@ int main(int argc, char** argv)
     std::printf("| xi_x | slip el. | coulomb | global | local | local+J | local/coulomb | "
                 "Newton steps per slip el. |\n|---|---|---|---|---|---|---|---|\n");
     for (double xi : {0.001, 0.004, 0.02, 0.1}) {
-        cw::ContactInput in;
-        in.a = 6.304e-3;
-        in.b = 12.61e-3;
-        in.normal_force = 106.7e3;
-        in.G = 82e9;
-        in.nu = 0.28;
+        cw::ContactInput in = cwtest::tractcurv_contact(xi);
         in.mu = 0.36;
-        in.exact_load = true;
-        in.xi_x = xi;
         volatile double sink = 0.0;
         const double tc = per_call(n, [&] { sink = sink + coulomb.solve(in, cw::SolveMode::forces_only).Fx; });
         const double tg = per_call(n, [&] {

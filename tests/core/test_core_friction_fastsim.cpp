@@ -3,6 +3,7 @@
 // the closed form mu(xi V) N; a vanishing rolling speed gives Coulomb's
 // forces at the static coefficient; bad inputs are named.
 #include "core_test_support.hpp"
+#include "tractcurv_contact.hpp"
 #include "test_support.h"
 
 #include "contact/error.hpp"
@@ -17,31 +18,11 @@ namespace cw = creepwork;
 
 namespace {
 
-cw::GridSpec tractcurv_grid()
-{
-    cw::GridSpec g;
-    g.kind = cw::GridKind::uniform;
-    g.nx = 48;
-    g.ny = 44;
-    g.box_scale = 1.1;
-    return g;
-}
+using cwtest::tractcurv_grid;
 
-// CONTACT's tractcurv contact (a = 6.304, b = 12.61 mm, N = 106.7 kN, steel),
-// FASTSIM's parabolic bound carrying N exactly.
 cw::ContactInput eurosprinter(double xi_x, double xi_y = 0.0, double phi = 0.0)
 {
-    cw::ContactInput in;
-    in.a = 6.304e-3;
-    in.b = 12.61e-3;
-    in.normal_force = 106.7e3;
-    in.G = 82e9;
-    in.nu = 0.28;
-    in.exact_load = true;
-    in.xi_x = xi_x;
-    in.xi_y = xi_y;
-    in.phi = phi;
-    return in;
+    return cwtest::tractcurv_contact(xi_x, xi_y, phi);
 }
 
 // Coulomb's law through the law's march: FASTSIM's forces and slip counts,

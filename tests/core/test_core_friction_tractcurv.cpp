@@ -5,6 +5,7 @@
 // printed |Fx|/(mu_s N) (tests/data/contact_tractcurv.csv), and the
 // full-sliding closed form A + (1 - A) exp(-B xi V), B in s/m.
 #include "core_test_support.hpp"
+#include "tractcurv_contact.hpp"
 #include "test_support.h"
 
 #include "contact/contact_grid.hpp"
@@ -18,35 +19,10 @@ namespace cw = creepwork;
 
 namespace {
 
-const double kN = 106.7e3, kV = 10.0;
+const double kN = cwtest::kTractcurvN, kV = cwtest::kTractcurvV;
+using cwtest::tractcurv_grid;
 
-cw::GridSpec tractcurv_grid()
-{
-    cw::GridSpec g;
-    g.kind = cw::GridKind::uniform;
-    g.nx = 48;
-    g.ny = 44;
-    g.box_scale = 1.1;
-    return g;
-}
-
-// tractcurv.inp: A1 = 0.0008/mm, a/b = 0.5, N = 106.7 kN, G = 82 GPa,
-// nu = 0.28; the Hertzian semi-axes CONTACT prints, 6.304 and 12.61 mm.
-// FASTSIM with the parabolic bound scaled to carry N (CONTACT's B=3).
-cw::ContactInput eurosprinter(double xi)
-{
-    cw::ContactInput in;
-    in.a = 6.304e-3;
-    in.b = 12.61e-3;
-    in.normal_force = kN;
-    in.G = 82e9;
-    in.nu = 0.28;
-    in.model = cw::ModelKind::fastsim;
-    in.pressure = cw::PressureKind::parabolic;
-    in.exact_load = true;
-    in.xi_x = xi;
-    return in;
-}
+cw::ContactInput eurosprinter(double xi) { return cwtest::tractcurv_contact(xi); }
 
 // Series 4: Polach's mu0 = 0.36, A = 0.38, B = 0.7 s/m (CONTACT's FKIN
 // 0.1368, FEXP1 0.2232, SABSH1 990 mm/s), k0 = 0.54, alpha_inf = 0.02,
