@@ -73,6 +73,64 @@ ContactInput global_slip_input(const ContactInput& in, const ContactGrid& grid,
     return r;
 }
 
+Jacobian global_slip_jacobian(const ContactInput& in, const ContactGrid& grid,
+                              const SlipSpeedLaw& law, const SlopeReduction& sr, double V,
+                              const Jacobian& J, const double F[3])
+{
+    if (in.flexibility_blending)
+        throw Error(ErrorKind::invalid_input,
+                    "flexibility_blending: the global-slip FASTSIM's Jacobian needs it off");
+    GlobalSlip g;
+    const ContactInput eff = global_slip_input(in, grid, law, sr, V, &g);
+    const SemiAxes e = equivalent_ellipse(grid, in.a, in.b);
+    // The creepages FASTSIM saw, c = (xi_x, xi_y, phi), and its Jacobian J in
+    // them at mu(w), L/k.
+    const double c[3] = {in.xi_x, in.xi_y, in.phi};
+    double dF_dmu[3];
+    for (int i = 0; i < 3; ++i) {
+        double sum = 0.0;
+        for (int k = 0; k < 3; ++k) sum += c[k] * J.d[i][k];
+        dF_dmu[i] = eff.mu > 0.0 ? (F[i] - sum) / eff.mu : 0.0;
+    }
+    // F(c; L/k) = G(k c; L): dF/dk = sum_c c_k dG/dc_k = sum_c c_k J_ik / k.
+    double dF_dk[3];
+    for (int i = 0; i < 3; ++i) {
+        double sum = 0.0;
+        for (int k = 0; k < 3; ++k) sum += c[k] * J.d[i][k];
+        dF_dk[i] = sum / g.k;
+    }
+    // mu(w), w = V |(xi_x, xi_y)|: dmu/dc.
+    const double s = std::hypot(in.xi_x, in.xi_y);
+    const double mu_slope = friction_value(law, g.slip_speed).dmu_ds;
+    const double dmu[4] = {s > 0.0 ? mu_slope * V * in.xi_x / s : 0.0,
+                           s > 0.0 ? mu_slope * V * in.xi_y / s : 0.0, 0.0, 0.0};
+    // k(eps), eps proportional to nu / (mu N): deps/dc.
+    double nu_phi = in.xi_y + in.phi * e.a;
+    const bool spin_counts = !(std::fabs(nu_phi) < std::fabs(in.xi_y));
+    if (!spin_counts) nu_phi = in.xi_y;
+    const double nu = std::hypot(in.xi_x, nu_phi);
+    double dnu[4] = {0.0, 0.0, 0.0, 0.0};
+    if (nu > 0.0) {
+        dnu[0] = in.xi_x / nu;
+        dnu[1] = nu_phi / nu;
+        dnu[2] = spin_counts ? nu_phi * e.a / nu : 0.0;
+    }
+    const double dk_deps = -sr.k0 * (1.0 - sr.alpha_inf) * sr.beta /
+                           ((1.0 + sr.beta * g.epsilon) * (1.0 + sr.beta * g.epsilon));
+    Jacobian out;
+    for (int col = 0; col < 4; ++col) {
+        double deps = 0.0;
+        if (g.epsilon > 0.0) {
+            deps = (nu > 0.0 ? g.epsilon * dnu[col] / nu : 0.0) - g.epsilon * dmu[col] / g.mu;
+            if (col == 3) deps -= g.epsilon / in.normal_force;
+        }
+        const double dk = dk_deps * deps;
+        for (int i = 0; i < 3; ++i)
+            out.d[i][col] = J.d[i][col] + dF_dmu[i] * dmu[col] + dF_dk[i] * dk;
+    }
+    return out;
+}
+
 void check_slope_reduction(const SlopeReduction& sr)
 {
     if (!(std::isfinite(sr.k0) && sr.k0 > 0.0))

@@ -11,6 +11,7 @@
 #pragma once
 
 #include "contact/contact_grid.hpp"
+#include "contact/jacobian.hpp"
 #include "contact/params.hpp"
 #include "friction/slip_speed_law.hpp"
 
@@ -51,6 +52,18 @@ GlobalSlip global_slip(const ContactInput& in, const SlipSpeedLaw& law, const Sl
 ContactInput global_slip_input(const ContactInput& in, const ContactGrid& grid,
                                const SlipSpeedLaw& law, const SlopeReduction& sr, double V,
                                GlobalSlip* out = nullptr);
+
+// The Jacobian of the global-slip FASTSIM, d(Fx, Fy, Mz)/d(xi_x, xi_y, phi,
+// N), from FASTSIM's Jacobian J and forces F at the input global_slip_input()
+// made (its mu(w) and flexibilities L/k held fixed there), by the chain rule
+// through mu(w) and k. It uses two identities of FASTSIM: its forces are
+// homogeneous of degree 1 in (creepages, mu), so dF/dmu = (F - sum_c xi_c
+// dF/dxi_c)/mu; and dividing every flexibility by k is multiplying every
+// creepage by k. Needs flexibility_blending off (blending breaks the second
+// identity): an error names it.
+Jacobian global_slip_jacobian(const ContactInput& in, const ContactGrid& grid,
+                              const SlipSpeedLaw& law, const SlopeReduction& sr, double V,
+                              const Jacobian& J, const double F[3]);
 
 // Throws Error(invalid_input) naming k0, alpha_inf or beta when out of range.
 void check_slope_reduction(const SlopeReduction& sr);
