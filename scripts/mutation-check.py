@@ -632,7 +632,7 @@ MUTANTS += [
          file="core/friction/slip_speed_law.cpp",
          old="    law.s_h1 = kLn2 / B;", new="    law.s_h1 = 1.0 / B;", tests=FRICTION),
     dict(id="local-slip-dt-dc", what="the slipping element's dt/dc with the wrong sign",
-         file="core/friction/local_slip.cpp",
+         file="core/friction/local_slip.hpp",
          old="    r.dt_dc = dg != 0.0 ? pn * v.dmu_ds * (P - t) / dg : 0.0;",
          new="    r.dt_dc = dg != 0.0 ? -pn * v.dmu_ds * (P - t) / dg : 0.0;", tests=FRICTION),
     dict(id="law-march-slip-speed", what="slip speed of a FASTSIM element without the 1/a of its step",

@@ -55,9 +55,18 @@ SolveTotals FastsimLawModel::solve(const ContactInput& input, SolveMode mode)
     return totals(input_, mode, ModelKind::fastsim);
 }
 
+void FastsimLawModel::set_memory(const FrictionMemory& memory)
+{
+    check_friction_memory(memory);
+    memory_ = memory;
+}
+
 SolveTotals FastsimLawModel::solve_jacobian(const ContactInput& input, SolveMode mode,
                                             Jacobian& jacobian)
 {
+    if (memory_.distance > 0.0)
+        throw Error(ErrorKind::invalid_input,
+                    "memory_distance: FASTSIM with friction memory has no Jacobian");
     prepare(input, mode);
     march_with_law(true);
     Jacobian J = fastsim_jacobian(input_, setup(), grid(), march_state(), tangent_);
@@ -102,7 +111,8 @@ void FastsimLawModel::march_with_law(bool tangents)
     bool any_slip = false;
     for (int j = 0; j < geo.ny; ++j) {
         double px = 0.0, py = 0.0, sum_px = 0.0, sum_py = 0.0, sum_x_py = 0.0, slips = 0.0;
-        double mu_prev = mu_s; // Newton's start: the strip's last slipping element's mu
+        double mu_prev = mu_s;   // Newton's start: the strip's last slipping element's mu
+        double mu_memory = mu_s; // memory: the previous element's mu (mu_s before the strip)
         // Tangents: dp and the strip sums, dw of kappa (-b Y, a (X_slip + offset dX)).
         double dpx[K] = {}, dpy[K] = {}, tsx[K] = {}, tsy[K] = {}, tsxy[K] = {};
         const double kwx = -s.b * grid().y_centre()[j];
@@ -111,6 +121,7 @@ void FastsimLawModel::march_with_law(bool tangents)
         for (int m = 0; m < geo.nx; ++m) {
             const Eigen::Index p = static_cast<Eigen::Index>(m) * geo.stride + j;
             const double h = geo.step[p], in = geo.inside[p];
+            if (in == 0.0) mu_memory = mu_s; // each contact segment from its leading edge
             const double qx = in * (px - h * st.wx[j]);
             const double qy = in * (py - h * (st.wy[j] + s.kin.cy * geo.x_slip[p]));
             const double P = std::sqrt(qx * qx + qy * qy);
@@ -124,13 +135,21 @@ void FastsimLawModel::march_with_law(bool tangents)
                     dqy[k] = in * (dpy[k] - h * dwy[k]);
                 }
             }
-            if (P > bound[p]) {
+            // With memory the element's law is mu_m, and its coefficient at
+            // s = 0 decides slip; without, mu_s and the bound itself.
+            const bool memory = memory_.distance > 0.0 && in != 0.0;
+            const MemoryElement element{&law_, memory_, h * s.a / V_, mu_memory};
+            const double mu_at_rest = memory ? friction_value(element, 0.0).mu : mu_s;
+            if (memory) mu_memory = mu_at_rest;
+            if (P > bound[p] * (mu_at_rest / mu_s)) {
                 // Slip speed per unit of q' lost: V |(L1 q_x, L2 q_y)| / |q'| T / (h a).
                 const double lx = s.L1 * qx, ly = s.L2 * qy;
                 const double Lq = std::sqrt(lx * lx + ly * ly);
                 const double c = V_ * Lq / P * T / (h * s.a);
-                const LocalSlip r = local_slip(law_, P, bound[p] / mu_s, c, mu_prev);
+                const LocalSlip r = memory ? local_slip(element, P, bound[p] / mu_s, c, mu_prev)
+                                           : local_slip(law_, P, bound[p] / mu_s, c, mu_prev);
                 mu_prev = r.mu;
+                if (memory) mu_memory = r.mu;
                 f = r.t / P;
                 iterations_ += r.iterations;
                 if (!any_slip) mu_min_ = mu_max_ = r.mu;

@@ -13,6 +13,7 @@
 #pragma once
 
 #include "contact/params.hpp"
+#include "friction/friction_memory.hpp"
 #include "friction/slip_speed_law.hpp"
 #include "fastsim/march_tangent.hpp"
 #include "march/march_model.hpp"
@@ -27,6 +28,11 @@ public:
     // The law and the rolling speed V [m/s] > 0 the next solves use; throws
     // Error(invalid_input) naming the input (the law's parameters, V).
     void set_law(const SlipSpeedLaw& law, double V);
+    // Friction memory along each strip (friction_memory.hpp; distance 0: none,
+    // the default): every element's coefficient is mu_m of its slip speed,
+    // the previous element's mu and dt = h / V, adhering elements' too
+    // (their s is 0). Throws Error(invalid_input) naming the input.
+    void set_memory(const FrictionMemory& memory);
 
     // input.mu is not read: the traction unit is the law's static
     // coefficient. Forces mode only (full mode: Error naming the mode, the
@@ -37,7 +43,7 @@ public:
     // P = |q'|, the slip-speed factor c (which moves with q' and, through
     // the traction unit, with N) and the law's slope, dt = (p_n mu' (c dP +
     // (P - t) dc)) / (1 + p_n c mu'); held fixed as in FASTSIM's Jacobian
-    // (fastsim_jacobian.hpp), and V.
+    // (fastsim_jacobian.hpp), and V. Not with memory (Error naming it).
     SolveTotals solve_jacobian(const ContactInput& input, SolveMode mode,
                                Jacobian& jacobian) override;
 
@@ -52,6 +58,7 @@ private:
     void prepare(const ContactInput& input, SolveMode mode);
 
     SlipSpeedLaw law_;
+    FrictionMemory memory_;
     double V_ = 0.0;
     double mu_min_ = 0.0, mu_max_ = 0.0;
     int iterations_ = 0;

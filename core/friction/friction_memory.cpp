@@ -7,19 +7,27 @@
 
 namespace creepwork {
 
+FrictionValue friction_value(const MemoryElement& e, double s)
+{
+    const FrictionValue steady = friction_value(*e.law, s);
+    // CONTACT treats d_c <= 1e-9 mm as no memory: theta = 0.
+    if (!(e.memory.distance > 0.0)) return steady;
+    const double d_c = e.memory.distance;
+    const bool above = s > e.memory.s0;
+    const double denominator = d_c + e.dt * (above ? s : e.memory.s0);
+    const double theta = d_c / denominator;
+    const double dtheta = above ? -d_c * e.dt / (denominator * denominator) : 0.0;
+    return {theta * e.mu_prev + (1.0 - theta) * steady.mu,
+            dtheta * (e.mu_prev - steady.mu) + (1.0 - theta) * steady.dmu_ds};
+}
+
 void memory_row(const SlipSpeedLaw& law, const FrictionMemory& memory, double dt, const double* s,
                 int n, double* mu)
 {
-    double previous = static_friction(law);
+    MemoryElement e{&law, memory, dt, static_friction(law)};
     for (int i = 0; i < n; ++i) {
-        const double steady = friction_value(law, s[i]).mu;
-        // CONTACT treats d_c <= 1e-9 mm as no memory: theta = 0.
-        const double theta = memory.distance > 0.0
-                                 ? memory.distance /
-                                       (memory.distance + dt * std::max(s[i], memory.s0))
-                                 : 0.0;
-        mu[i] = theta * previous + (1.0 - theta) * steady;
-        previous = mu[i];
+        mu[i] = friction_value(e, s[i]).mu;
+        e.mu_prev = mu[i];
     }
 }
 

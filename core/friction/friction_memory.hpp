@@ -15,6 +15,24 @@ struct FrictionMemory {
     double s0 = 0.0;       // background slip speed [m/s] >= 0
 };
 
+// One element under memory, as a law of its own slip speed s:
+//   mu_m(s) = theta(s) mu_prev + (1 - theta(s)) mu_s(s),
+//   theta(s) = d_c / (d_c + dt max(s, s0)),
+// mu_prev the coefficient of the element before it in the row. The model
+// that solves an element's slip with it (local_slip.hpp) and memory_row()
+// take the coefficient from here.
+struct MemoryElement {
+    const SlipSpeedLaw* law = nullptr;
+    FrictionMemory memory;
+    double dt = 0.0;      // [s] > 0
+    double mu_prev = 0.0; // [-]
+};
+
+// mu_m(s) and dmu_m/ds (the right-hand slope at s = s0).
+FrictionValue friction_value(const MemoryElement& element, double s);
+// An upper bound of mu_m over every s: the law's static coefficient.
+inline double static_friction(const MemoryElement& element) { return static_friction(*element.law); }
+
 // One row of n elements from the leading edge (index 0) to the trailing
 // edge: slip speed s[i] [m/s] in, mu[i] out. Before the leading edge mu is
 // the static coefficient; then mu_i = theta_i mu_{i-1} + (1 - theta_i)

@@ -88,6 +88,49 @@ void every_form_in_full_sliding(void**)
     }
 }
 
+// Friction memory (d_c, s0): a vanishing distance is the law without it, a
+// huge one keeps every element at mu_s (Coulomb's FASTSIM at mu_s); between,
+// tractcurv's 3 um and 1 mm/s lifts the force above the law's, below
+// Coulomb's. No Jacobian with memory.
+void memory_limits(void**)
+{
+    cw::FastsimModel plain(tractcurv_grid());
+    cw::FastsimLawModel m(tractcurv_grid()), none(tractcurv_grid());
+    const cw::SlipSpeedLaw law = cw::polach_law(0.36, 0.38, 0.7);
+    m.set_law(law, 10.0);
+    none.set_law(law, 10.0);
+    for (double xi : {0.002, 0.01, 0.1}) {
+        cw::ContactInput in = eurosprinter(xi, 0.2 * xi);
+        in.mu = 0.36;
+        const cw::SolveTotals coulomb = plain.solve(in, cw::SolveMode::forces_only);
+        const cw::SolveTotals without = none.solve(in, cw::SolveMode::forces_only);
+        m.set_memory({1e-15, 1e-3});
+        const cw::SolveTotals tiny = m.solve(in, cw::SolveMode::forces_only);
+        assert_close(tiny.Fx, without.Fx, 1e-9, 0.0);
+        assert_close(tiny.Fy, without.Fy, 1e-9, 0.0);
+        m.set_memory({1e6, 1e-3});
+        const cw::SolveTotals huge = m.solve(in, cw::SolveMode::forces_only);
+        assert_close(huge.Fx, coulomb.Fx, 1e-9, 0.0);
+        assert_close(huge.Fy, coulomb.Fy, 1e-9, 0.0);
+        m.set_memory({3e-6, 1e-3});
+        const cw::SolveTotals some = m.solve(in, cw::SolveMode::forces_only);
+        assert_true(-some.Fx > -without.Fx && -some.Fx < -coulomb.Fx);
+    }
+    cw::Jacobian J;
+    try {
+        m.solve_jacobian(eurosprinter(0.01), cw::SolveMode::forces_only, J);
+        fail_msg("memory's Jacobian given");
+    } catch (const cw::Error& e) {
+        assert_true(std::string(e.what()).rfind("memory_distance", 0) == 0);
+    }
+    try {
+        m.set_memory({-1.0, 0.0});
+        fail_msg("negative memory distance accepted");
+    } catch (const cw::Error& e) {
+        assert_true(std::string(e.what()).rfind("memory_distance", 0) == 0);
+    }
+}
+
 // V -> 0: every slip speed is ~0, mu = mu_s: Coulomb's forces at 0.36.
 void slow_rolling_is_coulomb(void**)
 {
@@ -216,6 +259,7 @@ int main()
         cmocka_unit_test(full_sliding_closed_form),
         cmocka_unit_test(every_form_in_full_sliding),
         cmocka_unit_test(slow_rolling_is_coulomb),
+        cmocka_unit_test(memory_limits),
         cmocka_unit_test(falling_law_peaks),
         cmocka_unit_test(inputs_named),
         cmocka_unit_test(jacobian_across_the_peak),

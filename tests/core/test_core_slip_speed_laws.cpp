@@ -187,6 +187,13 @@ void memory_closed_form(void**)
         cw::memory_row(law, {0.0, 1e-3}, dt, speed.data(), 48, mu.data());
         for (int i = 0; i < 48; ++i) assert_true(mu[i] == steady);
     }
+    // One element's mu_m(s): its slope against central differences, above s0.
+    const cw::MemoryElement e{&law, {d_c, 1e-3}, dt, 0.3};
+    for (double s : {0.01, 0.3, 2.0}) {
+        const double h = 1e-6;
+        const double fd = (cw::friction_value(e, s + h).mu - cw::friction_value(e, s - h).mu) / (2 * h);
+        assert_close(cw::friction_value(e, s).dmu_ds, fd, 1e-7, 1e-12);
+    }
 }
 
 // The slipping element: Coulomb's law gives t = pn mu at once; a falling
