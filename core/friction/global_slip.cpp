@@ -50,6 +50,11 @@ ContactInput global_slip_input(const ContactInput& in, const ContactGrid& grid,
                                const SlipSpeedLaw& law, const SlopeReduction& sr, double V,
                                GlobalSlip* out)
 {
+    check_slip_speed_law(law);
+    check_slope_reduction(sr);
+    if (!(std::isfinite(V) && V >= 0.0) || (law.kind != SlipSpeedLawKind::coulomb && V == 0.0))
+        throw Error(ErrorKind::invalid_input,
+                    "V (the rolling speed) must be finite and > 0 [m/s] for a law of the slip speed");
     ContactInput r = in;
     const SemiAxes e = equivalent_ellipse(grid, in.a, in.b);
     Flexibilities L{in.L1, in.L2, in.L3};

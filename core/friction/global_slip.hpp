@@ -47,8 +47,10 @@ GlobalSlip global_slip(const ContactInput& in, const SlipSpeedLaw& law, const Sl
 
 // The input FASTSIM solves on this grid: mu = mu(w) and the flexibilities
 // (Kalker's from G and nu, or the given ones) divided by k, given; eps on
-// the grid's equivalent ellipse, C11 (or G C11 = 8 a_e / (3 L1(a_e, b_e))
-// from given ones) at its a_e / b_e.
+// the grid's equivalent ellipse with C11 at its a_e / b_e (from given
+// flexibilities G C11 = 8 a / (3 L1) of the nominal ellipse). Throws
+// Error(invalid_input) naming a bad law parameter, k0, alpha_inf, beta, or
+// V (finite, and > 0 for a law other than Coulomb's).
 ContactInput global_slip_input(const ContactInput& in, const ContactGrid& grid,
                                const SlipSpeedLaw& law, const SlopeReduction& sr, double V,
                                GlobalSlip* out = nullptr);

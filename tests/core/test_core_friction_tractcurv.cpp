@@ -229,6 +229,32 @@ void no_reduction_is_fastsim(void**)
     assert_true(s1.solve(in).Fx == s2.solve(coulomb).Fx);
 }
 
+// Bad inputs of the set-up are named: V for a law of the slip speed, the
+// law's parameters, Spiryagin's.
+void setup_inputs_named(void**)
+{
+    const cw::ContactGrid grid(tractcurv_grid());
+    const auto expect = [&](const cw::SlipSpeedLaw& law, const cw::SlopeReduction& sr, double V,
+                            const char* name) {
+        try {
+            cw::global_slip_input(eurosprinter(0.01), grid, law, sr, V);
+            fail_msg("accepted, expected an error naming %s", name);
+        } catch (const cw::Error& e) {
+            assert_true(std::string(e.what()).rfind(name, 0) == 0);
+        }
+    };
+    expect(series4_law(), kSpiryagin, 0.0, "V");
+    expect(series4_law(), kSpiryagin, NAN, "V");
+    cw::SlipSpeedLaw bad = series4_law();
+    bad.s_h1 = 0.0;
+    expect(bad, kSpiryagin, kV, "s_h1");
+    expect(series4_law(), {0.0, 0.02, 0.62}, kV, "k0");
+    expect(series4_law(), {0.54, 1.5, 0.62}, kV, "alpha_inf");
+    expect(series4_law(), {0.54, 0.02, -1.0}, kV, "beta");
+    // Coulomb's law needs no V.
+    cw::global_slip_input(eurosprinter(0.01), grid, cw::coulomb_law(0.3), {}, 0.0);
+}
+
 } // namespace
 
 int main()
@@ -240,6 +266,7 @@ int main()
         cmocka_unit_test(local_law_meets_series4_in_full_sliding),
         cmocka_unit_test(equivalent_ellipse_of_the_grid),
         cmocka_unit_test(no_reduction_is_fastsim),
+        cmocka_unit_test(setup_inputs_named),
     };
     return cmocka_run_group_tests(tests, nullptr, nullptr);
 }
