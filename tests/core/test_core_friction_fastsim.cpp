@@ -26,7 +26,7 @@ cw::ContactInput eurosprinter(double xi_x, double xi_y = 0.0, double phi = 0.0)
 }
 
 // Coulomb's law through the law's march: FASTSIM's forces and slip counts,
-// with creepage and spin, on both grids.
+// with creepage and spin, on both grids, both rolling directions.
 void coulomb_law_is_fastsim(void**)
 {
     for (const cw::GridSpec& g : {tractcurv_grid(), cwtest::kalker_grid(30, 25)}) {
@@ -36,6 +36,7 @@ void coulomb_law_is_fastsim(void**)
         for (double xi : {1e-5, 1e-3, 4e-3, 0.05}) {
             cw::ContactInput in = eurosprinter(xi, -0.5 * xi, 2.0 * xi);
             in.mu = 0.33;
+            in.rolling_direction = xi > 1e-3 ? -1 : 1;
             const cw::SolveTotals a = plain.solve(in, cw::SolveMode::forces_only);
             const cw::SolveTotals b = law.solve(in, cw::SolveMode::forces_only);
             assert_close(b.Fx, a.Fx, 1e-13, 0.0);
@@ -190,7 +191,7 @@ void inputs_named(void**)
 // The Jacobian of Fx, Fy, Mz by xi_x, xi_y, phi, N against central
 // differences of the model itself, before the peak (0.4 %) and past it
 // (2 %, where dFx/dxi_x has changed sign), alone and with lateral creepage
-// and spin: the
+// and spin (rolling towards -x at 2 %): the
 // worst entry, relative to its row's scale sum_c |J_rc| scale_c, over the
 // best of four steps that change no element's state, within 1e-4.
 double jacobian_error(cw::FastsimLawModel& m, const cw::ContactInput& in, const cw::Jacobian& J,
@@ -234,8 +235,9 @@ void jacobian_across_the_peak(void**)
     m.set_law(cw::polach_law(0.36, 0.38, 0.7), 10.0);
     for (double xi : {0.004, 0.02})
         for (double lateral : {0.0, 1.0}) {
-            const cw::ContactInput in =
+            cw::ContactInput in =
                 eurosprinter(xi, 0.3 * lateral * xi, 0.2 * lateral * xi / 6.304e-3);
+            in.rolling_direction = lateral > 0.0 && xi > 0.01 ? -1 : 1;
             cw::Jacobian J;
             const cw::SolveTotals t = m.solve_jacobian(in, cw::SolveMode::forces_only, J);
             const cw::SolveTotals plain = m.solve(in, cw::SolveMode::forces_only);
