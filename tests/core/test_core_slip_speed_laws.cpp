@@ -3,6 +3,7 @@
 // against CONTACT's formulas (m_friclaw.f90, evaluated here in CONTACT's own
 // units, mm/s), their closed forms, central differences, Kalker's linear
 // theory and the Polach table of doc/theory/friction.md.
+#include "contact_friction_formula.hpp"
 #include "core_test_support.hpp"
 #include "test_support.h"
 
@@ -22,18 +23,7 @@ namespace cw = creepwork;
 
 namespace {
 
-// CONTACT's fric_veldep_mu_steady (m_friclaw.f90), transcribed: slip speed
-// and half speeds in mm/s.
-double contact_mu_steady(int L, double fkin, double f1, double sh1, double f2, double sh2,
-                         double slpvel)
-{
-    if (L == 2)
-        return fkin + f1 * std::max(0.0, 1.0 - 0.5 * slpvel / sh1) +
-               f2 * std::max(0.0, 1.0 - 0.5 * slpvel / sh2);
-    if (L == 3) return fkin + f1 / (1.0 + slpvel / sh1) + f2 / (1.0 + std::pow(slpvel / sh2, 2));
-    return fkin + f1 * std::exp(-std::log(2.0) * slpvel / sh1) +
-           f2 * std::exp(-std::log(2.0) * slpvel / sh2);
-}
+using cwtest::contact_mu_steady;
 
 cw::SlipSpeedLaw law_of(cw::SlipSpeedLawKind kind, double kin, double e1, double h1, double e2,
                        double h2)
