@@ -23,6 +23,7 @@ import tempfile
 LAYERS = [
     ["simd"],                  # the ISA dispatch and vector types of every SIMD kernel
     ["contact"],               # grids, inputs, totals, the ContactModel interface
+    ["friction"],              # friction laws of the slip speed, Polach's model: pure functions
     ["halfspace"],             # Kalker's half-space: influence coefficients, FFT products
     ["normal", "march"],       # the normal problem on any gap; the strip march
     ["exact", "fastsim", "calibrated"],  # the tangential models on the ellipse's grids

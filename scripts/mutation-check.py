@@ -666,6 +666,47 @@ PROMISE_MUTANTS = [
 MUTANTS += PROMISE_MUTANTS
 # -------------------------------------------------------- end promises pinned
 
+# ------------------------------------------------------------------ friction
+# Laws of the slip speed (core/friction) and FASTSIM with a law: CONTACT's
+# formulas and its tractcurv rows, closed forms, central differences.
+FRICTION = [
+    "test_core_slip_speed_laws", "test_core_friction_tractcurv", "test_core_friction_fastsim",
+]
+MUTANTS += [
+    dict(id="law-exp-half-speed", what="exponential law's term halved at s_h/ln 2, not s_h",
+         file="core/friction/slip_speed_law.cpp",
+         old="        const double e = mu_e * std::exp(-kLn2 * r);",
+         new="        const double e = mu_e * std::exp(-r);", tests=FRICTION),
+    dict(id="law-exp-slope", what="exponential law's slope without ln 2",
+         file="core/friction/slip_speed_law.cpp",
+         old="        return {e, -kLn2 * e / s_h};", new="        return {e, -e / s_h};", tests=FRICTION),
+    dict(id="law-linear-kink", what="linear law falls to 0 at s_h, not 2 s_h",
+         file="core/friction/slip_speed_law.cpp",
+         old="        const double f = 1.0 - 0.5 * r;", new="        const double f = 1.0 - r;",
+         tests=FRICTION),
+    dict(id="law-rational-square", what="rational law's second term not squared",
+         file="core/friction/slip_speed_law.cpp",
+         old="        const double d = 1.0 + r * r; // mu_e / (1 + (s/s_h)^2)",
+         new="        const double d = 1.0 + r; // mu_e / (1 + (s/s_h)^2)", tests=FRICTION),
+    dict(id="polach-half-speed", what="Polach's B taken as 1/s_h, without ln 2",
+         file="core/friction/slip_speed_law.cpp",
+         old="    law.s_h1 = kLn2 / B;", new="    law.s_h1 = 1.0 / B;", tests=FRICTION),
+    dict(id="local-slip-dt-dc", what="the slipping element's dt/dc with the wrong sign",
+         file="core/friction/local_slip.hpp",
+         old="    r.dt_dc = dg != 0.0 ? pn * v.dmu_ds * (P - t) / dg : 0.0;",
+         new="    r.dt_dc = dg != 0.0 ? -pn * v.dmu_ds * (P - t) / dg : 0.0;", tests=FRICTION),
+    dict(id="law-march-slip-speed", what="slip speed of a FASTSIM element without the 1/a of its step",
+         file="core/fastsim/fastsim_law_model.cpp",
+         old="                const double c = V_ * Lq / P * T / (h * s.a);",
+         new="                const double c = V_ * Lq / P * T / h;", tests=FRICTION),
+    dict(id="spiryagin-alpha", what="Spiryagin's alpha_inf and 1 - alpha_inf swapped",
+         file="core/friction/global_slip.cpp",
+         old="    g.k = sr.k0 * (sr.alpha_inf + (1.0 - sr.alpha_inf) / (1.0 + sr.beta * g.epsilon));",
+         new="    g.k = sr.k0 * ((1.0 - sr.alpha_inf) + sr.alpha_inf / (1.0 + sr.beta * g.epsilon));",
+         tests=FRICTION),
+]
+# -------------------------------------------------------------- end friction
+
 def run(cmd, cwd=None, quiet=True):
     r = subprocess.run(cmd, cwd=cwd, stdout=subprocess.PIPE if quiet else None,
                        stderr=subprocess.STDOUT if quiet else None, text=True)
