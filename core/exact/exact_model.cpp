@@ -6,6 +6,7 @@
 
 #include "contact/contact_input.hpp"
 #include "contact/error.hpp"
+#include "contact/friction_law.hpp"
 #include "contact/number_text.hpp"
 #include "contact/kalker_coefficients.hpp"
 #include "exact/exact_work.hpp"
@@ -185,7 +186,7 @@ void ExactModel::set_up(const ContactInput& in, SolveMode mode)
     s.dx = 2.0 * box_scale_ * in.a / nx_;
     s.dy = 2.0 * box_scale_ * in.b / ny_;
     s.p0 = 3.0 * in.normal_force / (2.0 * kPi * in.a * in.b);
-    s.traction_scale = in.mu * s.p0;
+    s.traction_scale = traction_bound(friction_law(in), s.p0);
     s.xi = s.direction * in.xi_x;
     s.eta = in.xi_y;
     s.phi = s.direction * in.phi;

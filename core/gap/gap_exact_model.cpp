@@ -6,6 +6,7 @@
 
 #include "contact/contact_input.hpp"
 #include "contact/error.hpp"
+#include "contact/friction_law.hpp"
 #include "contact/number_text.hpp"
 #include "contact/kalker_coefficients.hpp"
 #include "halfspace/cell_box.hpp"
@@ -317,7 +318,7 @@ SolveTotals GapExactModel::solve(const ContactInput& in, SolveMode mode)
     for (double p : pressure) p_ref = std::max(p_ref, p);
     s.loaded = p_ref > 0.0;
     s.p_ref = p_ref;
-    s.traction_scale = in.mu * p_ref;
+    s.traction_scale = traction_bound(friction_law(in), p_ref);
     SolveTotals t;
     label_patches(t);
     set_box(normal_.half_space(in.nu));

@@ -243,7 +243,7 @@ GapMarchInput GapFastsimModel::march_input(const ContactInput& in) const
     m.pressure = normal_.pressure().data();
     m.patch = patch_of_.data();
     m.patches = march_patches_.data();
-    m.mu = in.mu;
+    m.law = friction_law(in);
     m.xi = d * in.xi_x;
     m.eta = in.xi_y;
     m.phi = d * in.phi;
