@@ -95,7 +95,7 @@ void validate_gap_input(const ContactInput& in, size_t n, KernelIsa isa)
     if (!normal_method_known(in.normal_method))
         reject_input("normal_method", static_cast<double>(in.normal_method),
                      "unknown normal method");
-    require_non_negative("mu", in.mu);
+    validate_friction_input(in);
     require_positive("G", in.G);
     require_finite("nu", in.nu);
     if (!(in.nu >= 0.0 && in.nu <= 0.5)) reject_input("nu", in.nu, "must lie in [0, 0.5]");

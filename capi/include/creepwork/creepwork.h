@@ -277,6 +277,10 @@ typedef struct cw_params {
     int normal_method;     /* CW_NORMAL_EXACT (default) or CW_NORMAL_SEMI_HERTZ; the
                               tangential problem is the model's either way */
     double approach;       /* [m] from the gap's datum, with CW_NORMAL_APPROACH (default 0) */
+    /* ---- appended in 1.3 ---- */
+    double V;              /* rolling speed [m/s], >= 0; 0 (default) = not given. A
+                              friction law of the slip speed (|micro-slip| * V) needs it;
+                              Coulomb's law (every model's) does not use it */
 } cw_params;
 
 /* Defaults: steel (G = 82e9 Pa, nu = 0.28), mu = 0.3, a = b = 6e-3 m,
