@@ -73,6 +73,8 @@ ExactModel::ExactModel(const GridSpec& grid)
     tangent_w_.assign(n, SteadyRolling::Complex(0.0, 0.0));
     consistent_.assign(n, 0.0);
     profile_.assign(ny_, 0.0);
+    x_column_.assign(nx_, 0.0);
+    y_row_.assign(ny_, 0.0);
     row_d_.assign(ny_, 0.0);
     row_pool_.assign(ny_, 0.0);
 }
@@ -201,6 +203,9 @@ void ExactModel::set_up(const ContactInput& in, SolveMode mode)
         L->geom = ExactGeometry(L->nx, L->ny, box_scale_, ratio);
         L->conv.set_coefficients(L->geom.rho, in.nu);
     }
+    const ExactGeometry& geom = levels_[0]->geom;
+    for (int i = 0; i < nx_; ++i) x_column_[i] = geom.X(i) * s.dx;
+    for (int j = 0; j < ny_; ++j) y_row_[j] = geom.Y(j) * s.dx;
 }
 
 // The rigid slip over mu p0 / G, with phi per element length dx; without

@@ -54,6 +54,7 @@ GapExactModel::GapExactModel(const GridSpec& grid)
     in_contact_.assign(n, 0);
     history_.resize(n);
     for (auto* v : {&profile_, &row_d_, &row_pool_}) v->assign(ny_, 0.0);
+    gap_centres(grid_, x_column_, y_row_);
     // At most one patch per two elements (4-connected components of a
     // checkerboard's contact elements).
     patches_.reserve(n / 2 + 1);

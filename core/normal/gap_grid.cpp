@@ -67,6 +67,14 @@ void copy_gap_rows(const GridSpec& grid, double* y, double* width)
     }
 }
 
+void gap_centres(const GridSpec& grid, std::vector<double>& x, std::vector<double>& y)
+{
+    x.resize(grid.nx);
+    y.resize(grid.ny);
+    for (int i = 0; i < grid.nx; ++i) x[i] = grid.x0 + i * grid.dx;
+    for (int j = 0; j < grid.ny; ++j) y[j] = grid.y0 + j * grid.dy;
+}
+
 void validate_gap_input(const ContactInput& in, size_t n, KernelIsa isa)
 {
     if (!in.gap)
