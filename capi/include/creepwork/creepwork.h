@@ -309,7 +309,7 @@ CW_API int cw_params_init(cw_params* params);
 #define CW_CHECK_WHEELSET_SHIFT 20  /* |y| of the wheelset above 20 mm */
 #define CW_CHECK_WHEELSET_ANGLE 21  /* |roll|, |yaw| above 0.05 rad (degrees typed?) */
 #define CW_CHECK_PATCH_ELEMENT 22   /* wheel/rail dx, ds above 5 mm */
-#define CW_CHECK_SPEED 23           /* forward speed above 150 m/s (km/h typed?) */
+#define CW_CHECK_SPEED 23           /* V, forward speed above 150 m/s (km/h typed?) */
 #define CW_CHECK_PITCH_RATE 24      /* vpitch far from -vs / nominal_radius */
 #define CW_CHECK_WHEELSET_HEIGHT 25 /* |z| beyond 5 mm with no patch on the flange */
 #define CW_CHECK_FLANGE_TIP 26      /* a patch on the wheel's flange tip */
