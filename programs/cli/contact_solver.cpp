@@ -27,7 +27,8 @@ std::string options_named_in(const std::string& message)
         {"xi_x", "--xi-x"}, {"xi_y", "--xi-y"}, {"phi", "--spin"},
         {"nx", "--nx"},     {"ny", "--ny"},     {"box_scale", "--box-scale"},
         {"model", "--model"}, {"tolerance", "--tolerance"},
-        {"max_iterations", "--max-iterations"}, {"spin_offset", "--spin-offset"}};
+        {"max_iterations", "--max-iterations"}, {"spin_offset", "--spin-offset"},
+        {"V", "--V"}};
     const auto is_word = [](char c) {
         return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
     };
