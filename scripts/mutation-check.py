@@ -363,6 +363,21 @@ GAP_MUTANTS = [
          tests=GAP, require=["test_nonhertz_fastsim"]),
 ]
 MUTANTS += GAP_MUTANTS
+# The solved-contact view's one export (core/contact/solved_contact.*): the
+# exact model's and both gap models' fields read through it.
+VIEW = EXACT + GAP + ["test_core_symmetry", "test_capi_solver"]
+MUTANTS += [
+    dict(id="view-mirror", what="the view ignores the rolling direction's mirror",
+         file="core/contact/solved_contact.hpp",
+         old="        return (mirrored ? nx - 1 - i : i) + static_cast<long>(nx) * j;",
+         new="        return i + static_cast<long>(nx) * j;",
+         tests=VIEW, require=["test_core_exact_model", "test_nonhertz_model"]),
+    dict(id="view-slip-mask", what="the exact models' slip field outside the slip elements",
+         file="core/contact/solved_contact.cpp",
+         old="const bool slip_zero = c.slip_masked && !slips;",
+         new="const bool slip_zero = false && !slips;",
+         tests=VIEW, require=["test_core_exact_model"]),
+]
 # The Jacobians on a gap grid (core/gap/gap_exact_jacobian.cpp,
 # core/gap/gap_fastsim_jacobian.cpp and their parts): caught by central
 # differences of the solves and the elliptic exact model's Jacobian
