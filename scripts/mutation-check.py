@@ -105,14 +105,14 @@ MUTANTS = [
     # The friction-law hook's projection derivative (contact/friction_law.hpp):
     # its test against differences, and the Jacobians that use it.
     dict(id="projection-derivative-factor", what="the slip derivative drops the factor f",
-         file="core/contact/friction_law.hpp", old="    dpx = s.f * dqx - c * s.px;\n}\n\n// The same",
-         new="    dpx = dqx - c * s.px;\n}\n\n// The same",
+         file="core/contact/friction_law.hpp", old="    dpx = s.f * dqx - c * s.px;",
+         new="    dpx = dqx - c * s.px;",
          tests=["test_core_friction_law", "test_core_jacobian", "test_capi_jacobian"],
          require=["test_core_friction_law", "test_core_jacobian"]),
     dict(id="projection-derivative-bound", what="the bound's own change enters with the wrong sign",
          file="core/contact/friction_law.hpp",
-         old="    const simd::Vec<W> c = r * (s.px * dqx + s.py * dqy) - dbound_over_bound;",
-         new="    const simd::Vec<W> c = r * (s.px * dqx + s.py * dqy) + dbound_over_bound;",
+         old="    const simd::Vec<W> cb = r * (s.px * dqx + s.py * dqy) - dbound_over_bound;",
+         new="    const simd::Vec<W> cb = r * (s.px * dqx + s.py * dqy) + dbound_over_bound;",
          tests=["test_core_friction_law"] + CALIBRATED,
          require=["test_core_friction_law", "test_core_calibrated_jacobian"]),
     dict(id="eq36-moment-arm", what="paper's work: spin slip at the slip point, not the element",

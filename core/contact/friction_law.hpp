@@ -133,9 +133,9 @@ CREEPWORK_INLINE void projection_derivative(const Projection<W>& s, const simd::
                                             const simd::Vec<W>& dbound_over_bound,
                                             simd::Vec<W>& dpx, simd::Vec<W>& dpy)
 {
-    const simd::Vec<W> c = r * (s.px * dqx + s.py * dqy) - dbound_over_bound;
-    dpx = s.f * dqx - c * s.px;
-    dpy = s.f * dqy - c * s.py;
+    const simd::Vec<W> cb = r * (s.px * dqx + s.py * dqy) - dbound_over_bound;
+    dpx = s.f * dqx - cb * s.px;
+    dpy = s.f * dqy - cb * s.py;
 }
 
 // ---- the scalar form (the gap march, one element)
