@@ -368,14 +368,14 @@ MUTANTS += GAP_MUTANTS
 VIEW = EXACT + GAP + ["test_core_symmetry", "test_capi_solver"]
 MUTANTS += [
     dict(id="view-mirror", what="the view ignores the rolling direction's mirror",
-         file="core/contact/solved_contact.hpp",
-         old="        return (mirrored ? nx - 1 - i : i) + static_cast<long>(nx) * j;",
-         new="        return i + static_cast<long>(nx) * j;",
+         file="core/contact/solved_contact.cpp",
+         old="for (int i = 0; i < nx; ++i) op(row + i, value(k0 + (mirrored ? nx - 1 - i : i), i, j));",
+         new="for (int i = 0; i < nx; ++i) op(row + i, value(k0 + i, i, j));",
          tests=VIEW, require=["test_core_exact_model", "test_nonhertz_model"]),
     dict(id="view-slip-mask", what="the exact models' slip field outside the slip elements",
          file="core/contact/solved_contact.cpp",
-         old="const bool slip_zero = c.slip_masked && !slips;",
-         new="const bool slip_zero = false && !slips;",
+         old="                return state[k] == 2 ? d * S * s[k].real() : 0.0;",
+         new="                return d * S * s[k].real();",
          tests=VIEW, require=["test_core_exact_model"]),
 ]
 # The Jacobians on a gap grid (core/gap/gap_exact_jacobian.cpp,
