@@ -376,7 +376,7 @@ MUTANTS += [
          file="core/contact/solved_contact.cpp",
          old="                return state[k] == 2 ? d * S * s[k].real() : 0.0;",
          new="                return d * S * s[k].real();",
-         tests=VIEW, require=["test_core_exact_model"]),
+         tests=VIEW, require=["test_core_exact_model", "test_nonhertz_model"]),
 ]
 # The Jacobians on a gap grid (core/gap/gap_exact_jacobian.cpp,
 # core/gap/gap_fastsim_jacobian.cpp and their parts): caught by central
