@@ -34,6 +34,7 @@ cw::ContactPlausibility plausibility_of(const cw_grid& g, const cw_params& p)
     c.xi_x = p.xi_x;
     c.xi_y = p.xi_y;
     c.phi = p.phi;
+    c.V = p.V;
     c.flexibilities_given = p.flexibility == CW_FLEX_GIVEN;
     c.gap_grid = g.kind == CW_GRID_GAP;
     c.default_geometry = p.a == d.a && p.b == d.b && p.normal_force == d.normal_force;

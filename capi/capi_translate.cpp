@@ -112,6 +112,7 @@ cw::ContactInput to_input(const cw_params* params)
     in.b = p.b;
     in.normal_force = p.normal_force;
     in.mu = p.mu;
+    in.V = p.V;
     if (p.flexibility == CW_FLEX_FROM_MATERIAL)
         in.flexibility = cw::FlexibilitySource::kalker_from_material;
     else if (p.flexibility == CW_FLEX_GIVEN)

@@ -98,9 +98,23 @@ MUTANTS = [
          file="core/march/march_setup.cpp",
          old="s.a * s.a * s.phi / s.L3};", new="-s.a * s.a * s.phi / s.L3};", tests=CORE),
     dict(id="traction-bound", what="slip only 1 % beyond the traction bound mu pz",
-         file="core/march/march_step.hpp",
+         file="core/contact/friction_law.hpp",
          old="    const auto slip = norm > bound;",
-         new="    const auto slip = norm > bound * simd::broadcast<W>(1.01);", tests=CORE),
+         new="    const auto slip = norm > bound * simd::broadcast<W>(1.01);",
+         tests=CORE + ["test_core_friction_law"], require=["test_core_friction_law"]),
+    # The friction-law hook's projection derivative (contact/friction_law.hpp):
+    # its test against differences, and the Jacobians that use it.
+    dict(id="projection-derivative-factor", what="the slip derivative drops the factor f",
+         file="core/contact/friction_law.hpp", old="    dpx = s.f * dqx - c * s.px;",
+         new="    dpx = dqx - c * s.px;",
+         tests=["test_core_friction_law", "test_core_jacobian", "test_capi_jacobian"],
+         require=["test_core_friction_law", "test_core_jacobian"]),
+    dict(id="projection-derivative-bound", what="the bound's own change enters with the wrong sign",
+         file="core/contact/friction_law.hpp",
+         old="    const simd::Vec<W> cb = r * (s.px * dqx + s.py * dqy) - dbound_over_bound;",
+         new="    const simd::Vec<W> cb = r * (s.px * dqx + s.py * dqy) + dbound_over_bound;",
+         tests=["test_core_friction_law"] + CALIBRATED,
+         require=["test_core_friction_law", "test_core_calibrated_jacobian"]),
     dict(id="eq36-moment-arm", what="paper's work: spin slip at the slip point, not the element",
          file="core/march/march_work.cpp",
          old="- spin_y * xp + phi * xc))", new="- spin_y * xp + phi * xp))", tests=CORE),
@@ -349,6 +363,21 @@ GAP_MUTANTS = [
          tests=GAP, require=["test_nonhertz_fastsim"]),
 ]
 MUTANTS += GAP_MUTANTS
+# The solved-contact view's one export (core/contact/solved_contact.*): the
+# exact model's and both gap models' fields read through it.
+VIEW = EXACT + GAP + ["test_core_symmetry", "test_capi_solver"]
+MUTANTS += [
+    dict(id="view-mirror", what="the view ignores the rolling direction's mirror",
+         file="core/contact/solved_contact.cpp",
+         old="for (int i = 0; i < nx; ++i) op(row + i, value(k0 + (mirrored ? nx - 1 - i : i), i, j));",
+         new="for (int i = 0; i < nx; ++i) op(row + i, value(k0 + i, i, j));",
+         tests=VIEW, require=["test_core_exact_model", "test_nonhertz_model"]),
+    dict(id="view-slip-mask", what="the exact models' slip field outside the slip elements",
+         file="core/contact/solved_contact.cpp",
+         old="                return state[k] == 2 ? d * S * s[k].real() : 0.0;",
+         new="                return d * S * s[k].real();",
+         tests=VIEW, require=["test_core_exact_model", "test_nonhertz_model"]),
+]
 # The Jacobians on a gap grid (core/gap/gap_exact_jacobian.cpp,
 # core/gap/gap_fastsim_jacobian.cpp and their parts): caught by central
 # differences of the solves and the elliptic exact model's Jacobian
@@ -384,10 +413,11 @@ GAP_JACOBIAN_MUTANTS = [
          new="            dp_dN[k] = p > 0.0 ? 0.5 * P2 * p : 0.0;",
          tests=GAP_JACOBIAN, require=["test_nonhertz_jacobian"]),
     dict(id="gap-march-tangent-projection", what="FASTSIM's slip derivative skips the projection",
-         file="core/gap/gap_march_tangent.cpp",
-         old="                    dqx[c] = f * (dqx[c] - ex * along);",
-         new="                    dqx[c] = f * dqx[c];",
-         tests=GAP_JACOBIAN, require=["test_nonhertz_jacobian"]),
+         file="core/contact/friction_law.hpp",
+         old="    dqx = s.f * (dqx - ex * along);",
+         new="    dqx = s.f * dqx;",
+         tests=GAP_JACOBIAN + ["test_core_friction_law"],
+         require=["test_nonhertz_jacobian", "test_core_friction_law"]),
     dict(id="gap-march-tangent-bound", what="FASTSIM's N column misses the bound's own change",
          file="core/gap/gap_march_tangent.cpp",
          old="                dqx[3] += ex * dbound;",

@@ -68,12 +68,9 @@ struct DirectionalKernel : KernelWidths {
                     const V P = simd::load<W>(shape_p + e), E = simd::load<W>(shape_e + e);
                     // d(shape)/d(blend) = (3/4) sqrt(P) - P (blended_bound.hpp).
                     const V dshape_over_g = (three_quarters * E - P) * inv_g;
-                    for (int k = 0; k < K; ++k) {
-                        const V c = r * (s.px * dq[k][0] + s.py * dq[k][1]) -
-                                    dblend[k] * dshape_over_g;
-                        tpx[k] = s.f * dq[k][0] - c * s.px;
-                        tpy[k] = s.f * dq[k][1] - c * s.py;
-                    }
+                    for (int k = 0; k < K; ++k)
+                        projection_derivative<W>(s, r, dq[k][0], dq[k][1],
+                                                 dblend[k] * dshape_over_g, tpx[k], tpy[k]);
                 } else {
                     for (int k = 0; k < K; ++k) {
                         tpx[k] = dq[k][0];

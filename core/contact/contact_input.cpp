@@ -39,7 +39,7 @@ void validate_contact_input(const ContactInput& in)
     if (!(ratio >= kMinAspect && ratio <= kMaxAspect))
         reject_input("a/b", ratio, "must lie in [1e-3, 1e3] (range of Kalker's coefficients)");
     require_non_negative("normal_force", in.normal_force);
-    require_non_negative("mu", in.mu);
+    validate_friction_input(in);
     if (in.flexibility == FlexibilitySource::kalker_from_material) {
         require_positive("G", in.G);
         require_finite("nu", in.nu);
@@ -70,6 +70,14 @@ void validate_contact_input(const ContactInput& in)
         reject_input("spin_offset", in.spin_offset,
                      "must lie in [0, 1] (a fraction of the element length), or be negative "
                      "for the model's default");
+}
+
+void validate_friction_input(const ContactInput& in)
+{
+    require_non_negative("mu", in.mu);
+    require_finite("V", in.V);
+    if (!(in.V >= 0.0))
+        reject_input("V", in.V, "must be >= 0 (the rolling speed [m/s]; 0: not given)");
 }
 
 void validate_grid_input(const GridSpec& grid, const ContactInput& in)

@@ -9,6 +9,9 @@ namespace creepwork {
 
 // Throws Error(invalid_input) naming the first offending input.
 void validate_contact_input(const ContactInput& in);
+// The friction law's inputs (mu, the rolling speed V), for every model
+// whatever its grid. Throws Error(invalid_input) naming the input.
+void validate_friction_input(const ContactInput& in);
 // What a grid's kind allows of the input: a gap, the approach prescribed
 // and the semi-Hertzian method need a gap grid (a gap grid's models check
 // their own inputs). Throws Error(invalid_input).

@@ -64,6 +64,9 @@ struct ContactInput {
     double b = 0.0;            // semi-axis along y (lateral) [m]
     double normal_force = 0.0; // N >= 0 [N]
     double mu = 0.0;           // friction coefficient >= 0 [-]
+    // The rolling speed V >= 0 [m/s]; 0: not given. A law of the slip speed
+    // (slip speed = |micro-slip| V) needs it; Coulomb's law does not use it.
+    double V = 0.0;
     FlexibilitySource flexibility = FlexibilitySource::kalker_from_material;
     double G = 0.0;            // combined shear modulus [Pa] (kalker_from_material)
     double nu = 0.0;           // combined Poisson ratio, 0..0.5 (kalker_from_material)

@@ -86,6 +86,8 @@ const Row kRows[] = {
     {CheckRule::spin, "phi", "1/m",
      "spin of wheel-rail contacts stays below ~20 1/m (1/mm typed as 1/m?)",
      [](const C& c) { return c.phi; }, [](const C&, double v) { return std::fabs(v) > 50.0; }},
+    {CheckRule::speed, "V", "m/s", "rail vehicles run below 150 m/s (km/h typed as m/s?)",
+     [](const C& c) { return c.V; }, [](const C&, double v) { return v > 150.0; }},
     {CheckRule::gap_spacing, "dx", "m", kSpacing, [](const C& c) { return c.dx; },
      [](const C& c, double v) { return c.gap_grid && (v > 5e-3 || (v > 0.0 && v < 1e-6)); }},
     {CheckRule::gap_spacing, "dy", "m", kSpacing, [](const C& c) { return c.dy; },

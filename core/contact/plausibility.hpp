@@ -28,7 +28,7 @@ enum class CheckRule {
     wheelset_shift = 20,  // |y| above 20 mm
     wheelset_angle = 21,  // |roll|, |yaw| above 0.05 rad
     patch_element = 22,   // dx, ds above 5 mm
-    speed = 23,           // V above 150 m/s
+    speed = 23,           // V (a contact's, a wheelset's forward speed) above 150 m/s
     pitch_rate = 24,      // not about -V / nominal radius
     wheelset_height = 25, // |z| of a tread contact beyond 5 mm
     flange_tip = 26,      // a patch on the wheel's flange tip
@@ -55,6 +55,7 @@ std::string implausible_message(const Implausible& w, const std::string& where =
 struct ContactPlausibility {
     double a = 0, b = 0, normal_force = 0, mu = 0, G = 0;
     double L1 = 0, L2 = 0, L3 = 0, xi_x = 0, xi_y = 0, phi = 0;
+    double V = 0; // the rolling speed [m/s] (0: not given)
     bool flexibilities_given = false;
     // A contact of any shape (a gap grid): a and b are not used, the
     // spacing and the gap's heights are.

@@ -6,6 +6,7 @@
 
 #include "contact/contact_input.hpp"
 #include "contact/error.hpp"
+#include "contact/friction_law.hpp"
 #include "contact/number_text.hpp"
 #include "contact/kalker_coefficients.hpp"
 #include "exact/exact_work.hpp"
@@ -72,6 +73,8 @@ ExactModel::ExactModel(const GridSpec& grid)
     tangent_w_.assign(n, SteadyRolling::Complex(0.0, 0.0));
     consistent_.assign(n, 0.0);
     profile_.assign(ny_, 0.0);
+    x_column_.assign(nx_, 0.0);
+    y_row_.assign(ny_, 0.0);
     row_d_.assign(ny_, 0.0);
     row_pool_.assign(ny_, 0.0);
 }
@@ -185,7 +188,7 @@ void ExactModel::set_up(const ContactInput& in, SolveMode mode)
     s.dx = 2.0 * box_scale_ * in.a / nx_;
     s.dy = 2.0 * box_scale_ * in.b / ny_;
     s.p0 = 3.0 * in.normal_force / (2.0 * kPi * in.a * in.b);
-    s.traction_scale = in.mu * s.p0;
+    s.traction_scale = traction_bound(friction_law(in), s.p0);
     s.xi = s.direction * in.xi_x;
     s.eta = in.xi_y;
     s.phi = s.direction * in.phi;
@@ -200,6 +203,9 @@ void ExactModel::set_up(const ContactInput& in, SolveMode mode)
         L->geom = ExactGeometry(L->nx, L->ny, box_scale_, ratio);
         L->conv.set_coefficients(L->geom.rho, in.nu);
     }
+    const ExactGeometry& geom = levels_[0]->geom;
+    for (int i = 0; i < nx_; ++i) x_column_[i] = geom.X(i) * s.dx;
+    for (int j = 0; j < ny_; ++j) y_row_[j] = geom.Y(j) * s.dx;
 }
 
 // The rigid slip over mu p0 / G, with phi per element length dx; without

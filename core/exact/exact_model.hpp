@@ -68,13 +68,8 @@ public:
     int nx() const { return nx_; }
     int ny() const { return ny_; }
 
-    // Of the last successful solve, in the caller's layout [i + nx j].
-    void copy_field(Field f, double* out) const override;
-    void add_field(Field f, double scale, double* out) const override; // out += scale * field
-    void copy_state(int* out) const override;
-    // Per row j < ny: centre y [m], energy-consistent work per unit width
-    // [J/m per m], and the equal-area parabola of total W at y.
-    void copy_profile(double W, double* y, double* work, double* parabola) const override;
+    // The last successful solve, per element (exact_fields.cpp).
+    SolvedContact solved() const override;
     // The FFTs' kernel (every ISA gives the same bits).
     void set_kernel_isa(KernelIsa isa) override;
 
@@ -91,8 +86,6 @@ private:
         double normal_ratio = 0, normal_nu = 0;
     };
     struct Steps; // of the tangential solve
-    template <class Op>
-    void export_field(Field f, const Op& op, double* out) const;
     void validate(const ContactInput& in) const;
     void set_up(const ContactInput& in, SolveMode mode); // setup_, the levels' geometry
     void set_normalised_creepages(double G);
@@ -122,6 +115,7 @@ private:
         bool full = false;
     } setup_;
     std::vector<double> paper_, consistent_, profile_, row_d_, row_pool_;
+    std::vector<double> x_column_, y_row_; // element centres of the caller's grid [m]
     std::vector<SteadyRolling::Complex> tangent_w_; // solve_jacobian's rigid-slip derivative
     // The last solutions and their creepages, for the warm start's
     // prediction (key: a/b, nu, spin offset).

@@ -3,14 +3,9 @@
 #include <cmath>
 
 #include "contact/params.hpp"
+#include "contact/solved_contact.hpp"
 
 namespace creepwork {
-
-double lateral_parabola(double W, double b, double y)
-{
-    const double r = 1.0 - (y / b) * (y / b);
-    return r > 0.0 ? 0.75 * W / b * r : 0.0;
-}
 
 ExactWorkTotals exact_work(const ExactWorkInput& in, double* paper, double* consistent,
                            double* profile, double* row_d, double* row_pool)

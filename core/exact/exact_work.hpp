@@ -73,8 +73,5 @@ ExactWorkTotals exact_work(const ExactWorkInput& in, double* paper, double* cons
 // differences from its parabola); t.W_macro must be set.
 void set_work_totals(const ExactWorkTotals& work, SolveTotals& t);
 
-// (3 W / 4b)(1 - y^2/b^2) inside |y| < b, else 0: the equal-area parabola of
-// a lateral work profile (paper Figs. 8-9), as march/march_work.hpp's.
-double lateral_parabola(double W, double b, double y);
 
 } // namespace creepwork

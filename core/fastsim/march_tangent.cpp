@@ -76,11 +76,9 @@ struct TangentKernel : KernelWidths {
                     if (s.any_slip) {
                         const V r = s.slip * s.f * simd::load<W>(inv_bound2 + e);
                         CREEPWORK_UNROLL
-                        for (int k = 0; k < kTangents; ++k) {
-                            const V c = r * (s.px * dq[k][0] + s.py * dq[k][1]);
-                            tpx[k][g] = s.f * dq[k][0] - c * s.px;
-                            tpy[k][g] = s.f * dq[k][1] - c * s.py;
-                        }
+                        for (int k = 0; k < kTangents; ++k)
+                            projection_derivative<W>(s, r, dq[k][0], dq[k][1], tpx[k][g],
+                                                     tpy[k][g]);
                     } else {
                         CREEPWORK_UNROLL
                         for (int k = 0; k < kTangents; ++k) {

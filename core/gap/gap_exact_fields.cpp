@@ -1,69 +1,35 @@
-// Field export of the exact gap model (gap_exact_model.hpp): element (i, j) of the
-// caller's layout [i + nx j] is element (i', j) of the rolling frame with
-// i' = i, or i' = nx - 1 - i when rolling towards -x (then the x parts of
-// tractions and slips change sign). Positions are the grid's own: x0 + i dx,
-// y0 + j dy; the moment is about the grid's origin.
-#include "exact/exact_work.hpp"
+// The exact gap model's solved contact (gap_exact_model.hpp): tractions and
+// slips in units of mu p_max and mu p_max / G on the whole grid (rolling
+// frame), positions the grid's own (x0 + i dx, y0 + j dy), the moment
+// about the grid's origin (contact/solved_contact.hpp exports it).
 #include "gap/gap_exact_model.hpp"
 
 namespace creepwork {
-template <class Op>
-void GapExactModel::export_field(Field f, const Op& op, double* out) const
+
+SolvedContact GapExactModel::solved() const
 {
     const Setup& s = setup_;
-    const auto& q = traction_;
-    const auto& sl = slip_;
-    const auto& state = state_;
-    const std::vector<double>& pressure = normal_.pressure();
-    const double d = s.direction, T = s.traction_scale, area = grid_.dx * grid_.dy;
-    for (int j = 0; j < ny_; ++j) {
-        const double y = grid_.y0 + j * grid_.dy;
-        for (int i = 0; i < nx_; ++i) {
-            const int k = caller_index(i) + nx_ * j; // rolling frame
-            const double x = grid_.x0 + i * grid_.dx;
-            const double px = d * T * q[k].real(), py = T * q[k].imag();
-            const bool slips = state[k] == 2;
-            double v = 0.0;
-            switch (f) {
-            case Field::x: v = x; break;
-            case Field::y: v = y; break;
-            case Field::area: v = state[k] != 0 ? area : 0.0; break;
-            case Field::pz: v = pressure[k]; break;
-            case Field::px: v = px; break;
-            case Field::py: v = py; break;
-            case Field::sx: v = slips ? d * s.slip_scale * sl[k].real() : 0.0; break;
-            case Field::sy: v = slips ? s.slip_scale * sl[k].imag() : 0.0; break;
-            case Field::mz: v = (x * py - y * px) * area; break;
-            case Field::work_paper: v = paper_[k]; break;
-            case Field::work_consistent: v = consistent_[k]; break;
-            }
-            op(out + i + static_cast<size_t>(nx_) * j, v);
-        }
-    }
-}
-
-void GapExactModel::copy_field(Field f, double* out) const { export_field(f, StoreField{}, out); }
-
-void GapExactModel::add_field(Field f, double scale, double* out) const
-{
-    export_field(f, AddScaledField{scale}, out);
-}
-
-void GapExactModel::copy_state(int* out) const
-{
-    for (int j = 0; j < ny_; ++j)
-        for (int i = 0; i < nx_; ++i) out[i + nx_ * j] = state_[caller_index(i) + nx_ * j];
-}
-
-void GapExactModel::copy_profile(double W, double* y, double* work, double* parabola) const
-{
-    const double b = setup_.half_width > 0.0 ? setup_.half_width : grid_.dy;
-    for (int j = 0; j < ny_; ++j) {
-        const double yj = grid_.y0 + j * grid_.dy;
-        if (y) y[j] = yj;
-        if (work) work[j] = profile_[j];
-        if (parabola) parabola[j] = lateral_parabola(W, b, yj - setup_.y_mid);
-    }
+    SolvedContact c;
+    c.nx = nx_;
+    c.ny = ny_;
+    c.mirrored = s.direction < 0;
+    c.direction = s.direction;
+    c.x_column = x_column_.data();
+    c.y_row = y_row_.data();
+    c.element_area = grid_.dx * grid_.dy;
+    c.pressure = normal_.pressure().data();
+    c.traction = traction_.data();
+    c.traction_scale = s.traction_scale;
+    c.state = state_.data();
+    c.slip = slip_.data();
+    c.slip_scale = s.slip_scale;
+    c.slip_masked = true;
+    c.work_paper = paper_.data();
+    c.work_consistent = consistent_.data();
+    c.profile = profile_.data();
+    c.profile_b = s.half_width > 0.0 ? s.half_width : grid_.dy;
+    c.profile_y_mid = s.y_mid;
+    return c;
 }
 
 bool GapExactModel::copy_strips(double* y, double* width) const

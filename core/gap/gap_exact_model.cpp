@@ -6,6 +6,7 @@
 
 #include "contact/contact_input.hpp"
 #include "contact/error.hpp"
+#include "contact/friction_law.hpp"
 #include "contact/number_text.hpp"
 #include "contact/kalker_coefficients.hpp"
 #include "halfspace/cell_box.hpp"
@@ -53,6 +54,7 @@ GapExactModel::GapExactModel(const GridSpec& grid)
     in_contact_.assign(n, 0);
     history_.resize(n);
     for (auto* v : {&profile_, &row_d_, &row_pool_}) v->assign(ny_, 0.0);
+    gap_centres(grid_, x_column_, y_row_);
     // At most one patch per two elements (4-connected components of a
     // checkerboard's contact elements).
     patches_.reserve(n / 2 + 1);
@@ -317,7 +319,7 @@ SolveTotals GapExactModel::solve(const ContactInput& in, SolveMode mode)
     for (double p : pressure) p_ref = std::max(p_ref, p);
     s.loaded = p_ref > 0.0;
     s.p_ref = p_ref;
-    s.traction_scale = in.mu * p_ref;
+    s.traction_scale = traction_bound(friction_law(in), p_ref);
     SolveTotals t;
     label_patches(t);
     set_box(normal_.half_space(in.nu));

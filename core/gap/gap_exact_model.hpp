@@ -74,12 +74,10 @@ public:
 
     const GapExactSolveInfo& info() const { return info_; }
 
-    // The exports of ContactModel; the profile's parabola spans the
-    // contact's lateral extent (centred on it), positions are the grid's.
-    void copy_field(Field f, double* out) const override;
-    void add_field(Field f, double scale, double* out) const override;
-    void copy_state(int* out) const override;
-    void copy_profile(double W, double* y, double* work, double* parabola) const override;
+    // The last successful solve (gap_exact_fields.cpp); the profile's
+    // parabola spans the contact's lateral extent (centred on it),
+    // positions are the grid's.
+    SolvedContact solved() const override;
     // Per row j < ny: centre y [m] and width dy [m] (the wear's strips).
     bool copy_strips(double* y, double* width) const override;
     // The separate patches of the last solve (4-connected), caller's frame.
@@ -96,8 +94,6 @@ private:
         double x0 = 0, y0 = 0; // centre of element (0, 0), rolling frame [m]
     };
     struct Steps; // of the tangential solve
-    template <class Op>
-    void export_field(Field f, const Op& op, double* out) const;
     void validate(const ContactInput& in) const;
     void set_normalised_creepages(const ContactInput& in);
     void predict_start(double nu); // level 0's warm start
@@ -144,6 +140,7 @@ private:
     std::vector<signed char> in_contact_;
     std::vector<PatchTotals> patches_;
     std::vector<double> paper_, consistent_, profile_, row_d_, row_pool_;
+    std::vector<double> x_column_, y_row_; // the grid's element centres [m]
     // The warm start: the last solutions as physical tractions (key: nu,
     // spin offset, rolling direction), and the last traction scale.
     CreepageHistory history_;

@@ -34,6 +34,7 @@ GapFastsimModel::GapFastsimModel(const GridSpec& grid)
     elements_.reserve(n / 2 + 1);
     patches_.reserve(n / 2 + 1);
     for (auto* v : {&profile_, &row_d_, &row_pool_}) v->assign(ny_, 0.0);
+    gap_centres(grid_, x_column_, y_row_);
     row_first_.assign(ny_, nx_);
     row_last_.assign(ny_, -1);
 }
@@ -243,7 +244,7 @@ GapMarchInput GapFastsimModel::march_input(const ContactInput& in) const
     m.pressure = normal_.pressure().data();
     m.patch = patch_of_.data();
     m.patches = march_patches_.data();
-    m.mu = in.mu;
+    m.law = friction_law(in);
     m.xi = d * in.xi_x;
     m.eta = in.xi_y;
     m.phi = d * in.phi;

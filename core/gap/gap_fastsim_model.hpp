@@ -69,10 +69,9 @@ public:
     SolveTotals solve_jacobian(const ContactInput& input, SolveMode mode,
                                Jacobian& jacobian) override;
 
-    void copy_field(Field f, double* out) const override;
-    void add_field(Field f, double scale, double* out) const override;
-    void copy_state(int* out) const override;
-    void copy_profile(double W, double* y, double* work, double* parabola) const override;
+    // The last successful solve (gap_fastsim_fields.cpp), as the exact gap
+    // model's.
+    SolvedContact solved() const override;
     const std::vector<PatchTotals>* patches() const override { return &patches_; }
     // Per row j < ny: centre y [m] and width dy [m] (the wear's strips).
     bool copy_strips(double* y, double* width) const override
@@ -87,8 +86,6 @@ public:
     const std::vector<GapMarchPatch>& march_patches() const { return march_patches_; }
 
 private:
-    template <class Op>
-    void export_field(Field f, const Op& op, double* out) const;
     void validate(const ContactInput& in) const;
     double label_contact(); // the contact's patches; returns the largest pressure
     void check_rigid_slip(const ContactInput& in) const;
@@ -110,6 +107,7 @@ private:
     double y_mid_ = 0, half_width_ = 0, extent_x_ = 0, extent_y_ = 0;
     // Per element, rolling frame [i + nx j].
     std::vector<double> paper_, consistent_;
+    std::vector<double> x_column_, y_row_; // the grid's element centres [m]
     std::vector<std::complex<double>> p_, slip_, rigid_;
     std::vector<signed char> state_;
     std::vector<int> patch_of_; // on the contact's elements alone

@@ -98,15 +98,7 @@ inline void step(const MarchFrame& frame, RowMarch& r, int i)
     const double x = in.x0 + i * dx;
     const double ox = r.ox, oy = r.oy0 + r.oyx * x;
     double qx = r.px - dx * ox, qy = r.py - dx * oy;
-    // |q| > bound compared squared: the root only in slip (the model
-    // keeps dx |omega| far below overflow).
-    const double bound = in.mu * pz, n2 = qx * qx + qy * qy;
-    const bool slips = n2 > bound * bound;
-    if (slips) {
-        const double f = bound / std::sqrt(n2); // |q| > bound >= 0
-        qx *= f;
-        qy *= f;
-    }
+    const bool slips = project_traction(qx, qy, traction_bound(in.law, pz)).slips;
     out.p[k] = Complex(qx, qy);
     if (Full) {
         out.rigid[k] = Complex(r.L1 * ox, r.L2 * oy);

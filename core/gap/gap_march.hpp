@@ -28,6 +28,8 @@
 
 #include <complex>
 
+#include "contact/friction_law.hpp"
+
 namespace creepwork {
 
 // One patch's flexibilities [m/Pa] and spin centre [m] (rolling frame).
@@ -42,7 +44,7 @@ struct GapMarchInput {
     const double* pressure = nullptr;      // [i + nx j] [Pa]; contact where > 0
     const int* patch = nullptr;            // [i + nx j]: index into patches where pressure > 0
     const GapMarchPatch* patches = nullptr;
-    double mu = 0;
+    CoulombLaw law;                        // the friction law (its mu)
     double xi = 0, eta = 0, phi = 0;       // rolling frame [-, -, 1/m]
     double spin_offset = 0;                // fraction of dx, >= 0
     // Optional, per row j: the first and last contact element (rolling

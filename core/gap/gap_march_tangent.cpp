@@ -51,20 +51,14 @@ void gap_march_tangent(const GapMarchInput& in, const double* dpressure, double 
             }
             dqx[3] = dpx[3];
             dqy[3] = dpy[3];
-            const double bound = in.mu * pz, n2 = qx * qx + qy * qy;
-            if (n2 > bound * bound) { // slip, as gap_march decides it
-                const double norm = std::sqrt(n2), f = bound / norm;
-                const double ex = qx / norm, ey = qy / norm;
-                const double dbound = dpressure ? in.mu * dpressure[k] : 0.0;
-                for (int c = 0; c < 4; ++c) {
-                    const double along = ex * dqx[c] + ey * dqy[c];
-                    dqx[c] = f * (dqx[c] - ex * along);
-                    dqy[c] = f * (dqy[c] - ey * along);
-                }
+            const double tx = qx, ty = qy;
+            const ScalarProjection s = project_traction(qx, qy, traction_bound(in.law, pz));
+            if (s.slips) { // as gap_march decides it
+                const double ex = tx / s.norm, ey = ty / s.norm;
+                const double dbound = dpressure ? traction_bound(in.law, dpressure[k]) : 0.0;
+                for (int c = 0; c < 4; ++c) projection_derivative(s, ex, ey, dqx[c], dqy[c]);
                 dqx[3] += ex * dbound;
                 dqy[3] += ey * dbound;
-                qx *= f;
-                qy *= f;
             }
             for (int c = 0; c < 4; ++c) {
                 dF[0][c] += dqx[c] * area;

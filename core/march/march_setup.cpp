@@ -7,6 +7,7 @@
 
 #include "contact/contact_input.hpp"
 #include "contact/error.hpp"
+#include "contact/friction_law.hpp"
 #include "contact/flexibility_blending.hpp"
 
 namespace creepwork {
@@ -63,7 +64,7 @@ ModelSetup make_model_setup(const ContactInput& in, double load)
     }
     s.pressure = in.pressure;
     s.pressure_scale = p0;
-    s.traction_scale = in.mu * p0;
+    s.traction_scale = traction_bound(friction_law(in), p0);
     if (in.flexibility == FlexibilitySource::kalker_from_material) {
         s.C = kalker_coefficients(in.a / in.b, in.nu);
         const Flexibilities L = kalker_flexibilities(in.a, in.b, in.G, s.C);

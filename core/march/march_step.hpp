@@ -8,6 +8,7 @@
 // a change to the step is made here once.
 #pragma once
 
+#include "contact/friction_law.hpp"
 #include "march/march_geometry.hpp"
 #include "simd/simd.hpp"
 
@@ -33,32 +34,19 @@ MarchView march_view(const MarchGeometry& geometry, const double* bound, double 
                      MarchState& state, int first, int last);
 
 // One step of W strips: the elastic predictor u = u_prev - h w (divided by
-// L mu p0), then Coulomb: slip when |q| > g, and then p = f q with
-// f = g/|q| < 1; otherwise f = 1 (exterior elements have q = g = 0 and so
-// restart the strip from zero displacement: each contact segment of a strip
-// is marched from its own leading edge). The division never sees a zero
-// (hosts may trap FP exceptions).
+// L mu p0), then the friction law's projection (contact/friction_law.hpp):
+// slip when |q| > g, and then p = f q with f = g/|q| < 1; otherwise f = 1
+// (exterior elements have q = g = 0 and so restart the strip from zero
+// displacement: each contact segment of a strip is marched from its own
+// leading edge).
 //
-// Shortcut, exact: when every lane has |q|^2 <= g^2 (1 - 2^-50) with g^2 a
-// normal number, or |q|^2 = 0 = g^2, then RN(sqrt(|q|^2)) <= g in every lane
-// (the margin covers the rounding of g^2 and of the product), so no lane
-// slips and the square root and the division are skipped: f = 1, p = q,
-// exactly as the full test gives. It applies to adhesion zones, exterior
-// elements and the padding strips.
-//
-// Floating-point exceptions (hosts may trap them, doc/reference/guarantees.md): no
-// lane, live or masked, divides by zero (safe_norm), takes the root of a
-// negative number, or meets a subnormal constant (the test for g = 0 is
-// |q|^2 <= 0, not a comparison with the smallest subnormal). g is 0
-// (exterior, padding) or at least ~1e-32 (a grid's pressure shape), so for
-// creepages in the practical range q, |q|^2 and f stay normal numbers
+// g is 0 (exterior, padding) or at least ~1e-32 (a grid's pressure shape),
+// so for creepages in the practical range q, |q|^2 and f stay normal numbers
 // (tests/robustness/test_robustness_fptrap_kernels.cpp); absurd inputs are
 // the C ABI's floating-point mode's business (capi/capi_fp_mode.hpp).
 template <int W>
-struct MarchStep {
-    using V = simd::Vec<W>;
-    V qx, qy, f, px, py, slip; // slip: 1 or 0
-    bool any_slip;
+struct MarchStep : Projection<W> {
+    simd::Vec<W> qx, qy;
 };
 
 template <int W>
@@ -67,32 +55,10 @@ CREEPWORK_INLINE MarchStep<W> march_step(const simd::Vec<W>& px_prev, const simd
                                          const simd::Vec<W>& bound, const simd::Vec<W>& wx,
                                          const simd::Vec<W>& wy)
 {
-    using V = simd::Vec<W>;
-    const V one = simd::broadcast<W>(1.0), zero = simd::broadcast<W>(0.0);
-    const V tiny = simd::broadcast<W>(2.2250738585072014e-308); // DBL_MIN
-    const V margin = simd::broadcast<W>(1.0 - 0x1p-50);
     MarchStep<W> s;
     s.qx = inside * (px_prev - h * wx);
     s.qy = inside * (py_prev - h * wy);
-    const V n2 = s.qx * s.qx + s.qy * s.qy;
-    const V g2 = bound * bound;
-    const V threshold = g2 >= tiny ? g2 * margin : zero; // g = 0: only q = 0
-    if (simd::min_lane((n2 <= threshold) ? one : zero) > 0.0) {
-        s.f = one;
-        s.px = s.qx;
-        s.py = s.qy;
-        s.slip = zero;
-        s.any_slip = false;
-        return s;
-    }
-    const V norm = simd::sqrt<W>(n2);
-    const V safe_norm = norm > tiny ? norm : tiny;
-    const auto slip = norm > bound;
-    s.f = slip ? bound / safe_norm : one;
-    s.px = s.f * s.qx;
-    s.py = s.f * s.qy;
-    s.slip = slip ? one : zero;
-    s.any_slip = simd::max_lane(s.slip) > 0.0;
+    static_cast<Projection<W>&>(s) = project_traction<W>(s.qx, s.qy, bound);
     return s;
 }
 

@@ -67,6 +67,14 @@ void copy_gap_rows(const GridSpec& grid, double* y, double* width)
     }
 }
 
+void gap_centres(const GridSpec& grid, std::vector<double>& x, std::vector<double>& y)
+{
+    x.resize(grid.nx);
+    y.resize(grid.ny);
+    for (int i = 0; i < grid.nx; ++i) x[i] = grid.x0 + i * grid.dx;
+    for (int j = 0; j < grid.ny; ++j) y[j] = grid.y0 + j * grid.dy;
+}
+
 void validate_gap_input(const ContactInput& in, size_t n, KernelIsa isa)
 {
     if (!in.gap)
@@ -95,7 +103,7 @@ void validate_gap_input(const ContactInput& in, size_t n, KernelIsa isa)
     if (!normal_method_known(in.normal_method))
         reject_input("normal_method", static_cast<double>(in.normal_method),
                      "unknown normal method");
-    require_non_negative("mu", in.mu);
+    validate_friction_input(in);
     require_positive("G", in.G);
     require_finite("nu", in.nu);
     if (!(in.nu >= 0.0 && in.nu <= 0.5)) reject_input("nu", in.nu, "must lie in [0, 0.5]");

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstddef>
+#include <vector>
 
 #include "contact/params.hpp"
 #include "simd/kernel_isa.hpp"
@@ -22,6 +23,8 @@ constexpr int kMinGapCells = 3;
 const GridSpec& checked_gap_grid(const GridSpec& grid);
 // Per row j < ny of a gap grid: centre y [m] and width dy [m].
 void copy_gap_rows(const GridSpec& grid, double* y, double* width);
+// The element centres of a gap grid [m]: x0 + i dx (i < nx), y0 + j dy (j < ny).
+void gap_centres(const GridSpec& grid, std::vector<double>& x, std::vector<double>& y);
 // What every model on a gap grid needs of its input (n elements): the gap,
 // the load, the normal method, mu, G, nu, the creepages, the rolling
 // direction and the spin offset. Throws Error(invalid_input) naming the

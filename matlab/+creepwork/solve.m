@@ -7,8 +7,9 @@ function r = solve(varargin)
 %   Parameters, SI units, each a field of the C struct cw_params with the
 %   library's default (creepwork.params lists them): a, b semi-axes along x
 %   (rolling) and y [m] and N (or normal_force) load [N], required; mu [-];
-%   G [Pa] and nu [-] (steel by default); xi_x, xi_y creepages [-]; phi (or
-%   spin) [1/m];
+%   V rolling speed [m/s] (default 0, not given; Coulomb's law does not
+%   use it); G [Pa] and nu [-] (steel by default); xi_x, xi_y creepages
+%   [-]; phi (or spin) [1/m];
 %   model 'fastsim' (default), 'calibrated' or 'exact'; pressure
 %   'parabolic' or 'elliptic'; flexibility 'from_material' or 'given' with
 %   L1, L2, L3 [m/Pa]; rolling_direction +1 or -1; tolerance,

@@ -4,6 +4,7 @@
 function test_errors()
   ok = {'a', 7e-3, 'b', 5e-3, 'N', 100e3, 'xi_x', 1e-3};
   expect_error(@() creepwork.solve(ok{:}, 'nu', 0.6), 'creepwork:CW_ERR_INVALID_INPUT', '\<nu\>');
+  expect_error(@() creepwork.solve(ok{:}, 'V', -30), 'creepwork:CW_ERR_INVALID_INPUT', '\<V = ');
   expect_error(@() creepwork.solve(ok{:}, 'model', 'exakt'), ...
                'creepwork:CW_ERR_UNKNOWN_OPTION', 'exakt');
   expect_error(@() creepwork.solve(ok{:}, 'grid', struct('nx', 0)), ...

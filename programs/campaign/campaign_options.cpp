@@ -32,8 +32,8 @@ the columns of `creepwork wear` and the options of `creepwork solve`
 (doc/input-schema.md lists every column, unit and default):
   required  id (unique), a, b, N
   optional  model fastsim|exact|calibrated, grid kalker_strips|uniform, nx, ny,
-            box_scale, mu, G, nu, L1, L2, L3 (m/Pa, instead of G and nu),
-            xi_x, xi_y, phi (or spin), pressure (parabolic|elliptic),
+            box_scale, mu, V (m/s), G, nu, L1, L2, L3 (m/Pa, instead of G
+            and nu), xi_x, xi_y, phi (or spin), pressure (parabolic|elliptic),
             rolling_direction (+1|-1), spin_offset, flexibility_blending
             (0|1), exact_load (0|1), tolerance, max_iterations (exact
             model); s0, distance (m; carried to results.csv)

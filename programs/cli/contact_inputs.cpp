@@ -49,6 +49,7 @@ const std::vector<InputInfo>& all_inputs()
         {I::gap_file, "gap", "gap_file", Q::dimensionless},
         {I::approach, "approach", "approach", Q::length},
         {I::normal_method, "normal-method", "normal_method", Q::dimensionless},
+        {I::V, "V", "V", Q::dimensionless}, // m/s in every unit system
     };
     return list;
 }
@@ -223,6 +224,7 @@ void validate(const Reader& r, const cw_params& p)
                Refusal::invalid_input);
     r.require(p.normal_force >= 0.0, Input::N, "must be >= 0", p.normal_force);
     r.require(p.mu >= 0.0, Input::mu, "must be >= 0", p.mu);
+    r.require(p.V >= 0.0, Input::V, "must be >= 0 (m/s)", p.V);
     if (p.flexibility == CW_FLEX_FROM_MATERIAL) {
         r.require(p.G > 0.0, Input::G, "must be > 0", p.G);
         r.require(p.nu >= 0.0 && p.nu <= 0.5, Input::nu, "must lie in [0, 0.5]", p.nu);
@@ -287,6 +289,7 @@ ContactInputs read_contact_inputs(const ContactSource& s, const cw_params& defau
     r.read(Input::b, &p.b);
     r.read(Input::N, &p.normal_force);
     r.read(Input::mu, &p.mu);
+    r.read(Input::V, &p.V);
     r.read(Input::G, &p.G);
     r.read(Input::nu, &p.nu);
     r.read(Input::xi_x, &p.xi_x);
@@ -335,7 +338,8 @@ std::vector<std::string> plausibility_warnings(const cw_grid& grid, const cw_par
         {"a", Input::a},       {"b", Input::b},       {"normal_force", Input::N},
         {"mu", Input::mu},     {"G", Input::G},       {"L1", Input::L1},
         {"L2", Input::L2},     {"L3", Input::L3},     {"xi_x", Input::xi_x},
-        {"xi_y", Input::xi_y}, {"phi", Input::phi},   {"approach", Input::approach}};
+        {"xi_y", Input::xi_y}, {"phi", Input::phi},   {"approach", Input::approach},
+        {"V", Input::V}};
     std::vector<std::string> w;
     for (const cw_check& c : library_checks(grid, &p, 1)) {
         // Every command requires a, b and N, or takes documented defaults.

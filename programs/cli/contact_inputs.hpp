@@ -26,7 +26,9 @@ enum class Input {
     // Not part of a contact: the row's name (campaign) and the wear columns.
     id, s0, distance, body, contact_angle, passes, speed,
     // A campaign row's contact of any shape (the gap file's grid, solve --gap).
-    gap_file, approach, normal_method
+    gap_file, approach, normal_method,
+    // The rolling speed [m/s] (a friction law of the slip speed needs it).
+    V
 };
 
 struct InputInfo {

@@ -15,6 +15,7 @@ std::vector<OptionSpec> material_and_load_options()
             {"b", K::number, {}},
             {"N", K::number, {}},
             {"mu", K::number, {}},
+            {"V", K::number, {}},
             {"G", K::number, {}},
             {"nu", K::number, {}},
             {"L1", K::number, {}},

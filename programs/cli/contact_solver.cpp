@@ -30,7 +30,8 @@ std::string options_named_in(const std::string& message)
         {"heat_capacity_2", "--heat-capacity-2"}, {"conductivity_1", "--conductivity-1"},
         {"conductivity_2", "--conductivity-2"}, {"density_1", "--density-1"},
         {"density_2", "--density-2"}, {"rolling_speed", "--speed"},
-        {"discretisation", "--temperature-discretisation"}, {"k_yield", "--k-yield"}};
+        {"discretisation", "--temperature-discretisation"}, {"k_yield", "--k-yield"},
+        {"V", "--V"}};
     const auto is_word = [](char c) {
         return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
     };

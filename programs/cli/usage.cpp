@@ -89,6 +89,8 @@ contact (lengths, forces, stresses in the --units system):
   --b B             lateral semi-axis (> 0; a/b within [1e-3, 1e3]), required
   --N N             normal force (>= 0), required
   --mu MU           friction coefficient (>= 0)
+  --V V             rolling speed [m/s] in every --units system (>= 0;
+                    default 0, not given); Coulomb's law does not use it
   --G G             combined shear modulus (> 0)
   --nu NU           combined Poisson's ratio (0 .. 0.5)
   --L1 L --L2 L --L3 L

@@ -46,6 +46,7 @@ def test_nu_out_of_range_names_nu():
 @pytest.mark.parametrize("keywords, cls, named", [
     (dict(a=-1e-3), creepwork.InvalidInputError, "a"),
     (dict(mu=float("nan")), creepwork.InvalidInputError, "mu"),
+    (dict(V=-30.0), creepwork.InvalidInputError, "V = "),
     (dict(G=0.0), creepwork.InvalidInputError, "G"),
     (dict(model="exact", grid={"kind": "strips"}), creepwork.InvalidInputError, "grid"),
     (dict(model="exact", tolerance=2.0), creepwork.InvalidInputError, "tolerance"),

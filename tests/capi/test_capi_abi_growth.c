@@ -120,6 +120,60 @@ static void smaller_params_take_defaults(void** state)
     }
 }
 
+/* The rolling speed V, appended last: Coulomb's law does not use it, so
+ * every model gives the same bits with V = 0 (the default), V = 30 m/s, and
+ * a caller's params cut before V (whatever lies beyond struct_size: here an
+ * invalid -1 that a full-size read would refuse). Totals, the traction field
+ * and the Jacobian compared. */
+static void rolling_speed_unused_by_coulomb(void** state)
+{
+    (void)state;
+    static double h[CW_LOBES_NX * CW_LOBES_NY];
+    const cw_grid lobes = cw_test_two_lobes(h);
+    const struct {
+        cw_grid grid;
+        int model;
+    } cases[] = {
+        {cw_test_grid(CW_GRID_KALKER_STRIPS, 15, 12, 1.0), CW_MODEL_FASTSIM},
+        {cw_test_grid(CW_GRID_KALKER_STRIPS, 15, 12, 1.0), CW_MODEL_CALIBRATED},
+        {cw_test_grid(CW_GRID_UNIFORM, 14, 12, 1.1), CW_MODEL_EXACT},
+        {lobes, CW_MODEL_FASTSIM},
+        {lobes, CW_MODEL_EXACT},
+    };
+    for (size_t c = 0; c < sizeof cases / sizeof cases[0]; ++c) {
+        cw_solver* s = NULL;
+        assert_int_equal(cw_solver_create(&cases[c].grid, &s, NULL, 0), CW_OK);
+        const size_t n = cw_cells(s);
+        cw_params base;
+        cw_test_case(2, &base);
+        base.model = cases[c].model;
+        base.warm_start = 0; /* cold: a fresh handle's bits every time */
+        if (cases[c].grid.kind == CW_GRID_GAP) base.gap = h, base.gap_len = n;
+        double* px = malloc(3 * n * sizeof *px);
+        assert_non_null(px);
+        cw_result r[3];
+        double jac[3][CW_JACOBIAN_LEN];
+        for (int k = 0; k < 3; ++k) {
+            cw_params p = base;
+            if (k == 1) p.V = 30.0;
+            if (k == 2) p.V = -1.0, p.struct_size = offsetof(cw_params, V);
+            cw_result_init(&r[k]);
+            assert_int_equal(cw_solver_solve_jacobian(s, &p, CW_SOLVE_FULL, &r[k], jac[k],
+                                                      CW_JACOBIAN_LEN),
+                             CW_OK);
+            assert_int_equal(cw_solver_get_field(s, CW_FIELD_PX, px + k * n, n), CW_OK);
+        }
+        for (int k = 1; k < 3; ++k) {
+            assert_memory_equal(&r[k], &r[0], sizeof r[0]);
+            assert_memory_equal(jac[k], jac[0], sizeof jac[0]);
+            assert_memory_equal(px + k * n, px, n * sizeof *px);
+        }
+        assert_true(r[0].n_slip > 0 && r[0].Fx != 0.0); /* a solve with slip to tell */
+        free(px);
+        cw_solver_destroy(s);
+    }
+}
+
 /* A future caller's larger params: the unknown tail is ignored. */
 static void larger_params_are_read_up_to_today(void** state)
 {
@@ -449,6 +503,7 @@ int main(void)
         cmocka_unit_test(old_structs_are_prefixes),
         cmocka_unit_test(smaller_params_take_defaults),
         cmocka_unit_test(larger_params_are_read_up_to_today),
+        cmocka_unit_test(rolling_speed_unused_by_coulomb),
         cmocka_unit_test(smaller_result_is_written_up_to_its_size),
         cmocka_unit_test(larger_result_keeps_its_tail),
         cmocka_unit_test(smaller_accumulation),

@@ -47,6 +47,7 @@ static void set(cw_params* p, const char* field, double v)
     else if (!strcmp(field, "xi_x")) p->xi_x = v;
     else if (!strcmp(field, "xi_y")) p->xi_y = v;
     else if (!strcmp(field, "phi")) p->phi = v;
+    else if (!strcmp(field, "V")) p->V = v;
     else fail_msg("no field %s", field);
 }
 
@@ -77,6 +78,7 @@ static void each_rule_fires_beyond_its_threshold_only(void** state)
         {"xi_x", CW_CHECK_CREEPAGE, "", -0.6, -0.4, 0, "a per cent typed as a ratio"},
         {"xi_y", CW_CHECK_CREEPAGE, "", 0.6, 0.4, 0, "a per cent typed as a ratio"},
         {"phi", CW_CHECK_SPIN, "1/m", 51.0, 49.0, 0, "1/mm typed as 1/m"},
+        {"V", CW_CHECK_SPEED, "m/s", 151.0, 149.0, 0, "km/h typed as m/s"},
     };
     cw_grid g;
     cw_grid_init(&g);

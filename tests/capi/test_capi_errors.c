@@ -166,6 +166,9 @@ SPOIL(load_nan, p->normal_force = nan_())
 SPOIL(load_inf, p->normal_force = inf())
 SPOIL(mu_negative, p->mu = -0.1)
 SPOIL(mu_nan, p->mu = nan_())
+SPOIL(V_negative, p->V = -30.0)
+SPOIL(V_nan, p->V = nan_())
+SPOIL(V_inf, p->V = inf())
 SPOIL(G_zero, p->G = 0.0)
 SPOIL(G_negative, p->G = -82e9)
 SPOIL(G_inf, p->G = inf())
@@ -202,6 +205,9 @@ static const bad_params bad_solves[] = {
     {"N Inf", spoil_load_inf, CW_ERR_INVALID_INPUT, "normal_force"},
     {"mu < 0", spoil_mu_negative, CW_ERR_INVALID_INPUT, "mu"},
     {"mu NaN", spoil_mu_nan, CW_ERR_INVALID_INPUT, "mu"},
+    {"V < 0", spoil_V_negative, CW_ERR_INVALID_INPUT, "V = "},
+    {"V NaN", spoil_V_nan, CW_ERR_INVALID_INPUT, "V = "},
+    {"V Inf", spoil_V_inf, CW_ERR_INVALID_INPUT, "V = "},
     {"G = 0", spoil_G_zero, CW_ERR_INVALID_INPUT, "G = "},
     {"G < 0", spoil_G_negative, CW_ERR_INVALID_INPUT, "G = "},
     {"G Inf", spoil_G_inf, CW_ERR_INVALID_INPUT, "G = "},

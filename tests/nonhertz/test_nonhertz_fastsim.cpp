@@ -152,7 +152,7 @@ void march_is_fastsim_on_an_ellipse(void**)
     in.pressure = pz.data();
     in.patch = patch.data();
     in.patches = &P;
-    in.mu = e.mu;
+    in.law = cw::CoulombLaw{e.mu};
     in.xi = e.xi_x;
     in.eta = e.xi_y;
     in.phi = e.phi;

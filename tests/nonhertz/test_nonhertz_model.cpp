@@ -155,13 +155,20 @@ void patches_and_work_maps_add_up(void**)
 
         const auto paper = cwtest::field(solver, cw::Field::work_paper);
         const auto consistent = cwtest::field(solver, cw::Field::work_consistent);
+        const auto sx = cwtest::field(solver, cw::Field::sx);
+        const auto sy = cwtest::field(solver, cw::Field::sy);
         const std::vector<int> st = cwtest::states(solver);
         double sum = 0.0;
+        int slipping = 0;
         for (size_t k = 0; k < st.size(); ++k) {
             assert_true(consistent[k] >= 0.0 && paper[k] >= 0.0);
+            // The micro-slip is 0 outside the slip elements (creepwork.h).
+            if (st[k] != 2) assert_true(sx[k] == 0.0 && sy[k] == 0.0);
+            else slipping += sx[k] != 0.0 || sy[k] != 0.0;
             if (st[k] != 2) assert_true(consistent[k] == 0.0 && paper[k] == 0.0);
             sum += consistent[k];
         }
+        assert_int_equal(slipping, t.n_slip);
         assert_close(sum, t.W_macro, 1e-12, 0.0);
         assert_close(t.W_consistent, t.W_macro, 1e-12, 0.0);
         // The moment field sums to Mz (about the grid's origin).

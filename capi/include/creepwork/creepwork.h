@@ -277,6 +277,10 @@ typedef struct cw_params {
     int normal_method;     /* CW_NORMAL_EXACT (default) or CW_NORMAL_SEMI_HERTZ; the
                               tangential problem is the model's either way */
     double approach;       /* [m] from the gap's datum, with CW_NORMAL_APPROACH (default 0) */
+    /* ---- appended in 1.3 ---- */
+    double V;              /* rolling speed [m/s], >= 0; 0 (default) = not given. A
+                              friction law of the slip speed (|micro-slip| * V) needs it;
+                              Coulomb's law (every model's) does not use it */
 } cw_params;
 
 /* Defaults: steel (G = 82e9 Pa, nu = 0.28), mu = 0.3, a = b = 6e-3 m,
@@ -305,7 +309,7 @@ CW_API int cw_params_init(cw_params* params);
 #define CW_CHECK_WHEELSET_SHIFT 20  /* |y| of the wheelset above 20 mm */
 #define CW_CHECK_WHEELSET_ANGLE 21  /* |roll|, |yaw| above 0.05 rad (degrees typed?) */
 #define CW_CHECK_PATCH_ELEMENT 22   /* wheel/rail dx, ds above 5 mm */
-#define CW_CHECK_SPEED 23           /* forward speed above 150 m/s (km/h typed?) */
+#define CW_CHECK_SPEED 23           /* V, forward speed above 150 m/s (km/h typed?) */
 #define CW_CHECK_PITCH_RATE 24      /* vpitch far from -vs / nominal_radius */
 #define CW_CHECK_WHEELSET_HEIGHT 25 /* |z| beyond 5 mm with no patch on the flange */
 #define CW_CHECK_FLANGE_TIP 26      /* a patch on the wheel's flange tip */

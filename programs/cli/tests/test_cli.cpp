@@ -183,6 +183,8 @@ void bad_inputs_fail_cleanly(void**)
         {{"solve", "--b", "1e-9"}, "--b"},
         {{"solve", "--N", "-1"}, "--N"},
         {{"solve", "--mu", "-0.1"}, "--mu"},
+        {{"solve", "--V", "-30"}, "--V"},
+        {{"solve", "--V", "nan"}, "--V"},
         {{"solve", "--G", "0"}, "--G"},
         {{"solve", "--nu", "0.7"}, "--nu"},
         {{"solve", "--nx", "0"}, "--nx"},
