@@ -43,7 +43,7 @@ Solver& PatchContact::solver_for(std::size_t k, int nx, int ny, double dx, doubl
         g.ny = ny;
         g.dx = dx;
         g.dy = dy;
-        it = solvers_.emplace(key, std::make_unique<Solver>(g)).first;
+        it = solvers_.emplace(key, std::make_unique<Solver>(g, settings_.model)).first;
     }
     return *it->second;
 }
@@ -104,6 +104,7 @@ const PatchSolution& PatchContact::solve(const ContactPatch& p, std::size_t k, b
     in.xi_y = eta + phi * x0;
     in.phi = phi;
     Solver& s = solver_for(k, nx, ny, dx, dy);
+    last_solver_ = &s;
     const SolveTotals& t = s.solve(in, forces_only ? SolveMode::forces_only : settings_.mode);
 
     PatchSolution& r = last_;
@@ -163,7 +164,7 @@ const WheelRailSolution& WheelRailContact::solve_force(double fz, const Wheelset
 {
     const PatchSolver solver = [this](std::size_t k, const ContactPatch& p) {
         const PatchSolution& s = contact_.solve(p, k, true);
-        return PatchForces{s.fn, s.fx, s.fs};
+        return PatchForces{s.fn, s.fx, s.fs, contact_.normal_force_by_approach()};
     };
     // The height of the Hertz estimate (geometry only) starts the exact
     // balance near its solution, so that the exact solves stay near the

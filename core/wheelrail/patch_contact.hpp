@@ -70,6 +70,9 @@ public:
     // Error naming a bad input or Error(not_converged).
     const PatchSolution& solve(const ContactPatch& patch, std::size_t k = 0, bool forces_only = false);
     const PatchContactSettings& settings() const { return settings_; }
+    // dfn/d(approach) [N/m] of the last patch solved, its normal method's
+    // own (Solver::normal_force_by_approach).
+    double normal_force_by_approach() { return last_solver_ ? last_solver_->normal_force_by_approach() : 0.0; }
     // Solvers made so far (one per grid shape).
     std::size_t solvers() const { return solvers_.size(); }
 
@@ -81,6 +84,7 @@ private:
     std::map<Key, std::unique_ptr<Solver>> solvers_;
     std::vector<double> gap_; // the patch's h with its rows reversed (y = -s)
     PatchSolution last_;
+    Solver* last_solver_ = nullptr;
 };
 
 // The solution of a whole wheel position.
