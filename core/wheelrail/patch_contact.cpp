@@ -154,6 +154,7 @@ const WheelRailSolution& WheelRailContact::solve_position(const WheelsetPosition
                                                           const WheelsetVelocity& velocity)
 {
     geometry_.evaluate(position, velocity);
+    balanced_ = 0; // extrapolate only across consecutive force balances
     collect(1);
     return solution_;
 }
@@ -170,7 +171,10 @@ const WheelRailSolution& WheelRailContact::solve_force(double fz, const Wheelset
     // balance near its solution, so that the exact solves stay near the
     // final grid; the fast model costs about what the estimate does and
     // starts from the position given.
+    // A host that passes back the last height drifts: its next height is
+    // extrapolated from the last two (z is smooth in the host's time).
     WheelsetPosition start = position;
+    if (balanced_ >= 2 && position.z == balance_z_[1]) start.z = 2.0 * balance_z_[1] - balance_z_[0];
     if (contact_.settings().model == ModelKind::exact) {
         try {
             const HertzPatchEstimate hertz{contact_.settings().G, contact_.settings().nu};
@@ -180,6 +184,9 @@ const WheelRailSolution& WheelRailContact::solve_force(double fz, const Wheelset
         }
     }
     const VerticalForceSolution v = solve_vertical_position(geometry_, fz, start, velocity, solver, options);
+    balance_z_[0] = balance_z_[1];
+    balance_z_[1] = v.z;
+    ++balanced_;
     // the geometry is left at the solution; its patches solve again from
     // their own last solution (same gap and approach: the normal solution
     // is kept, the tangential one starts warm)

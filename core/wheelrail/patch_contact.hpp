@@ -103,7 +103,10 @@ public:
     // At the given wheelset position (its z is the height).
     const WheelRailSolution& solve_position(const WheelsetPosition& position, const WheelsetVelocity& velocity);
     // With the vertical force on the rail prescribed [N]; position.z is the
-    // first guess of the height.
+    // first guess of the height, unless it is the height the last call
+    // returned (a host passing it back) and the two calls before were force
+    // balances too: the first guess is then extrapolated linearly from the
+    // last two heights.
     const WheelRailSolution& solve_force(double fz, const WheelsetPosition& position,
                                          const WheelsetVelocity& velocity,
                                          const VerticalForceOptions& options = {});
@@ -118,6 +121,8 @@ private:
     WheelRailGeometry geometry_;
     PatchContact contact_;
     WheelRailSolution solution_;
+    int balanced_ = 0;              // force balances solved since the last solve_position
+    double balance_z_[2] = {0, 0};  // the heights of the last two [m]: [1] the last
 };
 
 } // namespace creepwork::wheelrail
