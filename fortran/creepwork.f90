@@ -12,7 +12,10 @@
 !     from the header at build time (creepwork_types, in creepwork_c.f90);
 !   * free procedures (creepwork_functions.f90): versions, cw_status_string,
 !     the _init procedures, Kalker's coefficients and flexibilities, Hertz,
-!     Kalker's normalised FASTSIM, the wear-profile update;
+!     Kalker's normalised FASTSIM, the wear-profile update; and the policy
+!     every door shares (creepwork_checks.f90): cw_params_check (inputs that
+!     look like a unit mistake, or left at their placeholders), cw_check_text,
+!     cw_grid_init_model (a model's default grid), cw_input_name;
 !   * wrapper types that own a C handle (one file each, all extending
 !     cw_handle of creepwork_handle.f90): cw_solver_type, cw_batch_type,
 !     cw_accumulator_type, cw_wear_type, cw_wear_profile_type,
@@ -56,6 +59,8 @@ module creepwork
                                   cw_wear_profile_totals_init, cw_kalker_coefficients, &
                                   cw_kalker_flexibilities, cw_hertz_solve, cw_fastsim_normalised, &
                                   cw_wear_profile_update
+   use creepwork_checks, only: cw_check_init, cw_params_check, cw_check_text, cw_grid_init_model, &
+                               cw_input_name
    use creepwork_solver, only: cw_solver_type
    use creepwork_batch, only: cw_batch_type
    use creepwork_accumulator, only: cw_accumulator_type

@@ -455,6 +455,76 @@ WHEELRAIL_MUTANTS += [
 MUTANTS += WHEELRAIL_MUTANTS
 # ------------------------------------------------------------ end wheel/rail
 
+# ------------------------------------------------------- the shared policy
+# The library's plausibility checks, default grids and names
+# (core/contact/plausibility.cpp, core/wheelrail/placement_checks.cpp,
+# capi/capi_check.cpp), as the C ABI, module creepwork and the CLI show them;
+# the Python door's own rules (required inputs, the gap's shape).
+POLICY = ["test_capi_check", "test_fortran_checks", "cli_gap_unit_mistakes_warn",
+          "cli_warns_and_accepts_any_case"]
+WHEELRAIL_POLICY = ["test_wheelrail_capi", "test_fortran_checks",
+                    "cli_wheelrail_warns_about_misplaced_wheel"]
+POLICY_MUTANTS = [
+    dict(id="check-gap-heights", what="a gap's heights warned only beyond 100 m, not 10 mm",
+         file="core/contact/plausibility.cpp",
+         old="     gap_spread, [](const C& c, double v) { return c.gap_grid && v > 1e-2; }},",
+         new="     gap_spread, [](const C& c, double v) { return c.gap_grid && v > 1e2; }},",
+         tests=POLICY),
+    dict(id="check-semi-axis-input", what="the rule on a reads b",
+         file="core/contact/plausibility.cpp",
+         old='    {CheckRule::semi_axis, "a", "m", kSemiLarge, [](const C& c) { return c.a; },',
+         new='    {CheckRule::semi_axis, "a", "m", kSemiLarge, [](const C& c) { return c.b; },',
+         tests=POLICY),
+    dict(id="check-default-geometry", what="the placeholders reported only when N was changed",
+         file="capi/capi_check.cpp",
+         old="    c.default_geometry = p.a == d.a && p.b == d.b && p.normal_force == d.normal_force;",
+         new="    c.default_geometry = p.a == d.a && p.b == d.b && p.normal_force != d.normal_force;",
+         tests=["test_capi_check", "test_fortran_checks", "python_test_policy"]),
+    dict(id="check-alias-fast", what="fast read as another model than fastsim",
+         file="capi/capi_check.cpp",
+         old='                                                             {"fast", "fastsim"}};',
+         new='                                                             {"fast", "exact"}};',
+         tests=["test_capi_check", "test_fortran_checks", "cli_wheelrail_one_vocabulary"]),
+    dict(id="check-shift-limit", what="a lateral shift warned above 50 mm, not the 20 mm it says",
+         file="core/wheelrail/placement_checks.cpp",
+         old="constexpr double kShiftLimit = 20e-3;",
+         new="constexpr double kShiftLimit = 50e-3;",
+         tests=WHEELRAIL_POLICY + ["python_test_wheelrail"]),
+    dict(id="check-flange-tip", what="a patch on the flange tip only within 0.05 mm of it",
+         file="core/wheelrail/placement_checks.cpp",
+         old="constexpr double kTipDepth = 3e-3;",
+         new="constexpr double kTipDepth = 0.05e-3;",
+         tests=WHEELRAIL_POLICY),
+    dict(id="check-profile-origin", what="a flange tip up to 95 mm from the flange back passes",
+         file="core/wheelrail/placement_checks.cpp",
+         old="constexpr double kTipFromBack = 45e-3;",
+         new="constexpr double kTipFromBack = 95e-3;",
+         tests=WHEELRAIL_POLICY),
+    dict(id="profile-y-offset", what="the profile's lateral offset is not applied",
+         file="core/wheelrail/profile_io.cpp",
+         old="        pts.push_back({(opt.mirror_y ? -r.y : r.y) * unit + opt.y_offset,",
+         new="        pts.push_back({(opt.mirror_y ? -r.y : r.y) * unit,",
+         tests=WHEELRAIL_POLICY),
+    dict(id="cli-typed-name", what="the CLI names an alias option by its documented name",
+         file="programs/cli/options.cpp",
+         old="        parsed.typed_[spec->name] = name;",
+         new="        parsed.typed_[spec->name] = spec->name;",
+         tests=["cli_one_vocabulary", "cli_wheelrail_one_vocabulary"]),
+    dict(id="python-required-geometry", what="Python solves without N",
+         file="python/creepwork/_params.py",
+         old='("a", "a"), ("b", "b"), ("N", "normal_force"))',
+         new='("a", "a"), ("b", "b"))',
+         tests=["python_test_policy", "python_test_errors"]),
+    dict(id="python-gap-shape", what="Python accepts a transposed gap",
+         file="python/creepwork/_solver.py",
+         old="    if len(shape) < 2 or shape == (ny, nx):",
+         new="    if len(shape) < 2 or shape in ((ny, nx), (nx, ny)):",
+         tests=["python_test_policy", "python_test_gap"]),
+]
+MUTANTS += POLICY_MUTANTS
+# ----------------------------------------------------- end the shared policy
+
+
 # ---------------------------------------------------------------- progress
 # The progress line of long work (programs/cli/progress.cpp), which the
 # campaign prints through the same code as wear and sweep: caught by the
@@ -516,8 +586,9 @@ PROMISE_MUTANTS = [
                 "python_test_solver"]),
     dict(id="python-units-keywords-only", what="solve_many and Batch check the keywords' units, "
          "not a params array's", file="python/creepwork/_batch.py",
-         old="            checked = recs if params_in is not None else converted",
-         new="            checked = converted",
+         old="            _errors.warn_units(_checks.warnings_for(self._grid, recs, typed), stacklevel)",
+         new="            _errors.warn_units(_checks.warnings_for(self._grid, recs if params_in is None "
+             "else recs[:0], typed), stacklevel)",
          tests=["python_test_units", "python_test_many", "python_test_solver"]),
     dict(id="mex-text-one-contact-per-character", what="the MEX gateway counts an enumeration's "
          "name as one contact per character", file="matlab/creepwork_mex.c",

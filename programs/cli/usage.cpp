@@ -72,8 +72,8 @@ model:
                     CONTACT's layout: the uniform grid, 24 x 24 elements over
                     1.2 times the semi-axes (20 elements across the ellipse,
                     two guard cells on each side); --nx, --ny, --box-scale
-                    override (at most 256 per direction); --grid strips is an
-                    error. calibrated: the simplified theory calibrated to
+                    override (at most 256 per direction); --grid
+                    kalker_strips is an error. calibrated: the simplified theory calibrated to
                     the exact one (doc/theory/calibrated.md): needs G and nu,
                     its own pressure law (parabolic, blended towards Hertz's
                     as the slip grows; no --pressure).
@@ -96,7 +96,7 @@ contact (lengths, forces, stresses in the --units system):
                     (replace G and nu; legacy codes give one L: pass it thrice)
   --xi-x XI         longitudinal creepage (-)
   --xi-y XI         lateral creepage (-)
-  --spin PHI        spin creepage (1/length)
+  --spin PHI        spin creepage (1/length); --phi is the same option
   --rolling-direction +1|-1
                     +1 (default): rolling towards +x, leading edge at x = +a
   --pressure parabolic|elliptic
@@ -128,12 +128,13 @@ contact of any shape (instead of --a, --b and the grid options):
                     one); Mz about the file's origin
   --approach A      with --gap, instead of --N: the approach from the file's
                     h = 0 (length)
-  --normal-method exact|semi-hertz
+  --normal-method exact|semi_hertz
                     with --gap: the half-space normal problem (default) or,
                     fast, a Hertzian semi-ellipse per row (Sichani et al.)
 grid:
-  --grid strips|uniform
-                    Kalker's strip grid (default) or CONTACT's uniform grid
+  --grid kalker_strips|uniform
+                    Kalker's strip grid (default; or strips) or CONTACT's
+                    uniform grid
   --nx N --ny N     elements per strip and number of strips (1 .. 1000)
   --box-scale S     uniform grid box [-S a, S a] x [-S b, S b], S in [1, 100]
 units:
@@ -366,7 +367,7 @@ wear law:
                     +1 (default): s grows with the contact's y
 contact: --mu --G --nu (defaults 0.3, 82e9 Pa, 0.28) --pressure
   parabolic|elliptic --exact-load (as for solve; the defaults of the
-  columns); grid: --grid strips|uniform --nx --ny --box-scale
+  columns); grid: --grid kalker_strips|uniform --nx --ny --box-scale
   (default Kalker strips 20 x 20)
 profile grid: --profile-from S --profile-to S --profile-step DS [m]
   (default: every patch s0 -+ b plus 20 %, spacing a quarter of the
@@ -440,7 +441,7 @@ models) --tolerance --max-iterations (exact) --units si|paper (as for
 solve). The exact model needs G and nu, and
 the comparison is of the two theories as Kalker states them: --L1..--L3,
 --pressure and --flexibility-blending are errors.
-grid: uniform (--grid strips is an error), default 48 x 48 over 1.2 times the
+grid: uniform (--grid kalker_strips is an error), default 48 x 48 over 1.2 times the
 semi-axes (40 elements across the ellipse, two guard cells on each side,
 CONTACT's layout); --nx --ny (at most 256) --box-scale.
 output: --format text|json|markdown (the summary on stdout; forces on the
@@ -495,9 +496,20 @@ measured 14 mm below the rail top, flange-back distance 1360 mm, flange back
 at -70 mm, nominal wheel radius 460 mm, no extra cant):
   --wheel-profile FILE   SIMPACK .prw, MiniProf .whl, or a table of "y z"
   --rail-profile FILE    lines in mm (SIMPACK .prr, MiniProf .ban, table)
+  --profile-unit M       metres per length unit of both files (default: a
+                         file's own: SIMPACK its units, MiniProf and tables
+                         mm; 1 for tables in metres)
+  --wheel-y-offset M     added to the wheel profile's y [m]: its origin lies
+                         on the tread with the flange back at -70 mm, so a
+                         profile measured from the flange back (MiniProf)
+                         takes --wheel-y-offset -0.07
+  --mirror-wheel         the wheel profile's y is mirrored (measured with y
+                         towards the track centre), before the offset
+  --rail-y-offset M      added to the rail profile's y [m]
 
 wheelset (defaults 0):
-  --y-shift M            lateral shift [m]
+  --y-shift M            lateral shift [m]; the flange meets the rail within
+                         about 10 mm (a warning above 20 mm)
   --yaw RAD              yaw angle [rad]
   --roll RAD             roll angle [rad]
   --V MPS                forward speed [m/s] (default 1)
@@ -506,28 +518,38 @@ wheelset (defaults 0):
   --side right|left      the wheel (default right)
 
 contact:
-  --Fz N                 vertical force on the rail [N] (required)
-  --model exact|fast     exact (default): Kalker's exact theory with the
-                         exact normal problem, as CONTACT's module 1; fast:
-                         FASTSIM with the semi-Hertzian normal problem
-                         (doc/validation/manchester.md: its accuracy)
+  --Fz N                 vertical force on the rail [N] (required; --N is
+                         the same option)
+  --model exact|fastsim  exact (default): Kalker's exact theory with the
+                         exact normal problem, as CONTACT's module 1;
+                         fastsim (or fast): FASTSIM with the semi-Hertzian
+                         normal problem (doc/validation/manchester.md: its
+                         accuracy)
   --mu MU                friction coefficient (default 0.3)
   --G PA                 combined shear modulus [Pa] (default 8.2e10)
   --nu NU                combined Poisson's ratio (default 0.28)
   --dx M, --ds M         element sizes of the patch grids [m] (default 2e-4)
 
+Warnings (stderr, exit 0) name inputs in a wrong unit and placements no
+running wheel has: a patch on the wheel's flange tip, a wheelset lifted or
+lowered by more than 5 mm on a tread contact, a wheel profile whose flange
+tip lies on the field side of its origin -- each with its likely cause.
+
 output (--format text, the default, or json): the model, the wheelset
-height z_ws [m] (> 0 lowers the wheelset) and per patch, from the field side
-to the track centre: y_contact_rail, z_contact_rail (the contact reference
-point on the rail profile) [m], contact_angle [rad], the creepages xi_x,
-xi_y [-] and phi [1/m] (CONTACT's CKSI, CETA, CPHI), Fn, Fx, Fs [N] and Mn
-[N m] on the rail in the patch frame, p_max [Pa], n_contact, n_adhesion,
-n_slip (elements); JSON: "model" (exact or fast), and per patch also
-x_contact, y_contact, z_contact (track), y_contact_wheel, z_contact_wheel,
-veloc, approach, rolling_radius and the patch force in track coordinates
-Fx_track, Fy_track, Fz_track; total_rail holds Fx, Fy, Fz on the rail in
-track coordinates. creepwork's own convention (forces on the wheel) is
-xi_x = -CKSI, xi_y = CETA, phi = CPHI, Fx = -FX, Fy = FS, Mz = MN.
+height z_ws [m] (> 0 lowers the wheelset) and per patch K = 0, 1, ..., from
+the field side to the track centre: y_contact_rail, z_contact_rail (the
+contact reference point on the rail profile) [m], contact_angle [rad], the
+creepages cksi, ceta [-] and cphi [1/m] of the rail relative to the wheel
+(CONTACT's CKSI, CETA, CPHI), Fn [N], Fx_rail, Fs_rail [N] and Mn_rail [N m]
+on the rail in the patch frame, p_max [Pa], n_contact, n_adhesion, n_slip
+(elements); JSON: "model" (exact or fastsim), "sign_convention", and per
+patch also x_contact, y_contact, z_contact (track), y_contact_wheel,
+z_contact_wheel, veloc, approach, rolling_radius and the patch force on the
+rail in track coordinates Fx_track, Fy_track, Fz_track; total_rail holds Fx,
+Fy, Fz on the rail in track coordinates (doc/reference/conventions.md: every
+key's sign and body). creepwork's own convention (forces on the wheel) is
+xi_x = -cksi, xi_y = ceta, phi = cphi, Fx = -Fx_rail, Fy = Fs_rail,
+Mz = Mn_rail.
 
   --out DIR              also write DIR/result.json (the JSON above),
                          profiles.csv (body,y_m,z_m: the rail's and the
