@@ -163,9 +163,17 @@ const WheelRailSolution& WheelRailContact::solve_force(double fz, const Wheelset
                                                        const WheelsetVelocity& velocity,
                                                        const VerticalForceOptions& options)
 {
-    const PatchSolver solver = [this](std::size_t k, const ContactPatch& p) {
+    // The exact normal problem's derivative costs a linear solve (about 15 %
+    // of an exact patch solve): the exact model takes it at the first height
+    // only, for the first Newton step, and secant steps after it
+    // (doc/dev/decisions.md); the fast model's closed form at every height.
+    const bool exact = contact_.settings().normal_method == NormalMethod::exact;
+    int evaluation = -1;
+    const PatchSolver solver = [this, exact, &evaluation](std::size_t k, const ContactPatch& p) {
+        if (k == 0) ++evaluation;
         const PatchSolution& s = contact_.solve(p, k, true);
-        return PatchForces{s.fn, s.fx, s.fs, contact_.normal_force_by_approach()};
+        const bool slope = !exact || evaluation == 0;
+        return PatchForces{s.fn, s.fx, s.fs, slope ? contact_.normal_force_by_approach() : 0.0};
     };
     // The height of the Hertz estimate (geometry only) starts the exact
     // balance near its solution, so that the exact solves stay near the
