@@ -71,12 +71,22 @@ static const field_info params_fields[] = {CW_FIELDS_cw_params(FIELD_ENTRY)};
 static const field_info grid_fields[] = {CW_FIELDS_cw_grid(FIELD_ENTRY)};
 static const field_info result_fields[] = {CW_FIELDS_cw_result(FIELD_ENTRY)};
 static const field_info patch_fields[] = {CW_FIELDS_cw_patch(FIELD_ENTRY)};
+static const field_info tparams_fields[] = {CW_FIELDS_cw_temperature_params(FIELD_ENTRY)};
+static const field_info tresult_fields[] = {CW_FIELDS_cw_temperature_result(FIELD_ENTRY)};
+static const field_info dparams_fields[] = {CW_FIELDS_cw_damage_params(FIELD_ENTRY)};
+static const field_info dresult_fields[] = {CW_FIELDS_cw_damage_result(FIELD_ENTRY)};
 #undef FIELD_ENTRY
 #define COUNT(a) (sizeof(a) / sizeof((a)[0]))
 static const struct_info PARAMS = {"cw_params", params_fields, COUNT(params_fields)};
 static const struct_info GRID = {"cw_grid", grid_fields, COUNT(grid_fields)};
 static const struct_info RESULT = {"cw_result", result_fields, COUNT(result_fields)};
 static const struct_info PATCH = {"cw_patch", patch_fields, COUNT(patch_fields)};
+static const struct_info TPARAMS = {"cw_temperature_params", tparams_fields,
+                                    COUNT(tparams_fields)};
+static const struct_info TRESULT = {"cw_temperature_result", tresult_fields,
+                                    COUNT(tresult_fields)};
+static const struct_info DPARAMS = {"cw_damage_params", dparams_fields, COUNT(dparams_fields)};
+static const struct_info DRESULT = {"cw_damage_result", dresult_fields, COUNT(dresult_fields)};
 
 typedef struct {
     const char* struct_name;
@@ -427,6 +437,7 @@ static void warn_units(const cw_grid* grid, const cw_params* p, size_t count,
 
 static cw_solver* solvers[MAX_SOLVERS]; /* handles of creepwork.Solver objects */
 static cw_grid solver_grids[MAX_SOLVERS]; /* their grids, for the checks */
+static int directions[MAX_SOLVERS];     /* rolling_direction of each one's last solve */
 
 static void destroy_all(void)
 {
@@ -571,6 +582,107 @@ static mxArray* solve_one(cw_solver* s, int owned, cw_params p, int fields, int 
     mxSetField(prof, 0, "w", w);
     mxSetField(prof, 0, "parabola", par);
     mxSetField(out, 0, "profile", prof);
+    return out;
+}
+
+/* ------------------------------------------------- surface post-processors */
+
+/* Values valid but implausible for steel wheels and rails, with the CLI's
+ * thresholds (programs/cli/surface_outputs.cpp, implausible()). */
+static void warn_steel(const char* name, double v, double lo, double hi, const char* unit,
+                       const char* why)
+{
+    if (v < lo || v > hi)
+        mexWarnMsgIdAndTxt("creepwork:implausibleUnits", "%s = %.10g %s is implausible: %s", name,
+                           v, unit, why);
+}
+
+static void warn_temperature_units(const cw_temperature_params* p)
+{
+    static const char K[] = "steel is 50 (W/(mm K) typed?)", C[] = "steel is 450 (kJ/(kg K) typed?)",
+                      R[] = "steel is 7850 (g/cm^3 typed?)";
+    warn_steel("conductivity_1", p->conductivity_1, 1.0, 1000.0, "W/(m K)", K);
+    warn_steel("conductivity_2", p->conductivity_2, 1.0, 1000.0, "W/(m K)", K);
+    warn_steel("heat_capacity_1", p->heat_capacity_1, 100.0, 5000.0, "J/(kg K)", C);
+    warn_steel("heat_capacity_2", p->heat_capacity_2, 100.0, 5000.0, "J/(kg K)", C);
+    warn_steel("density_1", p->density_1, 1000.0, 25000.0, "kg/m^3", R);
+    warn_steel("density_2", p->density_2, 1000.0, 25000.0, "kg/m^3", R);
+    warn_steel("rolling_speed", p->rolling_speed, -INFINITY, 150.0, "m/s",
+               "trains run below 150 m/s (km/h typed?)");
+}
+
+/* An nx-by-ny matrix of one field of a temperature or damage handle. */
+static mxArray* handle_field(int (*get)(const void*, int, double*, size_t), const void* h, int id,
+                             int nx, int ny)
+{
+    mxArray* m = mxCreateDoubleMatrix((size_t)nx, (size_t)ny, mxREAL);
+    if (get(h, id, mxGetPr(m), (size_t)nx * (size_t)ny) != CW_OK)
+        FAIL("internal", "reading a field of a surface post-processor");
+    return m;
+}
+
+static int temperature_field(const void* h, int id, double* out, size_t n)
+{
+    return cw_temperature_get_field((const cw_temperature*)h, id, out, n);
+}
+
+static int damage_field(const void* h, int id, double* out, size_t n)
+{
+    return cw_damage_get_field((const cw_damage*)h, id, out, n);
+}
+
+/* Both bodies' temperatures of s's last solve (the result's fields, and
+ * rail, wheel, heat as nx-by-ny matrices). */
+static mxArray* temperature_of(cw_solver* s, const cw_temperature_params* p)
+{
+    cw_temperature* t = NULL;
+    int status = cw_temperature_create(s, &t);
+    if (status != CW_OK) fail_status(status, "making the temperature workspace");
+    cw_temperature_result r;
+    cw_temperature_result_init(&r);
+    status = cw_temperature_compute(t, s, p, &r);
+    if (status != CW_OK) {
+        char message[MESSAGE_LEN];
+        snprintf(message, sizeof message, "%s", cw_temperature_last_error(t));
+        cw_temperature_destroy(t);
+        fail_status(status, message);
+    }
+    static const char* extra[] = {"rail", "wheel", "heat"};
+    mxArray* out = from_structs(&TRESULT, &r, sizeof r, 1, NULL, 3, extra);
+    int nx = 0, ny = 0;
+    cw_solver_grid_size(s, &nx, &ny);
+    const int ids[] = {CW_TEMPERATURE_FIELD_RAIL, CW_TEMPERATURE_FIELD_WHEEL,
+                       CW_TEMPERATURE_FIELD_HEAT};
+    for (int k = 0; k < 3; ++k)
+        mxSetField(out, 0, extra[k], handle_field(temperature_field, t, ids[k], nx, ny));
+    cw_temperature_destroy(t);
+    return out;
+}
+
+/* The damage indices of s's last solve (the result's fields, and
+ * rcf_index, t_gamma_density as nx-by-ny matrices). */
+static mxArray* damage_of(cw_solver* s, const cw_damage_params* p)
+{
+    cw_damage* d = NULL;
+    int status = cw_damage_create(s, &d);
+    if (status != CW_OK) fail_status(status, "making the damage workspace");
+    cw_damage_result r;
+    cw_damage_result_init(&r);
+    status = cw_damage_compute(d, s, p, &r);
+    if (status != CW_OK) {
+        char message[MESSAGE_LEN];
+        snprintf(message, sizeof message, "%s", cw_damage_last_error(d));
+        cw_damage_destroy(d);
+        fail_status(status, message);
+    }
+    static const char* extra[] = {"rcf_index", "t_gamma_density"};
+    mxArray* out = from_structs(&DRESULT, &r, sizeof r, 1, NULL, 2, extra);
+    int nx = 0, ny = 0;
+    cw_solver_grid_size(s, &nx, &ny);
+    const int ids[] = {CW_DAMAGE_FIELD_RCF_INDEX, CW_DAMAGE_FIELD_T_GAMMA_DENSITY};
+    for (int k = 0; k < 2; ++k)
+        mxSetField(out, 0, extra[k], handle_field(damage_field, d, ids[k], nx, ny));
+    cw_damage_destroy(d);
     return out;
 }
 
@@ -735,6 +847,7 @@ void mexFunction(int nlhs, mxArray* plhs[], int nrhs, const mxArray* prhs[])
         if (k == MAX_SOLVERS) FAIL("tooManySolvers", "more than %d solvers open", MAX_SOLVERS);
         solver_grids[k] = grid_of(a1);
         solvers[k] = make_solver(&solver_grids[k]);
+        directions[k] = 1;
         int nx = 0, ny = 0;
         cw_solver_grid_size(solvers[k], &nx, &ny);
         plhs[0] = mxCreateDoubleScalar(k + 1);
@@ -742,7 +855,26 @@ void mexFunction(int nlhs, mxArray* plhs[], int nrhs, const mxArray* prhs[])
         if (nlhs > 2) plhs[2] = mxCreateDoubleScalar(ny);
     } else if (strcmp(command, "solver_solve") == 0) { /* id, params, fields, jacobian */
         const int k = solver_id(a1);
-        plhs[0] = solve_one(solvers[k], 0, params_of(a2, &solver_grids[k]), flag(a3), flag(a4), a2);
+        const cw_params p = params_of(a2, &solver_grids[k]);
+        plhs[0] = solve_one(solvers[k], 0, p, flag(a3), flag(a4), a2);
+        directions[k] = p.rolling_direction;
+    } else if (strcmp(command, "solver_temperature") == 0) { /* id, params */
+        const int k = solver_id(a1);
+        cw_temperature_params tp;
+        cw_temperature_params_init(&tp);
+        tp.rolling_direction = directions[k]; /* the last solve's, unless given */
+        to_structs(&TPARAMS, a2, &tp, sizeof tp, 1);
+        warn_temperature_units(&tp);
+        plhs[0] = temperature_of(solvers[k], &tp);
+    } else if (strcmp(command, "solver_damage") == 0) { /* id, params */
+        const int k = solver_id(a1);
+        cw_damage_params dp;
+        cw_damage_params_init(&dp);
+        to_structs(&DPARAMS, a2, &dp, sizeof dp, 1);
+        if (dp.k_yield > 0.0)
+            warn_steel("k_yield", dp.k_yield, 1e6, INFINITY, "Pa",
+                       "steel's shear yield stress is 2-6e8 Pa (MPa typed as Pa?)");
+        plhs[0] = damage_of(solvers[k], &dp);
     } else if (strcmp(command, "solver_destroy") == 0) {
         const int k = solver_id(a1);
         cw_solver_destroy(solvers[k]);

@@ -548,6 +548,66 @@ POLICY_MUTANTS = [
 MUTANTS += POLICY_MUTANTS
 # ----------------------------------------------------- end the shared policy
 
+# ----------------------------------------------------- temperature, damage
+# The flash temperature (core/thermal) against the analytic moving-source
+# solution, the Ertz case and CONTACT's example, and at every door; the
+# damage indices (core/damage) against their definitions and hand values.
+SURFACE = [
+    "test_core_temperature", "test_core_damage", "test_capi_surface", "test_fortran_surface",
+    "python_test_surface", "octave_test_surface", "cli_surface_contact_example",
+]
+MUTANTS += [
+    dict(id="thermal-self-term", what="the consistent self-element term is CONTACT's whole element",
+         file="core/thermal/flash_temperature.cpp",
+         old="        r.self_weight = std::sqrt(0.5);", new="        r.self_weight = std::sqrt(2.0);",
+         tests=SURFACE),
+    dict(id="thermal-contact-self-term", what="CONTACT's self-element term taken as the consistent one",
+         file="core/thermal/flash_temperature.cpp",
+         old="        r.self_weight = std::sqrt(2.0);", new="        r.self_weight = std::sqrt(0.5);",
+         tests=SURFACE),
+    dict(id="thermal-contact-temperature", what="T_c weights each body by the other's effusivity",
+         file="core/thermal/flash_temperature.cpp",
+         old="        r.Tc = (b1 * p.rail.T0 + b2 * p.wheel.T0) / (b1 + b2);",
+         new="        r.Tc = (b2 * p.rail.T0 + b1 * p.wheel.T0) / (b1 + b2);", tests=SURFACE),
+    dict(id="thermal-shared-flash", what="the flash part takes body 1's effusivity twice",
+         file="core/thermal/flash_temperature.cpp",
+         old="    const double shared = 2.0 / ((b1 + b2) * std::sqrt(kPi * p.rolling_speed));",
+         new="    const double shared = 2.0 / ((b1 + b1) * std::sqrt(kPi * p.rolling_speed));",
+         tests=SURFACE),
+    dict(id="thermal-kernel-weight", what="the moving-source weights off by a tenth of an element",
+         file="core/thermal/moving_source.cpp",
+         old="    return 1.0 / (std::sqrt(k + 0.5) + std::sqrt(k - 0.5));",
+         new="    return 1.0 / (std::sqrt(k + 0.6) + std::sqrt(k - 0.5));", tests=SURFACE),
+    dict(id="thermal-relaxation", what="the relaxation behind the contact without its root",
+         file="core/thermal/flash_temperature.cpp",
+         old="                const double g = 2.0 / kPi * std::asin(std::sqrt(ratio));",
+         new="                const double g = 2.0 / kPi * std::asin(ratio);", tests=SURFACE),
+    dict(id="thermal-heat-speed", what="the heat from the work map without the rolling speed",
+         file="core/thermal/heat_source.cpp",
+         old="        q[e] = rolling_speed * quotient_if_positive(std::max(0.0, work[e]), area[e]);",
+         new="        q[e] = quotient_if_positive(std::max(0.0, work[e]), area[e]);", tests=SURFACE),
+    dict(id="thermal-row-length", what="a strip's element length scaled by b instead of a",
+         file="capi/capi_surface.cpp",
+         old="                                                        : s.grid().x_length()[j] * c.totals.a;",
+         new="                                                        : s.grid().x_length()[j] * c.totals.b;",
+         tests=SURFACE),
+    dict(id="damage-rcf-floor", what="the RCF index's floor at -0.4",
+         file="core/damage/damage_indices.hpp",
+         old="constexpr double kRcfNoRisk = -0.5; // CONTACT's floor and exterior value",
+         new="constexpr double kRcfNoRisk = -0.4; // CONTACT's floor and exterior value",
+         tests=SURFACE),
+    dict(id="damage-fi-surf", what="FI_surf with k/p0 taken as 2 A k/(2 F_z)",
+         file="core/damage/damage_indices.cpp",
+         old="        t.FI_surf = t.mu_eff - 2.0 * in.contact_area * p.k_yield / (3.0 * in.normal_force);",
+         new="        t.FI_surf = t.mu_eff - 2.0 * in.contact_area * p.k_yield / (2.0 * in.normal_force);",
+         tests=SURFACE),
+    dict(id="damage-wlrm-rise", what="WLRM damage rising over onset..zero instead of onset..peak",
+         file="core/damage/wlrm.cpp",
+         old="    if (T_gamma <= f.peak) return f.peak_damage * (T_gamma - f.onset) / (f.peak - f.onset);",
+         new="    if (T_gamma <= f.peak) return f.peak_damage * (T_gamma - f.onset) / (f.zero - f.onset);",
+         tests=SURFACE),
+]
+# ------------------------------------------------- end temperature, damage
 
 # ---------------------------------------------------------------- progress
 # The progress line of long work (programs/cli/progress.cpp), which the

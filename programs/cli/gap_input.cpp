@@ -13,6 +13,8 @@
 #include "contact_solver.hpp"
 #include "csv_output.hpp"
 #include "gap_plots.hpp"
+#include "surface_outputs.hpp"
+#include "surface_plots.hpp"
 #include "json.hpp"
 #include "output_dir.hpp"
 #include "report.hpp"
@@ -412,14 +414,18 @@ int command_solve_gap(const ParsedOptions& opts)
     if (opts.text("normal-method", "exact") == "semi_hertz") p.normal_method = CW_NORMAL_SEMI_HERTZ;
     for (const std::string& w : plausibility_warnings(g.grid, p, OptionSource(opts), file))
         c.notes.push_back("warning: " + w);
+    const SurfaceRequest surface = read_surface_request(opts, p.rolling_direction);
     const std::string out = opts.text("out", "");
     if (!out.empty()) check_output_target(out, "--out", opts.has("force"));
 
     ContactSolver solver(g.grid);
     const Solution s = solver.solve_full(p);
     const std::vector<cw_patch> patches = solver.patches();
+    const SurfaceOutput post = compute_surface(solver.handle(), surface);
     print_notes(c);
+    for (const std::string& w : surface.warnings) std::fprintf(stderr, "creepwork: %s\n", w.c_str());
     JsonObject json = gap_json(s, patches, file, c.units);
+    add_surface_json(json, post);
     double J[CW_JACOBIAN_LEN] = {};
     const bool jacobian = opts.has("jacobian");
     if (jacobian) {
@@ -440,12 +446,15 @@ int command_solve_gap(const ParsedOptions& opts)
         if (plots)
             write_gap_pictures(dir.path(), s, g.h, patches, file, c.units,
                                read_plot_style(opts, ForceSign::wheel));
+        if (plots && (post.temperature || post.damage))
+            write_surface_pictures(dir.path(), s, post, c.units);
         dir.commit();
     }
     if (opts.text("format", "text") == "json")
         std::cout << json.str(true) << "\n";
     else {
         print_gap_text(std::cout, s, patches, file, c.units);
+        print_surface_text(std::cout, post);
         if (jacobian) print_jacobian_text(std::cout, J);
     }
     return kExitOk;

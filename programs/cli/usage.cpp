@@ -137,6 +137,29 @@ grid:
                     uniform grid
   --nx N --ny N     elements per strip and number of strips (1 .. 1000)
   --box-scale S     uniform grid box [-S a, S a] x [-S b, S b], S in [1, 100]
+surface temperature and damage (SI whatever --units; body 1 is the rail,
+body 2 the wheel):
+  --temperature     also the steady flash temperature of both surfaces from
+                    the frictional power (doc/theory/temperature.md); needs
+                    --speed
+  --speed V         the rolling speed [m/s] of --temperature
+  --T0-1 T --T0-2 T bulk temperature of the rail and of the wheel [degC]
+                    (default 20)
+  --heat-capacity-1 C --heat-capacity-2 C
+                    specific heat capacity [J/(kg K)] (default 450, steel)
+  --conductivity-1 L --conductivity-2 L
+                    thermal conductivity [W/(m K)] (default 50, steel)
+  --density-1 R --density-2 R
+                    density [kg/m^3] (default 7850, steel)
+  --temperature-discretisation consistent|contact
+                    consistent (default): the exact integral of the heat of
+                    each element, from the energy-consistent work map, one
+                    surface temperature in contact; contact: CONTACT's
+                    discretisation (its element's own term runs hot, of
+                    order sqrt(dx)), for comparison with CONTACT
+  --k-yield K       also the damage indices with the surface shear yield
+                    stress K [Pa] (doc/theory/damage.md): the RCF index per
+                    element, FI_surf, T_gamma and the WLRM damage per pass
 units:
   --units si|paper  si (default): m, N, Pa, 1/m, N m, J/m.
                     paper: the units the paper prints -- ft, lbf, 1/ft,
@@ -184,6 +207,12 @@ JSON keys (stable; values in the --units system):
   the simplified models).
   With --model exact, work_paper is the exact frictional power density
   (CONTACT's FRIC_POWER) and K = W_macro over its sum.
+  With --temperature (SI): T_max_1 T_max_2 (degC: each body's hottest
+  contact element) T_max_x T_max_y (m: where the hotter one is)
+  contact_temperature (degC) power (W) temperature_iterations
+  temperature_discretisation. With --k-yield: rcf_index_max rcf_index_x
+  rcf_index_y (m) mu_eff FI_surf T_gamma (N = W_macro) wlrm_damage (per
+  pass).
 
 files with --out:
   fields.csv   one row per element, i fastest (nx*ny rows), the unit in
@@ -205,6 +234,11 @@ files with --out:
   slip_y.png moment.png utilisation.png work_paper.png profile.png
   gnuplot/     the scripts and data behind the pictures
                (cd DIR && gnuplot gnuplot/patch.gp re-draws them)
+  temperature_rail.png temperature_wheel.png
+               with --temperature: each body's surface temperature over the
+               grid in mm, the contact outlined, its maximum ringed
+  rcf_index.png
+               with --k-yield: the RCF index, its maximum ringed
   with --gap, the pictures over x, y of the whole grid (mm; in with --units
   paper; --plot-axes normalised is an error: a gap has no semi-axes):
   patch.png    six panels under the inputs and totals (Fn, Fx, Fy, Mz,

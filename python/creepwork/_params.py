@@ -182,6 +182,8 @@ def _release(copy):
 PARAMS = Keywords("cw_params")
 GRID = Keywords("cw_grid")
 WEAR_PARAMS = Keywords("cw_wear_params")
+TEMPERATURE_PARAMS = Keywords("cw_temperature_params")
+DAMAGE_PARAMS = Keywords("cw_damage_params")
 
 
 def model_default_grid(model):

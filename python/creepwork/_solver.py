@@ -20,6 +20,7 @@ from ._params import PARAMS, grid_record, model_default_grid, require_geometry
 
 if TYPE_CHECKING:
     from ._wear import WearResult
+    from ._surface import DamageResult, TemperatureResult
 
 _MESSAGE_LEN = 512
 #: What params= takes: a dict of cw_params fields or a creepwork.params() record.
@@ -191,8 +192,10 @@ class Solver(Handle):
         lib.cw_result_init(address(self._result))
         self._result_address = address(self._result)
         self._wear = None
+        self._surface = {}
+        self._rolling_direction = 1  # of the last solve: the temperature's default
 
-    # -- life cycle (Handle): close() also frees the wear workspace
+    # -- life cycle (Handle): close() also frees the wear, temperature and damage workspaces
     _destroy = "cw_solver_destroy"
     _last_error = "cw_solver_last_error"
 
@@ -200,6 +203,9 @@ class Solver(Handle):
         if getattr(self, "_wear", None) is not None:
             self._wear.close()
             self._wear = None
+        for part in getattr(self, "_surface", {}).values():
+            part.close()
+        self._surface = {}
 
     @property
     def last_error(self) -> str:
@@ -248,6 +254,7 @@ class Solver(Handle):
                                                   jacobian.size)
         if status != 0:  # the library's message, naming the inputs as typed
             raise _errors.error_for(status, _checks.as_typed(self.last_error, typed))
+        self._rolling_direction = int(rec["rolling_direction"])
         totals = dict(zip(_RESULT_NAMES, self._result.item()[1:]))
         solved = rec.copy() if rec is params_in else rec
         if not fields:
@@ -332,6 +339,25 @@ class Solver(Handle):
         if self._wear is None:
             self._wear = Wear(self)
         return self._wear.compute(self, **keywords)
+
+
+    def temperature(self, **keywords: Any) -> "TemperatureResult":
+        """Both bodies' surface temperatures from this solver's last solve
+        (fields=True): see creepwork.Temperature.compute for the keywords
+        (rolling_speed is needed). Returns a TemperatureResult."""
+        from ._surface import Temperature
+        if "temperature" not in self._surface:
+            self._surface["temperature"] = Temperature(self)
+        return self._surface["temperature"].compute(self, **keywords)
+
+    def damage(self, **keywords: Any) -> "DamageResult":
+        """The damage indices of this solver's last solve (fields=True): see
+        creepwork.Damage.compute for the keywords (k_yield is needed).
+        Returns a DamageResult."""
+        from ._surface import Damage
+        if "damage" not in self._surface:
+            self._surface["damage"] = Damage(self)
+        return self._surface["damage"].compute(self, **keywords)
 
 
 def _grid_for(grid, params_in, keywords):

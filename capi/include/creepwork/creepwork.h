@@ -726,9 +726,11 @@ CW_API int cw_batch_prepare(cw_batch* batch, int model);
 CW_API int cw_solver_solve_jacobian(cw_solver* solver, const cw_params* params, int mode,
                                     cw_result* result, double* jacobian, size_t jacobian_len);
 
-/* Wear laws and wear on a profile grid; one wheel on one rail from the
- * profiles: in these two parts, included here. */
+/* Wear laws and wear on a profile grid; surface temperature and damage
+ * indices; one wheel on one rail from the profiles: in these parts,
+ * included here. */
 #include "creepwork/creepwork_wear.h"
+#include "creepwork/creepwork_surface.h"
 #include "creepwork/creepwork_wheelrail.h"
 
 #ifdef __cplusplus
