@@ -17,6 +17,7 @@
 #include <time.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -70,12 +71,72 @@ double contact_seconds(const std::string& program, const std::string& examples)
     return sec(after.ru_utime) - sec(before.ru_utime) + sec(after.ru_stime) - sec(before.ru_stime);
 }
 
+// A host's loop over one cycle of a hunting wheelset, as
+// examples/rail_wear_hunting drives it (right wheel, UIC60 and S1002, 0.5 mm
+// elements, 60 kN, y = A sin(theta), yaw = A k cos(theta), A = 5 mm,
+// wavelength 15 m, 30 m/s), the vertical force prescribed, `calls` calls per
+// cycle, each starting from the height the last call found (the first
+// cycle not timed). Per call: CPU time [s], evaluations, the largest
+// relative error of Fz.
+struct HuntingCost {
+    double cpu = 0.0, evaluations = 0.0, fz_error = 0.0;
+};
+
+HuntingCost hunting_cycle(const cwtest::Benchmark& b, const wr::PatchContactSettings& set, int calls)
+{
+    constexpr double kPi = 3.14159265358979323846;
+    const double amplitude = 5e-3, k_wave = 2.0 * kPi / 15.0, speed = 30.0, radius = 0.46, load = 60e3;
+    wr::Wheelset ws = b.wheelset;
+    ws.nominal_radius = radius;
+    wr::WheelRailContact c(wr::WheelRailGeometry(b.rail, b.wheel, b.track, ws, wr::Side::right,
+                                                 b.options(0.5, 0.5)),
+                           set);
+    HuntingCost cost;
+    double z = 0.0;
+    for (int cycle = 0; cycle < 2; ++cycle) {
+        double cpu = 0.0, evaluations = 0.0, worst = 0.0;
+        for (int m = 0; m < calls; ++m) {
+            const double theta = 2.0 * kPi * m / calls;
+            wr::WheelsetPosition pos;
+            pos.y = amplitude * std::sin(theta);
+            pos.yaw = amplitude * k_wave * std::cos(theta);
+            pos.z = z;
+            wr::WheelsetVelocity vel;
+            vel.vs = speed;
+            vel.vy = speed * pos.yaw;
+            vel.vyaw = -speed * amplitude * k_wave * k_wave * std::sin(theta);
+            vel.vpitch = -speed / radius;
+            const double c0 = seconds(CLOCK_THREAD_CPUTIME_ID);
+            const wr::WheelRailSolution& sol = c.solve_force(load, pos, vel);
+            cpu += seconds(CLOCK_THREAD_CPUTIME_ID) - c0;
+            evaluations += sol.evaluations;
+            worst = std::max(worst, std::abs(sol.total.fz - load) / load);
+            z = sol.z;
+        }
+        cost = {cpu / calls, evaluations / calls, worst};
+    }
+    return cost;
+}
+
 } // namespace
 
 int main(int argc, char** argv)
 {
-    const int sweeps = argc > 1 ? std::max(1, std::atoi(argv[1])) : 200;
     const cwtest::Benchmark b;
+    if (argc > 2 && std::string(argv[1]) == "--hunting") {
+        // one model's hunting cycle alone (for callgrind): --hunting CALLS [exact]
+        wr::PatchContactSettings set;
+        set.mode = creepwork::SolveMode::forces_only;
+        if (!(argc > 3 && std::string(argv[3]) == "exact")) {
+            set.model = creepwork::ModelKind::fastsim;
+            set.normal_method = creepwork::NormalMethod::semi_hertz;
+        }
+        const HuntingCost h = hunting_cycle(b, set, std::max(1, std::atoi(argv[2])));
+        std::printf("%.1f us per call, %.2f evaluations per call, largest Fz error %.1e\n", 1e6 * h.cpu,
+                    h.evaluations, h.fz_error);
+        return 0;
+    }
+    const int sweeps = argc > 1 ? std::max(1, std::atoi(argv[1])) : 200;
     const auto rows = cwtest::read_rows(cwtest::wheelrail_data("contact_a22_geometry.csv"));
     wr::WheelRailGeometry right = b.geometry(wr::Side::right), left = b.geometry(wr::Side::left);
     std::vector<wr::Region> regions;
@@ -122,6 +183,9 @@ int main(int argc, char** argv)
     // um off the height found before (a host's next time step); Start::given
     // solves at that height (an MBS host's wheelset position).
     enum class Start { zero, near, given };
+    struct Timing {
+        double cpu, wall, evaluations; // per position: [s], [s], geometry evaluations
+    };
     std::vector<double> heights(rows.size(), 0.0);
     // fresh: new objects each sweep, the positions one after the other from
     // a cold start, as CONTACT runs its examples; otherwise one pair of
@@ -131,6 +195,7 @@ int main(int argc, char** argv)
                                      bool fresh) {
         const bool given_height = start == Start::given;
         std::vector<double> pos_cpu, pos_wall;
+        double evaluations = 0.0;
         wr::WheelRailContact kept_r(b.geometry(wr::Side::right), set), kept_l(b.geometry(wr::Side::left), set);
         for (int s = fresh ? 0 : -1; s < force_sweeps; ++s) {
             wr::WheelRailContact fresh_r(b.geometry(wr::Side::right), set), fresh_l(b.geometry(wr::Side::left), set);
@@ -148,12 +213,13 @@ int main(int argc, char** argv)
                 cpu += seconds(CLOCK_THREAD_CPUTIME_ID) - c0;
                 wall += seconds(CLOCK_MONOTONIC) - w0;
                 if (start == Start::zero) heights[k] = sol.z;
+                if (s == 0) evaluations += sol.evaluations;
             }
             if (s < 0) continue; // the warm-up sweep
             pos_cpu.push_back(cpu / static_cast<double>(rows.size()));
             pos_wall.push_back(wall / static_cast<double>(rows.size()));
         }
-        return std::pair<double, double>{median(pos_cpu), median(pos_wall)};
+        return Timing{median(pos_cpu), median(pos_wall), evaluations / static_cast<double>(rows.size())};
     };
     const int force_sweeps = std::max(1, sweeps / 40);
     wr::PatchContactSettings exact; // mu 0.3, G 82 GPa, nu 0.28: the benchmark's; every field
@@ -173,21 +239,32 @@ int main(int argc, char** argv)
                 "(fast model) (CONTACT: one run of its examples mbench_a22_right and _left, output files "
                 "included)\n\n",
                 force_sweeps, 10 * force_sweeps);
-    std::printf("| per wheel position | CPU [ms] | wall [ms] |\n|---|---:|---:|\n");
-    std::printf("| creepwork, exact model per patch, every field | %.2f | %.2f |\n", 1e3 * te.first, 1e3 * te.second);
-    std::printf("| creepwork, fast model per patch, forces | %.3f | %.3f |\n", 1e3 * tf.first, 1e3 * tf.second);
-    std::printf("| creepwork, fast model per patch, every field | %.3f | %.3f |\n", 1e3 * tff.first,
-                1e3 * tff.second);
-    std::printf("| creepwork, fast model per patch, forces, from 1 um off the height (a time step) | %.3f | %.3f |\n",
-                1e3 * tfn.first, 1e3 * tfn.second);
-    std::printf("| creepwork, fast model per patch, forces, height given (one geometry evaluation) | %.3f | %.3f |\n",
-                1e3 * tfh.first, 1e3 * tfh.second);
-    if (argc > 3) {
-        const double t = contact_seconds(argv[2], argv[3]);
-        if (t > 0.0)
-            std::printf("| CONTACT module 1 (%s) | %.2f | |\n", argv[2], 1e3 * t / static_cast<double>(rows.size()));
-        else
-            std::printf("| CONTACT module 1 | could not run %s | |\n", argv[2]);
+    // CONTACT first, so that its ratio can be printed beside each row
+    const double contact = argc > 3 ? contact_seconds(argv[2], argv[3]) / static_cast<double>(rows.size()) : -1.0;
+    std::printf("| per wheel position | CPU [ms] | wall [ms] | evaluations | CONTACT / creepwork |\n"
+                "|---|---:|---:|---:|---:|\n");
+    const auto row = [&](const char* what, const Timing& t) {
+        std::printf("| %s | %.3f | %.3f | %.2f |", what, 1e3 * t.cpu, 1e3 * t.wall, t.evaluations);
+        if (contact > 0.0) std::printf(" %.1f |\n", contact / t.cpu);
+        else std::printf(" |\n");
+    };
+    row("creepwork, exact model per patch, every field", te);
+    row("creepwork, fast model per patch, forces", tf);
+    row("creepwork, fast model per patch, every field", tff);
+    row("creepwork, fast model per patch, forces, from 1 um off the height (a time step)", tfn);
+    row("creepwork, fast model per patch, forces, height given (one geometry evaluation)", tfh);
+    if (contact > 0.0)
+        std::printf("| CONTACT module 1 (%s) | %.2f | | | |\n", argv[2], 1e3 * contact);
+    else if (argc > 3)
+        std::printf("| CONTACT module 1 | could not run %s | | | |\n", argv[2]);
+    std::printf("\nA hunting wheelset (examples/rail_wear_hunting: right wheel, 60 kN, A = 5 mm, wavelength "
+                "15 m, 30 m/s, 0.5 mm elements), the vertical force prescribed, each call from the height of "
+                "the last; mean over the second cycle\n\n");
+    std::printf("| fast model, forces, calls per cycle | CPU per call [us] | evaluations per call | "
+                "largest Fz error [-] |\n|---|---:|---:|---:|\n");
+    for (const int calls : {16, 500}) {
+        const HuntingCost h = hunting_cycle(b, fast, calls);
+        std::printf("| %d | %.1f | %.2f | %.1e |\n", calls, 1e6 * h.cpu, h.evaluations, h.fz_error);
     }
     std::printf("\n");
     char date[32];

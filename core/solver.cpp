@@ -68,12 +68,7 @@ ModelKind first_model(const GridSpec& grid)
 
 } // namespace
 
-Solver::Solver(const GridSpec& grid)
-    : grid_(std::make_shared<const ContactGrid>(grid)), isa_(best_kernel_isa())
-{
-    last_ = &model(first_model(grid));
-    one_patch_.reserve(1);
-}
+Solver::Solver(const GridSpec& grid) : Solver(grid, first_model(grid)) {}
 
 ContactModel* Solver::find(ModelKind kind) const
 {
@@ -91,7 +86,18 @@ ContactModel& Solver::model(ModelKind kind)
     return *models_.back().second;
 }
 
-void Solver::prepare(ModelKind kind) { model(kind); }
+Solver::Solver(const GridSpec& grid, ModelKind first)
+    : grid_(std::make_shared<const ContactGrid>(grid)), isa_(best_kernel_isa())
+{
+    last_ = &model(first);
+    one_patch_.reserve(1);
+}
+
+void Solver::prepare(ModelKind kind)
+{
+    ContactModel& m = model(kind);
+    if (auto* f = dynamic_cast<GapFastsimModel*>(&m)) f->prepare_half_space();
+}
 
 const ExactModel* Solver::exact_model() const
 {
@@ -101,6 +107,14 @@ const ExactModel* Solver::exact_model() const
 const GapExactModel* Solver::gap_model() const
 {
     return dynamic_cast<const GapExactModel*>(find(ModelKind::exact));
+}
+
+double Solver::normal_force_by_approach()
+{
+    if (!solved_) return 0.0;
+    if (auto* m = dynamic_cast<GapExactModel*>(last_)) return m->normal_force_by_approach();
+    if (auto* m = dynamic_cast<GapFastsimModel*>(last_)) return m->normal_force_by_approach();
+    return 0.0;
 }
 
 CalibratedModel& Solver::calibrated_model()

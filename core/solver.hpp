@@ -30,6 +30,12 @@ public:
     // contact shape (gap/gap_fastsim_model.hpp) on first use or by
     // prepare(). The calibrated model does not run on a gap grid.
     explicit Solver(const GridSpec& grid);
+    // The same with the model `first` as the grid's first model (made with
+    // the solver, which so checks the grid); FASTSIM on a gap grid then
+    // makes its exact normal problem's memory on its first solve by the
+    // exact method, or by prepare(). Throws Error(invalid_input) when the
+    // model cannot run on this grid.
+    Solver(const GridSpec& grid, ModelKind first);
 
     // Throws Error naming a bad input; the previous solution is then marked
     // absent. A model other than the grid's first is made on its first solve
@@ -54,6 +60,11 @@ public:
     const ExactModel* exact_model() const;
     // On a gap grid: the exact model of any contact shape.
     const GapExactModel* gap_model() const;
+    // On a gap grid: dN/d(approach) [N/m] at the last solve's normal
+    // solution, by its normal method (normal/gap_normal.hpp); 0 on the
+    // ellipse's grids or without a solution. Throws Error(not_converged)
+    // if the exact normal problem's linear solve fails.
+    double normal_force_by_approach();
     // The separate patches of the last solve: on a gap grid each 4-connected
     // patch, otherwise the contact as one patch (none when nothing touches).
     const std::vector<PatchTotals>& patches() const;

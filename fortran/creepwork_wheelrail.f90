@@ -118,8 +118,9 @@ contains
    end subroutine wheelrail_create_points
 
    ! One wheelset position: with Fz [N] present the height is found for that
-   ! vertical force (starting from motion%z), otherwise motion%z is the
-   ! height. An uninitialised totals (struct_size 0) is initialised first.
+   ! vertical force (starting from motion%z, or extrapolated from the last
+   ! two heights when motion%z is the last one found: cw_wheelrail_solve),
+   ! otherwise motion%z is the height. An uninitialised totals (struct_size 0) is initialised first.
    subroutine wheelrail_solve(self, motion, totals, Fz, stat, errmsg)
       class(cw_wheelrail_type), intent(inout) :: self
       type(cw_wheelrail_motion), intent(in) :: motion

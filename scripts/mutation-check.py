@@ -482,6 +482,30 @@ WHEELRAIL_MUTANTS += [
          new="    in.model = ModelKind::exact;",
          tests=WHEELRAIL_PATCH),
 ]
+# The force balance on the wheelset height (core/wheelrail/vertical_force.cpp,
+# patch_contact.cpp) and the normal methods' derivative by the approach it
+# steps with: evaluations per call, pinned on a sphere-like contact and on a
+# drifting host through the class and the C ABI.
+BALANCE = [
+    "test_wheelrail_vertical", "test_wheelrail_forces", "test_wheelrail_capi", "test_nonhertz_parts",
+]
+WHEELRAIL_MUTANTS += [
+    dict(id="wheelrail-newton-slope", what="the force balance without the patches' derivative (regula falsi)",
+         file="core/wheelrail/vertical_force.cpp",
+         old="        if (e.fz > 0.0 && e.slope > 0.0) p.slope = 2.0 / 3.0 * e.slope / std::cbrt(e.fz);",
+         new="        if (e.fz > 0.0 && e.slope > 0.0) p.slope = 0.0;",
+         tests=BALANCE, require=["test_wheelrail_vertical", "test_wheelrail_forces"]),
+    dict(id="semi-hertz-force-by-depth", what="the semi-Hertzian dN/dd sums P^2 p instead of P^2 / p",
+         file="core/normal/semi_hertz_derivative.cpp",
+         old="            if (p[i] > 0.0) total += 0.5 * P2 / p[i];",
+         new="            if (p[i] > 0.0) total += 0.5 * P2 * p[i];",
+         tests=BALANCE, require=["test_nonhertz_parts", "test_wheelrail_forces"]),
+    dict(id="wheelrail-drift-extrapolation", what="a drifting host's start not extrapolated",
+         file="core/wheelrail/patch_contact.cpp",
+         old="start.z = 2.0 * balance_z_[1] - balance_z_[0];",
+         new="start.z = balance_z_[1];",
+         tests=BALANCE, require=["test_wheelrail_forces", "test_wheelrail_capi"]),
+]
 MUTANTS += WHEELRAIL_MUTANTS
 # ------------------------------------------------------------ end wheel/rail
 

@@ -18,9 +18,22 @@ constexpr double kPi = 3.14159265358979323846;
 
 } // namespace
 
+namespace {
+
+// FASTSIM solves mostly by the semi-Hertzian method: the exact normal
+// problem's memory is made on its first use (or by prepare_half_space).
+GapNormalOptions fastsim_normal_options()
+{
+    GapNormalOptions o;
+    o.half_space_on_first_use = true;
+    return o;
+}
+
+} // namespace
+
 GapFastsimModel::GapFastsimModel(const GridSpec& grid)
     : grid_(checked_gap_grid(grid)), nx_(grid.nx), ny_(grid.ny),
-      normal_(grid, GapNormalOptions{}), labels_(grid.nx, grid.ny)
+      normal_(grid, fastsim_normal_options()), labels_(grid.nx, grid.ny)
 {
     const size_t n = static_cast<size_t>(nx_) * ny_;
     for (auto* v : {&paper_, &consistent_, &dp_dN_}) v->assign(n, 0.0);

@@ -24,18 +24,18 @@ constexpr int kNormalMaxIterations = 500;
 // the derivative is then as good as the solution it linearises.
 constexpr double kLoadDerivativeTolerance = 1e-12;
 constexpr int kLoadDerivativeMaxIterations = 1000;
+// dN/d(approach) is a Newton slope (the wheel/rail force balance): sum z to
+// about 1e-6 is plenty, and the linear solve then takes about half the
+// iterations of the load derivative's.
+constexpr double kForceByApproachTolerance = 1e-6;
 
 } // namespace
 
 GapNormal::GapNormal(const GridSpec& grid, GapNormalOptions options)
     : options_(options), nx_(grid.nx), ny_(grid.ny), dx_(grid.dx), dy_(grid.dy),
-      semi_hertz_(grid.nx, grid.ny), conv_(grid.nx, grid.ny, ConvolutionUse::normal),
-      half_space_(grid.nx, grid.ny)
+      semi_hertz_(grid.nx, grid.ny)
 {
-    if (options_.box_products) {
-        box_ = std::make_unique<GridConvolution>(grid.nx, grid.ny, ConvolutionUse::normal);
-        half_space_.set_box_convolution(box_.get());
-    }
+    if (!options_.half_space_on_first_use) prepare_half_space();
     const size_t n = static_cast<size_t>(nx_) * ny_;
     for (auto* v : {&gap_, &gap_in_dx_, &start_, &pressure_}) v->assign(n, 0.0);
     if (options_.warm) held_gap_.assign(n, 0.0);
@@ -43,18 +43,32 @@ GapNormal::GapNormal(const GridSpec& grid, GapNormalOptions options)
 
 GapNormal::~GapNormal() = default;
 
+void GapNormal::prepare_half_space()
+{
+    if (conv_) return;
+    conv_ = std::make_unique<GridConvolution>(nx_, ny_, ConvolutionUse::normal);
+    conv_->set_kernel_isa(isa_);
+    half_space_ = std::make_unique<NormalProblem>(nx_, ny_);
+    if (options_.box_products) {
+        box_ = std::make_unique<GridConvolution>(nx_, ny_, ConvolutionUse::normal);
+        box_->set_kernel_isa(isa_);
+        half_space_->set_box_convolution(box_.get());
+    }
+}
+
 void GapNormal::set_kernel_isa(KernelIsa isa)
 {
     isa_ = isa;
     semi_hertz_.set_kernel_isa(isa);
-    conv_.set_kernel_isa(isa);
+    if (conv_) conv_->set_kernel_isa(isa);
     if (box_) box_->set_kernel_isa(isa);
 }
 
 const GridConvolution& GapNormal::half_space(double nu)
 {
-    conv_.set_coefficients(dy_ / dx_, nu);
-    return conv_;
+    GridConvolution& c = conv();
+    c.set_coefficients(dy_ / dx_, nu);
+    return c;
 }
 
 const GapNormalInfo& GapNormal::solve(const ContactInput& in, bool warm)
@@ -67,6 +81,7 @@ const GapNormalInfo& GapNormal::solve(const ContactInput& in, bool warm)
     }
     held_.valid = false;
     method_ = in.normal_method;
+    G_ = in.G;
     const bool exact = in.normal_method == NormalMethod::exact;
     const bool force = in.normal_load == NormalLoad::force;
     const double* gap = rolling_gap(in);
@@ -122,7 +137,7 @@ double GapNormal::solve_half_space(const ContactInput& in, const double* gap)
     for (size_t k = 0; k < n; ++k) gap_in_dx_[k] = gap[k] / dx_;
     const double value = force ? in.normal_force / (in.G * dx_ * dy_) : in.approach / dx_;
     const NormalSolveInfo ni =
-        half_space_.solve_gap(conv_, gap_in_dx_.data(), start_.data(), force, value,
+        half_space_problem().solve_gap(conv(), gap_in_dx_.data(), start_.data(), force, value,
                               kNormalTolerance, kNormalMaxIterations, kNormalFirstTolerance);
     info_.normal_iterations = ni.iterations;
     if (!ni.converged)
@@ -130,9 +145,9 @@ double GapNormal::solve_half_space(const ContactInput& in, const double* gap)
                     "the normal problem on the gap did not converge (residual " +
                         number_text(ni.residual) + " after " + std::to_string(ni.iterations) +
                         " iterations)");
-    const std::vector<double>& q = half_space_.pressure();
+    const std::vector<double>& q = half_space_->pressure();
     for (size_t k = 0; k < n; ++k) pressure_[k] = q[k] * in.G;
-    return half_space_.approach() * dx_;
+    return half_space_->approach() * dx_;
 }
 
 bool GapNormal::holds(const ContactInput& in) const
@@ -189,14 +204,26 @@ void GapNormal::load_derivative(double* dp_dN)
         semi_hertz_.load_derivative(pressure_.data(), dp_dN);
         return;
     }
-    if (!half_space_.load_derivative(conv_, kLoadDerivativeTolerance,
+    if (!half_space_problem().load_derivative(conv(), kLoadDerivativeTolerance,
                                      kLoadDerivativeMaxIterations))
         throw Error(ErrorKind::not_converged,
                     "the normal problem's derivative by the normal force did not converge");
     // dq / d(sum q) with sum q = N / (G dx dy) and p = G q: dp/dN = share / (dx dy).
-    const std::vector<double>& share = half_space_.pressure_by_load();
+    const std::vector<double>& share = half_space_->pressure_by_load();
     const double inv_area = 1.0 / (dx_ * dy_);
     for (size_t k = 0; k < share.size(); ++k) dp_dN[k] = share[k] * inv_area;
+}
+
+double GapNormal::force_by_approach()
+{
+    if (method_ == NormalMethod::semi_hertz) return semi_hertz_.force_by_depth(pressure_.data());
+    if (std::none_of(pressure_.begin(), pressure_.end(), [](double p) { return p > 0.0; })) return 0.0;
+    if (!half_space_problem().load_derivative(conv(), kForceByApproachTolerance, kLoadDerivativeMaxIterations))
+        throw Error(ErrorKind::not_converged,
+                    "the normal problem's derivative by the approach did not converge");
+    // q = p / G and the approach in units of dx: dN/d(approach) = G dx dy
+    // d(sum q) / (dx d(pen)).
+    return G_ * dy_ * half_space_->load_by_approach();
 }
 
 } // namespace creepwork

@@ -46,6 +46,12 @@ struct GapNormalOptions {
     // whole grid. The two differ in the last bits: each model keeps the one
     // its results were pinned with (the exact model: the box).
     bool box_products = false;
+    // The half-space problem's memory (its FFTs' and conjugate gradients')
+    // is made on the first solve by the exact method, or by
+    // prepare_half_space(), instead of here: a model that solves by the
+    // semi-Hertzian method alone is made in a fraction of the time (a
+    // wheel/rail patch's grid changes with every trial height).
+    bool half_space_on_first_use = false;
 };
 
 // What the last solve did.
@@ -91,10 +97,18 @@ public:
     // semi-Hertzian method's closed form. Throws Error(not_converged) if the
     // half-space problem's linear solve fails.
     void load_derivative(double* dp_dN);
+    // dN/d(approach) [N/m] at the last solution, the normal method's own:
+    // the semi-Hertzian method's closed form, or the half-space problem
+    // linearised at its contact set (one linear solve, as load_derivative);
+    // 0 without contact. Throws Error(not_converged) if that solve fails.
+    double force_by_approach();
 
     // The half-space coefficients of this grid's cells for nu (computed when
     // nu changes): the tangential problem copies them.
     const GridConvolution& half_space(double nu);
+    // Makes the half-space problem's memory now (if not yet made), so that
+    // no solve allocates.
+    void prepare_half_space();
     // The kernels' ISA: the semi-Hertzian method's, the FFTs', the gap
     // check's (every ISA gives the same bits).
     void set_kernel_isa(KernelIsa isa);
@@ -107,18 +121,30 @@ private:
     // The half-space problem from start_; returns the approach [m].
     double solve_half_space(const ContactInput& in, const double* gap);
     void hold(const ContactInput& in);
+    GridConvolution& conv()
+    {
+        if (!conv_) prepare_half_space();
+        return *conv_;
+    }
+    NormalProblem& half_space_problem()
+    {
+        if (!half_space_) prepare_half_space();
+        return *half_space_;
+    }
 
     GapNormalOptions options_;
     int nx_, ny_;
     double dx_, dy_;
     KernelIsa isa_ = best_kernel_isa();
     SemiHertz semi_hertz_;
-    GridConvolution conv_;                // the half-space problem's, whole grid
-    std::unique_ptr<GridConvolution> box_; // its products on the contact set's box
-    NormalProblem half_space_;
+    // The half-space problem (made by prepare_half_space).
+    std::unique_ptr<GridConvolution> conv_; // its products on the whole grid
+    std::unique_ptr<GridConvolution> box_;  // its products on the contact set's box
+    std::unique_ptr<NormalProblem> half_space_;
     // Per element, rolling frame [i + nx j].
     std::vector<double> gap_, gap_in_dx_, start_, pressure_;
     double approach_ = 0;
+    double G_ = 0; // [Pa] of the last solve
     NormalMethod method_ = NormalMethod::exact; // of the last solve
     // pressure_ is zero outside the semi-Hertzian method's last extents (it
     // holds that method's pressure, or zeros), so it clears only those.

@@ -287,6 +287,7 @@ namespace creepwork {
 bool NormalProblem::load_derivative(GridConvolution& conv, double tolerance, int max_iterations)
 {
     std::fill(dq_.begin(), dq_.end(), 0.0);
+    load_by_approach_ = 0.0;
     if (n_contact_ == 0 || n_active_ == 0) return false;
     if (box_) fit_box(conv);
     // Preconditioned conjugate gradients for A_CC z = 1 from z = 0, in dq_
@@ -338,6 +339,7 @@ bool NormalProblem::load_derivative(GridConvolution& conv, double tolerance, int
         return false;
     }
     for (int k = 0; k < n_; ++k) z[k] /= sum;
+    load_by_approach_ = sum;
     return true;
 }
 

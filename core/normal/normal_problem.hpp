@@ -85,6 +85,9 @@ public:
     // not converge in max_iterations (or there is no contact).
     bool load_derivative(GridConvolution& conv, double tolerance, int max_iterations);
     const std::vector<double>& pressure_by_load() const { return dq_; }
+    // Of the last successful load_derivative: sum z = d(sum q) / d(pen), the
+    // total's derivative by the approach (in units of dx).
+    double load_by_approach() const { return load_by_approach_; }
     // The approach in units of p0 dx / G.
     double approach() const { return pen_; }
     int n_contact() const { return n_contact_; }
@@ -113,6 +116,7 @@ private:
     int n_active_ = 0;
     int n_contact_ = 0;
     double pen_ = 0.0;
+    double load_by_approach_ = 0.0;
 };
 
 } // namespace creepwork

@@ -60,6 +60,10 @@ public:
     // dp/dN [1/m^2] per element [i + nx j] (semi_hertz_derivative.cpp),
     // from that solve's pressure [Pa].
     void load_derivative(const double* pressure, double* dp_dN) const;
+    // dN/dd [N/m] of the last solve: the force's derivative by the depth (so
+    // by the approach), from that solve's pressure [Pa]
+    // (semi_hertz_derivative.cpp).
+    double force_by_depth(const double* pressure) const;
     // The copy of the roots' kernel to run (every copy gives the same bits).
     void set_kernel_isa(KernelIsa isa) { isa_ = isa; }
     // The elements lo .. hi of row j outside which the last solve's

@@ -24,6 +24,7 @@ PatchForces HertzPatchEstimate::operator()(const ContactPatch& p) const
     const double e_star = G / (1.0 - nu);
     const double unit = hertz_from_curvatures(A, B, 1.0, e_star).approach; // approach at 1 N
     f.fn = std::pow(p.approach / unit, 1.5);                               // approach ~ N^(2/3)
+    f.fn_by_approach = 1.5 * f.fn / p.approach;
     return f;
 }
 

@@ -43,7 +43,7 @@ Solver& PatchContact::solver_for(std::size_t k, int nx, int ny, double dx, doubl
         g.ny = ny;
         g.dx = dx;
         g.dy = dy;
-        it = solvers_.emplace(key, std::make_unique<Solver>(g)).first;
+        it = solvers_.emplace(key, std::make_unique<Solver>(g, settings_.model)).first;
     }
     return *it->second;
 }
@@ -104,6 +104,7 @@ const PatchSolution& PatchContact::solve(const ContactPatch& p, std::size_t k, b
     in.xi_y = eta + phi * x0;
     in.phi = phi;
     Solver& s = solver_for(k, nx, ny, dx, dy);
+    last_solver_ = &s;
     const SolveTotals& t = s.solve(in, forces_only ? SolveMode::forces_only : settings_.mode);
 
     PatchSolution& r = last_;
@@ -153,6 +154,7 @@ const WheelRailSolution& WheelRailContact::solve_position(const WheelsetPosition
                                                           const WheelsetVelocity& velocity)
 {
     geometry_.evaluate(position, velocity);
+    balanced_ = 0; // extrapolate only across consecutive force balances
     collect(1);
     return solution_;
 }
@@ -161,15 +163,26 @@ const WheelRailSolution& WheelRailContact::solve_force(double fz, const Wheelset
                                                        const WheelsetVelocity& velocity,
                                                        const VerticalForceOptions& options)
 {
-    const PatchSolver solver = [this](std::size_t k, const ContactPatch& p) {
+    // The exact normal problem's derivative costs a linear solve (about 15 %
+    // of an exact patch solve): the exact model takes it at the first height
+    // only, for the first Newton step, and secant steps after it
+    // (doc/dev/decisions.md); the fast model's closed form at every height.
+    const bool exact = contact_.settings().normal_method == NormalMethod::exact;
+    int evaluation = -1;
+    const PatchSolver solver = [this, exact, &evaluation](std::size_t k, const ContactPatch& p) {
+        if (k == 0) ++evaluation;
         const PatchSolution& s = contact_.solve(p, k, true);
-        return PatchForces{s.fn, s.fx, s.fs};
+        const bool slope = !exact || evaluation == 0;
+        return PatchForces{s.fn, s.fx, s.fs, slope ? contact_.normal_force_by_approach() : 0.0};
     };
     // The height of the Hertz estimate (geometry only) starts the exact
     // balance near its solution, so that the exact solves stay near the
     // final grid; the fast model costs about what the estimate does and
     // starts from the position given.
+    // A host that passes back the last height drifts: its next height is
+    // extrapolated from the last two (z is smooth in the host's time).
     WheelsetPosition start = position;
+    if (balanced_ >= 2 && position.z == balance_z_[1]) start.z = 2.0 * balance_z_[1] - balance_z_[0];
     if (contact_.settings().model == ModelKind::exact) {
         try {
             const HertzPatchEstimate hertz{contact_.settings().G, contact_.settings().nu};
@@ -179,6 +192,9 @@ const WheelRailSolution& WheelRailContact::solve_force(double fz, const Wheelset
         }
     }
     const VerticalForceSolution v = solve_vertical_position(geometry_, fz, start, velocity, solver, options);
+    balance_z_[0] = balance_z_[1];
+    balance_z_[1] = v.z;
+    ++balanced_;
     // the geometry is left at the solution; its patches solve again from
     // their own last solution (same gap and approach: the normal solution
     // is kept, the tangential one starts warm)

@@ -70,6 +70,9 @@ public:
     // Error naming a bad input or Error(not_converged).
     const PatchSolution& solve(const ContactPatch& patch, std::size_t k = 0, bool forces_only = false);
     const PatchContactSettings& settings() const { return settings_; }
+    // dfn/d(approach) [N/m] of the last patch solved, its normal method's
+    // own (Solver::normal_force_by_approach).
+    double normal_force_by_approach() { return last_solver_ ? last_solver_->normal_force_by_approach() : 0.0; }
     // Solvers made so far (one per grid shape).
     std::size_t solvers() const { return solvers_.size(); }
 
@@ -81,6 +84,7 @@ private:
     std::map<Key, std::unique_ptr<Solver>> solvers_;
     std::vector<double> gap_; // the patch's h with its rows reversed (y = -s)
     PatchSolution last_;
+    Solver* last_solver_ = nullptr;
 };
 
 // The solution of a whole wheel position.
@@ -99,7 +103,10 @@ public:
     // At the given wheelset position (its z is the height).
     const WheelRailSolution& solve_position(const WheelsetPosition& position, const WheelsetVelocity& velocity);
     // With the vertical force on the rail prescribed [N]; position.z is the
-    // first guess of the height.
+    // first guess of the height, unless it is the height the last call
+    // returned (a host passing it back) and the two calls before were force
+    // balances too: the first guess is then extrapolated linearly from the
+    // last two heights.
     const WheelRailSolution& solve_force(double fz, const WheelsetPosition& position,
                                          const WheelsetVelocity& velocity,
                                          const VerticalForceOptions& options = {});
@@ -114,6 +121,8 @@ private:
     WheelRailGeometry geometry_;
     PatchContact contact_;
     WheelRailSolution solution_;
+    int balanced_ = 0;              // force balances solved since the last solve_position
+    double balance_z_[2] = {0, 0};  // the heights of the last two [m]: [1] the last
 };
 
 } // namespace creepwork::wheelrail

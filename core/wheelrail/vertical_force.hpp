@@ -20,6 +20,9 @@ struct PatchForces {
     double fn = 0.0; // [N] normal force on the rail (> 0 pressing it)
     double fx = 0.0; // [N] longitudinal, on the rail
     double fs = 0.0; // [N] lateral in the tangent plane, on the rail
+    // [N/m] d fn / d(approach) at the patch's geometry, the normal method's
+    // own derivative (0: not known; the balance then takes secant steps)
+    double fn_by_approach = 0.0;
 };
 
 // Solves patch k of the geometry's current state (k: its index there).

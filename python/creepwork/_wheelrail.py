@@ -82,7 +82,9 @@ class WheelRail(Handle):
         """One wheelset position (the fields of cw_wheelrail_motion: y, z,
         roll, yaw, pitch, vs, vy, vz, vroll, vyaw, vpitch; default 0). With
         Fz [N] the height z is found for that vertical force on the rail
-        (starting from z), otherwise z is the height. Returns (totals,
+        (starting from z, or extrapolated from the last two heights when z
+        is the last one found: cw_wheelrail_solve), otherwise z is the
+        height. Returns (totals,
         patches): dicts of the fields of cw_wheelrail_totals and, per
         patch, cw_wheelrail_patch."""
         rec = _record("cw_wheelrail_motion", motion, "WheelRail.solve")

@@ -1,7 +1,8 @@
 /* The wheel/rail handle through the public header: the Manchester benchmark
  * from the profile files against CONTACT's printed results, profiles from
  * points against Hertz's theory, the height prescribed against the force
- * prescribed, and every documented error naming its input. */
+ * prescribed, a drifting host's evaluations per call, and every documented
+ * error naming its input. */
 #include <stdarg.h>
 #include <stddef.h>
 #include <setjmp.h>
@@ -76,6 +77,42 @@ static void benchmark_against_contact(void** state)
     assert_int_equal(h.evaluations, 1);
     assert_close(h.Fz, t.Fz, 1e-6, 0);
     assert_close(h.Fy, t.Fy, 0, 1e-6 * t.Fz);
+    cw_wheelrail_destroy(w);
+}
+
+/* A host whose wheelset drifts, through the C ABI (the fast model, right
+ * wheel, 10 kN, y from 2 mm in steps of 20 um, each call from the height
+ * of the last): Fz to 1e-6 and, from the third call on, at most three
+ * geometry evaluations reported per call (the start extrapolated from the
+ * last two heights, then Newton's steps; test_wheelrail_forces has the
+ * same property on the C++ class). */
+static void drifting_host(void** state)
+{
+    (void)state;
+    cw_wheelrail_params p;
+    cw_wheelrail_params_init(&p);
+    p.side = CW_WHEELRAIL_RIGHT;
+    p.model = CW_MODEL_FASTSIM;
+    p.normal_method = CW_NORMAL_SEMI_HERTZ;
+    cw_wheelrail* w = NULL;
+    char msg[256];
+    assert_int_equal(cw_wheelrail_create(&p, rail_file, wheel_file, &w, msg, sizeof msg), CW_OK);
+    cw_wheelrail_motion m;
+    cw_wheelrail_motion_init(&m);
+    m.vs = 20.0;
+    m.vpitch = -20.0 / 0.46;
+    int worst = 0;
+    for (int k = 0; k < 8; ++k) {
+        m.y = 2e-3 + 20e-6 * k;
+        cw_wheelrail_totals t;
+        cw_wheelrail_totals_init(&t);
+        assert_int_equal(cw_wheelrail_solve(w, &m, CW_WHEELRAIL_FORCE, 1e4, &t), CW_OK);
+        assert_close(t.Fz, 1e4, 1e-6, 0);
+        assert_true(t.evaluations >= 1);
+        if (k >= 2 && t.evaluations > worst) worst = t.evaluations;
+        m.z = t.z;
+    }
+    assert_true(worst <= 3);
     cw_wheelrail_destroy(w);
 }
 
@@ -449,6 +486,7 @@ int main(int argc, char** argv)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(benchmark_against_contact),
         cmocka_unit_test(points_against_hertz),
+        cmocka_unit_test(drifting_host),
         cmocka_unit_test(errors_name_the_input),
         cmocka_unit_test(check_finds_a_misplaced_wheel),
         cmocka_unit_test(check_finds_unit_mistakes_and_flange_climbs),

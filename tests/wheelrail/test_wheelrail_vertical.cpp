@@ -1,6 +1,7 @@
 // The vertical position for a prescribed vertical force: the forces of a
 // patch in track coordinates against CONTACT's totals, the solve with a
-// linear spring (exact answer), the Hertz estimate against Hertz's sphere
+// linear spring (exact answer), Newton's step with the patch's derivative
+// on a sphere-like contact, the Hertz estimate against Hertz's sphere
 // and against CONTACT's non-Hertzian normal forces, and the benchmark's
 // wheelset heights.
 #include <cmath>
@@ -103,6 +104,37 @@ void test_hertz_estimate_sphere(void**)
     assert_close(hertz(st.patches[0]).fn, n, 1e-4, 0);
 }
 
+// Newton's method with the patch's own derivative: with the Hertz estimate
+// on the sphere-like contact above, Fz = K z^(3/2) (the approach is z_ws,
+// the estimate's dfn/d(approach) = 3/2 fn / approach), so g(z) = Fz^(2/3) -
+// fz^(2/3) is linear in z and one Newton step from any height in contact
+// lands on the answer: two evaluations. Without the derivative (fn_by_
+// approach = 0), from below, the search steps down once more.
+void test_newton_step_on_a_sphere(void**)
+{
+    const double r = 0.46;
+    const Cylinder cyl(r, r);
+    wr::WheelRailGeometry g = cyl.geometry();
+    const wr::HertzPatchEstimate hertz;
+    const double e_star = hertz.G / (1.0 - hertz.nu), load = 60e3;
+    const double z = std::pow(load / (4.0 / 3.0 * e_star * std::sqrt(r)), 2.0 / 3.0); // Johnson eq. 4.23
+    const wr::PatchSolver without = [&](std::size_t, const wr::ContactPatch& q) {
+        wr::PatchForces f = hertz(q);
+        f.fn_by_approach = 0.0;
+        return f;
+    };
+    for (double start : {0.9 * z, 0.99 * z, 1.3 * z}) {
+        wr::WheelsetPosition p;
+        p.z = start;
+        const wr::VerticalForceSolution s = wr::solve_vertical_position(g, load, p, {}, hertz);
+        assert_close(s.fz, load, 1e-6, 0);
+        assert_close(s.z, z, 1e-4, 0); // the estimate's N to 1e-4 (test_hertz_estimate_sphere)
+        assert_int_equal(s.evaluations, 2);
+        // from above, regula falsi on the linear g is exact too
+        if (start < z) assert_int_equal(wr::solve_vertical_position(g, load, p, {}, without).evaluations, 3);
+    }
+}
+
 // The benchmark at CONTACT's wheelset heights: the Hertz estimate of the
 // normal force against CONTACT's non-Hertzian one, within 4 % wherever the
 // patch is Hertz-like (all positions but the wide conformal patches at
@@ -183,6 +215,7 @@ int main(int argc, char** argv)
         cmocka_unit_test(test_track_forces_against_contact),
         cmocka_unit_test(test_spring_solve),
         cmocka_unit_test(test_hertz_estimate_sphere),
+        cmocka_unit_test(test_newton_step_on_a_sphere),
         cmocka_unit_test(test_benchmark_heights),
         cmocka_unit_test(test_errors),
     };

@@ -156,7 +156,11 @@ CW_API int cw_wheelrail_destroy(cw_wheelrail* wheelrail); /* NULL: no-op */
 
 /* Solves one wheelset position: load CW_WHEELRAIL_FORCE finds the height z
  * at which the vertical force on the rail is Fz [N] in (0, 1e7), starting
- * from motion->z; CW_WHEELRAIL_HEIGHT takes motion->z (Fz unused). Every
+ * from motion->z (when motion->z is the height the last call found and
+ * the calls since the last CW_WHEELRAIL_HEIGHT were at least two force
+ * balances, from the height extrapolated linearly from the last two: a
+ * host passing the height back drifts); CW_WHEELRAIL_HEIGHT takes
+ * motion->z (Fz unused). Every
  * patch is solved with its approach the rigid overlap at that height.
  * Errors: CW_ERR_NULL_POINTER, CW_ERR_STRUCT_SIZE, CW_ERR_UNKNOWN_OPTION
  * (load), CW_ERR_INVALID_INPUT, CW_ERR_NOT_CONVERGED, CW_ERR_NUMERIC; on
