@@ -16,9 +16,12 @@ namespace creepwork {
 namespace {
 
 // Newton's method on prescribed forces: steps at most, and the linear
-// solves of its derivatives (relative residual).
+// solves of its derivatives (relative residual): a derivative to four digits
+// costs the force's convergence nothing measurable (each step's force
+// error shrinks by ~1e-4 at least) and takes a third of the products of one
+// to ten.
 constexpr int kMaxForceIterations = 30;
-constexpr double kTangentTolerance = 1e-10;
+constexpr double kTangentTolerance = 1e-4;
 constexpr char kMagic[8] = {'c', 'w', 't', 'r', 'a', 'n', 's', '1'};
 
 void check_finite(const char* name, double v)
@@ -42,8 +45,7 @@ TransientContact::TransientContact(const GridSpec& grid, const ContactInput& in)
            in.gap && in.gap_len >= static_cast<size_t>(n_) ? in.gap + n_ : nullptr),
       in_(own_gap(in, gap_)), normal_(grid, GapNormalOptions{false, true}),
       conv_(grid.nx, grid.ny, ConvolutionUse::tangential),
-      solver_(grid.nx, grid.ny, kKrylovDimension), q0_(n_), aq0_(n_), bq0_(n_), base_(n_),
-      dw_(n_), tangent_{std::vector<Complex>(n_), std::vector<Complex>(n_)}
+      solver_(grid.nx, grid.ny, kKrylovDimension)
 {
     ContactInput check = in;
     check.xi_x = check.xi_y = check.phi = 0.0;
@@ -66,9 +68,15 @@ TransientContact::TransientContact(const GridSpec& grid, const ContactInput& in)
                     "transient rolling needs normal_force > 0 or an approach with contact");
     T_ = in.mu * p_ref_;
     U_ = T_ * dx_ / in.G;
-    std::vector<double>& g = solver_.bound();
-    for (int k = 0; k < n_; ++k) g[k] = p[k] / p_ref_;
+    box_ = cell_box(nx_, ny_, [&](std::size_t k) { return p[k] > 0.0; });
+    bn_ = box_.nx * box_.ny;
+    conv_.set_size(box_.nx, box_.ny);
     conv_.copy_coefficients(normal_.half_space(in.nu));
+    solver_.set_size(box_.nx, box_.ny);
+    std::vector<double>& g = solver_.bound();
+    for (int k = 0; k < bn_; ++k) g[k] = p[cell(k)] / p_ref_;
+    for (auto* v : {&q0_, &aq0_, &bq0_, &base_, &dw_, &tangent_[0], &tangent_[1]})
+        v->assign(bn_, Complex(0.0, 0.0));
     start_zero();
 }
 
@@ -132,11 +140,11 @@ void TransientContact::set_slip(const double c[3], double dq, bool steady)
     const double offset = steady ? spin_offset_ * dx_ : spin_offset_ * dq;
     const double ux = c[0] * length / U_, uy = c[1] * length / U_, th = c[2] * length / U_;
     std::vector<Complex>& w = solver_.rigid_slip();
-    for (int j = 0; j < ny_; ++j) {
-        const double y = y0_ + j * dy_;
-        for (int i = 0; i < nx_; ++i) {
-            const int k = i + nx_ * j;
-            const double x = x0_ + i * dx_ + offset;
+    for (int j = 0; j < box_.ny; ++j) {
+        const double y = y0_ + (box_.j0 + j) * dy_;
+        for (int i = 0; i < box_.nx; ++i) {
+            const int k = i + box_.nx * j;
+            const double x = x0_ + (box_.i0 + i) * dx_ + offset;
             w[k] = Complex(ux - th * y, uy + th * x) + base_[k];
         }
     }
@@ -148,7 +156,7 @@ const TransientStepResult& TransientContact::step(const TransientStepInput& s)
     trial_valid_ = false;
     // The committed state's share: -A q0 + d B q0.
     const double d = std::min(s.dq / dx_, 1.0);
-    for (int k = 0; k < n_; ++k) base_[k] = d * bq0_[k] - aq0_[k];
+    for (int k = 0; k < bn_; ++k) base_[k] = d * bq0_[k] - aq0_[k];
     solver_.set_operator(SlipOperator::shift);
     solver_.traction() = q0_;
     return solve(s, false);
@@ -195,7 +203,7 @@ const TransientStepResult& TransientContact::solve(const TransientStepInput& s, 
         if (unknowns == 0) break;
         const std::vector<Complex>& q = solver_.traction();
         double f[2] = {0.0, 0.0};
-        for (int k = 0; k < n_; ++k) {
+        for (int k = 0; k < bn_; ++k) {
             f[0] += comp[0] == 0 ? q[k].real() : q[k].imag();
             f[1] += q[k].imag();
         }
@@ -217,7 +225,7 @@ const TransientStepResult& TransientContact::solve(const TransientStepInput& s, 
             tangent_[u] = solver_.tangent(conv_, dw_, kTangentTolerance,
                                           kMaxJacobianIterations);
             double sx = 0.0, sy = 0.0;
-            for (int k = 0; k < n_; ++k) {
+            for (int k = 0; k < bn_; ++k) {
                 sx += tangent_[u][k].real();
                 sy += tangent_[u][k].imag();
             }
@@ -244,7 +252,7 @@ const TransientStepResult& TransientContact::solve(const TransientStepInput& s, 
         std::vector<Complex>& qn = solver_.traction();
         for (int u = 0; u < unknowns; ++u) {
             c[comp[u]] += dc[u];
-            for (int k = 0; k < n_; ++k) qn[k] += dc[u] * tangent_[u][k];
+            for (int k = 0; k < bn_; ++k) qn[k] += dc[u] * tangent_[u][k];
         }
     }
     totals(c, ti);
@@ -266,11 +274,11 @@ void TransientContact::totals(const double c[3], const SteadyRollingInfo& ti)
     double fx = 0.0, fy = 0.0, mz = 0.0, w = 0.0;
     TransientStepResult& r = result_;
     r = TransientStepResult{};
-    for (int j = 0; j < ny_; ++j) {
-        const double y = y0_ + j * dy_;
-        for (int i = 0; i < nx_; ++i) {
-            const int k = i + nx_ * j;
-            const double x = x0_ + i * dx_;
+    for (int j = 0; j < box_.ny; ++j) {
+        const double y = y0_ + (box_.j0 + j) * dy_;
+        for (int i = 0; i < box_.nx; ++i) {
+            const int k = i + box_.nx * j;
+            const double x = x0_ + (box_.i0 + i) * dx_;
             fx += q[k].real();
             fy += q[k].imag();
             mz += x * q[k].imag() - y * q[k].real();
@@ -383,9 +391,11 @@ void TransientContact::restore(const unsigned char* bytes, std::size_t n)
 void TransientContact::copy_traction(double* px, double* py) const
 {
     const std::vector<Complex>& q = solver_.traction();
-    for (int k = 0; k < n_; ++k) {
-        if (px) px[k] = T_ * q[k].real();
-        if (py) py[k] = T_ * q[k].imag();
+    if (px) std::fill(px, px + n_, 0.0);
+    if (py) std::fill(py, py + n_, 0.0);
+    for (int k = 0; k < bn_; ++k) {
+        if (px) px[cell(k)] = T_ * q[k].real();
+        if (py) py[cell(k)] = T_ * q[k].imag();
     }
 }
 
@@ -393,17 +403,20 @@ void TransientContact::copy_slip(double* sx, double* sy) const
 {
     const std::vector<Complex>& s = solver_.slip();
     const std::vector<signed char>& state = solver_.state();
-    for (int k = 0; k < n_; ++k) {
-        const bool in = state[k] != 0;
-        if (sx) sx[k] = in ? U_ * s[k].real() : 0.0;
-        if (sy) sy[k] = in ? U_ * s[k].imag() : 0.0;
+    if (sx) std::fill(sx, sx + n_, 0.0);
+    if (sy) std::fill(sy, sy + n_, 0.0);
+    for (int k = 0; k < bn_; ++k) {
+        if (state[k] == 0) continue;
+        if (sx) sx[cell(k)] = U_ * s[k].real();
+        if (sy) sy[cell(k)] = U_ * s[k].imag();
     }
 }
 
 void TransientContact::copy_state(int* out) const
 {
     const std::vector<signed char>& state = solver_.state();
-    for (int k = 0; k < n_; ++k) out[k] = state[k];
+    std::fill(out, out + n_, 0);
+    for (int k = 0; k < bn_; ++k) out[cell(k)] = state[k];
 }
 
 void TransientContact::copy_pressure(double* out) const

@@ -29,6 +29,10 @@
 // Newton's method on the force, with the derivative of the converged
 // discrete problem (SteadyRolling::tangent).
 //
+// The problem runs on the smallest box of the grid that holds the contact
+// (the tractions vanish outside; the same discrete problem with smaller
+// FFTs), as the steady model on a gap grid does.
+//
 // Frame: the leading edge at +x (rolling towards +x); positions from the
 // grid's origin; forces on the wheel (body 1) as in the steady models.
 #pragma once
@@ -39,6 +43,7 @@
 
 #include "contact/params.hpp"
 #include "exact/steady_rolling.hpp"
+#include "halfspace/cell_box.hpp"
 #include "halfspace/grid_convolution.hpp"
 #include "normal/gap_normal.hpp"
 
@@ -124,6 +129,12 @@ private:
 
     int nx_, ny_, n_;
     double x0_, y0_, dx_, dy_;
+    CellBox box_; // of the contact; every field below is on it
+    int bn_ = 0;
+    std::size_t cell(int k) const // box element k -> grid element
+    {
+        return box_.i0 + k % box_.nx + static_cast<std::size_t>(nx_) * (box_.j0 + k / box_.nx);
+    }
     std::vector<double> gap_;
     ContactInput in_;
     GapNormal normal_;
