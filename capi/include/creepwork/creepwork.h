@@ -635,9 +635,10 @@ CW_API int cw_solver_solve_jacobian(cw_solver* solver, const cw_params* params, 
                                     cw_result* result, double* jacobian, size_t jacobian_len);
 
 /* Wear laws and wear on a profile grid; one wheel on one rail from the
- * profiles: in these two parts, included here. */
+ * profiles; transient rolling: in these three parts, included here. */
 #include "creepwork/creepwork_wear.h"
 #include "creepwork/creepwork_wheelrail.h"
+#include "creepwork/creepwork_transient.h"
 
 #ifdef __cplusplus
 } /* extern "C" */
