@@ -204,36 +204,38 @@ int cw_transient_rewind(cw_transient* transient)
     return CW_OK;
 }
 
-int cw_transient_state_size(const cw_transient* transient, size_t* size)
+int cw_transient_state_size(const cw_transient* transient, size_t* words)
 {
-    if (!transient || !size) return CW_ERR_NULL_POINTER;
+    if (!transient || !words) return CW_ERR_NULL_POINTER;
     return guarded(&transient->last_error, [&] {
-        *size = transient->contact.save().size();
+        *words = transient->contact.save().size() / sizeof(uint64_t);
         return CW_OK;
     });
 }
 
-int cw_transient_save(const cw_transient* transient, void* out, size_t len)
+int cw_transient_save(const cw_transient* transient, uint64_t* out, size_t len)
 {
     if (!transient) return CW_ERR_NULL_POINTER;
     return guarded(&transient->last_error, [&] {
         require(out, "out");
         const std::vector<unsigned char> bytes = transient->contact.save();
-        if (len < bytes.size())
-            fail(CW_ERR_BUFFER_TOO_SMALL, "len = " + std::to_string(len) + " is below the state's " +
-                                              std::to_string(bytes.size()) +
-                                              " bytes (cw_transient_state_size)");
+        const size_t words = bytes.size() / sizeof(uint64_t); // save() gives whole words
+        if (len < words)
+            fail(CW_ERR_BUFFER_TOO_SMALL, "len = " + std::to_string(len) +
+                                              " is below the state's " + std::to_string(words) +
+                                              " words (cw_transient_state_size)");
         std::memcpy(out, bytes.data(), bytes.size());
         return CW_OK;
     });
 }
 
-int cw_transient_restore(cw_transient* transient, const void* bytes, size_t len)
+int cw_transient_restore(cw_transient* transient, const uint64_t* state, size_t len)
 {
     if (!transient) return CW_ERR_NULL_POINTER;
     return guarded(&transient->last_error, [&] {
-        require(bytes, "bytes");
-        transient->contact.restore(static_cast<const unsigned char*>(bytes), len);
+        require(state, "state");
+        transient->contact.restore(reinterpret_cast<const unsigned char*>(state),
+                                   len * sizeof(uint64_t));
         transient->has_fields = false;
         return CW_OK;
     });

@@ -98,7 +98,8 @@ public:
     // Drops the last trial (the committed state stays).
     void rewind() { trial_valid_ = false; }
 
-    // The committed state as bytes, and back. restore() throws
+    // The committed state as bytes (a whole number of 8-byte words), and
+    // back. restore() throws
     // Error(invalid_input) for bytes of another contact or grid, or not of
     // save().
     std::vector<unsigned char> save() const;

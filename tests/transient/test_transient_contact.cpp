@@ -43,7 +43,8 @@ TransientStepInput force_step(double dq, double fx_over_mu_n, const cwtest::Tran
 
 // catt_to_cart.inp: the Cattaneo shift to Fx = -0.657 mu N (case 1), then
 // 56 steps of dq = dx at that force (cases 2 ... 57), each printed digit of
-// the shift [mm] and the creepages as CONTACT prints them (%.3E).
+// the shift [mm], the creepages and the frictional work as CONTACT prints
+// them (%.3E), and its element division (adhesion, slip) per case.
 void catt_to_cart_history(void**)
 {
     const cwtest::CsvTable ref =
@@ -52,7 +53,7 @@ void catt_to_cart_history(void**)
     cwtest::TransientCase c = cwtest::catt_to_cart();
     TransientContact tc(c.grid, c.input);
     int mismatches = 0;
-    double max_rel = 0.0;
+    double max_rel = 0.0, max_division = 0.0, max_fric = 0.0;
     for (size_t r = 0; r < ref.rows.size(); ++r) {
         const bool shift = ref.text(r, "kind") == "shift";
         const TransientStepResult& res = tc.step(force_step(shift ? 0.0 : c.grid.dx, -0.657, c));
@@ -65,13 +66,30 @@ void catt_to_cart_history(void**)
             std::printf("case %s: %s, CONTACT %s\n", ref.text(r, "case").c_str(), got.c_str(),
                         want.c_str());
         }
+        // The element division, and the frictional work: CONTACT prints the
+        // shift's work [N m] and a step's power [N m/s] at V = 1000 mm/s (dt =
+        // dq / V = 2.5e-4 s), negative.
+        const double adh = ref.number(r, "n_adhesion"), slip = ref.number(r, "n_slip");
+        max_division = std::max({max_division, std::fabs(res.n_adhesion - adh),
+                                 std::fabs(res.n_slip - slip)});
+        const double fric = -res.W_step / (shift ? 1.0 : 2.5e-4);
+        max_fric = std::max(max_fric, std::fabs(fric / ref.number(r, "fric") - 1.0));
+        if (cwtest::printed(fric) != cwtest::printed(ref.number(r, "fric"))) {
+            ++mismatches;
+            std::printf("case %s: frictional work %s, CONTACT %s\n", ref.text(r, "case").c_str(),
+                        cwtest::printed(fric).c_str(), cwtest::printed(ref.number(r, "fric")).c_str());
+        }
         // The force is met.
         assert_true(std::fabs(res.Fx + 0.657 * c.input.mu * c.input.normal_force) <=
                     1e-8 * c.input.mu * c.input.normal_force);
     }
     std::printf("catt_to_cart: %d of 57 printed values differ; largest relative difference %.2e\n",
                 mismatches, max_rel);
+    std::printf("largest difference of adhesion or slip elements %.0f; frictional work / power "
+                "largest relative difference %.2e\n",
+                max_division, max_fric);
     assert_int_equal(mismatches, 0);
+    assert_true(max_division == 0.0);
 }
 
 // cattaneo.inp: the shift at Fx = -7/8 mu N from zero tractions is 8.155e-3

@@ -22,8 +22,8 @@
  * the last trial the state; cw_transient_rewind drops it. A trial depends
  * only on the committed state and its inputs: repeated, it gives the same
  * bits. cw_transient_save / cw_transient_restore give and take the
- * committed state as bytes (this library build's layout), for a host's
- * checkpoints. */
+ * committed state as an array of 64-bit words (this library build's
+ * layout), for a host's checkpoints. */
 
 typedef struct cw_transient cw_transient;
 
@@ -106,17 +106,19 @@ CW_API int cw_transient_commit(cw_transient* transient);
 /* Drops the last trial; the committed state stays. Errors: CW_ERR_NULL_POINTER. */
 CW_API int cw_transient_rewind(cw_transient* transient);
 
-/* The length in bytes of a saved state into *size. Errors: CW_ERR_NULL_POINTER. */
-CW_API int cw_transient_state_size(const cw_transient* transient, size_t* size);
+/* The length of a saved state in 64-bit words into *words. Errors:
+ * CW_ERR_NULL_POINTER. */
+CW_API int cw_transient_state_size(const cw_transient* transient, size_t* words);
 
-/* Writes the committed state to out (len >= cw_transient_state_size).
- * Errors: CW_ERR_NULL_POINTER, CW_ERR_BUFFER_TOO_SMALL. */
-CW_API int cw_transient_save(const cw_transient* transient, void* out, size_t len);
+/* Writes the committed state to out (len >= cw_transient_state_size
+ * words). Errors: CW_ERR_NULL_POINTER, CW_ERR_BUFFER_TOO_SMALL. */
+CW_API int cw_transient_save(const cw_transient* transient, uint64_t* out, size_t len);
 
-/* Makes a saved state the committed state (and drops any trial). Errors:
- * CW_ERR_NULL_POINTER, CW_ERR_INVALID_INPUT (bytes not saved by a handle
- * of the same grid, load and friction). On error the handle is unchanged. */
-CW_API int cw_transient_restore(cw_transient* transient, const void* bytes, size_t len);
+/* Makes a saved state (len words) the committed state and drops any trial.
+ * Errors: CW_ERR_NULL_POINTER, CW_ERR_INVALID_INPUT (words not saved by a
+ * handle of the same grid, load and friction). On error the handle is
+ * unchanged. */
+CW_API int cw_transient_restore(cw_transient* transient, const uint64_t* state, size_t len);
 
 /* Copies a field of the last step (or steady start) at [i + j*nx]:
  * CW_FIELD_X, CW_FIELD_Y, CW_FIELD_PZ, CW_FIELD_PX, CW_FIELD_PY, and
