@@ -212,10 +212,12 @@ int command_transient(int argc, char** argv, int first)
                             cw_transient_last_error(h.t));
     }
     const bool json = o.text("format", "text") == "json";
+    // Printed when every step succeeded: a refusal prints only its line.
+    std::ostringstream out;
     if (!json)
-        std::cout << "# step  line  dq_m  xi_x  xi_y  phi  Fx  Fy  Mz  n_adhesion  n_slip  W_step\n";
+        out << "# step  line  dq_m  xi_x  xi_y  phi  Fx  Fy  Mz  n_adhesion  n_slip  W_step\n";
     else
-        std::cout << "[\n";
+        out << "[\n";
     for (size_t k = 0; k < rows.size(); ++k) {
         cw_transient_result r;
         cw_transient_result_init(&r);
@@ -225,16 +227,17 @@ int command_transient(int argc, char** argv, int first)
                             cw_transient_last_error(h.t));
         cw_transient_commit(h.t);
         if (json) {
-            std::cout << "  " << step_json(r, rows[k].line).str() << (k + 1 < rows.size() ? ",\n" : "\n");
+            out << "  " << step_json(r, rows[k].line).str() << (k + 1 < rows.size() ? ",\n" : "\n");
         } else {
-            std::cout << k + 1 << "  " << rows[k].line << "  " << round_trip_text(rows[k].input.dq);
+            out << k + 1 << "  " << rows[k].line << "  " << round_trip_text(rows[k].input.dq);
             for (double v : {r.xi_x, r.xi_y, r.phi, r.Fx, r.Fy, r.Mz})
-                std::cout << "  " << round_trip_text(v);
-            std::cout << "  " << r.n_adhesion << "  " << r.n_slip << "  "
+                out << "  " << round_trip_text(v);
+            out << "  " << r.n_adhesion << "  " << r.n_slip << "  "
                       << round_trip_text(r.W_step) << "\n";
         }
     }
-    if (json) std::cout << "]\n";
+    if (json) out << "]\n";
+    std::cout << out.str();
     return kExitOk;
 }
 
