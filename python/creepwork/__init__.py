@@ -46,6 +46,7 @@ from ._batch import Batch, ManyResult, solve_many
 from ._wear import (DEPTH_KINDS, WEAR_FIELDS, Accumulator, Strips, Wear, WearProfile,
                     WearResult, wear_profile_update)
 from ._wheelrail import WheelRail
+from ._transient import TRANSIENT_FIELDS, Transient
 from . import plot
 from ._helpers import (Flexibilities, Hertz, KalkerCoefficients, fastsim_normalised, hertz,
                        kalker_coefficients, kalker_flexibilities, status_string, version,
@@ -62,7 +63,8 @@ __version__ = "%d.%d.%d" % (_CONSTANTS["CW_VERSION_MAJOR"], _CONSTANTS["CW_VERSI
 __all__ = (["solve", "jacobian", "params", "Solver", "Result", "Profile", "FIELDS",
             "JACOBIAN_ROWS", "JACOBIAN_COLUMNS", "solve_many", "Batch", "ManyResult", "Wear",
             "WearResult", "WearProfile", "Strips", "WEAR_FIELDS", "DEPTH_KINDS",
-            "wear_profile_update", "Accumulator", "WheelRail", "kalker_coefficients",
+            "wear_profile_update", "Accumulator", "WheelRail", "Transient", "TRANSIENT_FIELDS",
+            "kalker_coefficients",
             "kalker_flexibilities", "hertz", "fastsim_normalised", "KalkerCoefficients",
             "Flexibilities", "Hertz", "version", "version_number", "status_string", "Error",
             "UnitWarning", "DTYPES", "LIBRARY_PATH"] + EXCEPTION_NAMES + list(_CONSTANTS))
