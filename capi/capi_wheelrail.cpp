@@ -60,7 +60,8 @@ void check_params(const cw_wheelrail_params& p)
         {"flange_back_distance", p.flange_back_distance}, {"flange_back_position", p.flange_back_position},
         {"nominal_radius", p.nominal_radius}, {"dx", p.dx}, {"ds", p.ds}, {"a_sep", p.a_sep},
         {"d_sep", p.d_sep}, {"d_comb", p.d_comb}, {"mu", p.mu}, {"G", p.G}, {"nu", p.nu},
-        {"tolerance", p.tolerance}, {"profile_unit", p.profile_unit}};
+        {"tolerance", p.tolerance}, {"profile_unit", p.profile_unit},
+        {"rail_y_offset", p.rail_y_offset}, {"wheel_y_offset", p.wheel_y_offset}};
     for (const auto& [name, v] : all) require_finite((std::string("params->") + name).c_str(), v);
     if (p.model != CW_MODEL_EXACT && p.model != CW_MODEL_FASTSIM)
         fail(CW_ERR_UNKNOWN_OPTION, "params->model = " + std::to_string(p.model) +
@@ -77,6 +78,14 @@ void check_params(const cw_wheelrail_params& p)
     if (!(p.nominal_radius > 0.05 && p.nominal_radius < 5.0))
         fail(CW_ERR_INVALID_INPUT, "params->nominal_radius = " + creepwork::number_text(p.nominal_radius) +
                                        " must lie in (0.05, 5) m (a radius in mm?)");
+    for (const auto& [name, v] : {std::pair<const char*, double>{"rail_y_offset", p.rail_y_offset},
+                                  {"wheel_y_offset", p.wheel_y_offset}})
+        if (!(std::fabs(v) <= 1.0))
+            fail(CW_ERR_INVALID_INPUT, std::string("params->") + name + " = " +
+                                           creepwork::number_text(v) + " must lie within +-1 m");
+    if (p.mirror_wheel != 0 && p.mirror_wheel != 1)
+        fail(CW_ERR_INVALID_INPUT, "params->mirror_wheel = " + std::to_string(p.mirror_wheel) +
+                                       " must be 0 or 1");
     if (!(p.profile_unit >= 0.0 && p.profile_unit <= 1.0))
         fail(CW_ERR_INVALID_INPUT, "params->profile_unit = " + creepwork::number_text(p.profile_unit) +
                                        " must lie in [0, 1] m per unit");
@@ -118,6 +127,27 @@ wr::WheelRailContact make_contact(const cw_wheelrail_params& p, const wr::Profil
     return wr::WheelRailContact(wr::WheelRailGeometry(rail, wheel, t, w, side, o), c);
 }
 
+// The handle, with what cw_wheelrail_check reads of the parameters.
+cw_wheelrail* make_handle(const cw_wheelrail_params& p, const wr::Profile& rail,
+                          const wr::Profile& wheel)
+{
+    auto* w = new cw_wheelrail(make_contact(p, rail, wheel));
+    w->inputs.mu = p.mu;
+    w->inputs.G = p.G;
+    return w;
+}
+
+// The reading options of one profile: the unit, and the offset and mirror
+// that bring its origin and direction to this module's.
+wr::ProfileReadOptions read_options(const cw_wheelrail_params& p, wr::ProfileKind kind)
+{
+    wr::ProfileReadOptions opt;
+    opt.length_unit = p.profile_unit;
+    opt.y_offset = kind == wr::ProfileKind::rail ? p.rail_y_offset : p.wheel_y_offset;
+    opt.mirror_y = kind == wr::ProfileKind::wheel && p.mirror_wheel == 1;
+    return opt;
+}
+
 cw_wheelrail_params read_params(const cw_wheelrail_params* params)
 {
     const cw_wheelrail_params p =
@@ -129,7 +159,7 @@ cw_wheelrail_params read_params(const cw_wheelrail_params* params)
 // Points as a table in the profile readers' format: their ordering,
 // mirroring and checks apply, and errors name the point.
 wr::Profile profile_of_points(const double* y, const double* z, size_t n, wr::ProfileKind kind,
-                              const char* name, double unit)
+                              const char* name, const cw_wheelrail_params& p)
 {
     require(y, (std::string(name) + "_y").c_str());
     require(z, (std::string(name) + "_z").c_str());
@@ -143,8 +173,8 @@ wr::Profile profile_of_points(const double* y, const double* z, size_t n, wr::Pr
         table << y[k] << ' ' << z[k] << '\n';
     }
     std::istringstream in(table.str());
-    wr::ProfileReadOptions opt;
-    opt.length_unit = unit > 0.0 ? unit : 1.0;
+    wr::ProfileReadOptions opt = read_options(p, kind);
+    if (!(opt.length_unit > 0.0)) opt.length_unit = 1.0;
     return wr::read_profile(in, kind, wr::ProfileFormat::table, std::string(name) + " points", opt);
 }
 
@@ -206,11 +236,11 @@ int cw_wheelrail_create(const cw_wheelrail_params* params, const char* rail_file
         require(rail_file, "rail_file");
         require(wheel_file, "wheel_file");
         const cw_wheelrail_params p = read_params(params);
-        wr::ProfileReadOptions opt;
-        opt.length_unit = p.profile_unit;
-        const wr::Profile rail = wr::read_profile_file(rail_file, wr::ProfileKind::rail, opt);
-        const wr::Profile wheel = wr::read_profile_file(wheel_file, wr::ProfileKind::wheel, opt);
-        *wheelrail = new cw_wheelrail(make_contact(p, rail, wheel));
+        const wr::Profile rail =
+            wr::read_profile_file(rail_file, wr::ProfileKind::rail, read_options(p, wr::ProfileKind::rail));
+        const wr::Profile wheel = wr::read_profile_file(wheel_file, wr::ProfileKind::wheel,
+                                                        read_options(p, wr::ProfileKind::wheel));
+        *wheelrail = make_handle(p, rail, wheel);
         return CW_OK;
     });
 }
@@ -223,11 +253,9 @@ int cw_wheelrail_create_points(const cw_wheelrail_params* params, const double* 
         require(wheelrail, "wheelrail");
         *wheelrail = nullptr;
         const cw_wheelrail_params p = read_params(params);
-        const wr::Profile rail = profile_of_points(rail_y, rail_z, rail_n, wr::ProfileKind::rail, "rail",
-                                                   p.profile_unit);
-        const wr::Profile wheel = profile_of_points(wheel_y, wheel_z, wheel_n, wr::ProfileKind::wheel, "wheel",
-                                                    p.profile_unit);
-        *wheelrail = new cw_wheelrail(make_contact(p, rail, wheel));
+        const wr::Profile rail = profile_of_points(rail_y, rail_z, rail_n, wr::ProfileKind::rail, "rail", p);
+        const wr::Profile wheel = profile_of_points(wheel_y, wheel_z, wheel_n, wr::ProfileKind::wheel, "wheel", p);
+        *wheelrail = make_handle(p, rail, wheel);
         return CW_OK;
     });
 }
@@ -248,6 +276,14 @@ int cw_wheelrail_solve(cw_wheelrail* wheelrail, const cw_wheelrail_motion* motio
         require(totals, "totals");
         require_result_size(totals, "cw_wheelrail_totals_init");
         const cw_wheelrail_motion m = read_struct(motion, default_motion(), "motion");
+        wr::WheelRailInputs& checked = wheelrail->inputs;
+        checked.has_motion = true;
+        checked.solved = false;
+        checked.position = {m.y, m.z, m.roll, m.yaw, m.pitch};
+        checked.vs = m.vs;
+        checked.vpitch = m.vpitch;
+        checked.force_given = load == CW_WHEELRAIL_FORCE;
+        checked.Fz = Fz;
         const std::pair<const char*, double> all[] = {
             {"motion->y", m.y}, {"motion->z", m.z}, {"motion->roll", m.roll}, {"motion->yaw", m.yaw},
             {"motion->pitch", m.pitch}, {"motion->vs", m.vs}, {"motion->vy", m.vy}, {"motion->vz", m.vz},
@@ -288,6 +324,8 @@ int cw_wheelrail_solve(cw_wheelrail* wheelrail, const cw_wheelrail_motion* motio
             check_finite_out("patch force", p.fn + p.fx + p.fs + p.mn + p.p_max);
         write_struct(totals, t);
         wheelrail->solved = true;
+        checked.solved = true;
+        checked.z = s.z;
         return CW_OK;
     });
 }

@@ -8,6 +8,7 @@
 
 #include "capi_internal.hpp"
 #include "wheelrail/patch_contact.hpp"
+#include "wheelrail/placement_checks.hpp"
 
 namespace wr = creepwork::wheelrail;
 
@@ -15,6 +16,9 @@ struct cw_wheelrail {
     explicit cw_wheelrail(wr::WheelRailContact c) : contact(std::move(c)) {}
     wr::WheelRailContact contact;
     bool solved = false;
+    // What cw_wheelrail_check reads besides the geometry: the parameters and
+    // the last solve's motion, load and height.
+    wr::WheelRailInputs inputs;
     // Views of the patch solvers handed out by cw_wheelrail_patch_solver,
     // one per solver (the solvers live as long as the handle); made on
     // first request, also through a const handle.

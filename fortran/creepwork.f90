@@ -6,18 +6,23 @@
 ! header creepwork/creepwork.h, which is the whole contract:
 !
 !   * the C structs as bind(C) derived types cw_grid, cw_params, cw_result,
-!     cw_accumulation, cw_wear_params, cw_wear_result, cw_wear_profile_totals
-!     (struct_size first; fill them with cw_grid_init etc.), and every status
+!     cw_accumulation, cw_wear_params, cw_wear_result, cw_wear_profile_totals,
+!     cw_temperature_params, cw_temperature_result, cw_damage_params,
+!     cw_damage_result (struct_size first; fill them with cw_grid_init etc.), and every status
 !     code and #define of the header as a named constant -- both generated
 !     from the header at build time (creepwork_types, in creepwork_c.f90);
 !   * free procedures (creepwork_functions.f90): versions, cw_status_string,
 !     the _init procedures, Kalker's coefficients and flexibilities, Hertz,
-!     Kalker's normalised FASTSIM, the wear-profile update;
+!     Kalker's normalised FASTSIM, the wear-profile update; and the policy
+!     every door shares (creepwork_checks.f90): cw_params_check (inputs that
+!     look like a unit mistake, or left at their placeholders), cw_check_text,
+!     cw_grid_init_model (a model's default grid), cw_input_name;
 !   * wrapper types that own a C handle (one file each, all extending
 !     cw_handle of creepwork_handle.f90): cw_solver_type, cw_batch_type,
 !     cw_accumulator_type, cw_wear_type, cw_wear_profile_type,
-!     cw_wheelrail_type (creepwork_wheelrail.f90, with the _init procedures
-!     of its structs). Each has
+!     cw_temperature_type and cw_damage_type (creepwork_surface.f90, with
+!     the _init procedures of their structs), cw_wheelrail_type
+!     (creepwork_wheelrail.f90, with the _init procedures of its structs). Each has
 !     create, an explicit, idempotent destroy, is_created, last_error and
 !     noun (its name in messages: 'solver', ...); the final procedure is only
 !     a safety net (gfortran 12 does not finalize reliably) and copying a
@@ -56,10 +61,15 @@ module creepwork
                                   cw_wear_profile_totals_init, cw_kalker_coefficients, &
                                   cw_kalker_flexibilities, cw_hertz_solve, cw_fastsim_normalised, &
                                   cw_wear_profile_update
+   use creepwork_checks, only: cw_check_init, cw_params_check, cw_check_text, cw_grid_init_model, &
+                               cw_input_name
    use creepwork_solver, only: cw_solver_type
    use creepwork_batch, only: cw_batch_type
    use creepwork_accumulator, only: cw_accumulator_type
    use creepwork_wear, only: cw_wear_type, cw_wear_profile_type
+   use creepwork_surface, only: cw_temperature_type, cw_damage_type, cw_temperature_params_init, &
+                                cw_temperature_result_init, cw_damage_params_init, &
+                                cw_damage_result_init
    use creepwork_wheelrail, only: cw_wheelrail_type, cw_wheelrail_params_init, &
                                   cw_wheelrail_motion_init, cw_wheelrail_totals_init, &
                                   cw_wheelrail_patch_init

@@ -10,7 +10,8 @@
 ! checks that every interface is wrapped by module creepwork.
 
 module creepwork_types
-   use, intrinsic :: iso_c_binding, only: c_int, c_size_t, c_double, c_int64_t, c_ptr, c_null_ptr
+   use, intrinsic :: iso_c_binding, only: c_int, c_size_t, c_double, c_int64_t, c_char, c_null_char, &
+                                          c_ptr, c_null_ptr
    implicit none
    private
 

@@ -28,6 +28,7 @@ module creepwork_handle
    implicit none
    private
    public :: outcome, make_outcome, buffer_outcome, set_errmsg, deliver, c_text, integer_text
+   public :: buffer_text, c_chars
    public :: message_capacity, make_grid, int_or, point_at
    public :: cw_handle, adopt, handle_of, grid_of, created, created_map, status_outcome
 
@@ -151,6 +152,17 @@ contains
          s(i:i) = chars(i)
       end do
    end subroutine c_text
+
+   ! text as a NUL-terminated C string (trailing blanks dropped).
+   function c_chars(text) result(c)
+      character(len=*), intent(in) :: text
+      character(kind=c_char) :: c(len_trim(text) + 1)
+      integer :: i
+      do i = 1, len_trim(text)
+         c(i) = text(i:i)
+      end do
+      c(len_trim(text) + 1) = c_null_char
+   end function c_chars
 
    ! s := the text of a message buffer filled by C, up to its NUL.
    subroutine buffer_text(buffer, s)

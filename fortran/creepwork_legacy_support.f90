@@ -71,17 +71,39 @@ contains
       subnormal = ibits(bits, 52, 11) == 0 .and. ibits(bits, 0, 52) /= 0
    end function subnormal
 
-   ! ierr := CW_OK, or CW_ERR_INVALID_INPUT naming the first subnormal
-   ! value; names holds the arguments' names, blank-separated, in order.
+   ! x cannot be an input of any contact: subnormal, or beyond 1e30 in
+   ! magnitude (tested on the exponent bits: no exception even for NaN).
+   ! The usual cause is a REAL (single precision) actual argument, whose four
+   ! bytes are followed by whatever lies next in memory.
+   elemental logical function garbled(x)
+      real(c_double), intent(in) :: x
+      integer(c_int64_t) :: bits
+      integer :: exponent
+      bits = transfer(x, bits)
+      exponent = ibits(bits, 52, 11)
+      ! 2**100 = 1.27e30; 2047 (NaN, Inf) is left to the library's own message
+      garbled = subnormal(x) .or. (exponent >= 1023 + 100 .and. exponent < 2047)
+   end function garbled
+
+   ! ierr := CW_OK, or CW_ERR_INVALID_INPUT naming the first subnormal or
+   ! huge value (garbled); names holds the arguments' names, blank-separated,
+   ! in order.
    subroutine check_normal(values, names, ierr)
       real(c_double), intent(in) :: values(:)
       character(len=*), intent(in) :: names
       integer(c_int), intent(out) :: ierr
+      integer :: k
       ierr = CW_OK
-      if (.not. any(subnormal(values))) return
-      call remember_error(CW_ERR_INVALID_INPUT, trim(word(names, findloc(subnormal(values), &
-                          .true., dim=1)))//' is a subnormal number (a REAL passed for DOUBLE '// &
-                          'PRECISION?)', ierr)
+      if (.not. any(garbled(values))) return
+      k = findloc(garbled(values), .true., dim=1)
+      if (subnormal(values(k))) then
+         call remember_error(CW_ERR_INVALID_INPUT, trim(word(names, k))//' is a subnormal number '// &
+                             '(a REAL passed for DOUBLE PRECISION? CWTYPE checks the kinds)', ierr)
+      else
+         call remember_error(CW_ERR_INVALID_INPUT, trim(word(names, k))//' = '// &
+                             trim(real_text(values(k)))//' is beyond 1e30, no input of a contact '// &
+                             '(a REAL passed for DOUBLE PRECISION? CWTYPE checks the kinds)', ierr)
+      end if
    end subroutine check_normal
 
    ! With ierr = CW_OK and found (an array holds a subnormal number): ierr

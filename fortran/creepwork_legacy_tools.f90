@@ -286,3 +286,50 @@ subroutine CWTYPE(R, N, IERR)
       call remember('')
    end if
 end subroutine CWTYPE
+
+! The library's plausibility checks of one contact as CWSOLM takes it
+! (cw_params_check, the rules every door prints): NWARN receives how many
+! rules its inputs break, MSG the K-th finding's message (1 <= K <= NWARN;
+! blank otherwise), e.g. "a = 7.2 m is implausible for a wheel-rail
+! contact: semi-axes are 1-20 mm (were millimetres typed as metres?)". The
+! arguments are given explicitly, so the placeholder rule of cw_params_init
+! (a, b, N left at their defaults) does not apply. IERR = 2 for an input no
+! contact has (a subnormal or huge value, as CWSOLM); the checks themselves
+! never fail.
+subroutine CWCHEK(A, B, FN, FMU, G, PNU, XI, ETA, PHI, K, MSG, NWARN, IERR)
+   use, intrinsic :: iso_c_binding, only: c_double, c_int
+   use creepwork, only: cw_grid, cw_check, cw_grid_init, cw_params_check, &
+                        CW_CHECK_DEFAULT_GEOMETRY, CW_OK
+   use creepwork_handle, only: buffer_text
+   use creepwork_legacy_support, only: check_normal, material_params, remember
+   implicit none
+   real(c_double), intent(in) :: A, B, FN, FMU, G, PNU, XI, ETA, PHI
+   integer(c_int), intent(in) :: K
+   character(len=*), intent(out) :: MSG
+   integer(c_int), intent(out) :: NWARN, IERR
+   type(cw_grid) :: grid
+   type(cw_check), allocatable :: checks(:)
+   logical, allocatable :: shown(:)
+   ! A subroutine's deferred-length result, not a function's: gfortran keeps
+   ! a function result's length in static data (tests/fortran, static data).
+   character(len=:), allocatable :: text
+   integer :: i, n
+   MSG = ' '
+   NWARN = 0
+   call check_normal([A, B, FN, FMU, G, PNU, XI, ETA, PHI], 'A B FN FMU G PNU XI ETA PHI', IERR)
+   if (IERR /= CW_OK) return
+   call cw_grid_init(grid)
+   call cw_params_check(grid, [material_params(A, B, FN, FMU, G, PNU, XI, ETA, PHI)], checks)
+   shown = checks%rule /= CW_CHECK_DEFAULT_GEOMETRY
+   NWARN = int(count(shown), c_int)
+   n = 0
+   do i = 1, size(checks)
+      if (.not. shown(i)) cycle
+      n = n + 1
+      if (n == K) then
+         call buffer_text(checks(i)%message, text)
+         MSG = text
+      end if
+   end do
+   call remember('')
+end subroutine CWCHEK

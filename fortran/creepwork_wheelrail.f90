@@ -12,6 +12,7 @@ module creepwork_wheelrail
    use creepwork_capi
    use creepwork_handle
    use creepwork_wear, only: cw_wear_profile_type
+   use creepwork_checks, only: allocate_checks
    implicit none
    private
    public :: cw_wheelrail_params_init, cw_wheelrail_motion_init, cw_wheelrail_totals_init, &
@@ -27,6 +28,7 @@ module creepwork_wheelrail
       procedure :: get_patch_state => wheelrail_get_patch_state
       procedure :: add_wear => wheelrail_add_wear
       procedure :: get_profile => wheelrail_get_profile
+      procedure :: check => wheelrail_check
       procedure, nopass :: noun => wheelrail_noun
    end type cw_wheelrail_type
 
@@ -278,14 +280,31 @@ contains
    end subroutine params_or_default
 
    ! A NUL-terminated copy of text for the C side.
-   function c_chars(text) result(c)
-      character(len=*), intent(in) :: text
-      character(kind=c_char) :: c(len_trim(text) + 1)
-      integer :: i
-      do i = 1, len_trim(text)
-         c(i) = text(i:i)
-      end do
-      c(len_trim(text) + 1) = c_null_char
-   end function c_chars
+   ! The case's inputs and the last solve checked (cw_wheelrail_check):
+   ! checks receives one entry per finding (size 0: none) -- inputs in a
+   ! wrong unit, a patch on the wheel's flange tip, a wheelset height beyond
+   ! 5 mm on a tread contact, a wheel profile whose origin is off -- each
+   ! with its likely cause; cw_check_text(checks(k)%message) to print.
+   subroutine wheelrail_check(self, checks, stat, errmsg)
+      class(cw_wheelrail_type), intent(in) :: self
+      type(cw_check), allocatable, intent(out) :: checks(:)
+      integer, intent(out), optional :: stat
+      character(len=:), allocatable, intent(out), optional :: errmsg
+      type(cw_check) :: none(1)
+      integer(c_size_t) :: found
+      type(outcome) :: o
+      o = created(self)
+      if (o%status == CW_OK) then
+         found = 0
+         o = status_outcome(self, capi_wheelrail_check(handle_of(self), none, 0_c_size_t, found))
+      end if
+      if (o%status == CW_OK) then
+         call allocate_checks(checks, found)
+         if (found > 0) o = status_outcome(self, capi_wheelrail_check(handle_of(self), checks, found, found))
+      end if
+      if (.not. allocated(checks)) allocate (checks(0))
+      if (present(errmsg)) call set_errmsg(o, errmsg)
+      call deliver(o, stat)
+   end subroutine wheelrail_check
 
 end module creepwork_wheelrail

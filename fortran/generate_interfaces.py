@@ -52,9 +52,11 @@ NULLABLE = [
     "cw_solver_get_profile.y", "cw_solver_get_profile.w", "cw_solver_get_profile.parabola",
     "cw_batch_solve.statuses", "cw_wear_compute.result",
     "cw_wear_get_strips.y", "cw_wear_get_strips.width", "cw_wear_get_strips.depth",
-    "cw_wear_get_strips.parabola", "cw_wheelrail_add_wear.result"]
+    "cw_wear_get_strips.parabola", "cw_wheelrail_add_wear.result",
+    "cw_temperature_compute.result", "cw_damage_compute.result"]
 # Struct pointers that are arrays (count elements): bound as type(cw_s) :: x(*).
-STRUCT_ARRAYS = ["cw_batch_solve.params", "cw_batch_solve.results", "cw_solver_get_patches.out"]
+STRUCT_ARRAYS = ["cw_batch_solve.params", "cw_batch_solve.results", "cw_solver_get_patches.out",
+                 "cw_params_check.params", "cw_params_check.out", "cw_wheelrail_check.out"]
 
 SCALARS = {"int": "integer(c_int)", "double": "real(c_double)", "size_t": "integer(c_size_t)",
            "int64_t": "integer(c_int64_t)",
@@ -139,9 +141,14 @@ def types_source(header):
             fields = member.fields
             f0 = fields[0]
             where = "%s: the field '%s'" % (struct.name, ", ".join(f.name for f in fields))
-            if f0.ctype not in SCALARS:
+            if f0.ctype == "char":
+                # char x[N]: N characters of NUL-terminated text (cw_check's input, message).
+                if len(fields) > 1 or f0.pointer or f0.count is None:
+                    raise GeneratorError("%s: only 'char x[N];' text fields are bound" % where)
+                ftype, zero = "character(kind=c_char)", "c_null_char"
+            elif f0.ctype not in SCALARS:
                 raise GeneratorError("%s: no Fortran type for field type '%s'" % (where, f0.ctype))
-            if any(f.pointer for f in fields):
+            elif any(f.pointer for f in fields):
                 if len(fields) > 1 or not f0.const or f0.pointer != 1 or f0.count is not None:
                     raise GeneratorError("%s: only 'const T* x;' pointer fields are bound" % where)
                 ftype, zero = "type(c_ptr)", "c_null_ptr"

@@ -14,12 +14,15 @@
  * [i + j*nx], so the library writes straight into the matrix.
  *
  * Errors: mexErrMsgIdAndTxt with the identifier creepwork:<CW_ERR_ name> and
- * the library's message naming the input. Implausible units warn with the
- * identifier creepwork:implausibleUnits, with the CLI's thresholds
- * (programs/cli/contact_inputs.cpp, plausibility_warnings).
+ * the library's message naming the input (N when the struct names the load
+ * N). a, b and N are required, as at every door (creepwork:missingInput).
+ * A 2-D gap must be nx-by-ny, x along the first dimension. The library's
+ * plausibility checks (cw_params_check: units that look like a mistake)
+ * warn with the identifier creepwork:implausibleUnits.
  *
  * The same source builds as an Octave MEX (mkoctfile --mex) and a MATLAB
  * MEX (mex); it uses only the MEX API both provide. */
+#include <ctype.h>
 #include <math.h>
 #include <stddef.h>
 #include <stdio.h>
@@ -68,12 +71,22 @@ static const field_info params_fields[] = {CW_FIELDS_cw_params(FIELD_ENTRY)};
 static const field_info grid_fields[] = {CW_FIELDS_cw_grid(FIELD_ENTRY)};
 static const field_info result_fields[] = {CW_FIELDS_cw_result(FIELD_ENTRY)};
 static const field_info patch_fields[] = {CW_FIELDS_cw_patch(FIELD_ENTRY)};
+static const field_info tparams_fields[] = {CW_FIELDS_cw_temperature_params(FIELD_ENTRY)};
+static const field_info tresult_fields[] = {CW_FIELDS_cw_temperature_result(FIELD_ENTRY)};
+static const field_info dparams_fields[] = {CW_FIELDS_cw_damage_params(FIELD_ENTRY)};
+static const field_info dresult_fields[] = {CW_FIELDS_cw_damage_result(FIELD_ENTRY)};
 #undef FIELD_ENTRY
 #define COUNT(a) (sizeof(a) / sizeof((a)[0]))
 static const struct_info PARAMS = {"cw_params", params_fields, COUNT(params_fields)};
 static const struct_info GRID = {"cw_grid", grid_fields, COUNT(grid_fields)};
 static const struct_info RESULT = {"cw_result", result_fields, COUNT(result_fields)};
 static const struct_info PATCH = {"cw_patch", patch_fields, COUNT(patch_fields)};
+static const struct_info TPARAMS = {"cw_temperature_params", tparams_fields,
+                                    COUNT(tparams_fields)};
+static const struct_info TRESULT = {"cw_temperature_result", tresult_fields,
+                                    COUNT(tresult_fields)};
+static const struct_info DPARAMS = {"cw_damage_params", dparams_fields, COUNT(dparams_fields)};
+static const struct_info DRESULT = {"cw_damage_result", dresult_fields, COUNT(dresult_fields)};
 
 typedef struct {
     const char* struct_name;
@@ -114,13 +127,22 @@ static void fail_status(int status, const char* detail)
 
 /* ------------------------------------------------------- MATLAB -> C structs */
 
-static const field_info* find_field(const struct_info* s, const char* name)
+static const field_info* find_exact(const struct_info* s, const char* name)
 {
-    if (s == &PARAMS && strcmp(name, "N") == 0) name = "normal_force"; /* the load's symbol */
     for (size_t k = 0; k < s->n_fields; ++k)
         if (strcmp(s->fields[k].name, name) == 0 && strcmp(name, "struct_size") != 0)
             return &s->fields[k];
     return NULL;
+}
+
+/* The field a name gives: its own, or the library's alias (N, spin). */
+static const field_info* find_field(const struct_info* s, const char* name)
+{
+    const field_info* f = find_exact(s, name);
+    char canonical[64];
+    if (!f && cw_input_name(name, canonical, sizeof canonical) == CW_OK)
+        f = find_exact(s, canonical);
+    return f;
 }
 
 static void unknown_field(const struct_info* s, const char* name)
@@ -130,22 +152,29 @@ static void unknown_field(const struct_info* s, const char* name)
         strncat(list, s->fields[k].name, sizeof list - strlen(list) - 1);
         if (k + 1 < s->n_fields) strncat(list, ", ", sizeof list - strlen(list) - 1);
     }
-    FAIL("unknownField", "'%s' is not a field of %s (%s%s)", name, s->struct_name,
-         s == &PARAMS ? "N, " : "", list);
+    /* A field of the other struct: say where it goes. */
+    const char* hint = "";
+    if (s == &PARAMS && find_field(&GRID, name))
+        hint = "; it is a field of the grid: give it in 'grid', struct(...)";
+    else if (s == &GRID && find_field(&PARAMS, name))
+        hint = "; it is a contact's parameter, not a field of the grid";
+    FAIL("unknownField", "'%s' is not a field of %s (%s%s)%s", name, s->struct_name,
+         s == &PARAMS ? "N, " : "", list, hint);
 }
 
 /* The number an enumeration name stands for, e.g. model 'exact'. */
 static double enum_value(const struct_info* s, const field_info* f, const mxArray* v)
 {
-    char name[64];
+    char name[64], canonical[64];
     if (mxGetString(v, name, sizeof name) != 0) name[sizeof name - 1] = '\0';
-    if (strcmp(s->struct_name, "cw_grid") == 0 && strcmp(name, "strips") == 0)
-        strcpy(name, "kalker_strips"); /* the CLI's name */
+    /* the library's spelling: strips, fast, Semi-Hertz ... */
+    if (cw_input_name(name, canonical, sizeof canonical) != CW_OK) strcpy(canonical, name);
     char known[256] = "";
     for (size_t k = 0; k < COUNT(enums); ++k) {
         if (strcmp(enums[k].struct_name, s->struct_name) || strcmp(enums[k].field, f->name))
             continue;
-        if (strcmp(enums[k].name, name) == 0) return enums[k].value;
+        if (strcmp(enums[k].name, name) == 0 || strcmp(enums[k].name, canonical) == 0)
+            return enums[k].value;
         strncat(known, *known ? ", " : "", sizeof known - strlen(known) - 1);
         strncat(known, enums[k].name, sizeof known - strlen(known) - 1);
     }
@@ -315,76 +344,100 @@ static mxArray* from_structs(const struct_info* s, const void* in, size_t size, 
     return out;
 }
 
-/* ------------------------------------------------------- unit plausibility */
+/* -------------------------------------------- the library's policy */
 
-/* The CLI's rules (programs/cli/contact_inputs.cpp, plausibility_warnings):
- * one warning per rule, with how many contacts break it. */
-typedef struct {
-    const char* field;
-    const char* unit;
-    int (*bad)(double v, int flex);
-    const char* why;
-} unit_rule;
-
-static int too_long(double v, int f) { (void)f; return v > 0.1; }
-static int too_short(double v, int f) { (void)f; return v < 1e-4; }
-static int load_high(double v, int f) { (void)f; return v > 1e7; }
-static int load_low(double v, int f) { (void)f; return v > 0.0 && v < 1000.0; }
-static int mu_high(double v, int f) { (void)f; return v > 1.5; }
-static int g_low(double v, int f) { return f == CW_FLEX_FROM_MATERIAL && v < 1e6; }
-static int g_high(double v, int f) { return f == CW_FLEX_FROM_MATERIAL && v > 1e12; }
-static int flex_odd(double v, int f) { return f != CW_FLEX_FROM_MATERIAL && (v > 1e-10 || v < 1e-18); }
-static int creep_high(double v, int f) { (void)f; return fabs(v) > 0.5; }
-static int spin_high(double v, int f) { (void)f; return fabs(v) > 50.0; }
-
-static const char SEMI_HIGH[] = "semi-axes are 1-20 mm (were millimetres typed as metres?)";
-static const char SEMI_LOW[] = "semi-axes are 1-20 mm, not below 0.1 mm";
-static const char FLEX[] =
-    "Kalker's flexibilities of steel contacts are ~5e-14 m/Pa (mm^3/N are 1e-9 m^3/N)";
-static const char CREEP[] = "creepages are ratios, usually below 0.02 (a per cent typed as a ratio?)";
-static const unit_rule unit_rules[] = {
-    {"a", " m", too_long, SEMI_HIGH},
-    {"a", " m", too_short, SEMI_LOW},
-    {"b", " m", too_long, SEMI_HIGH},
-    {"b", " m", too_short, SEMI_LOW},
-    {"normal_force", " N", load_high, "wheel loads are below 1 MN (kN typed as N?)"},
-    {"normal_force", " N", load_low,
-     "wheel loads are 1-500 kN, not below 1 kN (kN typed where N are read?)"},
-    {"mu", "", mu_high, "dry steel on steel is 0.1-0.6"},
-    {"G", " Pa", g_low, "steel is 8.2e10 Pa (a modulus in MPa or N/mm^2 typed as Pa?)"},
-    {"G", " Pa", g_high, "steel is 8.2e10 Pa, no solid exceeds 1e12 Pa"},
-    {"L1", " m/Pa", flex_odd, FLEX},
-    {"L2", " m/Pa", flex_odd, FLEX},
-    {"L3", " m/Pa", flex_odd, FLEX},
-    {"xi_x", "", creep_high, CREEP},
-    {"xi_y", "", creep_high, CREEP},
-    {"phi", " 1/m", spin_high, "spin of wheel-rail contacts stays below ~20 1/m (1/mm typed as 1/m?)"},
-};
-
-static void warn_units(const cw_params* p, size_t count)
+/* The name the user gave the load in the struct: "N" or "normal_force". */
+static const char* load_name(const mxArray* params_in)
 {
-    const field_info* flex = find_field(&PARAMS, "flexibility");
-    for (size_t r = 0; r < COUNT(unit_rules); ++r) {
-        const field_info* f = find_field(&PARAMS, unit_rules[r].field);
-        size_t bad = 0;
-        double first = 0.0;
-        for (size_t c = 0; c < count; ++c) {
-            const double v = load(&p[c], f, 0);
-            if (unit_rules[r].bad(v, (int)load(&p[c], flex, 0)) && bad++ == 0) first = v;
-        }
-        if (!bad) continue;
-        char where[64] = "";
-        if (count > 1) snprintf(where, sizeof where, " (%zu of %zu contacts)", bad, count);
-        mexWarnMsgIdAndTxt("creepwork:implausibleUnits",
-                           "%s = %.10g%s%s is implausible for a wheel-rail contact: %s",
-                           strcmp(f->name, "normal_force") == 0 ? "N" : f->name, first,
-                           unit_rules[r].unit, where, unit_rules[r].why);
+    return params_in && mxIsStruct(params_in) && mxGetFieldNumber(params_in, "N") >= 0
+               ? "N"
+               : "normal_force";
+}
+
+/* message with the load named as the user typed it (in place). */
+static void as_typed(const mxArray* params_in, char* message, size_t len)
+{
+    if (strcmp(load_name(params_in), "N") != 0) return;
+    char out[MESSAGE_LEN] = "";
+    const char* field = "normal_force";
+    const size_t n = strlen(field);
+    for (const char* at = message; *at;) {
+        const char* hit = strstr(at, field);
+        const int word = hit && (hit == message || !(isalnum((unsigned char)hit[-1]) || hit[-1] == '_')) &&
+                         !(isalnum((unsigned char)hit[n]) || hit[n] == '_');
+        const size_t keep = hit ? (size_t)(hit - at) + (word ? 0 : n) : strlen(at);
+        strncat(out, at, keep < sizeof out - strlen(out) - 1 ? keep : sizeof out - strlen(out) - 1);
+        if (!hit) break;
+        if (word) strncat(out, "N", sizeof out - strlen(out) - 1);
+        at = hit + n;
     }
+    snprintf(message, len, "%s", out);
+}
+
+/* a, b and N: required, as at every door (no sensible default); a gap's
+ * load: N, or normal_load 'approach'. */
+static void require_geometry(const mxArray* params_in)
+{
+    const int has = params_in && mxIsStruct(params_in);
+    const int gap = has && mxGetFieldNumber(params_in, "gap") >= 0;
+    const int load = has && (mxGetFieldNumber(params_in, "N") >= 0 ||
+                             mxGetFieldNumber(params_in, "normal_force") >= 0);
+    if (gap) {
+        if (!load && !(has && mxGetFieldNumber(params_in, "normal_load") >= 0))
+            FAIL("missingInput", "N: missing: a gap's load, N or 'normal_load', 'approach' with "
+                 "'approach'");
+        return;
+    }
+    char missing[32] = "";
+    if (!has || mxGetFieldNumber(params_in, "a") < 0) strcat(missing, "a");
+    if (!has || mxGetFieldNumber(params_in, "b") < 0) strcat(missing, *missing ? ", b" : "b");
+    if (!load) strcat(missing, *missing ? ", N" : "N");
+    if (*missing)
+        FAIL("missingInput", "%s: missing: the contact's semi-axes and load have no sensible "
+             "default (e.g. 'a', 6e-3, 'b', 6e-3, 'N', 80e3: a 6 mm circle under 80 kN; a, b "
+             "from the radii: creepwork.hertz)", missing);
+}
+
+/* A 2-D gap must be nx-by-ny: x along the first dimension, MATLAB's
+ * column-major order being the library's [i + j*nx]. */
+static void check_gap_shape(const mxArray* params_in, int nx, int ny)
+{
+    const mxArray* g = params_in && mxIsStruct(params_in) ? mxGetField(params_in, 0, "gap") : NULL;
+    if (!g || mxGetNumberOfDimensions(g) != 2) return;
+    const size_t rows = mxGetM(g), cols = mxGetN(g);
+    if (rows == 1 || cols == 1 || (rows == (size_t)nx && cols == (size_t)ny)) return;
+    mexErrMsgIdAndTxt("creepwork:CW_ERR_INVALID_INPUT",
+                      "gap is %zu-by-%zu; the grid's nx = %d cells along x and ny = %d along y "
+                      "need an nx-by-ny matrix (%d-by-%d): x along the first dimension, gap(i, j) "
+                      "at x0 + (i-1)*dx, y0 + (j-1)*dy%s",
+                      rows, cols, nx, ny, nx, ny,
+                      rows == (size_t)ny && cols == (size_t)nx ? " (transposed: gap.' has that size)" : "");
+}
+
+/* The library's plausibility checks of count contacts on grid, one warning
+ * per rule, the load named as typed. */
+static void warn_units(const cw_grid* grid, const cw_params* p, size_t count,
+                       const mxArray* params_in)
+{
+    size_t found = 0;
+    if (cw_params_check(grid, p, count, NULL, 0, &found) != CW_OK || found == 0) return;
+    cw_check* c = mxCalloc(found, sizeof *c);
+    for (size_t k = 0; k < found; ++k) cw_check_init(&c[k]);
+    if (cw_params_check(grid, p, count, c, found, &found) == CW_OK)
+        for (size_t k = 0; k < found; ++k) {
+            char text[sizeof c[k].message];
+            snprintf(text, sizeof text, "%s", c[k].message);
+            as_typed(params_in, text, sizeof text);
+            mexWarnMsgIdAndTxt("creepwork:implausibleUnits", "%s", text);
+        }
+    mxFree(c);
 }
 
 /* ------------------------------------------------------------- solvers */
 
 static cw_solver* solvers[MAX_SOLVERS]; /* handles of creepwork.Solver objects */
+static cw_grid solver_grids[MAX_SOLVERS]; /* their grids, for the checks */
+static int directions[MAX_SOLVERS];     /* rolling_direction of each one's last solve */
 
 static void destroy_all(void)
 {
@@ -402,14 +455,19 @@ static int solver_id(const mxArray* v)
     return (int)id - 1;
 }
 
-static cw_solver* make_solver(const mxArray* grid_in)
+static cw_grid grid_of(const mxArray* grid_in)
 {
     cw_grid grid;
     cw_grid_init(&grid);
     to_structs(&GRID, grid_in, &grid, sizeof grid, 1);
+    return grid;
+}
+
+static cw_solver* make_solver(const cw_grid* grid)
+{
     cw_solver* s = NULL;
     char message[MESSAGE_LEN] = "";
-    const int status = cw_solver_create(&grid, &s, message, sizeof message);
+    const int status = cw_solver_create(grid, &s, message, sizeof message);
     if (status != CW_OK) fail_status(status, message);
     return s;
 }
@@ -419,12 +477,16 @@ static int flag(const mxArray* v)
     return v && !mxIsEmpty(v) && mxGetScalar(v) != 0.0;
 }
 
-static cw_params params_of(const mxArray* params_in)
+/* One contact's parameters on grid: required inputs, the gap's shape,
+ * then the library's checks. */
+static cw_params params_of(const mxArray* params_in, const cw_grid* grid)
 {
+    require_geometry(params_in);
+    if (grid->kind == CW_GRID_GAP) check_gap_shape(params_in, grid->nx, grid->ny);
     cw_params p;
     cw_params_init(&p);
     to_structs(&PARAMS, params_in, &p, sizeof p, 1);
-    warn_units(&p, 1);
+    warn_units(grid, &p, 1, params_in);
     return p;
 }
 
@@ -445,7 +507,8 @@ static mxArray* patches_of(cw_solver* s)
 /* One solve of p on s: totals and patches, and with fields the per-element maps,
  * states and profile; with jacobian the 4 x 4 matrix. On error s is
  * destroyed first when owned (an error does not return). */
-static mxArray* solve_one(cw_solver* s, int owned, cw_params p, int fields, int jacobian)
+static mxArray* solve_one(cw_solver* s, int owned, cw_params p, int fields, int jacobian,
+                          const mxArray* params_in)
 {
     cw_result r;
     cw_result_init(&r);
@@ -456,6 +519,7 @@ static mxArray* solve_one(cw_solver* s, int owned, cw_params p, int fields, int 
     if (status != CW_OK) {
         char message[MESSAGE_LEN];
         snprintf(message, sizeof message, "%s", cw_solver_last_error(s));
+        as_typed(params_in, message, sizeof message);
         if (owned) cw_solver_destroy(s);
         fail_status(status, message);
     }
@@ -521,6 +585,107 @@ static mxArray* solve_one(cw_solver* s, int owned, cw_params p, int fields, int 
     return out;
 }
 
+/* ------------------------------------------------- surface post-processors */
+
+/* Values valid but implausible for steel wheels and rails, with the CLI's
+ * thresholds (programs/cli/surface_outputs.cpp, implausible()). */
+static void warn_steel(const char* name, double v, double lo, double hi, const char* unit,
+                       const char* why)
+{
+    if (v < lo || v > hi)
+        mexWarnMsgIdAndTxt("creepwork:implausibleUnits", "%s = %.10g %s is implausible: %s", name,
+                           v, unit, why);
+}
+
+static void warn_temperature_units(const cw_temperature_params* p)
+{
+    static const char K[] = "steel is 50 (W/(mm K) typed?)", C[] = "steel is 450 (kJ/(kg K) typed?)",
+                      R[] = "steel is 7850 (g/cm^3 typed?)";
+    warn_steel("conductivity_1", p->conductivity_1, 1.0, 1000.0, "W/(m K)", K);
+    warn_steel("conductivity_2", p->conductivity_2, 1.0, 1000.0, "W/(m K)", K);
+    warn_steel("heat_capacity_1", p->heat_capacity_1, 100.0, 5000.0, "J/(kg K)", C);
+    warn_steel("heat_capacity_2", p->heat_capacity_2, 100.0, 5000.0, "J/(kg K)", C);
+    warn_steel("density_1", p->density_1, 1000.0, 25000.0, "kg/m^3", R);
+    warn_steel("density_2", p->density_2, 1000.0, 25000.0, "kg/m^3", R);
+    warn_steel("rolling_speed", p->rolling_speed, -INFINITY, 150.0, "m/s",
+               "trains run below 150 m/s (km/h typed?)");
+}
+
+/* An nx-by-ny matrix of one field of a temperature or damage handle. */
+static mxArray* handle_field(int (*get)(const void*, int, double*, size_t), const void* h, int id,
+                             int nx, int ny)
+{
+    mxArray* m = mxCreateDoubleMatrix((size_t)nx, (size_t)ny, mxREAL);
+    if (get(h, id, mxGetPr(m), (size_t)nx * (size_t)ny) != CW_OK)
+        FAIL("internal", "reading a field of a surface post-processor");
+    return m;
+}
+
+static int temperature_field(const void* h, int id, double* out, size_t n)
+{
+    return cw_temperature_get_field((const cw_temperature*)h, id, out, n);
+}
+
+static int damage_field(const void* h, int id, double* out, size_t n)
+{
+    return cw_damage_get_field((const cw_damage*)h, id, out, n);
+}
+
+/* Both bodies' temperatures of s's last solve (the result's fields, and
+ * rail, wheel, heat as nx-by-ny matrices). */
+static mxArray* temperature_of(cw_solver* s, const cw_temperature_params* p)
+{
+    cw_temperature* t = NULL;
+    int status = cw_temperature_create(s, &t);
+    if (status != CW_OK) fail_status(status, "making the temperature workspace");
+    cw_temperature_result r;
+    cw_temperature_result_init(&r);
+    status = cw_temperature_compute(t, s, p, &r);
+    if (status != CW_OK) {
+        char message[MESSAGE_LEN];
+        snprintf(message, sizeof message, "%s", cw_temperature_last_error(t));
+        cw_temperature_destroy(t);
+        fail_status(status, message);
+    }
+    static const char* extra[] = {"rail", "wheel", "heat"};
+    mxArray* out = from_structs(&TRESULT, &r, sizeof r, 1, NULL, 3, extra);
+    int nx = 0, ny = 0;
+    cw_solver_grid_size(s, &nx, &ny);
+    const int ids[] = {CW_TEMPERATURE_FIELD_RAIL, CW_TEMPERATURE_FIELD_WHEEL,
+                       CW_TEMPERATURE_FIELD_HEAT};
+    for (int k = 0; k < 3; ++k)
+        mxSetField(out, 0, extra[k], handle_field(temperature_field, t, ids[k], nx, ny));
+    cw_temperature_destroy(t);
+    return out;
+}
+
+/* The damage indices of s's last solve (the result's fields, and
+ * rcf_index, t_gamma_density as nx-by-ny matrices). */
+static mxArray* damage_of(cw_solver* s, const cw_damage_params* p)
+{
+    cw_damage* d = NULL;
+    int status = cw_damage_create(s, &d);
+    if (status != CW_OK) fail_status(status, "making the damage workspace");
+    cw_damage_result r;
+    cw_damage_result_init(&r);
+    status = cw_damage_compute(d, s, p, &r);
+    if (status != CW_OK) {
+        char message[MESSAGE_LEN];
+        snprintf(message, sizeof message, "%s", cw_damage_last_error(d));
+        cw_damage_destroy(d);
+        fail_status(status, message);
+    }
+    static const char* extra[] = {"rcf_index", "t_gamma_density"};
+    mxArray* out = from_structs(&DRESULT, &r, sizeof r, 1, NULL, 2, extra);
+    int nx = 0, ny = 0;
+    cw_solver_grid_size(s, &nx, &ny);
+    const int ids[] = {CW_DAMAGE_FIELD_RCF_INDEX, CW_DAMAGE_FIELD_T_GAMMA_DENSITY};
+    for (int k = 0; k < 2; ++k)
+        mxSetField(out, 0, extra[k], handle_field(damage_field, d, ids[k], nx, ny));
+    cw_damage_destroy(d);
+    return out;
+}
+
 /* After each part of a solve_many: progress(done, total), a function
  * handle. Its error is raised again once the batch is destroyed. */
 static void call_progress(const mxArray* progress, size_t done, size_t count, cw_batch* batch)
@@ -552,11 +717,10 @@ static mxArray* solve_many(const mxArray* params_in, const mxArray* grid_in, int
         cw_params_init(&p[c]);
         cw_result_init(&r[c]);
     }
+    require_geometry(params_in);
     to_structs(&PARAMS, params_in, p, sizeof *p, count);
-    warn_units(p, count);
-    cw_grid grid;
-    cw_grid_init(&grid);
-    to_structs(&GRID, grid_in, &grid, sizeof grid, 1);
+    const cw_grid grid = grid_of(grid_in);
+    warn_units(&grid, p, count, params_in);
     cw_batch* batch = NULL;
     char message[MESSAGE_LEN] = "";
     int status = cw_batch_create(&grid, threads, &batch, message, sizeof message);
@@ -585,6 +749,10 @@ static mxArray* solve_many(const mxArray* params_in, const mxArray* grid_in, int
             text = one && cw_solver_solve(one, &p[c], mode, NULL) == st[c]
                        ? cw_solver_last_error(one)
                        : cw_status_string(st[c]);
+            char typed[MESSAGE_LEN];
+            snprintf(typed, sizeof typed, "%s", text);
+            as_typed(params_in, typed, sizeof typed);
+            text = typed;
             for (size_t k = 1; k < RESULT.n_fields; ++k)
                 if (RESULT.fields[k].kind == K_DOUBLE && RESULT.fields[k].count <= 1)
                     mxGetPr(mxGetField(out, 0, RESULT.fields[k].name))[c] = mxGetNaN();
@@ -665,9 +833,10 @@ void mexFunction(int nlhs, mxArray* plhs[], int nrhs, const mxArray* prhs[])
     int status = CW_OK;
 
     if (strcmp(command, "solve") == 0) { /* params, grid, fields, jacobian */
-        const cw_params p = params_of(a1); /* errors before anything is made */
-        cw_solver* s = make_solver(a2);
-        plhs[0] = solve_one(s, 1, p, flag(a3), flag(a4));
+        const cw_grid grid = grid_of(a2);
+        const cw_params p = params_of(a1, &grid); /* errors before anything is made */
+        cw_solver* s = make_solver(&grid);
+        plhs[0] = solve_one(s, 1, p, flag(a3), flag(a4), a1);
         cw_solver_destroy(s);
     } else if (strcmp(command, "solve_many") == 0) { /* params, grid, full, threads, progress */
         plhs[0] = solve_many(a1, a2, flag(a3), a4 ? (int)scalar(a4, "threads") : 0,
@@ -676,7 +845,9 @@ void mexFunction(int nlhs, mxArray* plhs[], int nrhs, const mxArray* prhs[])
         int k = 0;
         while (k < MAX_SOLVERS && solvers[k]) ++k;
         if (k == MAX_SOLVERS) FAIL("tooManySolvers", "more than %d solvers open", MAX_SOLVERS);
-        solvers[k] = make_solver(a1);
+        solver_grids[k] = grid_of(a1);
+        solvers[k] = make_solver(&solver_grids[k]);
+        directions[k] = 1;
         int nx = 0, ny = 0;
         cw_solver_grid_size(solvers[k], &nx, &ny);
         plhs[0] = mxCreateDoubleScalar(k + 1);
@@ -684,11 +855,42 @@ void mexFunction(int nlhs, mxArray* plhs[], int nrhs, const mxArray* prhs[])
         if (nlhs > 2) plhs[2] = mxCreateDoubleScalar(ny);
     } else if (strcmp(command, "solver_solve") == 0) { /* id, params, fields, jacobian */
         const int k = solver_id(a1);
-        plhs[0] = solve_one(solvers[k], 0, params_of(a2), flag(a3), flag(a4));
+        const cw_params p = params_of(a2, &solver_grids[k]);
+        plhs[0] = solve_one(solvers[k], 0, p, flag(a3), flag(a4), a2);
+        directions[k] = p.rolling_direction;
+    } else if (strcmp(command, "solver_temperature") == 0) { /* id, params */
+        const int k = solver_id(a1);
+        cw_temperature_params tp;
+        cw_temperature_params_init(&tp);
+        tp.rolling_direction = directions[k]; /* the last solve's, unless given */
+        to_structs(&TPARAMS, a2, &tp, sizeof tp, 1);
+        warn_temperature_units(&tp);
+        plhs[0] = temperature_of(solvers[k], &tp);
+    } else if (strcmp(command, "solver_damage") == 0) { /* id, params */
+        const int k = solver_id(a1);
+        cw_damage_params dp;
+        cw_damage_params_init(&dp);
+        to_structs(&DPARAMS, a2, &dp, sizeof dp, 1);
+        if (dp.k_yield > 0.0)
+            warn_steel("k_yield", dp.k_yield, 1e6, INFINITY, "Pa",
+                       "steel's shear yield stress is 2-6e8 Pa (MPa typed as Pa?)");
+        plhs[0] = damage_of(solvers[k], &dp);
     } else if (strcmp(command, "solver_destroy") == 0) {
         const int k = solver_id(a1);
         cw_solver_destroy(solvers[k]);
         solvers[k] = NULL;
+    } else if (strcmp(command, "model_grid") == 0) { /* model -> the grid it gets by default */
+        cw_grid g;
+        const field_info* model = find_field(&PARAMS, "model");
+        const int m = a1 && mxIsChar(a1) ? (int)enum_value(&PARAMS, model, a1) : (int)scalar(a1, "model");
+        if (cw_grid_init_model(&g, m) != CW_OK) FAIL("badValue", "model %d is not a CW_MODEL_*", m);
+        plhs[0] = from_structs(&GRID, &g, sizeof g, 1, NULL, 0, NULL);
+    } else if (strcmp(command, "input_name") == 0) { /* the library's spelling of a name */
+        char typed[64], name[64];
+        if (!a1 || !mxIsChar(a1) || mxGetString(a1, typed, sizeof typed) != 0)
+            FAIL("badValue", "input_name takes a name (char)");
+        if (cw_input_name(typed, name, sizeof name) != CW_OK) strcpy(name, typed);
+        plhs[0] = mxCreateString(name);
     } else if (strcmp(command, "defaults") == 0) {
         char which[32] = "";
         if (a1) mxGetString(a1, which, sizeof which);

@@ -14,6 +14,7 @@
 #   exact          creepwork_bench --exact-only      the exact model, cold and warm
 #   jacobian       creepwork_bench_jacobian
 #   wear           creepwork_bench_wear
+#   temperature    creepwork_bench_temperature
 #   calibrated     creepwork_calibration time
 #   nonhertz       creepwork_bench_nonhertz          CONTACT beside it (needs CONTACT)
 #   wheelrail      creepwork_bench_wheelrail 200     CONTACT beside it (needs CONTACT)
@@ -47,7 +48,7 @@
 #            (numbers not for the page: the stamp says --quick)
 set -euo pipefail
 source_dir=$(cd "$(dirname "$0")/.." && pwd)
-all_sections=(fastsim exact jacobian wear calibrated nonhertz wheelrail transient legacy python campaign campaign-wear)
+all_sections=(fastsim exact jacobian wear temperature calibrated nonhertz wheelrail transient legacy python campaign campaign-wear)
 usage() { sed -n '/^# usage:/,/^set -euo/p' "$0" | sed '$d; s/^# \{0,1\}//' >&2; exit 2; }
 build="" update="" only="" quick=0 allow_dirty=0 allow_load=0 wait_max=300 list=0
 while [ $# -gt 0 ]; do
@@ -138,6 +139,7 @@ needs() {
     fastsim | exact) programs=(creepwork_bench) ;;
     jacobian) programs=(creepwork_bench_jacobian) ;;
     wear) programs=(creepwork_bench_wear) ;;
+    temperature) programs=(creepwork_bench_temperature) ;;
     calibrated) programs=(creepwork_calibration) ;;
     nonhertz) programs=(creepwork_bench_nonhertz) ;;
     wheelrail) programs=(creepwork_bench_wheelrail) ;;
@@ -177,6 +179,7 @@ run_section() {
     exact) "$bin/creepwork_bench" --exact-only $(q "--exact-grids 20,40 --exact-steps 100") ;;
     jacobian) "$bin/creepwork_bench_jacobian" ;;
     wear) "$bin/creepwork_bench_wear" ;;
+    temperature) "$bin/creepwork_bench_temperature" ;;
     calibrated) "$bin/creepwork_calibration" time ;;
     nonhertz)
       GLIBC_TUNABLES=glibc.malloc.trim_threshold=536870912:glibc.malloc.mmap_threshold=33554432:glibc.malloc.top_pad=67108864 \

@@ -28,7 +28,7 @@ LAYERS = [
     ["exact", "fastsim", "calibrated"],  # the tangential models on the ellipse's grids
     ["gap", "transient"],      # the tangential models on a gap grid; transient rolling
     ["solver"],                # the solver: makes the models, runs them, exports fields
-    ["wear"],                  # post-processors of the fields
+    ["wear", "thermal", "damage"],  # post-processors of the fields
     ["wheelrail"],             # wheel/rail geometry: a solver per contact patch
 ]
 INCLUDE = re.compile(r'^\s*#\s*include\s*"([^"]+)"')

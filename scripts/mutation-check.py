@@ -485,6 +485,136 @@ WHEELRAIL_MUTANTS += [
 MUTANTS += WHEELRAIL_MUTANTS
 # ------------------------------------------------------------ end wheel/rail
 
+# ------------------------------------------------------- the shared policy
+# The library's plausibility checks, default grids and names
+# (core/contact/plausibility.cpp, core/wheelrail/placement_checks.cpp,
+# capi/capi_check.cpp), as the C ABI, module creepwork and the CLI show them;
+# the Python door's own rules (required inputs, the gap's shape).
+POLICY = ["test_capi_check", "test_fortran_checks", "cli_gap_unit_mistakes_warn",
+          "cli_warns_and_accepts_any_case"]
+WHEELRAIL_POLICY = ["test_wheelrail_capi", "test_fortran_checks",
+                    "cli_wheelrail_warns_about_misplaced_wheel"]
+POLICY_MUTANTS = [
+    dict(id="check-gap-heights", what="a gap's heights warned only beyond 100 m, not 10 mm",
+         file="core/contact/plausibility.cpp",
+         old="     gap_spread, [](const C& c, double v) { return c.gap_grid && v > 1e-2; }},",
+         new="     gap_spread, [](const C& c, double v) { return c.gap_grid && v > 1e2; }},",
+         tests=POLICY),
+    dict(id="check-semi-axis-input", what="the rule on a reads b",
+         file="core/contact/plausibility.cpp",
+         old='    {CheckRule::semi_axis, "a", "m", kSemiLarge, [](const C& c) { return c.a; },',
+         new='    {CheckRule::semi_axis, "a", "m", kSemiLarge, [](const C& c) { return c.b; },',
+         tests=POLICY),
+    dict(id="check-default-geometry", what="the placeholders reported only when N was changed",
+         file="capi/capi_check.cpp",
+         old="    c.default_geometry = p.a == d.a && p.b == d.b && p.normal_force == d.normal_force;",
+         new="    c.default_geometry = p.a == d.a && p.b == d.b && p.normal_force != d.normal_force;",
+         tests=["test_capi_check", "test_fortran_checks", "python_test_policy"]),
+    dict(id="check-alias-fast", what="fast read as another model than fastsim",
+         file="capi/capi_check.cpp",
+         old='                                                             {"fast", "fastsim"}};',
+         new='                                                             {"fast", "exact"}};',
+         tests=["test_capi_check", "test_fortran_checks", "cli_wheelrail_one_vocabulary"]),
+    dict(id="check-shift-limit", what="a lateral shift warned above 50 mm, not the 20 mm it says",
+         file="core/wheelrail/placement_checks.cpp",
+         old="constexpr double kShiftLimit = 20e-3;",
+         new="constexpr double kShiftLimit = 50e-3;",
+         tests=WHEELRAIL_POLICY + ["python_test_wheelrail"]),
+    dict(id="check-flange-tip", what="a patch on the flange tip only within 0.05 mm of it",
+         file="core/wheelrail/placement_checks.cpp",
+         old="constexpr double kTipDepth = 3e-3;",
+         new="constexpr double kTipDepth = 0.05e-3;",
+         tests=WHEELRAIL_POLICY),
+    dict(id="check-profile-origin", what="a flange tip up to 95 mm from the flange back passes",
+         file="core/wheelrail/placement_checks.cpp",
+         old="constexpr double kTipFromBack = 45e-3;",
+         new="constexpr double kTipFromBack = 95e-3;",
+         tests=WHEELRAIL_POLICY),
+    dict(id="profile-y-offset", what="the profile's lateral offset is not applied",
+         file="core/wheelrail/profile_io.cpp",
+         old="        pts.push_back({(opt.mirror_y ? -r.y : r.y) * unit + opt.y_offset,",
+         new="        pts.push_back({(opt.mirror_y ? -r.y : r.y) * unit,",
+         tests=WHEELRAIL_POLICY),
+    dict(id="cli-typed-name", what="the CLI names an alias option by its documented name",
+         file="programs/cli/options.cpp",
+         old="        parsed.typed_[spec->name] = name;",
+         new="        parsed.typed_[spec->name] = spec->name;",
+         tests=["cli_one_vocabulary", "cli_wheelrail_one_vocabulary"]),
+    dict(id="python-required-geometry", what="Python solves without N",
+         file="python/creepwork/_params.py",
+         old='("a", "a"), ("b", "b"), ("N", "normal_force"))',
+         new='("a", "a"), ("b", "b"))',
+         tests=["python_test_policy", "python_test_errors"]),
+    dict(id="python-gap-shape", what="Python accepts a transposed gap",
+         file="python/creepwork/_solver.py",
+         old="    if len(shape) < 2 or shape == (ny, nx):",
+         new="    if len(shape) < 2 or shape in ((ny, nx), (nx, ny)):",
+         tests=["python_test_policy", "python_test_gap"]),
+]
+MUTANTS += POLICY_MUTANTS
+# ----------------------------------------------------- end the shared policy
+
+# ----------------------------------------------------- temperature, damage
+# The flash temperature (core/thermal) against the analytic moving-source
+# solution, the Ertz case and CONTACT's example, and at every door; the
+# damage indices (core/damage) against their definitions and hand values.
+SURFACE = [
+    "test_core_temperature", "test_core_damage", "test_capi_surface", "test_fortran_surface",
+    "python_test_surface", "octave_test_surface", "cli_surface_contact_example",
+]
+MUTANTS += [
+    dict(id="thermal-self-term", what="the consistent self-element term is CONTACT's whole element",
+         file="core/thermal/flash_temperature.cpp",
+         old="        r.self_weight = std::sqrt(0.5);", new="        r.self_weight = std::sqrt(2.0);",
+         tests=SURFACE),
+    dict(id="thermal-contact-self-term", what="CONTACT's self-element term taken as the consistent one",
+         file="core/thermal/flash_temperature.cpp",
+         old="        r.self_weight = std::sqrt(2.0);", new="        r.self_weight = std::sqrt(0.5);",
+         tests=SURFACE),
+    dict(id="thermal-contact-temperature", what="T_c weights each body by the other's effusivity",
+         file="core/thermal/flash_temperature.cpp",
+         old="        r.Tc = (b1 * p.rail.T0 + b2 * p.wheel.T0) / (b1 + b2);",
+         new="        r.Tc = (b2 * p.rail.T0 + b1 * p.wheel.T0) / (b1 + b2);", tests=SURFACE),
+    dict(id="thermal-shared-flash", what="the flash part takes body 1's effusivity twice",
+         file="core/thermal/flash_temperature.cpp",
+         old="    const double shared = 2.0 / ((b1 + b2) * std::sqrt(kPi * p.rolling_speed));",
+         new="    const double shared = 2.0 / ((b1 + b1) * std::sqrt(kPi * p.rolling_speed));",
+         tests=SURFACE),
+    dict(id="thermal-kernel-weight", what="the moving-source weights off by a tenth of an element",
+         file="core/thermal/moving_source.cpp",
+         old="    return 1.0 / (std::sqrt(k + 0.5) + std::sqrt(k - 0.5));",
+         new="    return 1.0 / (std::sqrt(k + 0.6) + std::sqrt(k - 0.5));", tests=SURFACE),
+    dict(id="thermal-relaxation", what="the relaxation behind the contact without its root",
+         file="core/thermal/flash_temperature.cpp",
+         old="                const double g = 2.0 / kPi * std::asin(std::sqrt(ratio));",
+         new="                const double g = 2.0 / kPi * std::asin(ratio);", tests=SURFACE),
+    dict(id="thermal-heat-speed", what="the heat from the work map without the rolling speed",
+         file="core/thermal/heat_source.cpp",
+         old="        q[e] = rolling_speed * quotient_if_positive(std::max(0.0, work[e]), area[e]);",
+         new="        q[e] = quotient_if_positive(std::max(0.0, work[e]), area[e]);", tests=SURFACE),
+    dict(id="thermal-row-length", what="a strip's element length scaled by b instead of a",
+         file="capi/capi_surface.cpp",
+         old="                                                        : s.grid().x_length()[j] * c.totals.a;",
+         new="                                                        : s.grid().x_length()[j] * c.totals.b;",
+         tests=SURFACE),
+    dict(id="damage-rcf-floor", what="the RCF index's floor at -0.4",
+         file="core/damage/damage_indices.hpp",
+         old="constexpr double kRcfNoRisk = -0.5; // CONTACT's floor and exterior value",
+         new="constexpr double kRcfNoRisk = -0.4; // CONTACT's floor and exterior value",
+         tests=SURFACE),
+    dict(id="damage-fi-surf", what="FI_surf with k/p0 taken as 2 A k/(2 F_z)",
+         file="core/damage/damage_indices.cpp",
+         old="        t.FI_surf = t.mu_eff - 2.0 * in.contact_area * p.k_yield / (3.0 * in.normal_force);",
+         new="        t.FI_surf = t.mu_eff - 2.0 * in.contact_area * p.k_yield / (2.0 * in.normal_force);",
+         tests=SURFACE),
+    dict(id="damage-wlrm-rise", what="WLRM damage rising over onset..zero instead of onset..peak",
+         file="core/damage/wlrm.cpp",
+         old="    if (T_gamma <= f.peak) return f.peak_damage * (T_gamma - f.onset) / (f.peak - f.onset);",
+         new="    if (T_gamma <= f.peak) return f.peak_damage * (T_gamma - f.onset) / (f.zero - f.onset);",
+         tests=SURFACE),
+]
+# ------------------------------------------------- end temperature, damage
+
 # ---------------------------------------------------------------- progress
 # The progress line of long work (programs/cli/progress.cpp), which the
 # campaign prints through the same code as wear and sweep: caught by the
@@ -546,8 +676,9 @@ PROMISE_MUTANTS = [
                 "python_test_solver"]),
     dict(id="python-units-keywords-only", what="solve_many and Batch check the keywords' units, "
          "not a params array's", file="python/creepwork/_batch.py",
-         old="            checked = recs if params_in is not None else converted",
-         new="            checked = converted",
+         old="            _errors.warn_units(_checks.warnings_for(self._grid, recs, typed), stacklevel)",
+         new="            _errors.warn_units(_checks.warnings_for(self._grid, recs if params_in is None "
+             "else recs[:0], typed), stacklevel)",
          tests=["python_test_units", "python_test_many", "python_test_solver"]),
     dict(id="mex-text-one-contact-per-character", what="the MEX gateway counts an enumeration's "
          "name as one contact per character", file="matlab/creepwork_mex.c",

@@ -127,7 +127,23 @@ std::vector<int> check_profile_points(ProfileKind kind, const std::vector<Profil
         fail(source + ": the " + what + " profile's points must run " +
              (kind == ProfileKind::rail ? "with y increasing (track centre to field side)"
                                         : "with y decreasing (field side to flange back)"));
+    // The length first: a profile in the wrong unit also has points too
+    // close together, and its unit is what the message must name.
     double length = 0.0;
+    for (size_t i = 1; i < p.size(); ++i) length += std::hypot(p[i].y - p[i - 1].y, p[i].z - p[i - 1].z);
+    if (length < kMinLength || length > kMaxLength) {
+        char buf[256];
+        std::snprintf(buf, sizeof buf,
+                      ": the %s profile is %.4g m long; a profile is 5 mm to 500 mm long: %s", what,
+                      length,
+                      length < kMinLength
+                          ? "a profile in metres read as millimetres is 1000 times too short "
+                            "(tables and MiniProf files are read in mm unless the length unit, "
+                            "profile_unit, says otherwise)"
+                          : "a profile in millimetres read as metres is 1000 times too long (set "
+                            "the length unit, profile_unit, or SIMPACK's units.len.f)");
+        fail(source + buf);
+    }
     for (size_t i = 1; i < p.size(); ++i) {
         const double d = std::hypot(p[i].y - p[i - 1].y, p[i].z - p[i - 1].z);
         if (!(d > checks.min_spacing)) {
@@ -135,15 +151,6 @@ std::vector<int> check_profile_points(ProfileKind kind, const std::vector<Profil
             std::snprintf(buf, sizeof buf, ": duplicate point (%.3g m from the previous one)", d);
             fail(where(source, p[i], i) + buf);
         }
-        length += d;
-    }
-    if (length < kMinLength || length > kMaxLength) {
-        char buf[160];
-        std::snprintf(buf, sizeof buf,
-                      ": the %s profile is %.4g m long; a profile is 5 mm to 500 mm long (are the "
-                      "units right? a profile in mm read as metres is 1000 times too long)",
-                      what, length);
-        fail(source + buf);
     }
     std::vector<int> breaks{0};
     for (size_t i = 1; i + 1 < p.size(); ++i) {
@@ -154,8 +161,9 @@ std::vector<int> check_profile_points(ProfileKind kind, const std::vector<Profil
         if (t > checks.kink_angle) {
             if (!checks.accept_kinks)
                 fail(where(source, p[i], i) + ": kink: the profile turns by " + degrees(t) +
-                     ", more than the kink threshold " + degrees(checks.kink_angle) +
-                     " (raise the threshold, or accept kinks as corners)");
+                     " at this point, more than " + degrees(checks.kink_angle) +
+                     ": a measurement spike, or a step where measured sections were joined; "
+                     "remove or smooth the point");
             breaks.push_back(static_cast<int>(i));
         }
     }

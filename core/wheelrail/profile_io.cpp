@@ -4,6 +4,7 @@
 #include <cctype>
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <vector>
 
 #include "contact/error.hpp"
@@ -49,6 +50,22 @@ bool parse_numbers(const std::string& text, std::vector<double>& out)
     return true;
 }
 
+// A line of a binary file: its bytes would be echoed into the messages.
+void require_text(const std::string& source, int line, const std::string& text)
+{
+    for (size_t k = 0; k < text.size(); ++k) {
+        const unsigned char c = static_cast<unsigned char>(text[k]);
+        if ((c < 0x20 && c != '\t' && c != '\r') || c == 0x7f) {
+            char buf[160];
+            std::snprintf(buf, sizeof buf,
+                          "byte 0x%02x at column %zu is not text: a profile is a text file "
+                          "(SIMPACK .prr/.prw, MiniProf .ban/.whl, or a table of y z lines)",
+                          c, k + 1);
+            fail(source, line, buf);
+        }
+    }
+}
+
 struct RawPoint {
     double y, z;
     int line;
@@ -63,7 +80,8 @@ Profile finish(std::vector<RawPoint>& raw, ProfileKind kind, const std::string& 
     std::vector<ProfilePoint> pts;
     pts.reserve(raw.size());
     for (const RawPoint& r : raw)
-        pts.push_back({(opt.mirror_y ? -r.y : r.y) * unit, (opt.mirror_z ? -r.z : r.z) * unit, r.line});
+        pts.push_back({(opt.mirror_y ? -r.y : r.y) * unit + opt.y_offset,
+                       (opt.mirror_z ? -r.z : r.z) * unit, r.line});
     orient_profile_points(kind, pts);
     return Profile(kind, std::move(pts), source, opt.checks);
 }
@@ -91,6 +109,7 @@ Profile read_simpack(std::istream& in, ProfileKind kind, const std::string& sour
     bool had_points = false;
     while (std::getline(in, text)) {
         ++line;
+        require_text(source, line, text);
         const size_t bang = text.find_first_of("!%");
         std::string s = trim(bang == std::string::npos ? text : text.substr(0, bang));
         if (s.empty()) continue;
@@ -188,6 +207,7 @@ Profile read_miniprof(std::istream& in, ProfileKind kind, const std::string& sou
     bool in_header = true;
     while (std::getline(in, text)) {
         ++line;
+        require_text(source, line, text);
         const std::string s = trim(text);
         if (s.empty()) {
             in_header = false; // the points follow the first blank line
@@ -248,6 +268,7 @@ Profile read_table(std::istream& in, ProfileKind kind, const std::string& source
     bool first = true;
     while (std::getline(in, text)) {
         ++line;
+        require_text(source, line, text);
         const std::string s = trim(text);
         if (s.empty() || s[0] == '#' || s[0] == '%' || s[0] == '!') continue;
         const bool numeric = parse_numbers(s, nums);
@@ -271,6 +292,8 @@ Profile read_profile(std::istream& in, ProfileKind kind, ProfileFormat format,
 {
     if (!(options.length_unit >= 0.0 && std::isfinite(options.length_unit)))
         fail(source, 0, "the length unit must be finite and >= 0 (0: the format's own)");
+    if (!(std::fabs(options.y_offset) <= 1.0))
+        fail(source, 0, "the lateral offset must lie within +-1 m");
     switch (format) {
     case ProfileFormat::simpack: return read_simpack(in, kind, source, options);
     case ProfileFormat::miniprof: return read_miniprof(in, kind, source, options);

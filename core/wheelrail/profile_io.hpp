@@ -15,8 +15,9 @@
 // spaces, tabs, commas or semicolons), lines starting with # % ! are
 // comments, an optional first line of column names.
 //
-// After the file's own options: the length unit, then the mirrors below,
-// then the points are put in canonical order (profile.hpp) and checked.
+// After the file's own options: the length unit, then the mirrors and the
+// offset below, then the points are put in canonical order (profile.hpp)
+// and checked.
 #pragma once
 
 #include <istream>
@@ -35,6 +36,7 @@ struct ProfileReadOptions {
     double length_unit = 0.0;
     bool mirror_y = false; // y := -y (profiles measured with y towards the track centre)
     bool mirror_z = false; // z := -z (profiles measured with z upwards)
+    double y_offset = 0.0; // [m] added to y after the unit and the mirrors
     ProfileChecks checks;
 };
 

@@ -85,6 +85,9 @@ public:
     // The rail's frame in track coordinates (right-side frame, CONTACT's
     // rail marker before mirroring).
     const Frame& rail_frame() const { return rail_frame_; }
+    // The profiles in canonical form (profile.hpp), as given after the unit.
+    const Profile& rail_profile() const { return rail_; }
+    const Profile& wheel_profile() const { return wheel_; }
     const ContactSearch& search() const { return search_; }
 
 private:

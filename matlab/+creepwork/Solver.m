@@ -3,7 +3,15 @@ classdef Solver < handle
 %   S = creepwork.Solver(GRID) makes one (GRID a struct of cw_grid fields,
 %   as creepwork.solve's 'grid'; none: Kalker's strips 20 x 20). Then
 %   R = S.solve(...) takes creepwork.solve's parameters and 'fields';
-%   R = S.jacobian(...) adds R.jacobian. The exact model starts from the
+%   R = S.jacobian(...) adds R.jacobian. T = S.temperature('rolling_speed',
+%   V, ...) gives both bodies' surface temperatures of the last solve
+%   (which needs 'fields', true; the fields of cw_temperature_params as
+%   name-value pairs, e.g. 'T0_1', 'conductivity_2', 'discretisation',
+%   'contact'; body 1 the rail, body 2 the wheel): T.T_max_1, T.x_max_1,
+%   ..., and T.rail, T.wheel, T.heat as nx-by-ny matrices.
+%   D = S.damage('k_yield', K, ...) gives the damage indices: D.rcf_index_max,
+%   D.FI_surf, D.T_gamma, D.wlrm_damage, ..., D.rcf_index and
+%   D.t_gamma_density (nx-by-ny). The exact model starts from the
 %   solver's last solution (warm_start = 1, the default): loops over
 %   nearby contacts converge in fewer iterations. delete(S) (or clearing
 %   S) frees it.
@@ -38,10 +46,32 @@ classdef Solver < handle
       fields = any(strcmp(varargin(cellfun(@ischar, varargin)), 'fields')) && opt.fields;
       r = creepwork.call('solver_solve', obj.id, p, fields, true);
     end
+    function t = temperature(obj, varargin)
+      t = creepwork.call('solver_temperature', obj.id, creepwork.Solver.pairs(varargin));
+    end
+    function d = damage(obj, varargin)
+      d = creepwork.call('solver_damage', obj.id, creepwork.Solver.pairs(varargin));
+    end
     function delete(obj)
       if obj.id
         creepwork.call('solver_destroy', obj.id);
         obj.id = 0;
+      end
+    end
+  end
+  methods (Static, Access = private)
+    function s = pairs(args)
+      % Name-value pairs as a struct (a struct given alone is taken as it is).
+      if numel(args) == 1 && isstruct(args{1})
+        s = args{1};
+        return;
+      end
+      if mod(numel(args), 2) ~= 0 || ~all(cellfun(@ischar, args(1:2:end)))
+        error('creepwork:usage', 'expected name-value pairs');
+      end
+      s = struct();
+      for k = 1:2:numel(args)
+        s.(args{k}) = args{k + 1};
       end
     end
   end

@@ -7,11 +7,10 @@ function [p, opt] = inputs(varargin)
 %   followed by name-value pairs, which override it. Used by the other
 %   functions of the package; users call those.
 %
-%   Without a 'grid', the exact model gets the creepwork CLI's grid
-%   (programs/cli/contact_inputs.hpp, kExactBoxScale): uniform, 24 x 24
-%   elements over 1.2 times the semi-axes (20 across the ellipse, two guard
-%   cells on each side); the other models the library's (Kalker's strips,
-%   20 x 20).
+%   Without a 'grid', the exact model gets the library's grid for it
+%   (cw_grid_init_model, as every door): uniform, 24 x 24 elements over 1.2
+%   times the semi-axes (20 across the ellipse, two guard cells on each
+%   side); the other models Kalker's strips, 20 x 20.
   p = struct();
   first = 1;
   if nargin >= 1 && isstruct(varargin{1})
@@ -35,13 +34,13 @@ function [p, opt] = inputs(varargin)
     end
   end
   if isempty(opt.grid) && isfield(p, 'model') && is_exact(p.model)
-    opt.grid = struct('kind', 'uniform', 'nx', 24, 'ny', 24, 'box_scale', 1.2);
+    opt.grid = creepwork.call('model_grid', 'exact');
   end
 end
 
 function yes = is_exact(model)
   if ischar(model)
-    yes = strcmp(model, 'exact');
+    yes = strcmp(creepwork.call('input_name', model), 'exact');
   else
     c = creepwork.constants();
     yes = ~isempty(model) && all(model(:) == c.CW_MODEL_EXACT);

@@ -6,17 +6,19 @@ function r = solve(varargin)
 %
 %   Parameters, SI units, each a field of the C struct cw_params with the
 %   library's default (creepwork.params lists them): a, b semi-axes along x
-%   (rolling) and y [m]; N (or normal_force) load [N]; mu [-]; G [Pa] and
-%   nu [-] (steel by default); xi_x, xi_y creepages [-]; phi spin [1/m];
+%   (rolling) and y [m] and N (or normal_force) load [N], required; mu [-];
+%   G [Pa] and nu [-] (steel by default); xi_x, xi_y creepages [-]; phi (or
+%   spin) [1/m];
 %   model 'fastsim' (default), 'calibrated' or 'exact'; pressure
 %   'parabolic' or 'elliptic'; flexibility 'from_material' or 'given' with
 %   L1, L2, L3 [m/Pa]; rolling_direction +1 or -1; tolerance,
 %   max_iterations, warm_start (exact model); spin_offset,
 %   flexibility_blending (FASTSIM).
-%   Options: 'grid', a struct of cw_grid fields (kind 'strips' or
-%   'uniform', nx, ny, box_scale; default Kalker's strips 20 x 20, the exact
-%   model CONTACT's uniform 24 x 24 over 1.2 a x 1.2 b); 'fields', false for
-%   the totals only (fastest).
+%   Options: 'grid', a struct of cw_grid fields (kind 'kalker_strips',
+%   'uniform' or 'gap', nx, ny, box_scale; default Kalker's strips 20 x 20,
+%   the exact model CONTACT's uniform 24 x 24 over 1.2 a x 1.2 b); 'fields',
+%   false for the totals only (fastest). A gap ('gap', h) is an nx-by-ny
+%   matrix, x along the first dimension.
 %
 %   R holds every field of cw_result (Fx, Fy [N] and Mz [N m] on the wheel,
 %   W_macro [J/m], K, adhesion_fraction, n_contact, ...), and with fields:
@@ -27,8 +29,10 @@ function r = solve(varargin)
 %
 %   Errors have the identifier creepwork:<status name>, e.g.
 %   creepwork:CW_ERR_INVALID_INPUT, and the library's message naming the
-%   input. Implausible values (a = 7.2 m, N in kN) warn with the
-%   identifier creepwork:implausibleUnits.
+%   input as the struct names it; a missing a, b or N is
+%   creepwork:missingInput. Implausible values (a = 7.2 m, N in kN, a gap in
+%   mm: the library's checks) warn with the identifier
+%   creepwork:implausibleUnits.
 %
 %   See also creepwork.solve_many, creepwork.Solver, creepwork.jacobian.
   [p, opt] = creepwork.inputs(varargin{:});

@@ -26,16 +26,3 @@ function test_errors()
   assert(c.CW_ERR_INVALID_INPUT == 2 && c.CW_OK == 0);
   disp('errors name their input');
 end
-
-function expect_error(f, id, pattern)
-  try
-    f();
-  catch err
-    assert(strcmp(err.identifier, id), sprintf('identifier %s, expected %s (%s)', ...
-                                               err.identifier, id, err.message));
-    assert(~isempty(regexp(err.message, pattern, 'once')), ...
-           sprintf('message "%s" does not match %s', err.message, pattern));
-    return;
-  end
-  error('test:noError', 'no error, expected %s', id);
-end

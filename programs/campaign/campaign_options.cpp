@@ -31,7 +31,7 @@ input (--in): a CSV file with a header, one contact per row, SI units;
 the columns of `creepwork wear` and the options of `creepwork solve`
 (doc/input-schema.md lists every column, unit and default):
   required  id (unique), a, b, N
-  optional  model fastsim|exact|calibrated, grid strips|uniform, nx, ny,
+  optional  model fastsim|exact|calibrated, grid kalker_strips|uniform, nx, ny,
             box_scale, mu, G, nu, L1, L2, L3 (m/Pa, instead of G and nu),
             xi_x, xi_y, phi (or spin), pressure (parabolic|elliptic),
             rolling_direction (+1|-1), spin_offset, flexibility_blending
@@ -41,7 +41,7 @@ the columns of `creepwork wear` and the options of `creepwork solve`
             path relative to FILE.csv's directory, or absolute) instead of
             a, b and the grid; N or approach (m, from the file's h = 0);
             model exact (the default there) or fastsim; normal_method
-            exact|semi-hertz; not with --wear
+            exact|semi_hertz; not with --wear
   wear      (with --wear; else ignored with a note) s0 (m, required),
             passes (axle passages or wheel revolutions) or distance (m,
             wheel: passes = distance / (2 pi R)), contact_angle (rad, default
@@ -82,8 +82,8 @@ the defaults are CONTACT's USETAB axes.
                     normalised creepages and spin (default 0, 1/7 .. 7, 7e5;
                     psi also negative)
   --model fastsim|exact|calibrated   --pressure parabolic|elliptic
-  --grid strips|uniform   --nx N   --ny N   --box-scale S
-                    the solver of every point (default fastsim, strips 20 x 20)
+  --grid kalker_strips|uniform   --nx N   --ny N   --box-scale S
+                    the solver of every point (default fastsim, kalker_strips 20 x 20)
 
 running:
   --threads N       OpenMP threads per rank (default: OMP_NUM_THREADS, else
@@ -126,7 +126,7 @@ std::vector<OptionSpec> specs()
             {"psi", K::text, {}},
             {"model", K::choice, {"fastsim", "exact", "calibrated"}},
             {"pressure", K::choice, {"parabolic", "elliptic"}},
-            {"grid", K::choice, {"strips", "uniform"}},
+            {"grid", K::choice, {"kalker_strips", "uniform"}},
             {"nx", K::integer, {}},
             {"ny", K::integer, {}},
             {"box-scale", K::number, {}},

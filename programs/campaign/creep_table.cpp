@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstring>
 
+#include "../cli/contact_inputs.hpp"
 #include "../cli/json.hpp"
 #include "atomic_file.hpp"
 #include "../cli/csv_text.hpp"
@@ -123,7 +124,7 @@ std::string table_json(const TableSpec& s, const TableSummary& summary)
     member("format", json_quote("creepwork creep-force table 1"), false);
     member("creepwork", json_quote(cw_version_string()), false);
     member("model", json_quote(model_name(s.model)), false);
-    member("grid", json_quote(s.grid.kind == CW_GRID_UNIFORM ? "uniform" : "strips"), false);
+    member("grid", json_quote(cwcli::grid_kind_name(s.grid.kind)), false);
     member("nx", std::to_string(s.grid.nx), false);
     member("ny", std::to_string(s.grid.ny), false);
     member("box_scale", number_text(s.grid.box_scale), false);

@@ -18,29 +18,6 @@ using cwcli::Input;
 using cwcli::RowSource;
 using Refusal = ContactSource::Refusal;
 
-// A gap file typed in millimetres reads as cells of 0.05-1 m and gaps of
-// tenths of a metre: the same bounds as `solve --gap` on the spacing, and
-// on the values' spread (a wheel-rail gap over its potential contact area
-// spans a fraction of a millimetre; 10 mm is far beyond any).
-std::vector<std::string> unit_warnings(const cw_grid& g, const std::vector<double>& h,
-                                       const std::string& path)
-{
-    std::vector<std::string> w;
-    const std::string head = "column gap_file: " + path + ": ";
-    const std::string tail = " is implausible for a wheel-rail contact";
-    const std::string mm = "the file is read in metres: millimetres typed as metres?)";
-    for (const auto& [name, d] : {std::pair<const char*, double>{"dx", g.dx}, {"dy", g.dy}})
-        if (d > 5e-3 || d < 1e-6)
-            w.push_back(head + "cells of " + name + " = " + cwcli::round_trip_text(d) + " m" +
-                        tail + " (0.05-1 mm; " + mm);
-    const auto [lo, hi] = std::minmax_element(h.begin(), h.end());
-    if (lo != h.end() && *hi - *lo > 1e-2)
-        w.push_back(head + "gaps spanning " + cwcli::round_trip_text(*hi - *lo) + " m" + tail +
-                    " (its gaps span a fraction of a millimetre over the potential contact "
-                    "area; " + mm);
-    return w;
-}
-
 // read_gap_file's message ("--gap: PATH:LINE: ...") for a row, which names
 // its column itself.
 std::string gap_file_message(const std::string& message)
@@ -72,7 +49,6 @@ const GapFiles::File& GapFiles::load(const std::string& path)
         cwcli::GapFile g = cwcli::read_gap_file(path);
         f.grid = g.grid;
         f.hash = gap_hash(g.grid, g.h);
-        f.warnings = unit_warnings(g.grid, g.h, path);
         f.h = std::make_shared<const std::vector<double>>(std::move(g.h));
         hash_ = fnv1a(&f.hash, sizeof f.hash, hash_ ? hash_ : fnv1a("gap files", 9));
     } catch (const cwcli::CliError& e) {
@@ -134,19 +110,12 @@ void read_gap_row(const RowSource& r, const std::string& dir, GapFiles& files, C
     const cwcli::ContactInputs in =
         cwcli::read_contact_inputs(r, start, cwcli::library_default_grid());
     cw_params p = in.params;
-    for (std::string& w : cwcli::plausibility_warnings(p, r)) warnings.push_back(std::move(w));
     if (r.has(Input::approach)) {
         p.normal_load = CW_NORMAL_APPROACH;
         p.approach = r.number(Input::approach);
-        if (std::fabs(p.approach) > 1e-3)
-            warnings.push_back(r.label(Input::approach) + " = " +
-                               cwcli::value_text(r, Input::approach, p.approach) +
-                               " is implausible for a wheel-rail contact: approaches are 10-200 "
-                               "um (millimetres typed as metres? " +
-                               r.units_note() + ")");
     }
     if (r.has(Input::normal_method) &&
-        r.choice(Input::normal_method, {"exact", "semi-hertz"}) == "semi-hertz")
+        r.choice(Input::normal_method, {"exact", "semi_hertz"}) == "semi_hertz")
         p.normal_method = CW_NORMAL_SEMI_HERTZ;
 
     namespace fs = std::filesystem;
@@ -158,11 +127,13 @@ void read_gap_row(const RowSource& r, const std::string& dir, GapFiles& files, C
     const GapFiles::File& f = files.load(path);
     if (!f.error.empty()) r.fail(gap, f.error, Refusal::unreadable);
     c.grid = f.grid;
-    p.gap = nullptr;
+    p.gap = f.h->data(); // the row's checks read the heights
     p.gap_len = f.h->size();
+    for (std::string& w : cwcli::plausibility_warnings(f.grid, p, r, path))
+        warnings.push_back(std::move(w));
+    p.gap = nullptr;
     c.params = p;
     c.gap_values = f.h;
-    warnings.insert(warnings.end(), f.warnings.begin(), f.warnings.end());
 }
 
 } // namespace cwcampaign

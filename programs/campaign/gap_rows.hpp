@@ -26,7 +26,6 @@ public:
         std::shared_ptr<const std::vector<double>> h; // [i + j*nx] [m]
         uint64_t hash = 0;
         std::string error; // read_gap_file's message ("" when the file is good)
-        std::vector<std::string> warnings; // its implausible units, "column gap_file: ..."
     };
     // path: as resolved (absolute).
     const File& load(const std::string& path);

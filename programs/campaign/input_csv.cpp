@@ -79,7 +79,7 @@ CampaignInput read_campaign_csv(const std::string& path, const WearRules* wear, 
                         cwcli::read_contact_inputs(r, defaults, default_grid);
                     c.params = contact.params;
                     c.grid = contact.grid;
-                    warnings = cwcli::plausibility_warnings(c.params, r);
+                    warnings = cwcli::plausibility_warnings(c.grid, c.params, r);
                 }
                 if (r.has(Input::s0)) s0 = r.number(Input::s0);
                 if (r.has(Input::distance)) {

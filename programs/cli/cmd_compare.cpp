@@ -52,7 +52,7 @@ void compare_default_contact(cw_params& p, cw_grid& g)
     g.kind = CW_GRID_UNIFORM;
     g.nx = 48;
     g.ny = 48;
-    g.box_scale = kExactBoxScale;
+    g.box_scale = model_default_grid(CW_MODEL_EXACT).box_scale;
 }
 
 // "contact: a = ..., b = ...": the contact solved, in --units, and where

@@ -13,6 +13,8 @@
 #include "output_dir.hpp"
 #include "patch_plots.hpp"
 #include "report.hpp"
+#include "surface_outputs.hpp"
+#include "surface_plots.hpp"
 
 namespace cwcli {
 
@@ -23,20 +25,24 @@ int command_solve(int argc, char** argv, int first)
                   grid_options()),
              output_options());
     specs.push_back({"jacobian", OptionKind::flag, {}});
-    specs = join(specs, gap_options());
+    specs = join(join(specs, gap_options()), surface_options());
     ParsedOptions opts;
     if (parse_or_help(specs, argc, argv, first, usage_solve(), opts)) return kExitOk;
     if (opts.has("gap")) return command_solve_gap(opts);
     reject_gap_options(opts);
     const ContactSetup c = read_contact(opts, library_default_params(), library_default_grid(),
                                         SizeAndLoad::required);
+    const SurfaceRequest surface = read_surface_request(opts, c.params.rolling_direction);
     const std::string out = opts.text("out", "");
     if (!out.empty()) check_output_target(out, "--out", opts.has("force"));
 
     ContactSolver solver(c.grid);
     const Solution s = solver.solve_full(c.params);
+    const SurfaceOutput post = compute_surface(solver.handle(), surface);
     print_notes(c);
+    for (const std::string& w : surface.warnings) std::fprintf(stderr, "creepwork: %s\n", w.c_str());
     JsonObject json = result_json(s.result, s.params, s.grid, c.units);
+    add_surface_json(json, post);
     double J[CW_JACOBIAN_LEN] = {};
     const bool jacobian = opts.has("jacobian");
     if (jacobian) {
@@ -57,12 +63,15 @@ int command_solve(int argc, char** argv, int first)
         if (plots)
             write_patch_pictures(dir.path(), s, c.units, describe_case(s, c.units),
                                  read_plot_style(opts, ForceSign::wheel));
+        if (plots && (post.temperature || post.damage))
+            write_surface_pictures(dir.path(), s, post, c.units);
         dir.commit();
     }
     if (opts.text("format", "text") == "json")
         std::cout << json.str(true) << "\n";
     else {
         print_result_text(std::cout, s.result, s.params, s.grid, c.units);
+        print_surface_text(std::cout, post);
         if (jacobian) print_jacobian_text(std::cout, J);
     }
     return kExitOk;

@@ -166,7 +166,7 @@ std::vector<State> read_states(const std::string& path, const ParsedOptions& o, 
                            ": creepwork wear solves every state on one grid (give the grid "
                            "columns or --grid, --nx, --ny)",
                        ContactSource::Refusal::unreadable);
-            std::vector<std::string> w = plausibility_warnings(s.params, r);
+            std::vector<std::string> w = plausibility_warnings(s.grid, s.params, r);
             for (std::string& text : wear_row_warnings(s.place.s0, s.place.angle, s.place.passes, r))
                 w.push_back(std::move(text));
             for (const std::string& text : w)

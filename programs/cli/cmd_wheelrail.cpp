@@ -31,16 +31,20 @@ std::vector<OptionSpec> wheelrail_options()
 {
     return {{"format", OptionKind::choice, {"text", "json"}},
             {"help", OptionKind::flag, {}},
-            {"model", OptionKind::choice, {"exact", "fast"}},
+            {"model", OptionKind::choice, {"exact", "fastsim"}},
             {"out", OptionKind::text, {}},
             {"force", OptionKind::flag, {}},
             {"no-plots", OptionKind::flag, {}},
             {"wheel-profile", OptionKind::text, {}},
             {"rail-profile", OptionKind::text, {}},
+            {"profile-unit", OptionKind::number, {}},
+            {"wheel-y-offset", OptionKind::number, {}},
+            {"rail-y-offset", OptionKind::number, {}},
+            {"mirror-wheel", OptionKind::flag, {}},
             {"y-shift", OptionKind::number, {}},
             {"yaw", OptionKind::number, {}},
             {"roll", OptionKind::number, {}},
-            {"Fz", OptionKind::number, {}},
+            {"Fz", OptionKind::number, {}, {"N"}},
             {"mu", OptionKind::number, {}},
             {"G", OptionKind::number, {}},
             {"nu", OptionKind::number, {}},
@@ -51,50 +55,36 @@ std::vector<OptionSpec> wheelrail_options()
             {"ds", OptionKind::number, {}}};
 }
 
-// The command's names for the inputs the shared plausibility checks know.
-class WheelrailNames : public InputNames {
-public:
-    std::string name(Input in) const override
-    {
-        return in == Input::N ? "--Fz" : std::string("--") + info(in).option;
-    }
-    std::string label(Input in) const override { return name(in); }
-    const Units& units() const override { return units_; }
-    std::string units_note() const override { return "creepwork wheelrail reads SI units"; }
-
-private:
-    Units units_ = Units::si();
-};
-
-std::vector<std::string> warnings(const ParsedOptions& o, const cw_wheelrail_params& p, double fz,
-                                  double V, double pitch_rate)
+// The library's findings (cw_wheelrail_check), each naming the option as
+// typed: "--y-shift = 0.03 m is implausible for a wheel-rail contact: ...".
+std::vector<std::string> warnings(const ParsedOptions& o, const cw_wheelrail* w)
 {
-    cw_params c = library_default_params();
-    c.a = c.b = 5e-3; // not an input here
-    c.normal_force = fz;
-    c.mu = p.mu;
-    c.G = p.G;
-    c.nu = p.nu;
-    std::vector<std::string> w = plausibility_warnings(c, WheelrailNames());
-    const auto warn = [&](const std::string& opt, double v, const std::string& why) {
-        w.push_back("--" + opt + " = " + round_trip_text(v) + " is implausible for a wheelset: " + why);
-    };
-    const double y = o.number("y-shift", 0.0);
-    if (std::fabs(y) > 0.05) warn("y-shift", y, "lateral shifts stay within +-20 mm (millimetres typed as metres?)");
-    for (const char* a : {"yaw", "roll"}) {
-        const double v = o.number(a, 0.0);
-        if (std::fabs(v) > 0.1) warn(a, v, "wheelset angles stay within +-0.05 rad (degrees or mrad typed as rad?)");
+    const std::pair<const char*, const char*> options[] = {
+        {"y", "y-shift"}, {"roll", "roll"}, {"yaw", "yaw"}, {"Fz", "Fz"},
+        {"vs", "V"},      {"vpitch", "pitch-rate"}, {"G", "G"}, {"mu", "mu"},
+        {"dx", "dx"},     {"ds", "ds"},     {"wheel_y_offset", "wheel-y-offset"}};
+    const std::pair<const char*, const char*> in_reasons[] = {
+        {"wheel_y_offset", "--wheel-y-offset"}, {"mirror_wheel", "--mirror-wheel"},
+        {"flange_back_position", "the flange-back position"}};
+    size_t n = 0;
+    if (cw_wheelrail_check(w, nullptr, 0, &n) != CW_OK) return {};
+    std::vector<cw_check> checks(n);
+    for (cw_check& c : checks) cw_check_init(&c);
+    if (n > 0 && cw_wheelrail_check(w, checks.data(), n, &n) != CW_OK) return {};
+    std::vector<std::string> out;
+    for (size_t k = 0; k < n; ++k) {
+        const cw_check& c = checks[k];
+        std::string name = std::string("the wheelset height z_ws"); // "z": an output
+        for (const auto& [input, option] : options)
+            if (c.input == std::string(input)) name = "--" + o.typed(option);
+        std::string reason = c.reason;
+        for (const auto& [field, text] : in_reasons)
+            for (size_t at = reason.find(field); at != std::string::npos; at = reason.find(field, at))
+                reason.replace(at, std::string(field).size(), text);
+        out.push_back(name + " = " + round_trip_text(c.value) + (*c.unit ? " " : "") + c.unit +
+                      " is implausible for a wheel-rail contact: " + reason);
     }
-    for (const char* d : {"dx", "ds"}) {
-        const double v = o.number(d, 0.2e-3);
-        if (v > 5e-3) warn(d, v, "patch elements are 0.1-2 mm (millimetres typed as metres?)");
-    }
-    if (V > 150.0) warn("V", V, "rail vehicles run below 150 m/s (km/h typed as m/s?)");
-    const double ratio = V > 0.0 ? -pitch_rate * p.nominal_radius / V : 1.0;
-    if (!(ratio > 0.5 && ratio < 2.0))
-        warn("pitch-rate", pitch_rate,
-             "a wheel rolling at V turns at about -V / 0.46 m rad/s (rpm typed as rad/s, or the sign?)");
-    return w;
+    return out;
 }
 
 JsonObject patch_json(const cw_wheelrail_patch& p)
@@ -103,13 +93,13 @@ JsonObject patch_json(const cw_wheelrail_patch& p)
     j.number("y_contact_rail", p.y_contact_rail)
         .number("z_contact_rail", p.z_contact_rail)
         .number("contact_angle", p.contact_angle)
-        .number("xi_x", p.cksi)
-        .number("xi_y", p.ceta)
-        .number("phi", p.cphi)
+        .number("cksi", p.cksi)
+        .number("ceta", p.ceta)
+        .number("cphi", p.cphi)
         .number("Fn", p.Fn)
-        .number("Fx", p.Fx)
-        .number("Fs", p.Fs)
-        .number("Mn", p.Mn)
+        .number("Fx_rail", p.Fx)
+        .number("Fs_rail", p.Fs)
+        .number("Mn_rail", p.Mn)
         .number("p_max", p.p_max)
         .integer("n_contact", p.n_contact)
         .integer("n_adhesion", p.n_adhesion)
@@ -130,7 +120,7 @@ JsonObject patch_json(const cw_wheelrail_patch& p)
 
 const char* model_description(const std::string& model)
 {
-    return model == "fast" ? "FASTSIM with the semi-Hertzian normal problem"
+    return model == "fastsim" ? "FASTSIM with the semi-Hertzian normal problem"
                            : "Kalker's exact theory";
 }
 
@@ -149,7 +139,7 @@ void print_text(std::ostream& out, const std::string& model, const cw_wheelrail_
         std::snprintf(line, sizeof line,
                       "%-6zu %10.4f %10.4f %10.4f  %-11.4e %-11.4e %-12.4e %-10.6g %-10.6g %-10.6g %-10.4g "
                       "%-10.5g %d/%d/%d\n",
-                      k + 1, 1e3 * p.y_contact_rail, 1e3 * p.z_contact_rail, p.contact_angle * 180.0 / 3.14159265358979323846,
+                      k, 1e3 * p.y_contact_rail, 1e3 * p.z_contact_rail, p.contact_angle * 180.0 / 3.14159265358979323846,
                       p.cksi, p.ceta, p.cphi, p.Fn, p.Fx, p.Fs, p.Mn, 1e-6 * p.p_max, p.n_contact,
                       p.n_adhesion, p.n_slip);
         out << line;
@@ -200,19 +190,28 @@ int command_wheelrail(int argc, char** argv, int first)
     p.nu = o.number("nu", p.nu);
     p.dx = o.number("dx", p.dx);
     p.ds = o.number("ds", p.ds);
+    p.profile_unit = o.number("profile-unit", p.profile_unit);
+    p.wheel_y_offset = o.number("wheel-y-offset", p.wheel_y_offset);
+    p.rail_y_offset = o.number("rail-y-offset", p.rail_y_offset);
+    p.mirror_wheel = o.has("mirror-wheel") ? 1 : 0;
     const std::string model = o.text("model", "exact");
-    if (model == "fast") {
+    if (model == "fastsim") {
         p.model = CW_MODEL_FASTSIM;
         p.normal_method = CW_NORMAL_SEMI_HERTZ;
     }
+    const std::string fz_name = "--" + o.typed("Fz");
     const double fz = o.number("Fz", 0.0);
     const double V = o.number("V", 1.0);
     const double pitch_rate = o.number("pitch-rate", -V / p.nominal_radius);
-    if (!(fz > 0.0)) throw usage_error("--Fz", "must be > 0 (N)");
+    if (!(fz > 0.0)) throw usage_error(fz_name, "must be > 0 (N)");
     if (!(V > 0.0)) throw usage_error("--V", "must be > 0 (m/s)");
     if (!(p.dx > 0.0 && p.dx <= 0.1)) throw usage_error("--dx", "must lie in (0, 0.1] m");
     if (!(p.ds > 0.0 && p.ds <= 0.1)) throw usage_error("--ds", "must lie in (0, 0.1] m");
-    for (const std::string& w : warnings(o, p, fz, V, pitch_rate)) std::cerr << "creepwork: warning: " << w << "\n";
+    if (!(p.profile_unit > 0.0 && p.profile_unit <= 1.0) && o.has("profile-unit"))
+        throw usage_error("--profile-unit", "must lie in (0, 1] m per unit of the files (1e-3: mm)");
+    for (const char* offset : {"wheel-y-offset", "rail-y-offset"})
+        if (!(std::fabs(o.number(offset, 0.0)) <= 1.0))
+            throw usage_error(std::string("--") + offset, "must lie within +-1 m");
     const std::string out = o.text("out", "");
     if (!out.empty()) check_output_target(out, "--out", o.has("force"));
     else
@@ -235,8 +234,12 @@ int command_wheelrail(int argc, char** argv, int first)
     m.vpitch = pitch_rate;
     cw_wheelrail_totals t;
     cw_wheelrail_totals_init(&t);
-    if (cw_wheelrail_solve(w.get(), &m, CW_WHEELRAIL_FORCE, fz, &t) != CW_OK)
-        throw CliError(kExitUsage, cw_wheelrail_last_error(w.get()));
+    const int solved = cw_wheelrail_solve(w.get(), &m, CW_WHEELRAIL_FORCE, fz, &t);
+    const std::string error = cw_wheelrail_last_error(w.get());
+    // What looks wrong is said also when the solve failed: it may be why.
+    for (const std::string& text : warnings(o, w.get()))
+        std::cerr << "creepwork: warning: " << text << "\n";
+    if (solved != CW_OK) throw CliError(kExitUsage, error);
     std::vector<cw_wheelrail_patch> patches(static_cast<size_t>(t.n_patches));
     for (size_t k = 0; k < patches.size(); ++k) {
         cw_wheelrail_patch_init(&patches[k]);
@@ -252,7 +255,13 @@ int command_wheelrail(int argc, char** argv, int first)
     JsonObject total;
     total.number("Fx", t.Fx).number("Fy", t.Fy).number("Fz", t.Fz);
     JsonObject json;
-    json.text("model", model).array("patches", list).object("total_rail", total).number("z_ws", t.z);
+    json.text("model", model)
+        .text("sign_convention",
+              "CONTACT's module 1: creepages cksi, ceta, cphi of the rail relative to the "
+              "wheel; forces and moments *_rail on the rail (doc/reference/conventions.md)")
+        .array("patches", list)
+        .object("total_rail", total)
+        .number("z_ws", t.z);
     if (!out.empty()) write_output(out, o, w.get(), p, t, model, json);
     if (o.text("format", "text") == "json")
         std::cout << json.str(true) << "\n";

@@ -1,6 +1,9 @@
 #include "contact_inputs.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <iterator>
 
 #include "options.hpp"
 
@@ -66,9 +69,26 @@ cw_grid library_default_grid()
     return g;
 }
 
+cw_grid model_default_grid(int model)
+{
+    cw_grid g;
+    cw_grid_init_model(&g, model);
+    return g;
+}
+
+double effective_tolerance(const cw_params& p)
+{
+    return p.tolerance > 0.0 ? p.tolerance : CW_DEFAULT_TOLERANCE;
+}
+
+int effective_max_iterations(const cw_params& p)
+{
+    return p.max_iterations > 0 ? p.max_iterations : CW_DEFAULT_MAX_ITERATIONS;
+}
+
 const char* grid_kind_name(int kind)
 {
-    return kind == CW_GRID_UNIFORM ? "uniform" : "strips";
+    return kind == CW_GRID_UNIFORM ? "uniform" : "kalker_strips";
 }
 
 const char* model_name(int model)
@@ -214,7 +234,7 @@ cw_grid read_grid(const Reader& r, const cw_grid& defaults, int model)
     const ContactSource& s = r.s;
     cw_grid g = defaults;
     if (s.has(Input::grid))
-        g.kind = s.choice(Input::grid, {"strips", "uniform"}) == "uniform" ? CW_GRID_UNIFORM
+        g.kind = s.choice(Input::grid, {"kalker_strips", "uniform"}) == "uniform" ? CW_GRID_UNIFORM
                                                                            : CW_GRID_KALKER_STRIPS;
     if (model == CW_MODEL_EXACT) {
         if (g.kind != CW_GRID_UNIFORM && s.has(Input::grid))
@@ -223,12 +243,13 @@ cw_grid read_grid(const Reader& r, const cw_grid& defaults, int model)
                      "then the default)",
                      Refusal::unreadable);
         if (g.kind != CW_GRID_UNIFORM) {
-            // CONTACT's layout (doc/theory/exact.md): the ellipse inside a
-            // box 1.2 times larger, two guard cells on each side at 20 across.
-            g.kind = CW_GRID_UNIFORM;
-            g.nx = static_cast<int>(std::lround(kExactBoxScale * g.nx));
-            g.ny = static_cast<int>(std::lround(kExactBoxScale * g.ny));
-            g.box_scale = kExactBoxScale;
+            // The library's default for the exact model, with the default
+            // grid's element size (its box is box_scale times the ellipse).
+            const cw_grid exact = model_default_grid(CW_MODEL_EXACT);
+            g.kind = exact.kind;
+            g.nx = static_cast<int>(std::lround(exact.box_scale * g.nx));
+            g.ny = static_cast<int>(std::lround(exact.box_scale * g.ny));
+            g.box_scale = exact.box_scale;
         }
     }
     if (s.has(Input::nx)) g.nx = s.integer(Input::nx);
@@ -293,48 +314,45 @@ ContactInputs read_contact_inputs(const ContactSource& s, const cw_params& defau
     return {p, read_grid(r, default_grid, p.model)};
 }
 
-std::vector<std::string> plausibility_warnings(const cw_params& p, const InputNames& names)
+std::vector<cw_check> library_checks(const cw_grid& grid, const cw_params* params, size_t count)
 {
+    size_t n = 0;
+    if (cw_params_check(&grid, params, count, nullptr, 0, &n) != CW_OK) return {};
+    std::vector<cw_check> checks(n);
+    for (cw_check& c : checks) cw_check_init(&c);
+    if (n > 0 && cw_params_check(&grid, params, count, checks.data(), n, &n) != CW_OK) return {};
+    checks.resize(n);
+    return checks;
+}
+
+std::vector<std::string> plausibility_warnings(const cw_grid& grid, const cw_params& p,
+                                               const InputNames& names,
+                                               const std::string& gap_path)
+{
+    // The library's inputs by the command's names; a gap's spacing and
+    // heights by the gap file's.
+    const std::pair<const char*, Input> inputs[] = {
+        {"a", Input::a},       {"b", Input::b},       {"normal_force", Input::N},
+        {"mu", Input::mu},     {"G", Input::G},       {"L1", Input::L1},
+        {"L2", Input::L2},     {"L3", Input::L3},     {"xi_x", Input::xi_x},
+        {"xi_y", Input::xi_y}, {"phi", Input::phi},   {"approach", Input::approach}};
     std::vector<std::string> w;
-    const auto warn = [&](Input in, double si, const std::string& why) {
-        w.push_back(names.label(in) + " = " + value_text(names, in, si) +
-                    " is implausible for a wheel-rail contact: " + why);
-    };
-    for (const auto& [in, v] : {std::pair<Input, double>{Input::a, p.a}, {Input::b, p.b}}) {
-        if (v > 0.1)
-            warn(in, v,
-                 "semi-axes are 1-20 mm (were millimetres typed as metres? " +
-                     names.units_note() + ")");
-        else if (v < 1e-4)
-            warn(in, v, "semi-axes are 1-20 mm, not below 0.1 mm");
+    for (const cw_check& c : library_checks(grid, &p, 1)) {
+        // Every command requires a, b and N, or takes documented defaults.
+        if (c.rule == CW_CHECK_DEFAULT_GEOMETRY) continue;
+        const std::string tail = " is implausible for a wheel-rail contact: " + std::string(c.reason);
+        const auto found = std::find_if(std::begin(inputs), std::end(inputs),
+                                        [&](const auto& i) { return c.input == std::string(i.first); });
+        if (found != std::end(inputs))
+            w.push_back(names.label(found->second) + " = " +
+                        value_text(names, found->second, c.value) + tail);
+        else { // dx, dy, gap: of the gap file, read in metres (to 6 digits: from its coordinates)
+            char value[32];
+            std::snprintf(value, sizeof value, "%.6g", c.value);
+            w.push_back(names.label(Input::gap_file) + ": " + gap_path + ": " + c.input + " = " +
+                        value + " " + c.unit + tail);
+        }
     }
-    if (p.normal_force > 1e7)
-        warn(Input::N, p.normal_force, "wheel loads are below 1 MN (kN typed as N?)");
-    else if (p.normal_force > 0.0 && p.normal_force < 1000.0)
-        // 1-999 is what a load in kN typed as N gives.
-        warn(Input::N, p.normal_force,
-             "wheel loads are 1-500 kN, not below 1 kN (kN typed where N are read?)");
-    if (p.mu > 1.5) warn(Input::mu, p.mu, "dry steel on steel is 0.1-0.6");
-    if (p.flexibility == CW_FLEX_FROM_MATERIAL) {
-        if (p.G < 1e6)
-            warn(Input::G, p.G, "steel is 8.2e10 Pa (a modulus in MPa or N/mm^2 typed as Pa?)");
-        else if (p.G > 1e12)
-            warn(Input::G, p.G, "steel is 8.2e10 Pa, no solid exceeds 1e12 Pa");
-    } else {
-        for (const auto& [in, v] : {std::pair<Input, double>{Input::L1, p.L1},
-                                    {Input::L2, p.L2},
-                                    {Input::L3, p.L3}})
-            if (v > 1e-10 || v < 1e-18)
-                warn(in, v,
-                     "Kalker's flexibilities of steel contacts are ~5e-14 m/Pa (mm^3/N are "
-                     "1e-9 m^3/N)");
-    }
-    for (const auto& [in, v] : {std::pair<Input, double>{Input::xi_x, p.xi_x}, {Input::xi_y, p.xi_y}})
-        if (std::fabs(v) > 0.5)
-            warn(in, v, "creepages are ratios, usually below 0.02 (a per cent typed as a ratio?)");
-    if (std::fabs(p.phi) > 50.0)
-        warn(Input::phi, p.phi,
-             "spin of wheel-rail contacts stays below ~20 1/m (1/mm typed as 1/m?)");
     return w;
 }
 

@@ -50,8 +50,6 @@ public:
     virtual std::string label(Input in) const = 0;
     // The units the values are given in (files: SI).
     virtual const Units& units() const = 0;
-    // How the source reads units, said after "millimetres typed as metres?".
-    virtual std::string units_note() const = 0;
 };
 
 // Where the values come from. has/number/... are asked only about inputs
@@ -89,14 +87,11 @@ struct ContactInputs {
     cw_grid grid;
 };
 
-// The grid the exact model gets when no grid is given: CONTACT's layout,
-// the uniform grid over kExactBoxScale times the semi-axes with
-// kExactBoxScale times the default element count (solve: 24 x 24, 20
-// elements across the ellipse and two guard cells on each side).
-constexpr double kExactBoxScale = 1.2;
-
 // Reads the inputs the source has over the defaults (SI) and checks them:
-// with model exact the grid defaults to the uniform one above, and the
+// with model exact the grid defaults to the library's
+// (cw_grid_init_model: CONTACT's layout, the uniform grid over 1.2 times
+// the semi-axes with 1.2 times the default grid's element count; solve:
+// 24 x 24), and the
 // inputs the exact model cannot use (strips, L1..L3, pressure,
 // flexibility_blending) are refused; tolerance and max_iterations need the
 // exact model; L1, L2, L3 go together and replace G and nu; every value in
@@ -105,12 +100,19 @@ constexpr double kExactBoxScale = 1.2;
 ContactInputs read_contact_inputs(const ContactSource& source, const cw_params& defaults,
                                   const cw_grid& default_grid);
 
-// Values that are valid but implausible for a wheel-rail contact (semi-axes
-// above 0.1 m, N below 1000 N, G below 1e6 Pa, creepage above 0.5, ...),
-// one warning each: "<label> = <value> <unit> is implausible ...: <why,
-// with the likely unit mistake>". The one check behind every door: solve,
-// sweep, compare, wear and campaign rows.
-std::vector<std::string> plausibility_warnings(const cw_params& p, const InputNames& names);
+// The library's plausibility checks of one contact on grid (cw_params_check:
+// semi-axes above 0.1 m, N below 1000 N, G below 1e6 Pa, creepage above
+// 0.5, a gap grid's spacing and heights that look like millimetres, ...),
+// one warning each: "<label> = <value in names' units> is implausible for a
+// wheel-rail contact: <why, with the likely mistake>"; a gap's spacing and
+// heights are named after the gap file at gap_path. The one check behind
+// every door: solve, sweep, compare, wear and campaign rows.
+std::vector<std::string> plausibility_warnings(const cw_grid& grid, const cw_params& p,
+                                               const InputNames& names,
+                                               const std::string& gap_path = "");
+
+// cw_params_check of count contacts on grid: every rule broken, once.
+std::vector<cw_check> library_checks(const cw_grid& grid, const cw_params* params, size_t count);
 
 // The same for a wear row's placement: s0 [m], contact angle [rad] and
 // passes.
@@ -129,8 +131,14 @@ std::string value_text(const InputNames& names, Input in, double value_si);
 // Library defaults (cw_params_init, cw_grid_init).
 cw_params library_default_params();
 cw_grid library_default_grid();
+cw_grid model_default_grid(int model); // cw_grid_init_model
 
-const char* grid_kind_name(int kind);    // "strips" | "uniform"
+// The exact model's tolerance and bound on Newton steps as solved: the
+// library's defaults where params give 0.
+double effective_tolerance(const cw_params& p);
+int effective_max_iterations(const cw_params& p);
+
+const char* grid_kind_name(int kind);    // "kalker_strips" | "uniform"
 const char* model_name(int model);       // "fastsim" | "exact" | "calibrated"
 const char* pressure_name(int pressure); // "parabolic" | "elliptic"
 

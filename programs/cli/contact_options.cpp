@@ -31,13 +31,13 @@ std::vector<OptionSpec> material_and_load_options()
 std::vector<OptionSpec> creepage_options()
 {
     using K = OptionKind;
-    return {{"xi-x", K::number, {}}, {"xi-y", K::number, {}}, {"spin", K::number, {}}};
+    return {{"xi-x", K::number, {}}, {"xi-y", K::number, {}}, {"spin", K::number, {}, {"phi"}}};
 }
 
 std::vector<OptionSpec> grid_options()
 {
     using K = OptionKind;
-    return {{"grid", K::choice, {"strips", "uniform"}},
+    return {{"grid", K::choice, {"kalker_strips", "uniform"}},
             {"nx", K::integer, {}},
             {"ny", K::integer, {}},
             {"box-scale", K::number, {}}};
@@ -56,7 +56,10 @@ OptionSource::OptionSource(const ParsedOptions& opts)
 {
 }
 
-std::string OptionSource::name(Input in) const { return std::string("--") + info(in).option; }
+std::string OptionSource::name(Input in) const
+{
+    return "--" + opts_.typed(info(in).option);
+}
 
 bool OptionSource::has(Input in) const { return *info(in).option && opts_.has(info(in).option); }
 
@@ -135,8 +138,10 @@ ContactSetup read_contact(const ParsedOptions& o, const cw_params& defaults,
     c.units = source.units();
     c.params = in.params;
     c.grid = size_and_load == SizeAndLoad::gap ? default_grid : in.grid;
-    for (const std::string& warning : plausibility_warnings(c.params, source))
-        c.notes.push_back("warning: " + warning);
+    // A gap's contact is checked with its file (command_solve_gap).
+    if (!gap)
+        for (const std::string& warning : plausibility_warnings(c.grid, c.params, source))
+            c.notes.push_back("warning: " + warning);
     if (size_and_load != SizeAndLoad::defaulted) note_defaults(o, c.params, c.units, c.notes);
     return c;
 }

@@ -47,7 +47,6 @@ public:
     std::string name(Input in) const override;
     std::string label(Input in) const override { return name(in); }
     const Units& units() const override { return units_; }
-    std::string units_note() const override { return "the CLI reads SI unless --units paper"; }
     bool has(Input in) const override;
     double number(Input in) const override;
     int integer(Input in) const override;

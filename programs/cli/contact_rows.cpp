@@ -46,12 +46,6 @@ std::vector<Input> required(RowFile kind, bool gap_row = false)
     return r;
 }
 
-std::string lower(std::string s)
-{
-    for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    return s;
-}
-
 std::string joined(const std::vector<std::string>& names, const char* separator = ", ")
 {
     std::string out;
@@ -234,9 +228,8 @@ int RowSource::integer(Input in) const
 std::string RowSource::choice(Input in, const std::vector<std::string>& choices) const
 {
     require(in);
-    const std::string v = lower(text(in));
-    for (const std::string& c : choices)
-        if (v == c) return c;
+    const std::string match = match_choice(text(in), choices);
+    if (!match.empty()) return match;
     const std::string hint = nearest(text(in), choices);
     fail(name(in), "'" + text(in) + "' is not one of " + joined(choices, "|") +
                        (hint.empty() ? std::string() : "; did you mean " + hint + "?"),

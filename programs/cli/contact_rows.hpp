@@ -99,7 +99,6 @@ public:
     std::string name(Input in) const override { return header_.spelling(in); }
     std::string label(Input in) const override { return "column " + name(in); }
     const Units& units() const override;
-    std::string units_note() const override { return "files are read in SI"; }
     bool has(Input in) const override { return !text(in).empty(); }
     double number(Input in) const override;
     int integer(Input in) const override;

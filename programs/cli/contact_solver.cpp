@@ -15,8 +15,6 @@ ContactSolver::ContactSolver(const cw_grid& grid) : grid_(grid)
     cw_solver_grid_size(solver_, &nx_, &ny_);
 }
 
-namespace {
-
 // The library names its struct fields; say which options set them.
 std::string options_named_in(const std::string& message)
 {
@@ -27,7 +25,12 @@ std::string options_named_in(const std::string& message)
         {"xi_x", "--xi-x"}, {"xi_y", "--xi-y"}, {"phi", "--spin"},
         {"nx", "--nx"},     {"ny", "--ny"},     {"box_scale", "--box-scale"},
         {"model", "--model"}, {"tolerance", "--tolerance"},
-        {"max_iterations", "--max-iterations"}, {"spin_offset", "--spin-offset"}};
+        {"max_iterations", "--max-iterations"}, {"spin_offset", "--spin-offset"},
+        {"T0_1", "--T0-1"}, {"T0_2", "--T0-2"}, {"heat_capacity_1", "--heat-capacity-1"},
+        {"heat_capacity_2", "--heat-capacity-2"}, {"conductivity_1", "--conductivity-1"},
+        {"conductivity_2", "--conductivity-2"}, {"density_1", "--density-1"},
+        {"density_2", "--density-2"}, {"rolling_speed", "--speed"},
+        {"discretisation", "--temperature-discretisation"}, {"k_yield", "--k-yield"}};
     const auto is_word = [](char c) {
         return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
     };
@@ -47,8 +50,6 @@ std::string options_named_in(const std::string& message)
     }
     return options.empty() ? "" : " (options " + options + ")";
 }
-
-} // namespace
 
 void ContactSolver::check(int status, const char* call) const
 {

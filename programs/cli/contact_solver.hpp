@@ -44,6 +44,8 @@ public:
 
     int nx() const { return nx_; }
     int ny() const { return ny_; }
+    // The library's handle, for the post-processors that read a solver.
+    const cw_solver* handle() const { return solver_; }
 
 private:
     void check(int status, const char* call) const;
@@ -61,6 +63,10 @@ Solution read_solution(const cw_solver* solver, const cw_params& params, const c
 
 // The separate contact patches of a solver's last solve (cw_solver_get_patches).
 std::vector<cw_patch> read_patches(const cw_solver* solver);
+
+// " (options --a, --N)": the options that set the struct fields a library
+// message names ("" when it names none).
+std::string options_named_in(const std::string& message);
 
 // Spin creepage felt by each element: phi where it slips, 0 in adhesion (no
 // relative motion) and outside -- the paper's "spin distribution" (Fig. 6).

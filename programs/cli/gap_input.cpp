@@ -13,6 +13,8 @@
 #include "contact_solver.hpp"
 #include "csv_output.hpp"
 #include "gap_plots.hpp"
+#include "surface_outputs.hpp"
+#include "surface_plots.hpp"
 #include "json.hpp"
 #include "output_dir.hpp"
 #include "report.hpp"
@@ -24,7 +26,7 @@ std::vector<OptionSpec> gap_options()
     using K = OptionKind;
     return {{"gap", K::text, {}},
             {"approach", K::number, {}},
-            {"normal-method", K::choice, {"exact", "semi-hertz"}}};
+            {"normal-method", K::choice, {"exact", "semi_hertz"}}};
 }
 
 namespace {
@@ -64,6 +66,40 @@ std::vector<double> axis_of(std::vector<double> v, double tol)
     for (size_t k = 0; k < values.size(); ++k)
         if (2 * counts[k] >= most) out.push_back(values[k]);
     return out;
+}
+
+// A regular axis through the values: its first value, the spacing (on the
+// median step between neighbours, so that shifted or missing values do not
+// set it) and the number of values to the last one.
+struct Axis {
+    double x0 = 0, d = 0;
+    int n = 0;
+};
+
+Axis regular_axis(const std::vector<double>& values)
+{
+    Axis a;
+    a.n = static_cast<int>(values.size());
+    if (values.size() < 2) return a;
+    std::vector<double> steps;
+    for (size_t k = 1; k < values.size(); ++k) steps.push_back(values[k] - values[k - 1]);
+    std::nth_element(steps.begin(), steps.begin() + steps.size() / 2, steps.end());
+    const double step = steps[steps.size() / 2];
+    a.x0 = values.front();
+    // The spacing from the first to the farthest value on that step: the
+    // printed coordinates give it best over the longest run.
+    double last = a.x0;
+    long k_last = 0;
+    for (double v : values) {
+        const double t = (v - a.x0) / step;
+        if (std::fabs(t - std::lround(t)) < 1e-3) {
+            last = v;
+            k_last = std::lround(t);
+        }
+    }
+    a.d = (last - a.x0) / static_cast<double>(k_last);
+    a.n = static_cast<int>(std::lround((values.back() - a.x0) / a.d)) + 1;
+    return a;
 }
 
 // Index of v on the regular axis x0 + k d (n values), or -1 if it is off.
@@ -128,8 +164,9 @@ GapFile read_gap_file(const std::string& path)
         return v.empty() ? 0.0
                          : *std::max_element(v.begin(), v.end()) - *std::min_element(v.begin(), v.end());
     };
-    const std::vector<double> ux = axis_of(xs, 1e-9 * span(xs)), uy = axis_of(ys, 1e-9 * span(ys));
-    const int nx = static_cast<int>(ux.size()), ny = static_cast<int>(uy.size());
+    const Axis ax = regular_axis(axis_of(xs, 1e-9 * span(xs)));
+    const Axis ay = regular_axis(axis_of(ys, 1e-9 * span(ys)));
+    const int nx = ax.n, ny = ay.n;
     if (nx < CW_MIN_GAP_CELLS || ny < CW_MIN_GAP_CELLS)
         throw usage_error("--gap", path + ": " + std::to_string(nx) + " x " + std::to_string(ny) +
                                        " cells; a gap grid needs at least 3 x 3");
@@ -142,10 +179,10 @@ GapFile read_gap_file(const std::string& path)
     g.grid.kind = CW_GRID_GAP;
     g.grid.nx = nx;
     g.grid.ny = ny;
-    g.grid.x0 = ux.front();
-    g.grid.y0 = uy.front();
-    g.grid.dx = (ux.back() - ux.front()) / (nx - 1);
-    g.grid.dy = (uy.back() - uy.front()) / (ny - 1);
+    g.grid.x0 = ax.x0;
+    g.grid.y0 = ay.x0;
+    g.grid.dx = ax.d;
+    g.grid.dy = ay.d;
     const size_t n = static_cast<size_t>(nx) * ny;
     g.h.assign(n, 0.0);
     std::vector<long> seen(n, 0);
@@ -154,10 +191,9 @@ GapFile read_gap_file(const std::string& path)
         const int j = on_axis(c.y, g.grid.y0, g.grid.dy, ny);
         if (i < 0 || j < 0)
             throw usage_error("--gap", at(c.line) + (i < 0 ? "x_m = " + show(c.x) : "y_m = " + show(c.y)) +
-                                           " is not on a regular grid (the file's " +
+                                           " is off the regular grid of the other cells (their " +
                                            (i < 0 ? "x" : "y") + " values run from " +
-                                           show(i < 0 ? g.grid.x0 : g.grid.y0) + " in " +
-                                           std::to_string(i < 0 ? nx - 1 : ny - 1) + " steps of " +
+                                           show(i < 0 ? g.grid.x0 : g.grid.y0) + " in steps of " +
                                            show(i < 0 ? g.grid.dx : g.grid.dy) + ")");
         const size_t k = static_cast<size_t>(i) + static_cast<size_t>(nx) * j;
         if (seen[k])
@@ -273,7 +309,7 @@ JsonObject gap_json(const Solution& s, const std::vector<cw_patch>& patches, con
         in.number("approach", u.from_si(Quantity::length, p.approach));
     else
         in.number("N", u.from_si(Quantity::force, p.normal_force));
-    in.text("normal_method", p.normal_method == CW_NORMAL_SEMI_HERTZ ? "semi-hertz" : "exact")
+    in.text("normal_method", p.normal_method == CW_NORMAL_SEMI_HERTZ ? "semi_hertz" : "exact")
         .number("mu", p.mu)
         .number("G", u.from_si(Quantity::stress, p.G))
         .number("nu", p.nu)
@@ -281,8 +317,8 @@ JsonObject gap_json(const Solution& s, const std::vector<cw_patch>& patches, con
         .number("xi_y", p.xi_y)
         .number("spin", u.from_si(Quantity::spin, p.phi))
         .integer("rolling_direction", p.rolling_direction)
-        .number("tolerance", p.tolerance)
-        .integer("max_iterations", p.max_iterations);
+        .number("tolerance", effective_tolerance(p))
+        .integer("max_iterations", effective_max_iterations(p));
     j.object("input", in);
     JsonObject unit_of;
     unit_of.text("Fx", u.label(Quantity::force))
@@ -336,10 +372,14 @@ void print_gap_text(std::ostream& os, const Solution& s, const std::vector<cw_pa
            << val(e.v, e.q) << "\n";
     os << "  elements        = " << r.n_contact << " (" << r.n_adhesion << " adhesion, " << r.n_slip
        << " slip) in " << r.n_patches << (r.n_patches == 1 ? " patch\n" : " patches\n");
+    // A centroid on an axis of symmetry comes out as rounding noise
+    // (-4.9e-19 m): shown as 0 below a millionth of a cell.
+    const double noise = 1e-6 * std::min(s.grid.dx, s.grid.dy);
+    const auto coordinate = [&](double v) { return val(std::fabs(v) < noise ? 0.0 : v, Quantity::length); };
     for (size_t k = 0; k < patches.size(); ++k) {
         const cw_patch& q = patches[k];
-        os << "  patch " << k << "  at (" << val(q.x_centroid, Quantity::length) << ", "
-           << val(q.y_centroid, Quantity::length) << "): " << q.n_contact << " elements, Fn = "
+        os << "  patch " << k << "  at (" << coordinate(q.x_centroid) << ", "
+           << coordinate(q.y_centroid) << "): " << q.n_contact << " elements, Fn = "
            << val(q.Fn, Quantity::force) << ", Fx = " << val(q.Fx, Quantity::force)
            << ", Fy = " << val(q.Fy, Quantity::force) << ", Mz = " << val(q.Mz, Quantity::moment)
            << ", p_max = " << val(q.p_max, Quantity::stress) << "\n";
@@ -363,11 +403,6 @@ int command_solve_gap(const ParsedOptions& opts)
                                   SizeAndLoad::gap);
     const std::string file = opts.text("gap", "");
     GapFile g = read_gap_file(file);
-    for (const auto& [name, d] : {std::pair<const char*, double>{"dx", g.grid.dx}, {"dy", g.grid.dy}})
-        if (d > 5e-3 || d < 1e-6)
-            c.notes.push_back("warning: --gap: cells of " + std::string(name) + " = " + show(d) +
-                              " m are implausible for a wheel-rail contact (0.05-1 mm; the file "
-                              "is read in metres: millimetres typed as metres?)");
     cw_params& p = c.params;
     p.model = opts.text("model", "exact") == "fastsim" ? CW_MODEL_FASTSIM : CW_MODEL_EXACT;
     p.gap = g.h.data();
@@ -375,21 +410,22 @@ int command_solve_gap(const ParsedOptions& opts)
     if (opts.has("approach")) {
         p.normal_load = CW_NORMAL_APPROACH;
         p.approach = c.units.to_si(Quantity::length, opts.number("approach", 0.0));
-        if (std::fabs(p.approach) > 1e-3)
-            c.notes.push_back("warning: --approach = " + show(opts.number("approach", 0.0)) + " " +
-                              c.units.label(Quantity::length) +
-                              " is implausible for a wheel-rail contact: approaches are 10-200 "
-                              "um (millimetres typed as metres?)");
     }
-    if (opts.text("normal-method", "exact") == "semi-hertz") p.normal_method = CW_NORMAL_SEMI_HERTZ;
+    if (opts.text("normal-method", "exact") == "semi_hertz") p.normal_method = CW_NORMAL_SEMI_HERTZ;
+    for (const std::string& w : plausibility_warnings(g.grid, p, OptionSource(opts), file))
+        c.notes.push_back("warning: " + w);
+    const SurfaceRequest surface = read_surface_request(opts, p.rolling_direction);
     const std::string out = opts.text("out", "");
     if (!out.empty()) check_output_target(out, "--out", opts.has("force"));
 
     ContactSolver solver(g.grid);
     const Solution s = solver.solve_full(p);
     const std::vector<cw_patch> patches = solver.patches();
+    const SurfaceOutput post = compute_surface(solver.handle(), surface);
     print_notes(c);
+    for (const std::string& w : surface.warnings) std::fprintf(stderr, "creepwork: %s\n", w.c_str());
     JsonObject json = gap_json(s, patches, file, c.units);
+    add_surface_json(json, post);
     double J[CW_JACOBIAN_LEN] = {};
     const bool jacobian = opts.has("jacobian");
     if (jacobian) {
@@ -410,12 +446,15 @@ int command_solve_gap(const ParsedOptions& opts)
         if (plots)
             write_gap_pictures(dir.path(), s, g.h, patches, file, c.units,
                                read_plot_style(opts, ForceSign::wheel));
+        if (plots && (post.temperature || post.damage))
+            write_surface_pictures(dir.path(), s, post, c.units);
         dir.commit();
     }
     if (opts.text("format", "text") == "json")
         std::cout << json.str(true) << "\n";
     else {
         print_gap_text(std::cout, s, patches, file, c.units);
+        print_surface_text(std::cout, post);
         if (jacobian) print_jacobian_text(std::cout, J);
     }
     return kExitOk;

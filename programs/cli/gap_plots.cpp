@@ -57,38 +57,6 @@ std::vector<double> write_gap_data(const std::string& path, const Solution& s,
     return drawn;
 }
 
-// outline.dat: the contact's boundary as the cell edges between a contact
-// cell and a cell out of contact (or the grid's edge), one segment per block.
-void write_outline_data(const std::string& path, const Solution& s, const Units& u)
-{
-    const double k = u.plot_factor(Quantity::length);
-    const cw_grid& g = s.grid;
-    const auto inside = [&s](int i, int j) {
-        return i >= 0 && j >= 0 && i < s.nx && j < s.ny &&
-               s.state[static_cast<size_t>(i) + static_cast<size_t>(s.nx) * j] !=
-                   CW_STATE_EXTERIOR;
-    };
-    std::ofstream f(path);
-    f << "# x y [" << u.plot_label(Quantity::length)
-      << "]: the edges between contact cells and the rest, one segment per block\n";
-    char buf[96];
-    const auto segment = [&](double xa, double ya, double xb, double yb) {
-        std::snprintf(buf, sizeof buf, "%.9g %.9g\n%.9g %.9g\n\n", k * xa, k * ya, k * xb, k * yb);
-        f << buf;
-    };
-    for (int j = 0; j < s.ny; ++j)
-        for (int i = 0; i < s.nx; ++i) {
-            if (!inside(i, j)) continue;
-            const double xl = g.x0 + (i - 0.5) * g.dx, xr = xl + g.dx;
-            const double yl = g.y0 + (j - 0.5) * g.dy, yr = yl + g.dy;
-            if (!inside(i - 1, j)) segment(xl, yl, xl, yr);
-            if (!inside(i + 1, j)) segment(xr, yl, xr, yr);
-            if (!inside(i, j - 1)) segment(xl, yl, xr, yl);
-            if (!inside(i, j + 1)) segment(xl, yr, xr, yr);
-        }
-    if (!f) throw CliError(kExitFailure, "cannot write " + path);
-}
-
 // patches.dat: one row per separate patch, in the library's order (the
 // numbers of result.json's "patches" and of the text output).
 void write_patches_data(const std::string& path, const std::vector<cw_patch>& patches,
@@ -193,6 +161,38 @@ std::string gap_map_commands(const Solution& s, const std::vector<double>& h, co
 }
 
 } // namespace
+
+// outline.dat: the contact's boundary as the cell edges between a contact
+// cell and a cell out of contact (or the grid's edge), one segment per block.
+void write_outline_data(const std::string& path, const Solution& s, const Units& u)
+{
+    const double k = u.plot_factor(Quantity::length);
+    const cw_grid& g = s.grid;
+    const auto inside = [&s](int i, int j) {
+        return i >= 0 && j >= 0 && i < s.nx && j < s.ny &&
+               s.state[static_cast<size_t>(i) + static_cast<size_t>(s.nx) * j] !=
+                   CW_STATE_EXTERIOR;
+    };
+    std::ofstream f(path);
+    f << "# x y [" << u.plot_label(Quantity::length)
+      << "]: the edges between contact cells and the rest, one segment per block\n";
+    char buf[96];
+    const auto segment = [&](double xa, double ya, double xb, double yb) {
+        std::snprintf(buf, sizeof buf, "%.9g %.9g\n%.9g %.9g\n\n", k * xa, k * ya, k * xb, k * yb);
+        f << buf;
+    };
+    for (int j = 0; j < s.ny; ++j)
+        for (int i = 0; i < s.nx; ++i) {
+            if (!inside(i, j)) continue;
+            const double xl = g.x0 + (i - 0.5) * g.dx, xr = xl + g.dx;
+            const double yl = g.y0 + (j - 0.5) * g.dy, yr = yl + g.dy;
+            if (!inside(i - 1, j)) segment(xl, yl, xl, yr);
+            if (!inside(i + 1, j)) segment(xr, yl, xr, yr);
+            if (!inside(i, j - 1)) segment(xl, yl, xr, yl);
+            if (!inside(i, j + 1)) segment(xl, yr, xr, yr);
+        }
+    if (!f) throw CliError(kExitFailure, "cannot write " + path);
+}
 
 GridMaps write_grid_maps(const std::string& dir, const GridMapFiles& files, const Solution& s,
                          const std::vector<cw_patch>& patches, const Units& u,

@@ -32,6 +32,11 @@ struct GridMapFiles {
     std::string label = "patch";
 };
 
+// outline.dat: the contact's boundary on a gap grid as the cell edges between
+// a contact cell and a cell out of contact (or the grid's edge), one segment
+// per block, in the picture units of u.
+void write_outline_data(const std::string& path, const Solution& s, const Units& u);
+
 // One map: its own picture's name and its gnuplot commands.
 struct GridPanel {
     std::string png, commands;

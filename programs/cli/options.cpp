@@ -8,6 +8,8 @@
 #include <cmath>
 #include <cstdlib>
 
+#include <creepwork/creepwork.h>
+
 #include "cli_error.hpp"
 
 namespace cwcli {
@@ -69,7 +71,25 @@ size_t edit_distance(const std::string& a, const std::string& b)
     return d[a.size()][b.size()];
 }
 
+// The library's spelling of a name typed another way (cw_input_name:
+// "fast" -> "fastsim", "Semi-Hertz" -> "semi_hertz").
+std::string canonical(const std::string& typed)
+{
+    char name[128];
+    return cw_input_name(typed.c_str(), name, sizeof name) == CW_OK ? std::string(name) : typed;
+}
+
 } // namespace
+
+std::string match_choice(const std::string& typed, const std::vector<std::string>& choices)
+{
+    for (const std::string& c : choices)
+        if (folded(c) == folded(typed)) return c;
+    const std::string name = canonical(typed);
+    for (const std::string& c : choices)
+        if (canonical(c) == name) return c;
+    return "";
+}
 
 std::string nearest(const std::string& word, const std::vector<std::string>& candidates)
 {
@@ -93,14 +113,16 @@ const OptionSpec* find_spec(const std::vector<OptionSpec>& specs, const std::str
 {
     for (const OptionSpec& s : specs)
         if (s.name == name) return &s;
+    for (const OptionSpec& s : specs)
+        for (const std::string& alias : s.aliases)
+            if (alias == name) return &s;
     return nullptr;
 }
 
-// Checks value against the spec; a choice is returned in the spec's own
-// spelling (choices are matched without regard to case).
-std::string check_value(const OptionSpec& spec, const std::string& value)
+// Checks value against the spec (opt: the option as typed); a choice is
+// returned in the spec's own spelling (match_choice).
+std::string check_value(const OptionSpec& spec, const std::string& opt, const std::string& value)
 {
-    const std::string opt = "--" + spec.name;
     double d = 0.0;
     int i = 0;
     switch (spec.kind) {
@@ -113,11 +135,10 @@ std::string check_value(const OptionSpec& spec, const std::string& value)
             throw usage_error(opt, "expected an integer, got '" + value + "'");
         break;
     case OptionKind::choice: {
+        const std::string match = match_choice(value, spec.choices);
+        if (!match.empty()) return match;
         std::string list;
-        for (const std::string& c : spec.choices) {
-            if (folded(c) == folded(value)) return c;
-            list += (list.empty() ? "" : "|") + c;
-        }
+        for (const std::string& c : spec.choices) list += (list.empty() ? "" : "|") + c;
         const std::string hint = nearest(value, spec.choices);
         throw usage_error(opt, "expected one of " + list + ", got '" + value + "'" +
                                    (hint.empty() ? "" : " (did you mean " + hint + "?)"));
@@ -157,7 +178,11 @@ ParsedOptions parse_options(const std::vector<OptionSpec>& specs, int argc, char
                                                (hint.empty() ? std::string(" (see --help)")
                                                              : "; did you mean --" + hint + "?"));
         }
-        if (parsed.has(name)) throw usage_error("--" + name, "given more than once");
+        if (parsed.has(spec->name))
+            throw usage_error("--" + name, parsed.typed(spec->name) == name
+                                               ? "given more than once"
+                                               : "given twice, as --" + parsed.typed(spec->name) +
+                                                     " and --" + name);
         if (spec->kind == OptionKind::flag) {
             if (inline_value) throw usage_error("--" + name, "takes no value");
             value = "1";
@@ -167,7 +192,8 @@ ParsedOptions parse_options(const std::vector<OptionSpec>& specs, int argc, char
                 throw usage_error("--" + name, "missing value");
             value = argv[++k];
         }
-        parsed.values_[name] = check_value(*spec, value);
+        parsed.values_[spec->name] = check_value(*spec, "--" + name, value);
+        parsed.typed_[spec->name] = name;
     }
     return parsed;
 }
@@ -186,6 +212,12 @@ int ParsedOptions::integer(const std::string& name, int fallback) const
     int v = fallback;
     if (it != values_.end()) parse_int(it->second, v);
     return v;
+}
+
+std::string ParsedOptions::typed(const std::string& name) const
+{
+    auto it = typed_.find(name);
+    return it != typed_.end() ? it->second : name;
 }
 
 std::string ParsedOptions::text(const std::string& name, const std::string& fallback) const

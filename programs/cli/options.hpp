@@ -20,6 +20,7 @@ struct OptionSpec {
     std::string name; // without the leading "--"
     OptionKind kind;
     std::vector<std::string> choices; // OptionKind::choice only
+    std::vector<std::string> aliases = {}; // other names of the option (--phi for --spin)
 };
 
 class ParsedOptions {
@@ -28,13 +29,22 @@ public:
     double number(const std::string& name, double fallback) const;
     int integer(const std::string& name, int fallback) const;
     std::string text(const std::string& name, const std::string& fallback) const;
+    // The option's name as the user typed it (an alias, or name itself).
+    std::string typed(const std::string& name) const;
 
     // Filled by parse_options; values are already checked against their kind.
     std::map<std::string, std::string> values_;
+    std::map<std::string, std::string> typed_; // spec name -> the name typed
 };
 
 // Parses argv[first..argc). Throws CliError(kExitUsage) naming the option.
 ParsedOptions parse_options(const std::vector<OptionSpec>& specs, int argc, char** argv, int first);
+
+// The choice typed names, in the choice's spelling, or "": not case
+// sensitive, "-" for "_", and the library's other spellings of an
+// enumeration value (cw_input_name: fast for fastsim, strips for
+// kalker_strips).
+std::string match_choice(const std::string& typed, const std::vector<std::string>& choices);
 
 // The candidate nearest to word (edit distance, ignoring case and '_' vs
 // '-'), or "" when none is within a third of word's length (at least 1).

@@ -56,12 +56,13 @@ JsonObject input_json(const cw_params& p, const cw_grid& g, const Units& u)
         .number("xi_x", p.xi_x)
         .number("xi_y", p.xi_y)
         .number("spin", u.from_si(Quantity::spin, p.phi))
-        .text("flexibility", p.flexibility == CW_FLEX_GIVEN ? "given" : "material");
+        .text("flexibility", p.flexibility == CW_FLEX_GIVEN ? "given" : "from_material");
     if (p.flexibility != CW_FLEX_GIVEN)
         in.number("G", u.from_si(Quantity::stress, p.G)).number("nu", p.nu);
     in.text("model", model_name(p.model));
     if (p.model == CW_MODEL_EXACT)
-        in.number("tolerance", p.tolerance).integer("max_iterations", p.max_iterations);
+        in.number("tolerance", effective_tolerance(p))
+            .integer("max_iterations", effective_max_iterations(p));
     // The exact model ignores params.pressure: it solves its own normal
     // problem; the calibrated model uses its own law (doc/theory/calibrated.md:
     // parabolic blended towards Hertz's as the slip grows).

@@ -75,8 +75,8 @@ model:
                     CONTACT's layout: the uniform grid, 24 x 24 elements over
                     1.2 times the semi-axes (20 elements across the ellipse,
                     two guard cells on each side); --nx, --ny, --box-scale
-                    override (at most 256 per direction); --grid strips is an
-                    error. calibrated: the simplified theory calibrated to
+                    override (at most 256 per direction); --grid
+                    kalker_strips is an error. calibrated: the simplified theory calibrated to
                     the exact one (doc/theory/calibrated.md): needs G and nu,
                     its own pressure law (parabolic, blended towards Hertz's
                     as the slip grows; no --pressure).
@@ -99,7 +99,7 @@ contact (lengths, forces, stresses in the --units system):
                     (replace G and nu; legacy codes give one L: pass it thrice)
   --xi-x XI         longitudinal creepage (-)
   --xi-y XI         lateral creepage (-)
-  --spin PHI        spin creepage (1/length)
+  --spin PHI        spin creepage (1/length); --phi is the same option
   --rolling-direction +1|-1
                     +1 (default): rolling towards +x, leading edge at x = +a
   --pressure parabolic|elliptic
@@ -131,14 +131,38 @@ contact of any shape (instead of --a, --b and the grid options):
                     one); Mz about the file's origin
   --approach A      with --gap, instead of --N: the approach from the file's
                     h = 0 (length)
-  --normal-method exact|semi-hertz
+  --normal-method exact|semi_hertz
                     with --gap: the half-space normal problem (default) or,
                     fast, a Hertzian semi-ellipse per row (Sichani et al.)
 grid:
-  --grid strips|uniform
-                    Kalker's strip grid (default) or CONTACT's uniform grid
+  --grid kalker_strips|uniform
+                    Kalker's strip grid (default; or strips) or CONTACT's
+                    uniform grid
   --nx N --ny N     elements per strip and number of strips (1 .. 1000)
   --box-scale S     uniform grid box [-S a, S a] x [-S b, S b], S in [1, 100]
+surface temperature and damage (SI whatever --units; body 1 is the rail,
+body 2 the wheel):
+  --temperature     also the steady flash temperature of both surfaces from
+                    the frictional power (doc/theory/temperature.md); needs
+                    --speed
+  --speed V         the rolling speed [m/s] of --temperature
+  --T0-1 T --T0-2 T bulk temperature of the rail and of the wheel [degC]
+                    (default 20)
+  --heat-capacity-1 C --heat-capacity-2 C
+                    specific heat capacity [J/(kg K)] (default 450, steel)
+  --conductivity-1 L --conductivity-2 L
+                    thermal conductivity [W/(m K)] (default 50, steel)
+  --density-1 R --density-2 R
+                    density [kg/m^3] (default 7850, steel)
+  --temperature-discretisation consistent|contact
+                    consistent (default): the exact integral of the heat of
+                    each element, from the energy-consistent work map, one
+                    surface temperature in contact; contact: CONTACT's
+                    discretisation (its element's own term runs hot, of
+                    order sqrt(dx)), for comparison with CONTACT
+  --k-yield K       also the damage indices with the surface shear yield
+                    stress K [Pa] (doc/theory/damage.md): the RCF index per
+                    element, FI_surf, T_gamma and the WLRM damage per pass
 units:
   --units si|paper  si (default): m, N, Pa, 1/m, N m, J/m.
                     paper: the units the paper prints -- ft, lbf, 1/ft,
@@ -186,6 +210,12 @@ JSON keys (stable; values in the --units system):
   the simplified models).
   With --model exact, work_paper is the exact frictional power density
   (CONTACT's FRIC_POWER) and K = W_macro over its sum.
+  With --temperature (SI): T_max_1 T_max_2 (degC: each body's hottest
+  contact element) T_max_x T_max_y (m: where the hotter one is)
+  contact_temperature (degC) power (W) temperature_iterations
+  temperature_discretisation. With --k-yield: rcf_index_max rcf_index_x
+  rcf_index_y (m) mu_eff FI_surf T_gamma (N = W_macro) wlrm_damage (per
+  pass).
 
 files with --out:
   fields.csv   one row per element, i fastest (nx*ny rows), the unit in
@@ -207,6 +237,11 @@ files with --out:
   slip_y.png moment.png utilisation.png work_paper.png profile.png
   gnuplot/     the scripts and data behind the pictures
                (cd DIR && gnuplot gnuplot/patch.gp re-draws them)
+  temperature_rail.png temperature_wheel.png
+               with --temperature: each body's surface temperature over the
+               grid in mm, the contact outlined, its maximum ringed
+  rcf_index.png
+               with --k-yield: the RCF index, its maximum ringed
   with --gap, the pictures over x, y of the whole grid (mm; in with --units
   paper; --plot-axes normalised is an error: a gap has no semi-axes):
   patch.png    six panels under the inputs and totals (Fn, Fx, Fy, Mz,
@@ -369,7 +404,7 @@ wear law:
                     +1 (default): s grows with the contact's y
 contact: --mu --G --nu (defaults 0.3, 82e9 Pa, 0.28) --pressure
   parabolic|elliptic --exact-load (as for solve; the defaults of the
-  columns); grid: --grid strips|uniform --nx --ny --box-scale
+  columns); grid: --grid kalker_strips|uniform --nx --ny --box-scale
   (default Kalker strips 20 x 20)
 profile grid: --profile-from S --profile-to S --profile-step DS [m]
   (default: every patch s0 -+ b plus 20 %, spacing a quarter of the
@@ -443,7 +478,7 @@ models) --tolerance --max-iterations (exact) --units si|paper (as for
 solve). The exact model needs G and nu, and
 the comparison is of the two theories as Kalker states them: --L1..--L3,
 --pressure and --flexibility-blending are errors.
-grid: uniform (--grid strips is an error), default 48 x 48 over 1.2 times the
+grid: uniform (--grid kalker_strips is an error), default 48 x 48 over 1.2 times the
 semi-axes (40 elements across the ellipse, two guard cells on each side,
 CONTACT's layout); --nx --ny (at most 256) --box-scale.
 output: --format text|json|markdown (the summary on stdout; forces on the
@@ -498,9 +533,20 @@ measured 14 mm below the rail top, flange-back distance 1360 mm, flange back
 at -70 mm, nominal wheel radius 460 mm, no extra cant):
   --wheel-profile FILE   SIMPACK .prw, MiniProf .whl, or a table of "y z"
   --rail-profile FILE    lines in mm (SIMPACK .prr, MiniProf .ban, table)
+  --profile-unit M       metres per length unit of both files (default: a
+                         file's own: SIMPACK its units, MiniProf and tables
+                         mm; 1 for tables in metres)
+  --wheel-y-offset M     added to the wheel profile's y [m]: its origin lies
+                         on the tread with the flange back at -70 mm, so a
+                         profile measured from the flange back (MiniProf)
+                         takes --wheel-y-offset -0.07
+  --mirror-wheel         the wheel profile's y is mirrored (measured with y
+                         towards the track centre), before the offset
+  --rail-y-offset M      added to the rail profile's y [m]
 
 wheelset (defaults 0):
-  --y-shift M            lateral shift [m]
+  --y-shift M            lateral shift [m]; the flange meets the rail within
+                         about 10 mm (a warning above 20 mm)
   --yaw RAD              yaw angle [rad]
   --roll RAD             roll angle [rad]
   --V MPS                forward speed [m/s] (default 1)
@@ -509,28 +555,38 @@ wheelset (defaults 0):
   --side right|left      the wheel (default right)
 
 contact:
-  --Fz N                 vertical force on the rail [N] (required)
-  --model exact|fast     exact (default): Kalker's exact theory with the
-                         exact normal problem, as CONTACT's module 1; fast:
-                         FASTSIM with the semi-Hertzian normal problem
-                         (doc/validation/manchester.md: its accuracy)
+  --Fz N                 vertical force on the rail [N] (required; --N is
+                         the same option)
+  --model exact|fastsim  exact (default): Kalker's exact theory with the
+                         exact normal problem, as CONTACT's module 1;
+                         fastsim (or fast): FASTSIM with the semi-Hertzian
+                         normal problem (doc/validation/manchester.md: its
+                         accuracy)
   --mu MU                friction coefficient (default 0.3)
   --G PA                 combined shear modulus [Pa] (default 8.2e10)
   --nu NU                combined Poisson's ratio (default 0.28)
   --dx M, --ds M         element sizes of the patch grids [m] (default 2e-4)
 
+Warnings (stderr, exit 0) name inputs in a wrong unit and placements no
+running wheel has: a patch on the wheel's flange tip, a wheelset lifted or
+lowered by more than 5 mm on a tread contact, a wheel profile whose flange
+tip lies on the field side of its origin -- each with its likely cause.
+
 output (--format text, the default, or json): the model, the wheelset
-height z_ws [m] (> 0 lowers the wheelset) and per patch, from the field side
-to the track centre: y_contact_rail, z_contact_rail (the contact reference
-point on the rail profile) [m], contact_angle [rad], the creepages xi_x,
-xi_y [-] and phi [1/m] (CONTACT's CKSI, CETA, CPHI), Fn, Fx, Fs [N] and Mn
-[N m] on the rail in the patch frame, p_max [Pa], n_contact, n_adhesion,
-n_slip (elements); JSON: "model" (exact or fast), and per patch also
-x_contact, y_contact, z_contact (track), y_contact_wheel, z_contact_wheel,
-veloc, approach, rolling_radius and the patch force in track coordinates
-Fx_track, Fy_track, Fz_track; total_rail holds Fx, Fy, Fz on the rail in
-track coordinates. creepwork's own convention (forces on the wheel) is
-xi_x = -CKSI, xi_y = CETA, phi = CPHI, Fx = -FX, Fy = FS, Mz = MN.
+height z_ws [m] (> 0 lowers the wheelset) and per patch K = 0, 1, ..., from
+the field side to the track centre: y_contact_rail, z_contact_rail (the
+contact reference point on the rail profile) [m], contact_angle [rad], the
+creepages cksi, ceta [-] and cphi [1/m] of the rail relative to the wheel
+(CONTACT's CKSI, CETA, CPHI), Fn [N], Fx_rail, Fs_rail [N] and Mn_rail [N m]
+on the rail in the patch frame, p_max [Pa], n_contact, n_adhesion, n_slip
+(elements); JSON: "model" (exact or fastsim), "sign_convention", and per
+patch also x_contact, y_contact, z_contact (track), y_contact_wheel,
+z_contact_wheel, veloc, approach, rolling_radius and the patch force on the
+rail in track coordinates Fx_track, Fy_track, Fz_track; total_rail holds Fx,
+Fy, Fz on the rail in track coordinates (doc/reference/conventions.md: every
+key's sign and body). creepwork's own convention (forces on the wheel) is
+xi_x = -cksi, xi_y = ceta, phi = cphi, Fx = -Fx_rail, Fy = Fs_rail,
+Mz = Mn_rail.
 
   --out DIR              also write DIR/result.json (the JSON above),
                          profiles.csv (body,y_m,z_m: the rail's and the

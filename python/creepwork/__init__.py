@@ -21,7 +21,8 @@ creepwork.UnitWarning.
 
 Contents: solve, jacobian, params, Solver, Result; solve_many, Batch,
 ManyResult; Wear, WearResult, WearProfile, wear_profile_update,
-Accumulator; WheelRail (profiles to forces); kalker_coefficients, kalker_flexibilities, hertz,
+Accumulator; Temperature, TemperatureResult, Damage, DamageResult (surface
+temperature and damage indices); WheelRail (profiles to forces); kalker_coefficients, kalker_flexibilities, hertz,
 fastsim_normalised; version, version_number, status_string; Error and its
 subclasses, UnitWarning; the header's constants (CW_*); creepwork.plot
 (needs matplotlib).
@@ -45,6 +46,8 @@ from ._solver import (FIELDS, JACOBIAN_COLUMNS, JACOBIAN_ROWS, Profile, Result, 
 from ._batch import Batch, ManyResult, solve_many
 from ._wear import (DEPTH_KINDS, WEAR_FIELDS, Accumulator, Strips, Wear, WearProfile,
                     WearResult, wear_profile_update)
+from ._surface import (DAMAGE_FIELDS, TEMPERATURE_FIELDS, Damage, DamageResult, Temperature,
+                       TemperatureResult)
 from ._wheelrail import WheelRail
 from ._transient import TRANSIENT_FIELDS, Transient
 from . import plot

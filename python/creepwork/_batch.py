@@ -13,11 +13,11 @@ from typing import Any, List, Optional, Tuple, Union
 
 import numpy as np
 
-from . import _errors, _progress, _units
+from . import _checks, _errors, _progress
 from ._handle import Handle
 from ._library import CONSTANTS, DTYPES, address, defaults, filled, lib
-from ._params import PARAMS, grid_record
-from ._solver import GridLike, Solver, _grid_for
+from ._params import PARAMS, grid_record, require_geometry
+from ._solver import GridLike, Solver, _grid_for, typed_names
 
 _MESSAGE_LEN = 512
 _FLOAT_RESULTS = [n for n in DTYPES["cw_result"].names[1:]
@@ -120,13 +120,13 @@ class Batch(Handle):
 
     def _solve(self, params_in, keywords, full, warn, progress, caller, stacklevel):
         handle = self._live()
-        recs, converted = _records(params_in, keywords, caller)
+        typed = typed_names(None, keywords, caller)
+        if params_in is None:
+            require_geometry(typed, caller)
+        recs, _ = _records(params_in, keywords, caller)
         report = _progress.reporter(progress, recs.size, caller)
         if warn:
-            # The keyword values as given (not broadcast: fewer to check), or
-            # every contact when they come in a params array.
-            checked = recs if params_in is not None else converted
-            _errors.warn_units(_units.warnings_for(checked), stacklevel)
+            _errors.warn_units(_checks.warnings_for(self._grid, recs, typed), stacklevel)
         flat = recs.reshape(-1)
         count = flat.size
         results = filled("cw_result", count)
@@ -146,7 +146,8 @@ class Batch(Handle):
         bad = np.flatnonzero(status)
         for k in bad:
             index = np.unravel_index(k, recs.shape)
-            messages[tuple(int(i) for i in index)] = self._message(flat[k], mode, int(status[k]))
+            messages[tuple(int(i) for i in index)] = _checks.as_typed(
+                self._message(flat[k], mode, int(status[k])), typed)
         if bad.size:
             for name in _FLOAT_RESULTS:
                 results[name][bad] = np.nan

@@ -32,8 +32,10 @@ class Error(Exception):
 
 class UnitWarning(UserWarning):
     """An input is valid but implausible for a wheel-rail contact (a length in
-    millimetres typed as metres, kN as N, ...). The library does not warn;
-    the package does, with the thresholds of the creepwork CLI."""
+    millimetres typed as metres, kN as N, a gap grid in millimetres, a wheel
+    profile whose origin is off, ...): the library's checks
+    (cw_params_check, cw_wheelrail_check), the same at every door. The
+    library itself never warns; the package does."""
 
 
 # Python's own exception a status also is, so that `except ValueError` works.

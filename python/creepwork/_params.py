@@ -13,19 +13,18 @@ import weakref
 
 import numpy as np
 
-from . import _errors
+from . import _checks, _errors
 from ._layout import LAYOUT
-from ._library import _NUMPY, DTYPES, defaults
+from ._library import _NUMPY, DTYPES, address, defaults, lib
 
 _ENUMS = {}
 for _key, _members in LAYOUT["enums"].items():
     _struct, _field = _key.split(".")
     _ENUMS.setdefault(_struct, {})[_field] = _members
 
-# Names a user may type besides the field's own: N is the load's usual symbol
-# (and the CLI's --N); "strips" is the CLI's name for Kalker's strip grid.
-_ALIASES = {"cw_params": {"N": "normal_force"}}
-_VALUE_ALIASES = {("cw_grid", "kind"): {"strips": "kalker_strips"}}
+# The other name a keyword's documentation gives (the library resolves every
+# alias: N, spin; strips, fast, any case and "-" for "_" of a value).
+_DOC_ALIASES = {"cw_params": {"N": "normal_force", "spin": "phi"}}
 
 
 class Keywords:
@@ -35,27 +34,38 @@ class Keywords:
         self.struct = struct
         self.dtype = DTYPES[struct]
         self.fields = {f["name"]: f for f in LAYOUT["structs"][struct] if f["name"] != "struct_size"}
-        self.aliases = _ALIASES.get(struct, {})
+        self.aliases = _DOC_ALIASES.get(struct, {})
         self.enums = _ENUMS.get(struct, {})
 
     def field(self, key, caller):
-        """The field a keyword names; TypeError (as Python's) for an unknown one."""
+        """The field a keyword names (its own, or the library's alias: N for
+        normal_force, spin for phi); TypeError (as Python's) for an unknown
+        one, pointing at the other struct when the key is one of its fields."""
         if key in self.fields:
             return key
-        if key in self.aliases:
-            return self.aliases[key]
+        name = _checks.canonical(key)
+        if name in self.fields:
+            return name
         names = list(self.fields) + list(self.aliases)
         close = difflib.get_close_matches(key, names, n=1)
         hint = " (did you mean %r?)" % close[0] if close else ""
+        if self.struct == "cw_params" and key in GRID.fields:
+            hint = " (%s is a field of the grid: grid={%r: ...})" % (key, key)
+        elif self.struct == "cw_grid" and key in PARAMS.fields:
+            hint = " (%s is a field of cw_params: a keyword of the call, not of grid)" % key
         raise TypeError("%s() got an unexpected keyword argument %r%s; the keywords are the "
                         "fields of %s: %s" % (caller, key, hint, self.struct, ", ".join(names)))
 
     def enum_value(self, field, name):
+        """The number of an enumeration value: its name (the header's, or the
+        library's other spellings: strips, fast, semi-hertz, any case)."""
         members = self.enums[field]
-        name = _VALUE_ALIASES.get((self.struct, field), {}).get(name, name)
         if name not in members:
-            raise _errors.BY_STATUS[_status("CW_ERR_UNKNOWN_OPTION")](
-                "%s = %r is not one of %s" % (field, name, ", ".join(members)))
+            canonical = _checks.canonical(name)
+            if canonical not in members:
+                raise _errors.BY_STATUS[_status("CW_ERR_UNKNOWN_OPTION")](
+                    "%s = %r is not one of %s" % (field, name, ", ".join(members)))
+            name = canonical
         return members[name]
 
     def convert(self, field, value):
@@ -172,23 +182,43 @@ def _release(copy):
 PARAMS = Keywords("cw_params")
 GRID = Keywords("cw_grid")
 WEAR_PARAMS = Keywords("cw_wear_params")
+TEMPERATURE_PARAMS = Keywords("cw_temperature_params")
+DAMAGE_PARAMS = Keywords("cw_damage_params")
 
 
-def exact_default_grid():
-    """The grid the exact model gets when none is given, as the CLI's
-    (programs/cli/contact_inputs.hpp, kExactBoxScale): CONTACT's layout, the
-    uniform grid over a box 1.2 times the semi-axes with 1.2 times the
-    library's default element count (24 x 24: 20 elements across the
-    ellipse, two guard cells on each side)."""
-    d = defaults("cw_grid")
-    scale = 1.2
-    return {"kind": "uniform", "nx": int(round(scale * int(d["nx"]))),
-            "ny": int(round(scale * int(d["ny"]))), "box_scale": scale}
+def model_default_grid(model):
+    """The grid a model gets when none is given (cw_grid_init_model): for
+    the exact model CONTACT's layout, the uniform grid over 1.2 times the
+    semi-axes with 24 x 24 elements; for the others cw_grid_init's."""
+    rec = np.zeros((), DTYPES["cw_grid"])
+    _errors.check(lib.cw_grid_init_model(address(rec), int(model)))
+    return rec
+
+
+def require_geometry(keys, caller):
+    """TypeError unless the keywords keys (fields, aliases resolved) give a
+    contact's size and load: a, b and N -- or, with a gap, N or
+    normal_load="approach". None of them has a sensible default; the
+    CLI refuses the same omission."""
+    keys = set(keys)
+    if "gap" in keys:
+        missing = [] if keys & {"normal_force", "normal_load"} else ["N"]
+        why = "a gap's load: N, or normal_load='approach' with approach"
+    else:
+        missing = [name for name, field in (("a", "a"), ("b", "b"), ("N", "normal_force"))
+                   if field not in keys]
+        why = ("the contact's semi-axes and load have no sensible default (e.g. a=6e-3, "
+               "b=6e-3, N=80e3: a 6 mm circle under 80 kN; a and b from the radii: "
+               "creepwork.hertz)")
+    if missing:
+        raise TypeError("%s() missing required keyword argument%s: %s: %s" % (
+            caller, "s" if len(missing) > 1 else "", ", ".join(repr(m) for m in missing), why))
 
 
 def grid_record(grid, caller):
     """A cw_grid record from None (the C default), a dict of cw_grid fields
-    ({"kind": "uniform", "nx": 24, "ny": 24, "box_scale": 1.2}) or a record."""
+    ({"kind": "uniform", "nx": 24, "ny": 24, "box_scale": 1.2}), a record,
+    or a model's default grid (model_default_grid)."""
     if grid is None:
         return defaults("cw_grid").copy()
     if isinstance(grid, np.ndarray) and grid.dtype == DTYPES["cw_grid"]:

@@ -12,14 +12,15 @@ from typing import TYPE_CHECKING, Any, Dict, Optional, Union
 
 import numpy as np
 
-from . import _errors, _units
+from . import _checks, _errors
 from ._handle import Handle
 from ._layout import LAYOUT
 from ._library import CONSTANTS, DTYPES, address, lib
-from ._params import PARAMS, exact_default_grid, grid_record
+from ._params import PARAMS, grid_record, model_default_grid, require_geometry
 
 if TYPE_CHECKING:
     from ._wear import WearResult
+    from ._surface import DamageResult, TemperatureResult
 
 _MESSAGE_LEN = 512
 #: What params= takes: a dict of cw_params fields or a creepwork.params() record.
@@ -129,6 +130,30 @@ def _scalar_view(rec):
     return dict(zip(rec.dtype.names, rec.item()))
 
 
+def typed_names(params_in, keywords, caller):
+    """The fields the user named, each by the name typed ({"normal_force":
+    "N"}): the keywords and the keys of a params dict."""
+    typed = {}
+    for source in (params_in if isinstance(params_in, dict) else {}, keywords):
+        for key in source:
+            typed[PARAMS.field(key, caller)] = key
+    return typed
+
+
+def check_gap_shape(gap, nx, ny):
+    """InvalidInputError for a 2-D gap whose shape is not (ny, nx): the
+    library's layout [i + j*nx], x along the second axis (a flat array is
+    taken as it is; its length is the library's to check)."""
+    shape = np.shape(gap)
+    if len(shape) < 2 or shape == (ny, nx):
+        return
+    hint = " (transposed: gap.T has that shape)" if shape == (nx, ny) else ""
+    raise _errors.BY_STATUS[CONSTANTS["CW_ERR_INVALID_INPUT"]](
+        "gap has shape %s; the grid's nx = %d cells along x and ny = %d along y need shape "
+        "(ny, nx) = (%d, %d): x along the second axis, gap[j, i] at x0 + i*dx, y0 + j*dy%s"
+        % (shape, nx, ny, ny, nx, hint))
+
+
 class Solver(Handle):
     """A solver for one grid, reused for many solves (cw_solver).
 
@@ -162,12 +187,15 @@ class Solver(Handle):
         self.nx, self.ny = nx.value, ny.value
         #: The grid as solved on, a dict of cw_grid fields.
         self.grid = {k: v for k, v in _scalar_view(rec).items() if k != "struct_size"}
+        self._grid_rec = rec
         self._result = np.zeros((), DTYPES["cw_result"])
         lib.cw_result_init(address(self._result))
         self._result_address = address(self._result)
         self._wear = None
+        self._surface = {}
+        self._rolling_direction = 1  # of the last solve: the temperature's default
 
-    # -- life cycle (Handle): close() also frees the wear workspace
+    # -- life cycle (Handle): close() also frees the wear, temperature and damage workspaces
     _destroy = "cw_solver_destroy"
     _last_error = "cw_solver_last_error"
 
@@ -175,6 +203,9 @@ class Solver(Handle):
         if getattr(self, "_wear", None) is not None:
             self._wear.close()
             self._wear = None
+        for part in getattr(self, "_surface", {}).values():
+            part.close()
+        self._surface = {}
 
     @property
     def last_error(self) -> str:
@@ -204,10 +235,16 @@ class Solver(Handle):
 
     def _solve(self, params_in, keywords, fields, jacobian, warn, caller, stacklevel):
         handle = self._live()
+        typed = typed_names(params_in, keywords, caller)
+        if params_in is None or isinstance(params_in, dict):
+            require_geometry(typed, caller)
+        gap = keywords.get("gap", params_in.get("gap") if isinstance(params_in, dict) else None)
+        if gap is not None:
+            check_gap_shape(gap, self.nx, self.ny)
         keep = []  # arrays whose addresses pointer fields hold, alive until the call returns
         rec = _params_record(params_in, keywords, caller, keep)
         if warn:
-            _errors.warn_units(_units.warnings_for(_scalar_view(rec)), stacklevel)
+            _errors.warn_units(_checks.warnings_for(self._grid_rec, rec, typed), stacklevel)
         mode = CONSTANTS["CW_SOLVE_FULL"] if fields else CONSTANTS["CW_SOLVE_FORCES"]
         if jacobian is None:
             status = lib.cw_solver_solve(handle, address(rec), mode, self._result_address)
@@ -215,7 +252,9 @@ class Solver(Handle):
             status = lib.cw_solver_solve_jacobian(handle, address(rec), mode,
                                                   self._result_address, address(jacobian),
                                                   jacobian.size)
-        self._check(status)
+        if status != 0:  # the library's message, naming the inputs as typed
+            raise _errors.error_for(status, _checks.as_typed(self.last_error, typed))
+        self._rolling_direction = int(rec["rolling_direction"])
         totals = dict(zip(_RESULT_NAMES, self._result.item()[1:]))
         solved = rec.copy() if rec is params_in else rec
         if not fields:
@@ -302,6 +341,25 @@ class Solver(Handle):
         return self._wear.compute(self, **keywords)
 
 
+    def temperature(self, **keywords: Any) -> "TemperatureResult":
+        """Both bodies' surface temperatures from this solver's last solve
+        (fields=True): see creepwork.Temperature.compute for the keywords
+        (rolling_speed is needed). Returns a TemperatureResult."""
+        from ._surface import Temperature
+        if "temperature" not in self._surface:
+            self._surface["temperature"] = Temperature(self)
+        return self._surface["temperature"].compute(self, **keywords)
+
+    def damage(self, **keywords: Any) -> "DamageResult":
+        """The damage indices of this solver's last solve (fields=True): see
+        creepwork.Damage.compute for the keywords (k_yield is needed).
+        Returns a DamageResult."""
+        from ._surface import Damage
+        if "damage" not in self._surface:
+            self._surface["damage"] = Damage(self)
+        return self._surface["damage"].compute(self, **keywords)
+
+
 def _grid_for(grid, params_in, keywords):
     """The grid solve() and solve_many() use: as given, else the exact
     model's default (as the CLI's) when every contact is exact, else the
@@ -318,7 +376,7 @@ def _grid_for(grid, params_in, keywords):
         return None
     values = np.asarray(PARAMS.convert("model", model))
     if values.size and np.all(values == CONSTANTS["CW_MODEL_EXACT"]):
-        return exact_default_grid()
+        return model_default_grid(CONSTANTS["CW_MODEL_EXACT"])
     return None
 
 

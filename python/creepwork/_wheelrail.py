@@ -11,7 +11,7 @@ from typing import Any, Dict, List, Optional
 
 import numpy as np
 
-from . import _errors
+from . import _checks, _errors
 from ._handle import Handle
 from ._library import CONSTANTS, DTYPES, address, defaults, lib
 from ._params import WEAR_PARAMS
@@ -35,29 +35,10 @@ def _as_dict(rec):
     return {name: rec[name].item() for name in rec.dtype.names[1:]}
 
 
-def _params_warnings(rec):
-    w = []
-    if rec["G"] < 1e6:
-        w.append("G = %g Pa is implausible: steel is 8.2e10 Pa (MPa typed as Pa?)" % rec["G"])
-    for name in ("dx", "ds"):
-        if rec[name] > 5e-3:
-            w.append("%s = %g m is implausible: patch elements are 0.1-2 mm (mm typed as m?)"
-                     % (name, rec[name]))
-    return w
-
-
-def _motion_warnings(rec, Fz):
-    w = []
-    if abs(rec["y"]) > 0.05:
-        w.append("y = %g m is implausible: lateral shifts stay within +-20 mm (mm typed as m?)"
-                 % rec["y"])
-    for name in ("yaw", "roll"):
-        if abs(rec[name]) > 0.1:
-            w.append("%s = %g rad is implausible: wheelset angles stay within +-0.05 rad "
-                     "(degrees or mrad typed as rad?)" % (name, rec[name]))
-    if Fz is not None and 0 < Fz < 1000:
-        w.append("Fz = %g N is implausible: wheel loads are 1-500 kN (kN typed as N?)" % Fz)
-    return w
+def _findings(handle):
+    """cw_wheelrail_check of a handle: (rule, input, message) per finding."""
+    found = _checks.records(lambda out, n, count: lib.cw_wheelrail_check(handle, out, n, count))
+    return [(int(c["rule"]), _checks.text(c["input"]), _checks.text(c["message"])) for c in found]
 
 
 class WheelRail(Handle):
@@ -69,22 +50,33 @@ class WheelRail(Handle):
                                       vs=2.0, vpitch=-4.34515)
 
     The keywords are the fields of cw_wheelrail_params (side=creepwork.
-    CW_WHEELRAIL_LEFT, dx, ds, mu, G, nu, gauge_width, nominal_radius, ...)
-    with cw_wheelrail_params_init's defaults (the Manchester benchmark's
-    track and wheelset, 0.2 mm elements, steel)."""
+    CW_WHEELRAIL_LEFT, dx, ds, mu, G, nu, gauge_width, nominal_radius,
+    wheel_y_offset, rail_y_offset, mirror_wheel, profile_unit, ...) with
+    cw_wheelrail_params_init's defaults (the Manchester benchmark's track
+    and wheelset, 0.2 mm elements, steel). A wheel profile measured from its
+    flange back (MiniProf) takes wheel_y_offset=-0.07, the flange back's
+    place in this module's profile coordinates.
+
+    The library's checks (cw_wheelrail_check) warn with creepwork.UnitWarning:
+    inputs in a wrong unit, a wheel profile whose origin is off, and after
+    each solve a patch on the wheel's flange tip or a wheelset height beyond
+    5 mm on a tread contact, each with its likely cause."""
 
     _destroy = "cw_wheelrail_destroy"
     _last_error = "cw_wheelrail_last_error"
 
     def __init__(self, rail_profile: str, wheel_profile: str, **params: Any):
         rec = _record("cw_wheelrail_params", params, "WheelRail")
-        _errors.warn_units(_params_warnings(rec), 1)
         self._handle = ctypes.c_void_p()
         message = ctypes.create_string_buffer(_MESSAGE_LEN)
         status = lib.cw_wheelrail_create(address(rec), os.fsencode(rail_profile),
                                          os.fsencode(wheel_profile), ctypes.byref(self._handle),
                                          message, _MESSAGE_LEN)
         _errors.check(status, lambda: message.value)
+        # The parameters and the profiles: said once, here.
+        first = _findings(self._handle)
+        self._said = {(rule, name) for rule, name, _ in first}
+        _errors.warn_units([m for _, _, m in first], 1)
 
     def solve(self, Fz: Optional[float] = None, **motion: float):
         """One wheelset position (the fields of cw_wheelrail_motion: y, z,
@@ -99,8 +91,11 @@ class WheelRail(Handle):
             load, force = CONSTANTS["CW_WHEELRAIL_HEIGHT"], 0.0
         else:
             load, force = CONSTANTS["CW_WHEELRAIL_FORCE"], float(Fz)
-        _errors.warn_units(_motion_warnings(rec, Fz), 1)
-        self._check(lib.cw_wheelrail_solve(self._live(), address(rec), load, force, address(totals)))
+        status = lib.cw_wheelrail_solve(self._live(), address(rec), load, force, address(totals))
+        # What looks wrong is said also when the solve failed: it may be why.
+        _errors.warn_units([m for rule, name, m in _findings(self._handle)
+                            if (rule, name) not in self._said], 1)
+        self._check(status)
         patches: List[Dict[str, Any]] = []
         for k in range(int(totals["n_patches"])):
             p = defaults("cw_wheelrail_patch").copy()

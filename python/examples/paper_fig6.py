@@ -7,7 +7,7 @@ FT, LBF = 0.3048, 4.4482216152605           # the paper's units in SI
 a = 0.006632269473979329  # the semi-axis creepwork fit-fig6 fits to Fx, Fy [m]
 r = creepwork.solve(a=a, b=a / 2, N=10000 * LBF, mu=0.6, G=82e9, nu=0.3,
                     xi_x=0.0019, xi_y=0.0011, phi=0.144 / FT,
-                    grid={"kind": "strips", "nx": 10, "ny": 10})
+                    grid={"kind": "kalker_strips", "nx": 10, "ny": 10})
 paper = {"Fx": 2780.880, "Fy": 3789.320, "Mz": 2.385, "Wd": 9.795, "K": 1.602}
 ours = {"Fx": -r.Fx / LBF, "Fy": -r.Fy / LBF,  # on the rail = -(on the wheel)
         "Mz": -r.Mz / (LBF * FT), "Wd": r.W_macro / LBF, "K": r.K}

@@ -60,6 +60,14 @@ def test_errors_name_the_input(keywords, cls, named):
     assert named in str(e.value), str(e.value)
 
 
+@pytest.mark.parametrize("left_out", ["a", "b", "N"])
+def test_size_and_load_are_required(left_out):
+    """No default for a contact's size and load (as creepwork solve)."""
+    keywords = {k: v for k, v in OK.items() if k != left_out}
+    with pytest.raises(TypeError, match=r"missing required keyword argument: '%s'" % left_out):
+        creepwork.solve(**keywords)
+
+
 def test_no_solution_and_no_work():
     with creepwork.Solver() as s:
         with pytest.raises(creepwork.NoSolutionError):

@@ -140,13 +140,29 @@ def test_one_patch_off_a_gap_grid_and_errors_name_the_input():
         creepwork.solve(**CREEP, model="calibrated", N=N, gap=h, gap_len=h.size, grid=grid)
 
 
+def test_gap_of_the_wrong_shape_is_an_error():
+    """The gap's layout is the fields': (ny, nx), x along the second axis;
+    the transposed array is refused, not solved as another contact."""
+    grid = gap_grid(30, 56, -5e-3, -12e-3, 0.35e-3, 0.45e-3)
+    x, y = centres(grid)
+    h = x ** 2 / 0.9 + y ** 2 / 0.5
+    assert h.shape == (56, 30)
+    creepwork.solve(**CREEP, model="exact", N=60e3, gap=h, grid=grid, fields=False)
+    with pytest.raises(creepwork.InvalidInputError, match=r"need shape \(ny, nx\) = \(56, 30\)"):
+        creepwork.solve(**CREEP, model="exact", N=60e3, gap=h.T, grid=grid, fields=False)
+
+
 def test_gap_jacobian_needs_a_load():
     """normal_force = 0: no derivative by N there (header,
-    cw_solver_solve_jacobian): an error naming normal_force, for both models."""
+    cw_solver_solve_jacobian): an error naming the load as typed, N or
+    normal_force, for both models."""
     grid = gap_grid(30, 56, -5e-3, -12e-3, 0.35e-3, 0.45e-3)
     x, y = centres(grid)
     h = x ** 2 / 0.9 + y ** 2 / 0.5
     for model in ("exact", "fastsim"):
         with pytest.raises(creepwork.InvalidInputError) as e:
             creepwork.jacobian(**CREEP, model=model, N=0.0, gap=h, grid=grid)
-        assert "normal_force" in str(e.value)
+        assert str(e.value).startswith("N = 0: ")
+        with pytest.raises(creepwork.InvalidInputError) as e:
+            creepwork.jacobian(**CREEP, model=model, normal_force=0.0, gap=h, grid=grid)
+        assert str(e.value).startswith("normal_force = 0: ")

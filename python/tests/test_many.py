@@ -140,7 +140,7 @@ def test_params_array_is_checked_for_units_as_keywords_are():
     messages = [str(w.message) for w in caught if w.category is creepwork.UnitWarning]
     assert len(messages) == 4, messages  # a and b, by the keywords and by the records
     assert messages[:2] == messages[2:]
-    assert "(2 of 40 values)" in messages[0]
+    assert "(2 of 40 contacts)" in messages[0]
     assert again.results.tobytes() == first.results.tobytes()
 
 

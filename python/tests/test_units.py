@@ -71,7 +71,7 @@ def test_solve_many_warns_once_per_rule_with_the_count():
         out = creepwork.solve_many(a=a, b=a, N=100e3, xi_x=1e-3)
     messages = [str(w.message) for w in caught if w.category is creepwork.UnitWarning]
     assert len(messages) == 2  # a and b, once each
-    assert "(2 of 1000 values)" in messages[0] and "millimetres" in messages[0]
+    assert "(2 of 1000 contacts)" in messages[0] and "millimetres" in messages[0]
     assert caught[0].filename == __file__  # points at the caller's line
     assert out.ok.all()
 
@@ -93,9 +93,11 @@ def test_params_array_warns_like_keywords():
             out = call()
         messages = sorted(str(w.message) for w in caught if w.category is creepwork.UnitWarning)
         assert len(messages) == 3, messages
-        assert messages[0].startswith("N = 100 N (1 of 50 values) is implausible"), messages
-        assert messages[1].startswith("a = 7 m (3 of 50 values) is implausible"), messages
-        assert messages[2].startswith("b = 5 m (3 of 50 values) is implausible"), messages
+        assert messages[0].startswith("a = 7 m (3 of 50 contacts) is implausible"), messages
+        assert messages[1].startswith("b = 5 m (3 of 50 contacts) is implausible"), messages
+        # the record's field, as it was set (p["normal_force"])
+        assert messages[2].startswith("normal_force = 100 N (1 of 50 contacts) is implausible"), \
+            messages
         assert out.ok.all()
         with warnings.catch_warnings():
             warnings.simplefilter("error", creepwork.UnitWarning)

@@ -63,6 +63,35 @@ def test_implausible_units_warn():
         creepwork.WheelRail(RAIL, WHEEL, G=82000.0).close()
 
 
+def test_misplaced_wheel_warns():
+    """A measured MiniProf wheel (y from its flange back) placed as if its
+    origin were on the tread: at 2 mm its flange tip rides on the rail crown,
+    the wheelset lifted by the flange height (the file's Sh = 27.97 mm).
+    Warned, with the cause; wheel_y_offset = -0.07 (the flange back's place)
+    runs it on its tread, silently. A 25 mm shift warns as the CLI does."""
+    whl = os.path.join(DATA, "right-wheel-v1-pre-dry.whl")
+    with pytest.warns(creepwork.UnitWarning, match="wheel_y_offset = 0 m is implausible") as caught:
+        w = creepwork.WheelRail(RAIL, whl, model=creepwork.CW_MODEL_FASTSIM,
+                                normal_method=creepwork.CW_NORMAL_SEMI_HERTZ)
+    assert len(caught) == 1 and "flange_back_position = -70.0 mm" in str(caught[0].message)
+    with w, pytest.warns(creepwork.UnitWarning, match="rides on its flange tip") as solved:
+        totals, _ = w.solve(Fz=80e3, y=2e-3, vs=1.0, vpitch=-1 / 0.46)
+    assert totals["z"] == pytest.approx(-27.9698e-3, abs=0.5e-3)
+    assert len(solved) == 1  # the profile's warning is not repeated
+    assert str(solved[0].message).startswith("z = -0.0276")
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", creepwork.UnitWarning)
+        with creepwork.WheelRail(RAIL, whl, wheel_y_offset=-0.07, model=creepwork.CW_MODEL_FASTSIM,
+                                 normal_method=creepwork.CW_NORMAL_SEMI_HERTZ) as fixed:
+            totals, _ = fixed.solve(Fz=80e3, y=2e-3, vs=1.0, vpitch=-1 / 0.46)
+    assert abs(totals["z"]) < 2e-3
+    with creepwork.WheelRail(RAIL, WHEEL) as w:
+        with pytest.warns(creepwork.UnitWarning, match=r"y = 0.025 m is implausible for a "
+                                                       r"wheel-rail contact: lateral shifts stay "
+                                                       r"within \+-20 mm"):
+            w.solve(Fz=1e4, **dict(MOTION, y=25e-3))
+
+
 def test_patch_fields_and_wear():
     with creepwork.WheelRail(RAIL, WHEEL) as w:
         _, patches = w.solve(Fz=1e4, **MOTION)

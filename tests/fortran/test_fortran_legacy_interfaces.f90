@@ -13,17 +13,25 @@ program legacy_interfaces
    include 'creepwork_legacy.fi'
    integer(c_int), parameter :: nx = 9, ny = 8
    real(c_double), dimension(nx, ny) :: px, py, sx, sy, zmap, wpap, wcon, wpacc, wcacc
-   integer(c_int) :: istate(nx, ny), n(2), ierr
+   integer(c_int) :: istate(nx, ny), n(2), ierr, nwarn
    real(c_double) :: r(2), c(4), L(3), h(4), fx, fy, fmz, wmac, wmic, ck, tx, ty, tx2, ty2
    real(c_double) :: c11, c22, c23, c33, fl1, fl2, fl3, a, b, p0, appr
    real(c_double) :: dsum, wmsum, wpsum, ckrun
-   character(len=80) :: msg
+   character(len=200) :: msg
 
    r = [1.0_c_double, 2.0_c_double]
    n = [1_c_int, 2_c_int]
    ierr = -1
    call CWTYPE(r, n, ierr)
    call check_int(int(ierr), 0, 'CWTYPE')
+
+   ! CWCHEK: the module's cw_params_check of the same contact, its message.
+   call CWCHEK(7.2_c_double, 5e-3_c_double, 8e4_c_double, 0.3_c_double, 82e9_c_double, &
+               0.28_c_double, 1e-3_c_double, 0.0_c_double, 0.0_c_double, 1_c_int, msg, nwarn, ierr)
+   call check_int(int(ierr), 0, 'CWCHEK')
+   call check_int(int(nwarn), 1, 'CWCHEK findings')
+   call check_string(trim(msg), 'a = 7.2 m is implausible for a wheel-rail contact: semi-axes are '// &
+                     '1-20 mm (were millimetres typed as metres?)', 'CWCHEK message')
 
    call CWKALK(1.5_c_double, 0.28_c_double, c11, c22, c23, c33, ierr)
    call cw_kalker_coefficients(1.5_c_double, 0.28_c_double, c)

@@ -10,7 +10,9 @@ C        characters; a longer one is blank-padded;
 C      - after a success the message is blank; CWERRM and CWLAST leave
 C        it unchanged;
 C      - CWSOLM with PNU = 0.6 names nu and its range, with NX = 0 nx;
-C      - a subnormal A (a REAL passed for DOUBLE PRECISION) names A;
+C      - a subnormal A (a REAL passed for DOUBLE PRECISION) names A, and
+C        so does a huge one (a REAL followed by other bytes): a hint;
+C      - CWCHEK gives the library's plausibility findings;
 C      - CWFORC with LOAD = 2 names exact_load (0 or 1), with NY = 0 ny;
 C      - CWACCU with DIST = -1 names DIST.
       PROGRAM LEGLST
@@ -22,6 +24,9 @@ C      - CWACCU with DIST = -1 names DIST.
       DIMENSION WPACC(NX, NY), WCACC(NX, NY)
       INTEGER ISTATE(NX, NY)
       CHARACTER*200 MSG
+      INTEGER IBITS(2)
+      DOUBLE PRECISION RBITS
+      EQUIVALENCE (IBITS, RBITS)
       CHARACTER*10 SHORT
       CHARACTER*52 HEAD
       PARAMETER (HEAD =
@@ -87,6 +92,37 @@ C     1D-300 * 1D-10 is subnormal: the pattern of a REAL argument.
       CALL CHECKI('CWSOLM subnormal A', IERR, 2, NFAIL)
       CALL CWLAST(MSG)
       CALL HAS('CWSOLM subnormal', MSG, 'A is a subnormal', NFAIL)
+C     A REAL 0.0072 followed by the four bytes of another REAL reads
+C     as a huge DOUBLE PRECISION (3BEBEDFA, 47000000 high: 2**113).
+      IBITS(1) = INT(Z'3BEBEDFA')
+      IBITS(2) = INT(Z'47000000')
+      CALL CWSOLM(RBITS, B, FN, FMU, G, 0.28D0, XI, ETA, PHI, NX, NY,
+     &            FX, FY, FMZ, WMAC, WMIC, CK, PX, PY, SX, SY,
+     &            ZMAP, WPAP, WCON, ISTATE, IERR)
+      CALL CHECKI('CWSOLM huge A', IERR, 2, NFAIL)
+      CALL CWLAST(MSG)
+      CALL HAS('CWSOLM huge A', MSG, 'A = ', NFAIL)
+      CALL HAS('CWSOLM huge A', MSG,
+     &         'a REAL passed for DOUBLE PRECISION', NFAIL)
+C     CWCHEK: the library's checks of CWSOLM's inputs. A = 7.2 m
+C     (mm typed as m; the rule's bound is 0.1 m) and FMU = 5 (above
+C     1.5): two findings in the rules' order; A = B = 6 mm and
+C     FN = 80 kN given explicitly are no placeholders: none.
+      CALL CWCHEK(7.2D0, B, FN, 5.0D0, G, 0.28D0, XI, ETA, PHI, 1,
+     &            MSG, NWARN, IERR)
+      CALL CHECKI('CWCHEK IERR', IERR, 0, NFAIL)
+      CALL CHECKI('CWCHEK NWARN', NWARN, 2, NFAIL)
+      CALL HAS('CWCHEK 1', MSG, 'a = 7.2 m is implausible', NFAIL)
+      CALL CWCHEK(7.2D0, B, FN, 5.0D0, G, 0.28D0, XI, ETA, PHI, 2,
+     &            MSG, NWARN, IERR)
+      CALL HAS('CWCHEK 2', MSG, 'mu = 5 is implausible', NFAIL)
+      CALL CWCHEK(6.0D-3, 6.0D-3, 80.0D3, FMU, G, 0.28D0, XI, ETA,
+     &            PHI, 1, MSG, NWARN, IERR)
+      CALL CHECKI('CWCHEK placeholders', NWARN, 0, NFAIL)
+      IF (MSG .NE. ' ') THEN
+         WRITE (*, *) 'CWCHEK without findings: ', MSG
+         NFAIL = NFAIL + 1
+      END IF
 C
       CALL CWFORC(A, B, FN, FMU, G, 0.28D0, XI, ETA, PHI, NX, NY, 2,
      &            FX, FY, FMZ, WMAC, ADH, IERR)

@@ -116,6 +116,9 @@ CW_API const char* cw_status_string(int status);
 #define CW_MAX_EXACT_CELLS 256  /* exact model: nx, ny <= 256 (memory grows as nx*ny) */
 #define CW_MIN_ASPECT 1e-3      /* a/b in [1e-3, 1e3]: Kalker's table + asymptotes */
 #define CW_MAX_ASPECT 1e3
+/* What the exact model takes when params->tolerance, max_iterations are 0 */
+#define CW_DEFAULT_TOLERANCE 1e-8   /* relative residual of the tangential solve */
+#define CW_DEFAULT_MAX_ITERATIONS 50 /* Newton steps per grid */
 
 /* ------------------------------------------------------------ enumerations */
 
@@ -204,6 +207,14 @@ typedef struct cw_grid {
 /* Fills defaults and struct_size. Errors: CW_ERR_NULL_POINTER. */
 CW_API int cw_grid_init(cw_grid* grid);
 
+/* The grid a model gets when none is given, and struct_size: for
+ * CW_MODEL_FASTSIM and CW_MODEL_CALIBRATED cw_grid_init's (Kalker's strips,
+ * 20 x 20); for CW_MODEL_EXACT CONTACT's layout, the uniform grid over 1.2
+ * times the semi-axes with 24 x 24 elements (20 across the ellipse, two
+ * guard cells on each side; doc/theory/exact.md). Every door's default.
+ * Errors: CW_ERR_NULL_POINTER, CW_ERR_UNKNOWN_OPTION (model). */
+CW_API int cw_grid_init_model(cw_grid* grid, int model);
+
 /* -------------------------------------------------------------- parameters */
 
 typedef struct cw_params {
@@ -270,8 +281,89 @@ typedef struct cw_params {
 
 /* Defaults: steel (G = 82e9 Pa, nu = 0.28), mu = 0.3, a = b = 6e-3 m,
  * N = 80e3 N, zero creepage, parabolic pressure, rolling towards +x.
+ * The semi-axes and the load are placeholders: a contact's size and load
+ * have no sensible default, and cw_params_check reports params whose a, b
+ * and normal_force all still hold these values (CW_CHECK_DEFAULT_GEOMETRY).
  * Errors: CW_ERR_NULL_POINTER. */
 CW_API int cw_params_init(cw_params* params);
+
+/* ----------------------------------------------------------- plausibility */
+
+/* cw_check.rule: what an input's value suggests (cw_params_check,
+ * cw_wheelrail_check) */
+#define CW_CHECK_SEMI_AXIS 1        /* a, b outside 0.1 mm .. 0.1 m */
+#define CW_CHECK_NORMAL_FORCE 2     /* a load outside 1 kN .. 10 MN (kN typed as N?) */
+#define CW_CHECK_FRICTION 3         /* mu above 1.5 */
+#define CW_CHECK_MODULUS 4          /* G outside 1e6 .. 1e12 Pa (MPa typed as Pa?) */
+#define CW_CHECK_FLEXIBILITY 5      /* L1..L3 outside 1e-18 .. 1e-10 m/Pa */
+#define CW_CHECK_CREEPAGE 6         /* |xi_x|, |xi_y| above 0.5 (a per cent typed?) */
+#define CW_CHECK_SPIN 7             /* |phi| above 50 1/m (1/mm typed as 1/m?) */
+#define CW_CHECK_GAP_SPACING 8      /* a gap grid's dx, dy outside 1 um .. 5 mm */
+#define CW_CHECK_GAP_HEIGHTS 9      /* gap heights spanning more than 10 mm */
+#define CW_CHECK_APPROACH 10        /* |approach| above 1 mm (CW_NORMAL_APPROACH) */
+#define CW_CHECK_DEFAULT_GEOMETRY 11 /* a, b, normal_force all at cw_params_init's values */
+#define CW_CHECK_WHEELSET_SHIFT 20  /* |y| of the wheelset above 20 mm */
+#define CW_CHECK_WHEELSET_ANGLE 21  /* |roll|, |yaw| above 0.05 rad (degrees typed?) */
+#define CW_CHECK_PATCH_ELEMENT 22   /* wheel/rail dx, ds above 5 mm */
+#define CW_CHECK_SPEED 23           /* forward speed above 150 m/s (km/h typed?) */
+#define CW_CHECK_PITCH_RATE 24      /* vpitch far from -vs / nominal_radius */
+#define CW_CHECK_WHEELSET_HEIGHT 25 /* |z| beyond 5 mm with no patch on the flange */
+#define CW_CHECK_FLANGE_TIP 26      /* a patch on the wheel's flange tip */
+#define CW_CHECK_PROFILE_ORIGIN 27  /* the wheel's flange tip on the field side of its origin */
+
+/* One input whose value a solve accepts but no wheel-rail contact has: the
+ * signature of a unit mistake (millimetres typed as metres, kN as N, MPa
+ * as Pa, a per cent as a ratio) or of an input left out. Fields are only
+ * ever appended. */
+typedef struct cw_check {
+    size_t struct_size;   /* set by cw_check_init */
+    int rule;             /* CW_CHECK_* */
+    char input[32];       /* the input, NUL-terminated: a field of cw_params, cw_grid,
+                             cw_wheelrail_params or cw_wheelrail_motion ("a",
+                             "normal_force", "gap", "dx", "y", "Fz", "z") */
+    double value;         /* its value in SI (the first contact's that breaks the rule;
+                             for "gap" the heights' spread max - min) */
+    char unit[8];         /* the value's unit ("m", "N", "Pa", "1/m", "m/Pa", "rad",
+                             "m/s", "rad/s") or "" */
+    size_t contacts;      /* how many of the contacts checked break the rule */
+    size_t first;         /* the index of the first */
+    char reason[256];     /* what is plausible and the likely mistake */
+    char message[384];    /* "<input> = <value> <unit> is implausible for a wheel-rail
+                             contact: <reason>" (truncated to fit) */
+} cw_check;
+
+/* Zeroes the check and sets struct_size. Errors: CW_ERR_NULL_POINTER. */
+CW_API int cw_check_init(cw_check* check);
+
+/* Checks count contacts (params[k], k < count, elements of size
+ * params[0].struct_size, each carrying the same struct_size) solved on grid
+ * for values that are valid but implausible for a wheel-rail contact, one
+ * rule at a time (doc/input-schema.md, "Plausibility warnings"): *found
+ * receives the number of rules broken, out[k], k < *found, one entry each, in a fixed
+ * order, with the number of contacts that break it and the first's index
+ * and value. out is an array of len structs of size out[0].struct_size
+ * (each initialised by cw_check_init); len = 0 asks for the number only
+ * (out may then be NULL). On a gap grid (CW_GRID_GAP) a and b are not
+ * used; the grid's spacing and params->gap's heights (when given, nx*ny
+ * values) are checked instead. Values a solve refuses (negative, NaN) are
+ * left to the solve's errors. Prints nothing, and the library never calls
+ * it by itself: a solve in other consistent units stays silent. Cost:
+ * linear in count (and in nx*ny with a gap); it allocates its findings. Errors: CW_ERR_NULL_POINTER (grid, params with count > 0,
+ * found), CW_ERR_STRUCT_SIZE, CW_ERR_BUFFER_TOO_SMALL (len < *found:
+ * *found is set, nothing else is written). */
+CW_API int cw_params_check(const cw_grid* grid, const cw_params* params, size_t count,
+                           cw_check* out, size_t len, size_t* found);
+
+/* The name every door documents for an input or an enumeration value typed
+ * another way: writes to name (NUL-terminated, name_len bytes) the
+ * canonical spelling of typed. Inputs: "N" -> "normal_force", "spin" ->
+ * "phi". Enumeration values (of cw_grid.kind, cw_params.model, pressure,
+ * flexibility, normal_load, normal_method: the names of their CW_
+ * constants without the prefix, in lower case) in any case and with "-"
+ * for "_" ("Semi-Hertz" -> "semi_hertz"), and the short forms "strips" ->
+ * "kalker_strips", "fast" -> "fastsim". Any other name is copied
+ * unchanged. Errors: CW_ERR_NULL_POINTER, CW_ERR_BUFFER_TOO_SMALL. */
+CW_API int cw_input_name(const char* typed, char* name, size_t name_len);
 
 /* ----------------------------------------------------------------- result */
 
@@ -634,9 +726,11 @@ CW_API int cw_batch_prepare(cw_batch* batch, int model);
 CW_API int cw_solver_solve_jacobian(cw_solver* solver, const cw_params* params, int mode,
                                     cw_result* result, double* jacobian, size_t jacobian_len);
 
-/* Wear laws and wear on a profile grid; one wheel on one rail from the
- * profiles; transient rolling: in these three parts, included here. */
+/* Wear laws and wear on a profile grid; surface temperature and damage
+ * indices; one wheel on one rail from the profiles; transient rolling: in
+ * these parts, included here. */
 #include "creepwork/creepwork_wear.h"
+#include "creepwork/creepwork_surface.h"
 #include "creepwork/creepwork_wheelrail.h"
 #include "creepwork/creepwork_transient.h"
 

@@ -63,6 +63,15 @@ typedef struct cw_wheelrail_params {
                                     fast model is CW_MODEL_FASTSIM with CW_NORMAL_SEMI_HERTZ */
     int solve_mode;              /* CW_SOLVE_FULL (default: every field and the work maps
                                     per patch) or CW_SOLVE_FORCES */
+    /* Profiles whose origin or direction is not this module's (doc/wheelrail.md,
+     * "Placement"): each point's y becomes (mirror ? -y : y) + offset, in metres
+     * after the length unit. A wheel profile's origin lies on its tread, its
+     * flange back at flange_back_position: a profile measured from the flange
+     * back (MiniProf) takes wheel_y_offset = flange_back_position. */
+    double rail_y_offset;        /* [m] added to the rail profile's y (0) */
+    double wheel_y_offset;       /* [m] added to the wheel profile's y (0) */
+    int mirror_wheel;            /* 1: the wheel profile's y is mirrored before the offset
+                                    (measured with y towards the track centre); 0 (default) */
 } cw_wheelrail_params;
 
 /* The wheelset's position (CONTACT's Z_WS etc.) and velocity. */
@@ -221,5 +230,21 @@ CW_API int cw_wheelrail_get_profile(const cw_wheelrail* wheelrail, int which, do
 /* Message of the last error on this handle ("" after success); owned by
  * the handle, valid until its next call; "" for NULL. */
 CW_API const char* cw_wheelrail_last_error(const cw_wheelrail* wheelrail);
+
+/* Checks the handle's inputs and the last solve (cw_params_check's cw_check
+ * entries, one per rule broken, contacts = 1): params (G, mu, dx, ds as
+ * implausible units), the last cw_wheelrail_solve's motion and Fz (also
+ * when that solve failed: y beyond 20 mm, roll or yaw beyond 0.05 rad,
+ * vs, vpitch against vs / nominal_radius, Fz), and its solution: a patch on
+ * the wheel's flange tip, or a wheelset height |z| beyond 5 mm with no
+ * patch on the flange, each with its likely cause (a profile origin off,
+ * a lateral shift in mm typed as m); and, from the profiles alone, a wheel
+ * whose flange tip lies on the field side of its origin. Before any solve
+ * only params and the profiles are checked. Fills out as cw_params_check;
+ * leaves cw_wheelrail_last_error as the last solve left it unless this call
+ * fails. Errors: CW_ERR_NULL_POINTER (wheelrail, found), CW_ERR_STRUCT_SIZE,
+ * CW_ERR_BUFFER_TOO_SMALL. */
+CW_API int cw_wheelrail_check(const cw_wheelrail* wheelrail, cw_check* out, size_t len,
+                              size_t* found);
 
 #endif /* CREEPWORK_WHEELRAIL_H */

@@ -266,7 +266,7 @@ void gap_bad_rows_fail_alone(void** state)
                "line 8, column N: empty: a row with a gap_file needs the normal force N or the "
                "approach");
     expect_row(8, "method", "ROW_UNREADABLE",
-               "line 9, column normal_method: 'semi' is not one of exact|semi-hertz");
+               "line 9, column normal_method: 'semi' is not one of exact|semi_hertz");
     expect_row(9, "elliptic-approach", "ROW_UNREADABLE",
                "line 10, column approach: only used on a row with a gap_file (a contact of any "
                "shape)");
@@ -309,11 +309,13 @@ void gap_unit_mistakes_are_warned(void** state)
     const auto idx = header_index(out[0]);
     const std::string file = fs::absolute(path("mm.csv")).lexically_normal().string();
     const std::string& m = out[1][idx.at("message")];
-    expect_contains(m, "warning: column gap_file: " + file + ": cells of dx = 0.3485 m is "
-                       "implausible for a wheel-rail contact (0.05-1 mm; the file is read in "
-                       "metres: millimetres typed as metres?)");
-    expect_contains(m, "cells of dy = 0.41714285714");
-    expect_contains(m, "gaps spanning 0.20386432508859");
+    expect_contains(m, "warning: column gap_file: " + file + ": dx = 0.3485 m is "
+                       "implausible for a wheel-rail contact: gap cells are 0.05-1 mm (a gap "
+                       "grid in millimetres typed as metres?)");
+    expect_contains(m, ": dy = 0.417143 m is implausible");
+    // the heights' spread, to 1 um
+    expect_contains(m, ": gap = 0.203864 m is implausible for a wheel-rail contact: its heights "
+                       "span this much");
     expect_contains(out[2][idx.at("message")],
                     "warning: column approach = 0.05 m is implausible for a wheel-rail contact: "
                     "approaches are 10-200 um (millimetres typed as metres?");

@@ -476,6 +476,33 @@ void pictures_say_what_they_show(void**)
     expect_contains(patch, "Mz = ");
 }
 
+// One vocabulary: --phi is --spin (the library's name of the spin), strips
+// reads as kalker_strips, the JSON echoes the library's spelling, and an
+// error names the option as typed. The JSON echo gives the exact model's
+// tolerance and iteration bound as solved (the header's CW_DEFAULT_*), not
+// the placeholder 0.
+void one_vocabulary(void**)
+{
+    const std::vector<std::string> base = {"solve", "--a", "7e-3", "--b", "5e-3", "--N", "100e3",
+                                           "--xi-x", "1e-3", "--format", "json"};
+    const Run spin = cli_ok(with(base, {"--spin", "0.5"}));
+    const Run phi = cli_ok(with(base, {"--phi", "0.5", "--grid", "strips"}));
+    assert_string_equal(phi.out.c_str(), spin.out.c_str());
+    const Json j = parse_or_fail(spin.out);
+    assert_string_equal(j.at("input").at("grid").string.c_str(), "kalker_strips");
+    assert_string_equal(j.at("input").at("flexibility").string.c_str(), "from_material");
+    expect_refusal(cli(with(base, {"--phi", "abc"})), 2, "--phi: expected a finite number", "--phi as typed");
+    expect_refusal(cli(with(base, {"--spin", "1", "--phi", "2"})), 2, "given twice, as --spin and --phi",
+                   "--spin and --phi");
+    // the library's finding, named as typed (spin above 50 1/m)
+    expect_contains(cli_ok(with(base, {"--phi", "60"})).err,
+                    "warning: --phi = 60 1/m is implausible for a wheel-rail contact");
+    const Json e = parse_or_fail(cli_ok(with(base, {"--model", "exact"})).out);
+    assert_true(e.at("input").num("tolerance") == CW_DEFAULT_TOLERANCE);
+    assert_true(e.at("input").num("max_iterations") == CW_DEFAULT_MAX_ITERATIONS);
+    assert_true(CW_DEFAULT_TOLERANCE == 1e-8 && CW_DEFAULT_MAX_ITERATIONS == 50); // the header's text
+}
+
 // Inputs valid for the library but implausible for a wheel-rail contact run
 // (exit 0) with one warning each on stderr; choices are not case sensitive.
 void warns_and_accepts_any_case(void**)
@@ -631,6 +658,7 @@ int main(int argc, char** argv)
         cmocka_unit_test(paper_units_round_trip),  cmocka_unit_test(out_writes_pictures),
         cmocka_unit_test(sweep_writes_maps),       cmocka_unit_test(fit_fig6_reproduces_the_paper),
         cmocka_unit_test(fit_fig6_choices),        cmocka_unit_test(warns_and_accepts_any_case),
+        cmocka_unit_test(one_vocabulary),
         cmocka_unit_test(pictures_say_what_they_show),
     };
     // One test per CTest entry, by exact name (cw_run_tests refuses a name

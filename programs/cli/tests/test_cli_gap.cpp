@@ -411,6 +411,88 @@ void bad_gaps_fail_cleanly(void**)
     cwtest::cli_ok({"solve", "--gap", good, "--N", "1e3"});
 }
 
+// A gap file in millimetres is solved -- it is a valid gap -- with a
+// warning naming the file and what looks like millimetres (the library's
+// cw_params_check): heights whose spread exceeds 10 mm, cells of more than
+// 5 mm. The same file in metres warns about nothing.
+void unit_mistakes_warn(void**)
+{
+    Gap g = two_lobes();
+    const std::string metres = write_gap(g, "metres.csv");
+    const cwtest::Run fine = cwtest::cli_ok({"solve", "--gap", metres, "--N", "50e3", "--xi-x", "1e-3"});
+    assert_true(fine.err.find("implausible") == std::string::npos);
+    // the heights in mm, the coordinates in metres
+    double lo = g.h[0], hi = g.h[0];
+    for (double& h : g.h) {
+        lo = std::min(lo, h);
+        hi = std::max(hi, h);
+        h *= 1e3;
+    }
+    const std::string heights = write_gap(g, "heights_mm.csv");
+    const cwtest::Run r = cwtest::cli_ok({"solve", "--gap", heights, "--N", "50e3", "--xi-x", "1e-3"});
+    char spread[64];
+    std::snprintf(spread, sizeof spread, "gap = %.6g m is implausible", std::round((hi - lo) * 1e9) / 1e6);
+    cwtest::expect_contains(r.err, "creepwork: warning: --gap: " + heights + ": " + spread +
+                                       " for a wheel-rail contact: its heights span this much");
+    cwtest::expect_contains(r.err, "(heights in millimetres typed as metres?)");
+    assert_true(r.err.find("dx = ") == std::string::npos);
+    // every value in mm: the cells too
+    Gap all = two_lobes();
+    all.grid.dx *= 1e3, all.grid.dy *= 1e3, all.grid.x0 *= 1e3, all.grid.y0 *= 1e3;
+    for (double& h : all.h) h *= 1e3;
+    const cwtest::Run m = cwtest::cli_ok({"solve", "--gap", write_gap(all, "all_mm.csv"), "--N", "50e3"});
+    cwtest::expect_contains(m.err, ": dx = 0.35 m is implausible for a wheel-rail contact: gap cells are 0.05-1 mm");
+    cwtest::expect_contains(m.err, ": dy = 0.45 m is implausible");
+    cwtest::expect_contains(m.err, ": gap = ");
+    // an approach in mm
+    const cwtest::Run a = cwtest::cli_ok({"solve", "--gap", metres, "--approach", "0.05"});
+    cwtest::expect_contains(a.err, "warning: --approach = 0.05 m is implausible for a wheel-rail contact: "
+                                   "approaches are 10-200 um");
+}
+
+// Messages that point at the cause: a grid whose cells beyond x = 4 mm are
+// shifted names a shifted cell's line (not the first, correct one); a patch
+// centred on the x axis prints 0, not the rounding noise of its centroid.
+void messages_name_the_cause(void**)
+{
+    const double d = 0.4e-3;
+    Gap g = make_gap(32, 40, d, d, -15.5 * d, -19.5 * d,
+                     [](double x, double y) { return x * x / 0.9 + y * y / 0.5; });
+    std::string text = "x_m,y_m,h_m\n";
+    long first_shifted = 0, line = 1;
+    char row[128];
+    for (int j = 0; j < g.grid.ny; ++j)
+        for (int i = 0; i < g.grid.nx; ++i) {
+            double x = g.grid.x0 + i * d;
+            if (x > 4e-3) {
+                x += 0.05e-3;
+                if (!first_shifted) first_shifted = line + 1;
+            }
+            std::snprintf(row, sizeof row, "%.17g,%.17g,%.17g\n", x, g.grid.y0 + j * d, g.h[i + 32 * j]);
+            text += row;
+            ++line;
+        }
+    const std::string path = cwtest::g_tools.scratch + "/shifted.csv";
+    std::ofstream(path) << text;
+    expect_usage_error({"solve", "--gap", path, "--N", "50e3"},
+                       "shifted.csv:" + std::to_string(first_shifted) + ": x_m = ");
+    const cwtest::Run r = cwtest::cli({"solve", "--gap", path, "--N", "50e3"});
+    cwtest::expect_contains(r.err, "is off the regular grid of the other cells (their x values run from");
+    cwtest::expect_contains(r.err, "in steps of 0.0004)");
+
+    // symmetric about y = 0: the centroid's y is rounding noise
+    const std::string sym = write_gap(make_gap(31, 31, d, d, -15 * d, -15 * d,
+                                               [](double x, double y) { return x * x / 0.9 + y * y / 0.5; }),
+                                      "symmetric.csv");
+    const cwtest::Run s = cwtest::cli_ok({"solve", "--gap", sym, "--N", "50e3", "--xi-x", "1e-3"});
+    const size_t at = s.out.find("  patch 0  at (");
+    assert_true(at != std::string::npos);
+    const std::string centroid = s.out.substr(at, s.out.find("):", at) - at);
+    if (centroid.find("e-") != std::string::npos)
+        fail_msg("a centroid shows rounding noise: %s", centroid.c_str());
+    cwtest::expect_contains(centroid, "at (0 m, 0 m");
+}
+
 } // namespace
 
 int main(int argc, char** argv)
@@ -421,6 +503,8 @@ int main(int argc, char** argv)
         cmocka_unit_test(jacobian_matches_library),
         cmocka_unit_test(bad_gaps_fail_cleanly),
         cmocka_unit_test(writes_pictures),
+        cmocka_unit_test(unit_mistakes_warn),
+        cmocka_unit_test(messages_name_the_cause),
     };
     return cw_run_tests(tests, cwtest::g_tools.test);
 }

@@ -137,7 +137,7 @@ void solve_exact_matches_library(void**)
     assert_string_equal(f.at("model").string.c_str(), "fastsim");
     assert_int_equal(static_cast<int>(f.num("iterations")), 0);
     assert_true(f.num("residual") == 0.0);
-    assert_string_equal(f.at("input").at("grid").string.c_str(), "strips");
+    assert_string_equal(f.at("input").at("grid").string.c_str(), "kalker_strips");
     // Text output names the model and the normal problem's results.
     const Run text = cli_ok(with({"solve", "--model", "exact"}, c.args));
     assert_non_null(std::strstr(text.out.c_str(), "model      exact"));

@@ -265,7 +265,7 @@ void wear_reads_campaign_files(void**)
     const std::string grids = scratch_file(
         "grids.csv", "s0,a,b,N,nx,passes\n0,6e-3,4e-3,6e4,12,1\n0,6e-3,4e-3,6e4,14,1\n");
     expect_refusal(cli({"wear", "--in", grids, "--out", path("never"), "--no-plots"}), 2,
-                   "line 3, column grid/nx/ny: gives the grid strips 14 x 20, line 2 strips 12 x 20",
+                   "line 3, column grid/nx/ny: gives the grid kalker_strips 14 x 20, line 2 kalker_strips 12 x 20",
                    "wear grids.csv");
     // The value that is wrong, as written.
     const std::string negative =

@@ -13,6 +13,7 @@
 // usage: test_cli_wheelrail <creepwork binary> <scratch dir> <profile dir> [cmocka filter]
 #include <algorithm>
 #include <cmath>
+#include <fstream>
 #include <cstdlib>
 #include <filesystem>
 #include <map>
@@ -43,13 +44,16 @@ void json_matches_library(void**)
     const cwtest::Json& list = j.at("patches");
     assert_int_equal(list.array.size(), 1);
     const cwtest::Json& q = list.array[0];
-    for (const char* key : {"y_contact_rail", "z_contact_rail", "contact_angle", "xi_x", "xi_y", "phi", "Fn",
-                            "Fx", "Fs", "Mn", "p_max", "n_contact", "n_adhesion", "n_slip"})
+    for (const char* key : {"y_contact_rail", "z_contact_rail", "contact_angle", "cksi", "ceta", "cphi",
+                            "Fn", "Fx_rail", "Fs_rail", "Mn_rail", "p_max", "n_contact", "n_adhesion",
+                            "n_slip"})
         assert_true(q.has(key));
+    // creepwork's own keys, of the opposite sign, are not used for CONTACT's values
+    for (const char* key : {"xi_x", "xi_y", "phi", "Fx", "Fs", "Mn"}) assert_false(q.has(key));
     // CONTACT's module 1 (header comment)
     assert_close(q.num("Fn"), 10010.0, 0, 100);
-    assert_close(q.num("Fx"), 2260.0, 0, 100);
-    assert_close(q.num("Fs"), -1979.0, 0, 100);
+    assert_close(q.num("Fx_rail"), 2260.0, 0, 100);
+    assert_close(q.num("Fs_rail"), -1979.0, 0, 100);
     assert_close(q.num("p_max"), 637.0e6, 0.03, 0);
     assert_close(j.num("z_ws"), -3.046e-3, 0, 1e-6);
     assert_close(j.at("total_rail").num("Fz"), 1e4, 1e-6, 0);
@@ -79,10 +83,12 @@ void json_matches_library(void**)
     assert_close(j.num("z_ws"), t.z, 1e-15, 0);
     assert_close(j.at("total_rail").num("Fy"), t.Fy, 1e-15, 0);
     assert_close(q.num("Fn"), pa.Fn, 1e-15, 0);
-    assert_close(q.num("Fs"), pa.Fs, 1e-15, 0);
-    assert_close(q.num("Mn"), pa.Mn, 1e-15, 0);
-    assert_close(q.num("xi_y"), pa.ceta, 1e-15, 0);
-    assert_close(q.num("phi"), pa.cphi, 1e-15, 0);
+    assert_close(q.num("Fx_rail"), pa.Fx, 1e-15, 0);
+    assert_close(q.num("Fs_rail"), pa.Fs, 1e-15, 0);
+    assert_close(q.num("Mn_rail"), pa.Mn, 1e-15, 0);
+    assert_close(q.num("cksi"), pa.cksi, 1e-15, 0);
+    assert_close(q.num("ceta"), pa.ceta, 1e-15, 0);
+    assert_close(q.num("cphi"), pa.cphi, 1e-15, 0);
     assert_close(q.num("y_contact_rail"), pa.y_contact_rail, 1e-15, 0);
     assert_int_equal(static_cast<int>(q.num("n_slip")), pa.n_slip);
     cw_wheelrail_destroy(w);
@@ -106,21 +112,22 @@ void fast_model_near_exact(void**)
     const cwtest::Json exact =
         cwtest::parse_json(cwtest::cli_ok(cwtest::with(tread_args(), {"--format", "json"})).out);
     const cwtest::Json fast = cwtest::parse_json(
-        cwtest::cli_ok(cwtest::with(tread_args(), {"--model", "fast", "--format", "json"})).out);
+        cwtest::cli_ok(cwtest::with(tread_args(), {"--model", "fastsim", "--format", "json"})).out);
     assert_true(exact.at("model").string == "exact");
-    assert_true(fast.at("model").string == "fast");
+    assert_true(fast.at("model").string == "fastsim");
     assert_int_equal(fast.at("patches").array.size(), 1);
     assert_int_equal(exact.at("patches").array.size(), 1);
     // The fast model's accuracy at 3 mm: within 3 % of mu Fz = 3 kN
     // (doc/validation/manchester.md, the fast model against the exact one).
     const cwtest::Json& e = exact.at("patches").array[0];
     const cwtest::Json& f = fast.at("patches").array[0];
-    for (const char* key : {"Fn", "Fx", "Fs"}) assert_close(f.num(key), e.num(key), 0, 0.03 * 0.3 * 1e4);
+    for (const char* key : {"Fn", "Fx_rail", "Fs_rail"})
+        assert_close(f.num(key), e.num(key), 0, 0.03 * 0.3 * 1e4);
     // ... yet a different model: its own numbers, not the exact model's.
-    assert_true(f.num("Fx") != e.num("Fx"));
+    assert_true(f.num("Fx_rail") != e.num("Fx_rail"));
     assert_close(fast.at("total_rail").num("Fz"), 1e4, 1e-6, 0);
-    cwtest::expect_contains(cwtest::cli_ok(cwtest::with(tread_args(), {"--model", "fast"})).out,
-                            "model fast: FASTSIM with the semi-Hertzian normal problem");
+    cwtest::expect_contains(cwtest::cli_ok(cwtest::with(tread_args(), {"--model", "fastsim"})).out,
+                            "model fastsim: FASTSIM with the semi-Hertzian normal problem");
 }
 
 // Distance from (y, z) to the polyline through the points of `body`.
@@ -175,10 +182,10 @@ void writes_the_data_files(void**)
         contact += num(k, "state") != 0.0;
     }
     assert_close(Fn, q.num("Fn"), 1e-9, 0);
-    assert_close(Fx, q.num("Fx"), 0, 1e-9 * q.num("Fn"));
-    assert_close(Fs, q.num("Fs"), 0, 1e-9 * q.num("Fn"));
+    assert_close(Fx, q.num("Fx_rail"), 0, 1e-9 * q.num("Fn"));
+    assert_close(Fs, q.num("Fs_rail"), 0, 1e-9 * q.num("Fn"));
     // Mn about the reference point, on the rail (x, s from it).
-    assert_close(Mn, q.num("Mn"), 0, 1e-9 * q.num("Fn") * 1e-2);
+    assert_close(Mn, q.num("Mn_rail"), 0, 1e-9 * q.num("Fn") * 1e-2);
     assert_int_equal(contact, static_cast<int>(q.num("n_contact")));
 
     // The rail's points run through the contact reference point, which lies
@@ -268,6 +275,123 @@ void warns_about_implausible_units(void**)
     cwtest::expect_contains(k.err, "warning: --G = 82000 Pa is implausible");
 }
 
+// One vocabulary: --N is --Fz and fast is fastsim (the same numbers, to the
+// bit), the text numbers the patches from 0 as the files and pictures do,
+// and an error names the option as it was typed.
+void one_vocabulary(void**)
+{
+    std::vector<std::string> n_args = tread_args();
+    n_args[11] = "--N";
+    const std::string fz = cwtest::cli_ok(cwtest::with(tread_args(), {"--model", "fastsim", "--format", "json"})).out;
+    assert_true(cwtest::cli_ok(cwtest::with(n_args, {"--model", "fast", "--format", "json"})).out == fz);
+    const std::string text = cwtest::cli_ok(cwtest::with(n_args, {"--model", "fastsim"})).out;
+    const size_t header = text.find("patch  y_rail[mm]");
+    assert_true(header != std::string::npos);
+    const std::string first = text.substr(text.find('\n', header) + 1, 2);
+    assert_string_equal(first.c_str(), "0 ");
+    n_args[12] = "-5";
+    cwtest::expect_refusal(cwtest::cli(n_args), 2, "--N: must be > 0", "--N as typed");
+    cwtest::expect_refusal(cwtest::cli(cwtest::with(tread_args(), {"--N", "1e4"})), 2,
+                           "given twice, as --Fz and --N", "--Fz and --N");
+}
+
+// A measured MiniProf wheel, whose y runs from its flange back, on the
+// benchmark rail at 2 mm: its flange tip lands on the rail crown, the
+// wheelset 27.97 mm up (the file's flange height Sh). Solved, with warnings
+// naming the cause and the option that fixes it; with --wheel-y-offset
+// -0.07 (its flange back at -70 mm) the wheel runs on its tread and nothing
+// is said. A shift of 21 mm is warned about ("+-20 mm"), 19 mm is not.
+void warns_about_misplaced_wheel(void**)
+{
+    const std::vector<std::string> args = {
+        "wheelrail", "--wheel-profile", g_data + "/right-wheel-v1-pre-dry.whl", "--rail-profile",
+        g_data + "/MBench_UIC60_v3.prr", "--y-shift", "2e-3", "--Fz", "80e3", "--model", "fastsim",
+        "--V", "1", "--pitch-rate", "-2.1739130434782608", "--format", "json"};
+    const cwtest::Run r = cwtest::cli_ok(args);
+    const cwtest::Json j = cwtest::parse_json(r.out);
+    assert_close(j.num("z_ws"), -27.9698e-3, 0, 0.5e-3);
+    cwtest::expect_contains(r.err, "creepwork: warning: --wheel-y-offset = 0 m is implausible for a "
+                                   "wheel-rail contact: the flange tip lies at y = +");
+    cwtest::expect_contains(r.err, "mm from the flange back at the flange-back position = -70.0 mm (a "
+                                   "tip lies 10-30 mm from it): the profile starts at its flange back "
+                                   "(y = +0.5 mm): offset it by --wheel-y-offset = the flange-back "
+                                   "position");
+    cwtest::expect_contains(r.err, "creepwork: warning: the wheelset height z_ws = -0.0276");
+    cwtest::expect_contains(r.err, "from its flange tip: the wheelset rides on its flange tip");
+    cwtest::expect_contains(r.err, "the wheel profile's origin is off (see --wheel-y-offset)");
+
+    const cwtest::Run fixed = cwtest::cli_ok(cwtest::with(args, {"--wheel-y-offset", "-0.07"}));
+    assert_true(fixed.err.empty());
+    const cwtest::Json f = cwtest::parse_json(fixed.out);
+    assert_true(std::fabs(f.num("z_ws")) < 2e-3);
+    // the same as the profile's points moved by -70 mm through the C ABI
+    cw_wheelrail_params p;
+    cw_wheelrail_params_init(&p);
+    p.model = CW_MODEL_FASTSIM;
+    p.normal_method = CW_NORMAL_SEMI_HERTZ;
+    p.flange_back_position = 0.0; // the flange back where this profile has it
+    cw_wheelrail* w = nullptr;
+    assert_int_equal(cw_wheelrail_create(&p, (g_data + "/MBench_UIC60_v3.prr").c_str(),
+                                         (g_data + "/right-wheel-v1-pre-dry.whl").c_str(), &w, nullptr, 0),
+                     CW_OK);
+    cw_wheelrail_motion m;
+    cw_wheelrail_motion_init(&m);
+    m.y = 2e-3, m.vs = 1, m.vpitch = -2.1739130434782608;
+    cw_wheelrail_totals t;
+    cw_wheelrail_totals_init(&t);
+    assert_int_equal(cw_wheelrail_solve(w, &m, CW_WHEELRAIL_FORCE, 80e3, &t), CW_OK);
+    assert_close(f.num("z_ws"), t.z, 0, 1e-9);
+    cw_wheelrail_destroy(w);
+
+    std::vector<std::string> shift = benchmark_args();
+    shift[8] = "21e-3";
+    cwtest::expect_contains(cwtest::cli_ok(shift).err,
+                            "warning: --y-shift = 0.021 m is implausible for a wheel-rail contact: "
+                            "lateral shifts stay within +-20 mm");
+    shift[8] = "19e-3";
+    assert_true(cwtest::cli_ok(shift).err.find("--y-shift") == std::string::npos);
+}
+
+// Profiles that are not what their name says: the message names the cause.
+void profile_messages_name_the_cause(void**)
+{
+    const auto file = [](const std::string& name, const std::string& text) {
+        const std::string path = cwtest::g_tools.scratch + "/" + name;
+        std::ofstream(path, std::ios::binary) << text;
+        return path;
+    };
+    // The benchmark rail as a table in metres (read as mm: 1000 times too short).
+    std::string metres = "y z\n";
+    for (int k = 0; k <= 60; ++k) {
+        const double y = -0.035 + 0.07 * k / 60.0;
+        char row[64];
+        std::snprintf(row, sizeof row, "%.6f %.6f\n", y, y * y / 0.6);
+        metres += row;
+    }
+    const std::vector<std::string> base = {"wheelrail", "--wheel-profile", g_data + "/MBench_S1002_v3.prw",
+                                           "--Fz", "1e4"};
+    const cwtest::Run m = cwtest::cli(cwtest::with(base, {"--rail-profile", file("rail_in_m.txt", metres)}));
+    cwtest::expect_refusal(m, 2, "rail_in_m.txt: the rail profile is", "metres read as mm");
+    cwtest::expect_contains(m.err, "a profile in metres read as millimetres is 1000 times too short");
+    assert_true(m.err.find("duplicate") == std::string::npos);
+    // ... read in metres: no unit message (the flat parabola is a poor rail, but a rail)
+    const cwtest::Run ok = cwtest::cli(cwtest::with(base, {"--rail-profile", file("rail_in_m2.txt", metres),
+                                                           "--profile-unit", "1"}));
+    assert_true(ok.err.find("too short") == std::string::npos);
+    // A binary file: its bytes are not echoed.
+    std::string binary = "\x7f" "ELF\x02\x01\x01";
+    for (int k = 0; k < 300; ++k) binary += static_cast<char>((k * 37) & 0xff);
+    const cwtest::Run b = cwtest::cli(cwtest::with(base, {"--rail-profile", file("random.bin", binary)}));
+    cwtest::expect_refusal(b, 2, "random.bin line 1: byte 0x7f at column 1 is not text", "binary file");
+    assert_true(b.err.size() < 300);
+    // A zig-zag where measured sections were joined: no advice about
+    // options the command lacks.
+    const cwtest::Run z = cwtest::cli({"wheelrail", "--wheel-profile", g_data + "/Car7216_0001r.whl",
+                                       "--rail-profile", g_data + "/MBench_UIC60_v3.prr", "--Fz", "1e4"});
+    assert_int_equal(z.status, 2);
+    assert_true(z.err.find("threshold") == std::string::npos);
+}
+
 void bad_inputs_fail_cleanly(void**)
 {
     using cwtest::cli;
@@ -307,6 +431,9 @@ int main(int argc, char** argv)
         cmocka_unit_test(writes_pictures),
         cmocka_unit_test(warns_about_implausible_units),
         cmocka_unit_test(bad_inputs_fail_cleanly),
+        cmocka_unit_test(one_vocabulary),
+        cmocka_unit_test(warns_about_misplaced_wheel),
+        cmocka_unit_test(profile_messages_name_the_cause),
     };
     return cw_run_tests(tests, cwtest::g_tools.test);
 }

@@ -1,0 +1,49 @@
+% Solver.temperature and Solver.damage: both bodies' temperatures are nx-by-ny
+% and share one value in contact, T_c = (b1 T0_1 + b2 T0_2)/(b1 + b2), the
+% maxima are the largest contact values, the power is V times the work
+% map's sum, the solve's rolling direction is passed on; in full sliding
+% the RCF index is max(-0.5, mu - k/pz) and the T_gamma density sums (x
+% area) to W_macro; errors carry the library's identifier and name the input.
+grid = struct('kind', 'uniform', 'nx', 24, 'ny', 20, 'box_scale', 1.2);
+s = creepwork.Solver(grid);
+r = s.solve('a', 7e-3, 'b', 5e-3, 'N', 100e3, 'xi_x', 1.5e-3, 'xi_y', -5e-4, 'phi', 0.5, ...
+            'rolling_direction', -1);
+t = s.temperature('rolling_speed', 30, 'T0_1', 10, 'T0_2', 70, 'conductivity_2', 200);
+assert(isequal(size(t.rail), [24, 20]) && isequal(size(t.wheel), [24, 20]));
+inside = r.state >= 1;
+b1 = sqrt(50 * 7850 * 450);
+b2 = sqrt(200 * 7850 * 450);
+assert(abs(t.contact_temperature - (b1 * 10 + b2 * 70) / (b1 + b2)) <= 1e-12);
+assert(isequal(t.rail(inside), t.wheel(inside)));
+assert(t.T_max_1 == max(t.rail(inside)) && t.T_max_2 == max(t.wheel(inside)));
+assert(abs(t.power - 30 * r.W_consistent) <= 1e-12 * t.power);
+assert(t.x_max_1 > 0);  % rolling towards -x: the hottest contact element on the high-x side
+d = s.solve('a', 7e-3, 'b', 5e-3, 'N', 100e3, 'mu', 0.3, 'xi_x', 0.05);
+assert(d.n_adhesion == 0);
+k = s.damage('k_yield', 200e6);
+expect = -0.5 * ones(24, 20);
+on = d.state >= 1 & d.fields.pz > 0;
+expect(on) = max(-0.5, 0.3 - 200e6 ./ d.fields.pz(on));
+assert(max(abs(k.rcf_index(:) - expect(:))) <= 1e-12);
+assert(abs(sum(k.t_gamma_density(:) .* d.fields.area(:)) - d.W_macro) <= 1e-12 * d.W_macro);
+assert(k.T_gamma == d.W_macro);
+try
+  s.damage('k_yield', 0);
+  error('test:noError', 'k_yield = 0 accepted');
+catch err
+  assert(strcmp(err.identifier, 'creepwork:CW_ERR_INVALID_INPUT'), err.identifier);
+  assert(~isempty(strfind(err.message, 'k_yield')), err.message);
+end
+try
+  s.temperature('rolling_speed', 30, 'conductivity_1', -1);
+  error('test:noError', 'conductivity_1 < 0 accepted');
+catch err
+  assert(strcmp(err.identifier, 'creepwork:CW_ERR_INVALID_INPUT'), err.identifier);
+  assert(~isempty(strfind(err.message, 'conductivity_1')), err.message);
+end
+lastwarn('');
+s.temperature('rolling_speed', 30, 'conductivity_1', 0.05);
+[msg, id] = lastwarn();
+assert(strcmp(id, 'creepwork:implausibleUnits') && ~isempty(strfind(msg, 'conductivity_1')), msg);
+delete(s);
+disp('temperature and damage indices as the header defines them');

@@ -1,0 +1,211 @@
+#include "surface_outputs.hpp"
+
+#include <memory>
+
+#include "cli_error.hpp"
+#include "contact_solver.hpp"
+#include "options.hpp"
+#include "report.hpp"
+
+namespace cwcli {
+
+// Helpers in a namespace of their own: the program is built in unity
+// batches, where the files' anonymous namespaces are one.
+namespace surface_options_detail {
+
+const char* const kTemperatureNumbers[][2] = {
+    {"T0-1", "T0_1"}, {"T0-2", "T0_2"}, {"heat-capacity-1", "heat_capacity_1"},
+    {"heat-capacity-2", "heat_capacity_2"}, {"conductivity-1", "conductivity_1"},
+    {"conductivity-2", "conductivity_2"}, {"density-1", "density_1"}, {"density-2", "density_2"}};
+
+double* temperature_field(cw_temperature_params& p, const std::string& field)
+{
+    if (field == "T0_1") return &p.T0_1;
+    if (field == "T0_2") return &p.T0_2;
+    if (field == "heat_capacity_1") return &p.heat_capacity_1;
+    if (field == "heat_capacity_2") return &p.heat_capacity_2;
+    if (field == "conductivity_1") return &p.conductivity_1;
+    if (field == "conductivity_2") return &p.conductivity_2;
+    if (field == "density_1") return &p.density_1;
+    return &p.density_2;
+}
+
+// The library's message, with the options that set the fields it names.
+[[noreturn]] void rejected(int status, const char* detail, const char* call)
+{
+    const std::string text = detail && *detail ? detail : cw_status_string(status);
+    throw CliError(status == CW_ERR_INTERNAL ? kExitFailure : kExitUsage,
+                   std::string("library rejected the input (") + call + "): " + text +
+                       options_named_in(text));
+}
+
+template <class T>
+struct Destroy {
+    int (*destroy)(T*);
+    void operator()(T* p) const { destroy(p); }
+};
+
+// Values valid but implausible for steel: the unit most likely meant.
+std::vector<std::string> implausible(const SurfaceRequest& r)
+{
+    std::vector<std::string> w;
+    const auto say = [&w](const char* option, double v, const char* why) {
+        w.push_back(std::string("warning: --") + option + " = " + round_trip_text(v) + " " + why);
+    };
+    if (r.temperature) {
+        const cw_temperature_params& p = r.temperature_params;
+        for (const auto& [option, v] : {std::pair{"conductivity-1", p.conductivity_1},
+                                        std::pair{"conductivity-2", p.conductivity_2}})
+            if (v < 1.0 || v > 1000.0)
+                say(option, v, "W/(m K) is implausible for steel (50; W/(mm K) typed?)");
+        for (const auto& [option, v] : {std::pair{"heat-capacity-1", p.heat_capacity_1},
+                                        std::pair{"heat-capacity-2", p.heat_capacity_2}})
+            if (v < 100.0 || v > 5000.0)
+                say(option, v, "J/(kg K) is implausible for steel (450; kJ/(kg K) typed?)");
+        for (const auto& [option, v] : {std::pair{"density-1", p.density_1},
+                                        std::pair{"density-2", p.density_2}})
+            if (v < 1000.0 || v > 25000.0)
+                say(option, v, "kg/m^3 is implausible for steel (7850; g/cm^3 typed?)");
+        if (p.rolling_speed > 150.0)
+            say("speed", p.rolling_speed, "m/s is implausible: trains run below 150 m/s (km/h "
+                                          "typed as m/s?)");
+    }
+    if (r.damage && r.damage_params.k_yield > 0.0 && r.damage_params.k_yield < 1e6)
+        say("k-yield", r.damage_params.k_yield,
+            "Pa is implausible for steel's shear yield stress (2-6e8 Pa; MPa typed as Pa?)");
+    return w;
+}
+
+} // namespace surface_options_detail
+
+using namespace surface_options_detail;
+
+std::vector<OptionSpec> surface_options()
+{
+    using K = OptionKind;
+    std::vector<OptionSpec> specs = {{"temperature", K::flag, {}},
+                                     {"temperature-discretisation", K::choice,
+                                      {"consistent", "contact"}},
+                                     {"speed", K::number, {}},
+                                     {"k-yield", K::number, {}}};
+    for (const auto& n : kTemperatureNumbers) specs.push_back({n[0], K::number, {}});
+    return specs;
+}
+
+SurfaceRequest read_surface_request(const ParsedOptions& opts, int rolling_direction)
+{
+    SurfaceRequest r;
+    r.temperature = opts.has("temperature");
+    cw_temperature_params_init(&r.temperature_params);
+    cw_damage_params_init(&r.damage_params);
+    for (const char* name : {"temperature-discretisation", "T0-1", "T0-2", "heat-capacity-1",
+                             "heat-capacity-2", "conductivity-1", "conductivity-2", "density-1",
+                             "density-2"})
+        if (opts.has(name) && !r.temperature)
+            throw usage_error(std::string("--") + name, "needs --temperature");
+    if (r.temperature) {
+        cw_temperature_params& p = r.temperature_params;
+        for (const auto& n : kTemperatureNumbers)
+            if (opts.has(n[0])) *temperature_field(p, n[1]) = opts.number(n[0], 0.0);
+        if (!opts.has("speed"))
+            throw usage_error("--temperature", "needs the rolling speed --speed V (m/s)");
+        p.rolling_speed = opts.number("speed", 0.0);
+        p.rolling_direction = rolling_direction;
+        p.discretisation = opts.text("temperature-discretisation", "consistent") == "contact"
+                               ? CW_TEMPERATURE_CONTACT
+                               : CW_TEMPERATURE_CONSISTENT;
+    } else if (opts.has("speed")) {
+        throw usage_error("--speed", "is the rolling speed of --temperature; give that too");
+    }
+    r.damage = opts.has("k-yield");
+    if (r.damage) r.damage_params.k_yield = opts.number("k-yield", 0.0);
+    r.warnings = implausible(r);
+    return r;
+}
+
+SurfaceOutput compute_surface(const cw_solver* solver, const SurfaceRequest& request)
+{
+    SurfaceOutput o;
+    o.temperature = request.temperature;
+    o.damage = request.damage;
+    int nx = 0, ny = 0;
+    cw_solver_grid_size(solver, &nx, &ny);
+    const size_t n = static_cast<size_t>(nx) * static_cast<size_t>(ny);
+    if (request.temperature) {
+        cw_temperature* raw = nullptr;
+        if (const int st = cw_temperature_create(solver, &raw))
+            rejected(st, nullptr, "cw_temperature_create");
+        std::unique_ptr<cw_temperature, Destroy<cw_temperature>> t(raw, {cw_temperature_destroy});
+        cw_temperature_result_init(&o.temperature_result);
+        if (const int st = cw_temperature_compute(t.get(), solver, &request.temperature_params,
+                                                  &o.temperature_result))
+            rejected(st, cw_temperature_last_error(t.get()), "cw_temperature_compute");
+        o.rail.resize(n);
+        o.wheel.resize(n);
+        if (cw_temperature_get_field(t.get(), CW_TEMPERATURE_FIELD_RAIL, o.rail.data(), n) ||
+            cw_temperature_get_field(t.get(), CW_TEMPERATURE_FIELD_WHEEL, o.wheel.data(), n))
+            throw CliError(kExitFailure, std::string("cw_temperature_get_field failed: ") +
+                                             cw_temperature_last_error(t.get()));
+    }
+    if (request.damage) {
+        cw_damage* raw = nullptr;
+        if (const int st = cw_damage_create(solver, &raw)) rejected(st, nullptr, "cw_damage_create");
+        std::unique_ptr<cw_damage, Destroy<cw_damage>> d(raw, {cw_damage_destroy});
+        cw_damage_result_init(&o.damage_result);
+        if (const int st = cw_damage_compute(d.get(), solver, &request.damage_params,
+                                             &o.damage_result))
+            rejected(st, cw_damage_last_error(d.get()), "cw_damage_compute");
+        o.rcf_index.resize(n);
+        if (cw_damage_get_field(d.get(), CW_DAMAGE_FIELD_RCF_INDEX, o.rcf_index.data(), n))
+            throw CliError(kExitFailure, std::string("cw_damage_get_field failed: ") +
+                                             cw_damage_last_error(d.get()));
+    }
+    return o;
+}
+
+void add_surface_json(JsonObject& json, const SurfaceOutput& o)
+{
+    if (o.temperature) {
+        const cw_temperature_result& t = o.temperature_result;
+        const bool rail = t.T_max_1 >= t.T_max_2;
+        json.number("T_max_1", t.T_max_1)
+            .number("T_max_2", t.T_max_2)
+            .number("T_max_x", rail ? t.x_max_1 : t.x_max_2)
+            .number("T_max_y", rail ? t.y_max_1 : t.y_max_2)
+            .number("contact_temperature", t.contact_temperature)
+            .number("power", t.power)
+            .integer("temperature_iterations", t.iterations)
+            .text("temperature_discretisation",
+                  t.discretisation == CW_TEMPERATURE_CONTACT ? "contact" : "consistent");
+    }
+    if (o.damage) {
+        const cw_damage_result& d = o.damage_result;
+        json.number("rcf_index_max", d.rcf_index_max)
+            .number("rcf_index_x", d.x_rcf_max)
+            .number("rcf_index_y", d.y_rcf_max)
+            .number("mu_eff", d.mu_eff)
+            .number("FI_surf", d.FI_surf)
+            .number("T_gamma", d.T_gamma)
+            .number("wlrm_damage", d.wlrm_damage);
+    }
+}
+
+void print_surface_text(std::ostream& out, const SurfaceOutput& o)
+{
+    if (o.temperature) {
+        const cw_temperature_result& t = o.temperature_result;
+        out << "temperature (" << (t.discretisation == CW_TEMPERATURE_CONTACT ? "CONTACT's" : "consistent")
+            << " discretisation): rail max " << fmt(t.T_max_1, 5) << " degC at x = "
+            << fmt(1e3 * t.x_max_1, 4) << " mm, y = " << fmt(1e3 * t.y_max_1, 4)
+            << " mm; wheel max " << fmt(t.T_max_2, 5) << " degC; in contact from "
+            << fmt(t.contact_temperature, 5) << " degC; frictional power " << fmt(t.power, 5) << " W\n";
+    }
+    if (o.damage) {
+        const cw_damage_result& d = o.damage_result;
+        out << "damage: RCF index max " << fmt(d.rcf_index_max, 4) << ", FI_surf "
+            << fmt(d.FI_surf, 4) << " (mu_eff " << fmt(d.mu_eff, 4) << "), T_gamma "
+            << fmt(d.T_gamma, 5) << " N, WLRM damage " << fmt(d.wlrm_damage, 4) << " per pass\n";
+    }
+}
+
+} // namespace cwcli

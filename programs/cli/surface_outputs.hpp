@@ -1,0 +1,52 @@
+// The surface post-processors of one solved contact on the command line:
+// the flash temperature of both bodies (--temperature, body 1 the rail,
+// body 2 the wheel) and the damage indices (--k-yield), through the C ABI's
+// cw_temperature and cw_damage handles; their JSON keys and text lines.
+#pragma once
+
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include <creepwork/creepwork.h>
+
+#include "json.hpp"
+#include "options.hpp"
+
+namespace cwcli {
+
+// --temperature, --T0-1, --T0-2, --heat-capacity-1/-2, --conductivity-1/-2,
+// --density-1/-2, --temperature-discretisation, --speed, --k-yield.
+std::vector<OptionSpec> surface_options();
+
+struct SurfaceRequest {
+    bool temperature = false, damage = false;
+    cw_temperature_params temperature_params{};
+    cw_damage_params damage_params{};
+    // "warning: ..." for values valid but implausible for steel wheels and
+    // rails (W/(mm K) typed as W/(m K), km/h as m/s, MPa as Pa).
+    std::vector<std::string> warnings;
+};
+
+// Throws CliError(kExitUsage) naming the option: a temperature option
+// without --temperature, --temperature without --speed.
+SurfaceRequest read_surface_request(const ParsedOptions& opts, int rolling_direction);
+
+struct SurfaceOutput {
+    bool temperature = false, damage = false;
+    cw_temperature_result temperature_result{};
+    cw_damage_result damage_result{};
+    std::vector<double> rail, wheel, rcf_index; // per element [i + j*nx]
+};
+
+// Computes what was requested on solver's last CW_SOLVE_FULL solve. Throws
+// CliError(kExitUsage) with the library's message and the options it names.
+SurfaceOutput compute_surface(const cw_solver* solver, const SurfaceRequest& request);
+
+// T_max_1, T_max_2 [deg C], T_max_x, T_max_y [m] (the hotter body's hottest
+// contact element), temperature_iterations; rcf_index_max, FI_surf,
+// T_gamma [N], wlrm_damage. SI whatever --units.
+void add_surface_json(JsonObject& json, const SurfaceOutput& o);
+void print_surface_text(std::ostream& out, const SurfaceOutput& o);
+
+} // namespace cwcli

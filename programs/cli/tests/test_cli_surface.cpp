@@ -1,0 +1,177 @@
+/* Tests of `creepwork solve --temperature / --k-yield`, run as a user runs
+ * it: its JSON equals what the C ABI's cw_temperature and cw_damage give for
+ * the same contact (bitwise: the JSON prints exact doubles), on an ellipse
+ * and on CONTACT's example grid (--gap); bad input fails cleanly (status 2,
+ * one stderr line naming the option); the pictures are drawn.
+ *
+ * usage: test_cli_surface <creepwork binary> <scratch dir> [cmocka filter] */
+#include <cmath>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include <creepwork/creepwork.h>
+
+#include "cli_checks.hpp"
+// Last: cmocka defines macros (fail, skip) that clash with the C++ library.
+#include "test_support.h"
+
+namespace fs = std::filesystem;
+using namespace cwtest;
+
+namespace {
+
+const std::vector<std::string> kContact = {
+    "solve", "--a", "7e-3", "--b", "5e-3", "--N", "100e3", "--xi-x", "1.5e-3", "--xi-y", "-5e-4",
+    "--spin", "0.5", "--rolling-direction", "-1", "--grid", "uniform", "--nx", "24", "--ny", "20",
+    "--box-scale", "1.2"};
+const std::vector<std::string> kSurface = {
+    "--temperature", "--speed", "30", "--T0-1", "10", "--T0-2", "70", "--conductivity-2", "200",
+    "--k-yield", "2e8"};
+
+// The JSON keys against the C ABI on the same contact, bitwise; the hotter
+// body's position is T_max_x, T_max_y.
+void surface_matches_library(void**)
+{
+    const Run r = cli_ok(with(with(kContact, kSurface), {"--format", "json"}));
+    const Json j = parse_or_fail(r.out);
+    cw_grid g;
+    cw_grid_init(&g);
+    g.kind = CW_GRID_UNIFORM;
+    g.nx = 24;
+    g.ny = 20;
+    g.box_scale = 1.2;
+    cw_params p;
+    cw_params_init(&p);
+    p.a = 7e-3, p.b = 5e-3, p.normal_force = 100e3, p.xi_x = 1.5e-3, p.xi_y = -5e-4, p.phi = 0.5;
+    p.rolling_direction = -1;
+    cw_solver* s = nullptr;
+    assert_int_equal(cw_solver_create(&g, &s, nullptr, 0), CW_OK);
+    assert_int_equal(cw_solver_solve(s, &p, CW_SOLVE_FULL, nullptr), CW_OK);
+    cw_temperature* t = nullptr;
+    cw_damage* d = nullptr;
+    assert_int_equal(cw_temperature_create(s, &t), CW_OK);
+    assert_int_equal(cw_damage_create(s, &d), CW_OK);
+    cw_temperature_params tp;
+    cw_temperature_params_init(&tp);
+    tp.rolling_speed = 30, tp.T0_1 = 10, tp.T0_2 = 70, tp.conductivity_2 = 200;
+    tp.rolling_direction = -1;
+    cw_temperature_result tr;
+    cw_temperature_result_init(&tr);
+    assert_int_equal(cw_temperature_compute(t, s, &tp, &tr), CW_OK);
+    cw_damage_params dp;
+    cw_damage_params_init(&dp);
+    dp.k_yield = 2e8;
+    cw_damage_result dr;
+    cw_damage_result_init(&dr);
+    assert_int_equal(cw_damage_compute(d, s, &dp, &dr), CW_OK);
+    assert_true(j.num("T_max_1") == tr.T_max_1 && j.num("T_max_2") == tr.T_max_2);
+    const bool rail = tr.T_max_1 >= tr.T_max_2;
+    assert_true(j.num("T_max_x") == (rail ? tr.x_max_1 : tr.x_max_2));
+    assert_true(j.num("T_max_y") == (rail ? tr.y_max_1 : tr.y_max_2));
+    assert_true(j.num("contact_temperature") == tr.contact_temperature);
+    assert_true(j.num("power") == tr.power);
+    assert_true(j.num("temperature_iterations") == 1);
+    assert_string_equal(j.at("temperature_discretisation").string.c_str(), "consistent");
+    assert_true(j.num("rcf_index_max") == dr.rcf_index_max && j.num("FI_surf") == dr.FI_surf);
+    assert_true(j.num("T_gamma") == dr.T_gamma && j.num("wlrm_damage") == dr.wlrm_damage);
+    assert_true(j.num("mu_eff") == dr.mu_eff);
+    // the text says the same
+    const Run text = cli_ok(with(kContact, kSurface));
+    expect_contains(text.out, "temperature (consistent discretisation): rail max");
+    expect_contains(text.out, "damage: RCF index max");
+    cw_damage_destroy(d);
+    cw_temperature_destroy(t);
+    cw_solver_destroy(s);
+}
+
+// CONTACT's example ertz_temperature, case 1, through --gap: its grid as a
+// gap file, CONTACT's discretisation: 166.8 deg C (its printed MAX(T1,T2)).
+void surface_contact_example(void**)
+{
+    std::string gap = "x_m,y_m,h_m\n";
+    char line[96];
+    for (int j = 0; j < 45; ++j)
+        for (int i = 0; i < 216; ++i) {
+            const double x = -7.8e-3 + i * 0.2e-3, y = -11.0e-3 + j * 0.5e-3;
+            std::snprintf(line, sizeof line, "%.17g,%.17g,%.17g\n", x, y,
+                          1.015 * x * x + 0.4215 * y * y);
+            gap += line;
+        }
+    const std::string file = scratch_file("ertz.csv", gap);
+    const Run r = cli_ok({"solve", "--gap", file, "--N", "1e5", "--mu", "0.3", "--G", "82e9",
+                          "--nu", "0.28", "--xi-x", "-0.03333", "--rolling-direction", "-1",
+                          "--temperature", "--speed", "30", "--T0-1", "0", "--T0-2", "0",
+                          "--temperature-discretisation", "contact", "--format", "json"});
+    const Json j = parse_or_fail(r.out);
+    assert_close(std::fmax(j.num("T_max_1"), j.num("T_max_2")), 166.8, 0, 0.1);
+    assert_string_equal(j.at("temperature_discretisation").string.c_str(), "contact");
+}
+
+void surface_bad_inputs_fail_cleanly(void**)
+{
+    struct Case {
+        std::vector<std::string> extra;
+        std::string names;
+    } cases[] = {{{"--T0-1", "5"}, "--T0-1"},
+                 {{"--temperature"}, "--speed"},
+                 {{"--speed", "30"}, "--speed"},
+                 {{"--temperature", "--speed", "30", "--conductivity-1", "-1"}, "--conductivity-1"},
+                 {{"--temperature", "--speed", "0"}, "--speed"},
+                 {{"--temperature", "--speed", "30", "--density-2", "7.85e-6"}, "--density-2"},
+                 {{"--temperature", "--speed", "30", "--temperature-discretisation", "exact"},
+                  "--temperature-discretisation"},
+                 {{"--k-yield", "0"}, "--k-yield"}};
+    for (const Case& c : cases) {
+        const std::string out = g_tools.scratch + "/refused";
+        const Run r = cli(with(with(kContact, c.extra), {"--out", out}));
+        expect_refusal(r, 2, c.names, c.names);
+        assert_false(fs::exists(out));
+    }
+}
+
+// Valid but implausible values for steel are warned about, naming the
+// option and the unit most likely meant; the run goes on.
+void surface_warns_about_implausible_units(void**)
+{
+    const Run r = cli_ok(with(kContact, {"--temperature", "--speed", "30", "--conductivity-1",
+                                         "0.05", "--heat-capacity-2", "45", "--k-yield", "300"}));
+    expect_contains(r.err, "--conductivity-1 = 0.05 W/(m K) is implausible for steel");
+    expect_contains(r.err, "--heat-capacity-2 = 45 J/(kg K) is implausible");
+    expect_contains(r.err, "--k-yield = 300 Pa is implausible");
+    expect_lacks(r.err, "--conductivity-2");
+}
+
+void surface_writes_pictures(void**)
+{
+    if (std::getenv("CW_TEST_NO_GNUPLOT")) {
+        cw_skip();
+        return;
+    }
+    const std::string out = g_tools.scratch + "/pictures";
+    cli_ok(with(with(kContact, kSurface), {"--out", out}));
+    for (const char* png : {"temperature_rail.png", "temperature_wheel.png", "rcf_index.png"})
+        assert_true(fs::file_size(out + "/" + png) > 10000);
+    const std::string script = slurp(out + "/gnuplot/surface.gp");
+    assert_non_null(std::strstr(script.c_str(), "Rail (body 1) surface temperature"));
+    assert_non_null(std::strstr(script.c_str(), "Wheel (body 2) surface temperature"));
+    assert_non_null(std::strstr(script.c_str(), "RCF index"));
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+    if (!set_up(argc, argv, "test_cli_surface", {"creepwork", "scratch"})) return 2;
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(surface_matches_library),
+        cmocka_unit_test(surface_contact_example),
+        cmocka_unit_test(surface_bad_inputs_fail_cleanly),
+        cmocka_unit_test(surface_warns_about_implausible_units),
+        cmocka_unit_test(surface_writes_pictures),
+    };
+    return cw_run_tests(tests, g_tools.test);
+}

@@ -1,0 +1,158 @@
+"""Surface temperature (cw_temperature) and damage indices (cw_damage) of a
+solved contact. Body 1 is the rail, body 2 the wheel. Units SI, temperatures
+in deg C (doc/theory/temperature.md, doc/theory/damage.md)."""
+
+import ctypes
+from typing import TYPE_CHECKING, Any
+
+import numpy as np
+
+from . import _errors
+from ._handle import Handle
+from ._library import CONSTANTS, DTYPES, address, lib
+from ._params import DAMAGE_PARAMS, TEMPERATURE_PARAMS
+
+if TYPE_CHECKING:
+    from ._solver import Solver
+
+
+# (field, unit, condition, what is plausible): the thresholds of the CLI's
+# (programs/cli/surface_outputs.cpp, implausible()).
+_STEEL = [
+    ("conductivity_1", "W/(m K)", lambda v: v < 1.0 or v > 1000.0, "steel is 50 (W/(mm K) typed?)"),
+    ("conductivity_2", "W/(m K)", lambda v: v < 1.0 or v > 1000.0, "steel is 50 (W/(mm K) typed?)"),
+    ("heat_capacity_1", "J/(kg K)", lambda v: v < 100.0 or v > 5000.0,
+     "steel is 450 (kJ/(kg K) typed?)"),
+    ("heat_capacity_2", "J/(kg K)", lambda v: v < 100.0 or v > 5000.0,
+     "steel is 450 (kJ/(kg K) typed?)"),
+    ("density_1", "kg/m^3", lambda v: v < 1000.0 or v > 25000.0, "steel is 7850 (g/cm^3 typed?)"),
+    ("density_2", "kg/m^3", lambda v: v < 1000.0 or v > 25000.0, "steel is 7850 (g/cm^3 typed?)"),
+    ("rolling_speed", "m/s", lambda v: v > 150.0, "trains run below 150 m/s (km/h typed?)"),
+    ("k_yield", "Pa", lambda v: 0.0 < v < 1e6,
+     "steel's shear yield stress is 2-6e8 Pa (MPa typed as Pa?)"),
+]
+
+
+def _implausible(rec):
+    return ["%s = %.10g %s is implausible: %s" % (field, rec[field], unit, why)
+            for field, unit, bad, why in _STEEL
+            if field in rec.dtype.names and bad(float(rec[field]))]
+
+
+def _named(prefix):
+    return {n[len(prefix):].lower(): v for n, v in CONSTANTS.items() if n.startswith(prefix)}
+
+
+#: Temperature field name -> CW_TEMPERATURE_FIELD_* id: rail, wheel, heat.
+TEMPERATURE_FIELDS = _named("CW_TEMPERATURE_FIELD_")
+#: Damage field name -> CW_DAMAGE_FIELD_* id: rcf_index, t_gamma_density.
+DAMAGE_FIELDS = _named("CW_DAMAGE_FIELD_")
+
+
+class SurfaceResult:
+    """The result of a compute: every field of its C result struct as an
+    attribute, and its fields as (ny, nx) arrays (attributes too)."""
+
+    def __init__(self, rec, fields):
+        self.totals = {name: rec[name].item() for name in rec.dtype.names[1:]}
+        self.__dict__.update(self.totals)
+        self.fields = fields
+        self.__dict__.update(fields)
+
+    def __repr__(self):
+        shown = ", ".join("%s=%.6g" % kv for kv in list(self.totals.items())[:3])
+        return "<creepwork.%s %s>" % (type(self).__name__, shown)
+
+
+class TemperatureResult(SurfaceResult):
+    """Both bodies' temperatures: T_max_1, x_max_1, y_max_1 (the rail's
+    hottest contact element [deg C, m]), T_max_2, x_max_2, y_max_2 (the
+    wheel's), contact_temperature [deg C], power [W], iterations,
+    discretisation; fields rail and wheel [deg C], heat [W/m^2]."""
+
+
+class DamageResult(SurfaceResult):
+    """The damage indices: rcf_index_max, x_rcf_max, y_rcf_max, mu_eff,
+    FI_surf, contact_area [m^2], T_gamma [N], wlrm_damage [per pass];
+    fields rcf_index [-] and t_gamma_density [Pa]."""
+
+
+class _Surface(Handle):
+    _noun = ""
+    _params = None
+    _fields = {}
+    _result_class = SurfaceResult
+
+    def __init__(self, solver: "Solver") -> None:
+        self._handle = ctypes.c_void_p()
+        self.nx, self.ny = solver.nx, solver.ny
+        _errors.check(getattr(lib, "cw_%s_create" % self._noun)(solver._live(),
+                                                                  ctypes.byref(self._handle)))
+
+    def _compute(self, solver, keywords, warn):
+        rec = self._params.record(keywords, "compute")
+        if warn:
+            _errors.warn_units(_implausible(rec), 3)
+        res = np.zeros((), DTYPES["cw_%s_result" % self._noun])
+        getattr(lib, "cw_%s_result_init" % self._noun)(address(res))
+        self._check(getattr(lib, "cw_%s_compute" % self._noun)(
+            self._live(), solver._live(), address(rec), address(res)))
+        block = np.empty((len(self._fields), self.ny, self.nx))
+        n, base = self.nx * self.ny, address(block)
+        get = getattr(lib, "cw_%s_get_field" % self._noun)
+        fields = {}
+        for k, (name, field_id) in enumerate(self._fields.items()):
+            self._check(get(self._handle, field_id, base + 8 * n * k, n))
+            fields[name] = block[k]
+        return self._result_class(res, fields)
+
+
+class Temperature(_Surface):
+    """The temperature workspace of one solver's grid (cw_temperature).
+    Usually reached through Solver.temperature(**keywords):
+
+        with creepwork.Solver() as s:
+            s.solve(a=7e-3, b=5e-3, N=100e3, xi_x=2e-3)
+            t = s.temperature(rolling_speed=30.0)
+            t.T_max_1, t.rail            # deg C; (ny, nx) array
+    """
+
+    _destroy = "cw_temperature_destroy"
+    _last_error = "cw_temperature_last_error"
+    _noun = "temperature"
+    _params = TEMPERATURE_PARAMS
+    _fields = TEMPERATURE_FIELDS
+    _result_class = TemperatureResult
+
+    def compute(self, solver: "Solver", warn: bool = True, **keywords: Any) -> TemperatureResult:
+        """The temperatures of solver's last solve (which needs fields=True)
+        from the keywords (the fields of cw_temperature_params, with
+        cw_temperature_params_init's defaults; rolling_direction defaults to
+        that of solver's last solve). warn=False skips the plausibility check
+        for steel (UnitWarning):
+        """
+        keywords.setdefault("rolling_direction", getattr(solver, "_rolling_direction", 1))
+        return self._compute(solver, keywords, warn)
+
+
+class Damage(_Surface):
+    """The damage-index workspace of one solver's grid (cw_damage). Usually
+    reached through Solver.damage(k_yield=...)."""
+
+    _destroy = "cw_damage_destroy"
+    _last_error = "cw_damage_last_error"
+    _noun = "damage"
+    _params = DAMAGE_PARAMS
+    _fields = DAMAGE_FIELDS
+    _result_class = DamageResult
+
+    def compute(self, solver: "Solver", warn: bool = True, **keywords: Any) -> DamageResult:
+        """The damage indices of solver's last solve (fields=True) from the
+        keywords (the fields of cw_damage_params; k_yield has no default).
+        warn=False skips the plausibility check (UnitWarning):
+        """
+        return self._compute(solver, keywords, warn)
+
+
+Temperature.compute.__doc__ += "\n" + TEMPERATURE_PARAMS.doc(8)
+Damage.compute.__doc__ += "\n" + DAMAGE_PARAMS.doc(8)
