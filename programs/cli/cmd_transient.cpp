@@ -14,6 +14,7 @@
 #include "command_common.hpp"
 #include "commands.hpp"
 #include "contact_inputs.hpp"
+#include "contact_options.hpp"
 #include "gap_input.hpp"
 #include "json.hpp"
 #include "options.hpp"
@@ -28,7 +29,7 @@ std::vector<OptionSpec> transient_options()
             {"gap", OptionKind::text, {}},
             {"N", OptionKind::number, {}},
             {"approach", OptionKind::number, {}},
-            {"normal-method", OptionKind::choice, {"exact", "semi-hertz"}},
+            {"normal-method", OptionKind::choice, {"exact", "semi_hertz"}},
             {"G", OptionKind::number, {}},
             {"nu", OptionKind::number, {}},
             {"mu", OptionKind::number, {}},
@@ -192,13 +193,18 @@ int command_transient(int argc, char** argv, int first)
     } else {
         p.normal_force = o.number("N", 0.0);
     }
-    if (o.text("normal-method", "exact") == "semi-hertz") p.normal_method = CW_NORMAL_SEMI_HERTZ;
+    if (o.text("normal-method", "exact") == "semi_hertz") p.normal_method = CW_NORMAL_SEMI_HERTZ;
     p.G = o.number("G", p.G);
     p.nu = o.number("nu", p.nu);
     p.mu = o.number("mu", p.mu);
     p.tolerance = o.number("tolerance", p.tolerance);
     p.max_iterations = o.integer("max-iterations", p.max_iterations);
     p.spin_offset = o.number("spin-offset", p.spin_offset);
+
+    // The library's plausibility rules, as every door prints them (with the
+    // results: a refusal prints only its line).
+    const std::vector<std::string> warnings =
+        plausibility_warnings(g.grid, p, OptionSource(o), o.text("gap", ""));
 
     Transient h;
     char message[512] = "";
@@ -237,6 +243,7 @@ int command_transient(int argc, char** argv, int first)
         }
     }
     if (json) out << "]\n";
+    for (const std::string& w : warnings) std::cerr << "creepwork: warning: " << w << "\n";
     std::cout << out.str();
     return kExitOk;
 }
