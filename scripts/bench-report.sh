@@ -18,6 +18,7 @@
 #   calibrated     creepwork_calibration time
 #   nonhertz       creepwork_bench_nonhertz          CONTACT beside it (needs CONTACT)
 #   wheelrail      creepwork_bench_wheelrail 200     CONTACT beside it (needs CONTACT)
+#   transient      creepwork_bench_transient 20      CONTACT beside it (needs CONTACT)
 #   legacy         creepwork_bench_legacy
 #   python         python/bench/bench_python.py      the package against the C batch
 #   campaign       bench/campaign/bench_campaign.sh  ranks x threads (needs MPI)
@@ -47,7 +48,7 @@
 #            (numbers not for the page: the stamp says --quick)
 set -euo pipefail
 source_dir=$(cd "$(dirname "$0")/.." && pwd)
-all_sections=(fastsim exact jacobian wear temperature calibrated nonhertz wheelrail legacy python campaign campaign-wear)
+all_sections=(fastsim exact jacobian wear temperature calibrated nonhertz wheelrail transient legacy python campaign campaign-wear)
 usage() { sed -n '/^# usage:/,/^set -euo/p' "$0" | sed '$d; s/^# \{0,1\}//' >&2; exit 2; }
 build="" update="" only="" quick=0 allow_dirty=0 allow_load=0 wait_max=300 list=0
 while [ $# -gt 0 ]; do
@@ -142,6 +143,7 @@ needs() {
     calibrated) programs=(creepwork_calibration) ;;
     nonhertz) programs=(creepwork_bench_nonhertz) ;;
     wheelrail) programs=(creepwork_bench_wheelrail) ;;
+    transient) programs=(creepwork_bench_transient) ;;
     legacy) programs=(creepwork_bench_legacy) ;;
     python) programs=(creepwork_bench_python_batch) ;;
     campaign | campaign-wear) programs=(creepwork creepwork-campaign) ;;
@@ -151,7 +153,7 @@ needs() {
     [ -x "$bin/$p" ] || { echo "$bin/$p is not built"; return; }
   done
   case "$1" in
-    nonhertz | wheelrail)
+    nonhertz | wheelrail | transient)
       if [ -z "$contact_dir" ] || [ ! -x "$contact_dir/bin/contact" ] || [ ! -d "$contact_dir/CONTACT/examples" ]; then
         echo "CONTACT's columns need a CONTACT build: configure with -DCREEPWORK_CONTACT_DIR=<dir>"
         return
@@ -167,7 +169,7 @@ stamp_extra() {
   case "$1" in
     python) printf '; Python %s, numpy %s' "$("$python" -c 'import platform; print(platform.python_version())')" \
               "$("$python" -c 'import numpy; print(numpy.__version__)')" ;;
-    nonhertz | wheelrail) printf '; CONTACT built in %s' "$contact_dir" ;;
+    nonhertz | wheelrail | transient) printf '; CONTACT built in %s' "$contact_dir" ;;
     campaign | campaign-wear) printf '; %s' "$("${MPIRUN:-mpirun}" --version 2>/dev/null | head -n 1)" ;;
   esac
 }
@@ -184,6 +186,9 @@ run_section() {
         "$bin/creepwork_bench_nonhertz" $(q --quick) ;;
     wheelrail)
       (cd "$work" && "$bin/creepwork_bench_wheelrail" "$([ $quick -eq 1 ] && echo 10 || echo 200)" \
+        "$contact_dir/bin/contact" "$contact_dir/CONTACT/examples") ;;
+    transient)
+      (cd "$work" && "$bin/creepwork_bench_transient" "$([ $quick -eq 1 ] && echo 3 || echo 20)" \
         "$contact_dir/bin/contact" "$contact_dir/CONTACT/examples") ;;
     legacy) "$bin/creepwork_bench_legacy" ;;
     python)

@@ -27,7 +27,7 @@ LAYERS = [
     ["halfspace"],             # Kalker's half-space: influence coefficients, FFT products
     ["normal", "march"],       # the normal problem on any gap; the strip march
     ["exact", "fastsim", "calibrated"],  # the tangential models on the ellipse's grids
-    ["gap"],                   # the tangential models on a gap grid
+    ["gap", "transient"],      # the tangential models on a gap grid; transient rolling
     ["solver"],                # the solver: makes the models, runs them, exports fields
     ["wear", "thermal", "damage"],  # post-processors of the fields
     ["wheelrail"],             # wheel/rail geometry: a solver per contact patch

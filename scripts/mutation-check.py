@@ -433,6 +433,31 @@ MUTANTS += GAP_JACOBIAN_MUTANTS
 # -------------------------------------------------- end contacts of any shape
 
 
+# ---------------------------------------------------------- transient rolling
+# core/transient over the steady solver's shift operator: caught by CONTACT's
+# transient examples through the core and through the C ABI.
+TRANSIENT = ["test_transient_contact", "test_capi_transient"]
+TRANSIENT_MUTANTS = [
+    dict(id="transient-no-transport", what="a step forgets the transport of the state before (d B q0)",
+         file="core/transient/transient_contact.cpp",
+         old="    for (int k = 0; k < bn_; ++k) base_[k] = d * bq0_[k] - aq0_[k];",
+         new="    for (int k = 0; k < bn_; ++k) base_[k] = -aq0_[k];",
+         tests=TRANSIENT, require=["test_transient_contact"]),
+    dict(id="transient-restore-stale", what="restore keeps the handle's tractions, not the saved ones",
+         file="core/transient/transient_contact.cpp",
+         old="    q0_ = q;",
+         new="    (void)q;",
+         tests=TRANSIENT, require=["test_transient_contact"]),
+    dict(id="transient-work-scale", what="the work of a step misses the slip's unit",
+         file="core/transient/transient_contact.cpp",
+         old="    r.W_step = T_ * U_ * area * w;",
+         new="    r.W_step = T_ * area * w;",
+         tests=TRANSIENT, require=["test_transient_contact"]),
+]
+MUTANTS += TRANSIENT_MUTANTS
+# ------------------------------------------------------ end transient rolling
+
+
 # ---------------------------------------------------------------- wheel/rail
 # The chain from a patch's geometry to its forces (core/wheelrail/
 # patch_contact.cpp): CONTACT's module-1 signs and the rigid slip about the

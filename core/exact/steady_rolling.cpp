@@ -99,7 +99,7 @@ void SteadyRolling::slide_freely(const std::vector<double>& contact)
 void SteadyRolling::sweep(GridConvolution& conv, const std::vector<Complex>& q,
                           std::vector<Complex>& out)
 {
-    conv.apply_tangential(q.data(), s_.data(), true);
+    conv.apply_tangential(q.data(), s_.data(), rolling_);
     ++products_;
     for (int k = 0; k < n_; ++k) s_[k] += w_[k];
     for (int j = 0; j < ny_; ++j) {
@@ -125,7 +125,7 @@ void SteadyRolling::sweep(GridConvolution& conv, const std::vector<Complex>& q,
 
 void SteadyRolling::linear_sweep(GridConvolution& conv, const Complex* v, Complex* out)
 {
-    conv.apply_tangential(v, work_.data(), true);
+    conv.apply_tangential(v, work_.data(), rolling_);
     ++products_;
     for (int j = 0; j < ny_; ++j) {
         Complex ahead(0.0, 0.0);
@@ -245,10 +245,17 @@ SteadyRollingInfo SteadyRolling::solve(GridConvolution& conv, double tolerance, 
 {
     SteadyRollingInfo info;
     products_ = 0;
-    b0x_ = conv.cf11(0, 0) - conv.cf11(1, 0);
-    b0y_ = conv.cf22(0, 0) - conv.cf22(1, 0);
-    b1x_ = conv.cf11(-1, 0) - conv.cf11(0, 0);
-    b1y_ = conv.cf22(-1, 0) - conv.cf22(0, 0);
+    if (rolling_) {
+        b0x_ = conv.cf11(0, 0) - conv.cf11(1, 0);
+        b0y_ = conv.cf22(0, 0) - conv.cf22(1, 0);
+        b1x_ = conv.cf11(-1, 0) - conv.cf11(0, 0);
+        b1y_ = conv.cf22(-1, 0) - conv.cf22(0, 0);
+    } else {
+        b0x_ = conv.cf11(0, 0);
+        b0y_ = conv.cf22(0, 0);
+        b1x_ = conv.cf11(-1, 0);
+        b1y_ = conv.cf22(-1, 0);
+    }
     // (cf12 vanishes on the row of the loaded element: B(0,0), B(-1,0) are diagonal.)
 
     project(q_);

@@ -32,6 +32,13 @@
 
 namespace creepwork {
 
+// The operator of the solve: what an element's slip is made of.
+//  rolling: s = w + B q, the steady-rolling shift per element length;
+//  shift:   s = w + A q, the displacement itself (a transient step: w
+//           then holds the rigid slip and the previous state's share,
+//           transient/transient_contact.hpp).
+enum class SlipOperator { rolling, shift };
+
 struct SteadyRollingInfo {
     int newton_steps = 0;
     int products = 0;        // FFT products (sweeps, GMRES iterations)
@@ -55,6 +62,8 @@ public:
     void set_size(int nx, int ny);
     int nx() const { return nx_; }
     int ny() const { return ny_; }
+    // The operator of the next solves (rolling unless set).
+    void set_operator(SlipOperator op) { rolling_ = op == SlipOperator::rolling; }
 
     // conv holds this grid's coefficients; g (bound per element, 0 outside
     // the contact set) and w (rigid slip) are set by the caller through
@@ -128,7 +137,10 @@ private:
                          std::vector<Complex>& f, double& max_rel) const;
 
     int nx_, ny_, n_, m_;
-    double b0x_ = 0, b0y_ = 0, b1x_ = 0, b1y_ = 0; // B(0,0), B(-1,0) (diagonal)
+    bool rolling_ = true;
+    // The operator's own element and the one ahead (diagonal): B(0,0), B(-1,0)
+    // rolling, A(0,0), A(-1,0) shift.
+    double b0x_ = 0, b0y_ = 0, b1x_ = 0, b1y_ = 0;
     std::vector<double> g_;
     std::vector<Complex> w_, q_, gq_, f_, dq_, qt_, gt_, ft_, s_, work_;
     std::vector<LocalJacobian> jac_;

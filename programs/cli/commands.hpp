@@ -10,6 +10,7 @@ int command_fit_fig6(int argc, char** argv, int first);
 int command_wear(int argc, char** argv, int first);
 int command_compare(int argc, char** argv, int first);
 int command_wheelrail(int argc, char** argv, int first);
+int command_transient(int argc, char** argv, int first);
 // Execs creepwork-campaign (programs/campaign/, built only with MPI).
 int command_campaign(int argc, char** argv, int first);
 
@@ -21,5 +22,6 @@ const char* usage_fit_fig6();
 const char* usage_wear();
 const char* usage_compare();
 const char* usage_wheelrail();
+const char* usage_transient();
 
 } // namespace cwcli

@@ -49,11 +49,13 @@ int dispatch(int argc, char** argv)
     if (command == "campaign") return command_campaign(argc, argv, 2);
     if (command == "compare") return command_compare(argc, argv, 2);
     if (command == "wheelrail") return command_wheelrail(argc, argv, 2);
+    if (command == "transient") return command_transient(argc, argv, 2);
     const std::string hint = nearest(command, {"solve", "sweep", "fit-fig6", "wear", "campaign",
-                                               "compare", "wheelrail", "help", "version"});
+                                               "compare", "wheelrail", "transient", "help",
+                                               "version"});
     throw CliError(kExitUsage, "'" + command +
                                    "': unknown command (solve, sweep, fit-fig6, wear, campaign, "
-                                   "compare, wheelrail" +
+                                   "compare, wheelrail, transient" +
                                    (hint.empty() ? std::string("; see --help)")
                                                  : "); did you mean " + hint + "?"));
 }

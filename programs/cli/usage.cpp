@@ -30,6 +30,9 @@ commands:
              creepages and forces by the exact theory or the fast model
              (CONTACT's module-1 conventions); with --out the profiles,
              every patch's fields and their pictures
+  transient  transient rolling of a contact given by its gap: one step per
+             line of a steps file (creepages or forces), tractions carried
+             from step to step (doc/theory/transient.md)
   compare    one contact by FASTSIM (or --simplified: its elliptic bound,
              the calibrated model, all three) and by the exact theory on
              one grid: the totals, how far each work distribution is from
@@ -609,6 +612,51 @@ example (the Manchester benchmark, case A-2.2 at 3 mm):
   creepwork wheelrail --wheel-profile MBench_S1002_v3.prw \
       --rail-profile MBench_UIC60_v3.prr --y-shift 3e-3 --yaw 0.0072 \
       --roll -1.803e-4 --Fz 1e4 --V 2 --pitch-rate -4.3451503 --format json
+)";
+}
+
+const char* usage_transient()
+{
+    return R"(usage: creepwork transient --steps STEPS.csv --gap GAP.csv (--N N | --approach A)
+                          [options]
+
+Transient rolling (doc/theory/transient.md): Kalker's exact theory with
+memory on the gap grid of GAP.csv (the file of creepwork solve --gap), in
+contact-fixed coordinates: the material moves through the contact from +x
+(the leading edge) by dq per step, and the tractions of each step start from
+those of the last. Every step is committed. SI units throughout.
+
+STEPS.csv: a header naming the columns, then one step per line ('#' lines
+and blank lines are skipped):
+  dq_m           distance rolled in the step [m], 0 <= dq_m <= the gap
+                 grid's dx; 0 is a shift (Cattaneo's problem)     required
+  xi_x, xi_y     creepages [-]; with dq_m = 0 the rigid shift [m] default 0
+  phi            spin [1/m]; with dq_m = 0 the rotation [rad]      default 0
+With --prescribe forces:
+  Fx             the longitudinal force on the wheel [N]: xi_x is found
+  Fy             the lateral force [N]: xi_y is found (or give xi_y)
+
+options:
+  --steps FILE        the steps (required)
+  --gap FILE          the contact's gap: header x_m,y_m,h_m (required)
+  --N N               normal force [N], or
+  --approach A        the approach [m] from the gap's datum
+  --normal-method M   exact (default) or semi_hertz
+  --G, --nu, --mu     shear modulus [Pa], Poisson's ratio, friction
+                      (default steel 82e9, 0.28; mu 0.3)
+  --tolerance T, --max-iterations K, --spin-offset S
+                      as for creepwork solve --model exact
+  --prescribe P       creepages (default) or forces
+  --start S           zero (default: zero tractions) or steady (the steady
+                      rolling solution of the first line's creepages or
+                      forces, then every line as a step)
+  --format F          text (default: one line per step) or json: a list
+                      with one object per step: line xi_x xi_y phi Fx Fy Mz
+                      n_contact n_adhesion n_slip W_step iterations
+
+Outputs: xi_x, xi_y, phi as given or found; Fx, Fy, Mz on the wheel [N, N,
+N m], Mz about the gap file's origin; W_step the frictional work of the
+step [J].
 )";
 }
 

@@ -49,6 +49,7 @@ from ._wear import (DEPTH_KINDS, WEAR_FIELDS, Accumulator, Strips, Wear, WearPro
 from ._surface import (DAMAGE_FIELDS, TEMPERATURE_FIELDS, Damage, DamageResult, Temperature,
                        TemperatureResult)
 from ._wheelrail import WheelRail
+from ._transient import TRANSIENT_FIELDS, Transient
 from . import plot
 from ._helpers import (Flexibilities, Hertz, KalkerCoefficients, fastsim_normalised, hertz,
                        kalker_coefficients, kalker_flexibilities, status_string, version,
@@ -65,7 +66,8 @@ __version__ = "%d.%d.%d" % (_CONSTANTS["CW_VERSION_MAJOR"], _CONSTANTS["CW_VERSI
 __all__ = (["solve", "jacobian", "params", "Solver", "Result", "Profile", "FIELDS",
             "JACOBIAN_ROWS", "JACOBIAN_COLUMNS", "solve_many", "Batch", "ManyResult", "Wear",
             "WearResult", "WearProfile", "Strips", "WEAR_FIELDS", "DEPTH_KINDS",
-            "wear_profile_update", "Accumulator", "WheelRail", "kalker_coefficients",
+            "wear_profile_update", "Accumulator", "WheelRail", "Transient", "TRANSIENT_FIELDS",
+            "kalker_coefficients",
             "kalker_flexibilities", "hertz", "fastsim_normalised", "KalkerCoefficients",
             "Flexibilities", "Hertz", "version", "version_number", "status_string", "Error",
             "UnitWarning", "DTYPES", "LIBRARY_PATH"] + EXCEPTION_NAMES + list(_CONSTANTS))

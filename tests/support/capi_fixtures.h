@@ -81,6 +81,32 @@ static inline cw_grid cw_test_two_lobes(double* h)
     return g;
 }
 
+/* CONTACT's example catt_to_cart (examples/catt_to_cart.inp, in SI): a
+ * sphere, h = 2.963 (x^2 + y^2) [m], on 34 x 33 cells of 0.25 mm from
+ * (-4.125, -4.125) mm; N = 0.4705 N, G = 1e6 Pa, nu = 0.28, mu = 0.4013;
+ * the exact model. h receives its 34 * 33 values; params the contact. */
+enum { CW_CATT_NX = 34, CW_CATT_NY = 33 };
+static inline cw_grid cw_test_catt_to_cart(double* h, cw_params* params)
+{
+    cw_grid g = cw_test_grid(CW_GRID_GAP, CW_CATT_NX, CW_CATT_NY, 1.0);
+    g.dx = g.dy = 0.25e-3;
+    g.x0 = g.y0 = -4.0e-3;
+    for (int j = 0; j < CW_CATT_NY; ++j)
+        for (int i = 0; i < CW_CATT_NX; ++i) {
+            const double x = g.x0 + i * g.dx, y = g.y0 + j * g.dy;
+            h[i + CW_CATT_NX * j] = 2.963 * (x * x + y * y);
+        }
+    cw_params_init(params);
+    params->model = CW_MODEL_EXACT;
+    params->normal_force = 0.4705;
+    params->G = 1e6;
+    params->nu = 0.28;
+    params->mu = 0.4013;
+    params->gap = h;
+    params->gap_len = (size_t)CW_CATT_NX * CW_CATT_NY;
+    return g;
+}
+
 /* Elements of the solver's grid. */
 static inline size_t cw_cells(const cw_solver* s)
 {

@@ -731,11 +731,12 @@ CW_API int cw_solver_solve_jacobian(cw_solver* solver, const cw_params* params, 
                                     cw_result* result, double* jacobian, size_t jacobian_len);
 
 /* Wear laws and wear on a profile grid; surface temperature and damage
- * indices; one wheel on one rail from the profiles: in these parts,
- * included here. */
+ * indices; one wheel on one rail from the profiles; transient rolling: in
+ * these parts, included here. */
 #include "creepwork/creepwork_wear.h"
 #include "creepwork/creepwork_surface.h"
 #include "creepwork/creepwork_wheelrail.h"
+#include "creepwork/creepwork_transient.h"
 
 #ifdef __cplusplus
 } /* extern "C" */

@@ -1,0 +1,139 @@
+/* creepwork: transient rolling -- part of the C API, included by <creepwork/creepwork.h>
+ * (include that header, not this one). The conventions of creepwork.h hold. */
+#ifndef CREEPWORK_H
+#error "include <creepwork/creepwork.h>, not <creepwork/creepwork_transient.h>"
+#endif
+#ifndef CREEPWORK_TRANSIENT_H
+#define CREEPWORK_TRANSIENT_H
+
+/* ------------------------------------------------------ transient rolling */
+
+/* Kalker's exact half-space theory with memory (doc/theory/transient.md):
+ * the tangential tractions of one time step depend on those of the last,
+ * as in the start of rolling from a shifted contact, short-pitch
+ * oscillations or an integrator's steps at the adhesion limit. Contact-fixed
+ * coordinates (CONTACT's T = 2) on a gap grid (CW_GRID_GAP): the contact
+ * stays on the grid and the material moves through it from +x (the leading
+ * edge) to -x by dq per step; dq = 0 is a shift (Cattaneo's problem).
+ *
+ * The handle holds a committed state (the tractions of the last committed
+ * step). cw_transient_input computes one step from it without changing it
+ * (a trial, as often as an integrator retries); cw_transient_commit makes
+ * the last trial the state; cw_transient_rewind drops it. A trial depends
+ * only on the committed state and its inputs: repeated, it gives the same
+ * bits. cw_transient_save / cw_transient_restore give and take the
+ * committed state as an array of 64-bit words (this library build's
+ * layout), for a host's checkpoints. */
+
+typedef struct cw_transient cw_transient;
+
+/* cw_transient_input.prescribe */
+#define CW_PRESCRIBE_CREEPAGES 0 /* xi_x, xi_y, phi given */
+#define CW_PRESCRIBE_FX 1        /* Fx given: xi_x found; xi_y, phi given */
+#define CW_PRESCRIBE_FORCES 2    /* Fx and Fy given: xi_x, xi_y found; phi given */
+
+typedef struct cw_transient_input {
+    size_t struct_size; /* set by cw_transient_input_init */
+    double dq;          /* distance rolled in the step [m], 0 <= dq <= the grid's dx; 0 (the
+                           default) is a shift */
+    double xi_x, xi_y;  /* rolling (dq > 0): creepages [-]; a shift: the rigid shift along
+                           x, y [m] */
+    double phi;         /* rolling: spin creepage [1/m]; a shift: rotation [rad] */
+    int prescribe;      /* CW_PRESCRIBE_* (default CW_PRESCRIBE_CREEPAGES) */
+    double Fx, Fy;      /* prescribed forces on the wheel [N], |F| < mu N; met to within
+                           params->tolerance (default 1e-8) times mu N */
+} cw_transient_input;
+
+typedef struct cw_transient_result {
+    size_t struct_size;     /* set by cw_transient_result_init */
+    double xi_x, xi_y, phi; /* the step's creepages (shift): as given, the prescribed
+                               forces' found */
+    double Fx, Fy;          /* creep force on the wheel [N] */
+    double Mz;              /* creep moment about the grid's origin, on the wheel [N m] */
+    int n_contact, n_adhesion, n_slip;
+    double W_step;          /* frictional work of the step [J]: |traction| |slip| summed over
+                               the slipping elements times their area */
+    int iterations;         /* Newton steps of the tangential problem, all force iterations */
+    int force_iterations;   /* Newton steps on the prescribed forces */
+    double residual;        /* final relative residual of the tangential problem */
+    int64_t steps_committed;/* committed steps since the last start or restore */
+} cw_transient_result;
+
+/* Fills defaults and struct_size. Errors: CW_ERR_NULL_POINTER. */
+CW_API int cw_transient_input_init(cw_transient_input* step);
+/* Zeroes the result and sets struct_size. Errors: CW_ERR_NULL_POINTER. */
+CW_API int cw_transient_result_init(cw_transient_result* result);
+
+/* Creates the transient contact of grid (CW_GRID_GAP) and params
+ * (model CW_MODEL_EXACT; the gap, normal load and method, mu > 0, G, nu,
+ * tolerance, max_iterations and spin_offset are read, the creepages and
+ * rolling_direction are not): solves the normal problem and starts from
+ * zero tractions. All memory is allocated here. message (may be NULL)
+ * receives an explanation of an error, truncated to message_len bytes.
+ * Errors: CW_ERR_NULL_POINTER, CW_ERR_STRUCT_SIZE, CW_ERR_UNKNOWN_OPTION,
+ * CW_ERR_GRID_OUT_OF_RANGE, CW_ERR_INVALID_INPUT (another grid kind or
+ * model, mu = 0, no contact, a bad input), CW_ERR_NOT_CONVERGED,
+ * CW_ERR_OUT_OF_MEMORY. On error *transient is set to NULL. */
+CW_API int cw_transient_create(const cw_grid* grid, const cw_params* params,
+                               cw_transient** transient, char* message, size_t message_len);
+
+/* Frees everything; NULL is a no-op. Always CW_OK. */
+CW_API int cw_transient_destroy(cw_transient* transient);
+
+/* Starts from zero tractions (no committed step). Errors: CW_ERR_NULL_POINTER. */
+CW_API int cw_transient_start_zero(cw_transient* transient);
+
+/* Starts from the steady-rolling solution of step's creepages or forces
+ * (dq is not read) and writes it to result (may be NULL). Errors:
+ * CW_ERR_NULL_POINTER, CW_ERR_STRUCT_SIZE, CW_ERR_UNKNOWN_OPTION
+ * (prescribe), CW_ERR_INVALID_INPUT, CW_ERR_NOT_CONVERGED. On error the
+ * committed state is unchanged. */
+CW_API int cw_transient_start_steady(cw_transient* transient, const cw_transient_input* step,
+                                     cw_transient_result* result);
+
+/* Computes one step from the committed state (a trial) into result (may
+ * be NULL) and the fields. Errors: CW_ERR_NULL_POINTER, CW_ERR_STRUCT_SIZE,
+ * CW_ERR_UNKNOWN_OPTION (prescribe), CW_ERR_INVALID_INPUT (dq outside [0,
+ * dx], a force at or beyond mu N, NaN), CW_ERR_NOT_CONVERGED. On error the
+ * committed state is unchanged and there is no trial. */
+CW_API int cw_transient_step(cw_transient* transient, const cw_transient_input* step,
+                             cw_transient_result* result);
+
+/* Makes the last trial the committed state. Errors: CW_ERR_NULL_POINTER,
+ * CW_ERR_NO_SOLUTION (no trial since the last commit, rewind or start). */
+CW_API int cw_transient_commit(cw_transient* transient);
+
+/* Drops the last trial; the committed state stays. Errors: CW_ERR_NULL_POINTER. */
+CW_API int cw_transient_rewind(cw_transient* transient);
+
+/* The length of a saved state in 64-bit words into *words. Errors:
+ * CW_ERR_NULL_POINTER. */
+CW_API int cw_transient_state_size(const cw_transient* transient, size_t* words);
+
+/* Writes the committed state to out (len >= cw_transient_state_size
+ * words). Errors: CW_ERR_NULL_POINTER, CW_ERR_BUFFER_TOO_SMALL. */
+CW_API int cw_transient_save(const cw_transient* transient, uint64_t* out, size_t len);
+
+/* Makes a saved state (len words) the committed state and drops any trial.
+ * Errors: CW_ERR_NULL_POINTER, CW_ERR_INVALID_INPUT (words not saved by a
+ * handle of the same grid, load and friction). On error the handle is
+ * unchanged. */
+CW_API int cw_transient_restore(cw_transient* transient, const uint64_t* state, size_t len);
+
+/* Copies a field of the last step (or steady start) at [i + j*nx]:
+ * CW_FIELD_X, CW_FIELD_Y, CW_FIELD_PZ, CW_FIELD_PX, CW_FIELD_PY, and
+ * CW_FIELD_SX, CW_FIELD_SY as the slip of the step [m] (0 in adhesion and
+ * outside the contact). Errors: CW_ERR_NULL_POINTER, CW_ERR_NO_SOLUTION,
+ * CW_ERR_UNKNOWN_OPTION (another field), CW_ERR_BUFFER_TOO_SMALL. */
+CW_API int cw_transient_get_field(const cw_transient* transient, int field, double* out,
+                                  size_t len);
+
+/* Copies the element states of the last step (or steady start) at [i +
+ * j*nx], as cw_solver_get_state. Errors: CW_ERR_NULL_POINTER,
+ * CW_ERR_NO_SOLUTION, CW_ERR_BUFFER_TOO_SMALL. */
+CW_API int cw_transient_get_state(const cw_transient* transient, int* out, size_t len);
+
+/* Detailed message of the last error on this handle, as cw_solver_last_error. */
+CW_API const char* cw_transient_last_error(const cw_transient* transient);
+
+#endif /* CREEPWORK_TRANSIENT_H */

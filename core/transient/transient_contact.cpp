@@ -1,0 +1,428 @@
+#include "transient/transient_contact.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <string>
+
+#include "contact/contact_input.hpp"
+#include "contact/error.hpp"
+#include "contact/number_text.hpp"
+#include "exact/exact_model.hpp"
+#include "exact/tangential_solve.hpp"
+#include "normal/gap_grid.hpp"
+
+namespace creepwork {
+namespace {
+
+// Newton's method on prescribed forces: steps at most, and the linear
+// solves of its derivatives (relative residual): a derivative to four digits
+// costs the force's convergence nothing measurable (each step's force
+// error shrinks by ~1e-4 at least) and takes a third of the products of one
+// to ten.
+constexpr int kMaxForceIterations = 30;
+constexpr double kTangentTolerance = 1e-4;
+constexpr char kMagic[8] = {'c', 'w', 't', 'r', 'a', 'n', 's', '1'};
+
+void check_finite(const char* name, double v)
+{
+    if (!std::isfinite(v)) reject_input(name, v, "must be finite");
+}
+
+ContactInput own_gap(ContactInput in, const std::vector<double>& gap)
+{
+    in.gap = gap.data();
+    in.gap_len = gap.size();
+    return in;
+}
+
+} // namespace
+
+TransientContact::TransientContact(const GridSpec& grid, const ContactInput& in)
+    : nx_(checked_gap_grid(grid).nx), ny_(grid.ny), n_(grid.nx * grid.ny), x0_(grid.x0),
+      y0_(grid.y0), dx_(grid.dx), dy_(grid.dy),
+      gap_(in.gap && in.gap_len >= static_cast<size_t>(n_) ? in.gap : nullptr,
+           in.gap && in.gap_len >= static_cast<size_t>(n_) ? in.gap + n_ : nullptr),
+      in_(own_gap(in, gap_)), normal_(grid, GapNormalOptions{false, true}),
+      conv_(grid.nx, grid.ny, ConvolutionUse::tangential),
+      solver_(grid.nx, grid.ny, kKrylovDimension)
+{
+    ContactInput check = in;
+    check.xi_x = check.xi_y = check.phi = 0.0;
+    check.rolling_direction = 1;
+    validate_gap_input(check, static_cast<size_t>(n_), normal_.kernel_isa());
+    if (!(in.mu > 0.0))
+        reject_input("mu", in.mu, "must be > 0 for transient rolling (without friction "
+                                  "there are no tangential tractions to carry over)");
+    in_.rolling_direction = 1;
+    in_.xi_x = in_.xi_y = in_.phi = 0.0;
+    tolerance_ = in.tolerance > 0.0 ? in.tolerance : kExactDefaultTolerance;
+    max_steps_ = in.max_iterations > 0 ? in.max_iterations : kExactDefaultMaxIterations;
+    spin_offset_ = in.spin_offset >= 0.0 ? in.spin_offset : kExactDefaultSpinOffset;
+    normal_.solve(in_, false);
+    const std::vector<double>& p = normal_.pressure();
+    for (double v : p) p_ref_ = std::max(p_ref_, v);
+    if (!(p_ref_ > 0.0))
+        throw Error(ErrorKind::invalid_input,
+                    "the contact carries no load (no element of the gap grid is in contact): "
+                    "transient rolling needs normal_force > 0 or an approach with contact");
+    T_ = in.mu * p_ref_;
+    U_ = T_ * dx_ / in.G;
+    box_ = cell_box(nx_, ny_, [&](std::size_t k) { return p[k] > 0.0; });
+    bn_ = box_.nx * box_.ny;
+    conv_.set_size(box_.nx, box_.ny);
+    conv_.copy_coefficients(normal_.half_space(in.nu));
+    solver_.set_size(box_.nx, box_.ny);
+    std::vector<double>& g = solver_.bound();
+    for (int k = 0; k < bn_; ++k) g[k] = p[cell(k)] / p_ref_;
+    for (auto* v : {&q0_, &aq0_, &bq0_, &base_, &dw_, &tangent_[0], &tangent_[1]})
+        v->assign(bn_, Complex(0.0, 0.0));
+    start_zero();
+}
+
+void TransientContact::start_zero()
+{
+    std::fill(q0_.begin(), q0_.end(), Complex(0.0, 0.0));
+    std::fill(creep0_, creep0_ + 3, 0.0);
+    steps_ = 0;
+    trial_valid_ = false;
+    set_committed_terms();
+}
+
+void TransientContact::set_committed_terms()
+{
+    conv_.apply_tangential(q0_.data(), aq0_.data(), false);
+    conv_.apply_tangential(q0_.data(), bq0_.data(), true);
+}
+
+void TransientContact::validate(const TransientStepInput& s, bool steady) const
+{
+    if (!steady) {
+        check_finite("dq", s.dq);
+        // dq within a rounding of dx counts as dx.
+        if (s.dq < 0.0 || s.dq > dx_ * (1.0 + 1e-12))
+            reject_input("dq", s.dq,
+                         ("must be in [0, dx = " + number_text(dx_) +
+                          " m] (the distance rolled in one step; 0 is a shift)")
+                             .c_str());
+    }
+    check_finite("xi_x", s.xi_x);
+    check_finite("xi_y", s.xi_y);
+    check_finite("phi", s.phi);
+    const double limit = in_.mu * normal_.force();
+    if (s.prescribe_fx) {
+        check_finite("Fx", s.Fx);
+        if (!(std::fabs(s.Fx) < limit))
+            reject_input("Fx", s.Fx,
+                         ("must be below mu N = " + number_text(limit) +
+                          " N in magnitude (at mu N the contact slides: no creepage gives it)")
+                             .c_str());
+    }
+    if (s.prescribe_fy) {
+        check_finite("Fy", s.Fy);
+        if (!(std::fabs(s.Fy) < limit))
+            reject_input("Fy", s.Fy,
+                         ("must be below mu N = " + number_text(limit) +
+                          " N in magnitude (at mu N the contact slides: no creepage gives it)")
+                             .c_str());
+    }
+    if (s.prescribe_fx && s.prescribe_fy && std::hypot(s.Fx, s.Fy) >= limit)
+        reject_input("Fx", s.Fx,
+                     ("and Fy together must stay below mu N = " + number_text(limit) + " N")
+                         .c_str());
+}
+
+void TransientContact::set_slip(const double c[3], double dq, bool steady)
+{
+    // Rolling: the displacement of the step is creepage times dq (steady:
+    // per dx); a shift (dq = 0) is given as the displacement itself.
+    const double length = steady ? dx_ : dq > 0.0 ? dq : 1.0;
+    const double offset = steady ? spin_offset_ * dx_ : spin_offset_ * dq;
+    const double ux = c[0] * length / U_, uy = c[1] * length / U_, th = c[2] * length / U_;
+    std::vector<Complex>& w = solver_.rigid_slip();
+    for (int j = 0; j < box_.ny; ++j) {
+        const double y = y0_ + (box_.j0 + j) * dy_;
+        for (int i = 0; i < box_.nx; ++i) {
+            const int k = i + box_.nx * j;
+            const double x = x0_ + (box_.i0 + i) * dx_ + offset;
+            w[k] = Complex(ux - th * y, uy + th * x) + base_[k];
+        }
+    }
+}
+
+const TransientStepResult& TransientContact::step(const TransientStepInput& s)
+{
+    validate(s, false);
+    trial_valid_ = false;
+    // The committed state's share: -A q0 + d B q0.
+    const double d = std::min(s.dq / dx_, 1.0);
+    for (int k = 0; k < bn_; ++k) base_[k] = d * bq0_[k] - aq0_[k];
+    solver_.set_operator(SlipOperator::shift);
+    solver_.traction() = q0_;
+    return solve(s, false);
+}
+
+const TransientStepResult& TransientContact::start_steady(const TransientStepInput& s)
+{
+    validate(s, true);
+    trial_valid_ = false;
+    std::fill(base_.begin(), base_.end(), Complex(0.0, 0.0));
+    solver_.set_operator(SlipOperator::rolling);
+    std::fill(solver_.traction().begin(), solver_.traction().end(), Complex(0.0, 0.0));
+    solve(s, true);
+    trial_valid_ = false;
+    q0_ = solver_.traction();
+    std::copy(trial_creep_, trial_creep_ + 3, creep0_);
+    steps_ = 0;
+    set_committed_terms();
+    return result_;
+}
+
+const TransientStepResult& TransientContact::solve(const TransientStepInput& s, bool steady)
+{
+    const bool rolling = steady || s.dq > 0.0;
+    double c[3] = {s.xi_x, s.xi_y, s.phi};
+    // The force iteration starts from the last rolling creepages (rolling)
+    // or no shift.
+    if (s.prescribe_fx) c[0] = rolling ? creep0_[0] : 0.0;
+    if (s.prescribe_fy) c[1] = rolling ? creep0_[1] : 0.0;
+    const int unknowns = (s.prescribe_fx ? 1 : 0) + (s.prescribe_fy ? 1 : 0);
+    const int comp[2] = {s.prescribe_fx ? 0 : 1, 1};
+    const double target[2] = {s.prescribe_fx ? s.Fx : s.Fy, s.Fy};
+    const double length = steady ? dx_ : rolling ? s.dq : 1.0;
+    const double area = dx_ * dy_, force_scale = T_ * area;
+    const double ftol = tolerance_ * in_.mu * normal_.force();
+    int newton = 0, products = 0, iterations = 0;
+    SteadyRollingInfo ti;
+    for (;;) {
+        set_slip(c, s.dq, steady);
+        ti = solver_.solve(conv_, tolerance_, max_steps_);
+        newton += ti.newton_steps;
+        products += ti.products;
+        require_converged(ti, tolerance_);
+        if (unknowns == 0) break;
+        const std::vector<Complex>& q = solver_.traction();
+        double f[2] = {0.0, 0.0};
+        for (int k = 0; k < bn_; ++k) {
+            f[0] += comp[0] == 0 ? q[k].real() : q[k].imag();
+            f[1] += q[k].imag();
+        }
+        double r[2] = {force_scale * f[0] - target[0], force_scale * f[1] - target[1]};
+        bool done = std::fabs(r[0]) <= ftol && (unknowns < 2 || std::fabs(r[1]) <= ftol);
+        if (done) break;
+        if (iterations == kMaxForceIterations)
+            throw Error(ErrorKind::not_converged,
+                        "transient step: the prescribed force was not reached in " +
+                            std::to_string(kMaxForceIterations) + " Newton steps (residual " +
+                            number_text(std::fabs(r[0])) + " N)");
+        ++iterations;
+        // dF/dc per unknown: the derivative of the converged problem.
+        double J[2][2] = {{0.0, 0.0}, {0.0, 0.0}};
+        for (int u = 0; u < unknowns; ++u) {
+            const Complex unit = comp[u] == 0 ? Complex(length / U_, 0.0)
+                                              : Complex(0.0, length / U_);
+            std::fill(dw_.begin(), dw_.end(), unit);
+            tangent_[u] = solver_.tangent(conv_, dw_, kTangentTolerance,
+                                          kMaxJacobianIterations);
+            double sx = 0.0, sy = 0.0;
+            for (int k = 0; k < bn_; ++k) {
+                sx += tangent_[u][k].real();
+                sy += tangent_[u][k].imag();
+            }
+            J[0][u] = force_scale * (comp[0] == 0 ? sx : sy);
+            J[1][u] = force_scale * sy;
+        }
+        double dc[2] = {0.0, 0.0};
+        if (unknowns == 1) {
+            if (!(std::fabs(J[0][0]) > 0.0))
+                throw Error(ErrorKind::not_converged,
+                            "transient step: the force does not depend on the creepage "
+                            "(full slip); the prescribed force cannot be reached");
+            dc[0] = -r[0] / J[0][0];
+        } else {
+            const double det = J[0][0] * J[1][1] - J[0][1] * J[1][0];
+            if (!(std::fabs(det) > 0.0))
+                throw Error(ErrorKind::not_converged,
+                            "transient step: the forces do not depend on the creepages "
+                            "(full slip); the prescribed forces cannot be reached");
+            dc[0] = -(J[1][1] * r[0] - J[0][1] * r[1]) / det;
+            dc[1] = -(J[0][0] * r[1] - J[1][0] * r[0]) / det;
+        }
+        // The next start: the tractions moved along their derivatives.
+        std::vector<Complex>& qn = solver_.traction();
+        for (int u = 0; u < unknowns; ++u) {
+            c[comp[u]] += dc[u];
+            for (int k = 0; k < bn_; ++k) qn[k] += dc[u] * tangent_[u][k];
+        }
+    }
+    totals(c, ti);
+    result_.newton_steps = newton;
+    result_.products = products + 2 * (steady ? 0 : 1);
+    result_.force_iterations = iterations;
+    trial_valid_ = true;
+    trial_rolling_ = rolling;
+    std::copy(c, c + 3, trial_creep_);
+    return result_;
+}
+
+void TransientContact::totals(const double c[3], const SteadyRollingInfo& ti)
+{
+    const std::vector<Complex>& q = solver_.traction();
+    const std::vector<Complex>& sl = solver_.slip();
+    const std::vector<signed char>& state = solver_.state();
+    const std::vector<double>& g = solver_.bound();
+    double fx = 0.0, fy = 0.0, mz = 0.0, w = 0.0;
+    TransientStepResult& r = result_;
+    r = TransientStepResult{};
+    for (int j = 0; j < box_.ny; ++j) {
+        const double y = y0_ + (box_.j0 + j) * dy_;
+        for (int i = 0; i < box_.nx; ++i) {
+            const int k = i + box_.nx * j;
+            const double x = x0_ + (box_.i0 + i) * dx_;
+            fx += q[k].real();
+            fy += q[k].imag();
+            mz += x * q[k].imag() - y * q[k].real();
+            if (g[k] > 0.0) {
+                ++r.n_contact;
+                if (state[k] == 2) {
+                    ++r.n_slip;
+                    w -= q[k].real() * sl[k].real() + q[k].imag() * sl[k].imag();
+                }
+            }
+        }
+    }
+    const double area = dx_ * dy_;
+    r.xi_x = c[0];
+    r.xi_y = c[1];
+    r.phi = c[2];
+    r.Fx = T_ * area * fx;
+    r.Fy = T_ * area * fy;
+    r.Mz = T_ * area * mz;
+    r.n_adhesion = r.n_contact - r.n_slip;
+    r.W_step = T_ * U_ * area * w;
+    r.residual = ti.residual;
+}
+
+void TransientContact::commit()
+{
+    if (!trial_valid_)
+        throw Error(ErrorKind::invalid_input,
+                    "commit: there is no step to commit (step() first; a trial is "
+                    "committed once, and rewind drops it)");
+    q0_ = solver_.traction();
+    if (trial_rolling_) std::copy(trial_creep_, trial_creep_ + 3, creep0_);
+    ++steps_;
+    trial_valid_ = false;
+    set_committed_terms();
+}
+
+namespace {
+template <class T>
+void put(std::vector<unsigned char>& out, const T& v)
+{
+    const unsigned char* p = reinterpret_cast<const unsigned char*>(&v);
+    out.insert(out.end(), p, p + sizeof(T));
+}
+template <class T>
+void get(const unsigned char*& p, T& v)
+{
+    std::memcpy(&v, p, sizeof(T));
+    p += sizeof(T);
+}
+} // namespace
+
+std::vector<unsigned char> TransientContact::save() const
+{
+    std::vector<unsigned char> out(kMagic, kMagic + sizeof(kMagic));
+    put(out, static_cast<std::int32_t>(nx_));
+    put(out, static_cast<std::int32_t>(ny_));
+    put(out, p_ref_);
+    put(out, T_);
+    put(out, static_cast<std::int64_t>(steps_));
+    for (double v : creep0_) put(out, v);
+    for (const Complex& v : q0_) {
+        put(out, v.real());
+        put(out, v.imag());
+    }
+    return out;
+}
+
+void TransientContact::restore(const unsigned char* bytes, std::size_t n)
+{
+    const std::size_t size = sizeof(kMagic) + 2 * 4 + 2 * 8 + 8 + 3 * 8 + 16 * q0_.size();
+    if (!bytes || n != size || std::memcmp(bytes, kMagic, sizeof(kMagic)) != 0)
+        throw Error(ErrorKind::invalid_input,
+                    "restore: the bytes (" + std::to_string(n) +
+                        ") are not a saved transient state of this grid (" +
+                        std::to_string(size) + " bytes expected)");
+    const unsigned char* p = bytes + sizeof(kMagic);
+    std::int32_t nx = 0, ny = 0;
+    double pref = 0.0, T = 0.0;
+    std::int64_t steps = 0;
+    get(p, nx);
+    get(p, ny);
+    get(p, pref);
+    get(p, T);
+    get(p, steps);
+    if (nx != nx_ || ny != ny_ || pref != p_ref_ || T != T_)
+        throw Error(ErrorKind::invalid_input,
+                    "restore: the bytes are the state of another contact (grid, load or "
+                    "friction differ)");
+    double creep[3];
+    for (double& v : creep) get(p, v);
+    for (double v : creep) check_finite("restored creepage", v);
+    std::vector<Complex>& q = solver_.traction(); // scratch until the next step
+    for (Complex& v : q) {
+        double re = 0.0, im = 0.0;
+        get(p, re);
+        get(p, im);
+        if (!std::isfinite(re) || !std::isfinite(im))
+            throw Error(ErrorKind::invalid_input, "restore: the bytes hold a non-finite "
+                                                  "traction");
+        v = Complex(re, im);
+    }
+    q0_ = q;
+    std::copy(creep, creep + 3, creep0_);
+    steps_ = static_cast<long>(steps);
+    trial_valid_ = false;
+    set_committed_terms();
+}
+
+void TransientContact::copy_traction(double* px, double* py) const
+{
+    const std::vector<Complex>& q = solver_.traction();
+    if (px) std::fill(px, px + n_, 0.0);
+    if (py) std::fill(py, py + n_, 0.0);
+    for (int k = 0; k < bn_; ++k) {
+        if (px) px[cell(k)] = T_ * q[k].real();
+        if (py) py[cell(k)] = T_ * q[k].imag();
+    }
+}
+
+void TransientContact::copy_slip(double* sx, double* sy) const
+{
+    const std::vector<Complex>& s = solver_.slip();
+    const std::vector<signed char>& state = solver_.state();
+    if (sx) std::fill(sx, sx + n_, 0.0);
+    if (sy) std::fill(sy, sy + n_, 0.0);
+    for (int k = 0; k < bn_; ++k) {
+        if (state[k] == 0) continue;
+        if (sx) sx[cell(k)] = U_ * s[k].real();
+        if (sy) sy[cell(k)] = U_ * s[k].imag();
+    }
+}
+
+void TransientContact::copy_state(int* out) const
+{
+    const std::vector<signed char>& state = solver_.state();
+    std::fill(out, out + n_, 0);
+    for (int k = 0; k < bn_; ++k) out[cell(k)] = state[k];
+}
+
+void TransientContact::copy_pressure(double* out) const
+{
+    const std::vector<double>& p = normal_.pressure();
+    std::copy(p.begin(), p.end(), out);
+}
+
+} // namespace creepwork

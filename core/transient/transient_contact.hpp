@@ -1,0 +1,157 @@
+// Transient rolling in Kalker's exact half-space theory (Kalker 1990, ch. 5;
+// doc/theory/transient.md) on a gap grid, in contact-fixed coordinates
+// (CONTACT's T = 2): the tractions carry memory from one step to the next.
+// Over a step in which the body rolls dq (0 <= dq <= dx) the slip of the
+// element at x is the rigid slip plus the change of the displacement
+// difference u of the particle now at x, which was at x + dq:
+//   S(x) = r(x) + u(x, now) - u(x + dq, previous),
+// with r = (dx_r - theta y, dy_r + theta (x + spin_offset dq)) the rigid
+// displacement of the step: creepage times dq when rolling, the shift itself
+// when dq = 0 (a shift: Cattaneo's problem). In the normalised units of
+// exact/steady_rolling.hpp (lengths in dx, tractions per mu p_max, slips per
+// mu p_max dx / G) with d = dq / dx and u(x + d dx) interpolated linearly
+// between the elements (exact for d = 0 and d = 1):
+//   s = r + A (q - q_prev) + d B q_prev,   B(k, l) = A(k, l) - A(k + 1, l),
+// so that s = r + A q + (a field of the committed state alone), which the
+// steady-rolling solver solves with its shift operator
+// (SlipOperator::shift), and with q = q_prev, d = 1 it is the steady
+// problem: the steady solution is a fixed point of the step.
+//
+// The handle. The normal problem is solved once, by the constructor (the
+// geometry and load stay; CONTACT's N = 1 with the same gap). A committed
+// state holds the tractions of the last committed step. step() solves one
+// step from it without changing it (a trial; its fields are the exports);
+// commit() makes the trial the state; rewind() drops the trial. step()
+// depends only on the committed state and its input, so a trial repeated
+// after rewind() gives the same bits. save() and restore() give and take
+// the committed state as bytes (this build's layout). With Fx and/or Fy
+// prescribed, the step's creepages (the shift when dq = 0) are found by
+// Newton's method on the force, with the derivative of the converged
+// discrete problem (SteadyRolling::tangent).
+//
+// The problem runs on the smallest box of the grid that holds the contact
+// (the tractions vanish outside; the same discrete problem with smaller
+// FFTs), as the steady model on a gap grid does.
+//
+// Frame: the leading edge at +x (rolling towards +x); positions from the
+// grid's origin; forces on the wheel (body 1) as in the steady models.
+#pragma once
+
+#include <complex>
+#include <cstdint>
+#include <vector>
+
+#include "contact/params.hpp"
+#include "exact/steady_rolling.hpp"
+#include "halfspace/cell_box.hpp"
+#include "halfspace/grid_convolution.hpp"
+#include "normal/gap_normal.hpp"
+
+namespace creepwork {
+
+// What one step is given.
+struct TransientStepInput {
+    double dq = 0.0; // distance rolled in the step [m], 0 <= dq <= dx; 0: a shift
+    // Rolling (dq > 0): the creepages xi_x, xi_y [-] and spin phi [1/m].
+    // Shift (dq = 0): the rigid shift along x, y [m] and rotation [rad].
+    double xi_x = 0.0, xi_y = 0.0, phi = 0.0;
+    // Prescribed forces on the wheel [N]: the matching xi_x (xi_y) is found.
+    bool prescribe_fx = false, prescribe_fy = false;
+    double Fx = 0.0, Fy = 0.0;
+};
+
+// What one step gave (in the input's units).
+struct TransientStepResult {
+    double xi_x = 0.0, xi_y = 0.0, phi = 0.0; // as given, the prescribed forces' found
+    double Fx = 0.0, Fy = 0.0, Mz = 0.0;      // on the wheel [N, N, N m], Mz about the origin
+    int n_contact = 0, n_adhesion = 0, n_slip = 0;
+    double W_step = 0.0; // frictional work of the step [J]: sum of |p_t| |S| dA
+    int newton_steps = 0;     // of the tangential problem, all force iterations
+    int products = 0;         // FFT products, all of the step
+    int force_iterations = 0; // Newton steps on the prescribed forces
+    double residual = 0.0;    // the tangential problem's, relative
+};
+
+class TransientContact {
+public:
+    using Complex = std::complex<double>;
+
+    // grid: a gap grid (normal/gap_grid.hpp); in: the contact -- its gap
+    // (copied), normal force or approach, normal method, mu > 0, G, nu,
+    // tolerance, max_iterations, spin_offset (creepages and the rolling
+    // direction are not read: the leading edge is at +x). Solves the normal
+    // problem. Starts from zero tractions. Throws Error naming a bad input,
+    // or Error(not_converged).
+    TransientContact(const GridSpec& grid, const ContactInput& in);
+
+    // The committed state: zero tractions.
+    void start_zero();
+    // The committed state: the steady-rolling solution of step's creepages
+    // (dq is not read; its forces may be prescribed). Returns it.
+    const TransientStepResult& start_steady(const TransientStepInput& step);
+    // One step from the committed state (a trial). Throws Error naming a bad
+    // input (the state is unchanged), or Error(not_converged).
+    const TransientStepResult& step(const TransientStepInput& step);
+    // The last trial becomes the committed state; throws Error(invalid_input)
+    // without one.
+    void commit();
+    // Drops the last trial (the committed state stays).
+    void rewind() { trial_valid_ = false; }
+
+    // The committed state as bytes (a whole number of 8-byte words), and
+    // back. restore() throws
+    // Error(invalid_input) for bytes of another contact or grid, or not of
+    // save().
+    std::vector<unsigned char> save() const;
+    void restore(const unsigned char* bytes, std::size_t n);
+
+    int nx() const { return nx_; }
+    int ny() const { return ny_; }
+    long steps_committed() const { return steps_; }
+    bool has_trial() const { return trial_valid_; }
+    const TransientStepResult& last() const { return result_; }
+    double p_max() const { return p_ref_; }
+    // Of the last step (or steady start), [i + nx j]: tangential tractions
+    // on the wheel [Pa], slip over the step [m], element states (0
+    // exterior, 1 adhesion, 2 slip), pressure [Pa].
+    void copy_traction(double* px, double* py) const;
+    void copy_slip(double* sx, double* sy) const;
+    void copy_state(int* out) const;
+    void copy_pressure(double* out) const;
+
+private:
+    void validate(const TransientStepInput& s, bool steady) const;
+    // The rigid displacement of creepages c (rolling) or shift c (dq = 0)
+    // plus base_, into the solver's rigid slip.
+    void set_slip(const double c[3], double dq, bool steady);
+    void set_committed_terms(); // aq0_ = A q0, bq0_ = B q0
+    const TransientStepResult& solve(const TransientStepInput& s, bool steady);
+    void totals(const double c[3], const SteadyRollingInfo& ti);
+
+    int nx_, ny_, n_;
+    double x0_, y0_, dx_, dy_;
+    CellBox box_; // of the contact; every field below is on it
+    int bn_ = 0;
+    std::size_t cell(int k) const // box element k -> grid element
+    {
+        return box_.i0 + k % box_.nx + static_cast<std::size_t>(nx_) * (box_.j0 + k / box_.nx);
+    }
+    std::vector<double> gap_;
+    ContactInput in_;
+    GapNormal normal_;
+    GridConvolution conv_;
+    SteadyRolling solver_;
+    double p_ref_ = 0.0, T_ = 0.0, U_ = 0.0, tolerance_ = 0.0, spin_offset_ = 0.0;
+    int max_steps_ = 0;
+    // The committed state: tractions (normalised), A q0 and B q0, the last
+    // rolling step's creepages (the force iteration's start), steps.
+    std::vector<Complex> q0_, aq0_, bq0_, base_, dw_, tangent_[2];
+    double creep0_[3] = {0.0, 0.0, 0.0};
+    long steps_ = 0;
+    // The trial.
+    TransientStepResult result_;
+    bool trial_valid_ = false, trial_rolling_ = false;
+    double trial_creep_[3] = {0.0, 0.0, 0.0};
+};
+
+} // namespace creepwork

@@ -1,0 +1,182 @@
+// Tests of `creepwork transient`, run as a user runs it: its JSON equals,
+// bit for bit, what the C ABI's cw_transient gives for the same gap and
+// steps (CONTACT's catt_to_cart: the Cattaneo shift to Fx = -0.657 mu N and
+// rolling at that force; creepages prescribed too); a steady start; steps
+// files and options that are wrong fail cleanly (status 2, one stderr line
+// naming the file and line or the option).
+//
+// usage: test_cli_transient <creepwork binary> <scratch dir> [cmocka filter]
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include <creepwork/creepwork.h>
+
+#include "cli_checks.hpp"
+// Last: cmocka defines macros (fail, skip) that clash with the C++ library.
+#include "test_support.h"
+
+namespace {
+
+constexpr int kNx = 34, kNy = 33;
+constexpr double kDx = 0.25e-3, kX0 = -4.0e-3, kFx = -0.657 * 0.4013 * 0.4705;
+
+// catt_to_cart's gap file (examples/catt_to_cart.inp in SI), rows as the
+// library's grid reads them.
+std::string write_gap(std::vector<double>& h, cw_grid& g)
+{
+    cw_grid_init(&g);
+    g.kind = CW_GRID_GAP;
+    g.nx = kNx;
+    g.ny = kNy;
+    g.dx = g.dy = kDx;
+    g.x0 = g.y0 = kX0;
+    h.assign(static_cast<size_t>(kNx) * kNy, 0.0);
+    std::string text = "x_m,y_m,h_m\n";
+    char line[128];
+    for (int j = 0; j < kNy; ++j)
+        for (int i = 0; i < kNx; ++i) {
+            const double x = kX0 + i * kDx, y = kX0 + j * kDx;
+            h[i + kNx * j] = 2.963 * (x * x + y * y);
+            std::snprintf(line, sizeof line, "%.17g,%.17g,%.17g\n", x, y, h[i + kNx * j]);
+            text += line;
+        }
+    return cwtest::scratch_file("gap.csv", text);
+}
+
+cw_transient* library_handle(const cw_grid& g, const std::vector<double>& h)
+{
+    cw_params p;
+    cw_params_init(&p);
+    p.model = CW_MODEL_EXACT;
+    p.gap = h.data();
+    p.gap_len = h.size();
+    p.normal_force = 0.4705;
+    p.G = 1e6;
+    p.nu = 0.28;
+    p.mu = 0.4013;
+    cw_transient* t = nullptr;
+    assert_int_equal(cw_transient_create(&g, &p, &t, nullptr, 0), CW_OK);
+    return t;
+}
+
+const std::vector<std::string> kContact = {"--N", "0.4705", "--G", "1e6", "--nu", "0.28",
+                                           "--mu", "0.4013"};
+
+void transient_json_matches_library(void**)
+{
+    std::vector<double> h;
+    cw_grid g;
+    const std::string gap = write_gap(h, g);
+    std::string steps = "dq_m,Fx\n";
+    char line[96];
+    for (int k = 0; k < 6; ++k) {
+        std::snprintf(line, sizeof line, "%.17g,%.17g\n", k == 0 ? 0.0 : kDx, kFx);
+        steps += line;
+    }
+    const std::string file = cwtest::scratch_file("steps.csv", steps);
+    const cwtest::Run r = cwtest::cli_ok(cwtest::with(
+        {"transient", "--steps", file, "--gap", gap, "--prescribe", "forces", "--format", "json"},
+        kContact));
+    const cwtest::Json j = cwtest::parse_or_fail(r.out);
+    assert_int_equal(j.array.size(), 6);
+    cw_transient* t = library_handle(g, h);
+    for (int k = 0; k < 6; ++k) {
+        cw_transient_input s;
+        cw_transient_input_init(&s);
+        s.dq = k == 0 ? 0.0 : kDx;
+        s.prescribe = CW_PRESCRIBE_FX;
+        s.Fx = kFx;
+        cw_transient_result lib;
+        cw_transient_result_init(&lib);
+        assert_int_equal(cw_transient_step(t, &s, &lib), CW_OK);
+        assert_int_equal(cw_transient_commit(t), CW_OK);
+        const cwtest::Json& o = j.array[k];
+        // The JSON prints each number's shortest exact text: the same bits.
+        assert_true(o.num("xi_x") == lib.xi_x);
+        assert_true(o.num("Fx") == lib.Fx);
+        assert_true(o.num("Fy") == lib.Fy);
+        assert_true(o.num("Mz") == lib.Mz);
+        assert_true(o.num("W_step") == lib.W_step);
+        assert_int_equal(static_cast<int>(o.num("n_adhesion")), lib.n_adhesion);
+        assert_int_equal(static_cast<int>(o.num("n_slip")), lib.n_slip);
+        assert_int_equal(static_cast<int>(o.num("line")), k + 2);
+    }
+    // CONTACT's shift of case 1 [mm] and creepage of case 2, as it prints them.
+    std::snprintf(line, sizeof line, "%.3E %.3E", j.array[0].num("xi_x") * 1e3,
+                  j.array[1].num("xi_x"));
+    assert_string_equal(line, "1.774E-02 1.824E-03");
+    cw_transient_destroy(t);
+}
+
+void transient_steady_start_and_creepages(void**)
+{
+    std::vector<double> h;
+    cw_grid g;
+    const std::string gap = write_gap(h, g);
+    const std::string file =
+        cwtest::scratch_file("creep.csv", "# creepages prescribed\ndq_m,xi_x,xi_y\n0.00025,2e-3,1e-4\n"
+                                          "0.000125,2e-3,1e-4\n");
+    const cwtest::Run r = cwtest::cli_ok(cwtest::with(
+        {"transient", "--steps", file, "--gap", gap, "--start", "steady", "--format", "json"},
+        kContact));
+    const cwtest::Json j = cwtest::parse_or_fail(r.out);
+    assert_int_equal(j.array.size(), 2);
+    cw_transient* t = library_handle(g, h);
+    cw_transient_input s;
+    cw_transient_input_init(&s);
+    s.dq = kDx;
+    s.xi_x = 2e-3;
+    s.xi_y = 1e-4;
+    assert_int_equal(cw_transient_start_steady(t, &s, nullptr), CW_OK);
+    cw_transient_result lib;
+    cw_transient_result_init(&lib);
+    assert_int_equal(cw_transient_step(t, &s, &lib), CW_OK);
+    assert_true(j.array[0].num("Fx") == lib.Fx);
+    assert_true(j.array[0].num("Fy") == lib.Fy);
+    assert_int_equal(cw_transient_commit(t), CW_OK);
+    s.dq = 0.5 * kDx;
+    assert_int_equal(cw_transient_step(t, &s, &lib), CW_OK);
+    assert_true(j.array[1].num("Fx") == lib.Fx);
+    cw_transient_destroy(t);
+}
+
+void transient_bad_inputs_fail_cleanly(void**)
+{
+    std::vector<double> h;
+    cw_grid g;
+    const std::string gap = write_gap(h, g);
+    auto run = [&](const std::string& steps, const std::vector<std::string>& extra) {
+        const std::string file = cwtest::scratch_file("bad.csv", steps);
+        return cwtest::cli(cwtest::with(cwtest::with({"transient", "--steps", file, "--gap", gap}, kContact),
+                                        extra));
+    };
+    cwtest::expect_refusal(run("xi_x\n1e-3\n", {}), 2, "dq_m", "no dq_m column");
+    cwtest::expect_refusal(run("dq_m,Fx\n0,-0.1\n", {}), 2, "unknown column 'Fx'", "Fx without --prescribe");
+    cwtest::expect_refusal(run("dq_m,xi_x\n0.00025,abc\n", {}), 2, "line 2, column xi_x", "not a number");
+    cwtest::expect_refusal(run("dq_m,xi_x\n0.0003,1e-3\n", {}), 2, "line 2", "dq beyond dx");
+    cwtest::expect_refusal(run("dq_m,xi_x\n0.0003,1e-3\n", {}), 2, "dq", "dq beyond dx names dq");
+    cwtest::expect_refusal(run("dq_m,Fx\n0,-1\n", {"--prescribe", "forces"}), 2, "mu N",
+                           "a force beyond mu N");
+    cwtest::expect_refusal(run("dq_m\n", {}), 2, "no step", "no step");
+    const std::string ok = cwtest::scratch_file("ok.csv", "dq_m\n0\n");
+    cwtest::expect_refusal(cwtest::cli({"transient", "--steps", ok, "--gap", gap}), 2, "--N",
+                           "no load");
+    cwtest::expect_refusal(cwtest::cli({"transient", "--gap", gap, "--N", "1"}), 2, "--steps",
+                           "no steps file");
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+    if (!cwtest::set_up(argc, argv, "test_cli_transient", {"creepwork", "scratch"})) return 2;
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(transient_json_matches_library),
+        cmocka_unit_test(transient_steady_start_and_creepages),
+        cmocka_unit_test(transient_bad_inputs_fail_cleanly),
+    };
+    return cw_run_tests(tests, cwtest::g_tools.test);
+}

@@ -1,0 +1,82 @@
+"""creepwork.Transient: CONTACT's catt_to_cart (tests/data/transient, from
+eve70a/CONTACT d431cdb) through the package, every printed digit of the
+shift and the first rolling steps; a trial repeated after rewind and after
+restore gives the same bits; errors name their input."""
+
+import csv
+import os
+
+import numpy as np
+import pytest
+
+import creepwork
+
+DX = 0.25e-3
+FX = -0.657 * 0.4013 * 0.4705
+
+
+def catt_to_cart():
+    x = -4e-3 + DX * np.arange(34)
+    y = -4e-3 + DX * np.arange(33)
+    h = 2.963 * (x[None, :] ** 2 + y[:, None] ** 2)  # (ny, nx): C order is [i + nx j]
+    grid = {"kind": "gap", "nx": 34, "ny": 33, "x0": -4e-3, "y0": -4e-3, "dx": DX, "dy": DX}
+    return creepwork.Transient(grid, gap=h, N=0.4705, G=1e6, nu=0.28, mu=0.4013)
+
+
+def reference():
+    path = os.path.join(os.environ["CREEPWORK_TEST_DATA_DIR"], "transient", "catt_to_cart.csv")
+    with open(path) as f:
+        return list(csv.DictReader(f))
+
+
+def test_catt_to_cart_printed_digits():
+    rows = reference()[:8]
+    with catt_to_cart() as t:
+        for row in rows:
+            shift = row["kind"] == "shift"
+            r = t.step(dq=0.0 if shift else DX, Fx=FX)
+            t.commit()
+            value = r["xi_x"] * 1e3 if shift else r["xi_x"]
+            assert "%.3E" % value == "%.3E" % float(row["value"])
+            assert r["n_adhesion"] == int(row["n_adhesion"])
+            assert r["n_slip"] == int(row["n_slip"])
+            assert abs(r["Fx"] - FX) <= 1e-8 * 0.4013 * 0.4705
+
+
+def test_trial_repeats_bitwise_after_rewind_and_restore():
+    with catt_to_cart() as t:
+        t.step(dq=0.0, Fx=FX)
+        t.commit()
+        saved = t.save()
+        a = t.step(dq=DX, Fx=-0.05)
+        px = t.field("px")
+        t.rewind()
+        with pytest.raises(creepwork.NoSolutionError, match="no step to commit"):
+            t.commit()
+        t.step(dq=DX, xi_x=1e-3)
+        t.rewind()
+        b = t.step(dq=DX, Fx=-0.05)
+        assert a == b
+        assert np.array_equal(px, t.field("px"))
+        t.commit()
+        t.restore(saved)
+        c = t.step(dq=DX, Fx=-0.05)
+        assert a == c
+        # The traction sums to Fx; adhesion elements as counted.
+        assert abs(px.sum() * DX * DX - a["Fx"]) <= 1e-12 * abs(a["Fx"])
+        assert int((t.state() == creepwork.CW_STATE_ADHESION).sum()) == a["n_adhesion"]
+
+
+def test_errors_name_their_input():
+    with catt_to_cart() as t:
+        with pytest.raises(creepwork.InvalidInputError, match="dq"):
+            t.step(dq=2 * DX, xi_x=1e-3)
+        with pytest.raises(creepwork.InvalidInputError, match="mu N"):
+            t.step(dq=DX, Fx=-1.0)
+        with pytest.raises(creepwork.UnknownOptionError):
+            t.field("work_paper")
+        with pytest.raises(creepwork.InvalidInputError):
+            t.restore(np.zeros(3, np.uint64))
+    with pytest.raises(creepwork.InvalidInputError, match="mu"):
+        grid = {"kind": "gap", "nx": 34, "ny": 33, "x0": -4e-3, "y0": -4e-3, "dx": DX, "dy": DX}
+        creepwork.Transient(grid, gap=np.ones((33, 34)), N=0.4705, G=1e6, nu=0.28, mu=0.0)

@@ -1,0 +1,228 @@
+/* The cw_transient handle: CONTACT's catt_to_cart through the C ABI (the
+ * shift and the first 14 rolling steps, each printed digit of
+ * tests/data/transient/catt_to_cart.csv: eve70a/CONTACT d431cdb), a trial
+ * repeated after rewind and after save / restore gives the same bits, and
+ * every function's errors name their input and leave the handle usable. */
+#include "capi_fixtures.h"
+
+#include <stdio.h>
+
+static cw_transient* make(double* h)
+{
+    cw_params p;
+    const cw_grid g = cw_test_catt_to_cart(h, &p);
+    cw_transient* t = NULL;
+    char message[256] = "";
+    const int status = cw_transient_create(&g, &p, &t, message, sizeof message);
+    if (status != CW_OK || !t) {
+        print_error("cw_transient_create: %s\n", message);
+        _fail(__FILE__, __LINE__);
+    }
+    return t;
+}
+
+static cw_transient_input force_step(double dq, double fx_over_mu_n)
+{
+    cw_transient_input s;
+    cw_transient_input_init(&s);
+    s.dq = dq;
+    s.prescribe = CW_PRESCRIBE_FX;
+    s.Fx = fx_over_mu_n * 0.4013 * 0.4705;
+    return s;
+}
+
+/* The shift (case 1) and cases 2 ... 15 of the CSV, as CONTACT prints them:
+ * shift and creepage, element division, frictional work. */
+static void catt_to_cart_first_cases(void** state)
+{
+    (void)state;
+    double h[CW_CATT_NX * CW_CATT_NY];
+    cw_transient* t = make(h);
+    FILE* f = fopen(CW_TEST_DATA_DIR "/transient/catt_to_cart.csv", "r");
+    assert_non_null(f);
+    char line[256];
+    assert_non_null(fgets(line, sizeof line, f)); /* header */
+    for (int k = 1; k <= 15; ++k) {
+        int c = 0, adh = 0, slip = 0;
+        char kind[16], value[32];
+        double fric = 0.0;
+        assert_int_equal(fscanf(f, "%d,%15[^,],%31[^,],%d,%d,%lf\n", &c, kind, value, &adh, &slip,
+                                &fric),
+                         6);
+        const int shift = strcmp(kind, "shift") == 0;
+        const cw_transient_input s = force_step(shift ? 0.0 : 0.25e-3, -0.657);
+        cw_transient_result r;
+        cw_transient_result_init(&r);
+        assert_int_equal(cw_transient_step(t, &s, &r), CW_OK);
+        assert_int_equal(cw_transient_commit(t), CW_OK);
+        char got[32];
+        snprintf(got, sizeof got, "%.3E", shift ? r.xi_x * 1e3 : r.xi_x);
+        assert_string_equal(got, value);
+        assert_int_equal(r.steps_committed, k - 1);
+        assert_close(r.Fx, s.Fx, 0.0, 1e-8 * 0.4013 * 0.4705); /* tolerance * mu N */
+        assert_int_equal(r.n_adhesion, adh);
+        assert_int_equal(r.n_slip, slip);
+        /* CONTACT's frictional work of the shift [N m] and power of a step
+         * [N m/s] at V = 1 m/s (dt = 2.5e-4 s), negative. */
+        snprintf(got, sizeof got, "%.3E", -r.W_step / (shift ? 1.0 : 2.5e-4));
+        char want[32];
+        snprintf(want, sizeof want, "%.3E", fric);
+        assert_string_equal(got, want);
+    }
+    fclose(f);
+    cw_transient_destroy(t);
+}
+
+static void trial_repeats_bitwise(void** state)
+{
+    (void)state;
+    double h[CW_CATT_NX * CW_CATT_NY];
+    cw_transient* t = make(h);
+    const size_t n = (size_t)CW_CATT_NX * CW_CATT_NY;
+    cw_transient_input s = force_step(0.0, -0.657);
+    assert_int_equal(cw_transient_step(t, &s, NULL), CW_OK);
+    assert_int_equal(cw_transient_commit(t), CW_OK);
+    size_t size = 0;
+    assert_int_equal(cw_transient_state_size(t, &size), CW_OK);
+    uint64_t* saved = malloc(size * sizeof(uint64_t));
+    assert_int_equal(cw_transient_save(t, saved, size), CW_OK);
+
+    s = force_step(0.25e-3, -0.5);
+    cw_transient_result a, b, c;
+    cw_transient_result_init(&a);
+    cw_transient_result_init(&b);
+    cw_transient_result_init(&c);
+    double* px_a = malloc(n * sizeof(double));
+    double* px_b = malloc(n * sizeof(double));
+    assert_int_equal(cw_transient_step(t, &s, &a), CW_OK);
+    assert_int_equal(cw_transient_get_field(t, CW_FIELD_PX, px_a, n), CW_OK);
+    assert_int_equal(cw_transient_rewind(t), CW_OK);
+    assert_int_equal(cw_transient_commit(t), CW_ERR_NO_SOLUTION);
+    assert_non_null(strstr(cw_transient_last_error(t), "no step to commit"));
+    assert_int_equal(cw_transient_step(t, &s, &b), CW_OK);
+    assert_int_equal(cw_transient_get_field(t, CW_FIELD_PX, px_b, n), CW_OK);
+    assert_memory_equal(&a, &b, sizeof a);
+    assert_memory_equal(px_a, px_b, n * sizeof(double));
+    /* Commit two steps, restore the saved state: the trial again. */
+    assert_int_equal(cw_transient_commit(t), CW_OK);
+    assert_int_equal(cw_transient_step(t, &s, NULL), CW_OK);
+    assert_int_equal(cw_transient_commit(t), CW_OK);
+    assert_int_equal(cw_transient_restore(t, saved, size), CW_OK);
+    assert_int_equal(cw_transient_get_field(t, CW_FIELD_PX, px_b, n), CW_ERR_NO_SOLUTION);
+    assert_int_equal(cw_transient_step(t, &s, &c), CW_OK);
+    assert_memory_equal(&a, &c, sizeof a);
+    /* The traction sums to Fx. */
+    double sum = 0.0;
+    for (size_t k = 0; k < n; ++k) sum += px_a[k] * 0.25e-3 * 0.25e-3;
+    assert_close(sum, a.Fx, 1e-12, 0.0);
+    free(px_a);
+    free(px_b);
+    free(saved);
+    cw_transient_destroy(t);
+}
+
+static void errors_name_their_input(void** state)
+{
+    (void)state;
+    double h[CW_CATT_NX * CW_CATT_NY];
+    cw_params p;
+    cw_grid g = cw_test_catt_to_cart(h, &p);
+    cw_transient* t = NULL;
+    char message[256] = "";
+    /* Creation: NULL, another grid kind, another model, no friction. */
+    assert_int_equal(cw_transient_create(&g, &p, NULL, message, sizeof message),
+                     CW_ERR_NULL_POINTER);
+    assert_int_equal(cw_transient_create(&g, NULL, &t, message, sizeof message),
+                     CW_ERR_NULL_POINTER);
+    assert_null(t);
+    cw_grid uniform = cw_test_grid(CW_GRID_UNIFORM, 20, 20, 1.0);
+    assert_int_equal(cw_transient_create(&uniform, &p, &t, message, sizeof message),
+                     CW_ERR_INVALID_INPUT);
+    assert_non_null(strstr(message, "grid->kind"));
+    p.model = CW_MODEL_FASTSIM;
+    assert_int_equal(cw_transient_create(&g, &p, &t, message, sizeof message),
+                     CW_ERR_INVALID_INPUT);
+    assert_non_null(strstr(message, "params->model"));
+    p.model = CW_MODEL_EXACT;
+    p.mu = 0.0;
+    assert_int_equal(cw_transient_create(&g, &p, &t, message, sizeof message),
+                     CW_ERR_INVALID_INPUT);
+    assert_non_null(strstr(message, "mu"));
+    assert_null(t);
+    p.mu = 0.4013;
+    assert_int_equal(cw_transient_create(&g, &p, &t, message, sizeof message), CW_OK);
+
+    /* Steps: dq outside [0, dx], NaN, a force beyond mu N, an unknown
+     * prescribe, a bad struct_size; none leaves a trial. */
+    cw_transient_result r;
+    cw_transient_result_init(&r);
+    cw_transient_input s = force_step(0.3e-3, -0.5);
+    assert_int_equal(cw_transient_step(t, &s, &r), CW_ERR_INVALID_INPUT);
+    assert_non_null(strstr(cw_transient_last_error(t), "dq"));
+    s.dq = -1e-6;
+    assert_int_equal(cw_transient_step(t, &s, &r), CW_ERR_INVALID_INPUT);
+    s.dq = 0.25e-3;
+    s.Fx = NAN;
+    assert_int_equal(cw_transient_step(t, &s, &r), CW_ERR_INVALID_INPUT);
+    assert_non_null(strstr(cw_transient_last_error(t), "Fx"));
+    s.Fx = -1.0 * 0.4013 * 0.4705;
+    assert_int_equal(cw_transient_step(t, &s, &r), CW_ERR_INVALID_INPUT);
+    assert_non_null(strstr(cw_transient_last_error(t), "mu N"));
+    s.Fx = 0.0;
+    s.prescribe = 7;
+    assert_int_equal(cw_transient_step(t, &s, &r), CW_ERR_UNKNOWN_OPTION);
+    assert_non_null(strstr(cw_transient_last_error(t), "prescribe"));
+    s.prescribe = CW_PRESCRIBE_CREEPAGES;
+    s.struct_size = 1;
+    assert_int_equal(cw_transient_step(t, &s, &r), CW_ERR_STRUCT_SIZE);
+    assert_int_equal(cw_transient_commit(t), CW_ERR_NO_SOLUTION);
+    assert_int_equal(cw_transient_step(t, NULL, &r), CW_ERR_NULL_POINTER);
+
+    /* Fields and state: before a step, an unknown field, a short buffer. */
+    double f[CW_CATT_NX * CW_CATT_NY];
+    int st[CW_CATT_NX * CW_CATT_NY];
+    const size_t n = (size_t)CW_CATT_NX * CW_CATT_NY;
+    assert_int_equal(cw_transient_get_field(t, CW_FIELD_PX, f, n), CW_ERR_NO_SOLUTION);
+    assert_int_equal(cw_transient_get_state(t, st, n), CW_ERR_NO_SOLUTION);
+    cw_transient_input_init(&s);
+    s.dq = 0.25e-3;
+    s.xi_x = 1e-3;
+    assert_int_equal(cw_transient_step(t, &s, &r), CW_OK);
+    assert_int_equal(cw_transient_get_field(t, CW_FIELD_WORK_PAPER, f, n), CW_ERR_UNKNOWN_OPTION);
+    assert_non_null(strstr(cw_transient_last_error(t), "field"));
+    assert_int_equal(cw_transient_get_field(t, CW_FIELD_PX, f, n - 1), CW_ERR_BUFFER_TOO_SMALL);
+    assert_int_equal(cw_transient_get_state(t, st, n - 1), CW_ERR_BUFFER_TOO_SMALL);
+    assert_int_equal(cw_transient_get_state(t, st, n), CW_OK);
+    int adhesion = 0;
+    for (size_t k = 0; k < n; ++k) adhesion += st[k] == CW_STATE_ADHESION;
+    assert_int_equal(adhesion, r.n_adhesion);
+
+    /* Save and restore: a short buffer, foreign bytes. */
+    size_t size = 0;
+    assert_int_equal(cw_transient_state_size(t, &size), CW_OK);
+    uint64_t* bytes = malloc(size * sizeof(uint64_t));
+    assert_int_equal(cw_transient_save(t, bytes, size - 1), CW_ERR_BUFFER_TOO_SMALL);
+    assert_int_equal(cw_transient_save(t, bytes, size), CW_OK);
+    assert_int_equal(cw_transient_restore(t, bytes, size - 1), CW_ERR_INVALID_INPUT);
+    bytes[0] ^= 1;
+    assert_int_equal(cw_transient_restore(t, bytes, size), CW_ERR_INVALID_INPUT);
+    assert_int_equal(cw_transient_restore(t, NULL, size), CW_ERR_NULL_POINTER);
+    free(bytes);
+    /* The handle stays usable. */
+    assert_int_equal(cw_transient_commit(t), CW_OK);
+    assert_int_equal(cw_transient_destroy(t), CW_OK);
+    assert_int_equal(cw_transient_destroy(NULL), CW_OK);
+    assert_int_equal(cw_transient_start_zero(NULL), CW_ERR_NULL_POINTER);
+    assert_int_equal(cw_transient_input_init(NULL), CW_ERR_NULL_POINTER);
+    assert_int_equal(cw_transient_result_init(NULL), CW_ERR_NULL_POINTER);
+}
+
+int main(int argc, char** argv)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(catt_to_cart_first_cases),
+        cmocka_unit_test(trial_repeats_bitwise),
+        cmocka_unit_test(errors_name_their_input),
+    };
+    return cw_run_tests(tests, argc > 1 ? argv[1] : NULL);
+}
