@@ -189,12 +189,13 @@ CW_API int cw_damage_get_result(const cw_damage* damage, cw_damage_result* resul
 /* Detailed message of the last error on this handle, as cw_solver_last_error. */
 CW_API const char* cw_damage_last_error(const cw_damage* damage);
 
-/* Checks params as cw_temperature_params_check does (the same out, len,
- * found and errors): k_yield below 1e6 Pa (CW_CHECK_YIELD_STRESS: MPa typed
- * as Pa?) and wlrm_onset, wlrm_peak, wlrm_zero in (0, 1) N
+/* Checks params as cw_temperature_params_check does (the same out, len and
+ * found): k_yield below 1e6 Pa (CW_CHECK_YIELD_STRESS: MPa typed as Pa?)
+ * and wlrm_onset, wlrm_peak, wlrm_zero in (0, 1) N
  * (CW_CHECK_WLRM_THRESHOLD: kN typed as N?). k_yield = 0 (not set) is left
  * to cw_damage_compute's error. Prints nothing; cw_damage_compute never
- * calls it. */
+ * calls it. Errors: CW_ERR_NULL_POINTER (params, found),
+ * CW_ERR_STRUCT_SIZE, CW_ERR_BUFFER_TOO_SMALL. */
 CW_API int cw_damage_params_check(const cw_damage_params* params, cw_check* out, size_t len,
                                   size_t* found);
 
