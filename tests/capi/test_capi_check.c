@@ -52,6 +52,26 @@ static void set(cw_params* p, const char* field, double v)
     else fail_msg("no field %s", field);
 }
 
+/* c is one contact's finding of rule on field = value [unit], its reason
+ * naming the mistake and its message "<field> = <value> <unit> is
+ * implausible for a wheel-rail contact: <reason>". */
+static void expect_finding(const cw_check* c, int rule, const char* field, const char* unit,
+                           double value, const char* mistake)
+{
+    assert_int_equal(c->rule, rule);
+    assert_string_equal(c->input, field);
+    assert_string_equal(c->unit, unit);
+    assert_true(c->value == value);
+    assert_int_equal(c->contacts, 1);
+    assert_int_equal(c->first, 0);
+    assert_non_null(strstr(c->reason, mistake));
+    char head[96];
+    snprintf(head, sizeof head, "%s = %.10g%s%s is implausible for a wheel-rail contact: ", field,
+             value, *unit ? " " : "", unit);
+    assert_true(strncmp(c->message, head, strlen(head)) == 0);
+    assert_string_equal(c->message + strlen(head), c->reason);
+}
+
 /* Every rule of an elliptic contact at its threshold (header, CW_CHECK_*). */
 static void each_rule_fires_beyond_its_threshold_only(void** state)
 {
@@ -96,18 +116,8 @@ static void each_rule_fires_beyond_its_threshold_only(void** state)
         if (run_checks(&g, &p, 1, c) != 0) fail_msg("%s = %g: %s", rules[k].field, rules[k].inside, c[0].message);
         set(&p, rules[k].field, rules[k].beyond);
         if (run_checks(&g, &p, 1, c) != 1) fail_msg("%s = %g: no finding", rules[k].field, rules[k].beyond);
-        assert_int_equal(c[0].rule, rules[k].rule);
-        assert_string_equal(c[0].input, rules[k].field);
-        assert_string_equal(c[0].unit, rules[k].unit);
-        assert_true(c[0].value == rules[k].beyond);
-        assert_int_equal(c[0].contacts, 1);
-        assert_int_equal(c[0].first, 0);
-        assert_non_null(strstr(c[0].reason, rules[k].mistake));
-        char head[96];
-        snprintf(head, sizeof head, "%s = %.10g%s%s is implausible for a wheel-rail contact: ",
-                 rules[k].field, rules[k].beyond, *rules[k].unit ? " " : "", rules[k].unit);
-        assert_true(strncmp(c[0].message, head, strlen(head)) == 0);
-        assert_string_equal(c[0].message + strlen(head), c[0].reason);
+        expect_finding(&c[0], rules[k].rule, rules[k].field, rules[k].unit, rules[k].beyond,
+                       rules[k].mistake);
         /* the other flexibility source is not read */
         if (!strcmp(rules[k].field, "G")) {
             p.flexibility = CW_FLEX_GIVEN;
@@ -433,18 +443,8 @@ static void surface_rules_fire_beyond_their_threshold_only(void** state)
         *v = rules[k].beyond;
         if (run_surface_checks(thermal ? &t : NULL, &d, c) != 1)
             fail_msg("%s = %g: no finding", rules[k].field, rules[k].beyond);
-        assert_int_equal(c[0].rule, rules[k].rule);
-        assert_string_equal(c[0].input, rules[k].field);
-        assert_string_equal(c[0].unit, rules[k].unit);
-        assert_true(c[0].value == rules[k].beyond);
-        assert_int_equal(c[0].contacts, 1);
-        assert_int_equal(c[0].first, 0);
-        assert_non_null(strstr(c[0].reason, rules[k].mistake));
-        char head[96];
-        snprintf(head, sizeof head, "%s = %.10g %s is implausible for a wheel-rail contact: ",
-                 rules[k].field, rules[k].beyond, rules[k].unit);
-        assert_true(strncmp(c[0].message, head, strlen(head)) == 0);
-        assert_string_equal(c[0].message + strlen(head), c[0].reason);
+        expect_finding(&c[0], rules[k].rule, rules[k].field, rules[k].unit, rules[k].beyond,
+                       rules[k].mistake);
     }
     /* k_yield = 0 (not set) is cw_damage_compute's error, a threshold of 0 N valid */
     cw_damage_params d;
