@@ -15,7 +15,9 @@
 !     the _init procedures, Kalker's coefficients and flexibilities, Hertz,
 !     Kalker's normalised FASTSIM, the wear-profile update; and the policy
 !     every door shares (creepwork_checks.f90): cw_params_check (inputs that
-!     look like a unit mistake, or left at their placeholders), cw_check_text,
+!     look like a unit mistake, or left at their placeholders),
+!     cw_temperature_params_check and cw_damage_params_check (the surface
+!     post-processors' parameters), cw_check_text,
 !     cw_grid_init_model (a model's default grid), cw_input_name;
 !   * wrapper types that own a C handle (one file each, all extending
 !     cw_handle of creepwork_handle.f90): cw_solver_type, cw_batch_type,
@@ -62,7 +64,7 @@ module creepwork
                                   cw_kalker_flexibilities, cw_hertz_solve, cw_fastsim_normalised, &
                                   cw_wear_profile_update
    use creepwork_checks, only: cw_check_init, cw_params_check, cw_check_text, cw_grid_init_model, &
-                               cw_input_name
+                               cw_input_name, cw_temperature_params_check, cw_damage_params_check
    use creepwork_solver, only: cw_solver_type
    use creepwork_batch, only: cw_batch_type
    use creepwork_accumulator, only: cw_accumulator_type

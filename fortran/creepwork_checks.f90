@@ -1,6 +1,8 @@
 ! The policy every door shares (header section "plausibility"): the
-! plausibility checks of contacts (cw_params_check) and of a wheel/rail
-! case (cw_wheelrail_type%check), the text of a finding, the default grid
+! plausibility checks of contacts (cw_params_check), of the surface
+! post-processors' parameters (cw_temperature_params_check,
+! cw_damage_params_check) and of a wheel/rail case
+! (cw_wheelrail_type%check), the text of a finding, the default grid
 ! of a model and the canonical names of inputs and enumeration values.
 module creepwork_checks
    use, intrinsic :: iso_c_binding, only: c_int, c_size_t, c_char, c_null_char
@@ -10,6 +12,7 @@ module creepwork_checks
    implicit none
    private
    public :: cw_check_init, cw_params_check, cw_check_text, cw_grid_init_model, cw_input_name
+   public :: cw_temperature_params_check, cw_damage_params_check
    public :: allocate_checks
 
 contains
@@ -87,6 +90,64 @@ contains
       if (present(errmsg)) call set_errmsg(o, errmsg)
       call deliver(o, stat)
    end subroutine cw_params_check
+
+   ! params checked for values that are valid but implausible for steel
+   ! wheels and rails (conductivity in W/(mm K), heat capacity in kJ/(kg K),
+   ! density in g/cm^3, rolling speed in km/h): checks receives one entry
+   ! per finding (size 0: none); cw_check_text(checks(k)%message) to print.
+   subroutine cw_temperature_params_check(params, checks, stat, errmsg)
+      type(cw_temperature_params), intent(in) :: params
+      type(cw_check), allocatable, intent(out) :: checks(:)
+      integer, intent(out), optional :: stat
+      character(len=:), allocatable, intent(out), optional :: errmsg
+      type(cw_check) :: none(1)
+      integer(c_size_t) :: found
+      integer(c_int) :: status
+      found = 0
+      status = capi_temperature_params_check(params, none, 0_c_size_t, found)
+      if (status == CW_OK) call allocate_checks(checks, found)
+      if (status == CW_OK .and. found > 0) &
+         status = capi_temperature_params_check(params, checks, found, found)
+      call checks_outcome(status, 'cw_temperature_params_check', checks, stat, errmsg)
+   end subroutine cw_temperature_params_check
+
+   ! params checked as cw_temperature_params_check does: k_yield in MPa
+   ! typed as Pa, WLRM thresholds in kN typed as N.
+   subroutine cw_damage_params_check(params, checks, stat, errmsg)
+      type(cw_damage_params), intent(in) :: params
+      type(cw_check), allocatable, intent(out) :: checks(:)
+      integer, intent(out), optional :: stat
+      character(len=:), allocatable, intent(out), optional :: errmsg
+      type(cw_check) :: none(1)
+      integer(c_size_t) :: found
+      integer(c_int) :: status
+      found = 0
+      status = capi_damage_params_check(params, none, 0_c_size_t, found)
+      if (status == CW_OK) call allocate_checks(checks, found)
+      if (status == CW_OK .and. found > 0) &
+         status = capi_damage_params_check(params, checks, found, found)
+      call checks_outcome(status, 'cw_damage_params_check', checks, stat, errmsg)
+   end subroutine cw_damage_params_check
+
+   ! The outcome of a parameter check: checks of size 0 after a failure
+   ! (the params not initialised by their _init).
+   subroutine checks_outcome(status, name, checks, stat, errmsg)
+      integer(c_int), intent(in) :: status
+      character(len=*), intent(in) :: name
+      type(cw_check), allocatable, intent(inout) :: checks(:)
+      integer, intent(out), optional :: stat
+      character(len=:), allocatable, intent(out), optional :: errmsg
+      type(outcome) :: o
+      if (status /= CW_OK .and. allocated(checks)) deallocate (checks)
+      if (.not. allocated(checks)) allocate (checks(0))
+      if (status == CW_OK) then
+         o = make_outcome(CW_OK, '')
+      else
+         o = make_outcome(status, name//': params not initialised (its _init)')
+      end if
+      if (present(errmsg)) call set_errmsg(o, errmsg)
+      call deliver(o, stat)
+   end subroutine checks_outcome
 
    ! The text of a character field of cw_check (input, unit, reason,
    ! message) up to its NUL.

@@ -56,7 +56,8 @@ NULLABLE = [
     "cw_temperature_compute.result", "cw_damage_compute.result"]
 # Struct pointers that are arrays (count elements): bound as type(cw_s) :: x(*).
 STRUCT_ARRAYS = ["cw_batch_solve.params", "cw_batch_solve.results", "cw_solver_get_patches.out",
-                 "cw_params_check.params", "cw_params_check.out", "cw_wheelrail_check.out"]
+                 "cw_params_check.params", "cw_params_check.out", "cw_wheelrail_check.out",
+                 "cw_temperature_params_check.out", "cw_damage_params_check.out"]
 
 SCALARS = {"int": "integer(c_int)", "double": "real(c_double)", "size_t": "integer(c_size_t)",
            "int64_t": "integer(c_int64_t)",

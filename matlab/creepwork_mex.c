@@ -587,28 +587,21 @@ static mxArray* solve_one(cw_solver* s, int owned, cw_params p, int fields, int 
 
 /* ------------------------------------------------- surface post-processors */
 
-/* Values valid but implausible for steel wheels and rails, with the CLI's
- * thresholds (programs/cli/surface_outputs.cpp, implausible()). */
-static void warn_steel(const char* name, double v, double lo, double hi, const char* unit,
-                       const char* why)
+/* The library's plausibility checks of a surface post-processor's
+ * parameters (tp, else dp), one warning per finding: its inputs are typed
+ * by their field names. At most 7 findings (6 thermal properties and the
+ * speed; 4 of damage). */
+static void warn_surface_units(const cw_temperature_params* tp, const cw_damage_params* dp)
 {
-    if (v < lo || v > hi)
-        mexWarnMsgIdAndTxt("creepwork:implausibleUnits", "%s = %.10g %s is implausible: %s", name,
-                           v, unit, why);
-}
-
-static void warn_temperature_units(const cw_temperature_params* p)
-{
-    static const char K[] = "steel is 50 (W/(mm K) typed?)", C[] = "steel is 450 (kJ/(kg K) typed?)",
-                      R[] = "steel is 7850 (g/cm^3 typed?)";
-    warn_steel("conductivity_1", p->conductivity_1, 1.0, 1000.0, "W/(m K)", K);
-    warn_steel("conductivity_2", p->conductivity_2, 1.0, 1000.0, "W/(m K)", K);
-    warn_steel("heat_capacity_1", p->heat_capacity_1, 100.0, 5000.0, "J/(kg K)", C);
-    warn_steel("heat_capacity_2", p->heat_capacity_2, 100.0, 5000.0, "J/(kg K)", C);
-    warn_steel("density_1", p->density_1, 1000.0, 25000.0, "kg/m^3", R);
-    warn_steel("density_2", p->density_2, 1000.0, 25000.0, "kg/m^3", R);
-    warn_steel("rolling_speed", p->rolling_speed, -INFINITY, 150.0, "m/s",
-               "trains run below 150 m/s (km/h typed?)");
+    enum { MAX_FINDINGS = 16 };
+    cw_check c[MAX_FINDINGS];
+    size_t found = 0;
+    for (int k = 0; k < MAX_FINDINGS; ++k) cw_check_init(&c[k]);
+    const int status = tp ? cw_temperature_params_check(tp, c, MAX_FINDINGS, &found)
+                          : cw_damage_params_check(dp, c, MAX_FINDINGS, &found);
+    if (status == CW_OK)
+        for (size_t k = 0; k < found; ++k)
+            mexWarnMsgIdAndTxt("creepwork:implausibleUnits", "%s", c[k].message);
 }
 
 /* An nx-by-ny matrix of one field of a temperature or damage handle. */
@@ -864,16 +857,14 @@ void mexFunction(int nlhs, mxArray* plhs[], int nrhs, const mxArray* prhs[])
         cw_temperature_params_init(&tp);
         tp.rolling_direction = directions[k]; /* the last solve's, unless given */
         to_structs(&TPARAMS, a2, &tp, sizeof tp, 1);
-        warn_temperature_units(&tp);
+        warn_surface_units(&tp, NULL);
         plhs[0] = temperature_of(solvers[k], &tp);
     } else if (strcmp(command, "solver_damage") == 0) { /* id, params */
         const int k = solver_id(a1);
         cw_damage_params dp;
         cw_damage_params_init(&dp);
         to_structs(&DPARAMS, a2, &dp, sizeof dp, 1);
-        if (dp.k_yield > 0.0)
-            warn_steel("k_yield", dp.k_yield, 1e6, INFINITY, "Pa",
-                       "steel's shear yield stress is 2-6e8 Pa (MPa typed as Pa?)");
+        warn_surface_units(NULL, &dp);
         plhs[0] = damage_of(solvers[k], &dp);
     } else if (strcmp(command, "solver_destroy") == 0) {
         const int k = solver_id(a1);

@@ -601,6 +601,47 @@ POLICY_MUTANTS = [
          tests=["python_test_policy", "python_test_gap"]),
 ]
 MUTANTS += POLICY_MUTANTS
+# The surface post-processors' rules (core/contact/surface_plausibility.cpp)
+# at the C ABI and at every door that prints them.
+SURFACE_POLICY = ["test_capi_check", "test_fortran_surface", "python_test_surface",
+                  "octave_test_surface", "cli_surface_warns_about_implausible_units"]
+MUTANTS += [
+    dict(id="check-conductivity", what="a conductivity in W/(mm K) passes (bound 0.01, not 1)",
+         file="core/contact/surface_plausibility.cpp",
+         old="    CheckRule::conductivity, \"W/(m K)\", 1.0, 1000.0,",
+         new="    CheckRule::conductivity, \"W/(m K)\", 0.01, 1000.0,",
+         tests=SURFACE_POLICY),
+    dict(id="check-conductivity-body", what="the rule on conductivity_2 reads the rail's",
+         file="core/contact/surface_plausibility.cpp",
+         old="        check_property(kConductivity, conductivity[body], t.conductivity[body], out);",
+         new="        check_property(kConductivity, conductivity[body], t.conductivity[0], out);",
+         tests=SURFACE_POLICY),
+    dict(id="check-heat-capacity", what="a heat capacity down to 10 J/(kg K) passes",
+         file="core/contact/surface_plausibility.cpp",
+         old="    CheckRule::heat_capacity, \"J/kg/K\", 100.0, 5000.0,",
+         new="    CheckRule::heat_capacity, \"J/kg/K\", 10.0, 5000.0,",
+         tests=SURFACE_POLICY),
+    dict(id="check-density", what="a density up to 250000 kg/m^3 passes",
+         file="core/contact/surface_plausibility.cpp",
+         old="    CheckRule::density, \"kg/m^3\", 1000.0, 25000.0,",
+         new="    CheckRule::density, \"kg/m^3\", 1000.0, 250000.0,",
+         tests=SURFACE_POLICY),
+    dict(id="check-rolling-speed", what="a rolling speed warned only above 300 m/s",
+         file="core/contact/surface_plausibility.cpp",
+         old="    if (t.rolling_speed > kSpeedLimit && std::isfinite(t.rolling_speed))",
+         new="    if (t.rolling_speed > 2.0 * kSpeedLimit && std::isfinite(t.rolling_speed))",
+         tests=SURFACE_POLICY),
+    dict(id="check-yield-stress", what="k_yield warned only below 100 Pa",
+         file="core/contact/surface_plausibility.cpp",
+         old="    if (d.k_yield > 0.0 && d.k_yield < 1e6)",
+         new="    if (d.k_yield > 0.0 && d.k_yield < 1e2)",
+         tests=SURFACE_POLICY),
+    dict(id="check-wlrm-threshold", what="a WLRM threshold warned only below 0.01 N",
+         file="core/contact/surface_plausibility.cpp",
+         old="        if (w.v > 0.0 && w.v < 1.0)",
+         new="        if (w.v > 0.0 && w.v < 0.01)",
+         tests=SURFACE_POLICY),
+]
 # ----------------------------------------------------- end the shared policy
 
 # ----------------------------------------------------- temperature, damage

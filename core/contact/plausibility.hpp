@@ -1,7 +1,8 @@
 // Plausibility of inputs: values a solve accepts but no wheel-rail contact
 // has, the signature of a unit mistake (millimetres typed as metres, kN as
 // N, MPa as Pa, a per cent as a ratio) or of an input left out. One table
-// of rules behind every door (cw_params_check, cw_wheelrail_check): the
+// of rules behind every door (cw_params_check, cw_wheelrail_check; the
+// surface post-processors' in contact/surface_plausibility.hpp): the
 // command line, Python, Octave and Fortran print what it finds. Nothing
 // here warns by itself: a solve in other consistent units stays silent.
 #pragma once
@@ -33,7 +34,17 @@ enum class CheckRule {
     wheelset_height = 25, // |z| of a tread contact beyond 5 mm
     flange_tip = 26,      // a patch on the wheel's flange tip
     profile_origin = 27,  // the wheel's flange tip on the field side of its origin
+    conductivity = 30,    // lambda outside 1 .. 1000 W/(m K)
+    heat_capacity = 31,   // c outside 100 .. 5000 J/kg/K
+    density = 32,         // rho outside 1000 .. 25000 kg/m^3
+    yield_stress = 33,    // k_yield below 1e6 Pa
+    wlrm_threshold = 34,  // a WLRM threshold in (0, 1) N
 };
+
+// Rail vehicles run below 150 m/s (540 km/h): a speed above that is in km/h
+// (CheckRule::speed, of the wheel/rail case and of the temperature).
+constexpr double kSpeedLimit = 150.0;
+constexpr const char* kSpeedReason = "rail vehicles run below 150 m/s (km/h typed as m/s?)";
 
 // One rule broken: by which input (a field name of the C structs), its
 // value in SI (for gap heights their spread), the unit of that value ("" if

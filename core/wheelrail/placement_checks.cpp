@@ -111,8 +111,7 @@ std::vector<Implausible> check_wheelrail(const WheelRailGeometry& g, const Wheel
     if (in.force_given && in.Fz > 0.0 && in.Fz < 1000.0)
         add(CheckRule::normal_force, "Fz", in.Fz, "N",
             "wheel loads are 1-500 kN, not below 1 kN (kN typed where N are read?)");
-    if (in.vs > 150.0)
-        add(CheckRule::speed, "vs", in.vs, "m/s", "rail vehicles run below 150 m/s (km/h typed as m/s?)");
+    if (in.vs > kSpeedLimit) add(CheckRule::speed, "vs", in.vs, "m/s", kSpeedReason);
     if (in.vs > 0.0) {
         const double ratio = -in.vpitch * ws.nominal_radius / in.vs;
         if (!(ratio > 0.5 && ratio < 2.0))

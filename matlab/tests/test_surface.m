@@ -41,9 +41,31 @@ catch err
   assert(strcmp(err.identifier, 'creepwork:CW_ERR_INVALID_INPUT'), err.identifier);
   assert(~isempty(strfind(err.message, 'conductivity_1')), err.message);
 end
+% The library's plausibility rules (header, cw_temperature_params_check and
+% cw_damage_params_check): just beyond a threshold its message, just inside none.
+implausible = ' is implausible for a wheel-rail contact: ';
+tf = @(varargin) s.temperature(varargin{:});
+df = @(varargin) s.damage(varargin{:});
+cases = {{tf, {'rolling_speed', 30, 'conductivity_1', 0.05}, ...
+          ['conductivity_1 = 0.05 W/(m K)', implausible], 'W/(mm K) typed as W/(m K)?'}, ...
+         {tf, {'rolling_speed', 30, 'density_2', 7.85}, ...
+          ['density_2 = 7.85 kg/m^3', implausible], 'g/cm^3'}, ...
+         {tf, {'rolling_speed', 150.5}, ...
+          ['rolling_speed = 150.5 m/s', implausible], 'km/h typed as m/s?'}, ...
+         {df, {'k_yield', 300}, ['k_yield = 300 Pa', implausible], 'MPa or N/mm^2 typed as Pa?'}, ...
+         {df, {'k_yield', 3e8, 'wlrm_onset', 0, 'wlrm_peak', 0.065}, ...
+          ['wlrm_peak = 0.065 N', implausible], 'kN or J/mm typed as N?'}};
+for k = 1:numel(cases)
+  c = cases{k};
+  lastwarn('');
+  c{1}(c{2}{:});
+  [msg, id] = lastwarn();
+  assert(strcmp(id, 'creepwork:implausibleUnits') && ~isempty(strfind(msg, c{3})) && ...
+         ~isempty(strfind(msg, c{4})), msg);
+end
 lastwarn('');
-s.temperature('rolling_speed', 30, 'conductivity_1', 0.05);
-[msg, id] = lastwarn();
-assert(strcmp(id, 'creepwork:implausibleUnits') && ~isempty(strfind(msg, 'conductivity_1')), msg);
+s.temperature('rolling_speed', 149.5, 'conductivity_1', 1.01);
+s.damage('k_yield', 1.01e6);
+assert(isempty(lastwarn()), lastwarn());
 delete(s);
 disp('temperature and damage indices as the header defines them');

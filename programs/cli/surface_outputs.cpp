@@ -18,6 +18,16 @@ const char* const kTemperatureNumbers[][2] = {
     {"heat-capacity-2", "heat_capacity_2"}, {"conductivity-1", "conductivity_1"},
     {"conductivity-2", "conductivity_2"}, {"density-1", "density_1"}, {"density-2", "density_2"}};
 
+// The option that sets a field the library's checks name.
+std::string option_of(const std::string& field)
+{
+    if (field == "rolling_speed") return "speed";
+    if (field == "k_yield") return "k-yield";
+    for (const auto& n : kTemperatureNumbers)
+        if (field == n[1]) return n[0];
+    return field;
+}
+
 double* temperature_field(cw_temperature_params& p, const std::string& field)
 {
     if (field == "T0_1") return &p.T0_1;
@@ -45,34 +55,38 @@ struct Destroy {
     void operator()(T* p) const { destroy(p); }
 };
 
-// Values valid but implausible for steel: the unit most likely meant.
+// The library's checks of the surface parameters (cw_temperature_params_check,
+// cw_damage_params_check), each input named by its option. At most 7
+// findings (6 thermal properties and the speed; 4 of damage).
+void add_checks(int (*check)(const void*, cw_check*, size_t, size_t*), const void* params,
+                std::vector<std::string>& w)
+{
+    cw_check c[16];
+    size_t found = 0;
+    for (cw_check& k : c) cw_check_init(&k);
+    if (check(params, c, 16, &found) != CW_OK) return;
+    for (size_t k = 0; k < found; ++k) {
+        const std::string input = c[k].input;
+        w.push_back("warning: --" + option_of(input) + (c[k].message + input.size()));
+    }
+}
+
+int temperature_check(const void* p, cw_check* out, size_t len, size_t* found)
+{
+    return cw_temperature_params_check(static_cast<const cw_temperature_params*>(p), out, len,
+                                       found);
+}
+
+int damage_check(const void* p, cw_check* out, size_t len, size_t* found)
+{
+    return cw_damage_params_check(static_cast<const cw_damage_params*>(p), out, len, found);
+}
+
 std::vector<std::string> implausible(const SurfaceRequest& r)
 {
     std::vector<std::string> w;
-    const auto say = [&w](const char* option, double v, const char* why) {
-        w.push_back(std::string("warning: --") + option + " = " + round_trip_text(v) + " " + why);
-    };
-    if (r.temperature) {
-        const cw_temperature_params& p = r.temperature_params;
-        for (const auto& [option, v] : {std::pair{"conductivity-1", p.conductivity_1},
-                                        std::pair{"conductivity-2", p.conductivity_2}})
-            if (v < 1.0 || v > 1000.0)
-                say(option, v, "W/(m K) is implausible for steel (50; W/(mm K) typed?)");
-        for (const auto& [option, v] : {std::pair{"heat-capacity-1", p.heat_capacity_1},
-                                        std::pair{"heat-capacity-2", p.heat_capacity_2}})
-            if (v < 100.0 || v > 5000.0)
-                say(option, v, "J/(kg K) is implausible for steel (450; kJ/(kg K) typed?)");
-        for (const auto& [option, v] : {std::pair{"density-1", p.density_1},
-                                        std::pair{"density-2", p.density_2}})
-            if (v < 1000.0 || v > 25000.0)
-                say(option, v, "kg/m^3 is implausible for steel (7850; g/cm^3 typed?)");
-        if (p.rolling_speed > 150.0)
-            say("speed", p.rolling_speed, "m/s is implausible: trains run below 150 m/s (km/h "
-                                          "typed as m/s?)");
-    }
-    if (r.damage && r.damage_params.k_yield > 0.0 && r.damage_params.k_yield < 1e6)
-        say("k-yield", r.damage_params.k_yield,
-            "Pa is implausible for steel's shear yield stress (2-6e8 Pa; MPa typed as Pa?)");
+    if (r.temperature) add_checks(temperature_check, &r.temperature_params, w);
+    if (r.damage) add_checks(damage_check, &r.damage_params, w);
     return w;
 }
 

@@ -1,4 +1,5 @@
-"""The library's plausibility checks (cw_params_check) as the messages of
+"""The library's plausibility checks (cw_params_check, and the surface
+post-processors' cw_temperature_params_check, cw_damage_params_check) as the messages of
 creepwork.UnitWarning, naming each input as the user typed it; and the
 library's canonical names of inputs and enumeration values (cw_input_name).
 
@@ -61,6 +62,15 @@ def warnings_for(grid, recs, typed):
         field = text(c["input"])
         out.append(typed.get(field, field) + text(c["message"])[len(field):])
     return out
+
+
+def params_warnings(struct, rec, typed):
+    """UnitWarning messages for a cw_temperature_params or cw_damage_params
+    record (struct "temperature" or "damage": cw_<struct>_params_check),
+    each input named as typed ({field: keyword})."""
+    check = getattr(lib, "cw_%s_params_check" % struct)
+    return [as_typed(text(c["message"]), typed)
+            for c in records(lambda out, n, found: check(address(rec), out, n, found))]
 
 
 def as_typed(message, typed):

@@ -7,36 +7,13 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from . import _errors
+from . import _checks, _errors
 from ._handle import Handle
 from ._library import CONSTANTS, DTYPES, address, lib
 from ._params import DAMAGE_PARAMS, TEMPERATURE_PARAMS
 
 if TYPE_CHECKING:
     from ._solver import Solver
-
-
-# (field, unit, condition, what is plausible): the thresholds of the CLI's
-# (programs/cli/surface_outputs.cpp, implausible()).
-_STEEL = [
-    ("conductivity_1", "W/(m K)", lambda v: v < 1.0 or v > 1000.0, "steel is 50 (W/(mm K) typed?)"),
-    ("conductivity_2", "W/(m K)", lambda v: v < 1.0 or v > 1000.0, "steel is 50 (W/(mm K) typed?)"),
-    ("heat_capacity_1", "J/(kg K)", lambda v: v < 100.0 or v > 5000.0,
-     "steel is 450 (kJ/(kg K) typed?)"),
-    ("heat_capacity_2", "J/(kg K)", lambda v: v < 100.0 or v > 5000.0,
-     "steel is 450 (kJ/(kg K) typed?)"),
-    ("density_1", "kg/m^3", lambda v: v < 1000.0 or v > 25000.0, "steel is 7850 (g/cm^3 typed?)"),
-    ("density_2", "kg/m^3", lambda v: v < 1000.0 or v > 25000.0, "steel is 7850 (g/cm^3 typed?)"),
-    ("rolling_speed", "m/s", lambda v: v > 150.0, "trains run below 150 m/s (km/h typed?)"),
-    ("k_yield", "Pa", lambda v: 0.0 < v < 1e6,
-     "steel's shear yield stress is 2-6e8 Pa (MPa typed as Pa?)"),
-]
-
-
-def _implausible(rec):
-    return ["%s = %.10g %s is implausible: %s" % (field, rec[field], unit, why)
-            for field, unit, bad, why in _STEEL
-            if field in rec.dtype.names and bad(float(rec[field]))]
 
 
 def _named(prefix):
@@ -92,7 +69,8 @@ class _Surface(Handle):
     def _compute(self, solver, keywords, warn):
         rec = self._params.record(keywords, "compute")
         if warn:
-            _errors.warn_units(_implausible(rec), 3)
+            typed = {self._params.field(k, "compute"): k for k in keywords}
+            _errors.warn_units(_checks.params_warnings(self._noun, rec, typed), 3)
         res = np.zeros((), DTYPES["cw_%s_result" % self._noun])
         getattr(lib, "cw_%s_result_init" % self._noun)(address(res))
         self._check(getattr(lib, "cw_%s_compute" % self._noun)(

@@ -3,6 +3,8 @@ the relations the header states for them, so that a field read into the
 wrong array, a default from the wrong slot or the solve's rolling direction
 not passed on fails."""
 
+import warnings
+
 import numpy as np
 import pytest
 
@@ -111,10 +113,37 @@ def test_errors_name_the_input():
             s.temperature(rolling_speed=30.0)
 
 
+def _unit_warnings(call, **keywords):
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        call(**keywords)
+    return [str(w.message) for w in caught if issubclass(w.category, creepwork.UnitWarning)]
+
+
 def test_implausible_units_warn():
+    # The library's rules (header, cw_temperature_params_check and
+    # cw_damage_params_check): a value just beyond a threshold warns with
+    # the library's message, just inside is silent.
+    implausible = " is implausible for a wheel-rail contact: "
     with creepwork.Solver() as s:
         s.solve(**CONTACT)
-        with pytest.warns(creepwork.UnitWarning, match=r"conductivity_1 = 0.05 W/\(m K\)"):
-            s.temperature(rolling_speed=30.0, conductivity_1=0.05)
-        with pytest.warns(creepwork.UnitWarning, match="k_yield = 300 Pa"):
-            s.damage(k_yield=300.0)
+        assert _unit_warnings(s.temperature, rolling_speed=30.0, conductivity_1=1.01) == []
+        (w,) = _unit_warnings(s.temperature, rolling_speed=30.0, conductivity_1=0.05)
+        assert w.startswith("conductivity_1 = 0.05 W/(m K)" + implausible)
+        assert "W/(mm K) typed as W/(m K)?" in w
+        (w,) = _unit_warnings(s.temperature, rolling_speed=30.0, heat_capacity_2=99.0)
+        assert w.startswith("heat_capacity_2 = 99 J/kg/K" + implausible)
+        (w,) = _unit_warnings(s.temperature, rolling_speed=30.0, density_1=7.85)
+        assert w.startswith("density_1 = 7.85 kg/m^3" + implausible)
+        assert _unit_warnings(s.temperature, rolling_speed=149.5) == []
+        (w,) = _unit_warnings(s.temperature, rolling_speed=150.5)
+        assert w.startswith("rolling_speed = 150.5 m/s" + implausible)
+        assert "km/h typed as m/s?" in w
+        assert _unit_warnings(s.temperature, warn=False, rolling_speed=300.0) == []
+        assert _unit_warnings(s.damage, k_yield=1.01e6) == []
+        (w,) = _unit_warnings(s.damage, k_yield=300.0)
+        assert w.startswith("k_yield = 300 Pa" + implausible)
+        assert "MPa or N/mm^2 typed as Pa?" in w
+        (w,) = _unit_warnings(s.damage, k_yield=3e8, wlrm_onset=0.0, wlrm_peak=0.065,
+                              wlrm_zero=175.0)
+        assert w.startswith("wlrm_peak = 0.065 N" + implausible)

@@ -5,7 +5,9 @@
  * load; a gap grid's spacing and heights; many contacts counted once per
  * rule; the caller's buffer as cw_solver_get_patches'. Then the exact
  * model's default grid (cw_grid_init_model) and the canonical names of
- * inputs and enumeration values (cw_input_name). */
+ * inputs and enumeration values (cw_input_name). Last, the surface
+ * post-processors' rules (cw_temperature_params_check,
+ * cw_damage_params_check) the same way. */
 #include "capi_fixtures.h"
 
 #include <stdio.h>
@@ -49,6 +51,26 @@ static void set(cw_params* p, const char* field, double v)
     else if (!strcmp(field, "phi")) p->phi = v;
     else if (!strcmp(field, "V")) p->V = v;
     else fail_msg("no field %s", field);
+}
+
+/* c is one contact's finding of rule on field = value [unit], its reason
+ * naming the mistake and its message "<field> = <value> <unit> is
+ * implausible for a wheel-rail contact: <reason>". */
+static void expect_finding(const cw_check* c, int rule, const char* field, const char* unit,
+                           double value, const char* mistake)
+{
+    assert_int_equal(c->rule, rule);
+    assert_string_equal(c->input, field);
+    assert_string_equal(c->unit, unit);
+    assert_true(c->value == value);
+    assert_int_equal(c->contacts, 1);
+    assert_int_equal(c->first, 0);
+    assert_non_null(strstr(c->reason, mistake));
+    char head[96];
+    snprintf(head, sizeof head, "%s = %.10g%s%s is implausible for a wheel-rail contact: ", field,
+             value, *unit ? " " : "", unit);
+    assert_true(strncmp(c->message, head, strlen(head)) == 0);
+    assert_string_equal(c->message + strlen(head), c->reason);
 }
 
 /* Every rule of an elliptic contact at its threshold (header, CW_CHECK_*). */
@@ -96,18 +118,8 @@ static void each_rule_fires_beyond_its_threshold_only(void** state)
         if (run_checks(&g, &p, 1, c) != 0) fail_msg("%s = %g: %s", rules[k].field, rules[k].inside, c[0].message);
         set(&p, rules[k].field, rules[k].beyond);
         if (run_checks(&g, &p, 1, c) != 1) fail_msg("%s = %g: no finding", rules[k].field, rules[k].beyond);
-        assert_int_equal(c[0].rule, rules[k].rule);
-        assert_string_equal(c[0].input, rules[k].field);
-        assert_string_equal(c[0].unit, rules[k].unit);
-        assert_true(c[0].value == rules[k].beyond);
-        assert_int_equal(c[0].contacts, 1);
-        assert_int_equal(c[0].first, 0);
-        assert_non_null(strstr(c[0].reason, rules[k].mistake));
-        char head[96];
-        snprintf(head, sizeof head, "%s = %.10g%s%s is implausible for a wheel-rail contact: ",
-                 rules[k].field, rules[k].beyond, *rules[k].unit ? " " : "", rules[k].unit);
-        assert_true(strncmp(c[0].message, head, strlen(head)) == 0);
-        assert_string_equal(c[0].message + strlen(head), c[0].reason);
+        expect_finding(&c[0], rules[k].rule, rules[k].field, rules[k].unit, rules[k].beyond,
+                       rules[k].mistake);
         /* the other flexibility source is not read */
         if (!strcmp(rules[k].field, "G")) {
             p.flexibility = CW_FLEX_GIVEN;
@@ -353,6 +365,137 @@ static void exact_defaults_are_the_macros(void** state)
     cw_solver_destroy(s);
 }
 
+/* The surface post-processors' parameters at each rule's threshold (header,
+ * CW_CHECK_* and cw_temperature_params_check / cw_damage_params_check):
+ * cw_*_params_init's steel and Burstow's thresholds find nothing; one value
+ * just beyond a threshold is one finding naming it, just inside none. */
+static size_t run_surface_checks(const cw_temperature_params* t, const cw_damage_params* d,
+                                 cw_check* out)
+{
+    for (int k = 0; k < MAX_CHECKS; ++k) cw_check_init(&out[k]);
+    size_t found = 999;
+    if (t) assert_int_equal(cw_temperature_params_check(t, out, MAX_CHECKS, &found), CW_OK);
+    else assert_int_equal(cw_damage_params_check(d, out, MAX_CHECKS, &found), CW_OK);
+    assert_true(found < MAX_CHECKS);
+    return found;
+}
+
+static double* surface_field(cw_temperature_params* t, cw_damage_params* d, const char* field)
+{
+    if (!strcmp(field, "conductivity_1")) return &t->conductivity_1;
+    if (!strcmp(field, "conductivity_2")) return &t->conductivity_2;
+    if (!strcmp(field, "heat_capacity_1")) return &t->heat_capacity_1;
+    if (!strcmp(field, "heat_capacity_2")) return &t->heat_capacity_2;
+    if (!strcmp(field, "density_1")) return &t->density_1;
+    if (!strcmp(field, "density_2")) return &t->density_2;
+    if (!strcmp(field, "rolling_speed")) return &t->rolling_speed;
+    if (!strcmp(field, "k_yield")) return &d->k_yield;
+    if (!strcmp(field, "wlrm_onset")) return &d->wlrm_onset;
+    if (!strcmp(field, "wlrm_peak")) return &d->wlrm_peak;
+    if (!strcmp(field, "wlrm_zero")) return &d->wlrm_zero;
+    fail_msg("no field %s", field);
+    return NULL;
+}
+
+static void surface_rules_fire_beyond_their_threshold_only(void** state)
+{
+    (void)state;
+    static const struct {
+        const char* field;
+        int rule;
+        const char* unit;
+        double beyond, inside;
+        const char* mistake; /* in the reason */
+    } rules[] = {
+        {"conductivity_1", CW_CHECK_CONDUCTIVITY, "W/(m K)", 0.99, 1.01, "W/(mm K) typed"},
+        {"conductivity_2", CW_CHECK_CONDUCTIVITY, "W/(m K)", 0.05, 1.01, "W/(mm K) typed"},
+        {"conductivity_1", CW_CHECK_CONDUCTIVITY, "W/(m K)", 1001.0, 999.0, "mW/(m K) typed"},
+        {"conductivity_2", CW_CHECK_CONDUCTIVITY, "W/(m K)", 1001.0, 999.0, "mW/(m K) typed"},
+        {"heat_capacity_1", CW_CHECK_HEAT_CAPACITY, "J/kg/K", 99.0, 101.0, "kJ/kg/K"},
+        {"heat_capacity_2", CW_CHECK_HEAT_CAPACITY, "J/kg/K", 0.45, 101.0, "kJ/kg/K"},
+        {"heat_capacity_1", CW_CHECK_HEAT_CAPACITY, "J/kg/K", 5001.0, 4999.0, "mJ/kg/K"},
+        {"heat_capacity_2", CW_CHECK_HEAT_CAPACITY, "J/kg/K", 5001.0, 4999.0, "mJ/kg/K"},
+        {"density_1", CW_CHECK_DENSITY, "kg/m^3", 7.85, 1001.0, "g/cm^3"},
+        {"density_2", CW_CHECK_DENSITY, "kg/m^3", 999.0, 1001.0, "g/cm^3"},
+        {"density_1", CW_CHECK_DENSITY, "kg/m^3", 25001.0, 24999.0, "g/m^3 typed"},
+        {"density_2", CW_CHECK_DENSITY, "kg/m^3", 25001.0, 24999.0, "g/m^3 typed"},
+        {"rolling_speed", CW_CHECK_SPEED, "m/s", 150.5, 149.5, "km/h typed as m/s"},
+        {"k_yield", CW_CHECK_YIELD_STRESS, "Pa", 0.99e6, 1.01e6, "MPa or N/mm^2 typed as Pa"},
+        {"k_yield", CW_CHECK_YIELD_STRESS, "Pa", 300.0, 3e8, "MPa or N/mm^2 typed as Pa"},
+        {"wlrm_onset", CW_CHECK_WLRM_THRESHOLD, "N", 0.99, 1.01, "kN or J/mm typed as N"},
+        {"wlrm_peak", CW_CHECK_WLRM_THRESHOLD, "N", 0.065, 1.01, "kN or J/mm typed as N"},
+        {"wlrm_zero", CW_CHECK_WLRM_THRESHOLD, "N", 0.99, 1.01, "kN or J/mm typed as N"},
+    };
+    cw_check c[MAX_CHECKS];
+    for (size_t k = 0; k < sizeof rules / sizeof rules[0]; ++k) {
+        cw_temperature_params t;
+        cw_damage_params d;
+        cw_temperature_params_init(&t);
+        cw_damage_params_init(&d);
+        t.rolling_speed = 30.0;
+        d.k_yield = 3e8;
+        const int thermal = rules[k].rule <= CW_CHECK_DENSITY || rules[k].rule == CW_CHECK_SPEED;
+        /* the other thresholds of the WLRM below the one tried, none in (0, 1) N */
+        if (!strcmp(rules[k].field, "wlrm_peak") || !strcmp(rules[k].field, "wlrm_zero")) d.wlrm_onset = 0.0;
+        if (!strcmp(rules[k].field, "wlrm_zero")) d.wlrm_peak = 1.005;
+        double* v = surface_field(&t, &d, rules[k].field);
+        *v = rules[k].inside;
+        if (run_surface_checks(thermal ? &t : NULL, &d, c) != 0)
+            fail_msg("%s = %g: %s", rules[k].field, rules[k].inside, c[0].message);
+        *v = rules[k].beyond;
+        if (run_surface_checks(thermal ? &t : NULL, &d, c) != 1)
+            fail_msg("%s = %g: no finding", rules[k].field, rules[k].beyond);
+        expect_finding(&c[0], rules[k].rule, rules[k].field, rules[k].unit, rules[k].beyond,
+                       rules[k].mistake);
+    }
+    /* k_yield = 0 (not set) is cw_damage_compute's error, a threshold of 0 N valid */
+    cw_damage_params d;
+    cw_damage_params_init(&d);
+    d.wlrm_onset = 0.0;
+    assert_int_equal(run_surface_checks(NULL, &d, c), 0);
+}
+
+/* Several findings in the fixed order (body 1 before body 2, then the
+ * speed), the count query and the caller's buffer as cw_params_check's. */
+static void surface_checks_buffer_rules(void** state)
+{
+    (void)state;
+    cw_temperature_params t;
+    cw_temperature_params_init(&t);
+    t.rolling_speed = 300.0; /* 300 km/h typed as m/s */
+    t.density_2 = 7.85;
+    t.conductivity_1 = 0.05;
+    size_t found = 0;
+    assert_int_equal(cw_temperature_params_check(&t, NULL, 0, &found), CW_OK);
+    assert_int_equal(found, 3);
+    cw_check c[3];
+    for (int k = 0; k < 3; ++k) cw_check_init(&c[k]);
+    assert_int_equal(cw_temperature_params_check(&t, c, 2, &found), CW_ERR_BUFFER_TOO_SMALL);
+    assert_int_equal(found, 3);
+    assert_int_equal(c[0].rule, 0);
+    assert_int_equal(cw_temperature_params_check(&t, c, 3, &found), CW_OK);
+    assert_string_equal(c[0].input, "conductivity_1");
+    assert_string_equal(c[1].input, "density_2");
+    assert_string_equal(c[2].input, "rolling_speed");
+    cw_damage_params d;
+    cw_damage_params_init(&d);
+    d.k_yield = 300.0;
+    d.wlrm_onset = 0.02;
+    d.wlrm_peak = 0.065;
+    d.wlrm_zero = 0.175;
+    assert_int_equal(cw_damage_params_check(&d, NULL, 0, &found), CW_OK);
+    assert_int_equal(found, 4);
+    cw_check two[2];
+    memset(two, 0, sizeof two);
+    assert_int_equal(cw_damage_params_check(&d, two, 2, &found), CW_ERR_STRUCT_SIZE);
+    assert_int_equal(cw_damage_params_check(NULL, c, 3, &found), CW_ERR_NULL_POINTER);
+    assert_int_equal(cw_damage_params_check(&d, c, 3, NULL), CW_ERR_NULL_POINTER);
+    assert_int_equal(cw_temperature_params_check(NULL, c, 3, &found), CW_ERR_NULL_POINTER);
+    cw_temperature_params bad = t;
+    bad.struct_size = 3;
+    assert_int_equal(cw_temperature_params_check(&bad, c, 3, &found), CW_ERR_STRUCT_SIZE);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -364,6 +507,8 @@ int main(void)
         cmocka_unit_test(model_default_grids),
         cmocka_unit_test(input_names),
         cmocka_unit_test(exact_defaults_are_the_macros),
+        cmocka_unit_test(surface_rules_fire_beyond_their_threshold_only),
+        cmocka_unit_test(surface_checks_buffer_rules),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

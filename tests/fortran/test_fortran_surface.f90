@@ -7,6 +7,10 @@
 !                fields' largest contact values; errors through stat/errmsg
 !   damage       cw_damage_type in full sliding: the RCF index mu - k/pz,
 !                sum of the T_gamma density x area = W_macro, FI_surf
+!   checks       cw_temperature_params_check, cw_damage_params_check: steel's
+!                defaults find nothing; a conductivity in W/(mm K), 300 km/h
+!                typed as m/s, k_yield in MPa and a WLRM threshold in kN are
+!                named with the library's message (the header's thresholds)
 program test_fortran_surface
    use, intrinsic :: iso_c_binding, only: c_double, c_int, c_sizeof
    use creepwork
@@ -19,6 +23,7 @@ program test_fortran_surface
    call check_structs()
    call check_temperature()
    call check_damage()
+   call check_plausibility()
    call test_summary('test_fortran_surface')
 
 contains
@@ -152,5 +157,48 @@ contains
       call damage%destroy()
       call solver%destroy()
    end subroutine check_damage
+
+   subroutine check_plausibility()
+      type(cw_temperature_params) :: tp
+      type(cw_damage_params) :: dp
+      type(cw_check), allocatable :: checks(:)
+      integer :: stat
+      call cw_temperature_params_init(tp)
+      tp%rolling_speed = 30.0_c_double
+      call cw_temperature_params_check(tp, checks, stat=stat)
+      call check_int(stat, CW_OK, 'temperature check: stat')
+      call check_int(size(checks), 0, 'steel at 30 m/s: no finding')
+      tp%conductivity_2 = 0.05_c_double ! W/(mm K) typed: 1 W/(m K) is the bound
+      tp%rolling_speed = 300.0_c_double ! km/h typed: 150 m/s is the bound
+      call cw_temperature_params_check(tp, checks)
+      call check_int(size(checks), 2, 'two findings')
+      call check_int(int(checks(1)%rule), CW_CHECK_CONDUCTIVITY, 'conductivity: the rule')
+      call check_string(cw_check_text(checks(1)%message), 'conductivity_2 = 0.05 W/(m K) is '// &
+                        'implausible for a wheel-rail contact: '//cw_check_text(checks(1)%reason), &
+                        'conductivity: the message')
+      call check_true(index(cw_check_text(checks(1)%reason), 'W/(mm K) typed') > 0, &
+                      'conductivity: the mistake')
+      call check_int(int(checks(2)%rule), CW_CHECK_SPEED, 'rolling speed: the rule')
+      call check_string(cw_check_text(checks(2)%input), 'rolling_speed', 'rolling speed: the input')
+      call check_same(checks(2)%value, 300.0_c_double, 'rolling speed: the value')
+      call cw_damage_params_init(dp)
+      dp%k_yield = 3e8_c_double
+      call cw_damage_params_check(dp, checks)
+      call check_int(size(checks), 0, 'k_yield 3e8 Pa, Burstow''s thresholds: no finding')
+      dp%k_yield = 300.0_c_double ! MPa typed: 1e6 Pa is the bound
+      dp%wlrm_zero = 0.175_c_double ! kN typed: 1 N is the bound
+      call cw_damage_params_check(dp, checks, stat=stat)
+      call check_int(stat, CW_OK, 'damage check: stat')
+      call check_int(size(checks), 2, 'k_yield and wlrm_zero')
+      call check_int(int(checks(1)%rule), CW_CHECK_YIELD_STRESS, 'k_yield: the rule')
+      call check_true(index(cw_check_text(checks(1)%message), 'k_yield = 300 Pa is implausible') == 1, &
+                      'k_yield: the message')
+      call check_int(int(checks(2)%rule), CW_CHECK_WLRM_THRESHOLD, 'wlrm_zero: the rule')
+      call check_string(cw_check_text(checks(2)%input), 'wlrm_zero', 'wlrm_zero: the input')
+      dp%struct_size = 0
+      call cw_damage_params_check(dp, checks, stat=stat)
+      call check_int(stat, CW_ERR_STRUCT_SIZE, 'not initialised: stat')
+      call check_int(size(checks), 0, 'not initialised: no findings')
+   end subroutine check_plausibility
 
 end program test_fortran_surface

@@ -17,7 +17,8 @@ Grouping, whatever the order of the header: a function whose name starts
 with a handle's name (cw_solver_..., cw_wear_profile_...: the longest
 wins) belongs to that handle; a struct's _init (cw_params_init) to the
 handle that takes the struct in the most functions (the first declared on
-a tie); every other function to its header section (version, status codes,
+a tie), unless the functions of a header section take it as often (then
+it stays in its section: cw_check_init); every other function to its header section (version, status codes,
 helpers). Groups appear in the order of their first function in the
 header, functions in header order within a group. A function's
 description is the first sentence of its comment (a long one up to its
@@ -117,12 +118,16 @@ def groups(header):
         struct = f.params[0].base
         if struct not in header.structs:
             continue
-        uses = {}
-        for g in header.functions:
-            if g.name in owner and any(p.base == struct for p in g.params):
-                uses[owner[g.name]] = uses.get(owner[g.name], 0) + 1
+        uses, first = {}, {}
+        for k, g in enumerate(header.functions):
+            if g is not f and any(p.base == struct for p in g.params):
+                key = owner.get(g.name) or "section:" + g.section
+                uses[key] = uses.get(key, 0) + 1
+                first.setdefault(key, k)
         if uses:
-            owner[f.name] = max(header.handles, key=lambda h: (uses.get(h, 0), -header.handles.index(h)))
+            best = max(uses, key=lambda key: (uses[key], -first[key]))
+            if not best.startswith("section:"):
+                owner[f.name] = best
     ordered, members = [], {}
     for f in header.functions:
         key = owner.get(f.name) or "section:" + f.section

@@ -294,7 +294,7 @@ CW_API int cw_params_init(cw_params* params);
 /* ----------------------------------------------------------- plausibility */
 
 /* cw_check.rule: what an input's value suggests (cw_params_check,
- * cw_wheelrail_check) */
+ * cw_wheelrail_check, cw_temperature_params_check, cw_damage_params_check) */
 #define CW_CHECK_SEMI_AXIS 1        /* a, b outside 0.1 mm .. 0.1 m */
 #define CW_CHECK_NORMAL_FORCE 2     /* a load outside 1 kN .. 10 MN (kN typed as N?) */
 #define CW_CHECK_FRICTION 3         /* mu above 1.5 */
@@ -309,11 +309,16 @@ CW_API int cw_params_init(cw_params* params);
 #define CW_CHECK_WHEELSET_SHIFT 20  /* |y| of the wheelset above 20 mm */
 #define CW_CHECK_WHEELSET_ANGLE 21  /* |roll|, |yaw| above 0.05 rad (degrees typed?) */
 #define CW_CHECK_PATCH_ELEMENT 22   /* wheel/rail dx, ds above 5 mm */
-#define CW_CHECK_SPEED 23           /* V, forward speed above 150 m/s (km/h typed?) */
+#define CW_CHECK_SPEED 23           /* V, a forward or rolling speed above 150 m/s (km/h typed?) */
 #define CW_CHECK_PITCH_RATE 24      /* vpitch far from -vs / nominal_radius */
 #define CW_CHECK_WHEELSET_HEIGHT 25 /* |z| beyond 5 mm with no patch on the flange */
 #define CW_CHECK_FLANGE_TIP 26      /* a patch on the wheel's flange tip */
 #define CW_CHECK_PROFILE_ORIGIN 27  /* the wheel's flange tip on the field side of its origin */
+#define CW_CHECK_CONDUCTIVITY 30    /* lambda outside 1 .. 1000 W/(m K) (W/(mm K) typed?) */
+#define CW_CHECK_HEAT_CAPACITY 31   /* c outside 100 .. 5000 J/kg/K (kJ/kg/K typed?) */
+#define CW_CHECK_DENSITY 32         /* rho outside 1000 .. 25000 kg/m^3 (g/cm^3 typed?) */
+#define CW_CHECK_YIELD_STRESS 33    /* k_yield below 1e6 Pa (MPa typed as Pa?) */
+#define CW_CHECK_WLRM_THRESHOLD 34  /* a WLRM threshold in (0, 1) N (kN typed as N?) */
 
 /* One input whose value a solve accepts but no wheel-rail contact has: the
  * signature of a unit mistake (millimetres typed as metres, kN as N, MPa
@@ -323,12 +328,13 @@ typedef struct cw_check {
     size_t struct_size;   /* set by cw_check_init */
     int rule;             /* CW_CHECK_* */
     char input[32];       /* the input, NUL-terminated: a field of cw_params, cw_grid,
-                             cw_wheelrail_params or cw_wheelrail_motion ("a",
+                             cw_wheelrail_params, cw_wheelrail_motion,
+                             cw_temperature_params or cw_damage_params ("a",
                              "normal_force", "gap", "dx", "y", "Fz", "z") */
     double value;         /* its value in SI (the first contact's that breaks the rule;
                              for "gap" the heights' spread max - min) */
     char unit[8];         /* the value's unit ("m", "N", "Pa", "1/m", "m/Pa", "rad",
-                             "m/s", "rad/s") or "" */
+                             "m/s", "rad/s", "W/(m K)", "J/kg/K", "kg/m^3") or "" */
     size_t contacts;      /* how many of the contacts checked break the rule */
     size_t first;         /* the index of the first */
     char reason[256];     /* what is plausible and the likely mistake */

@@ -99,6 +99,23 @@ CW_API int cw_temperature_get_result(const cw_temperature* temperature,
 /* Detailed message of the last error on this handle, as cw_solver_last_error. */
 CW_API const char* cw_temperature_last_error(const cw_temperature* temperature);
 
+/* Checks params for values that are valid but implausible for steel wheels
+ * and rails, as cw_params_check does a contact's (doc/input-schema.md,
+ * "Plausibility warnings"): conductivity_1/_2, heat_capacity_1/_2,
+ * density_1/_2 far from steel's (CW_CHECK_CONDUCTIVITY, _HEAT_CAPACITY,
+ * _DENSITY: W/(mm K), kJ/(kg K), g/cm^3 typed?) and rolling_speed above 150
+ * m/s (CW_CHECK_SPEED: km/h typed?). *found receives the number of
+ * findings, out[k], k < *found, one per rule and input in a fixed order
+ * (cw_check.contacts = 1, first = 0). out is an array of len structs of
+ * size out[0].struct_size (each initialised by cw_check_init); len = 0
+ * asks for the number only (out may then be NULL). Values a compute
+ * refuses (NaN, out of range) are left to its errors. Prints nothing;
+ * cw_temperature_compute never calls it. Errors: CW_ERR_NULL_POINTER
+ * (params, found), CW_ERR_STRUCT_SIZE, CW_ERR_BUFFER_TOO_SMALL (len <
+ * *found: *found is set, nothing else is written). */
+CW_API int cw_temperature_params_check(const cw_temperature_params* params, cw_check* out,
+                                       size_t len, size_t* found);
+
 /* ------------------------------------------------------------------ damage */
 
 /* Surface damage indices of a solved contact (any model, any grid;
@@ -171,5 +188,15 @@ CW_API int cw_damage_get_result(const cw_damage* damage, cw_damage_result* resul
 
 /* Detailed message of the last error on this handle, as cw_solver_last_error. */
 CW_API const char* cw_damage_last_error(const cw_damage* damage);
+
+/* Checks params as cw_temperature_params_check does (the same out, len and
+ * found): k_yield below 1e6 Pa (CW_CHECK_YIELD_STRESS: MPa typed as Pa?)
+ * and wlrm_onset, wlrm_peak, wlrm_zero in (0, 1) N
+ * (CW_CHECK_WLRM_THRESHOLD: kN typed as N?). k_yield = 0 (not set) is left
+ * to cw_damage_compute's error. Prints nothing; cw_damage_compute never
+ * calls it. Errors: CW_ERR_NULL_POINTER (params, found),
+ * CW_ERR_STRUCT_SIZE, CW_ERR_BUFFER_TOO_SMALL. */
+CW_API int cw_damage_params_check(const cw_damage_params* params, cw_check* out, size_t len,
+                                  size_t* found);
 
 #endif /* CREEPWORK_SURFACE_H */

@@ -133,16 +133,30 @@ void surface_bad_inputs_fail_cleanly(void**)
     }
 }
 
-// Valid but implausible values for steel are warned about, naming the
-// option and the unit most likely meant; the run goes on.
+// Valid but implausible values for steel are warned about with the
+// library's message (cw_temperature_params_check, cw_damage_params_check),
+// naming the option and the unit most likely meant; the run goes on. Just
+// inside the header's thresholds nothing is said.
 void surface_warns_about_implausible_units(void**)
 {
-    const Run r = cli_ok(with(kContact, {"--temperature", "--speed", "30", "--conductivity-1",
-                                         "0.05", "--heat-capacity-2", "45", "--k-yield", "300"}));
-    expect_contains(r.err, "--conductivity-1 = 0.05 W/(m K) is implausible for steel");
-    expect_contains(r.err, "--heat-capacity-2 = 45 J/(kg K) is implausible");
-    expect_contains(r.err, "--k-yield = 300 Pa is implausible");
+    const std::string implausible = " is implausible for a wheel-rail contact: ";
+    const Run r = cli_ok(with(kContact, {"--temperature", "--speed", "150.5", "--conductivity-1",
+                                         "0.05", "--heat-capacity-2", "45", "--density-1",
+                                         "25001", "--k-yield", "300"}));
+    expect_contains(r.err, "warning: --conductivity-1 = 0.05 W/(m K)" + implausible +
+                               "steel's conductivity is about 50 W/(m K) (W/(mm K) typed as "
+                               "W/(m K)?)");
+    expect_contains(r.err, "warning: --heat-capacity-2 = 45 J/kg/K" + implausible);
+    expect_contains(r.err, "warning: --density-1 = 25001 kg/m^3" + implausible);
+    expect_contains(r.err, "warning: --speed = 150.5 m/s" + implausible +
+                               "rail vehicles run below 150 m/s (km/h typed as m/s?)");
+    expect_contains(r.err, "warning: --k-yield = 300 Pa" + implausible);
     expect_lacks(r.err, "--conductivity-2");
+    const Run inside = cli_ok(with(kContact, {"--temperature", "--speed", "149.5",
+                                              "--conductivity-1", "1.01", "--heat-capacity-2",
+                                              "101", "--density-1", "24999", "--k-yield",
+                                              "1.01e6"}));
+    expect_lacks(inside.err, "implausible");
 }
 
 void surface_writes_pictures(void**)
