@@ -736,13 +736,13 @@ static mxArray* solve_many(const mxArray* params_in, const mxArray* grid_in, int
     for (size_t c = 0; c < count; ++c) {
         mxGetPr(codes)[c] = st[c];
         const char* text = "";
+        char typed[MESSAGE_LEN]; /* text points here until mxCreateString copies it */
         if (st[c] != CW_OK) {
             if (!one && cw_solver_create(&grid, &one, NULL, 0) != CW_OK) one = NULL;
             p[c].warm_start = 0;
             text = one && cw_solver_solve(one, &p[c], mode, NULL) == st[c]
                        ? cw_solver_last_error(one)
                        : cw_status_string(st[c]);
-            char typed[MESSAGE_LEN];
             snprintf(typed, sizeof typed, "%s", text);
             as_typed(params_in, typed, sizeof typed);
             text = typed;

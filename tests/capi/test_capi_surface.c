@@ -319,10 +319,12 @@ static void invalid_inputs(void** state)
     (void)state;
     cw_params p;
     cw_solver* s = solved(0, CW_GRID_KALKER_STRIPS, &p);
-    cw_temperature* t = NULL;
-    assert_status(cw_temperature_create(s, &t), CW_OK);
+    cw_temperature* first = NULL;
+    assert_status(cw_temperature_create(s, &first), CW_OK);
+    cw_temperature* t = first; /* a failed create sets *temperature to NULL */
     assert_status(cw_temperature_create(NULL, &t), CW_ERR_NULL_POINTER);
     assert_null(t);
+    cw_temperature_destroy(first);
     assert_status(cw_temperature_create(s, &t), CW_OK);
     assert_status(cw_temperature_create(s, NULL), CW_ERR_NULL_POINTER);
     cw_temperature_params tp;

@@ -106,5 +106,6 @@ program test_fortran_checks
    call w%check(checks)
    call check_int(size(checks), 0, 'wheel offset: nothing found')
    call w%destroy()
+   deallocate (checks) ! the main program's arrays are not freed at its end
    call test_summary('test_fortran_checks')
 end program test_fortran_checks
