@@ -437,6 +437,20 @@ CW_API int cw_solver_destroy(cw_solver* solver);
 /* Grid dimensions of the solver. Errors: CW_ERR_NULL_POINTER. */
 CW_API int cw_solver_grid_size(const cw_solver* solver, int* nx, int* ny);
 
+/* Makes one model's memory now, so that its solves allocate nothing
+ * afterwards. CW_MODEL_FASTSIM: nothing to do (made by create), but on
+ * CW_GRID_GAP its march and normal-method workspace.
+ * CW_MODEL_EXACT: influence tables, FFT plans and spectra, Krylov basis and
+ * every workspace of the grid and of its coarser levels (memory linear in
+ * nx*ny, doc/theory/exact.md); without prepare the first exact solve
+ * makes them. CW_MODEL_CALIBRATED: its FASTSIM march workspace (every
+ * grid). Idempotent. Errors: CW_ERR_NULL_POINTER,
+ * CW_ERR_UNKNOWN_OPTION (model), CW_ERR_INVALID_INPUT (CW_MODEL_EXACT on
+ * CW_GRID_KALKER_STRIPS; CW_MODEL_CALIBRATED on CW_GRID_GAP),
+ * CW_ERR_GRID_OUT_OF_RANGE (exact: nx or ny > CW_MAX_EXACT_CELLS),
+ * CW_ERR_OUT_OF_MEMORY. */
+CW_API int cw_solver_prepare(cw_solver* solver, int model);
+
 /* Solves one steady-rolling contact. mode: CW_SOLVE_FORCES or CW_SOLVE_FULL.
  * result may be NULL (read fields afterwards). Allocates nothing on success
  * (an error may allocate its message; the first CW_MODEL_EXACT solve makes
@@ -461,6 +475,63 @@ CW_API int cw_solver_grid_size(const cw_solver* solver, int* nx, int* ny);
  * the next exact solve starts cold. */
 CW_API int cw_solver_solve(cw_solver* solver, const cw_params* params, int mode,
                            cw_result* result);
+
+/* The 4 x 4 Jacobian of a solve for implicit integrators
+ * (doc/theory/jacobians.md; its cost: doc/performance.md), row-major:
+ * jacobian[4*r + c] = d(row r)/d(column c). */
+#define CW_JACOBIAN_LEN 16
+#define CW_JAC_FX 0      /* rows: Fx [N], Fy [N], Mz [N m], W_macro [J/m] */
+#define CW_JAC_FY 1
+#define CW_JAC_MZ 2
+#define CW_JAC_W_MACRO 3
+#define CW_JAC_XI_X 0    /* columns: xi_x [-], xi_y [-], phi [1/m], normal_force [N] */
+#define CW_JAC_XI_Y 1
+#define CW_JAC_PHI 2
+#define CW_JAC_N 3
+
+/* Solves as cw_solver_solve (same result, fields and errors; the totals are
+ * bitwise those of cw_solver_solve) and writes the derivatives of exactly
+ * the Fx, Fy, Mz, W_macro it reports, in the caller's frame and sign
+ * convention (any rolling_direction), with respect to the params fields
+ * xi_x, xi_y, phi and normal_force, in SI units: e.g. jacobian[4*CW_JAC_FX
+ * + CW_JAC_XI_X] = dFx/dxi_x [N], [4*CW_JAC_MZ + CW_JAC_PHI] = dMz/dphi
+ * [N m^2]. Held fixed: a, b, mu, G, nu, L1..L3 as given; N moves the
+ * pressure scale and so the traction bound (and, with
+ * flexibility_blending, the blended L1..L3).
+ *   CW_MODEL_FASTSIM  exact derivatives of the discrete march by forward
+ *                     mode in the same pass: a small constant times a
+ *                     CW_SOLVE_FORCES solve, linear in the elements (with
+ *                     CW_SOLVE_FULL the work pass comes on top).
+ *                     Every grid, pressure, spin_offset and
+ *                     flexibility_blending.
+ *   CW_MODEL_EXACT    derivatives of the converged discrete system (implicit
+ *                     function theorem, states fixed at the solution), three
+ *                     extra linear solves with the Newton-GMRES machinery,
+ *                     each to the solve's tolerance.
+ *   CW_MODEL_CALIBRATED  derivatives of its march by forward mode along the
+ *                     directions in which each input moves its setup (the
+ *                     table's knobs depend on the saturation level: those
+ *                     closed forms are differenced centrally, the march
+ *                     exactly; N by homogeneity): a small constant times a
+ *                     CW_SOLVE_FORCES solve, linear in the elements.
+ *                     Needs CW_FLEX_FROM_MATERIAL, as its solves.
+ * On CW_GRID_GAP (CW_MODEL_EXACT and CW_MODEL_FASTSIM) the gap is held
+ * and the normal_force column is d/dN along the solution, with the force
+ * or the approach prescribed: the normal method's exact dp/dN carried
+ * through the tangential problem (implicit function theorem, four linear
+ * solves; or forward mode through the march), the contact set, the
+ * patches and their flexibilities held as the solve found them
+ * (doc/theory/non-hertzian.md); an approach that gives no contact is
+ * CW_ERR_INVALID_INPUT naming approach.
+ * Where an element sits exactly on the traction bound the derivative is the
+ * one of the state the solve found (doc/theory/jacobians.md). Needs
+ * normal_force > 0 when mu > 0 (the forces are not differentiable in N at
+ * N = 0): CW_ERR_INVALID_INPUT. Allocates nothing (FASTSIM, calibrated;
+ * exact as cw_solver_solve). Errors: those of cw_solver_solve, and
+ * CW_ERR_NULL_POINTER (jacobian), CW_ERR_BUFFER_TOO_SMALL (jacobian_len <
+ * CW_JACOBIAN_LEN). On error nothing is written to jacobian or result. */
+CW_API int cw_solver_solve_jacobian(cw_solver* solver, const cw_params* params, int mode,
+                                    cw_result* result, double* jacobian, size_t jacobian_len);
 
 /* Copies the totals of the last successful solve. Errors: CW_ERR_NULL_POINTER,
  * CW_ERR_STRUCT_SIZE, CW_ERR_NO_SOLUTION. */
@@ -523,6 +594,41 @@ CW_API int cw_solver_get_patches(const cw_solver* solver, cw_patch* out, size_t 
  * static message. */
 CW_API const char* cw_solver_last_error(const cw_solver* solver);
 
+/* ------------------------------------------------------------------ batch */
+
+/* Many independent contacts on one grid (e.g. every wheel of a vehicle),
+ * in parallel with OpenMP when available. Results are bitwise identical to
+ * one-by-one cw_solver_solve calls, whatever the number of threads.
+ * CW_MODEL_EXACT contacts are solved cold (warm_start is ignored: which
+ * thread solved what before must not matter), so they equal one-by-one
+ * solves with warm_start = 0. */
+typedef struct cw_batch cw_batch;
+
+/* threads <= 0: use all available cores; at most CW_MAX_BATCH_THREADS (each
+ * thread owns a solver of the grid's size). All memory is allocated here.
+ * Errors: as cw_solver_create, and CW_ERR_INVALID_INPUT (threads). */
+CW_API int cw_batch_create(const cw_grid* grid, int threads, cw_batch** batch, char* message,
+                           size_t message_len);
+CW_API int cw_batch_destroy(cw_batch* batch); /* NULL: no-op */
+
+/* cw_solver_prepare for the solver of every thread of a batch. Errors: those
+ * of cw_solver_prepare. */
+CW_API int cw_batch_prepare(cw_batch* batch, int model);
+
+/* Solves count contacts. params and results are arrays whose element size is
+ * params[0].struct_size and results[0].struct_size (every element must carry
+ * the same struct_size), so older, smaller structs work. statuses (may be
+ * NULL) receives each contact's status. Returns CW_OK when all succeeded,
+ * otherwise the status of the first failing contact (its message names the
+ * index); results of failed contacts are left untouched.
+ * Errors: CW_ERR_NULL_POINTER, CW_ERR_STRUCT_SIZE, CW_ERR_UNKNOWN_OPTION, and
+ * per contact those of cw_solver_solve. */
+CW_API int cw_batch_solve(cw_batch* batch, size_t count, const cw_params* params, int mode,
+                          cw_result* results, int* statuses);
+
+/* Detailed message of the last error on this handle, as cw_solver_last_error. */
+CW_API const char* cw_batch_last_error(const cw_batch* batch);
+
 /* ------------------------------------------------------ work accumulator */
 
 /* Running totals for simulation loops (paper eqs. 35 and 37). The per-element
@@ -577,37 +683,6 @@ CW_API int cw_accumulator_get_strip_work(const cw_accumulator* accumulator, doub
 /* Detailed message of the last error on this handle, as cw_solver_last_error. */
 CW_API const char* cw_accumulator_last_error(const cw_accumulator* accumulator);
 
-/* ------------------------------------------------------------------ batch */
-
-/* Many independent contacts on one grid (e.g. every wheel of a vehicle),
- * in parallel with OpenMP when available. Results are bitwise identical to
- * one-by-one cw_solver_solve calls, whatever the number of threads.
- * CW_MODEL_EXACT contacts are solved cold (warm_start is ignored: which
- * thread solved what before must not matter), so they equal one-by-one
- * solves with warm_start = 0. */
-typedef struct cw_batch cw_batch;
-
-/* threads <= 0: use all available cores; at most CW_MAX_BATCH_THREADS (each
- * thread owns a solver of the grid's size). All memory is allocated here.
- * Errors: as cw_solver_create, and CW_ERR_INVALID_INPUT (threads). */
-CW_API int cw_batch_create(const cw_grid* grid, int threads, cw_batch** batch, char* message,
-                           size_t message_len);
-CW_API int cw_batch_destroy(cw_batch* batch); /* NULL: no-op */
-
-/* Solves count contacts. params and results are arrays whose element size is
- * params[0].struct_size and results[0].struct_size (every element must carry
- * the same struct_size), so older, smaller structs work. statuses (may be
- * NULL) receives each contact's status. Returns CW_OK when all succeeded,
- * otherwise the status of the first failing contact (its message names the
- * index); results of failed contacts are left untouched.
- * Errors: CW_ERR_NULL_POINTER, CW_ERR_STRUCT_SIZE, CW_ERR_UNKNOWN_OPTION, and
- * per contact those of cw_solver_solve. */
-CW_API int cw_batch_solve(cw_batch* batch, size_t count, const cw_params* params, int mode,
-                          cw_result* results, int* statuses);
-
-/* Detailed message of the last error on this handle, as cw_solver_last_error. */
-CW_API const char* cw_batch_last_error(const cw_batch* batch);
-
 /* ------------------------------------------- linear theory and Hertz helpers */
 
 /* Kalker's coefficients (Kalker 1990, Table E.3; interpolated as CONTACT
@@ -657,84 +732,6 @@ CW_API int cw_hertz_solve(double A, double B, double normal_force, double E_star
 CW_API int cw_fastsim_normalised(double ux, double uy, double fx, double fy, int mx, int my,
                                  double tol, double* tx, double* ty, char* message,
                                  size_t message_len);
-
-/* ----------------------------------------------------------- model memory */
-
-/* Makes one model's memory now, so that its solves allocate nothing
- * afterwards. CW_MODEL_FASTSIM: nothing to do (made by create), but on
- * CW_GRID_GAP its march and normal-method workspace.
- * CW_MODEL_EXACT: influence tables, FFT plans and spectra, Krylov basis and
- * every workspace of the grid and of its coarser levels (memory linear in
- * nx*ny, doc/theory/exact.md); without prepare the first exact solve
- * makes them. CW_MODEL_CALIBRATED: its FASTSIM march workspace (every
- * grid). Idempotent. Errors: CW_ERR_NULL_POINTER,
- * CW_ERR_UNKNOWN_OPTION (model), CW_ERR_INVALID_INPUT (CW_MODEL_EXACT on
- * CW_GRID_KALKER_STRIPS; CW_MODEL_CALIBRATED on CW_GRID_GAP),
- * CW_ERR_GRID_OUT_OF_RANGE (exact: nx or ny > CW_MAX_EXACT_CELLS),
- * CW_ERR_OUT_OF_MEMORY. */
-CW_API int cw_solver_prepare(cw_solver* solver, int model);
-
-/* cw_solver_prepare for the solver of every thread of a batch. */
-CW_API int cw_batch_prepare(cw_batch* batch, int model);
-
-/* -------------------------------------------------------------- Jacobians */
-
-/* The 4 x 4 Jacobian of a solve for implicit integrators
- * (doc/theory/jacobians.md; its cost: doc/performance.md), row-major:
- * jacobian[4*r + c] = d(row r)/d(column c). */
-#define CW_JACOBIAN_LEN 16
-#define CW_JAC_FX 0      /* rows: Fx [N], Fy [N], Mz [N m], W_macro [J/m] */
-#define CW_JAC_FY 1
-#define CW_JAC_MZ 2
-#define CW_JAC_W_MACRO 3
-#define CW_JAC_XI_X 0    /* columns: xi_x [-], xi_y [-], phi [1/m], normal_force [N] */
-#define CW_JAC_XI_Y 1
-#define CW_JAC_PHI 2
-#define CW_JAC_N 3
-
-/* Solves as cw_solver_solve (same result, fields and errors; the totals are
- * bitwise those of cw_solver_solve) and writes the derivatives of exactly
- * the Fx, Fy, Mz, W_macro it reports, in the caller's frame and sign
- * convention (any rolling_direction), with respect to the params fields
- * xi_x, xi_y, phi and normal_force, in SI units: e.g. jacobian[4*CW_JAC_FX
- * + CW_JAC_XI_X] = dFx/dxi_x [N], [4*CW_JAC_MZ + CW_JAC_PHI] = dMz/dphi
- * [N m^2]. Held fixed: a, b, mu, G, nu, L1..L3 as given; N moves the
- * pressure scale and so the traction bound (and, with
- * flexibility_blending, the blended L1..L3).
- *   CW_MODEL_FASTSIM  exact derivatives of the discrete march by forward
- *                     mode in the same pass: a small constant times a
- *                     CW_SOLVE_FORCES solve, linear in the elements (with
- *                     CW_SOLVE_FULL the work pass comes on top).
- *                     Every grid, pressure, spin_offset and
- *                     flexibility_blending.
- *   CW_MODEL_EXACT    derivatives of the converged discrete system (implicit
- *                     function theorem, states fixed at the solution), three
- *                     extra linear solves with the Newton-GMRES machinery,
- *                     each to the solve's tolerance.
- *   CW_MODEL_CALIBRATED  derivatives of its march by forward mode along the
- *                     directions in which each input moves its setup (the
- *                     table's knobs depend on the saturation level: those
- *                     closed forms are differenced centrally, the march
- *                     exactly; N by homogeneity): a small constant times a
- *                     CW_SOLVE_FORCES solve, linear in the elements.
- *                     Needs CW_FLEX_FROM_MATERIAL, as its solves.
- * On CW_GRID_GAP (CW_MODEL_EXACT and CW_MODEL_FASTSIM) the gap is held
- * and the normal_force column is d/dN along the solution, with the force
- * or the approach prescribed: the normal method's exact dp/dN carried
- * through the tangential problem (implicit function theorem, four linear
- * solves; or forward mode through the march), the contact set, the
- * patches and their flexibilities held as the solve found them
- * (doc/theory/non-hertzian.md); an approach that gives no contact is
- * CW_ERR_INVALID_INPUT naming approach.
- * Where an element sits exactly on the traction bound the derivative is the
- * one of the state the solve found (doc/theory/jacobians.md). Needs
- * normal_force > 0 when mu > 0 (the forces are not differentiable in N at
- * N = 0): CW_ERR_INVALID_INPUT. Allocates nothing (FASTSIM, calibrated;
- * exact as cw_solver_solve). Errors: those of cw_solver_solve, and
- * CW_ERR_NULL_POINTER (jacobian), CW_ERR_BUFFER_TOO_SMALL (jacobian_len <
- * CW_JACOBIAN_LEN). On error nothing is written to jacobian or result. */
-CW_API int cw_solver_solve_jacobian(cw_solver* solver, const cw_params* params, int mode,
-                                    cw_result* result, double* jacobian, size_t jacobian_len);
 
 /* Wear laws and wear on a profile grid; surface temperature and damage
  * indices; one wheel on one rail from the profiles; transient rolling: in
