@@ -28,6 +28,7 @@ namespace {
 std::vector<OptionSpec> transient_options()
 {
     return {{"steps", OptionKind::text, {}},
+            {"model", OptionKind::choice, {"exact", "fastsim"}},
             {"gap", OptionKind::text, {}},
             {"N", OptionKind::number, {}},
             {"approach", OptionKind::number, {}},
@@ -191,7 +192,7 @@ int command_transient(int argc, char** argv, int first)
     GapFile g = read_gap_file(o.text("gap", ""));
 
     cw_params p = library_default_params();
-    p.model = CW_MODEL_EXACT;
+    p.model = o.text("model", "exact") == "fastsim" ? CW_MODEL_FASTSIM : CW_MODEL_EXACT;
     p.gap = g.h.data();
     p.gap_len = g.h.size();
     if (o.has("approach")) {

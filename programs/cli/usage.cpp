@@ -641,6 +641,8 @@ options:
   --gap FILE          the contact's gap: header x_m,y_m,h_m (required)
   --N N               normal force [N], or
   --approach A        the approach [m] from the gap's datum
+  --model M           exact (default: Kalker's exact theory) or fastsim
+                      (FASTSIM's transient form, doc/theory/transient.md)
   --normal-method M   exact (default) or semi_hertz
   --G, --nu, --mu     shear modulus [Pa], Poisson's ratio, friction
                       (default steel 82e9, 0.28; mu 0.3)

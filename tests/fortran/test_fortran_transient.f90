@@ -11,7 +11,7 @@
 !   state     save after the shift, restore after more steps: the trial again
 !             gives the same bits; commit without a trial is CW_ERR_NO_SOLUTION
 !   errors    through stat/errmsg, naming the input: dq beyond dx, |Fx| >= mu N,
-!             the model, words of another handle, a field array of the wrong
+!             the calibrated model, words of another handle, a field array of the wrong
 !             shape, a handle never created; nothing written on error
 program test_fortran_transient
    use, intrinsic :: iso_c_binding, only: c_double, c_int, c_int64_t, c_loc, c_size_t
@@ -258,9 +258,9 @@ contains
       call check_int(stat, CW_ERR_INVALID_INPUT, 'a (ny, nx) array refused')
       call check_true(index(msg, '(33, 34)') > 0, 'the message names the shape: '//msg)
       call t%destroy()
-      p%model = CW_MODEL_FASTSIM
+      p%model = CW_MODEL_CALIBRATED
       call t%create(grid, p, stat=stat, errmsg=msg)
-      call check_int(stat, CW_ERR_INVALID_INPUT, 'model FASTSIM refused')
+      call check_int(stat, CW_ERR_INVALID_INPUT, 'model calibrated refused')
       call check_true(index(msg, 'model') > 0, 'the message names the model: '//msg)
       call check_true(.not. t%is_created(), 'no handle after a refused create')
       call never%step(s, stat=stat, errmsg=msg)
