@@ -220,8 +220,9 @@ static void errors_name_their_input(void** state)
 /* model = CW_MODEL_FASTSIM: FASTSIM's transient form through the same
  * handle. Its steady start equals the steady FASTSIM of a cw_solver on the
  * same gap grid (another implementation of the march) to 1e-12 mu N; a
- * step of dx at the steady creepages keeps the forces; Fx prescribed is met
- * and the shift, rewound and repeated, gives the same bits. */
+ * step of dx at the steady creepages keeps the forces; Fx prescribed is met,
+ * the shift, rewound and repeated, gives the same bits and is the
+ * simplified theory's closed form. */
 static void fastsim_model(void** state)
 {
     (void)state;
@@ -269,6 +270,22 @@ static void fastsim_model(void** state)
     assert_memory_equal(&a, &b, sizeof a);
     assert_close(a.Fx, f.Fx, 0.0, 1e-8 * mu_n);
     assert_true(a.n_adhesion > 0 && a.n_slip > 0);
+    /* The simplified theory's shift in closed form: on Hertz's pressure p0
+     * sqrt(1 - r^2/a^2) (a = 3.50 mm: N R (1 - nu) 3 / (4 G), R = 1 / (2 x
+     * 2.963)) a uniform stick traction t = s mu p0 carries F / (mu N) =
+     * 3/2 (s - s^3/3), and the shift is t Ls, Ls = pi r (2 - nu) / (4 G)
+     * with r = sqrt(area / pi) of the contact (theory/transient.md): the
+     * grid's within 2 %. */
+    const double R = 1.0 / (2.0 * 2.963), aH = cbrt(3.0 * 0.4705 * R * 0.72 / 4e6);
+    const double p0 = 3.0 * 0.4705 / (2.0 * M_PI * aH * aH);
+    double sl = 0.0, sh = 1.0; /* bisection: 3/2 (s - s^3/3) = 0.657 */
+    for (int k = 0; k < 60; ++k) {
+        const double m = 0.5 * (sl + sh);
+        if (1.5 * (m - m * m * m / 3.0) < 0.657) sl = m; else sh = m;
+    }
+    const double radius = sqrt(a.n_contact * 0.25e-3 * 0.25e-3 / M_PI);
+    const double shift = sl * 0.4013 * p0 * M_PI * radius * (2.0 - 0.28) / 4e6;
+    assert_close(a.xi_x, shift, 0.02, 0.0);
     cw_solver_destroy(solver);
     cw_transient_destroy(t);
 }
