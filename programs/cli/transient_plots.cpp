@@ -158,7 +158,9 @@ std::string step_commands(const std::string& dir, size_t k, const TransientRecor
     const cw_result shown = shown_totals(s); // rounding noise (Fy of a pure Fx) as 0
     std::ostringstream g;
     const std::vector<std::string> caption = {
-        "Transient rolling, step " + std::to_string(k + 1) + " of " + std::to_string(n_steps) +
+        std::string("Transient rolling (") +
+            (s.params.model == CW_MODEL_FASTSIM ? "FASTSIM" : "exact model") + "), step " +
+            std::to_string(k + 1) + " of " + std::to_string(n_steps) +
             " (line " + std::to_string(r.line) + "): " + step_words(r, u),
         "Fx = " + fmt(shown.Fx, 5) + " N (" + fmt(shown.Fx / mu_n, 4) + " μN), Fy = " +
             fmt(shown.Fy, 5) + " N (" + fmt(shown.Fy / mu_n, 4) + " μN) on the wheel; " +
@@ -227,7 +229,9 @@ std::string history_commands(const std::vector<TransientRecord>& steps, double m
         lateral = lateral || r.xi_y != 0.0;
     }
     std::vector<std::string> caption = {
-        "Transient rolling over " + std::to_string(steps.size()) + " steps, gap " +
+        std::string("Transient rolling (") +
+        (steps.front().fields.params.model == CW_MODEL_FASTSIM ? "FASTSIM" : "exact model") +
+        ") over " + std::to_string(steps.size()) + " steps, gap " +
         std::filesystem::path(gap_file).filename().string() + ", μN = " + fmt(mu_n, 5) + " N"};
     if (!shifts.empty()) {
         std::string s = "shifts (drawn as crosses at 0): ";
