@@ -1,7 +1,8 @@
 // creepwork_bench_transient: the cost of one transient rolling step
 // (core/transient) on CONTACT's example catt_to_cart: a sphere on a 34 x 33
 // gap grid, a Cattaneo shift to Fx = -0.657 mu N, then 56 steps of dq = dx
-// with Fx prescribed (the creepage found per step). Given CONTACT's program
+// with Fx prescribed (the creepage found per step), by the exact model and
+// by FASTSIM's transient form (transient_fastsim.hpp). Given CONTACT's program
 // and its examples folder, the same run times CONTACT on the first 57 cases
 // of its own input (the same problem, T = 2) as a child process. Not a
 // test: it prints a table. Times are per-thread CPU time
@@ -20,6 +21,7 @@
 #include <vector>
 
 #include "transient/transient_contact.hpp"
+#include "transient/transient_fastsim.hpp"
 #include "transient_cases.hpp"
 
 namespace {
@@ -66,6 +68,42 @@ double contact_seconds(const std::string& program, const std::string& examples, 
            sec(before.ru_stime);
 }
 
+struct Timing {
+    std::vector<double> cpu, wall, shift_cpu; // per rolling step, per shift [s]
+    long products = 0, newton = 0, force = 0; // of the first sweep's rolling steps
+};
+
+// sweeps x (the shift, then `steps` rolling steps of dx) on a transient
+// model (TransientContact or TransientFastsim).
+template <class Model>
+Timing time_model(Model& m, creepwork::TransientStepInput s, double dx, int sweeps, int steps)
+{
+    Timing t;
+    for (int k = 0; k < sweeps; ++k) {
+        m.start_zero();
+        s.dq = 0.0;
+        double c0 = seconds(CLOCK_THREAD_CPUTIME_ID);
+        m.step(s);
+        m.commit();
+        t.shift_cpu.push_back(seconds(CLOCK_THREAD_CPUTIME_ID) - c0);
+        s.dq = dx;
+        c0 = seconds(CLOCK_THREAD_CPUTIME_ID);
+        const double w0 = seconds(CLOCK_MONOTONIC);
+        for (int i = 0; i < steps; ++i) {
+            const creepwork::TransientStepResult& r = m.step(s);
+            m.commit();
+            if (k == 0) {
+                t.products += r.products;
+                t.newton += r.newton_steps;
+                t.force += r.force_iterations;
+            }
+        }
+        t.cpu.push_back((seconds(CLOCK_THREAD_CPUTIME_ID) - c0) / steps);
+        t.wall.push_back((seconds(CLOCK_MONOTONIC) - w0) / steps);
+    }
+    return t;
+}
+
 } // namespace
 
 int main(int argc, char** argv)
@@ -77,38 +115,24 @@ int main(int argc, char** argv)
     s.prescribe_fx = true;
     s.Fx = -0.657 * c.input.mu * c.input.normal_force;
     const int steps = 56;
-    std::vector<double> cpu, wall, shift_cpu;
-    long products = 0, newton = 0, force = 0;
-    for (int k = 0; k < sweeps; ++k) {
-        tc.start_zero();
-        s.dq = 0.0;
-        double c0 = seconds(CLOCK_THREAD_CPUTIME_ID);
-        tc.step(s);
-        tc.commit();
-        shift_cpu.push_back(seconds(CLOCK_THREAD_CPUTIME_ID) - c0);
-        s.dq = c.grid.dx;
-        c0 = seconds(CLOCK_THREAD_CPUTIME_ID);
-        const double w0 = seconds(CLOCK_MONOTONIC);
-        for (int i = 0; i < steps; ++i) {
-            const creepwork::TransientStepResult& r = tc.step(s);
-            tc.commit();
-            if (k == 0) {
-                products += r.products;
-                newton += r.newton_steps;
-                force += r.force_iterations;
-            }
-        }
-        cpu.push_back((seconds(CLOCK_THREAD_CPUTIME_ID) - c0) / steps);
-        wall.push_back((seconds(CLOCK_MONOTONIC) - w0) / steps);
-    }
+    const Timing e = time_model(tc, s, c.grid.dx, sweeps, steps);
+    cwtest::TransientCase cf = c;
+    cf.input.model = creepwork::ModelKind::fastsim;
+    creepwork::TransientFastsim tf(cf.grid, cf.input);
+    Timing f = time_model(tf, s, c.grid.dx, sweeps, steps);
     std::printf("Transient rolling, catt_to_cart (34 x 33, Fx prescribed), median of %d sweeps\n\n",
                 sweeps);
     std::printf("| | CPU [ms] | wall [ms] |\n|---|---|---|\n");
-    std::printf("| creepwork, one rolling step | %.2f | %.2f |\n", 1e3 * median(cpu),
-                1e3 * median(wall));
-    std::printf("| creepwork, the shift | %.2f | |\n", 1e3 * median(shift_cpu));
-    std::printf("\nper rolling step: %.1f FFT products, %.1f Newton steps, %.2f force iterations\n",
-                double(products) / steps, double(newton) / steps, double(force) / steps);
+    std::printf("| creepwork, one rolling step | %.2f | %.2f |\n", 1e3 * median(e.cpu),
+                1e3 * median(e.wall));
+    std::printf("| creepwork, the shift | %.2f | |\n", 1e3 * median(e.shift_cpu));
+    std::printf("| creepwork FASTSIM, one rolling step | %.4f | %.4f |\n", 1e3 * median(f.cpu),
+                1e3 * median(f.wall));
+    std::printf("| creepwork FASTSIM, the shift | %.4f | |\n", 1e3 * median(f.shift_cpu));
+    std::printf("\nper rolling step: %.1f FFT products, %.1f Newton steps, %.2f force iterations; "
+                "FASTSIM %.2f passes\n",
+                double(e.products) / steps, double(e.newton) / steps, double(e.force) / steps,
+                double(f.newton) / steps);
     if (argc > 3) {
         const double t = contact_seconds(argv[2], argv[3], 57);
         if (t < 0.0)

@@ -3,7 +3,7 @@
 
 #include <cmath>
 
-#include "transient/transient_contact.hpp"
+#include "transient/transient_model.hpp"
 
 struct cw_transient {
     explicit cw_transient(const cw::GridSpec& g, const cw::ContactInput& in)
@@ -11,7 +11,7 @@ struct cw_transient {
     {
     }
     cw::GridSpec grid;
-    cw::TransientContact contact;
+    cw::TransientModel contact; // the exact model's or FASTSIM's
     bool has_fields = false; // a step or steady start succeeded since the last start
     mutable std::string last_error; // the last call's message, const getters' included
 };
@@ -115,10 +115,10 @@ int cw_transient_create(const cw_grid* grid, const cw_params* params, cw_transie
                                            " is invalid for transient rolling: it runs on a "
                                            "gap grid (CW_GRID_GAP)");
         const cw::ContactInput in = to_input(params);
-        if (in.model != cw::ModelKind::exact)
+        if (in.model != cw::ModelKind::exact && in.model != cw::ModelKind::fastsim)
             fail(CW_ERR_INVALID_INPUT, "params->model = " + std::to_string(params->model) +
-                                           " is invalid for transient rolling: it is the exact "
-                                           "model's (CW_MODEL_EXACT)");
+                                           " is invalid for transient rolling: the exact model "
+                                           "(CW_MODEL_EXACT) or FASTSIM (CW_MODEL_FASTSIM)");
         *transient = new cw_transient(spec, in);
         return CW_OK;
     });
@@ -249,7 +249,7 @@ int cw_transient_get_field(const cw_transient* transient, int field, double* out
         require_fields(transient);
         const cw::GridSpec& g = transient->grid;
         const size_t n = static_cast<size_t>(g.nx) * g.ny;
-        const cw::TransientContact& c = transient->contact;
+        const cw::TransientModel& c = transient->contact;
         switch (field) {
         case CW_FIELD_X:
         case CW_FIELD_Y:

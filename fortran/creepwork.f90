@@ -8,7 +8,7 @@
 !   * the C structs as bind(C) derived types cw_grid, cw_params, cw_result,
 !     cw_accumulation, cw_wear_params, cw_wear_result, cw_wear_profile_totals,
 !     cw_temperature_params, cw_temperature_result, cw_damage_params,
-!     cw_damage_result (struct_size first; fill them with cw_grid_init etc.), and every status
+!     cw_damage_result, cw_transient_input, cw_transient_result (struct_size first; fill them with cw_grid_init etc.), and every status
 !     code and #define of the header as a named constant -- both generated
 !     from the header at build time (creepwork_types, in creepwork_c.f90);
 !   * free procedures (creepwork_functions.f90): versions, cw_status_string,
@@ -24,7 +24,10 @@
 !     cw_accumulator_type, cw_wear_type, cw_wear_profile_type,
 !     cw_temperature_type and cw_damage_type (creepwork_surface.f90, with
 !     the _init procedures of their structs), cw_wheelrail_type
-!     (creepwork_wheelrail.f90, with the _init procedures of its structs). Each has
+!     (creepwork_wheelrail.f90, with the _init procedures of its structs),
+!     cw_transient_type (creepwork_transient.f90: transient rolling, step /
+!     commit / rewind / save / restore, with the _init procedures of
+!     cw_transient_input and cw_transient_result). Each has
 !     create, an explicit, idempotent destroy, is_created, last_error and
 !     noun (its name in messages: 'solver', ...); the final procedure is only
 !     a safety net (gfortran 12 does not finalize reliably) and copying a
@@ -75,6 +78,8 @@ module creepwork
    use creepwork_wheelrail, only: cw_wheelrail_type, cw_wheelrail_params_init, &
                                   cw_wheelrail_motion_init, cw_wheelrail_totals_init, &
                                   cw_wheelrail_patch_init
+   use creepwork_transient, only: cw_transient_type, cw_transient_input_init, &
+                                  cw_transient_result_init
    implicit none
    public
 end module creepwork

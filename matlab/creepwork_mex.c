@@ -75,6 +75,8 @@ static const field_info tparams_fields[] = {CW_FIELDS_cw_temperature_params(FIEL
 static const field_info tresult_fields[] = {CW_FIELDS_cw_temperature_result(FIELD_ENTRY)};
 static const field_info dparams_fields[] = {CW_FIELDS_cw_damage_params(FIELD_ENTRY)};
 static const field_info dresult_fields[] = {CW_FIELDS_cw_damage_result(FIELD_ENTRY)};
+static const field_info tinput_fields[] = {CW_FIELDS_cw_transient_input(FIELD_ENTRY)};
+static const field_info tstep_fields[] = {CW_FIELDS_cw_transient_result(FIELD_ENTRY)};
 #undef FIELD_ENTRY
 #define COUNT(a) (sizeof(a) / sizeof((a)[0]))
 static const struct_info PARAMS = {"cw_params", params_fields, COUNT(params_fields)};
@@ -87,6 +89,8 @@ static const struct_info TRESULT = {"cw_temperature_result", tresult_fields,
                                     COUNT(tresult_fields)};
 static const struct_info DPARAMS = {"cw_damage_params", dparams_fields, COUNT(dparams_fields)};
 static const struct_info DRESULT = {"cw_damage_result", dresult_fields, COUNT(dresult_fields)};
+static const struct_info TINPUT = {"cw_transient_input", tinput_fields, COUNT(tinput_fields)};
+static const struct_info TSTEP = {"cw_transient_result", tstep_fields, COUNT(tstep_fields)};
 
 typedef struct {
     const char* struct_name;
@@ -439,11 +443,16 @@ static cw_solver* solvers[MAX_SOLVERS]; /* handles of creepwork.Solver objects *
 static cw_grid solver_grids[MAX_SOLVERS]; /* their grids, for the checks */
 static int directions[MAX_SOLVERS];     /* rolling_direction of each one's last solve */
 
+static cw_transient* transients[MAX_SOLVERS]; /* handles of creepwork.Transient objects */
+static int transient_nx[MAX_SOLVERS], transient_ny[MAX_SOLVERS];
+
 static void destroy_all(void)
 {
     for (int k = 0; k < MAX_SOLVERS; ++k) {
         cw_solver_destroy(solvers[k]);
         solvers[k] = NULL;
+        cw_transient_destroy(transients[k]);
+        transients[k] = NULL;
     }
 }
 
@@ -762,6 +771,99 @@ static mxArray* solve_many(const mxArray* params_in, const mxArray* grid_in, int
     return out;
 }
 
+/* ------------------------------------------------------ transient rolling */
+
+static int transient_id(const mxArray* v)
+{
+    const double id = (v && mxGetNumberOfElements(v) == 1 && mxIsNumeric(v)) ? mxGetScalar(v) : 0;
+    if (!(id >= 1 && id <= MAX_SOLVERS && id == floor(id)) || !transients[(int)id - 1])
+        FAIL("badHandle", "no such creepwork transient (closed, or not made by creepwork.Transient)");
+    return (int)id - 1;
+}
+
+/* A creepwork.Transient's handle from grid and params (a gap grid, the
+ * exact model): the normal problem is solved here. */
+static int transient_create(const mxArray* grid_in, const mxArray* params_in)
+{
+    int k = 0;
+    while (k < MAX_SOLVERS && transients[k]) ++k;
+    if (k == MAX_SOLVERS) FAIL("tooManySolvers", "more than %d transients open", MAX_SOLVERS);
+    const cw_grid grid = grid_of(grid_in);
+    const cw_params p = params_of(params_in, &grid);
+    char message[MESSAGE_LEN] = "";
+    const int status = cw_transient_create(&grid, &p, &transients[k], message, sizeof message);
+    if (status != CW_OK) {
+        as_typed(params_in, message, sizeof message);
+        fail_status(status, message);
+    }
+    transient_nx[k] = grid.nx;
+    transient_ny[k] = grid.ny;
+    return k;
+}
+
+/* The handle's status as an error with its message (an error does not return). */
+static void transient_check(int k, int status)
+{
+    if (status != CW_OK) fail_status(status, cw_transient_last_error(transients[k]));
+}
+
+/* One step (or, with steady, the steady start) of input_in; with commit the
+ * step becomes the state. Returns cw_transient_result's fields. */
+static mxArray* transient_step(int k, const mxArray* input_in, int steady, int commit)
+{
+    cw_transient_input in;
+    cw_transient_input_init(&in);
+    to_structs(&TINPUT, input_in, &in, sizeof in, 1);
+    cw_transient_result r;
+    cw_transient_result_init(&r);
+    transient_check(k, steady ? cw_transient_start_steady(transients[k], &in, &r)
+                              : cw_transient_step(transients[k], &in, &r));
+    if (commit) transient_check(k, cw_transient_commit(transients[k]));
+    return from_structs(&TSTEP, &r, sizeof r, 1, NULL, 0, NULL);
+}
+
+/* The fields of the last step as nx-by-ny matrices, and its element states. */
+static mxArray* transient_fields(int k)
+{
+    static const char* names[] = {"x", "y", "pz", "px", "py", "sx", "sy", "state"};
+    static const int ids[] = {CW_FIELD_X, CW_FIELD_Y, CW_FIELD_PZ, CW_FIELD_PX,
+                              CW_FIELD_PY, CW_FIELD_SX, CW_FIELD_SY};
+    const size_t nx = (size_t)transient_nx[k], ny = (size_t)transient_ny[k], n = nx * ny;
+    mxArray* out = mxCreateStructMatrix(1, 1, 8, names);
+    for (int f = 0; f < 7; ++f) {
+        mxArray* m = mxCreateDoubleMatrix(nx, ny, mxREAL);
+        mxSetField(out, 0, names[f], m);
+        transient_check(k, cw_transient_get_field(transients[k], ids[f], mxGetPr(m), n));
+    }
+    int* state = mxMalloc(n * sizeof *state);
+    const int status = cw_transient_get_state(transients[k], state, n);
+    mxArray* st = mxCreateDoubleMatrix(nx, ny, mxREAL);
+    for (size_t e = 0; status == CW_OK && e < n; ++e) mxGetPr(st)[e] = state[e];
+    mxFree(state);
+    mxSetField(out, 0, "state", st);
+    transient_check(k, status);
+    return out;
+}
+
+/* The committed state as a column of uint64 words. */
+static mxArray* transient_save(int k)
+{
+    size_t words = 0;
+    transient_check(k, cw_transient_state_size(transients[k], &words));
+    mxArray* out = mxCreateNumericMatrix(words, 1, mxUINT64_CLASS, mxREAL);
+    transient_check(k, cw_transient_save(transients[k], (uint64_t*)mxGetData(out), words));
+    return out;
+}
+
+static void transient_restore(int k, const mxArray* state)
+{
+    if (!state || !mxIsUint64(state) || mxIsComplex(state))
+        FAIL("badValue", "state must be the uint64 words of Transient.save (got %s)",
+             state ? mxGetClassName(state) : "nothing");
+    transient_check(k, cw_transient_restore(transients[k], (const uint64_t*)mxGetData(state),
+                                            mxGetNumberOfElements(state)));
+}
+
 /* ------------------------------------------------------------- helpers */
 
 static double scalar(const mxArray* v, const char* name)
@@ -870,6 +972,34 @@ void mexFunction(int nlhs, mxArray* plhs[], int nrhs, const mxArray* prhs[])
         const int k = solver_id(a1);
         cw_solver_destroy(solvers[k]);
         solvers[k] = NULL;
+    } else if (strcmp(command, "transient_create") == 0) { /* grid, params -> id, nx, ny */
+        const int k = transient_create(a1, a2);
+        plhs[0] = mxCreateDoubleScalar(k + 1);
+        if (nlhs > 1) plhs[1] = mxCreateDoubleScalar(transient_nx[k]);
+        if (nlhs > 2) plhs[2] = mxCreateDoubleScalar(transient_ny[k]);
+    } else if (strcmp(command, "transient_step") == 0) { /* id, input, commit */
+        plhs[0] = transient_step(transient_id(a1), a2, 0, flag(a3));
+    } else if (strcmp(command, "transient_start_steady") == 0) { /* id, input */
+        plhs[0] = transient_step(transient_id(a1), a2, 1, 0);
+    } else if (strcmp(command, "transient_start_zero") == 0) {
+        const int k = transient_id(a1);
+        transient_check(k, cw_transient_start_zero(transients[k]));
+    } else if (strcmp(command, "transient_commit") == 0) {
+        const int k = transient_id(a1);
+        transient_check(k, cw_transient_commit(transients[k]));
+    } else if (strcmp(command, "transient_rewind") == 0) {
+        const int k = transient_id(a1);
+        transient_check(k, cw_transient_rewind(transients[k]));
+    } else if (strcmp(command, "transient_save") == 0) {
+        plhs[0] = transient_save(transient_id(a1));
+    } else if (strcmp(command, "transient_restore") == 0) { /* id, words */
+        transient_restore(transient_id(a1), a2);
+    } else if (strcmp(command, "transient_fields") == 0) {
+        plhs[0] = transient_fields(transient_id(a1));
+    } else if (strcmp(command, "transient_destroy") == 0) {
+        const int k = transient_id(a1);
+        cw_transient_destroy(transients[k]);
+        transients[k] = NULL;
     } else if (strcmp(command, "model_grid") == 0) { /* model -> the grid it gets by default */
         cw_grid g;
         const field_info* model = find_field(&PARAMS, "model");

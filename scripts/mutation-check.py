@@ -455,6 +455,24 @@ TRANSIENT_MUTANTS = [
          tests=TRANSIENT, require=["test_transient_contact"]),
 ]
 MUTANTS += TRANSIENT_MUTANTS
+
+# FASTSIM's transient form (core/transient/transient_fastsim.cpp): caught by
+# the steady FASTSIM and the exact history through the core, and the closed
+# forms and the steady FASTSIM through the C ABI.
+TRANSIENT_FASTSIM = ["test_transient_fastsim", "test_capi_transient"]
+TRANSIENT_FASTSIM_MUTANTS = [
+    dict(id="transient-fastsim-transport", what="a FASTSIM step reads the state upstream the wrong way",
+         file="core/transient/transient_fastsim.cpp",
+         old="                src = (1.0 - d) * p0_[k] + d * (last ? zero : p0_[k + 1]);",
+         new="                src = d * p0_[k] + (1.0 - d) * (last ? zero : p0_[k + 1]);",
+         tests=TRANSIENT_FASTSIM, require=TRANSIENT_FASTSIM),
+    dict(id="transient-fastsim-shift-flexibility", what="a shift takes Kalker's rolling L1, not Ls",
+         file="core/transient/transient_fastsim.cpp",
+         old="            const double L1 = rolling ? P.L1 : P.Ls, L2 = rolling ? P.L2 : P.Ls;",
+         new="            const double L1 = P.L1, L2 = P.L2;",
+         tests=TRANSIENT_FASTSIM, require=TRANSIENT_FASTSIM),
+]
+MUTANTS += TRANSIENT_FASTSIM_MUTANTS
 # ------------------------------------------------------ end transient rolling
 
 

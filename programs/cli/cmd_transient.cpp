@@ -18,6 +18,8 @@
 #include "gap_input.hpp"
 #include "json.hpp"
 #include "options.hpp"
+#include "output_dir.hpp"
+#include "transient_plots.hpp"
 
 namespace cwcli {
 
@@ -26,6 +28,7 @@ namespace {
 std::vector<OptionSpec> transient_options()
 {
     return {{"steps", OptionKind::text, {}},
+            {"model", OptionKind::choice, {"exact", "fastsim"}},
             {"gap", OptionKind::text, {}},
             {"N", OptionKind::number, {}},
             {"approach", OptionKind::number, {}},
@@ -39,6 +42,9 @@ std::vector<OptionSpec> transient_options()
             {"prescribe", OptionKind::choice, {"creepages", "forces"}},
             {"start", OptionKind::choice, {"zero", "steady"}},
             {"format", OptionKind::choice, {"text", "json"}},
+            {"out", OptionKind::text, {}},
+            {"force", OptionKind::flag, {}},
+            {"no-plots", OptionKind::flag, {}},
             {"help", OptionKind::flag, {}}};
 }
 
@@ -179,12 +185,14 @@ int command_transient(int argc, char** argv, int first)
             throw usage_error(std::string("--") + req, "is required (see creepwork transient --help)");
     if (o.has("N") == o.has("approach"))
         throw usage_error("--N", "give the normal force --N or the approach --approach (one of them)");
+    const std::string out_dir = o.text("out", "");
+    if (!out_dir.empty()) check_output_target(out_dir, "--out", o.has("force"));
     const bool forces = o.text("prescribe", "creepages") == "forces";
     const std::vector<StepRow> rows = read_steps(o.text("steps", ""), forces);
     GapFile g = read_gap_file(o.text("gap", ""));
 
     cw_params p = library_default_params();
-    p.model = CW_MODEL_EXACT;
+    p.model = o.text("model", "exact") == "fastsim" ? CW_MODEL_FASTSIM : CW_MODEL_EXACT;
     p.gap = g.h.data();
     p.gap_len = g.h.size();
     if (o.has("approach")) {
@@ -218,6 +226,8 @@ int command_transient(int argc, char** argv, int first)
                             cw_transient_last_error(h.t));
     }
     const bool json = o.text("format", "text") == "json";
+    const bool plots = !out_dir.empty() && should_plot(o, static_cast<long>(g.grid.nx) * g.grid.ny);
+    std::vector<TransientRecord> records; // for --out
     // Printed when every step succeeded: a refusal prints only its line.
     std::ostringstream out;
     if (!json)
@@ -232,6 +242,16 @@ int command_transient(int argc, char** argv, int first)
             library_failure(s, steps + " line " + std::to_string(rows[k].line),
                             cw_transient_last_error(h.t));
         cw_transient_commit(h.t);
+        if (!out_dir.empty()) {
+            TransientRecord rec;
+            rec.line = rows[k].line;
+            rec.input = rows[k].input;
+            rec.result = r;
+            rec.drawn = plots && transient_step_drawn(k, rows.size());
+            // The first step's pressure gives mu N for the history.
+            if (rec.drawn || k == 0) rec.fields = transient_fields(h.t, g.grid, p, r);
+            records.push_back(std::move(rec));
+        }
         if (json) {
             out << "  " << step_json(r, rows[k].line).str() << (k + 1 < rows.size() ? ",\n" : "\n");
         } else {
@@ -243,6 +263,12 @@ int command_transient(int argc, char** argv, int first)
         }
     }
     if (json) out << "]\n";
+    if (!out_dir.empty()) {
+        StagedOutput dir(out_dir, "--out", o.has("force"));
+        write_transient_history(dir.path(), records);
+        if (plots) write_transient_pictures(dir.path(), records, p, o.text("gap", ""));
+        dir.commit();
+    }
     for (const std::string& w : warnings) std::cerr << "creepwork: warning: " << w << "\n";
     std::cout << out.str();
     return kExitOk;

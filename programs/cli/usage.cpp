@@ -641,6 +641,8 @@ options:
   --gap FILE          the contact's gap: header x_m,y_m,h_m (required)
   --N N               normal force [N], or
   --approach A        the approach [m] from the gap's datum
+  --model M           exact (default: Kalker's exact theory) or fastsim
+                      (FASTSIM's transient form, doc/theory/transient.md)
   --normal-method M   exact (default) or semi_hertz
   --G, --nu, --mu     shear modulus [Pa], Poisson's ratio, friction
                       (default steel 82e9, 0.28; mu 0.3)
@@ -653,6 +655,15 @@ options:
   --format F          text (default: one line per step) or json: a list
                       with one object per step: line xi_x xi_y phi Fx Fy Mz
                       n_contact n_adhesion n_slip W_step iterations
+  --out DIR           also write DIR/history.csv (every step's numbers,
+                      round-trip) and pictures: step_NNN.png per step (the
+                      slip/adhesion state, both tractions, p_x along the
+                      centre row with its bound +-mu p_z; at most 100 steps
+                      drawn, spread evenly, the last always) and
+                      history.png (the creepages and forces over the steps);
+                      their gnuplot scripts and data in DIR/gnuplot
+  --force             replace an earlier output of creepwork in DIR
+  --no-plots          data files only
 
 Outputs: xi_x, xi_y, phi as given or found; Fx, Fy, Mz on the wheel [N, N,
 N m], Mz about the gap file's origin; W_step the frictional work of the

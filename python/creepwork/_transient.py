@@ -35,7 +35,8 @@ class Transient(Handle):
 
     grid: a dict of cw_grid fields with kind "gap"; the keywords are
     solve()'s (gap, N or approach, normal_method, G, nu, mu, tolerance,
-    max_iterations, spin_offset); the model is the exact one. step() is a
+    max_iterations, spin_offset); model="fastsim" takes FASTSIM's transient
+    form instead of the exact theory (the default). step() is a
     trial: repeated after rewind() it gives the same bits; commit() makes
     it the state; save() and restore() give and take the state."""
 

@@ -80,3 +80,25 @@ def test_errors_name_their_input():
     with pytest.raises(creepwork.InvalidInputError, match="mu"):
         grid = {"kind": "gap", "nx": 34, "ny": 33, "x0": -4e-3, "y0": -4e-3, "dx": DX, "dy": DX}
         creepwork.Transient(grid, gap=np.ones((33, 34)), N=0.4705, G=1e6, nu=0.28, mu=0.0)
+
+
+def test_fastsim_model_steady_start_is_the_steady_fastsim():
+    """model="fastsim": FASTSIM's transient form. Its steady start is the
+    steady FASTSIM of creepwork.solve on the same gap grid (another
+    implementation of the march) to 1e-12 mu N; a step of dx keeps it."""
+    x = -4e-3 + DX * np.arange(34)
+    y = -4e-3 + DX * np.arange(33)
+    h = 2.963 * (x[None, :] ** 2 + y[:, None] ** 2)
+    grid = {"kind": "gap", "nx": 34, "ny": 33, "x0": -4e-3, "y0": -4e-3, "dx": DX, "dy": DX}
+    contact = dict(gap=h, N=0.4705, G=1e6, nu=0.28, mu=0.4013)
+    creep = dict(xi_x=1.5e-3, xi_y=-1e-3, phi=40.0)
+    mu_n = 0.4013 * 0.4705
+    steady = creepwork.solve(grid=grid, model="fastsim", warn=False, **contact, **creep)
+    with creepwork.Transient(grid, model="fastsim", **contact) as t:
+        s = t.start_steady(**creep)
+        for name in ("Fx", "Fy"):
+            assert abs(s[name] - getattr(steady, name)) <= 1e-12 * mu_n
+        r = t.step(dq=DX, **creep)
+        assert abs(r["Fx"] - s["Fx"]) <= 1e-12 * mu_n
+    with pytest.raises(creepwork.InvalidInputError, match="model"):
+        creepwork.Transient(grid, model="calibrated", **contact)

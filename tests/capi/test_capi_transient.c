@@ -139,7 +139,7 @@ static void errors_name_their_input(void** state)
     assert_int_equal(cw_transient_create(&uniform, &p, &t, message, sizeof message),
                      CW_ERR_INVALID_INPUT);
     assert_non_null(strstr(message, "grid->kind"));
-    p.model = CW_MODEL_FASTSIM;
+    p.model = CW_MODEL_CALIBRATED;
     assert_int_equal(cw_transient_create(&g, &p, &t, message, sizeof message),
                      CW_ERR_INVALID_INPUT);
     assert_non_null(strstr(message, "params->model"));
@@ -217,12 +217,86 @@ static void errors_name_their_input(void** state)
     assert_int_equal(cw_transient_result_init(NULL), CW_ERR_NULL_POINTER);
 }
 
+/* model = CW_MODEL_FASTSIM: FASTSIM's transient form through the same
+ * handle. Its steady start equals the steady FASTSIM of a cw_solver on the
+ * same gap grid (another implementation of the march) to 1e-12 mu N; a
+ * step of dx at the steady creepages keeps the forces; Fx prescribed is met,
+ * the shift, rewound and repeated, gives the same bits and is the
+ * simplified theory's closed form. */
+static void fastsim_model(void** state)
+{
+    (void)state;
+    double h[CW_CATT_NX * CW_CATT_NY];
+    cw_params p;
+    const cw_grid g = cw_test_catt_to_cart(h, &p);
+    p.model = CW_MODEL_FASTSIM;
+    const double mu_n = 0.4013 * 0.4705;
+    cw_transient* t = NULL;
+    char message[256] = "";
+    assert_int_equal(cw_transient_create(&g, &p, &t, message, sizeof message), CW_OK);
+    cw_transient_input s;
+    cw_transient_input_init(&s);
+    s.xi_x = 1.5e-3;
+    s.xi_y = -1e-3;
+    s.phi = 40.0;
+    cw_transient_result st, r;
+    cw_transient_result_init(&st);
+    cw_transient_result_init(&r);
+    assert_int_equal(cw_transient_start_steady(t, &s, &st), CW_OK);
+    cw_solver* solver = NULL;
+    assert_int_equal(cw_solver_create(&g, &solver, message, sizeof message), CW_OK);
+    cw_params q = p;
+    q.xi_x = s.xi_x;
+    q.xi_y = s.xi_y;
+    q.phi = s.phi;
+    cw_result steady;
+    cw_result_init(&steady);
+    assert_int_equal(cw_solver_solve(solver, &q, CW_SOLVE_FORCES, &steady), CW_OK);
+    assert_close(st.Fx, steady.Fx, 0.0, 1e-12 * mu_n);
+    assert_close(st.Fy, steady.Fy, 0.0, 1e-12 * mu_n);
+    assert_close(st.Mz, steady.Mz, 0.0, 1e-12 * mu_n * 3.5e-3);
+    s.dq = 0.25e-3;
+    assert_int_equal(cw_transient_step(t, &s, &r), CW_OK);
+    assert_close(r.Fx, st.Fx, 0.0, 1e-12 * mu_n);
+    /* The shift to Fx = -0.657 mu N from zero, twice. */
+    assert_int_equal(cw_transient_start_zero(t), CW_OK);
+    cw_transient_input f = force_step(0.0, -0.657);
+    cw_transient_result a, b;
+    cw_transient_result_init(&a);
+    cw_transient_result_init(&b);
+    assert_int_equal(cw_transient_step(t, &f, &a), CW_OK);
+    assert_int_equal(cw_transient_rewind(t), CW_OK);
+    assert_int_equal(cw_transient_step(t, &f, &b), CW_OK);
+    assert_memory_equal(&a, &b, sizeof a);
+    assert_close(a.Fx, f.Fx, 0.0, 1e-8 * mu_n);
+    assert_true(a.n_adhesion > 0 && a.n_slip > 0);
+    /* The simplified theory's shift in closed form: on Hertz's pressure p0
+     * sqrt(1 - r^2/a^2) (a = 3.50 mm: N R (1 - nu) 3 / (4 G), R = 1 / (2 x
+     * 2.963)) a uniform stick traction t = s mu p0 carries F / (mu N) =
+     * 3/2 (s - s^3/3), and the shift is t Ls, Ls = pi r (2 - nu) / (4 G)
+     * with r = sqrt(area / pi) of the contact (theory/transient.md): the
+     * grid's within 2 %. */
+    const double R = 1.0 / (2.0 * 2.963), aH = cbrt(3.0 * 0.4705 * R * 0.72 / 4e6);
+    const double p0 = 3.0 * 0.4705 / (2.0 * M_PI * aH * aH);
+    double sl = 0.0, sh = 1.0; /* bisection: 3/2 (s - s^3/3) = 0.657 */
+    for (int k = 0; k < 60; ++k) {
+        const double m = 0.5 * (sl + sh);
+        if (1.5 * (m - m * m * m / 3.0) < 0.657) sl = m; else sh = m;
+    }
+    const double radius = sqrt(a.n_contact * 0.25e-3 * 0.25e-3 / M_PI);
+    const double shift = sl * 0.4013 * p0 * M_PI * radius * (2.0 - 0.28) / 4e6;
+    assert_close(a.xi_x, shift, 0.02, 0.0);
+    cw_solver_destroy(solver);
+    cw_transient_destroy(t);
+}
+
 int main(int argc, char** argv)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(catt_to_cart_first_cases),
         cmocka_unit_test(trial_repeats_bitwise),
         cmocka_unit_test(errors_name_their_input),
+        cmocka_unit_test(fastsim_model),
     };
     return cw_run_tests(tests, argc > 1 ? argv[1] : NULL);
 }

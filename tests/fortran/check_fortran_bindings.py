@@ -33,15 +33,6 @@ NOT_WRAPPED = {
                                  "add_wear, and a borrowed solver would need a handle type that is never "
                                  "destroyed",
 }
-# Transient rolling is a C ABI door only (doc/theory/transient.md, "What it
-# does not do"): module creepwork has no type for its handle.
-NOT_WRAPPED.update({name: "transient rolling: a C ABI door only (no Fortran type for cw_transient)"
-                    for name in [
-                        "cw_transient_input_init", "cw_transient_result_init", "cw_transient_create",
-                        "cw_transient_destroy", "cw_transient_start_zero", "cw_transient_start_steady",
-                        "cw_transient_step", "cw_transient_commit", "cw_transient_rewind",
-                        "cw_transient_state_size", "cw_transient_save", "cw_transient_restore",
-                        "cw_transient_get_field", "cw_transient_get_state", "cw_transient_last_error"]})
 
 
 def count_args(args):

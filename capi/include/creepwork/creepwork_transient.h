@@ -65,7 +65,8 @@ CW_API int cw_transient_input_init(cw_transient_input* step);
 CW_API int cw_transient_result_init(cw_transient_result* result);
 
 /* Creates the transient contact of grid (CW_GRID_GAP) and params
- * (model CW_MODEL_EXACT; the gap, normal load and method, mu > 0, G, nu,
+ * (model CW_MODEL_EXACT, or CW_MODEL_FASTSIM for FASTSIM's transient form
+ * (doc/theory/transient.md); the gap, normal load and method, mu > 0, G, nu,
  * tolerance, max_iterations and spin_offset are read, the creepages and
  * rolling_direction are not): solves the normal problem and starts from
  * zero tractions. All memory is allocated here. message (may be NULL)

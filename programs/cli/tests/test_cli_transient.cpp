@@ -3,18 +3,22 @@
 // steps (CONTACT's catt_to_cart: the Cattaneo shift to Fx = -0.657 mu N and
 // rolling at that force; creepages prescribed too); a steady start; steps
 // files and options that are wrong fail cleanly (status 2, one stderr line
-// naming the file and line or the option).
+// naming the file and line or the option); --out writes history.csv with
+// the same bits and the pictures, whose data show Cattaneo's stick disc.
 //
 // usage: test_cli_transient <creepwork binary> <scratch dir> [cmocka filter]
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <string>
 #include <vector>
 
 #include <creepwork/creepwork.h>
 
 #include "cli_checks.hpp"
+#include "test_files.hpp"
 // Last: cmocka defines macros (fail, skip) that clash with the C++ library.
 #include "test_support.h"
 
@@ -168,6 +172,125 @@ void transient_bad_inputs_fail_cleanly(void**)
                            "no steps file");
 }
 
+
+// Rows of numbers of a CSV (header skipped) or whitespace data file (# skipped).
+std::vector<std::vector<double>> number_rows(const std::string& path, char separator)
+{
+    std::vector<std::vector<double>> rows;
+    std::ifstream f(path);
+    std::string line;
+    if (separator == ',') std::getline(f, line);
+    while (std::getline(f, line)) {
+        if (line.empty() || line[0] == '#') continue;
+        for (char& c : line)
+            if (c == separator) c = ' ';
+        std::istringstream ss(line);
+        std::vector<double> row;
+        for (double v; ss >> v;) row.push_back(v);
+        rows.push_back(row);
+    }
+    return rows;
+}
+
+std::string catt_to_cart_steps(const char* name, int n)
+{
+    std::string steps = "dq_m,Fx\n";
+    char line[96];
+    for (int k = 0; k < n; ++k) {
+        std::snprintf(line, sizeof line, "%.17g,%.17g\n", k == 0 ? 0.0 : kDx, kFx);
+        steps += line;
+    }
+    return cwtest::scratch_file(name, steps);
+}
+
+// --out: history.csv holds every step's numbers round-trip (the JSON's
+// bits), and catt_to_cart's creepage overshoot at step 15 (CONTACT's
+// 3.403E-03, the largest of steps 2 .. 15); --no-plots writes no picture.
+void transient_out_writes_history(void**)
+{
+    std::vector<double> h;
+    cw_grid g;
+    const std::string gap = write_gap(h, g);
+    const std::string file = catt_to_cart_steps("steps15.csv", 15);
+    const std::string out = cwtest::g_tools.scratch + "/history";
+    const std::vector<std::string> run = cwtest::with(
+        {"transient", "--steps", file, "--gap", gap, "--prescribe", "forces", "--format", "json"},
+        kContact);
+    const cwtest::Json j =
+        cwtest::parse_or_fail(cwtest::cli_ok(cwtest::with(run, {"--out", out, "--no-plots"})).out);
+    const std::vector<std::vector<double>> rows = number_rows(out + "/history.csv", ',');
+    assert_int_equal(rows.size(), 15);
+    // step,line,dq_m,xi_x,xi_y,phi,Fx_N,Fy_N,Mz_N_m,n_contact,n_adhesion,n_slip,W_step_J
+    const char* keys[] = {"xi_x", "xi_y", "phi", "Fx", "Fy", "Mz", "n_contact", "n_adhesion",
+                          "n_slip", "W_step"};
+    for (size_t k = 0; k < rows.size(); ++k) {
+        assert_int_equal(rows[k].size(), 13);
+        assert_true(rows[k][0] == double(k + 1));
+        assert_true(rows[k][1] == j.array[k].num("line"));
+        assert_true(rows[k][2] == (k == 0 ? 0.0 : kDx));
+        for (size_t c = 0; c < 10; ++c)
+            if (!(rows[k][3 + c] == j.array[k].num(keys[c])))
+                fail_msg("step %zu %s: %.17g in history.csv, %.17g in the JSON", k + 1, keys[c],
+                         rows[k][3 + c], j.array[k].num(keys[c]));
+    }
+    size_t peak = 1;
+    for (size_t k = 1; k < rows.size(); ++k)
+        if (rows[k][3] > rows[peak][3]) peak = k;
+    char printed[32];
+    std::snprintf(printed, sizeof printed, "%zu %.3E", peak + 1, rows[peak][3]);
+    assert_string_equal(printed, "15 3.403E-03");
+    assert_false(std::filesystem::exists(out + "/history.png"));
+    assert_false(std::filesystem::exists(out + "/gnuplot"));
+    cwtest::expect_refusal(cwtest::cli(cwtest::with(run, {"--out", out})), 2, "--out",
+                           "an earlier output without --force");
+}
+
+// --out's pictures: step_NNN.png per step and history.png. The data drawn
+// for the shift show Cattaneo's solution: along the centre row the
+// adhesion elements are one run about x = 0 whose half-width is the stick
+// radius a (1 - |Fx|/(mu N))^(1/3) = 0.700 x 3.5 mm (a the contact radius
+// of catt_to_cart, issue material) to within one element, and in every
+// slip element p_x = -mu p_z (Fx < 0) to 1e-9.
+void transient_out_draws_steps(void**)
+{
+    if (std::getenv("CW_TEST_NO_GNUPLOT")) cw_skip();
+    std::vector<double> h;
+    cw_grid g;
+    const std::string gap = write_gap(h, g);
+    const std::string file = catt_to_cart_steps("steps3.csv", 3);
+    const std::string out = cwtest::g_tools.scratch + "/pictures";
+    cwtest::cli_ok(cwtest::with(
+        {"transient", "--steps", file, "--gap", gap, "--prescribe", "forces", "--out", out},
+        kContact));
+    for (const char* png : {"step_001.png", "step_002.png", "step_003.png", "history.png"}) {
+        const std::string data = cwtest::slurp(out + "/" + png);
+        if (!(data.size() > 5000 && data.compare(0, 8, "\x89PNG\r\n\x1a\n") == 0))
+            fail_msg("%s is not a PNG picture (%zu bytes)", png, data.size());
+    }
+    assert_false(std::filesystem::exists(out + "/step_004.png"));
+    // x [mm], p_x, mu p_z, -mu p_z [N/mm^2], state along y = 0
+    const std::vector<std::vector<double>> row = number_rows(out + "/gnuplot/step_001_row.dat", ' ');
+    assert_int_equal(row.size(), kNx);
+    double lo = 1e9, hi = -1e9;
+    int slip = 0;
+    for (const std::vector<double>& e : row) {
+        if (e[4] == CW_STATE_ADHESION) {
+            lo = std::min(lo, e[0]);
+            hi = std::max(hi, e[0]);
+        }
+        if (e[4] == CW_STATE_SLIP) {
+            ++slip;
+            assert_close(e[1], e[3], 1e-9, 0.0);
+        }
+    }
+    for (const std::vector<double>& e : row) // one run: no slip between lo and hi
+        if (e[0] >= lo && e[0] <= hi) assert_int_equal(static_cast<int>(e[4]), CW_STATE_ADHESION);
+    const double c = 3.5 * std::cbrt(1.0 - 0.657);
+    assert_close(0.5 * (hi - lo) + 0.5 * kDx * 1e3, c, 0.0, kDx * 1e3);
+    assert_close(0.5 * (hi + lo), 0.0, 0.0, 1e-12);
+    assert_true(slip >= 4);
+}
+
 } // namespace
 
 int main(int argc, char** argv)
@@ -177,6 +300,8 @@ int main(int argc, char** argv)
         cmocka_unit_test(transient_json_matches_library),
         cmocka_unit_test(transient_steady_start_and_creepages),
         cmocka_unit_test(transient_bad_inputs_fail_cleanly),
+        cmocka_unit_test(transient_out_writes_history),
+        cmocka_unit_test(transient_out_draws_steps),
     };
     return cw_run_tests(tests, cwtest::g_tools.test);
 }

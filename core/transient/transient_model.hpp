@@ -1,0 +1,66 @@
+// The transient handle's model: the exact theory (transient_contact.hpp) or
+// FASTSIM's transient form (transient_fastsim.hpp), chosen by the contact's
+// model at construction. One interface for the C API: each call goes to the
+// model made.
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include "transient/transient_contact.hpp"
+#include "transient/transient_fastsim.hpp"
+
+namespace creepwork {
+
+class TransientModel {
+public:
+    // in.model exact or fastsim (another throws Error(invalid_input) naming model).
+    TransientModel(const GridSpec& grid, const ContactInput& in);
+
+    void start_zero() { exact_ ? exact_->start_zero() : fastsim_->start_zero(); }
+    const TransientStepResult& start_steady(const TransientStepInput& s)
+    {
+        return exact_ ? exact_->start_steady(s) : fastsim_->start_steady(s);
+    }
+    const TransientStepResult& step(const TransientStepInput& s)
+    {
+        return exact_ ? exact_->step(s) : fastsim_->step(s);
+    }
+    void commit() { exact_ ? exact_->commit() : fastsim_->commit(); }
+    void rewind() { exact_ ? exact_->rewind() : fastsim_->rewind(); }
+    std::vector<unsigned char> save() const { return exact_ ? exact_->save() : fastsim_->save(); }
+    void restore(const unsigned char* bytes, std::size_t n)
+    {
+        exact_ ? exact_->restore(bytes, n) : fastsim_->restore(bytes, n);
+    }
+    int nx() const { return exact_ ? exact_->nx() : fastsim_->nx(); }
+    int ny() const { return exact_ ? exact_->ny() : fastsim_->ny(); }
+    long steps_committed() const
+    {
+        return exact_ ? exact_->steps_committed() : fastsim_->steps_committed();
+    }
+    bool has_trial() const { return exact_ ? exact_->has_trial() : fastsim_->has_trial(); }
+    const TransientStepResult& last() const { return exact_ ? exact_->last() : fastsim_->last(); }
+    void copy_traction(double* px, double* py) const
+    {
+        exact_ ? exact_->copy_traction(px, py) : fastsim_->copy_traction(px, py);
+    }
+    void copy_slip(double* sx, double* sy) const
+    {
+        exact_ ? exact_->copy_slip(sx, sy) : fastsim_->copy_slip(sx, sy);
+    }
+    void copy_state(int* out) const
+    {
+        exact_ ? exact_->copy_state(out) : fastsim_->copy_state(out);
+    }
+    void copy_pressure(double* out) const
+    {
+        exact_ ? exact_->copy_pressure(out) : fastsim_->copy_pressure(out);
+    }
+
+private:
+    std::unique_ptr<TransientContact> exact_;
+    std::unique_ptr<TransientFastsim> fastsim_;
+};
+
+} // namespace creepwork

@@ -1,0 +1,254 @@
+! cw_transient_type: owns one cw_transient -- transient rolling in Kalker's
+! exact theory on a gap grid (header section "transient rolling",
+! doc/theory/transient.md). create solves the normal problem and starts from
+! zero tractions; step computes a trial from the committed state, commit
+! makes it the state, rewind drops it; save and restore give and take the
+! committed state as 64-bit words. The _init procedures of its structs are
+! here (the C ones fail only on a NULL pointer, which a Fortran argument
+! cannot be).
+module creepwork_transient
+   use, intrinsic :: iso_c_binding, only: c_int, c_int64_t, c_size_t, c_double, c_char, c_ptr, &
+                                          c_null_char
+   use creepwork_types
+   use creepwork_capi
+   use creepwork_handle
+   implicit none
+   private
+   public :: cw_transient_input_init, cw_transient_result_init
+
+   type, public, extends(cw_handle) :: cw_transient_type
+   contains
+      procedure :: create => transient_create
+      procedure :: start_zero => transient_start_zero
+      procedure :: start_steady => transient_start_steady
+      procedure :: step => transient_step
+      procedure :: commit => transient_commit
+      procedure :: rewind => transient_rewind
+      procedure :: state_size => transient_state_size
+      procedure :: save => transient_save
+      procedure :: restore => transient_restore
+      procedure, private :: transient_get_field_2d, transient_get_field_1d
+      generic :: get_field => transient_get_field_2d, transient_get_field_1d
+      procedure, private :: transient_get_state_2d, transient_get_state_1d
+      generic :: get_state => transient_get_state_2d, transient_get_state_1d
+      procedure, nopass :: noun => transient_noun
+   end type cw_transient_type
+
+contains
+
+   subroutine cw_transient_input_init(step)
+      type(cw_transient_input), intent(out) :: step
+      integer(c_int) :: status
+      status = capi_transient_input_init(step)
+   end subroutine cw_transient_input_init
+
+   subroutine cw_transient_result_init(result)
+      type(cw_transient_result), intent(out) :: result
+      integer(c_int) :: status
+      status = capi_transient_result_init(result)
+   end subroutine cw_transient_result_init
+
+   function transient_noun() result(s)
+      character(len=noun_length) :: s
+      s = 'transient'
+   end function transient_noun
+
+   ! Creates the transient contact of grid (CW_GRID_GAP) and params (model
+   ! CW_MODEL_EXACT, p%gap = c_loc(h) with h(nx, ny)), destroying a previous
+   ! one: solves the normal problem, starts from zero tractions.
+   subroutine transient_create(self, grid, params, stat, errmsg)
+      class(cw_transient_type), intent(inout) :: self
+      type(cw_grid), intent(in) :: grid
+      type(cw_params), intent(in) :: params
+      integer, intent(out), optional :: stat
+      character(len=:), allocatable, intent(out), optional :: errmsg
+      character(kind=c_char) :: buffer(message_capacity)
+      type(c_ptr) :: handle
+      integer(c_int) :: status
+      type(outcome) :: o
+      call self%destroy()
+      buffer(1) = c_null_char
+      status = capi_transient_create(grid, params, handle, buffer, size(buffer, kind=c_size_t))
+      if (status == CW_OK) call adopt(self, handle, capi_transient_destroy, &
+                                      capi_transient_last_error, int(grid%nx), int(grid%ny))
+      o = buffer_outcome(status, buffer)
+      if (present(errmsg)) call set_errmsg(o, errmsg)
+      call deliver(o, stat)
+   end subroutine transient_create
+
+   ! Starts from zero tractions (no committed step).
+   subroutine transient_start_zero(self, stat, errmsg)
+      class(cw_transient_type), intent(inout) :: self
+      integer, intent(out), optional :: stat
+      character(len=:), allocatable, intent(out), optional :: errmsg
+      type(outcome) :: o
+      o = created(self)
+      if (o%status == CW_OK) o = status_outcome(self, capi_transient_start_zero(handle_of(self)))
+      if (present(errmsg)) call set_errmsg(o, errmsg)
+      call deliver(o, stat)
+   end subroutine transient_start_zero
+
+   ! Starts from the steady-rolling solution of step's creepages or forces
+   ! (step%dq is not read); result (optional) receives its totals.
+   subroutine transient_start_steady(self, step, result, stat, errmsg)
+      class(cw_transient_type), intent(inout) :: self
+      type(cw_transient_input), intent(in) :: step
+      type(cw_transient_result), intent(inout), optional :: result
+      integer, intent(out), optional :: stat
+      character(len=:), allocatable, intent(out), optional :: errmsg
+      type(cw_transient_result) :: r
+      type(outcome) :: o
+      o = created(self)
+      if (o%status == CW_OK) then
+         call cw_transient_result_init(r)
+         o = status_outcome(self, capi_transient_start_steady(handle_of(self), step, r))
+         if (o%status == CW_OK .and. present(result)) result = r
+      end if
+      if (present(errmsg)) call set_errmsg(o, errmsg)
+      call deliver(o, stat)
+   end subroutine transient_start_steady
+
+   ! One step from the committed state (a trial): repeated after rewind it
+   ! gives the same bits. result (optional) receives the step's totals.
+   subroutine transient_step(self, step, result, stat, errmsg)
+      class(cw_transient_type), intent(inout) :: self
+      type(cw_transient_input), intent(in) :: step
+      type(cw_transient_result), intent(inout), optional :: result
+      integer, intent(out), optional :: stat
+      character(len=:), allocatable, intent(out), optional :: errmsg
+      type(cw_transient_result) :: r
+      type(outcome) :: o
+      o = created(self)
+      if (o%status == CW_OK) then
+         call cw_transient_result_init(r)
+         o = status_outcome(self, capi_transient_step(handle_of(self), step, r))
+         if (o%status == CW_OK .and. present(result)) result = r
+      end if
+      if (present(errmsg)) call set_errmsg(o, errmsg)
+      call deliver(o, stat)
+   end subroutine transient_step
+
+   ! Makes the last trial the committed state (CW_ERR_NO_SOLUTION without one).
+   subroutine transient_commit(self, stat, errmsg)
+      class(cw_transient_type), intent(inout) :: self
+      integer, intent(out), optional :: stat
+      character(len=:), allocatable, intent(out), optional :: errmsg
+      type(outcome) :: o
+      o = created(self)
+      if (o%status == CW_OK) o = status_outcome(self, capi_transient_commit(handle_of(self)))
+      if (present(errmsg)) call set_errmsg(o, errmsg)
+      call deliver(o, stat)
+   end subroutine transient_commit
+
+   ! Drops the last trial; the committed state stays.
+   subroutine transient_rewind(self, stat, errmsg)
+      class(cw_transient_type), intent(inout) :: self
+      integer, intent(out), optional :: stat
+      character(len=:), allocatable, intent(out), optional :: errmsg
+      type(outcome) :: o
+      o = created(self)
+      if (o%status == CW_OK) o = status_outcome(self, capi_transient_rewind(handle_of(self)))
+      if (present(errmsg)) call set_errmsg(o, errmsg)
+      call deliver(o, stat)
+   end subroutine transient_rewind
+
+   ! The length of a saved state in 64-bit words (0 before create).
+   integer function transient_state_size(self)
+      class(cw_transient_type), intent(in) :: self
+      integer(c_size_t) :: words
+      integer(c_int) :: status
+      words = 0
+      transient_state_size = 0
+      if (.not. self%is_created()) return
+      status = capi_transient_state_size(handle_of(self), words)
+      if (status == CW_OK) transient_state_size = int(words)
+   end function transient_state_size
+
+   ! The committed state into state(1:state_size()) (the words are
+   ! uint64_t in C, seen here as integer(c_int64_t): keep them as they are).
+   subroutine transient_save(self, state, stat, errmsg)
+      class(cw_transient_type), intent(in) :: self
+      integer(c_int64_t), intent(inout), contiguous :: state(:)
+      integer, intent(out), optional :: stat
+      character(len=:), allocatable, intent(out), optional :: errmsg
+      type(outcome) :: o
+      o = created(self)
+      if (o%status == CW_OK) o = status_outcome(self, capi_transient_save( &
+                                 handle_of(self), state, size(state, kind=c_size_t)))
+      if (present(errmsg)) call set_errmsg(o, errmsg)
+      call deliver(o, stat)
+   end subroutine transient_save
+
+   ! Makes a saved state (save's words, all of them) the committed state
+   ! and drops any trial.
+   subroutine transient_restore(self, state, stat, errmsg)
+      class(cw_transient_type), intent(inout) :: self
+      integer(c_int64_t), intent(in), contiguous :: state(:)
+      integer, intent(out), optional :: stat
+      character(len=:), allocatable, intent(out), optional :: errmsg
+      type(outcome) :: o
+      o = created(self)
+      if (o%status == CW_OK) o = status_outcome(self, capi_transient_restore( &
+                                 handle_of(self), state, size(state, kind=c_size_t)))
+      if (present(errmsg)) call set_errmsg(o, errmsg)
+      call deliver(o, stat)
+   end subroutine transient_restore
+
+   ! A field of the last step (CW_FIELD_X, _Y, _PZ, _PX, _PY, _SX, _SY; sx,
+   ! sy the slip of the step [m]) into out(nx, ny).
+   subroutine transient_get_field_2d(self, field, out, stat, errmsg)
+      class(cw_transient_type), intent(in) :: self
+      integer, intent(in) :: field
+      real(c_double), intent(inout), contiguous :: out(:, :)
+      integer, intent(out), optional :: stat
+      character(len=:), allocatable, intent(out), optional :: errmsg
+      type(outcome) :: o
+      o = created_map(self, shape(out))
+      if (o%status == CW_OK) o = status_outcome(self, capi_transient_get_field( &
+                                 handle_of(self), int(field, c_int), out, size(out, kind=c_size_t)))
+      if (present(errmsg)) call set_errmsg(o, errmsg)
+      call deliver(o, stat)
+   end subroutine transient_get_field_2d
+
+   subroutine transient_get_field_1d(self, field, out, stat, errmsg)
+      class(cw_transient_type), intent(in) :: self
+      integer, intent(in) :: field
+      real(c_double), intent(inout), contiguous :: out(:)
+      integer, intent(out), optional :: stat
+      character(len=:), allocatable, intent(out), optional :: errmsg
+      type(outcome) :: o
+      o = created(self)
+      if (o%status == CW_OK) o = status_outcome(self, capi_transient_get_field( &
+                                 handle_of(self), int(field, c_int), out, size(out, kind=c_size_t)))
+      if (present(errmsg)) call set_errmsg(o, errmsg)
+      call deliver(o, stat)
+   end subroutine transient_get_field_1d
+
+   ! The element states of the last step (CW_STATE_*) into out(nx, ny).
+   subroutine transient_get_state_2d(self, out, stat, errmsg)
+      class(cw_transient_type), intent(in) :: self
+      integer(c_int), intent(inout), contiguous :: out(:, :)
+      integer, intent(out), optional :: stat
+      character(len=:), allocatable, intent(out), optional :: errmsg
+      type(outcome) :: o
+      o = created_map(self, shape(out))
+      if (o%status == CW_OK) o = status_outcome(self, capi_transient_get_state( &
+                                 handle_of(self), out, size(out, kind=c_size_t)))
+      if (present(errmsg)) call set_errmsg(o, errmsg)
+      call deliver(o, stat)
+   end subroutine transient_get_state_2d
+
+   subroutine transient_get_state_1d(self, out, stat, errmsg)
+      class(cw_transient_type), intent(in) :: self
+      integer(c_int), intent(inout), contiguous :: out(:)
+      integer, intent(out), optional :: stat
+      character(len=:), allocatable, intent(out), optional :: errmsg
+      type(outcome) :: o
+      o = created(self)
+      if (o%status == CW_OK) o = status_outcome(self, capi_transient_get_state( &
+                                 handle_of(self), out, size(out, kind=c_size_t)))
+      if (present(errmsg)) call set_errmsg(o, errmsg)
+      call deliver(o, stat)
+   end subroutine transient_get_state_1d
+
+end module creepwork_transient
