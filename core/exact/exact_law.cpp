@@ -36,14 +36,16 @@ void ExactLaw::range(const SteadyRolling& fine, TangentialInfo& info) const
     const std::vector<signed char>& state = fine.state();
     const std::vector<ElementSlip>& slip = fine.element_slip();
     if (slip.size() != state.size()) return;
-    bool any = false;
+    long slipping = 0, steps = 0;
     for (size_t k = 0; k < state.size(); ++k) {
         if (state[k] != 2) continue;
         const double mu = mu0 * slip[k].m;
-        info.mu_min = any ? std::min(info.mu_min, mu) : mu;
-        info.mu_max = any ? std::max(info.mu_max, mu) : mu;
-        any = true;
+        info.mu_min = slipping ? std::min(info.mu_min, mu) : mu;
+        info.mu_max = slipping ? std::max(info.mu_max, mu) : mu;
+        ++slipping;
+        steps += slip[k].iterations;
     }
+    info.friction_steps_per_element = slipping ? double(steps) / double(slipping) : 0.0;
 }
 
 } // namespace creepwork

@@ -37,7 +37,8 @@ public:
         for (auto& L : levels) L->tangential.set_law(active_ ? &local : nullptr);
     }
     // Under a law, into info: the range of mu over the fine level's slipping
-    // elements (mu(0) when none slips) and the local Newton steps of the
+    // elements (mu(0) when none slips), their mean local Newton steps in the
+    // final sweep, and the local Newton steps of the
     // levels solved (the first n_levels unless the solve was warm and not
     // retried: the finest alone).
     template <class Level>
