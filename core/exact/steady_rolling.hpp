@@ -70,7 +70,6 @@ public:
     // the Newton system: the local Jacobians hold the law's slope. The first
     // call with a law allocates its per-element record.
     void set_law(const LocalLaw* law);
-    bool has_law() const { return law_active_; }
     // Under a law, of the last sweep: each element's record (m, sources;
     // m = 1 outside slip) and the scalar Newton steps of every sweep since
     // the last solve() began.
