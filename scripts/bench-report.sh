@@ -19,6 +19,7 @@
 #   nonhertz       creepwork_bench_nonhertz          CONTACT beside it (needs CONTACT)
 #   wheelrail      creepwork_bench_wheelrail 200     CONTACT beside it (needs CONTACT)
 #   transient      creepwork_bench_transient 20      CONTACT beside it (needs CONTACT)
+#   friction-exact creepwork_bench_friction_exact 5  CONTACT beside it (needs CONTACT)
 #   legacy         creepwork_bench_legacy
 #   python         python/bench/bench_python.py      the package against the C batch
 #   campaign       bench/campaign/bench_campaign.sh  ranks x threads (needs MPI)
@@ -48,7 +49,7 @@
 #            (numbers not for the page: the stamp says --quick)
 set -euo pipefail
 source_dir=$(cd "$(dirname "$0")/.." && pwd)
-all_sections=(fastsim exact jacobian wear temperature calibrated nonhertz wheelrail transient legacy python campaign campaign-wear)
+all_sections=(fastsim exact jacobian wear temperature calibrated nonhertz wheelrail transient friction-exact legacy python campaign campaign-wear)
 usage() { sed -n '/^# usage:/,/^set -euo/p' "$0" | sed '$d; s/^# \{0,1\}//' >&2; exit 2; }
 build="" update="" only="" quick=0 allow_dirty=0 allow_load=0 wait_max=300 list=0
 while [ $# -gt 0 ]; do
@@ -144,6 +145,7 @@ needs() {
     nonhertz) programs=(creepwork_bench_nonhertz) ;;
     wheelrail) programs=(creepwork_bench_wheelrail) ;;
     transient) programs=(creepwork_bench_transient) ;;
+    friction-exact) programs=(creepwork_bench_friction_exact) ;;
     legacy) programs=(creepwork_bench_legacy) ;;
     python) programs=(creepwork_bench_python_batch) ;;
     campaign | campaign-wear) programs=(creepwork creepwork-campaign) ;;
@@ -153,7 +155,7 @@ needs() {
     [ -x "$bin/$p" ] || { echo "$bin/$p is not built"; return; }
   done
   case "$1" in
-    nonhertz | wheelrail | transient)
+    nonhertz | wheelrail | transient | friction-exact)
       if [ -z "$contact_dir" ] || [ ! -x "$contact_dir/bin/contact" ] || [ ! -d "$contact_dir/CONTACT/examples" ]; then
         echo "CONTACT's columns need a CONTACT build: configure with -DCREEPWORK_CONTACT_DIR=<dir>"
         return
@@ -169,7 +171,7 @@ stamp_extra() {
   case "$1" in
     python) printf '; Python %s, numpy %s' "$("$python" -c 'import platform; print(platform.python_version())')" \
               "$("$python" -c 'import numpy; print(numpy.__version__)')" ;;
-    nonhertz | wheelrail | transient) printf '; CONTACT built in %s' "$contact_dir" ;;
+    nonhertz | wheelrail | transient | friction-exact) printf '; CONTACT built in %s' "$contact_dir" ;;
     campaign | campaign-wear) printf '; %s' "$("${MPIRUN:-mpirun}" --version 2>/dev/null | head -n 1)" ;;
   esac
 }
@@ -190,6 +192,9 @@ run_section() {
     transient)
       (cd "$work" && "$bin/creepwork_bench_transient" "$([ $quick -eq 1 ] && echo 3 || echo 20)" \
         "$contact_dir/bin/contact" "$contact_dir/CONTACT/examples") ;;
+    friction-exact)
+      (cd "$work" && "$bin/creepwork_bench_friction_exact" "$([ $quick -eq 1 ] && echo 1 || echo 5)" \
+        "$contact_dir/bin/contact") ;;
     legacy) "$bin/creepwork_bench_legacy" ;;
     python)
       PYTHONPATH="$build/python" PYTHONDONTWRITEBYTECODE=1 "$python" "$source_dir/python/bench/bench_python.py" \

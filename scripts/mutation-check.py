@@ -843,6 +843,26 @@ MUTANTS += [
          new="    g.k = sr.k0 * ((1.0 - sr.alpha_inf) + sr.alpha_inf / (1.0 + sr.beta * g.epsilon));",
          tests=FRICTION),
 ]
+# The exact models under a law of the slip speed (core/exact/local_friction,
+# exact_law, steady_rolling's sources): CONTACT's rows with the exponential
+# law and the N column's scaling identity in V (test_core_exact_law), central
+# differences of the solver and the gap grid's path (the _jacobian test).
+EXACT_LAW = ["test_core_exact_law", "test_core_exact_law_jacobian"]
+MUTANTS += [
+    dict(id="exact-law-local-slope", what="the local Jacobian under a law drops the law's slope",
+         file="core/exact/local_friction.cpp",
+         old="    const double m11 = f * (1.0 - ex * ex) + dh * ex * ex;",
+         new="    const double m11 = f * (1.0 - ex * ex);", tests=EXACT_LAW, require=EXACT_LAW),
+    dict(id="exact-law-speed-source", what="the slip speed's source misses sigma (dh/dsigma, "
+         "not dh/dln sigma)", file="core/exact/local_friction.cpp",
+         old="    out.speed_source = sigma * dh;", new="    out.speed_source = dh;",
+         tests=EXACT_LAW, require=EXACT_LAW),
+    dict(id="exact-law-slip-unit", what="the law's argument the normalised slip times V, without "
+         "the slip's unit", file="core/exact/exact_law.hpp",
+         old="        const LocalLaw local{law_, law_.coefficient(0.0), V_ * slip_scale};",
+         new="        const LocalLaw local{law_, law_.coefficient(0.0), V_};",
+         tests=EXACT_LAW, require=EXACT_LAW),
+]
 # -------------------------------------------------------------- end friction
 
 def run(cmd, cwd=None, quiet=True):

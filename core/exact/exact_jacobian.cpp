@@ -10,7 +10,9 @@
 // on N (a, b fixed), tractions scale with mu p0 and the rigid slip with
 // mu p0 / G, so the forces are homogeneous of degree 1 in (N, xi_x, xi_y,
 // phi) and dF/dN = (F - xi_x dF/dxi_x - xi_y dF/dxi_y - phi dF/dphi) / N
-// (Euler), exactly for the discrete system.
+// (Euler), exactly for the discrete system. Under a law of the slip speed
+// the law's argument kappa sigma (kappa = V mu(0) p0 / G, proportional to
+// N) adds the derivative by ln kappa (SteadyRolling::tangent_speed) over N.
 
 #include "contact/jacobian_load.hpp"
 #include "exact/exact_model.hpp"
@@ -20,7 +22,7 @@ SolveTotals ExactModel::solve_jacobian(const ContactInput& in, SolveMode mode, J
 {
     const SolveTotals t = solve(in, mode);
     Jacobian out;
-    if (in.mu == 0.0) { // no traction whatever the inputs
+    if (law_.coefficient(in) == 0.0) { // no traction whatever the inputs
         J = out;
         return t;
     }
@@ -53,12 +55,25 @@ SolveTotals ExactModel::solve_jacobian(const ContactInput& in, SolveMode mode, J
     const double frame[3] = {d, 1.0, d};
     const double F[3] = {t.Fx, t.Fy, t.Mz};
     const double inputs[3] = {in.xi_x, in.xi_y, in.phi};
+    // Under a law the slip speed per unit of normalised slip, kappa =
+    // V mu(0) p0 / G, grows with N as well: dF/dN gains T area dS/dln kappa / N.
+    double dS_speed[3] = {};
+    if (law_.active()) {
+        const TractionMoments m = traction_moments(
+            fine.tangential.tangent_speed(fine.conv, tolerance, kMaxJacobianIterations), nx_, ny_,
+            [&](int i) { return fine.geom.X(i) * s.dx; },
+            [&](int j) { return fine.geom.Y(j) * s.dx; });
+        dS_speed[0] = m.x;
+        dS_speed[1] = m.y;
+        dS_speed[2] = m.z;
+    }
     for (int r = 0; r < 3; ++r) {
         double euler = F[r];
         for (int c = 0; c < 3; ++c) {
             out.d[r][c] = frame[r] * T * area * dS[r][c] * dc[c];
             euler -= inputs[c] * out.d[r][c];
         }
+        if (law_.active()) euler += frame[r] * T * area * dS_speed[r];
         out.d[r][3] = euler / in.normal_force;
     }
     J = out;

@@ -163,6 +163,12 @@ void ExactModel::remember(double ratio, double nu)
                       levels_[0]->tangential.state().data());
 }
 
+void ExactModel::set_law(const SlipSpeedLaw& law, double V)
+{
+    law_.set(law, V);
+    has_previous_ = false; // the warm start's history belongs to the last law
+}
+
 void ExactModel::validate(const ContactInput& in) const
 {
     validate_contact_input(in);
@@ -188,7 +194,7 @@ void ExactModel::set_up(const ContactInput& in, SolveMode mode)
     s.dx = 2.0 * box_scale_ * in.a / nx_;
     s.dy = 2.0 * box_scale_ * in.b / ny_;
     s.p0 = 3.0 * in.normal_force / (2.0 * kPi * in.a * in.b);
-    s.traction_scale = traction_bound(friction_law(in), s.p0);
+    s.traction_scale = law_.traction_scale(in, s.p0);
     s.xi = s.direction * in.xi_x;
     s.eta = in.xi_y;
     s.phi = s.direction * in.phi;
@@ -243,6 +249,7 @@ SolveTotals ExactModel::solve(const ContactInput& in, SolveMode mode)
     const bool loaded = in.normal_force > 0.0;
     if (loaded) solve_normal(fine, ratio, in.warm_start, "finest");
     set_normalised_creepages(in.G);
+    law_.apply(levels_, setup_.slip_scale);
 
     std::vector<double>& g = fine.tangential.bound();
     const std::vector<double>& qn = fine.normal.pressure();
@@ -262,6 +269,7 @@ SolveTotals ExactModel::solve(const ContactInput& in, SolveMode mode)
         tangential_start(trivial, rolling_freely, in.warm_start && had_previous), tolerance,
         max_steps, info_);
 
+    law_.diagnose(levels_, levels_.size(), info_);
     SolveTotals t = totals(in, ti);
     if (s.full) add_work(t);
     has_previous_ = !trivial;

@@ -32,6 +32,7 @@
 #include "contact/jacobian.hpp"
 #include "contact/params.hpp"
 #include "exact/creepage_history.hpp"
+#include "exact/exact_law.hpp"
 #include "exact/tangential_solve.hpp"
 #include "exact/steady_rolling.hpp"
 #include "halfspace/exact_geometry.hpp"
@@ -45,8 +46,8 @@ constexpr double kExactDefaultTolerance = 1e-8;
 constexpr int kExactDefaultMaxIterations = 50;
 constexpr double kExactDefaultSpinOffset = 1.0 / 6.0; // CONTACT's facphi
 
-// Diagnostics of the last solve: the tangential solve's, and the normal
-// problem's conjugate-gradient iterations.
+// Diagnostics of the last solve: the tangential solve's (with the law's),
+// and the normal problem's conjugate-gradient iterations.
 struct ExactSolveInfo : TangentialInfo {
     int normal_iterations = 0;
 };
@@ -63,6 +64,15 @@ public:
     // solve(), then rows Fx, Fy, Mz of the Jacobian (exact_jacobian.cpp).
     SolveTotals solve_jacobian(const ContactInput& input, SolveMode mode,
                                Jacobian& jacobian) override;
+
+    // The law of the slip speed and the rolling speed V [m/s] > 0 of the
+    // next solves (exact_law.hpp): mu(s) at each element's own slip speed
+    // s = |micro-slip| V; input.mu is then not read (the traction unit is
+    // mu(0) p0). Throws Error(invalid_input) naming the input (the law's
+    // parameters, V). The Jacobian takes the law (exact_jacobian.cpp).
+    void set_law(const SlipSpeedLaw& law, double V);
+    // Back to Coulomb's law with input.mu.
+    void clear_law() { law_.clear(); }
 
     const ExactSolveInfo& info() const { return info_; }
     int nx() const { return nx_; }
@@ -103,6 +113,7 @@ private:
     std::vector<std::unique_ptr<Level>> levels_; // [0] is the caller's grid
     ExactSolveInfo info_;
     bool has_previous_ = false;
+    ExactLaw law_;
 
     // The last solve (rolling frame), for the exports.
     struct Setup {

@@ -4,9 +4,29 @@
 
 namespace creepwork {
 
-bool solve_local_friction(std::complex<double> c, double b1, double b2, double g,
-                          std::complex<double>& q, LocalJacobian& J)
+namespace {
+
+// J = -M K^-1 with K = I + diag(b1, b2) M for the symmetric M of dq = -M ds.
+LocalJacobian local_jacobian(double m11, double m12, double m22, double b1, double b2)
 {
+    const double k11 = 1.0 + b1 * m11, k12 = b1 * m12;
+    const double k21 = b2 * m12, k22 = 1.0 + b2 * m22;
+    const double det = k11 * k22 - k12 * k21;
+    const double i11 = k22 / det, i12 = -k12 / det, i21 = -k21 / det, i22 = k11 / det;
+    LocalJacobian J;
+    J.j11 = -(m11 * i11 + m12 * i21);
+    J.j12 = -(m11 * i12 + m12 * i22);
+    J.j21 = -(m12 * i11 + m22 * i21);
+    J.j22 = -(m12 * i12 + m22 * i22);
+    return J;
+}
+
+} // namespace
+
+bool solve_local_friction(const CoulombLaw& law, std::complex<double> c, double b1, double b2,
+                          double pressure, std::complex<double>& q, LocalJacobian& J)
+{
+    const double g = traction_bound(law, pressure);
     const double cx = c.real(), cy = c.imag();
     const double ax = -cx / b1, ay = -cy / b2; // the adhesion solution
     if (ax * ax + ay * ay <= g * g) {
@@ -56,6 +76,73 @@ bool solve_local_friction(std::complex<double> c, double b1, double b2, double g
     J.j12 = -f * (p11 * i12 + p12 * i22);
     J.j21 = -f * (p12 * i11 + p22 * i21);
     J.j22 = -f * (p12 * i12 + p22 * i22);
+    return true;
+}
+
+bool solve_local_friction(const LocalLaw& law, std::complex<double> c, double b1, double b2,
+                          double pressure, std::complex<double>& q, LocalJacobian& J,
+                          ElementSlip& out)
+{
+    out = ElementSlip{};
+    const double cx = c.real(), cy = c.imag();
+    const double ax = -cx / b1, ay = -cy / b2; // the adhesion solution
+    const double g0 = traction_bound(law, pressure, 0.0);
+    if (ax * ax + ay * ay <= g0 * g0) { // the static bound decides
+        q = {ax, ay};
+        J = {-1.0 / b1, 0.0, 0.0, -1.0 / b2};
+        return false;
+    }
+    if (!(g0 > 0.0)) {
+        q = {0.0, 0.0};
+        J = {};
+        return true;
+    }
+    // f(sigma) = (cx/(sigma + h b1))^2 + (cy/(sigma + h b2))^2 - 1 with
+    // h = g m(sigma) <= g0: f >= Coulomb's f at g0, so f(lo) >= 0 at
+    // lo = |c| - g0 max(b); f(|c|) <= 0 (h >= 0). Newton's steps inside the
+    // bracket, bisection otherwise; the bracket shrinks with each sign.
+    const double norm_c = std::sqrt(cx * cx + cy * cy);
+    double lo = norm_c - g0 * (b1 > b2 ? b1 : b2), hi = norm_c;
+    if (lo < 0.0) lo = 0.0;
+    double sigma = lo, h = g0, dh = 0.0;
+    for (int it = 0; it < 200; ++it) {
+        const FrictionValue m = law.value(sigma);
+        h = pressure * m.mu;
+        dh = pressure * m.dmu_ds;
+        out.m = m.mu;
+        out.iterations = it + 1;
+        const double dx = sigma + h * b1, dy = sigma + h * b2;
+        const double tx = cx / dx, ty = cy / dy;
+        const double f = tx * tx + ty * ty - 1.0;
+        if (f == 0.0) break;
+        (f > 0.0 ? lo : hi) = sigma;
+        const double df = -2.0 * (tx * tx * (1.0 + dh * b1) / dx + ty * ty * (1.0 + dh * b2) / dy);
+        double next = df < 0.0 ? sigma - f / df : 0.5 * (lo + hi);
+        if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
+        const bool stalled = !(std::fabs(next - sigma) > 1e-15 * (sigma + h * (b1 + b2)));
+        sigma = next;
+        if (stalled || !(hi > lo)) break;
+    }
+    const FrictionValue m = law.value(sigma);
+    h = pressure * m.mu;
+    dh = pressure * m.dmu_ds;
+    out.m = m.mu;
+    double ex = cx / (sigma + h * b1), ey = cy / (sigma + h * b2);
+    const double ne = std::sqrt(ex * ex + ey * ey);
+    ex /= ne;
+    ey /= ne;
+    q = {-h * ex, -h * ey};
+    // Derivative: q = -h(sigma) e, s = sigma e: dq = -M ds with
+    // M = (h/sigma)(I - e e^T) + h' e e^T, and ds = dc + B0 dq.
+    const double f = h / (sigma > 1e-300 ? sigma : 1e-300);
+    const double m11 = f * (1.0 - ex * ex) + dh * ex * ex;
+    const double m12 = (dh - f) * ex * ey;
+    const double m22 = f * (1.0 - ey * ey) + dh * ey * ey;
+    J = local_jacobian(m11, m12, m22, b1, b2);
+    // u = -(I + J B0) e: the response to the bound's own change.
+    const double bx = b1 * ex, by = b2 * ey;
+    out.u = {-(ex + J.j11 * bx + J.j12 * by), -(ey + J.j21 * bx + J.j22 * by)};
+    out.speed_source = sigma * dh;
     return true;
 }
 

@@ -1,16 +1,23 @@
-// Coulomb's law for one element of the steady-rolling problem, solved
+// The friction law for one element of the steady-rolling problem, solved
 // exactly (doc/theory/exact-discretisation.md rule 7). In normalised units (tractions
-// per mu p0) the element's slip is s = c + diag(b1, b2) q, where c holds the
+// per mu_s p0) the element's slip is s = c + diag(b1, b2) q, where c holds the
 // rigid slip and everything the other elements contribute and b1, b2 > 0
-// are the element's own (diagonal) coefficients. Find q with
-//   adhesion: s = 0 and |q| <= g, or
-//   slip:     |q| = g and q = -g s / |s|.
-// With q = -g e (|e| = 1) slip reads (sigma + g b1) e1 = c1,
-// (sigma + g b2) e2 = c2 with sigma = |s| >= 0: one monotone equation for
-// sigma, solved by Newton's method from below (it is convex).
+// are the element's own (diagonal) coefficients. With the bound
+// h = traction_bound(law, g, sigma) (contact/friction_law.hpp: g the
+// element's pressure over p0, sigma = |s|) find q with
+//   adhesion: s = 0 and |q| <= h(0), or
+//   slip:     |q| = h(sigma) and q = -h s / |s|.
+// With q = -h e (|e| = 1) slip reads (sigma + h b1) e1 = c1,
+// (sigma + h b2) e2 = c2: one equation for sigma. Coulomb's h is constant
+// and the equation monotone and convex, solved by Newton's method from
+// below; under a law of the slip speed h falls with sigma, and a
+// safeguarded Newton method keeps the root bracketed.
 #pragma once
 
 #include <complex>
+
+#include "contact/friction_law.hpp"
+#include "friction/slip_speed_law.hpp"
 
 namespace creepwork {
 
@@ -19,8 +26,50 @@ struct LocalJacobian {
     double j11 = 0, j12 = 0, j21 = 0, j22 = 0;
 };
 
-// Returns true for slip. g >= 0; b1, b2 > 0. q and J are always written.
-bool solve_local_friction(std::complex<double> c, double b1, double b2, double g,
-                          std::complex<double>& q, LocalJacobian& J);
+// A law of the slip speed in the local problem's units: the factor of the
+// bound m(sigma) = mu(kappa sigma) / mu_ref at the normalised slip sigma,
+// kappa = V times the unit of the normalised slip [m/s], mu_ref = mu(0)
+// (the traction unit's coefficient, so m(0) = 1). A law of the friction
+// hook (coefficient, slope by sigma, uses_slip_speed).
+struct LocalLaw {
+    SlipSpeedLaw law;
+    double mu_ref = 1.0, kappa = 0.0;
+    static constexpr bool uses_slip_speed = true;
+    FrictionValue value(double sigma) const // m and dm/dsigma
+    {
+        const FrictionValue v = friction_value(law, kappa * sigma);
+        return {v.mu / mu_ref, v.dmu_ds * kappa / mu_ref};
+    }
+    double coefficient(double sigma) const { return value(sigma).mu; }
+    double slope(double sigma) const { return value(sigma).dmu_ds; }
+};
+
+// What a slipping element under a law leaves for the derivatives: its
+// factor m(sigma) and, per unit change of the bound's scale h, the change
+// of q, u = -(I + J B0) e (so dq/dg = m u, and dq/dln kappa = sigma h' u
+// with h' = dh/dsigma: the speed source).
+struct ElementSlip {
+    double m = 1.0;            // the bound's factor m(sigma) (1 in adhesion)
+    double speed_source = 0.0; // sigma dh/dsigma
+    std::complex<double> u{0.0, 0.0};
+    int iterations = 0;        // the scalar equation's Newton steps
+};
+
+// Coulomb's law (the bound traction_bound(law, g): pass CoulombLaw{1} for
+// the bound g itself). Returns true for slip. g >= 0; b1, b2 > 0. q and J
+// are always written.
+bool solve_local_friction(const CoulombLaw& law, std::complex<double> c, double b1, double b2,
+                          double g, std::complex<double>& q, LocalJacobian& J);
+inline bool solve_local_friction(std::complex<double> c, double b1, double b2, double g,
+                                 std::complex<double>& q, LocalJacobian& J)
+{
+    return solve_local_friction(CoulombLaw{1.0}, c, b1, b2, g, q, J);
+}
+
+// A law of the slip speed: the same, with J holding the law's slope (dq =
+// -M ds, M = (h/sigma)(I - e e^T) + h' e e^T) and slip's details in out
+// (written in slip; m = 1 otherwise).
+bool solve_local_friction(const LocalLaw& law, std::complex<double> c, double b1, double b2,
+                          double g, std::complex<double>& q, LocalJacobian& J, ElementSlip& out);
 
 } // namespace creepwork

@@ -61,6 +61,16 @@ SteadyRolling::SteadyRolling(int nx, int ny, int krylov_dimension)
       basis_(static_cast<Complex*>(::operator new(sizeof(Complex) * n_ * (m_ + 1)))),
       hessenberg_(static_cast<size_t>(m_ + 1) * m_), cs_(m_), sn_(m_), rhs_(m_ + 1), y_(m_)
 {
+    capacity_ = static_cast<size_t>(n_);
+}
+
+void SteadyRolling::set_law(const LocalLaw* law)
+{
+    law_active_ = law != nullptr;
+    if (!law) return;
+    law_ = *law;
+    slip_info_.reserve(capacity_);
+    slip_info_.resize(static_cast<size_t>(n_));
 }
 
 void SteadyRolling::set_size(int nx, int ny)
@@ -73,6 +83,7 @@ void SteadyRolling::set_size(int nx, int ny)
     for (auto* v : {&w_, &q_, &gq_, &f_, &dq_, &qt_, &gt_, &ft_, &s_, &work_}) v->resize(n);
     jac_.resize(n);
     state_.resize(n);
+    if (law_active_) slip_info_.resize(n);
 }
 
 void SteadyRolling::project(std::vector<Complex>& q) const
@@ -116,7 +127,15 @@ void SteadyRolling::sweep(GridConvolution& conv, const std::vector<Complex>& q,
             const Complex c(s_[k].real() - b0x_ * q[k].real() + b1x_ * ahead.real(),
                             s_[k].imag() - b0y_ * q[k].imag() + b1y_ * ahead.imag());
             Complex qk;
-            state_[k] = solve_local_friction(c, b0x_, b0y_, g_[k], qk, jac_[k]) ? 2 : 1;
+            bool slips;
+            if (law_active_) {
+                ElementSlip& e = slip_info_[k];
+                slips = solve_local_friction(law_, c, b0x_, b0y_, g_[k], qk, jac_[k], e);
+                friction_iterations_ += e.iterations;
+            } else {
+                slips = solve_local_friction(c, b0x_, b0y_, g_[k], qk, jac_[k]);
+            }
+            state_[k] = slips ? 2 : 1;
             out[k] = qk;
             ahead = qk - q[k];
         }
@@ -245,6 +264,7 @@ SteadyRollingInfo SteadyRolling::solve(GridConvolution& conv, double tolerance, 
 {
     SteadyRollingInfo info;
     products_ = 0;
+    friction_iterations_ = 0;
     if (rolling_) {
         b0x_ = conv.cf11(0, 0) - conv.cf11(1, 0);
         b0y_ = conv.cf22(0, 0) - conv.cf22(1, 0);
@@ -301,7 +321,8 @@ SteadyRollingInfo SteadyRolling::solve(GridConvolution& conv, double tolerance, 
     return info;
 }
 
-void SteadyRolling::source_sweep(const Complex* dw, const double* dg, Complex* out) const
+void SteadyRolling::source_sweep(const Complex* dw, const double* dg, bool speed,
+                                 Complex* out) const
 {
     // The sweep of sweep() with q held: c = w + (B q - own diagonal) + b1
     // (change ahead), so dc = dw + b1 (dG ahead); a bound change moves a
@@ -323,7 +344,12 @@ void SteadyRolling::source_sweep(const Complex* dw, const double* dg, Complex* o
             }
             const LocalJacobian& J = jac_[k];
             Complex d(J.j11 * cx + J.j12 * cy, J.j21 * cx + J.j22 * cy);
-            if (dg && state_[k] == 2 && dg[k] != 0.0) {
+            if (law_active_ && state_[k] == 2) {
+                // Under a law: dq = u (m dg + sigma h' dln kappa), local_friction.hpp.
+                const ElementSlip& e = slip_info_[k];
+                if (dg && dg[k] != 0.0) d += e.u * (e.m * dg[k]);
+                if (speed) d += e.u * e.speed_source;
+            } else if (dg && state_[k] == 2 && dg[k] != 0.0) {
                 // c as sweep() built it: s = w + B q holds the element's own
                 // diagonal b0 q_k, the element ahead's change is G(q) - q.
                 const Complex up = i + 1 < nx_ ? gq_[k + 1] - q_[k + 1] : Complex(0.0, 0.0);
@@ -343,14 +369,22 @@ const std::vector<SteadyRolling::Complex>& SteadyRolling::tangent(GridConvolutio
                                                                   double tolerance,
                                                                   int max_iterations)
 {
-    source_sweep(dw.data(), nullptr, gt_.data()); // gt_, qt_, ft_: scratch after solve()
+    source_sweep(dw.data(), nullptr, false, gt_.data()); // gt_, qt_, ft_: scratch after solve()
     return solve_tangent(conv, tolerance, max_iterations);
 }
 
 const std::vector<SteadyRolling::Complex>& SteadyRolling::tangent_bound(
     GridConvolution& conv, const std::vector<double>& dg, double tolerance, int max_iterations)
 {
-    source_sweep(nullptr, dg.data(), gt_.data());
+    source_sweep(nullptr, dg.data(), false, gt_.data());
+    return solve_tangent(conv, tolerance, max_iterations);
+}
+
+const std::vector<SteadyRolling::Complex>& SteadyRolling::tangent_speed(GridConvolution& conv,
+                                                                        double tolerance,
+                                                                        int max_iterations)
+{
+    source_sweep(nullptr, nullptr, law_active_, gt_.data());
     return solve_tangent(conv, tolerance, max_iterations);
 }
 

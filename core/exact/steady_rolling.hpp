@@ -64,6 +64,17 @@ public:
     int ny() const { return ny_; }
     // The operator of the next solves (rolling unless set).
     void set_operator(SlipOperator op) { rolling_ = op == SlipOperator::rolling; }
+    // The friction law of the next solves: Coulomb's (bound g, the default,
+    // law = nullptr) or a law of the slip speed (bound g m(sigma) at each
+    // element's own normalised slip sigma = |s|, local_friction.hpp), inside
+    // the Newton system: the local Jacobians hold the law's slope. The first
+    // call with a law allocates its per-element record.
+    void set_law(const LocalLaw* law);
+    // Under a law, of the last sweep: each element's record (m, sources;
+    // m = 1 outside slip) and the scalar Newton steps of every sweep since
+    // the last solve() began.
+    const std::vector<ElementSlip>& element_slip() const { return slip_info_; }
+    long friction_iterations() const { return friction_iterations_; }
 
     // conv holds this grid's coefficients; g (bound per element, 0 outside
     // the contact set) and w (rigid slip) are set by the caller through
@@ -117,6 +128,10 @@ public:
     // last sweep: its slip w + B q, input q and output G(q).
     const std::vector<Complex>& tangent_bound(GridConvolution& conv, const std::vector<double>& dg,
                                               double tolerance, int max_iterations);
+    // Under a law: the same for a change of ln kappa (the slip speed per
+    // unit of normalised slip), the law's argument scaled at fixed slip.
+    const std::vector<Complex>& tangent_speed(GridConvolution& conv, double tolerance,
+                                              int max_iterations);
 
 private:
     // Solves (I - G') dq = rhs (in gt_) into qt_ and checks the true residual.
@@ -126,10 +141,10 @@ private:
     void sweep(GridConvolution& conv, const std::vector<Complex>& q, std::vector<Complex>& out);
     // out = G'(q) v at the q of the last sweep. One FFT product.
     void linear_sweep(GridConvolution& conv, const Complex* v, Complex* out);
-    // out = G_w dw + G_g dg at the q of the last sweep (the sweep's response
-    // to a change of the rigid slip and of the bound; either may be null).
-    // No FFT product.
-    void source_sweep(const Complex* dw, const double* dg, Complex* out) const;
+    // out = G_w dw + G_g dg (+ G_kappa under a law, with speed) at the q of
+    // the last sweep (the sweep's response to a change of the rigid slip, of
+    // the bound and of ln kappa; dw and dg may be null). No FFT product.
+    void source_sweep(const Complex* dw, const double* dg, bool speed, Complex* out) const;
     // Solves (I - G') x = b to relative residual eta; returns the iterations.
     int gmres(GridConvolution& conv, const std::vector<Complex>& b, std::vector<Complex>& x,
               double eta, int max_iterations);
@@ -145,6 +160,11 @@ private:
     std::vector<Complex> w_, q_, gq_, f_, dq_, qt_, gt_, ft_, s_, work_;
     std::vector<LocalJacobian> jac_;
     std::vector<signed char> state_;
+    bool law_active_ = false;
+    LocalLaw law_;
+    std::vector<ElementSlip> slip_info_;
+    size_t capacity_ = 0; // the constructor's element count
+    long friction_iterations_ = 0;
     // GMRES: basis (m + 1 vectors of n), Hessenberg, Givens rotations, rhs.
     struct Release {
         void operator()(Complex* p) const { ::operator delete(p); }

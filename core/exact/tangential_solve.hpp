@@ -67,6 +67,13 @@ struct TangentialInfo {
     int products = 0;     // FFT products, all grids (each ~ the cost of one)
     bool warm = false;    // started from the last solution
     bool retried_cold = false;
+    // Under a law of the slip speed (exact_law.hpp): the local equations'
+    // Newton steps (every sweep of every grid solved), their mean per
+    // slipping element in the final sweep, and the coefficient's range over
+    // the slipping elements (mu(0) when none slips).
+    long friction_iterations = 0;
+    double friction_steps_per_element = 0;
+    double mu_min = 0, mu_max = 0;
 };
 
 enum class TangentialStart { slide, zero_creepage, warm, cold };

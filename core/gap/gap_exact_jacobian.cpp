@@ -16,7 +16,9 @@
 // rigid slip stays and the bound changes by dg = (dp/dN) / p_ref: dq/dN
 // solves (I - G'(q)) dq = G_g dg (SteadyRolling::tangent_bound). The
 // contact set and the box are those of the solution: the derivative at a
-// load where no element enters or leaves contact.
+// load where no element enters or leaves contact. Under a law of the slip
+// speed the slip speed's unit V T / G stays with T, and the local
+// derivative by the bound is the law's (SteadyRolling::tangent_bound).
 
 #include "contact/jacobian_load.hpp"
 #include "gap/gap_exact_model.hpp"
@@ -25,7 +27,9 @@ namespace creepwork {
 SolveTotals GapExactModel::solve_jacobian(const ContactInput& in, SolveMode mode, Jacobian& J)
 {
     const SolveTotals t = solve(in, mode);
-    if (gap_jacobian_is_zero(in, setup_.loaded ? t.n_contact : 0, J)) return t;
+    ContactInput effective = in; // under a law, its mu(0) scales the tractions
+    effective.mu = law_.coefficient(in);
+    if (gap_jacobian_is_zero(effective, setup_.loaded ? t.n_contact : 0, J)) return t;
     Jacobian out;
 
     Level& fine = *levels_[0];

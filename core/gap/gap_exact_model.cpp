@@ -293,6 +293,12 @@ void GapExactModel::remember(double nu)
     history_.remember(key, c, traction_, s.traction_scale, state_.data());
 }
 
+void GapExactModel::set_law(const SlipSpeedLaw& law, double V)
+{
+    law_.set(law, V);
+    has_previous_ = false; // the warm start's history belongs to the last law
+}
+
 SolveTotals GapExactModel::solve(const ContactInput& in, SolveMode mode)
 {
     const bool had_previous = has_previous_;
@@ -319,11 +325,12 @@ SolveTotals GapExactModel::solve(const ContactInput& in, SolveMode mode)
     for (double p : pressure) p_ref = std::max(p_ref, p);
     s.loaded = p_ref > 0.0;
     s.p_ref = p_ref;
-    s.traction_scale = traction_bound(friction_law(in), p_ref);
+    s.traction_scale = law_.traction_scale(in, p_ref);
     SolveTotals t;
     label_patches(t);
     set_box(normal_.half_space(in.nu));
     set_normalised_creepages(in);
+    law_.apply(levels_, s.slip_scale);
 
     Level& fine = *levels_[0];
     std::vector<double>& g = fine.tangential.bound();
@@ -341,6 +348,7 @@ SolveTotals GapExactModel::solve(const ContactInput& in, SolveMode mode)
         solve_tangential(steps, n_levels_, tangential_start(trivial, rolling_freely, warm),
                          tolerance, max_steps, info_);
     scatter_box();
+    law_.diagnose(levels_, static_cast<size_t>(n_levels_), info_);
 
     set_totals(in, t);
     t.iterations = ti.newton_steps;

@@ -38,6 +38,7 @@
 #include "contact/fields.hpp"
 #include "contact/params.hpp"
 #include "exact/creepage_history.hpp"
+#include "exact/exact_law.hpp"
 #include "exact/exact_model.hpp"
 #include "exact/steady_rolling.hpp"
 #include "exact/tangential_solve.hpp"
@@ -71,6 +72,14 @@ public:
     // for normal_force = 0 (or an approach without contact) when mu > 0.
     SolveTotals solve_jacobian(const ContactInput& input, SolveMode mode,
                                Jacobian& jacobian) override;
+
+    // The law of the slip speed and the rolling speed V [m/s] > 0 of the
+    // next solves, as ExactModel's (exact/exact_law.hpp): the traction unit
+    // is mu(0) p_max and input.mu is not read. Throws Error(invalid_input)
+    // naming the input. The Jacobian takes the law.
+    void set_law(const SlipSpeedLaw& law, double V);
+    // Back to Coulomb's law with input.mu.
+    void clear_law() { law_.clear(); }
 
     const GapExactSolveInfo& info() const { return info_; }
     // dN/d(approach) [N/m] at the last solve, its normal method's own
@@ -123,6 +132,7 @@ private:
     PatchLabels labels_;
     GapExactSolveInfo info_;
     bool has_previous_ = false;
+    ExactLaw law_;
 
     // The last solve (rolling frame).
     struct Setup {

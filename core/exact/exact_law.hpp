@@ -1,0 +1,63 @@
+// The friction law of an exact model (ExactModel, GapExactModel): Coulomb's
+// with the input's mu (the default), or a law of the slip speed with the
+// rolling speed V, set on the model. Under a law every element's bound is
+// mu(s) p at its own slip speed s = |micro-slip| V, inside the Newton system
+// (local_friction.hpp); the traction unit is mu(0) times the model's
+// reference pressure, and the input's mu is not read.
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include "contact/params.hpp"
+#include "exact/tangential_solve.hpp"
+#include "friction/slip_speed_law.hpp"
+
+namespace creepwork {
+
+class ExactLaw {
+public:
+    // Throws Error(invalid_input) naming the input: the law's parameters, or
+    // V unless finite and > 0 [m/s].
+    void set(const SlipSpeedLaw& law, double V);
+    void clear() { active_ = false; }
+    bool active() const { return active_; }
+    // The coefficient that scales the tractions: mu(0) under a law, in.mu
+    // otherwise.
+    double coefficient(const ContactInput& in) const;
+    // The traction unit [Pa] at the reference pressure [Pa].
+    double traction_scale(const ContactInput& in, double pressure) const;
+    // Each level's local law: kappa = V slip_scale [m/s] turns the
+    // normalised slip into slip speed (on every level of the hierarchy);
+    // Coulomb's when no law is set.
+    template <class Level>
+    void apply(std::vector<std::unique_ptr<Level>>& levels, double slip_scale) const
+    {
+        const LocalLaw local{law_, law_.coefficient(0.0), V_ * slip_scale};
+        for (auto& L : levels) L->tangential.set_law(active_ ? &local : nullptr);
+    }
+    // Under a law, into info: the range of mu over the fine level's slipping
+    // elements (mu(0) when none slips), their mean local Newton steps in the
+    // final sweep, and the local Newton steps of the
+    // levels solved (the first n_levels unless the solve was warm and not
+    // retried: the finest alone).
+    template <class Level>
+    void diagnose(const std::vector<std::unique_ptr<Level>>& levels, size_t n_levels,
+                  TangentialInfo& info) const
+    {
+        if (!active_) return;
+        range(levels[0]->tangential, info);
+        const bool warm_only = info.warm && !info.retried_cold;
+        const size_t used = warm_only ? 1 : n_levels;
+        for (size_t l = 0; l < used; ++l)
+            info.friction_iterations += levels[l]->tangential.friction_iterations();
+    }
+
+private:
+    void range(const SteadyRolling& fine, TangentialInfo& info) const;
+    bool active_ = false;
+    SlipSpeedLaw law_;
+    double V_ = 0.0;
+};
+
+} // namespace creepwork
