@@ -95,6 +95,7 @@ Solver::Solver(const GridSpec& grid, ModelKind first)
 
 void Solver::prepare(ModelKind kind)
 {
+    view_made_ = false;
     ContactModel& m = model(kind);
     if (auto* f = dynamic_cast<GapFastsimModel*>(&m)) f->prepare_half_space();
 }
@@ -111,6 +112,7 @@ const GapExactModel* Solver::gap_model() const
 
 double Solver::normal_force_by_approach()
 {
+    view_made_ = false;
     if (!solved_) return 0.0;
     if (auto* m = dynamic_cast<GapExactModel*>(last_)) return m->normal_force_by_approach();
     if (auto* m = dynamic_cast<GapFastsimModel*>(last_)) return m->normal_force_by_approach();
@@ -119,6 +121,7 @@ double Solver::normal_force_by_approach()
 
 CalibratedModel& Solver::calibrated_model()
 {
+    view_made_ = false; // the caller may solve it
     return static_cast<CalibratedModel&>(model(ModelKind::calibrated));
 }
 
@@ -128,6 +131,7 @@ void Solver::set_kernel_isa(KernelIsa isa)
         throw Error(ErrorKind::invalid_input,
                     std::string("kernel ") + kernel_isa_name(isa) + " is not supported by this CPU");
     isa_ = isa;
+    view_made_ = false;
     for (const auto& m : models_) m.second->set_kernel_isa(isa);
 }
 
@@ -158,6 +162,7 @@ const SolveTotals& Solver::solve_impl(const ContactInput& input, SolveMode mode,
                                       Jacobian* jacobian)
 {
     solved_ = false;
+    view_made_ = false;
     mode_ = mode;
     validate_grid_input(grid_->spec(), input);
     ContactModel& m = model(input.model);
