@@ -96,8 +96,7 @@ Solver::Solver(const GridSpec& grid, ModelKind first)
 void Solver::prepare(ModelKind kind)
 {
     view_made_ = false;
-    ContactModel& m = model(kind);
-    if (auto* f = dynamic_cast<GapFastsimModel*>(&m)) f->prepare_half_space();
+    model(kind).prepare();
 }
 
 const ExactModel* Solver::exact_model() const
@@ -113,10 +112,7 @@ const GapExactModel* Solver::gap_model() const
 double Solver::normal_force_by_approach()
 {
     view_made_ = false;
-    if (!solved_) return 0.0;
-    if (auto* m = dynamic_cast<GapExactModel*>(last_)) return m->normal_force_by_approach();
-    if (auto* m = dynamic_cast<GapFastsimModel*>(last_)) return m->normal_force_by_approach();
-    return 0.0;
+    return solved_ ? last_->normal_force_by_approach() : 0.0;
 }
 
 CalibratedModel& Solver::calibrated_model()

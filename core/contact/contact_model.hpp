@@ -46,6 +46,15 @@ public:
     // scales its grid's strips by the last solve's semi-axis b).
     virtual bool copy_strips(double* /*y*/, double* /*width*/) const { return false; }
 
+    // Makes the memory a first solve would make, so that no solve
+    // allocates (Solver::prepare); a model that makes it all when made
+    // does nothing.
+    virtual void prepare() {}
+    // dN/d(approach) [N/m] at the last solve, by a model that solves its own
+    // normal problem on a gap grid (its normal method's, throws as that);
+    // 0 otherwise.
+    virtual double normal_force_by_approach() { return 0.0; }
+
     // The ISA of the model's SIMD kernels (simd/kernel_isa.hpp), supported
     // by this CPU; every ISA gives bitwise the same results. Models without
     // such kernels ignore it.
