@@ -158,7 +158,7 @@ const SolveTotals& Solver::solve_impl(const ContactInput& input, SolveMode mode,
                                       Jacobian* jacobian)
 {
     solved_ = false;
-    view_made_ = false;
+    view_made_ = false; // the next read makes the view of this solve
     mode_ = mode;
     validate_grid_input(grid_->spec(), input);
     ContactModel& m = model(input.model);
