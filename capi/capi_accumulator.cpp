@@ -75,8 +75,10 @@ int cw_accumulator_add(cw_accumulator* accumulator, const cw_solver* solver, dou
         // step that would overflow leaves the accumulator as it was.
         accumulator->next_paper = accumulator->paper;
         accumulator->next_consistent = accumulator->consistent;
-        s.add_field(cw::Field::work_paper, distance, accumulator->next_paper.data());
-        s.add_field(cw::Field::work_consistent, distance, accumulator->next_consistent.data());
+        const cw::SolvedContact& view = s.solved();
+        cw::add_field(view, cw::Field::work_paper, distance, accumulator->next_paper.data());
+        cw::add_field(view, cw::Field::work_consistent, distance,
+                      accumulator->next_consistent.data());
         cw_accumulation a = accumulator->totals;
         a.distance += distance;
         a.W_macro += t.W_macro * distance;

@@ -44,16 +44,17 @@ void read_solved_contact(const cw::Solver& s, SolvedContact& c)
 {
     require_solution(s, true);
     using F = cw::Field;
-    s.copy_field(F::x, c.x.data());
-    s.copy_field(F::y, c.y.data());
-    s.copy_field(F::area, c.area.data());
-    s.copy_field(F::pz, c.pz.data());
-    s.copy_field(F::px, c.px.data());
-    s.copy_field(F::py, c.py.data());
-    s.copy_field(F::sx, c.sx.data());
-    s.copy_field(F::sy, c.sy.data());
-    s.copy_field(F::work_consistent, c.work.data());
-    s.copy_state(c.state.data());
+    const cw::SolvedContact& view = s.solved();
+    cw::export_field(view, F::x, c.x.data());
+    cw::export_field(view, F::y, c.y.data());
+    cw::export_field(view, F::area, c.area.data());
+    cw::export_field(view, F::pz, c.pz.data());
+    cw::export_field(view, F::px, c.px.data());
+    cw::export_field(view, F::py, c.py.data());
+    cw::export_field(view, F::sx, c.sx.data());
+    cw::export_field(view, F::sy, c.sy.data());
+    cw::export_field(view, F::work_consistent, c.work.data());
+    cw::export_state(view, c.state.data());
     c.totals = s.totals();
     // Element length along x per row: the gap grid's spacing, or the
     // strip's normalised length times the semi-axis a.

@@ -161,17 +161,19 @@ int cw_wear_compute(cw_wear* wear, const cw_solver* solver, const cw_wear_params
             fail(CW_ERR_GRID_MISMATCH, "the solver's grid differs from the one wear was made for");
         const cww::WearLaw law = to_wear_law(params);
         require_solution(s, true);
-        s.copy_field(cw::Field::area, wear->area.data());
-        s.copy_field(cw::Field::pz, wear->pz.data());
-        s.copy_field(cw::Field::px, wear->px.data());
-        s.copy_field(cw::Field::py, wear->py.data());
+        const cw::SolvedContact& view = s.solved(); // the solve's fields, read once
+        cw::export_field(view, cw::Field::area, wear->area.data());
+        cw::export_field(view, cw::Field::pz, wear->pz.data());
+        cw::export_field(view, cw::Field::px, wear->px.data());
+        cw::export_field(view, cw::Field::py, wear->py.data());
         if (law.source == cww::Source::slip) {
-            s.copy_field(cw::Field::sx, wear->sx.data());
-            s.copy_field(cw::Field::sy, wear->sy.data());
+            cw::export_field(view, cw::Field::sx, wear->sx.data());
+            cw::export_field(view, cw::Field::sy, wear->sy.data());
         } else {
-            s.copy_field(law.source == cww::Source::paper ? cw::Field::work_paper
-                                                          : cw::Field::work_consistent,
-                         wear->work.data());
+            cw::export_field(view,
+                             law.source == cww::Source::paper ? cw::Field::work_paper
+                                                              : cw::Field::work_consistent,
+                             wear->work.data());
         }
         const double b = s.totals().b;
         s.copy_strips(wear->strip_y.data(), wear->strip_width.data());

@@ -39,23 +39,24 @@ void patch_field(const wr::PatchSolution& p, int field, double* out)
     const cw::Solver& s = patch_solver(p);
     const cw::Field f = to_field(field);
     require_solution(s, cw::Solver::needs_work(f));
+    const cw::SolvedContact& view = s.solved();
     const size_t n = static_cast<size_t>(p.nx) * p.ny;
     std::vector<double> v(n);
     if (field == CW_FIELD_MZ) {
         // about n through the reference point, on the rail: x ps - s px per
         // element, which equals the wheel's (x py - y px) about the point
         std::vector<double> x(n), y(n), px(n), py(n), area(n);
-        s.copy_field(cw::Field::x, x.data());
-        s.copy_field(cw::Field::y, y.data());
-        s.copy_field(cw::Field::px, px.data());
-        s.copy_field(cw::Field::py, py.data());
-        s.copy_field(cw::Field::area, area.data());
+        cw::export_field(view, cw::Field::x, x.data());
+        cw::export_field(view, cw::Field::y, y.data());
+        cw::export_field(view, cw::Field::px, px.data());
+        cw::export_field(view, cw::Field::py, py.data());
+        cw::export_field(view, cw::Field::area, area.data());
         for (size_t e = 0; e < n; ++e)
             v[e] = ((x[e] + p.x0) * py[e] - (y[e] + p.y0) * px[e]) * area[e];
         rows_in_s_order(v, p.nx, p.ny, 1.0, out);
         return;
     }
-    s.copy_field(f, v.data());
+    cw::export_field(view, f, v.data());
     double sign = 1.0, shift = 0.0;
     switch (field) {
     case CW_FIELD_X: shift = p.x0; break;
@@ -111,7 +112,7 @@ int cw_wheelrail_get_patch_state(const cw_wheelrail* wheelrail, size_t k, int* o
         require_solution(s, false);
         require_length(out_len, static_cast<size_t>(p.nx) * p.ny, "out");
         std::vector<int> v(static_cast<size_t>(p.nx) * p.ny);
-        s.copy_state(v.data());
+        cw::export_state(s.solved(), v.data());
         rows_in_s_order(v, p.nx, p.ny, 1, out);
         return CW_OK;
     });

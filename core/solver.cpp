@@ -95,8 +95,8 @@ Solver::Solver(const GridSpec& grid, ModelKind first)
 
 void Solver::prepare(ModelKind kind)
 {
-    ContactModel& m = model(kind);
-    if (auto* f = dynamic_cast<GapFastsimModel*>(&m)) f->prepare_half_space();
+    view_made_ = false;
+    model(kind).prepare();
 }
 
 const ExactModel* Solver::exact_model() const
@@ -111,14 +111,13 @@ const GapExactModel* Solver::gap_model() const
 
 double Solver::normal_force_by_approach()
 {
-    if (!solved_) return 0.0;
-    if (auto* m = dynamic_cast<GapExactModel*>(last_)) return m->normal_force_by_approach();
-    if (auto* m = dynamic_cast<GapFastsimModel*>(last_)) return m->normal_force_by_approach();
-    return 0.0;
+    view_made_ = false;
+    return solved_ ? last_->normal_force_by_approach() : 0.0;
 }
 
 CalibratedModel& Solver::calibrated_model()
 {
+    view_made_ = false; // the caller may solve it
     return static_cast<CalibratedModel&>(model(ModelKind::calibrated));
 }
 
@@ -128,6 +127,7 @@ void Solver::set_kernel_isa(KernelIsa isa)
         throw Error(ErrorKind::invalid_input,
                     std::string("kernel ") + kernel_isa_name(isa) + " is not supported by this CPU");
     isa_ = isa;
+    view_made_ = false;
     for (const auto& m : models_) m.second->set_kernel_isa(isa);
 }
 
@@ -158,6 +158,7 @@ const SolveTotals& Solver::solve_impl(const ContactInput& input, SolveMode mode,
                                       Jacobian* jacobian)
 {
     solved_ = false;
+    view_made_ = false; // the next read makes the view of this solve
     mode_ = mode;
     validate_grid_input(grid_->spec(), input);
     ContactModel& m = model(input.model);

@@ -80,7 +80,11 @@ public:
     bool has_work() const { return solved_ && mode_ == SolveMode::full; }
     // Marks the last solution absent: the C ABI does so when it rejects a
     // solve before reaching solve() (mode, struct sizes, enumerations).
-    void discard() { solved_ = false; }
+    void discard()
+    {
+        solved_ = false;
+        view_made_ = false;
+    }
     static bool needs_work(Field f) { return field_needs_work(f); }
 
     // The kernel of the models' SIMD marches: best_kernel_isa() unless set.
@@ -90,17 +94,34 @@ public:
     KernelIsa kernel_isa() const { return isa_; }
     void set_kernel_isa(KernelIsa isa);
 
-    // out[i + j*nx] for i < nx, j < ny. Preconditions (checked by the
-    // caller): has_solution(), and has_work() for fields that need it.
-    void copy_field(Field f, double* out) const { last_->copy_field(f, out); }
+    // The last solve per element (contact/solved_contact.hpp), which the
+    // exports below and the post-processors (wear, temperature, damage)
+    // read. Made by the model on the first read after a solve and kept
+    // until a call that may change the models (a solver is used by one
+    // thread at a time): a dozen fields read make one view. Preconditions
+    // (checked by the caller): has_solution(), and has_work() for fields
+    // that need it.
+    const SolvedContact& solved() const
+    {
+        if (!view_made_) {
+            view_ = last_->solved();
+            view_made_ = true;
+        }
+        return view_;
+    }
+    // out[i + j*nx] for i < nx, j < ny.
+    void copy_field(Field f, double* out) const { export_field(solved(), f, out); }
     // out[i + j*nx] += scale * field: accumulation without temporaries.
-    void add_field(Field f, double scale, double* out) const { last_->add_field(f, scale, out); }
-    void copy_state(int* out) const { last_->copy_state(out); }
+    void add_field(Field f, double scale, double* out) const
+    {
+        creepwork::add_field(solved(), f, scale, out);
+    }
+    void copy_state(int* out) const { export_state(solved(), out); }
     // Per strip j < ny: strip centre y [m], work per unit width [J/m per m],
     // and the equal-area parabola at y.
     void copy_profile(double* y, double* work, double* parabola) const
     {
-        last_->copy_profile(totals_.W_consistent, y, work, parabola);
+        export_profile(solved(), totals_.W_consistent, y, work, parabola);
     }
     // Per strip j < ny of the last solve: centre y [m] and width [m].
     void copy_strips(double* y, double* width) const;
@@ -119,6 +140,8 @@ private:
     SolveTotals totals_;
     SolveMode mode_ = SolveMode::full;
     bool solved_ = false;
+    mutable SolvedContact view_; // of last_, valid while view_made_
+    mutable bool view_made_ = false;
 };
 
 } // namespace creepwork

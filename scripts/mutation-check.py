@@ -363,8 +363,8 @@ GAP_MUTANTS = [
          tests=GAP, require=["test_nonhertz_fastsim"]),
 ]
 MUTANTS += GAP_MUTANTS
-# The solved-contact view's one export (core/contact/solved_contact.*): the
-# exact model's and both gap models' fields read through it.
+# The solved-contact view's one export (core/contact/solved_contact.*,
+# solved_strips.cpp): every model's fields read through it.
 VIEW = EXACT + GAP + ["test_core_symmetry", "test_capi_solver"]
 MUTANTS += [
     dict(id="view-mirror", what="the view ignores the rolling direction's mirror",
@@ -377,6 +377,17 @@ MUTANTS += [
          old="                return state[k] == 2 ? d * S * s[k].real() : 0.0;",
          new="                return d * S * s[k].real();",
          tests=VIEW, require=["test_core_exact_model", "test_nonhertz_model"]),
+    dict(id="view-strips-mirror", what="the march models' view ignores the rolling direction",
+         file="core/march/march_model.cpp",
+         old="    c.mirrored = setup_.direction > 0; // the march starts at the leading edge",
+         new="    c.mirrored = false; // the march starts at the leading edge",
+         tests=CORE + WEAR + CALIBRATED + ["test_core_march_segments", "test_capi_surface"]),
+    dict(id="view-kept-stale", what="the solver keeps the view of an earlier solve",
+         file="core/solver.cpp",
+         old="    view_made_ = false; // the next read makes the view of this solve",
+         new="    // the next read makes the view of this solve",
+         tests=CORE + GAP + COLD + ["test_capi_accumulator", "test_capi_wear",
+                                    "test_robustness_noalloc_core", "test_capi_vs_core"]),
 ]
 # The Jacobians on a gap grid (core/gap/gap_exact_jacobian.cpp,
 # core/gap/gap_fastsim_jacobian.cpp and their parts): caught by central

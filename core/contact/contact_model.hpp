@@ -2,7 +2,7 @@
 // tractions are found differs (fastsim/, calibrated/, exact/, gap/), what a solve
 // returns does not. The solver (../solver.hpp) makes each model on first use
 // from one registration (make_model in solver.cpp) and holds the one that
-// solved last, whose fields it exports.
+// solved last, whose view (solved()) it exports.
 #pragma once
 
 #include <vector>
@@ -30,27 +30,13 @@ public:
                                        Jacobian& jacobian) = 0;
 
     // The last successful solve per element (contact/solved_contact.hpp):
-    // pointers into the model's arrays, made when asked for. The exports
-    // below read it; the march models (march/) export their own layout and
-    // hand out an empty view.
-    virtual SolvedContact solved() const { return {}; }
+    // pointers into the model's arrays, made when asked for, in the rows
+    // or the strips layout. Its one export (export_field, export_state,
+    // export_profile) gives the fields in the caller's layout; the caller
+    // checks that there is a solve, and that it was full for fields that
+    // need the work.
+    virtual SolvedContact solved() const = 0;
 
-    // Of the last successful solve (the caller checks that there is one,
-    // and that it was full for fields that need the work), in the caller's
-    // layout [i + j*nx] (contact/fields.hpp).
-    virtual void copy_field(Field f, double* out) const { export_field(solved(), f, out); }
-    virtual void add_field(Field f, double scale, double* out) const // out += scale * f
-    {
-        creepwork::add_field(solved(), f, scale, out);
-    }
-    virtual void copy_state(int* out) const { export_state(solved(), out); }
-    // Per strip j < ny: centre y [m], energy-consistent work per unit width
-    // [J/m per m], and the equal-area parabola of total W at y; null
-    // pointers are skipped.
-    virtual void copy_profile(double W, double* y, double* work, double* parabola) const
-    {
-        export_profile(solved(), W, y, work, parabola);
-    }
     // The separate patches of the last solve, for models that find them
     // (those on a gap grid); null otherwise (the solver reports the contact
     // as one patch).
@@ -59,6 +45,15 @@ public:
     // a gap grid): centre y [m] and width [m]; false otherwise (the solver
     // scales its grid's strips by the last solve's semi-axis b).
     virtual bool copy_strips(double* /*y*/, double* /*width*/) const { return false; }
+
+    // Makes the memory a first solve would make, so that no solve
+    // allocates (Solver::prepare); a model that makes it all when made
+    // does nothing.
+    virtual void prepare() {}
+    // dN/d(approach) [N/m] at the last solve, by a model that solves its own
+    // normal problem on a gap grid (its normal method's, throws as that);
+    // 0 otherwise.
+    virtual double normal_force_by_approach() { return 0.0; }
 
     // The ISA of the model's SIMD kernels (simd/kernel_isa.hpp), supported
     // by this CPU; every ISA gives bitwise the same results. Models without

@@ -91,17 +91,17 @@ void export_with(const SolvedContact& c, Field f, const Op& op, double* out)
 
 } // namespace
 
-void export_field(const SolvedContact& c, Field f, double* out)
+void export_rows(const SolvedContact& c, Field f, double* out)
 {
     export_with(c, f, StoreField{}, out);
 }
 
-void add_field(const SolvedContact& c, Field f, double scale, double* out)
+void add_rows(const SolvedContact& c, Field f, double scale, double* out)
 {
     export_with(c, f, AddScaledField{scale}, out);
 }
 
-void export_state(const SolvedContact& c, int* out)
+void export_rows_state(const SolvedContact& c, int* out)
 {
     for (int j = 0; j < c.ny; ++j)
         for (int i = 0; i < c.nx; ++i) out[i + static_cast<size_t>(c.nx) * j] = c.state[c.index(i, j)];
@@ -110,7 +110,7 @@ void export_state(const SolvedContact& c, int* out)
 void export_profile(const SolvedContact& c, double W, double* y, double* work, double* parabola)
 {
     for (int j = 0; j < c.ny; ++j) {
-        const double yj = c.y_row[j];
+        const double yj = c.y(j);
         if (y) y[j] = yj;
         if (work) work[j] = c.profile[j];
         if (parabola) parabola[j] = lateral_parabola(W, c.profile_b, yj - c.profile_y_mid);

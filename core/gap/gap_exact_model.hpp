@@ -84,7 +84,7 @@ public:
     const GapExactSolveInfo& info() const { return info_; }
     // dN/d(approach) [N/m] at the last solve, its normal method's own
     // (GapNormal::force_by_approach; throws as that).
-    double normal_force_by_approach() { return normal_.force_by_approach(); }
+    double normal_force_by_approach() override { return normal_.force_by_approach(); }
 
     // The last successful solve (gap_exact_fields.cpp); the profile's
     // parabola spans the contact's lateral extent (centred on it),

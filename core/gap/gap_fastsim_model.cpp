@@ -21,7 +21,7 @@ constexpr double kPi = 3.14159265358979323846;
 namespace {
 
 // FASTSIM solves mostly by the semi-Hertzian method: the exact normal
-// problem's memory is made on its first use (or by prepare_half_space).
+// problem's memory is made on its first use (or by prepare()).
 GapNormalOptions fastsim_normal_options()
 {
     GapNormalOptions o;

@@ -86,10 +86,10 @@ public:
     const std::vector<GapMarchPatch>& march_patches() const { return march_patches_; }
     // dN/d(approach) [N/m] at the last solve, its normal method's own
     // (GapNormal::force_by_approach; throws as that).
-    double normal_force_by_approach() { return normal_.force_by_approach(); }
+    double normal_force_by_approach() override { return normal_.force_by_approach(); }
     // The exact normal problem's memory is made on its first solve by the
     // exact method, or by this (Solver::prepare), so that no solve allocates.
-    void prepare_half_space() { normal_.prepare_half_space(); }
+    void prepare() override { normal_.prepare_half_space(); }
 
 private:
     void validate(const ContactInput& in) const;

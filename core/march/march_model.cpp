@@ -94,14 +94,38 @@ SolveTotals MarchModel::totals(const ContactInput& input, SolveMode mode, ModelK
     return t;
 }
 
-void MarchModel::copy_profile(double W, double* y, double* work, double* parabola) const
+SolvedContact MarchModel::solved() const
 {
-    for (int j = 0; j < grid_->ny(); ++j) {
-        const double yj = setup_.b * grid_->y_centre()[j];
-        if (y) y[j] = yj;
-        if (work) work[j] = work_.profile[j];
-        if (parabola) parabola[j] = equal_area_parabola(W, setup_.b, yj);
-    }
+    const ContactGrid& g = *grid_;
+    SolvedContact c;
+    c.nx = g.nx();
+    c.ny = g.ny();
+    c.layout = SolvedLayout::strips;
+    c.mirrored = setup_.direction > 0; // the march starts at the leading edge
+    c.direction = setup_.direction;
+    c.pressure = bound_;
+    c.pressure_scale = setup_.pressure_scale;
+    c.traction_scale = setup_.traction_scale;
+    c.work_paper = work_.paper.data();
+    c.work_consistent = work_.consistent.data();
+    c.profile = work_.profile.data();
+    c.profile_b = setup_.b;
+    SolvedStrips& s = c.strips;
+    s.stride = geometry_.stride;
+    s.a = setup_.a;
+    s.b = setup_.b;
+    s.x_centre = geometry_.x_centre.data();
+    s.inside = geometry_.inside.data();
+    s.y_centre = g.y_centre().data();
+    s.x_length = g.x_length().data();
+    s.y_width = g.y_width().data();
+    s.qx = state_.qx.data();
+    s.qy = state_.qy.data();
+    s.factor = state_.factor.data();
+    s.slip_x = work_.slip_x.data();
+    s.slip_y = work_.slip_y.data();
+    s.isa = isa_;
+    return c;
 }
 
 } // namespace creepwork

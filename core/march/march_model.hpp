@@ -6,8 +6,9 @@
 // march() or march_with_work() and its own Jacobian march, then totals().
 //
 // The fields are not stored in the caller's layout: the march keeps the trial
-// traction q' and the factor f (p' = f q') in march order, and each field is
-// computed from them while it is copied out (march_fields.cpp).
+// traction q' and the factor f (p' = f q') in march order, handed out as the
+// view's strips layout (solved(), contact/solved_contact.hpp), and each field
+// is computed from them while it is copied out (contact/solved_strips.cpp).
 #pragma once
 
 #include <memory>
@@ -30,10 +31,7 @@ public:
     // Throws Error(invalid_input) when this CPU cannot run isa.
     void set_kernel_isa(KernelIsa isa) override;
 
-    void copy_field(Field f, double* out) const override;
-    void add_field(Field f, double scale, double* out) const override;
-    void copy_state(int* out) const override;
-    void copy_profile(double W, double* y, double* work, double* parabola) const override;
+    SolvedContact solved() const override;
 
 protected:
     explicit MarchModel(const GridSpec& grid); // on a grid of its own
@@ -67,9 +65,6 @@ protected:
     MarchState& march_state() { return state_; }
 
 private:
-    template <class Op>
-    void export_field(Field f, const Op& op, double* out) const;
-
     std::shared_ptr<const ContactGrid> grid_;
     MarchGeometry geometry_; // the grid in the kernels' layout
     MarchState state_;

@@ -31,12 +31,6 @@ void WorkState::resize(int n_elements, int ny)
     ratio.setZero(stride);
 }
 
-double equal_area_parabola(double W, double b, double y)
-{
-    const double r = 1.0 - (y / b) * (y / b);
-    return r > 0.0 ? 0.75 * W / b * r : 0.0; // b > 0: nothing to trap
-}
-
 namespace {
 
 // Everything the work pass reads and writes besides the march's view (its
@@ -239,7 +233,7 @@ double put_losses_on_trailing_elements(const MarchGeometry& geo, WorkState& w)
 
 // The profile and its distance to the equal-area parabola. Written without
 // library calls (fmax is not inlined); the ternaries are fmax for the
-// non-NaN values met here, the parabola is equal_area_parabola() with its
+// non-NaN values met here, the parabola is lateral_parabola() (contact/solved_contact.hpp) with its
 // per-call constant 0.75 W / b hoisted.
 void lateral_profile(const MarchGeometry& geo, const ContactGrid& grid, const ModelSetup& s,
                      double W, WorkState& w, WorkTotals& t)

@@ -76,7 +76,4 @@ WorkTotals distribute_work(const MarchGeometry& geometry, const ContactGrid& gri
                            const ModelSetup& setup, double W_macro, WorkState& work,
                            KernelIsa isa);
 
-// Equal-area parabola of a lateral profile over [-b, b]: (3 W / 4b)(1 - y^2/b^2).
-double equal_area_parabola(double W, double b, double y);
-
 } // namespace creepwork

@@ -130,13 +130,13 @@ const cw::KernelIsa kIsas[] = {cw::KernelIsa::baseline, cw::KernelIsa::avx2,
 std::vector<double> field(const PatchModel& model, cw::Field f)
 {
     std::vector<double> out(static_cast<size_t>(kNx) * kNy);
-    model.copy_field(f, out.data());
+    cw::export_field(model.solved(), f, out.data());
     return out;
 }
 std::vector<int> states(const PatchModel& model)
 {
     std::vector<int> out(static_cast<size_t>(kNx) * kNy);
-    model.copy_state(out.data());
+    cw::export_state(model.solved(), out.data());
     return out;
 }
 
@@ -278,13 +278,13 @@ void ellipse_given_as_a_contact_is_the_ellipse(void**)
         const size_t n = static_cast<size_t>(spec.nx) * spec.ny;
         std::vector<double> fa(n), fb(n);
         for (int f = 0; f <= static_cast<int>(cw::Field::work_consistent); ++f) {
-            given.copy_field(static_cast<cw::Field>(f), fa.data());
-            fastsim.copy_field(static_cast<cw::Field>(f), fb.data());
+            cw::export_field(given.solved(), static_cast<cw::Field>(f), fa.data());
+            cw::export_field(fastsim.solved(), static_cast<cw::Field>(f), fb.data());
             assert_memory_equal(fa.data(), fb.data(), n * sizeof(double));
         }
         std::vector<int> sa(n), sb(n);
-        given.copy_state(sa.data());
-        fastsim.copy_state(sb.data());
+        cw::export_state(given.solved(), sa.data());
+        cw::export_state(fastsim.solved(), sb.data());
         assert_memory_equal(sa.data(), sb.data(), n * sizeof(int));
         assert_true(b.n_slip > 0 && b.n_slip < b.n_contact);
     }

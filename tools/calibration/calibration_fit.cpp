@@ -14,7 +14,7 @@ namespace cw = creepwork;
 namespace {
 
 // The totals of a full solve and the energy-consistent map that solved
-// (a Solver or a CalibratedModel: both have grid() and copy_field()).
+// (a Solver or a CalibratedModel: both have grid() and solved()).
 template <class Solved>
 ModelResult result_of(const cw::SolveTotals& t, const Solved& solved)
 {
@@ -25,7 +25,7 @@ ModelResult result_of(const cw::SolveTotals& t, const Solved& solved)
     r.W = t.W_macro;
     r.adhesion_fraction = t.adhesion_fraction;
     r.work_map.resize(size_t(solved.grid().nx()) * solved.grid().ny());
-    solved.copy_field(cw::Field::work_consistent, r.work_map.data());
+    cw::export_field(solved.solved(), cw::Field::work_consistent, r.work_map.data());
     return r;
 }
 

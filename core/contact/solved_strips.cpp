@@ -1,10 +1,10 @@
-// Field export of the models built on the march (march_model.hpp): each
-// field is computed from the march's (q', f) while it is copied into the
-// caller's layout.
+// The field export of the view's strips layout (solved_contact.hpp: the
+// march models'): each field is computed from the march's (q', f) while it
+// is copied into the caller's layout.
 #include <cstring>
 #include <type_traits>
 
-#include "march/march_model.hpp"
+#include "contact/solved_contact.hpp"
 #include "simd/simd.hpp"
 
 // The vector types below never cross a non-inlined call: their ABI is moot.
@@ -17,8 +17,8 @@ namespace creepwork {
 // ------------------------------------------------------------ field export
 //
 // Element (i, j) of the caller's layout [i + j*nx] is kernel element (m, j)
-// at [m*stride + j], with m = nx-1-i when rolling towards +x (the march
-// starts at the leading edge x = +a) and m = i otherwise. Each field is a
+// at [m*stride + j], with m = nx-1-i when the view is mirrored (the march
+// rolling towards +x starts at the leading edge x = +a) and m = i otherwise. Each field is a
 // functor evaluated on B consecutive strips of one march row at once (GCC/
 // Clang vector extensions: one source for every kernel ISA; B = 2 for SSE2,
 // 4 otherwise); B rows are transposed in registers and stored as B runs of i.
@@ -40,17 +40,6 @@ CREEPWORK_INLINE V select_below_one(const V& c, const V& x, const V& y)
     return c < V{} + 1.0 ? x : y;
 }
 
-struct ExportArgs {
-    int nx = 0, ny = 0, stride = 0; // per-element arrays are [m * stride + j]
-    bool reverse = false;
-    double d = 0, a = 0, b = 0, ab = 0, T = 0, dT = 0, p0 = 0;
-    const double *x_centre = nullptr, *inside = nullptr, *shape = nullptr; // per element (MarchGeometry)
-    const double *y_centre = nullptr, *x_length = nullptr, *y_width = nullptr; // per strip (ContactGrid)
-    const double *qx = nullptr, *qy = nullptr, *factor = nullptr; // per element (MarchState)
-    const double *slip_x = nullptr, *slip_y = nullptr, *paper = nullptr,
-                 *consistent = nullptr; // per element (WorkState)
-};
-
 // Fields: value at kernel index k (first lane) in strip j (first lane).
 // Each computes exactly what the per-element formula in the comment says.
 struct Scaled { // c * src[k]: x (c = d a), pz (c = p0), sx (c = d)
@@ -71,12 +60,13 @@ struct StripY { // b * Y_j
     CREEPWORK_INLINE V operator()(long, int j) const { return b * load_as<V>(y_centre + j); }
 };
 struct Area { // a b dX_j dY_j inside, 0 outside
-    const ExportArgs* A;
+    const SolvedStrips* S;
+    double ab;
     template <class V>
     CREEPWORK_INLINE V operator()(long k, int j) const
     {
-        const V area = A->ab * load_as<V>(A->x_length + j) * load_as<V>(A->y_width + j);
-        return select_nonzero(load_as<V>(A->inside + k), area, V{});
+        const V area = ab * load_as<V>(S->x_length + j) * load_as<V>(S->y_width + j);
+        return select_nonzero(load_as<V>(S->inside + k), area, V{});
     }
 };
 struct Traction { // scale * (f q'): f q' first, T f alone can underflow
@@ -89,26 +79,27 @@ struct Traction { // scale * (f q'): f q' first, T f alone can underflow
     }
 };
 struct Moment { // d area (x py - y px), tractions on the wheel
-    const ExportArgs* A;
+    const SolvedStrips* S;
+    double T, ab, d;
     template <class V>
     CREEPWORK_INLINE V operator()(long k, int j) const
     {
-        const V f = load_as<V>(A->factor + k);
-        const V px = A->T * (f * load_as<V>(A->qx + k));
-        const V py = A->T * (f * load_as<V>(A->qy + k));
-        const V area = A->ab * load_as<V>(A->x_length + j) * load_as<V>(A->y_width + j);
-        return A->d * area *
-               (A->a * load_as<V>(A->x_centre + k) * py - A->b * load_as<V>(A->y_centre + j) * px);
+        const V f = load_as<V>(S->factor + k);
+        const V px = T * (f * load_as<V>(S->qx + k));
+        const V py = T * (f * load_as<V>(S->qy + k));
+        const V area = ab * load_as<V>(S->x_length + j) * load_as<V>(S->y_width + j);
+        return d * area *
+               (S->a * load_as<V>(S->x_centre + k) * py - S->b * load_as<V>(S->y_centre + j) * px);
     }
 };
 struct State { // CW_STATE_*: 0 exterior, 1 adhesion, 2 slip
-    const ExportArgs* A;
+    const SolvedStrips* S;
     template <class V>
     CREEPWORK_INLINE V operator()(long k, int) const
     {
         const V one = V{} + 1.0;
-        return select_nonzero(load_as<V>(A->inside + k),
-                              select_below_one(load_as<V>(A->factor + k), one + one, one), V{});
+        return select_nonzero(load_as<V>(S->inside + k),
+                              select_below_one(load_as<V>(S->factor + k), one + one, one), V{});
     }
 };
 
@@ -165,12 +156,12 @@ CREEPWORK_INLINE void store_transposed(const Op& op, Out* o, int nx, const Vec<4
 }
 
 template <int B, class F, class Op, class Out>
-CREEPWORK_INLINE void export_grid(const ExportArgs& A, const F& f, const Op& op, Out* out)
+CREEPWORK_INLINE void export_grid(const SolvedContact& c, const F& f, const Op& op, Out* out)
 {
     using V = Vec<B>;
-    const int nx = A.nx, ny = A.ny, stride = A.stride;
+    const int nx = c.nx, ny = c.ny, stride = c.strips.stride;
     const int nxb = nx / B * B, nyb = ny / B * B;
-    const bool reverse = A.reverse;
+    const bool reverse = c.mirrored;
     auto row = [nx, stride, reverse](int i) {
         return static_cast<long>(reverse ? nx - 1 - i : i) * stride;
     };
@@ -196,84 +187,52 @@ CREEPWORK_INLINE void export_grid(const ExportArgs& A, const F& f, const Op& op,
 struct ExportKernel : KernelWidths {
     static constexpr int avx512 = 4;
     template <int B, class Op>
-    CREEPWORK_INLINE static void run(const ExportArgs& A, const Field& f, const Op& op,
+    CREEPWORK_INLINE static void run(const SolvedContact& c, const Field& f, const Op& op,
                                      double* const& out)
     {
+        const SolvedStrips& s = c.strips;
+        const double d = c.direction, T = c.traction_scale;
         switch (f) {
-        case Field::x: export_grid<B>(A, Scaled{A.x_centre, A.d * A.a}, op, out); return;
-        case Field::y: export_grid<B>(A, StripY{A.y_centre, A.b}, op, out); return;
-        case Field::area: export_grid<B>(A, Area{&A}, op, out); return;
-        case Field::pz: export_grid<B>(A, Scaled{A.shape, A.p0}, op, out); return;
-        case Field::px: export_grid<B>(A, Traction{A.qx, A.factor, A.dT}, op, out); return;
-        case Field::py: export_grid<B>(A, Traction{A.qy, A.factor, A.T}, op, out); return;
-        case Field::sx: export_grid<B>(A, Scaled{A.slip_x, A.d}, op, out); return;
-        case Field::sy: export_grid<B>(A, Copied{A.slip_y}, op, out); return;
-        case Field::mz: export_grid<B>(A, Moment{&A}, op, out); return;
-        case Field::work_paper: export_grid<B>(A, Copied{A.paper}, op, out); return;
-        case Field::work_consistent: export_grid<B>(A, Copied{A.consistent}, op, out); return;
+        case Field::x: export_grid<B>(c, Scaled{s.x_centre, d * s.a}, op, out); return;
+        case Field::y: export_grid<B>(c, StripY{s.y_centre, s.b}, op, out); return;
+        case Field::area: export_grid<B>(c, Area{&s, s.a * s.b}, op, out); return;
+        case Field::pz: export_grid<B>(c, Scaled{c.pressure, c.pressure_scale}, op, out); return;
+        case Field::px: export_grid<B>(c, Traction{s.qx, s.factor, d * T}, op, out); return;
+        case Field::py: export_grid<B>(c, Traction{s.qy, s.factor, T}, op, out); return;
+        case Field::sx: export_grid<B>(c, Scaled{s.slip_x, d}, op, out); return;
+        case Field::sy: export_grid<B>(c, Copied{s.slip_y}, op, out); return;
+        case Field::mz: export_grid<B>(c, Moment{&s, T, s.a * s.b, d}, op, out); return;
+        case Field::work_paper: export_grid<B>(c, Copied{c.work_paper}, op, out); return;
+        case Field::work_consistent:
+            export_grid<B>(c, Copied{c.work_consistent}, op, out);
+            return;
         }
     }
 };
 struct StateKernel : KernelWidths {
     static constexpr int avx512 = 4;
     template <int B>
-    CREEPWORK_INLINE static void run(const ExportArgs& A, int* const& out)
+    CREEPWORK_INLINE static void run(const SolvedContact& c, int* const& out)
     {
-        export_grid<B>(A, State{&A}, AssignInt{}, out);
+        export_grid<B>(c, State{&c.strips}, AssignInt{}, out);
     }
 };
 
-ExportArgs export_args(const MarchGeometry& geo, const double* bound, const ContactGrid& g,
-                       const ModelSetup& s, const MarchState& m, const WorkState& w)
-{
-    ExportArgs A;
-    A.nx = g.nx();
-    A.ny = g.ny();
-    A.stride = geo.stride;
-    A.reverse = s.direction > 0;
-    A.d = s.direction;
-    A.a = s.a;
-    A.b = s.b;
-    A.ab = s.a * s.b;
-    A.T = s.traction_scale;
-    A.dT = A.d * A.T;
-    A.p0 = s.pressure_scale;
-    A.x_centre = geo.x_centre.data();
-    A.inside = geo.inside.data();
-    A.shape = bound;
-    A.y_centre = g.y_centre().data();
-    A.x_length = g.x_length().data();
-    A.y_width = g.y_width().data();
-    A.qx = m.qx.data();
-    A.qy = m.qy.data();
-    A.factor = m.factor.data();
-    A.slip_x = w.slip_x.data();
-    A.slip_y = w.slip_y.data();
-    A.paper = w.paper.data();
-    A.consistent = w.consistent.data();
-    return A;
-}
-
 } // namespace
 
-template <class Op>
-void MarchModel::export_field(Field f, const Op& op, double* out) const
+void export_strips(const SolvedContact& c, Field f, double* out)
 {
-    const ExportArgs A = export_args(geometry_, bound_, *grid_, setup_, state_, work_);
-    run_kernel<ExportKernel>(isa_, A, f, op, out);
+    run_kernel<ExportKernel>(c.strips.isa, c, f, Assign{}, out);
 }
 
-void MarchModel::copy_field(Field f, double* out) const { export_field(f, Assign{}, out); }
-
-void MarchModel::add_field(Field f, double scale, double* out) const
+void add_strips(const SolvedContact& c, Field f, double scale, double* out)
 {
-    export_field(f, AddScaled{scale}, out);
+    run_kernel<ExportKernel>(c.strips.isa, c, f, AddScaled{scale}, out);
 }
 
-void MarchModel::copy_state(int* out) const
+void export_strips_state(const SolvedContact& c, int* out)
 {
-    const ExportArgs A = export_args(geometry_, bound_, *grid_, setup_, state_, work_);
-    run_kernel<StateKernel>(isa_, A, out);
+    run_kernel<StateKernel>(c.strips.isa, c, out);
 }
 
 } // namespace creepwork
