@@ -8,48 +8,19 @@
  * results bitwise whatever the law's unread fields hold; every bad input
  * refused naming it; the half-speed plausibility rule. */
 #include "capi_fixtures.h"
+#include "tractcurv_case.h"
 
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
-#define TRACTCURV_N 106.7e3
-#define TRACTCURV_V 10.0
+#define TRACTCURV_N CW_TRACTCURV_N
+#define TRACTCURV_V CW_TRACTCURV_V
 
-/* CONTACT's tractcurv contact (examples/tractcurv.inp, the Eurosprinter
- * wheel of Polach 2005): a = 6.304, b = 12.61 mm as CONTACT prints them,
- * N = 106.7 kN, steel, V = 10 m/s, the parabolic bound carrying N exactly
- * (CONTACT's B=3), on CONTACT's 48 x 44 grid over 1.1 times the semi-axes. */
-static cw_grid tractcurv_grid(void) { return cw_test_grid(CW_GRID_UNIFORM, 48, 44, 1.1); }
-
-static cw_params tractcurv(double xi_x)
-{
-    cw_params p;
-    cw_params_init(&p);
-    p.a = 6.304e-3;
-    p.b = 12.61e-3;
-    p.normal_force = TRACTCURV_N;
-    p.exact_load = 1;
-    p.V = TRACTCURV_V;
-    p.xi_x = xi_x;
-    return p;
-}
-
-/* Series 4's inputs as CONTACT reads them, one to one: L=4 with FKIN 0.1368,
- * FEXP1 0.2232, SABSH1 990 mm/s; M=3 with k0 = 0.54, alpha_inf = 0.02,
- * beta = 0.62. */
-static void series4(cw_params* p)
-{
-    p->friction_law = CW_FRICTION_EXPONENTIAL;
-    p->mu = 0.1368;
-    p->mu_e1 = 0.2232;
-    p->s_h1 = 0.990;
-    p->friction_speed = CW_FRICTION_SPEED_GLOBAL;
-    p->k0 = 0.54;
-    p->alpha_inf = 0.02;
-    p->beta = 0.62;
-}
+static cw_grid tractcurv_grid(void) { return cw_tractcurv_grid(); }
+static cw_params tractcurv(double xi_x) { return cw_tractcurv_params(xi_x); }
+static void series4(cw_params* p) { cw_tractcurv_series4(p, 1); }
 
 /* ---- CONTACT's printed table */
 

@@ -16,25 +16,13 @@
 
 #include "../../cli/json.hpp"
 #include "campaign_test_support.hpp"
+#include "tractcurv_case.h"
 // Last: cmocka defines macros (fail, skip) that clash with the C++ library.
 #include "test_support.h"
 
 using namespace cwtest;
 
 namespace {
-
-cw_params tractcurv(double xi_x)
-{
-    cw_params p;
-    cw_params_init(&p);
-    p.a = 6.304e-3;
-    p.b = 12.61e-3;
-    p.normal_force = 106700;
-    p.exact_load = 1;
-    p.V = 10;
-    p.xi_x = xi_x;
-    return p;
-}
 
 void friction_rows_match_library(void** state)
 {
@@ -57,18 +45,12 @@ void friction_rows_match_library(void** state)
     const auto idx = header_index(records[0]);
     const auto cell = [&](size_t k, const char* column) { return records[k][idx.at(column)]; };
 
-    cw_grid g;
-    cw_grid_init(&g);
-    g.kind = CW_GRID_UNIFORM, g.nx = 48, g.ny = 44, g.box_scale = 1.1;
-    cw_params local = tractcurv(0.004);
-    local.friction_law = CW_FRICTION_EXPONENTIAL;
-    local.mu = 0.1368, local.mu_e1 = 0.2232, local.s_h1 = 0.99;
-    cw_params global = tractcurv(0.02);
-    global.friction_law = CW_FRICTION_EXPONENTIAL;
-    global.mu = 0.1368, global.mu_e1 = 0.2232, global.s_h1 = 0.99;
-    global.friction_speed = CW_FRICTION_SPEED_GLOBAL;
-    global.k0 = 0.54, global.alpha_inf = 0.02, global.beta = 0.62;
-    cw_params polach = tractcurv(0.15);
+    const cw_grid g = cw_tractcurv_grid();
+    cw_params local = cw_tractcurv_params(0.004);
+    cw_tractcurv_series4(&local, 0);
+    cw_params global = cw_tractcurv_params(0.02);
+    cw_tractcurv_series4(&global, 1);
+    cw_params polach = cw_tractcurv_params(0.15);
     assert_int_equal(cw_friction_polach(0.36, 0.38, 0.7, &polach, nullptr, 0), CW_OK);
     const struct {
         size_t row;

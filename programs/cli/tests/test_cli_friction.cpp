@@ -16,6 +16,7 @@
 #include <creepwork/creepwork.h>
 
 #include "cli_checks.hpp"
+#include "tractcurv_case.h"
 // Last: cmocka defines macros (fail, skip) that clash with the C++ library.
 #include "test_support.h"
 
@@ -29,29 +30,8 @@ const std::vector<std::string> kTractcurv = {
     "--exact-load", "--grid", "uniform", "--nx", "48", "--ny", "44", "--box-scale", "1.1",
     "--V", "10"};
 
-cw_params tractcurv(double xi_x)
-{
-    cw_params p;
-    cw_params_init(&p);
-    p.a = 6.304e-3;
-    p.b = 12.61e-3;
-    p.normal_force = 106700;
-    p.exact_load = 1;
-    p.V = 10;
-    p.xi_x = xi_x;
-    return p;
-}
-
-cw_grid tractcurv_grid()
-{
-    cw_grid g;
-    cw_grid_init(&g);
-    g.kind = CW_GRID_UNIFORM;
-    g.nx = 48;
-    g.ny = 44;
-    g.box_scale = 1.1;
-    return g;
-}
+cw_params tractcurv(double xi_x) { return cw_tractcurv_params(xi_x); }
+cw_grid tractcurv_grid() { return cw_tractcurv_grid(); }
 
 void expect_library_bits(const Json& j, const cw_result& lib)
 {
@@ -72,7 +52,7 @@ void friction_json_matches_library(void**)
 {
     // The law at every element, CONTACT's inputs one to one (mu is mu_kin).
     cw_params p = tractcurv(0.004);
-    p.friction_law = CW_FRICTION_EXPONENTIAL, p.mu = 0.1368, p.mu_e1 = 0.2232, p.s_h1 = 0.99;
+    cw_tractcurv_series4(&p, 0);
     Json j = parse_or_fail(cli_ok(with(kTractcurv, {"--xi-x", "0.004", "--friction-law",
                                                     "exponential", "--mu", "0.1368", "--mu-e1",
                                                     "0.2232", "--s-h1", "0.99"}))
@@ -99,8 +79,7 @@ void friction_json_matches_library(void**)
 
     // Series 4: the global slip speed with Spiryagin's reduction, full mode.
     p = tractcurv(0.02);
-    p.friction_law = CW_FRICTION_EXPONENTIAL, p.mu = 0.1368, p.mu_e1 = 0.2232, p.s_h1 = 0.99;
-    p.friction_speed = CW_FRICTION_SPEED_GLOBAL, p.k0 = 0.54, p.alpha_inf = 0.02, p.beta = 0.62;
+    cw_tractcurv_series4(&p, 1);
     const cw_result global = library_solve(tractcurv_grid(), p, CW_SOLVE_FULL);
     j = parse_or_fail(cli_ok(with(kTractcurv, {"--xi-x", "0.02", "--friction-law", "exponential",
                                                "--mu", "0.1368", "--mu-e1", "0.2232", "--s-h1",
