@@ -165,6 +165,85 @@ static void local_law_in_full_sliding(void** state)
     cw_solver_destroy(s);
 }
 
+/* The Jacobian of Fx, Fy, Mz by xi_x, xi_y, phi, N through
+ * cw_solver_solve_jacobian, the law at every element and at the global slip
+ * speed, before the peak (0.4 %) and past it (2 % at every element, 5 % at
+ * the global slip speed, whose peak is series 4's at 2.2 %), with lateral
+ * creepage and spin: against central differences of the same door, the
+ * worst entry relative to its row's scale sum_c |J_rc| scale_c, over the
+ * best of four steps that change no element's state, within 1e-4. Past the
+ * peak dFx/dxi_x > 0 (|Fx| falls), before it < 0. */
+static double jacobian_error(cw_solver* s, const cw_params* p, int mode, const double* J,
+                             int slips)
+{
+    const double scale[4] = {fabs(p->xi_x), fabs(p->xi_x), fabs(p->xi_x) / p->a,
+                             p->normal_force};
+    double best = INFINITY;
+    const double rels[4] = {1e-3, 1e-4, 1e-5, 1e-6};
+    for (int k = 0; k < 4; ++k) {
+        double fd[3][4], worst = 0.0;
+        int changed = 0;
+        for (int c = 0; c < 4; ++c) {
+            cw_params up = *p, down = *p;
+            double* u[4] = {&up.xi_x, &up.xi_y, &up.phi, &up.normal_force};
+            double* d[4] = {&down.xi_x, &down.xi_y, &down.phi, &down.normal_force};
+            *u[c] += rels[k] * scale[c];
+            *d[c] -= rels[k] * scale[c];
+            cw_result a, b;
+            cw_result_init(&a);
+            cw_result_init(&b);
+            assert_status(cw_solver_solve(s, &up, mode, &a), CW_OK);
+            assert_status(cw_solver_solve(s, &down, mode, &b), CW_OK);
+            changed |= a.n_slip != slips || b.n_slip != slips;
+            const double h2 = 2 * rels[k] * scale[c];
+            fd[0][c] = (a.Fx - b.Fx) / h2;
+            fd[1][c] = (a.Fy - b.Fy) / h2;
+            fd[2][c] = (a.Mz - b.Mz) / h2;
+        }
+        for (int r = 0; r < 3; ++r) {
+            double row = 0.0;
+            for (int c = 0; c < 4; ++c) row += fabs(J[4 * r + c]) * scale[c];
+            for (int c = 0; c < 4; ++c)
+                worst = fmax(worst, fabs(J[4 * r + c] - fd[r][c]) * scale[c] / row);
+        }
+        if (!changed) best = fmin(best, worst);
+    }
+    return best;
+}
+
+static void jacobian_across_the_peak(void** state)
+{
+    (void)state;
+    const cw_grid g = tractcurv_grid();
+    cw_solver* s = NULL;
+    assert_status(cw_solver_create(&g, &s, NULL, 0), CW_OK);
+    for (int global = 0; global <= 1; ++global)
+        for (int k = 0; k < 4; ++k) {
+            /* The peak: about 0.5 % at every element, 2.2 % at the global slip speed. */
+            const double xi = k < 2 ? 0.004 : global ? 0.05 : 0.02;
+            const int lateral = k % 2;
+            cw_params p = tractcurv(xi);
+            cw_tractcurv_series4(&p, global);
+            p.xi_y = 0.3 * lateral * xi;
+            p.phi = 0.2 * lateral * xi / p.a;
+            const int mode = global ? CW_SOLVE_FULL : CW_SOLVE_FORCES;
+            cw_result r, plain;
+            cw_result_init(&r);
+            cw_result_init(&plain);
+            double J[CW_JACOBIAN_LEN];
+            assert_status(cw_solver_solve_jacobian(s, &p, mode, &r, J, CW_JACOBIAN_LEN), CW_OK);
+            assert_status(cw_solver_solve(s, &p, mode, &plain), CW_OK);
+            assert_true(r.Fx == plain.Fx && r.Fy == plain.Fy && r.Mz == plain.Mz);
+            const double err = jacobian_error(s, &p, mode, J, r.n_slip);
+            print_message("%s, xi_x %.3f%s: dFx/dxi_x %.6g N, worst relative error %.2e\n",
+                          global ? "global" : "local", xi, lateral ? " with xi_y, phi" : "",
+                          J[0], err);
+            assert_true(err <= 1e-4);
+            if (!lateral) assert_true(k < 2 ? J[0] < 0.0 : J[0] > 0.0);
+        }
+    cw_solver_destroy(s);
+}
+
 /* Polach's (mu0, A, B) written as the exponential law: mu_kin = A mu0,
  * mu_e1 = (1 - A) mu0, s_h1 = ln2 / B (CONTACT's tractcurv: FKIN 0.1368,
  * FEXP1 0.2232, SABSH1 990 mm/s); bad values named. */
@@ -359,6 +438,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(tractcurv_series_3_and_4),
         cmocka_unit_test(local_law_in_full_sliding),
+        cmocka_unit_test(jacobian_across_the_peak),
         cmocka_unit_test(polach_inputs),
         cmocka_unit_test(coulomb_ignores_the_law_fields),
         cmocka_unit_test(bad_inputs_are_named),
