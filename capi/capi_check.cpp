@@ -35,6 +35,10 @@ cw::ContactPlausibility plausibility_of(const cw_grid& g, const cw_params& p)
     c.xi_y = p.xi_y;
     c.phi = p.phi;
     c.V = p.V;
+    if (p.friction_law != CW_FRICTION_COULOMB) {
+        c.s_h1 = p.mu_e1 > 0.0 ? p.s_h1 : 0.0;
+        c.s_h2 = p.mu_e2 > 0.0 ? p.s_h2 : 0.0;
+    }
     c.flexibilities_given = p.flexibility == CW_FLEX_GIVEN;
     c.gap_grid = g.kind == CW_GRID_GAP;
     c.default_geometry = p.a == d.a && p.b == d.b && p.normal_force == d.normal_force;

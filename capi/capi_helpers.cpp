@@ -1,12 +1,15 @@
-// Free functions: Kalker's coefficients and flexibilities, Hertz, Kalker's 1982 normalised FASTSIM.
+// Free functions: Kalker's coefficients and flexibilities, Hertz, Kalker's 1982 normalised
+// FASTSIM, Polach's friction law as the exponential law.
 #include "capi_internal.hpp"
 
 #include <cmath>
+#include <cstddef>
 
 #include "contact/hertz.hpp"
 #include "contact/kalker_coefficients.hpp"
 #include "march/march_setup.hpp"
 #include "fastsim/kalker_normalised.hpp"
+#include "friction/slip_speed_law.hpp"
 
 extern "C" {
 
@@ -27,6 +30,27 @@ int cw_kalker_coefficients(double a_over_b, double nu, double coefficients[4], c
         coefficients[1] = c.C22;
         coefficients[2] = c.C23;
         coefficients[3] = c.C33;
+        return CW_OK;
+    });
+}
+
+int cw_friction_polach(double mu0, double A, double B, cw_params* params, char* message,
+                       size_t message_len)
+{
+    return guarded_free(message, message_len, [&] {
+        require(params, "params");
+        if (params->struct_size < offsetof(cw_params, s_h2) + sizeof params->s_h2)
+            fail(CW_ERR_STRUCT_SIZE, "params->struct_size = " +
+                                         std::to_string(params->struct_size) +
+                                         " ends before the friction law's fields (cw_params_init "
+                                         "sets it)");
+        const cw::SlipSpeedLaw law = cw::polach_law(mu0, A, B); // names mu, polach_A, polach_B
+        params->friction_law = CW_FRICTION_EXPONENTIAL;
+        params->mu = law.mu_kin;
+        params->mu_e1 = law.mu_e1;
+        params->s_h1 = law.s_h1;
+        params->mu_e2 = 0.0;
+        params->s_h2 = 0.0;
         return CW_OK;
     });
 }

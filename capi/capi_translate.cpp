@@ -72,6 +72,10 @@ cw_params default_params()
     p.gap = nullptr;
     p.normal_load = CW_NORMAL_FORCE;
     p.normal_method = CW_NORMAL_EXACT;
+    p.friction_law = CW_FRICTION_COULOMB;
+    p.friction_speed = CW_FRICTION_SPEED_LOCAL;
+    p.k0 = 1.0;
+    p.alpha_inf = 1.0;
     return p;
 }
 
@@ -173,6 +177,29 @@ cw::ContactInput to_input(const cw_params* params)
         fail(CW_ERR_UNKNOWN_OPTION,
              "params->normal_method = " + std::to_string(p.normal_method) +
                  " is not CW_NORMAL_EXACT (0) or CW_NORMAL_SEMI_HERTZ (1)");
+    if (p.friction_law != CW_FRICTION_COULOMB && p.friction_law != CW_FRICTION_LINEAR &&
+        p.friction_law != CW_FRICTION_RATIONAL && p.friction_law != CW_FRICTION_EXPONENTIAL)
+        fail(CW_ERR_UNKNOWN_OPTION, "params->friction_law = " + std::to_string(p.friction_law) +
+                                        " is not CW_FRICTION_COULOMB (0), _LINEAR (2), "
+                                        "_RATIONAL (3) or _EXPONENTIAL (4)");
+    in.friction_law = static_cast<cw::FrictionLaw>(p.friction_law);
+    in.mu_e1 = p.mu_e1;
+    in.s_h1 = p.s_h1;
+    in.mu_e2 = p.mu_e2;
+    in.s_h2 = p.s_h2;
+    if (p.friction_speed == CW_FRICTION_SPEED_LOCAL)
+        in.friction_speed = cw::FrictionSpeed::local;
+    else if (p.friction_speed == CW_FRICTION_SPEED_GLOBAL)
+        in.friction_speed = cw::FrictionSpeed::global;
+    else
+        fail(CW_ERR_UNKNOWN_OPTION,
+             "params->friction_speed = " + std::to_string(p.friction_speed) +
+                 " is not CW_FRICTION_SPEED_LOCAL (0) or CW_FRICTION_SPEED_GLOBAL (1)");
+    in.k0 = p.k0;
+    in.alpha_inf = p.alpha_inf;
+    in.beta = p.beta;
+    in.memory_distance = p.memory_distance;
+    in.memory_s0 = p.memory_s0;
     return in;
 }
 
@@ -233,6 +260,9 @@ cw_result to_result(const cw::SolveTotals& t)
     r.residual = t.residual;
     r.normal_force = t.normal_force;
     r.n_patches = t.n_patches;
+    r.mu_static = t.mu_static;
+    r.mu_min = t.mu_min;
+    r.mu_max = t.mu_max;
     return r;
 }
 

@@ -5,6 +5,9 @@
 
 #include "contact/contact_input.hpp"
 #include "contact/error.hpp"
+#include "fastsim/fastsim_global_slip_model.hpp"
+#include "fastsim/fastsim_law_model.hpp"
+#include "friction/friction_input.hpp"
 
 namespace creepwork {
 namespace {
@@ -30,14 +33,30 @@ struct Registration {
     bool gap_grid; // a gap grid (GridKind::gap), or the ellipse's grids
     ModelKind kind;
     std::unique_ptr<ContactModel> (*make)(const Grid&);
+    const char* name; // in messages
 };
 constexpr Registration kModels[] = {
-    {false, ModelKind::fastsim, &on_shared_grid<FastsimModel>},
-    {false, ModelKind::exact, &on_spec<ExactModel>},
-    {false, ModelKind::calibrated, &on_shared_grid<CalibratedModel>},
-    {true, ModelKind::exact, &on_spec<GapExactModel>},
-    {true, ModelKind::fastsim, &on_spec<GapFastsimModel>},
+    {false, ModelKind::fastsim, &on_shared_grid<FastsimModel>, "FASTSIM"},
+    {false, ModelKind::exact, &on_spec<ExactModel>, "the exact model"},
+    {false, ModelKind::calibrated, &on_shared_grid<CalibratedModel>, "the calibrated model"},
+    {true, ModelKind::exact, &on_spec<GapExactModel>, "the exact model on a gap grid"},
+    {true, ModelKind::fastsim, &on_spec<GapFastsimModel>, "FASTSIM on a gap grid"},
+    // FASTSIM under a law of the slip speed (route() picks them).
+    {false, ModelKind::fastsim_law, &on_shared_grid<FastsimLawModel>,
+     "FASTSIM with the law at every element"},
+    {false, ModelKind::fastsim_global_slip, &on_shared_grid<FastsimGlobalSlipModel>,
+     "FASTSIM at the global slip speed"},
 };
+
+// The model that solves the input: the one it names, or for FASTSIM on
+// the ellipse's grids beyond Coulomb's law the march under the law at each
+// element's slip speed or at the contact's global slip speed.
+ModelKind route(const ContactInput& in, bool gap_grid)
+{
+    if (gap_grid || in.model != ModelKind::fastsim || !beyond_coulomb(in)) return in.model;
+    return in.friction_speed == FrictionSpeed::global ? ModelKind::fastsim_global_slip
+                                                      : ModelKind::fastsim_law;
+}
 
 std::string model_name(ModelKind kind)
 {
@@ -48,7 +67,11 @@ std::unique_ptr<ContactModel> make_model(ModelKind kind, const Grid& grid)
 {
     const bool gap_grid = grid->spec().kind == GridKind::gap;
     for (const Registration& r : kModels)
-        if (r.gap_grid == gap_grid && r.kind == kind) return r.make(grid);
+        if (r.gap_grid == gap_grid && r.kind == kind) {
+            std::unique_ptr<ContactModel> made = r.make(grid);
+            made->set_name(r.name);
+            return made;
+        }
     if (gap_grid)
         throw Error(ErrorKind::invalid_input,
                     "model = " + model_name(kind) +
@@ -161,9 +184,27 @@ const SolveTotals& Solver::solve_impl(const ContactInput& input, SolveMode mode,
     view_made_ = false; // the next read makes the view of this solve
     mode_ = mode;
     validate_grid_input(grid_->spec(), input);
-    ContactModel& m = model(input.model);
+    validate_friction_input(input);
+    const bool gap_grid = grid_->spec().kind == GridKind::gap;
+    ContactModel& m = model(route(input, gap_grid));
+    if (beyond_coulomb(input)) {
+        if (input.friction_speed == FrictionSpeed::global && input.model != ModelKind::fastsim)
+            throw Error(ErrorKind::invalid_input,
+                        "friction_speed: the global slip speed is FASTSIM's (model = fastsim), "
+                        "not " + m.name() + "'s");
+        m.set_law(slip_speed_law(input), input.V);
+    }
+    auto* law_model = dynamic_cast<FastsimLawModel*>(&m);
+    if (input.memory_distance > 0.0 && input.friction_law != FrictionLaw::coulomb && !law_model)
+        throw Error(ErrorKind::invalid_input,
+                    "memory_distance: " + m.name() + " has no friction memory (FASTSIM with "
+                    "friction_speed = local has)");
+    if (law_model) law_model->set_memory(friction_memory(input));
     SolveTotals t = jacobian ? m.solve_jacobian(input, mode, *jacobian) : m.solve(input, mode);
     last_ = &m;
+    t.mu_static = input.mu;
+    if (input.friction_law != FrictionLaw::coulomb) t.mu_static += input.mu_e1 + input.mu_e2;
+    if (!m.friction_range(t.mu_min, t.mu_max)) t.mu_min = t.mu_max = t.mu_static;
 
     const double checks[] = {t.Fx, t.Fy, t.Mz, t.W_macro, t.W_micro_paper, t.K, t.W_consistent,
                              t.balance_factor, t.profile_max_diff, t.profile_rms_diff};

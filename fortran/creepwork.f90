@@ -65,7 +65,7 @@ module creepwork
                                   cw_wear_params_init, cw_wear_result_init, &
                                   cw_wear_profile_totals_init, cw_kalker_coefficients, &
                                   cw_kalker_flexibilities, cw_hertz_solve, cw_fastsim_normalised, &
-                                  cw_wear_profile_update
+                                  cw_wear_profile_update, cw_friction_polach
    use creepwork_checks, only: cw_check_init, cw_params_check, cw_check_text, cw_grid_init_model, &
                                cw_input_name, cw_temperature_params_check, cw_damage_params_check
    use creepwork_solver, only: cw_solver_type

@@ -1,6 +1,7 @@
 ! The free procedures of module creepwork: versions, status messages, the
 ! struct initialisers, Kalker's coefficients and flexibilities, Hertz,
-! Kalker's normalised FASTSIM and the wear-profile update.
+! Kalker's normalised FASTSIM, Polach's friction law and the wear-profile
+! update.
 module creepwork_functions
    use, intrinsic :: iso_c_binding, only: c_int, c_size_t, c_double, c_char, c_null_char
    use creepwork_types
@@ -14,7 +15,7 @@ module creepwork_functions
    public :: cw_grid_init, cw_params_init, cw_result_init, cw_accumulation_init
    public :: cw_wear_params_init, cw_wear_result_init, cw_wear_profile_totals_init
    public :: cw_kalker_coefficients, cw_kalker_flexibilities, cw_hertz_solve
-   public :: cw_fastsim_normalised, cw_wear_profile_update
+   public :: cw_fastsim_normalised, cw_wear_profile_update, cw_friction_polach
 
 contains
 
@@ -147,6 +148,23 @@ contains
       if (present(errmsg)) call set_errmsg(o, errmsg)
       call deliver(o, stat)
    end subroutine cw_hertz_solve
+
+   ! Polach's friction law mu0 [(1 - A) exp(-B s) + A] (B [s/m]) written into
+   ! params as the exponential law: mu = A mu0, mu_e1 = (1 - A) mu0,
+   ! s_h1 = ln2 / B (see the header).
+   subroutine cw_friction_polach(mu0, A, B, params, stat, errmsg)
+      real(c_double), intent(in) :: mu0, A, B
+      type(cw_params), intent(inout), target :: params
+      integer, intent(out), optional :: stat
+      character(len=:), allocatable, intent(out), optional :: errmsg
+      character(kind=c_char) :: buffer(message_capacity)
+      type(outcome) :: o
+      buffer(1) = c_null_char
+      o = buffer_outcome(capi_friction_polach(mu0, A, B, params, buffer, &
+                                            size(buffer, kind=c_size_t)), buffer)
+      if (present(errmsg)) call set_errmsg(o, errmsg)
+      call deliver(o, stat)
+   end subroutine cw_friction_polach
 
    ! Kalker's original normalised FASTSIM (1982): tx, ty are the forces on
    ! the rail divided by mu N (the sign of the creepages). See the header.

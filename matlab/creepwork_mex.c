@@ -1039,6 +1039,14 @@ void mexFunction(int nlhs, mxArray* plhs[], int nrhs, const mxArray* prhs[])
         const double* v = mxGetPr(a1);
         status = cw_hertz_solve(v[0], v[1], v[2], v[3], h, message, sizeof message);
         if (status == CW_OK) plhs[0] = row(h, 4);
+    } else if (strcmp(command, "friction_polach") == 0) { /* [mu0 A B] -> params with the law */
+        if (!a1 || mxGetNumberOfElements(a1) != 3 || !mxIsDouble(a1))
+            FAIL("badValue", "polach takes [mu0, A, B] (B in s/m)");
+        const double* v = mxGetPr(a1);
+        cw_params p;
+        cw_params_init(&p);
+        status = cw_friction_polach(v[0], v[1], v[2], &p, message, sizeof message);
+        if (status == CW_OK) plhs[0] = from_structs(&PARAMS, &p, sizeof p, 1, NULL, 0, NULL);
     } else if (strcmp(command, "fastsim_normalised") == 0) { /* [ux uy fx fy mx my tol] */
         if (!a1 || mxGetNumberOfElements(a1) != 7 || !mxIsDouble(a1))
             FAIL("badValue", "fastsim_normalised takes [ux, uy, fx, fy, mx, my, tol]");

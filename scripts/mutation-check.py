@@ -874,6 +874,31 @@ MUTANTS += [
          new="        const LocalLaw local{law_, law_.coefficient(0.0), V_};",
          tests=EXACT_LAW, require=EXACT_LAW),
 ]
+# The friction law through the doors: CONTACT's tractcurv rows and Polach's
+# closed form through the C ABI, Python, Fortran, the CLI and campaigns.
+FRICTION_DOORS = [
+    "test_capi_friction", "python_test_friction", "test_fortran_friction",
+    "cli_friction_json_matches_library", "campaign_friction_rows_match_library",
+]
+MUTANTS += [
+    dict(id="friction-route-swapped", what="the local and the global slip speed's routes swapped",
+         file="core/solver.cpp",
+         old="    return in.friction_speed == FrictionSpeed::global ? ModelKind::fastsim_global_slip",
+         new="    return in.friction_speed != FrictionSpeed::global ? ModelKind::fastsim_global_slip",
+         tests=FRICTION_DOORS),
+    dict(id="friction-translate-half-speed", what="the C ABI reads s_h2 for s_h1",
+         file="capi/capi_translate.cpp",
+         old="    in.s_h1 = p.s_h1;", new="    in.s_h1 = p.s_h2;", tests=FRICTION_DOORS),
+    dict(id="friction-polach-mu", what="cw_friction_polach writes (1 - A) mu0 as mu",
+         file="capi/capi_helpers.cpp",
+         old="        params->mu = law.mu_kin;", new="        params->mu = law.mu_e1;",
+         tests=FRICTION_DOORS),
+    dict(id="friction-half-speed-rule", what="the half-speed rule reads s_h2 for s_h1",
+         file="core/contact/plausibility.cpp",
+         old='    {CheckRule::half_speed, "s_h1", "m/s", kHalfSpeed, [](const C& c) { return c.s_h1; },',
+         new='    {CheckRule::half_speed, "s_h1", "m/s", kHalfSpeed, [](const C& c) { return c.s_h2; },',
+         tests=["test_capi_friction", "python_test_friction"]),
+]
 # -------------------------------------------------------------- end friction
 
 def run(cmd, cwd=None, quiet=True):

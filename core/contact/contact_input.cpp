@@ -78,6 +78,38 @@ void validate_friction_input(const ContactInput& in)
     require_finite("V", in.V);
     if (!(in.V >= 0.0))
         reject_input("V", in.V, "must be >= 0 (the rolling speed [m/s]; 0: not given)");
+    // Coulomb's law reads none of the rest: its defaults are never checked,
+    // so a caller's params cut before them solve as they always did.
+    const FrictionLaw law = in.friction_law;
+    if (law != FrictionLaw::coulomb && law != FrictionLaw::linear &&
+        law != FrictionLaw::rational && law != FrictionLaw::exponential)
+        reject_input("friction_law", static_cast<double>(law),
+                     "must be coulomb (0), linear (2), rational (3) or exponential (4)");
+    if (in.friction_speed != FrictionSpeed::local && in.friction_speed != FrictionSpeed::global)
+        reject_input("friction_speed", static_cast<double>(in.friction_speed),
+                     "must be local (0) or global (1)");
+    if (law != FrictionLaw::coulomb) {
+        require_non_negative("mu_e1", in.mu_e1);
+        require_non_negative("mu_e2", in.mu_e2);
+        if (in.mu_e1 > 0.0) require_positive("s_h1", in.s_h1);
+        if (in.mu_e2 > 0.0) require_positive("s_h2", in.s_h2);
+        if (!(in.V > 0.0))
+            reject_input("V", in.V,
+                         "must be > 0 (the rolling speed [m/s]): a friction law of the slip "
+                         "speed needs it");
+    }
+    if (in.friction_speed == FrictionSpeed::global) {
+        require_positive("k0", in.k0);
+        require_finite("alpha_inf", in.alpha_inf);
+        if (!(in.alpha_inf >= 0.0 && in.alpha_inf <= 1.0))
+            reject_input("alpha_inf", in.alpha_inf, "must lie in [0, 1]");
+        require_non_negative("beta", in.beta);
+    }
+    require_non_negative("memory_distance", in.memory_distance);
+    require_non_negative("memory_s0", in.memory_s0);
+    if (in.memory_distance > 0.0 && in.friction_speed != FrictionSpeed::local)
+        reject_input("memory_distance", in.memory_distance,
+                     "friction memory needs friction_speed = local (each element's slip speed)");
 }
 
 void validate_grid_input(const GridSpec& grid, const ContactInput& in)

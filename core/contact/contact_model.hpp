@@ -5,8 +5,11 @@
 // solved last, whose view (solved()) it exports.
 #pragma once
 
+#include <string>
+#include <utility>
 #include <vector>
 
+#include "contact/error.hpp"
 #include "contact/fields.hpp"
 #include "contact/jacobian.hpp"
 #include "contact/params.hpp"
@@ -14,6 +17,10 @@
 #include "simd/kernel_isa.hpp"
 
 namespace creepwork {
+
+// A friction law of the slip speed (friction/slip_speed_law.hpp, a layer
+// above): declared only, the interface passes it on by reference.
+struct SlipSpeedLaw;
 
 class ContactModel {
 public:
@@ -37,6 +44,24 @@ public:
     // need the work.
     virtual SolvedContact solved() const = 0;
 
+    // The friction law of the slip speed and the rolling speed V [m/s] > 0
+    // that the next solves use (the solver sets it before each solve of an
+    // input beyond Coulomb's law). A model that takes only Coulomb's law
+    // refuses it by name.
+    virtual void set_law(const SlipSpeedLaw& /*law*/, double /*V*/)
+    {
+        throw Error(ErrorKind::invalid_input,
+                    "friction_law: " + name_ + " takes Coulomb's law only");
+    }
+    // The smallest and largest friction coefficient of the last solve over
+    // its slipping elements, for a model under a law of the slip speed;
+    // false for a model that holds one mu.
+    virtual bool friction_range(double& /*mu_min*/, double& /*mu_max*/) const { return false; }
+    // The model's name in messages ("the exact model"), set by the solver
+    // that makes it.
+    void set_name(std::string name) { name_ = std::move(name); }
+    const std::string& name() const { return name_; }
+
     // The separate patches of the last solve, for models that find them
     // (those on a gap grid); null otherwise (the solver reports the contact
     // as one patch).
@@ -59,6 +84,9 @@ public:
     // by this CPU; every ISA gives bitwise the same results. Models without
     // such kernels ignore it.
     virtual void set_kernel_isa(KernelIsa) {}
+
+private:
+    std::string name_ = "this model";
 };
 
 } // namespace creepwork

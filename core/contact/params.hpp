@@ -22,6 +22,26 @@ enum class ModelKind {
     fastsim = 0,    // Kalker's simplified theory, FASTSIM (fastsim/)
     exact = 1,      // Kalker's exact half-space theory on CONTACT's uniform grid (exact/)
     calibrated = 2, // simplified theory calibrated to the exact one (calibrated/)
+    // The solver's own routes, never an input: FASTSIM under a law of the
+    // slip speed at every element (fastsim/fastsim_law_model.hpp) and at the
+    // contact's global slip speed (fastsim/fastsim_global_slip_model.hpp).
+    fastsim_law = 16,
+    fastsim_global_slip = 17,
+};
+
+// The friction law, in CONTACT's L-digit numbering (friction/slip_speed_law.hpp).
+enum class FrictionLaw {
+    coulomb = 0,     // mu at every slip speed
+    linear = 2,      // mu + sum mu_ek max(0, 1 - s / (2 s_hk))
+    rational = 3,    // mu + mu_e1 / (1 + s/s_h1) + mu_e2 / (1 + (s/s_h2)^2)
+    exponential = 4, // mu + sum mu_ek exp(-ln2 s / s_hk)
+};
+
+// Where FASTSIM takes the slip speed of a law.
+enum class FrictionSpeed {
+    local = 0,  // each element's own slip speed
+    global = 1, // the contact's rigid slip speed V |(xi_x, xi_y)| (CONTACT's FASTSIM), with
+                // Spiryagin's slope reduction k0, alpha_inf, beta
 };
 
 enum class FlexibilitySource {
@@ -101,7 +121,27 @@ struct ContactInput {
     NormalLoad normal_load = NormalLoad::force;
     double approach = 0.0;     // [m] from the gap's datum h = 0, when prescribed
     NormalMethod normal_method = NormalMethod::exact;
+    // The friction law of the slip speed s = |micro-slip| V. mu is its
+    // kinetic coefficient mu_kin (the value at large s); the static one is
+    // mu + mu_e1 + mu_e2. A term with mu_ek = 0 is absent.
+    FrictionLaw friction_law = FrictionLaw::coulomb;
+    double mu_e1 = 0.0, s_h1 = 0.0; // [-] >= 0, [m/s] > 0 when mu_e1 > 0
+    double mu_e2 = 0.0, s_h2 = 0.0; // [-] >= 0, [m/s] > 0 when mu_e2 > 0
+    FrictionSpeed friction_speed = FrictionSpeed::local;
+    // Spiryagin's slope reduction (friction_speed global): k0 > 0, alpha_inf
+    // in [0, 1], beta >= 0; k0 = alpha_inf = 1 is none.
+    double k0 = 1.0, alpha_inf = 1.0, beta = 0.0;
+    // Friction memory (friction_speed local): the distance d_c [m] >= 0 (0:
+    // none) and the background slip speed s0 [m/s] >= 0.
+    double memory_distance = 0.0, memory_s0 = 0.0;
 };
+
+// Whether the input asks for more than Coulomb's law at every element (a
+// law of the slip speed, the global slip speed, friction memory).
+inline bool beyond_coulomb(const ContactInput& in)
+{
+    return in.friction_law != FrictionLaw::coulomb || in.friction_speed != FrictionSpeed::local;
+}
 
 // Flags in SolveTotals::work_flags.
 constexpr int kWorkUnresolved = 1;   // no slip element: released energy put on trailing elements
@@ -132,6 +172,10 @@ struct SolveTotals {
     double normal_force = 0;              // total normal force [N] (gap grid: found
                                           // when the approach is prescribed)
     // (n_patches fills the gap after iterations: tests compare the bytes.)
+    // The friction coefficient: at rest (mu + mu_e1 + mu_e2; Coulomb's mu),
+    // and the smallest and largest over the slipping elements (the static
+    // one when none slips; the contact's mu(w) at its global slip speed).
+    double mu_static = 0, mu_min = 0, mu_max = 0;
 };
 
 // What one separate patch of a contact carries (normal/patches.hpp finds

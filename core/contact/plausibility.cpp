@@ -16,6 +16,8 @@ const char* const kFlex =
     "Kalker's flexibilities of steel contacts are ~5e-14 m/Pa (mm^3/N are 1e-9 m^3/N)";
 const char* const kCreepage =
     "creepages are ratios, usually below 0.02 (a per cent typed as a ratio?)";
+const char* const kHalfSpeed =
+    "friction halves over 0.1-10 m/s of slip speed, not above 50 m/s (mm/s typed as m/s?)";
 const char* const kSpacing =
     "gap cells are 0.05-1 mm (a gap grid in millimetres typed as metres?)";
 
@@ -88,6 +90,12 @@ const Row kRows[] = {
      [](const C& c) { return c.phi; }, [](const C&, double v) { return std::fabs(v) > 50.0; }},
     {CheckRule::speed, "V", "m/s", "rail vehicles run below 150 m/s (km/h typed as m/s?)",
      [](const C& c) { return c.V; }, [](const C&, double v) { return v > 150.0; }},
+    // CONTACT's examples and the measured laws halve mu over 0.1-10 m/s of
+    // slip; a half speed in mm/s typed as m/s gives 100-10000.
+    {CheckRule::half_speed, "s_h1", "m/s", kHalfSpeed, [](const C& c) { return c.s_h1; },
+     [](const C&, double v) { return v > 50.0; }},
+    {CheckRule::half_speed, "s_h2", "m/s", kHalfSpeed, [](const C& c) { return c.s_h2; },
+     [](const C&, double v) { return v > 50.0; }},
     {CheckRule::gap_spacing, "dx", "m", kSpacing, [](const C& c) { return c.dx; },
      [](const C& c, double v) { return c.gap_grid && (v > 5e-3 || (v > 0.0 && v < 1e-6)); }},
     {CheckRule::gap_spacing, "dy", "m", kSpacing, [](const C& c) { return c.dy; },

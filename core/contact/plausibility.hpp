@@ -26,6 +26,7 @@ enum class CheckRule {
     gap_heights = 9,      // a gap spanning more than 10 mm
     approach = 10,        // |approach| above 1 mm
     default_geometry = 11, // a, b and N all at cw_params_init's values
+    half_speed = 12,      // a friction law's s_h1, s_h2 above 50 m/s
     wheelset_shift = 20,  // |y| above 20 mm
     wheelset_angle = 21,  // |roll|, |yaw| above 0.05 rad
     patch_element = 22,   // dx, ds above 5 mm
@@ -67,6 +68,8 @@ struct ContactPlausibility {
     double a = 0, b = 0, normal_force = 0, mu = 0, G = 0;
     double L1 = 0, L2 = 0, L3 = 0, xi_x = 0, xi_y = 0, phi = 0;
     double V = 0; // the rolling speed [m/s] (0: not given)
+    // A friction law's half speeds [m/s] (0: no law, or the term absent).
+    double s_h1 = 0, s_h2 = 0;
     bool flexibilities_given = false;
     // A contact of any shape (a gap grid): a and b are not used, the
     // spacing and the gap's heights are.

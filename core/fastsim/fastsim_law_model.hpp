@@ -27,7 +27,7 @@ public:
 
     // The law and the rolling speed V [m/s] > 0 the next solves use; throws
     // Error(invalid_input) naming the input (the law's parameters, V).
-    void set_law(const SlipSpeedLaw& law, double V);
+    void set_law(const SlipSpeedLaw& law, double V) override;
     // Friction memory along each strip (friction_memory.hpp; distance 0: none,
     // the default): every element's coefficient is mu_m of its slip speed,
     // the previous element's mu and dt = h / V, adhering elements' too
@@ -49,6 +49,12 @@ public:
 
     // Over the slipping elements of the last solve (mu_s when none slips):
     // the smallest and largest coefficient, and the Newton steps of all.
+    bool friction_range(double& mu_min, double& mu_max) const override
+    {
+        mu_min = mu_min_;
+        mu_max = mu_max_;
+        return true;
+    }
     double mu_min() const { return mu_min_; }
     double mu_max() const { return mu_max_; }
     int friction_iterations() const { return iterations_; }

@@ -33,6 +33,9 @@ function [p, opt] = inputs(varargin)
       p.(name) = rest{k + 1};
     end
   end
+  if isfield(p, 'polach')
+    p = polach_law(p);
+  end
   if isempty(opt.grid) && isfield(p, 'model') && is_exact(p.model)
     opt.grid = creepwork.call('model_grid', 'exact');
   end
@@ -44,5 +47,22 @@ function yes = is_exact(model)
   else
     c = creepwork.constants();
     yes = ~isempty(model) && all(model(:) == c.CW_MODEL_EXACT);
+  end
+end
+
+% 'polach', [mu0 A B] (B in s/m): the fields the library's cw_friction_polach
+% writes (the exponential law: mu = A mu0, mu_e1 = (1 - A) mu0, s_h1 = ln2/B).
+function p = polach_law(p)
+  names = {'friction_law', 'mu', 'mu_e1', 's_h1', 'mu_e2', 's_h2'};
+  for k = 1:numel(names)
+    if isfield(p, names{k})
+      error('creepwork:usage', 'polach sets the friction law and mu: %s cannot be given with it', ...
+            names{k});
+    end
+  end
+  law = creepwork.call('friction_polach', double(p.polach));
+  p = rmfield(p, 'polach');
+  for k = 1:numel(names)
+    p.(names{k}) = law.(names{k});
   end
 end

@@ -34,6 +34,9 @@ the columns of `creepwork wear` and the options of `creepwork solve`
   optional  model fastsim|exact|calibrated, grid kalker_strips|uniform, nx, ny,
             box_scale, mu, V (m/s), G, nu, L1, L2, L3 (m/Pa, instead of G
             and nu), xi_x, xi_y, phi (or spin), pressure (parabolic|elliptic),
+            friction_law (coulomb|linear|rational|exponential|polach), mu_e1,
+            s_h1, mu_e2, s_h2 (m/s), polach_A, polach_B (s/m), friction_speed
+            (local|global), k0, alpha_inf, beta, memory_distance, memory_s0,
             rolling_direction (+1|-1), spin_offset, flexibility_blending
             (0|1), exact_load (0|1), tolerance, max_iterations (exact
             model); s0, distance (m; carried to results.csv)

@@ -81,6 +81,42 @@ cw_batch* ChunkSolver::batch_for(const cw_grid& grid, int& status, std::string& 
     return batch;
 }
 
+void ChunkSolver::solve_rows(cw_batch* batch, const Chunk& chunk, const std::vector<size_t>& rows,
+                             int mode, std::vector<Outcome>& out)
+{
+    const size_t m = rows.size();
+    if (m == 0) return;
+    params_.resize(m);
+    results_.resize(m);
+    statuses_.assign(m, CW_OK);
+    for (size_t k = 0; k < m; ++k) {
+        const ContactCase& c = chunk.cases[rows[k]];
+        params_[k] = c.params;
+        // A gap row's values travel with the chunk, which outlives the solve.
+        if (c.gap_values) {
+            params_[k].gap = c.gap_values->data();
+            params_[k].gap_len = c.gap_values->size();
+        }
+        cw_result_init(&results_[k]);
+    }
+    cw_batch_solve(batch, m, params_.data(), mode, results_.data(), statuses_.data());
+    for (size_t k = 0; k < m; ++k) {
+        Outcome& o = out[rows[k]];
+        o.status = statuses_[k];
+        o.result = results_[k];
+        if (o.status == CW_OK) continue;
+        // The batch keeps only the first failure's message: solve the
+        // row alone to get its own (same status; the library is
+        // deterministic, and a failing row is usually rejected at once).
+        cw_result scratch;
+        cw_result_init(&scratch);
+        const int again = cw_batch_solve(batch, 1, &params_[k], mode, &scratch, nullptr);
+        o.message = again == o.status ? without_index(cw_batch_last_error(batch))
+                                      : cw_status_string(o.status);
+        cw_result_init(&o.result);
+    }
+}
+
 std::vector<Outcome> ChunkSolver::solve(const Chunk& chunk)
 {
     const size_t n = chunk.cases.size();
@@ -110,36 +146,17 @@ std::vector<Outcome> ChunkSolver::solve(const Chunk& chunk)
             }
             continue;
         }
-        const size_t m = rows.size();
-        params_.resize(m);
-        results_.resize(m);
-        statuses_.assign(m, CW_OK);
-        for (size_t k = 0; k < m; ++k) {
-            const ContactCase& c = chunk.cases[rows[k]];
-            params_[k] = c.params;
-            // A gap row's values travel with the chunk, which outlives the solve.
-            if (c.gap_values) {
-                params_[k].gap = c.gap_values->data();
-                params_[k].gap_len = c.gap_values->size();
-            }
-            cw_result_init(&results_[k]);
+        // A row under a friction law at every element's slip speed has no
+        // fields: it is solved for its forces, in a batch call of its own.
+        std::vector<size_t> full_rows, forces_rows;
+        for (size_t i : rows) {
+            const cw_params& p = chunk.cases[i].params;
+            const bool forces_only = p.friction_law != CW_FRICTION_COULOMB &&
+                                     p.friction_speed == CW_FRICTION_SPEED_LOCAL;
+            (forces_only && chunk.mode == CW_SOLVE_FULL ? forces_rows : full_rows).push_back(i);
         }
-        cw_batch_solve(batch, m, params_.data(), chunk.mode, results_.data(), statuses_.data());
-        for (size_t k = 0; k < m; ++k) {
-            Outcome& o = out[rows[k]];
-            o.status = statuses_[k];
-            o.result = results_[k];
-            if (o.status == CW_OK) continue;
-            // The batch keeps only the first failure's message: solve the
-            // row alone to get its own (same status; the library is
-            // deterministic, and a failing row is usually rejected at once).
-            cw_result scratch;
-            cw_result_init(&scratch);
-            const int again = cw_batch_solve(batch, 1, &params_[k], chunk.mode, &scratch, nullptr);
-            o.message = again == o.status ? without_index(cw_batch_last_error(batch))
-                                          : cw_status_string(o.status);
-            cw_result_init(&o.result);
-        }
+        solve_rows(batch, chunk, full_rows, chunk.mode, out);
+        solve_rows(batch, chunk, forces_rows, CW_SOLVE_FORCES, out);
     }
     return out;
 }

@@ -39,6 +39,9 @@ private:
     // The batch for grid (created on first use), or nullptr with the
     // library's status and message when the grid is rejected.
     cw_batch* batch_for(const cw_grid& grid, int& status, std::string& message);
+    // The chunk's cases at rows (one grid) solved in mode into out.
+    void solve_rows(cw_batch* batch, const Chunk& chunk, const std::vector<size_t>& rows,
+                    int mode, std::vector<Outcome>& out);
 
     int threads_;
     size_t max_batches_;

@@ -37,7 +37,9 @@ const Column kColumns[] = {
     // Appended in 1.2: the normal force a gap row finds from its approach
     // (else the row's N) and the separate patches of a gap row.
     {"Fn", [](const cw_result& r) { return r.normal_force; }, nullptr},
-    CW_INT(n_patches)};
+    CW_INT(n_patches),
+    // Appended in 1.3: the friction coefficient at rest and over the slip area.
+    CW_REAL(mu_static), CW_REAL(mu_min), CW_REAL(mu_max)};
 #undef CW_REAL
 #undef CW_INT
 

@@ -24,6 +24,7 @@ int command_solve(int argc, char** argv, int first)
         join(join(join(join(material_and_load_options(), model_options()), creepage_options()),
                   grid_options()),
              output_options());
+    specs = join(specs, friction_options());
     specs.push_back({"jacobian", OptionKind::flag, {}});
     specs = join(join(specs, gap_options()), surface_options());
     ParsedOptions opts;
@@ -37,7 +38,16 @@ int command_solve(int argc, char** argv, int first)
     if (!out.empty()) check_output_target(out, "--out", opts.has("force"));
 
     ContactSolver solver(c.grid);
-    const Solution s = solver.solve_full(c.params);
+    // The law at every element gives forces only (no work map, no fields).
+    const bool forces_only = c.params.friction_law != CW_FRICTION_COULOMB &&
+                             c.params.friction_speed == CW_FRICTION_SPEED_LOCAL;
+    if (forces_only && (!out.empty() || surface.temperature || surface.damage))
+        throw usage_error(!out.empty() ? "--out" : surface.temperature ? "--temperature"
+                                                                       : "--damage",
+                          "needs the fields, which FASTSIM with a law at every element's slip "
+                          "speed does not give (forces only; --friction-speed global gives "
+                          "them)");
+    const Solution s = forces_only ? solver.solve_forces(c.params) : solver.solve_full(c.params);
     const SurfaceOutput post = compute_surface(solver.handle(), surface);
     print_notes(c);
     for (const std::string& w : surface.warnings) std::fprintf(stderr, "creepwork: %s\n", w.c_str());

@@ -50,6 +50,19 @@ const std::vector<InputInfo>& all_inputs()
         {I::approach, "approach", "approach", Q::length},
         {I::normal_method, "normal-method", "normal_method", Q::dimensionless},
         {I::V, "V", "V", Q::dimensionless}, // m/s in every unit system
+        {I::friction_law, "friction-law", "friction_law", Q::dimensionless},
+        {I::mu_e1, "mu-e1", "mu_e1", Q::dimensionless},
+        {I::s_h1, "s-h1", "s_h1", Q::dimensionless}, // m/s in every unit system
+        {I::mu_e2, "mu-e2", "mu_e2", Q::dimensionless},
+        {I::s_h2, "s-h2", "s_h2", Q::dimensionless},
+        {I::polach_A, "polach-A", "polach_A", Q::dimensionless},
+        {I::polach_B, "polach-B", "polach_B", Q::dimensionless}, // s/m in every unit system
+        {I::friction_speed, "friction-speed", "friction_speed", Q::dimensionless},
+        {I::k0, "k0", "k0", Q::dimensionless},
+        {I::alpha_inf, "alpha-inf", "alpha_inf", Q::dimensionless},
+        {I::beta, "beta", "beta", Q::dimensionless},
+        {I::memory_distance, "memory-distance", "memory_distance", Q::length},
+        {I::memory_s0, "memory-s0", "memory_s0", Q::dimensionless}, // m/s
     };
     return list;
 }
@@ -209,6 +222,92 @@ void read_model(const Reader& r, cw_params& p)
     }
 }
 
+const std::vector<std::string> kFrictionLaws = {"coulomb", "linear", "rational", "exponential",
+                                                 "polach"};
+
+// The friction law: CONTACT's terms, or Polach's A and B with mu as mu0
+// written by the library (cw_friction_polach); where FASTSIM takes the slip
+// speed, Spiryagin's reduction (global only) and the memory (local only).
+// Inputs the chosen law does not read are refused.
+void read_friction(const Reader& r, cw_params& p)
+{
+    const ContactSource& s = r.s;
+    const std::string law = s.has(Input::friction_law)
+                                ? s.choice(Input::friction_law, kFrictionLaws)
+                                : "coulomb";
+    const Input terms[] = {Input::mu_e1, Input::s_h1, Input::mu_e2, Input::s_h2};
+    const Input polach[] = {Input::polach_A, Input::polach_B};
+    const std::string named = s.name(Input::friction_law) + " " + law;
+    for (Input in : terms)
+        if (s.has(in) && (law == "coulomb" || law == "polach"))
+            r.refuse(in, "not used with " + named, Refusal::unreadable);
+    for (Input in : polach)
+        if (s.has(in) && law != "polach")
+            r.refuse(in, "only used with " + s.name(Input::friction_law) + " polach",
+                     Refusal::unreadable);
+    if (law == "polach") {
+        for (Input in : polach)
+            if (!s.has(in))
+                r.refuse(in, "missing: " + named + " takes mu (its mu0), " +
+                                 s.name(Input::polach_A) + " and " + s.name(Input::polach_B),
+                         Refusal::unreadable);
+        double A = 0.0, B = 0.0;
+        r.read(Input::polach_A, &A);
+        r.read(Input::polach_B, &B);
+        r.require(A >= 0.0 && A <= 1.0, Input::polach_A, "must lie in [0, 1]", A);
+        r.require(B > 0.0, Input::polach_B, "must be > 0 (s/m)", B);
+        r.require(p.mu >= 0.0, Input::mu, "must be >= 0", p.mu);
+        char message[256] = "";
+        if (cw_friction_polach(p.mu, A, B, &p, message, sizeof message) != CW_OK)
+            r.refuse(Input::polach_A, message, Refusal::invalid_input);
+    } else if (law != "coulomb") {
+        p.friction_law = law == "linear"     ? CW_FRICTION_LINEAR
+                         : law == "rational" ? CW_FRICTION_RATIONAL
+                                             : CW_FRICTION_EXPONENTIAL;
+        for (const auto& [in, value] : {std::pair<Input, double*>{Input::mu_e1, &p.mu_e1},
+                                        {Input::s_h1, &p.s_h1},
+                                        {Input::mu_e2, &p.mu_e2},
+                                        {Input::s_h2, &p.s_h2}})
+            r.read(in, value);
+        r.require(p.mu_e1 >= 0.0, Input::mu_e1, "must be >= 0", p.mu_e1);
+        r.require(p.mu_e2 >= 0.0, Input::mu_e2, "must be >= 0", p.mu_e2);
+        r.require(p.mu_e1 == 0.0 || p.s_h1 > 0.0, Input::s_h1,
+                  "must be > 0 (m/s) when " + s.name(Input::mu_e1) + " > 0", p.s_h1);
+        r.require(p.mu_e2 == 0.0 || p.s_h2 > 0.0, Input::s_h2,
+                  "must be > 0 (m/s) when " + s.name(Input::mu_e2) + " > 0", p.s_h2);
+    }
+    if (s.has(Input::friction_speed))
+        p.friction_speed = s.choice(Input::friction_speed, {"local", "global"}) == "global"
+                               ? CW_FRICTION_SPEED_GLOBAL
+                               : CW_FRICTION_SPEED_LOCAL;
+    const bool global = p.friction_speed == CW_FRICTION_SPEED_GLOBAL;
+    for (const auto& [in, value] : {std::pair<Input, double*>{Input::k0, &p.k0},
+                                    {Input::alpha_inf, &p.alpha_inf},
+                                    {Input::beta, &p.beta}}) {
+        if (s.has(in) && !global)
+            r.refuse(in, "Spiryagin's slope reduction is only used with " +
+                             s.name(Input::friction_speed) + " global",
+                     Refusal::unreadable);
+        r.read(in, value);
+    }
+    r.require(p.k0 > 0.0, Input::k0, "must be > 0", p.k0);
+    r.require(p.alpha_inf >= 0.0 && p.alpha_inf <= 1.0, Input::alpha_inf, "must lie in [0, 1]",
+              p.alpha_inf);
+    r.require(p.beta >= 0.0, Input::beta, "must be >= 0", p.beta);
+    for (const auto& [in, value] : {std::pair<Input, double*>{Input::memory_distance,
+                                                              &p.memory_distance},
+                                    {Input::memory_s0, &p.memory_s0}}) {
+        if (s.has(in) && global)
+            r.refuse(in, "friction memory needs " + s.name(Input::friction_speed) + " local",
+                     Refusal::unreadable);
+        r.read(in, value);
+        r.require(*value >= 0.0, in, "must be >= 0", *value);
+    }
+    if (p.friction_law != CW_FRICTION_COULOMB)
+        r.require(p.V > 0.0, Input::V,
+                  "must be > 0 (m/s): " + named + " is a law of the slip speed", p.V);
+}
+
 void validate(const Reader& r, const cw_params& p)
 {
     const ContactSource& s = r.s;
@@ -297,6 +396,7 @@ ContactInputs read_contact_inputs(const ContactSource& s, const cw_params& defau
     r.read(Input::phi, &p.phi);
     read_model(r, p);
     read_flexibilities(r, p);
+    read_friction(r, p);
     if (s.has(Input::pressure))
         p.pressure = s.choice(Input::pressure, {"parabolic", "elliptic"}) == "elliptic"
                          ? CW_PRESSURE_ELLIPTIC
@@ -339,7 +439,7 @@ std::vector<std::string> plausibility_warnings(const cw_grid& grid, const cw_par
         {"mu", Input::mu},     {"G", Input::G},       {"L1", Input::L1},
         {"L2", Input::L2},     {"L3", Input::L3},     {"xi_x", Input::xi_x},
         {"xi_y", Input::xi_y}, {"phi", Input::phi},   {"approach", Input::approach},
-        {"V", Input::V}};
+        {"V", Input::V},       {"s_h1", Input::s_h1}, {"s_h2", Input::s_h2}};
     std::vector<std::string> w;
     for (const cw_check& c : library_checks(grid, &p, 1)) {
         // Every command requires a, b and N, or takes documented defaults.

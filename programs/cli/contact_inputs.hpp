@@ -28,7 +28,13 @@ enum class Input {
     // A campaign row's contact of any shape (the gap file's grid, solve --gap).
     gap_file, approach, normal_method,
     // The rolling speed [m/s] (a friction law of the slip speed needs it).
-    V
+    V,
+    // A friction law of the slip speed (doc/theory/friction.md): CONTACT's
+    // terms (speeds in m/s in every unit system), Polach's A and B [s/m]
+    // with mu as mu0, where FASTSIM takes the slip speed, Spiryagin's slope
+    // reduction, friction memory.
+    friction_law, mu_e1, s_h1, mu_e2, s_h2, polach_A, polach_B, friction_speed, k0, alpha_inf,
+    beta, memory_distance, memory_s0
 };
 
 struct InputInfo {

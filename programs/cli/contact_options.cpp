@@ -29,6 +29,25 @@ std::vector<OptionSpec> material_and_load_options()
             {"exact-load", K::flag, {}}};
 }
 
+std::vector<OptionSpec> friction_options()
+{
+    using K = OptionKind;
+    return {{"friction-law", K::choice, {"coulomb", "linear", "rational", "exponential", "polach"}},
+            {"mu-e1", K::number, {}},
+            {"s-h1", K::number, {}},
+            {"mu-e2", K::number, {}},
+            {"s-h2", K::number, {}},
+            {"polach-A", K::number, {}},
+            {"polach-B", K::number, {}},
+            {"polach", K::text, {}},
+            {"friction-speed", K::choice, {"local", "global"}},
+            {"k0", K::number, {}},
+            {"alpha-inf", K::number, {}},
+            {"beta", K::number, {}},
+            {"memory-distance", K::number, {}},
+            {"memory-s0", K::number, {}}};
+}
+
 std::vector<OptionSpec> creepage_options()
 {
     using K = OptionKind;
@@ -106,7 +125,7 @@ void note_defaults(const ParsedOptions& o, const cw_params& p, const Units& u,
     const auto add = [&](const char* name, const std::string& text) {
         if (!o.has(name)) used += (used.empty() ? "" : ", ") + text;
     };
-    add("mu", "mu = " + show(p.mu, ""));
+    if (!o.has("polach")) add("mu", "mu = " + show(p.mu, ""));
     if (p.flexibility == CW_FLEX_FROM_MATERIAL) {
         add("G", "G = " + show(u.from_si(Quantity::stress, p.G), u.label(Quantity::stress)));
         add("nu", "nu = " + show(p.nu, ""));
@@ -114,6 +133,31 @@ void note_defaults(const ParsedOptions& o, const cw_params& p, const Units& u,
     if (!used.empty())
         notes.push_back("note: not given, so the library's defaults (steel on steel) were used: " +
                         used);
+}
+
+// --polach MU0,A,B: Polach's law written into p by the library
+// (cw_friction_polach), in place of --friction-law and its terms and --mu.
+void read_polach(const ParsedOptions& o, cw_params& p)
+{
+    if (!o.has("polach")) return;
+    for (const char* other : {"friction-law", "mu", "mu-e1", "s-h1", "mu-e2", "s-h2", "polach-A",
+                              "polach-B"})
+        if (o.has(other))
+            throw usage_error("--polach/--" + o.typed(other),
+                              "--polach MU0,A,B sets the friction law and mu: give one of them");
+    const std::string text = o.text("polach", "");
+    double v[3] = {};
+    std::istringstream in(text);
+    char comma[2] = {};
+    if (!(in >> v[0] >> comma[0] >> v[1] >> comma[1] >> v[2]) || comma[0] != ',' ||
+        comma[1] != ',' || !(in >> std::ws).eof())
+        throw usage_error("--polach", "must be MU0,A,B (e.g. 0.36,0.38,0.7; B in s/m), got \"" +
+                                          text + "\"");
+    char message[256] = "";
+    if (cw_friction_polach(v[0], v[1], v[2], &p, message, sizeof message) != CW_OK)
+        throw usage_error("--polach", message);
+    if (!(p.V > 0.0))
+        throw usage_error("--V", "must be > 0 (m/s): --polach is a law of the slip speed");
 }
 
 } // namespace
@@ -138,6 +182,7 @@ ContactSetup read_contact(const ParsedOptions& o, const cw_params& defaults,
     ContactSetup c;
     c.units = source.units();
     c.params = in.params;
+    read_polach(o, c.params);
     c.grid = size_and_load == SizeAndLoad::gap ? default_grid : in.grid;
     // A gap's contact is checked with its file (command_solve_gap).
     if (!gap)

@@ -32,6 +32,9 @@ void print_notes(const ContactSetup& c);
 // --a --b --N --mu --G --nu --L1 --L2 --L3 --pressure --rolling-direction --units
 // --spin-offset --flexibility-blending --exact-load
 std::vector<OptionSpec> material_and_load_options();
+// A friction law of the slip speed: --friction-law and its terms, --polach
+// MU0,A,B, --friction-speed, Spiryagin's --k0 --alpha-inf --beta, the memory.
+std::vector<OptionSpec> friction_options();
 // --xi-x --xi-y --spin
 std::vector<OptionSpec> creepage_options();
 // --grid --nx --ny --box-scale

@@ -31,7 +31,12 @@ std::string options_named_in(const std::string& message)
         {"conductivity_2", "--conductivity-2"}, {"density_1", "--density-1"},
         {"density_2", "--density-2"}, {"rolling_speed", "--speed"},
         {"discretisation", "--temperature-discretisation"}, {"k_yield", "--k-yield"},
-        {"V", "--V"}};
+        {"V", "--V"}, {"friction_law", "--friction-law"}, {"mu_e1", "--mu-e1"},
+        {"s_h1", "--s-h1"}, {"mu_e2", "--mu-e2"}, {"s_h2", "--s-h2"},
+        {"polach_A", "--polach-A"}, {"polach_B", "--polach-B"},
+        {"friction_speed", "--friction-speed"}, {"k0", "--k0"}, {"alpha_inf", "--alpha-inf"},
+        {"beta", "--beta"}, {"memory_distance", "--memory-distance"},
+        {"memory_s0", "--memory-s0"}};
     const auto is_word = [](char c) {
         return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
     };
@@ -84,6 +89,17 @@ void ContactSolver::jacobian(const cw_params& params, double out[CW_JACOBIAN_LEN
     check(cw_solver_solve_jacobian(solver_, &params, CW_SOLVE_FORCES, nullptr, out,
                                    CW_JACOBIAN_LEN),
           "cw_solver_solve_jacobian");
+}
+
+Solution ContactSolver::solve_forces(const cw_params& params)
+{
+    Solution s;
+    s.result = solve_totals(params);
+    s.params = params;
+    s.grid = grid_;
+    s.nx = nx_;
+    s.ny = ny_;
+    return s;
 }
 
 Solution ContactSolver::solve_full(const cw_params& params)

@@ -35,6 +35,8 @@ public:
     cw_result solve_totals(const cw_params& params);
     // Totals plus states only (for slip/adhesion maps).
     cw_result solve_states(const cw_params& params, std::vector<int>& state);
+    // The totals alone (CW_SOLVE_FORCES) as a Solution without fields.
+    Solution solve_forces(const cw_params& params);
     // Everything (CW_SOLVE_FULL).
     Solution solve_full(const cw_params& params);
     // The 4 x 4 Jacobian of the totals (cw_solver_solve_jacobian, row-major).

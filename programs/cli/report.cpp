@@ -48,6 +48,34 @@ std::vector<Entry> geometry(const cw_result& r)
             {"C33", r.C33, Q::dimensionless}};
 }
 
+const char* friction_law_name(int law)
+{
+    return law == CW_FRICTION_LINEAR        ? "linear"
+           : law == CW_FRICTION_RATIONAL    ? "rational"
+           : law == CW_FRICTION_EXPONENTIAL ? "exponential"
+                                            : "coulomb";
+}
+
+// The law as solved (SI; Polach's input appears as its exponential law).
+JsonObject friction_json(const cw_params& p, const Units& u)
+{
+    JsonObject f;
+    f.text("law", friction_law_name(p.friction_law))
+        .number("mu_kin", p.mu)
+        .number("mu_e1", p.mu_e1)
+        .number("s_h1", p.s_h1)
+        .number("mu_e2", p.mu_e2)
+        .number("s_h2", p.s_h2)
+        .number("V", p.V)
+        .text("speed", p.friction_speed == CW_FRICTION_SPEED_GLOBAL ? "global" : "local");
+    if (p.friction_speed == CW_FRICTION_SPEED_GLOBAL)
+        f.number("k0", p.k0).number("alpha_inf", p.alpha_inf).number("beta", p.beta);
+    else
+        f.number("memory_distance", u.from_si(Quantity::length, p.memory_distance))
+            .number("memory_s0", p.memory_s0);
+    return f;
+}
+
 JsonObject input_json(const cw_params& p, const cw_grid& g, const Units& u)
 {
     JsonObject in;
@@ -59,6 +87,8 @@ JsonObject input_json(const cw_params& p, const cw_grid& g, const Units& u)
         .text("flexibility", p.flexibility == CW_FLEX_GIVEN ? "given" : "from_material");
     if (p.flexibility != CW_FLEX_GIVEN)
         in.number("G", u.from_si(Quantity::stress, p.G)).number("nu", p.nu);
+    if (p.friction_law != CW_FRICTION_COULOMB || p.friction_speed != CW_FRICTION_SPEED_LOCAL)
+        in.object("friction", friction_json(p, u));
     in.text("model", model_name(p.model));
     if (p.model == CW_MODEL_EXACT)
         in.number("tolerance", effective_tolerance(p))
@@ -103,6 +133,9 @@ JsonObject result_json(const cw_result& r, const cw_params& p, const cw_grid& g,
         .number("approach", u.from_si(Quantity::length, r.approach))
         .integer("iterations", r.iterations)
         .number("residual", r.residual)
+        .number("mu_static", r.mu_static)
+        .number("mu_min", r.mu_min)
+        .number("mu_max", r.mu_max)
         .text("units", u.name())
         .text("sign_convention",
               "Fx, Fy, Mz act on the wheel (Kalker, CONTACT): opposite to the creepages; "
@@ -142,6 +175,13 @@ void print_result_text(std::ostream& os, const cw_result& r, const cw_params& p,
         os << ", " << pressure_name(p.pressure) << " pressure\n"
            << "model      " << model_name(r.model)
            << (r.model == CW_MODEL_FASTSIM ? " (Kalker's simplified theory)" : "") << "\n";
+    if (p.friction_law != CW_FRICTION_COULOMB || p.friction_speed != CW_FRICTION_SPEED_LOCAL)
+        os << "friction   " << friction_law_name(p.friction_law) << " law, V = " << fmt(p.V)
+           << " m/s, mu_static = " << fmt(r.mu_static) << "; mu "
+           << (p.friction_speed == CW_FRICTION_SPEED_GLOBAL
+                   ? "at the contact's slip speed = " + fmt(r.mu_min)
+                   : "over the slip area " + fmt(r.mu_min) + " .. " + fmt(r.mu_max))
+           << "\n";
     os << "results    (forces and moment on the wheel; the rail gets the opposite sign)\n";
     for (const Entry& e : totals(r))
         os << "  " << e.key << std::string(16 - std::string(e.key).size(), ' ') << "= "

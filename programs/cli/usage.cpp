@@ -122,6 +122,30 @@ contact (lengths, forces, stresses in the --units system):
                     analytic scale, whose sum differs from N by up to a few
                     tenths of a per cent, the original algorithm; the exact
                     model carries N exactly either way)
+friction falling with the slip speed s = |micro-slip| V (FASTSIM on Kalker's
+strips or the uniform grid; doc/theory/friction.md):
+  --friction-law coulomb|linear|rational|exponential|polach
+                    CONTACT's laws (its L = 2, 3, 4): mu is then the kinetic
+                    coefficient mu_kin, each term falls from --mu-e1 (--mu-e2)
+                    at s = 0 to half of it at --s-h1 (--s-h2); the static
+                    coefficient is mu + mu_e1 + mu_e2. Needs --V > 0
+  --mu-e1 M --s-h1 S --mu-e2 M --s-h2 S
+                    the falling terms [-] and their half speeds [m/s in every
+                    --units system] (CONTACT's FEXP1, SABSH1/1000, ...)
+  --polach MU0,A,B  Polach's mu0 [(1 - A) exp(-B s) + A], B in s/m, as the
+                    exponential law (instead of --friction-law and --mu);
+                    --friction-law polach --mu MU0 --polach-A A --polach-B B
+                    is the same
+  --friction-speed local|global
+                    local (default): the law at each element's slip speed,
+                    forces only (no --out); global: mu at the contact's slip
+                    speed V |(xi_x, xi_y)| as CONTACT's FASTSIM, every field
+  --k0 K --alpha-inf A --beta B
+                    global: Spiryagin's slope reduction of the flexibilities
+                    (defaults 1, 1, 0: none)
+  --memory-distance D --memory-s0 S
+                    local: CONTACT's friction memory over the slip distance D
+                    (length) with background slip speed S [m/s]
 contact of any shape (instead of --a, --b and the grid options):
   --gap FILE        the undeformed distance on a regular grid: a CSV file with
                     the header x_m,y_m,h_m and one line per cell centre (any

@@ -16,7 +16,7 @@ import numpy as np
 from . import _checks, _errors, _progress
 from ._handle import Handle
 from ._library import CONSTANTS, DTYPES, address, defaults, filled, lib
-from ._params import PARAMS, grid_record, require_geometry
+from ._params import PARAMS, grid_record, polach_keywords, require_geometry
 from ._solver import GridLike, Solver, _grid_for, typed_names
 
 _MESSAGE_LEN = 512
@@ -120,6 +120,7 @@ class Batch(Handle):
 
     def _solve(self, params_in, keywords, full, warn, progress, caller, stacklevel):
         handle = self._live()
+        keywords = polach_keywords(keywords, caller)
         typed = typed_names(None, keywords, caller)
         if params_in is None:
             require_geometry(typed, caller)
@@ -217,6 +218,7 @@ def solve_many(params: Optional[np.ndarray] = None, *, grid: GridLike = None, fu
     creepwork.Batch. progress: True for a progress line on stderr after 2 s
     and then every 10 s, a number S for one every S seconds, or a callable
     progress(done, total) called as the contacts are solved."""
+    keywords = polach_keywords(keywords, "solve_many")
     grid = _grid_for(grid, params, keywords)
     with Batch(grid, threads) as batch:
         return batch._solve(params, keywords, full, warn, progress, "solve_many", 2)

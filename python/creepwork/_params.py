@@ -7,6 +7,7 @@ e.g. model="exact" for CW_MODEL_EXACT. Fields appended to the header become
 keywords without an edit here.
 """
 
+import ctypes
 import difflib
 import textwrap
 import weakref
@@ -155,6 +156,43 @@ class Keywords:
             lines += textwrap.wrap(f["doc"] + names, 76 - indent, initial_indent="    ",
                                    subsequent_indent="    ")
         return textwrap.indent("\n".join(lines), " " * indent)
+
+
+# The fields cw_friction_polach writes: Polach's law as the exponential law.
+_POLACH_FIELDS = ("friction_law", "mu", "mu_e1", "s_h1", "mu_e2", "s_h2")
+
+
+def polach_keywords(keywords, caller):
+    """keywords with polach=(mu0, A, B) (B in s/m; scalars or arrays that
+    broadcast) replaced by the fields the library's cw_friction_polach
+    writes for them (the exponential law: mu = A mu0, mu_e1 = (1 - A) mu0,
+    s_h1 = ln2/B). TypeError when one of those fields is given too."""
+    if "polach" not in keywords:
+        return keywords
+    out = dict(keywords)
+    value = out.pop("polach")
+    for key in list(out):
+        if PARAMS.field(key, caller) in _POLACH_FIELDS:
+            raise TypeError("%s(): polach=(mu0, A, B) sets the friction law and mu; %r cannot "
+                            "be given with it" % (caller, key))
+    try:
+        mu0, A, B = (np.asarray(v, dtype=float) for v in value)
+    except (TypeError, ValueError):
+        raise TypeError("%s(): polach must be (mu0, A, B), got %r" % (caller, value)) from None
+    shape = np.broadcast_shapes(mu0.shape, A.shape, B.shape)
+    fields = {name: np.empty(shape, PARAMS.dtype.fields[name][0]) for name in _POLACH_FIELDS}
+    rec = defaults("cw_params").copy()
+    message = ctypes.create_string_buffer(512)
+    for index in np.ndindex(shape):
+        status = lib.cw_friction_polach(float(np.broadcast_to(mu0, shape)[index]),
+                                        float(np.broadcast_to(A, shape)[index]),
+                                        float(np.broadcast_to(B, shape)[index]), address(rec),
+                                        message, len(message))
+        _errors.check(status, lambda: message.value)
+        for name in _POLACH_FIELDS:
+            fields[name][index] = rec[name]
+    out.update({name: (v[()] if v.ndim == 0 else v) for name, v in fields.items()})
+    return out
 
 
 def _status(name):

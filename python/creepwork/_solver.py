@@ -16,7 +16,7 @@ from . import _checks, _errors
 from ._handle import Handle
 from ._layout import LAYOUT
 from ._library import CONSTANTS, DTYPES, address, lib
-from ._params import PARAMS, grid_record, model_default_grid, require_geometry
+from ._params import PARAMS, grid_record, model_default_grid, polach_keywords, require_geometry
 
 if TYPE_CHECKING:
     from ._wear import WearResult
@@ -105,7 +105,7 @@ def params(**keywords: Any) -> np.ndarray:
     (gap=h) holds the address of h's values in C order as doubles (a copy
     where h is not that): the record reads them while h, or the array h
     views, lives."""
-    return PARAMS.record(keywords, "params")
+    return PARAMS.record(polach_keywords(keywords, "params"), "params")
 
 
 def _params_record(params_in, keywords, caller, keep):
@@ -235,6 +235,9 @@ class Solver(Handle):
 
     def _solve(self, params_in, keywords, fields, jacobian, warn, caller, stacklevel):
         handle = self._live()
+        keywords = polach_keywords(keywords, caller)
+        if isinstance(params_in, dict):
+            params_in = polach_keywords(params_in, caller)
         typed = typed_names(params_in, keywords, caller)
         if params_in is None or isinstance(params_in, dict):
             require_geometry(typed, caller)
@@ -399,11 +402,19 @@ def solve(params: ParamsLike = None, *, grid: GridLike = None, fields: bool = Tr
     subclass of creepwork.Error naming the input (e.g. nu = 0.6:
     creepwork.InvalidInputError).
 
+    A friction law of the slip speed (doc/theory/friction.md): e.g.
+    friction_law="exponential", mu=0.1368 (the kinetic coefficient),
+    mu_e1=0.2232, s_h1=0.99 [m/s], V=10 [m/s]; or Polach's law as
+    polach=(mu0, A, B) with B in s/m (written by cw_friction_polach). FASTSIM
+    takes it at every element in forces mode (fields=False), or with
+    friction_speed="global" at the contact's slip speed in either mode.
+
     For many contacts use solve_many (one call, threads); for loops, a
     Solver. Keywords: every field of the C struct cw_params, in SI units,
     with cw_params_init's defaults (steel on steel, mu = 0.3, parabolic
     pressure, FASTSIM):
     """
+    keywords = polach_keywords(keywords, "solve")
     grid = _grid_for(grid, params, keywords)
     with Solver(grid) as s:
         return s._solve(params, keywords, fields, None, warn, "solve", 2)
@@ -415,6 +426,7 @@ def jacobian(params: ParamsLike = None, *, grid: GridLike = None, fields: bool =
     d(Fx, Fy, Mz, W_macro)/d(xi_x, xi_y, phi, normal_force), SI, rows
     creepwork.JACOBIAN_ROWS, columns creepwork.JACOBIAN_COLUMNS
     (cw_solver_solve_jacobian). Keywords as solve()."""
+    keywords = polach_keywords(keywords, "jacobian")
     grid = _grid_for(grid, params, keywords)
     with Solver(grid) as s:
         return s._solve(params, keywords, fields, np.empty((4, 4)), warn, "jacobian", 2)

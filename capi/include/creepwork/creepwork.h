@@ -149,6 +149,23 @@ CW_API const char* cw_status_string(int status);
                                  on a uniform or gap grid, G, nu needed */
 #define CW_MODEL_CALIBRATED 2 /* simplified theory calibrated to the exact theory */
 
+/* cw_params.friction_law: the friction coefficient as a function of the slip
+ * speed s = |micro-slip| * V [m/s], in CONTACT's numbering (its L digit).
+ * mu is the kinetic coefficient mu_kin (what is left at large s); each term
+ * k = 1, 2 falls from mu_ek at s = 0 to mu_ek/2 at s = s_hk; the static
+ * coefficient (s = 0) is mu + mu_e1 + mu_e2 (cw_result.mu_static). */
+#define CW_FRICTION_COULOMB 0     /* mu at every slip speed (default) */
+#define CW_FRICTION_LINEAR 2      /* mu + sum mu_ek max(0, 1 - s/(2 s_hk)) */
+#define CW_FRICTION_RATIONAL 3    /* mu + mu_e1/(1 + s/s_h1) + mu_e2/(1 + (s/s_h2)^2) */
+#define CW_FRICTION_EXPONENTIAL 4 /* mu + sum mu_ek exp(-ln2 s/s_hk); Polach's law:
+                                     cw_friction_polach */
+
+/* cw_params.friction_speed: where FASTSIM takes the slip speed of a law */
+#define CW_FRICTION_SPEED_LOCAL 0  /* each element's own slip speed (default) */
+#define CW_FRICTION_SPEED_GLOBAL 1 /* the contact's rigid slip speed V |(xi_x, xi_y)|, one mu
+                                      for the contact (CONTACT's FASTSIM), with Spiryagin's
+                                      slope reduction k0, alpha_inf, beta */
+
 /* cw_params.spin_offset: the model's own default (0 FASTSIM, 1/6 exact) */
 #define CW_SPIN_OFFSET_DEFAULT -1.0
 
@@ -281,6 +298,22 @@ typedef struct cw_params {
     double V;              /* rolling speed [m/s], >= 0; 0 (default) = not given. A
                               friction law of the slip speed (|micro-slip| * V) needs it;
                               Coulomb's law (every model's) does not use it */
+    /* A friction law of the slip speed (doc/theory/friction.md). Beyond Coulomb's
+     * law CW_MODEL_FASTSIM runs on the ellipse's grids, in CW_SOLVE_FORCES with
+     * friction_speed LOCAL; the other models refuse a law by name. */
+    int friction_law;      /* CW_FRICTION_COULOMB (default), _LINEAR, _RATIONAL or
+                              _EXPONENTIAL; beyond Coulomb's V > 0 is needed */
+    double mu_e1, s_h1;    /* first falling term: [-] >= 0, half speed [m/s] > 0 when
+                              mu_e1 > 0 (default 0: absent) */
+    double mu_e2, s_h2;    /* second falling term, the same (default 0: absent) */
+    int friction_speed;    /* CW_FRICTION_SPEED_LOCAL (default) or _GLOBAL */
+    double k0;             /* Spiryagin's initial slope reduction (GLOBAL), > 0; default 1 */
+    double alpha_inf;      /* its share left at large creepage, in [0, 1]; default 1
+                              (k0 = alpha_inf = 1: no reduction) */
+    double beta;           /* how fast the reduction goes, >= 0; default 0 */
+    double memory_distance;/* friction memory (LOCAL): CONTACT's characteristic slip
+                              distance d_c [m] >= 0; 0 (default) = none */
+    double memory_s0;      /* its background slip speed s0 [m/s] >= 0 (default 0) */
 } cw_params;
 
 /* Defaults: steel (G = 82e9 Pa, nu = 0.28), mu = 0.3, a = b = 6e-3 m,
@@ -306,6 +339,7 @@ CW_API int cw_params_init(cw_params* params);
 #define CW_CHECK_GAP_HEIGHTS 9      /* gap heights spanning more than 10 mm */
 #define CW_CHECK_APPROACH 10        /* |approach| above 1 mm (CW_NORMAL_APPROACH) */
 #define CW_CHECK_DEFAULT_GEOMETRY 11 /* a, b, normal_force all at cw_params_init's values */
+#define CW_CHECK_HALF_SPEED 12      /* a friction law's s_h1, s_h2 above 50 m/s (mm/s typed?) */
 #define CW_CHECK_WHEELSET_SHIFT 20  /* |y| of the wheelset above 20 mm */
 #define CW_CHECK_WHEELSET_ANGLE 21  /* |roll|, |yaw| above 0.05 rad (degrees typed?) */
 #define CW_CHECK_PATCH_ELEMENT 22   /* wheel/rail dx, ds above 5 mm */
@@ -410,6 +444,12 @@ typedef struct cw_result {
                                  else params->normal_force */
     int n_patches;            /* separate contact patches (4-connected elements;
                                  cw_solver_get_patches); 1 for an ellipse, 0 without contact */
+    /* ---- appended in 1.3 ---- */
+    double mu_static;         /* the friction coefficient at rest: mu + mu_e1 + mu_e2
+                                 under a law of the slip speed, mu under Coulomb's */
+    double mu_min, mu_max;    /* the smallest and largest coefficient over the slipping
+                                 elements (mu_static when none slips; the contact's one
+                                 mu with CW_FRICTION_SPEED_GLOBAL) */
 } cw_result;
 
 /* Zeroes the result and sets struct_size. Errors: CW_ERR_NULL_POINTER. */
@@ -713,6 +753,15 @@ CW_API int cw_kalker_flexibilities(double a, double b, double G, double nu,
  * Errors: CW_ERR_NULL_POINTER, CW_ERR_INVALID_INPUT, CW_ERR_NUMERIC. */
 CW_API int cw_hertz_solve(double A, double B, double normal_force, double E_star,
                           double hertz[4], char* message, size_t message_len);
+
+/* Polach's friction law mu = mu0 [(1 - A) exp(-B s) + A] (Polach, Wear 258
+ * (2005) 992-1000) written into params as CONTACT's exponential law:
+ * friction_law = CW_FRICTION_EXPONENTIAL, mu = A mu0, mu_e1 = (1 - A) mu0,
+ * s_h1 = ln2 / B, mu_e2 = s_h2 = 0; nothing else is touched. mu0 >= 0,
+ * A in [0, 1], B > 0 [s/m]. Errors: CW_ERR_NULL_POINTER, CW_ERR_STRUCT_SIZE
+ * (params cut before s_h2), CW_ERR_INVALID_INPUT (naming mu0, A or B). */
+CW_API int cw_friction_polach(double mu0, double A, double B, cw_params* params, char* message,
+                              size_t message_len);
 
 /* Kalker's original normalised FASTSIM (1982): a drop-in for its SIM routine.
  * Unit disk, parabolic bound 1 - x^2 - y^2, rigid slip (ux - y fx, uy + x fy):

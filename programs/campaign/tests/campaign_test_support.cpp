@@ -248,6 +248,7 @@ Expected solve_directly(const Row& row)
         put("p_max", r.p_max), put("approach", r.approach), put_int("iterations", r.iterations);
         put("residual", r.residual), put("Fn", r.normal_force);
         put_int("n_patches", r.n_patches);
+        put("mu_static", r.mu_static), put("mu_min", r.mu_min), put("mu_max", r.mu_max);
     }
     cw_solver_destroy(s);
     return e;

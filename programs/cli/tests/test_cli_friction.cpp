@@ -1,0 +1,145 @@
+/* creepwork solve with a friction law of the slip speed (--friction-law and
+ * its terms, --polach MU0,A,B, --friction-law polach --polach-A --polach-B,
+ * --friction-speed, Spiryagin's --k0 --alpha-inf --beta, the memory): its
+ * JSON equals the C ABI's result for the same cw_params bit for bit (the
+ * law at every element in forces mode, at the global slip speed in full
+ * mode), CONTACT's tractcurv series 4 at 2 % (tests/data/
+ * contact_tractcurv.csv: Fx/(mu_s N) = -0.8444) is met, and every bad
+ * friction input is refused naming its option.
+ *
+ * usage: test_cli_friction <creepwork binary> <scratch dir> [cmocka filter] */
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include <creepwork/creepwork.h>
+
+#include "cli_checks.hpp"
+#include "tractcurv_case.h"
+// Last: cmocka defines macros (fail, skip) that clash with the C++ library.
+#include "test_support.h"
+
+using namespace cwtest;
+
+namespace {
+
+// CONTACT's tractcurv contact on its 48 x 44 grid (as test_capi_friction).
+const std::vector<std::string> kTractcurv = {
+    "solve", "--format", "json", "--a", "6.304e-3", "--b", "12.61e-3", "--N", "106700",
+    "--exact-load", "--grid", "uniform", "--nx", "48", "--ny", "44", "--box-scale", "1.1",
+    "--V", "10"};
+
+cw_params tractcurv(double xi_x) { return cw_tractcurv_params(xi_x); }
+cw_grid tractcurv_grid() { return cw_tractcurv_grid(); }
+
+void expect_library_bits(const Json& j, const cw_result& lib)
+{
+    const struct {
+        const char* key;
+        double value;
+    } expect[] = {{"Fx", lib.Fx},           {"Fy", lib.Fy},         {"Mz", lib.Mz},
+                  {"mu_static", lib.mu_static}, {"mu_min", lib.mu_min}, {"mu_max", lib.mu_max}};
+    for (const auto& e : expect) {
+        if (j.num(e.key) != e.value)
+            print_error("%s: CLI %.17g, library %.17g\n", e.key, j.num(e.key), e.value);
+        assert_true(j.num(e.key) == e.value);
+    }
+    assert_int_equal(static_cast<int>(j.num("n_slip")), lib.n_slip);
+}
+
+void friction_json_matches_library(void**)
+{
+    // The law at every element, CONTACT's inputs one to one (mu is mu_kin).
+    cw_params p = tractcurv(0.004);
+    cw_tractcurv_series4(&p, 0);
+    Json j = parse_or_fail(cli_ok(with(kTractcurv, {"--xi-x", "0.004", "--friction-law",
+                                                    "exponential", "--mu", "0.1368", "--mu-e1",
+                                                    "0.2232", "--s-h1", "0.99"}))
+                               .out);
+    expect_library_bits(j, library_solve(tractcurv_grid(), p, CW_SOLVE_FORCES));
+    assert_string_equal(j.at("input").at("friction").at("law").string.c_str(), "exponential");
+
+    // Polach's law two ways: --polach MU0,A,B and --friction-law polach; the
+    // library's cw_friction_polach writes the law in both.
+    p = tractcurv(0.15);
+    assert_int_equal(cw_friction_polach(0.36, 0.38, 0.7, &p, nullptr, 0), CW_OK);
+    const cw_result polach = library_solve(tractcurv_grid(), p, CW_SOLVE_FORCES);
+    expect_library_bits(
+        parse_or_fail(cli_ok(with(kTractcurv, {"--xi-x", "0.15", "--polach", "0.36,0.38,0.7"})).out),
+        polach);
+    expect_library_bits(parse_or_fail(cli_ok(with(kTractcurv, {"--xi-x", "0.15", "--friction-law",
+                                                               "polach", "--mu", "0.36",
+                                                               "--polach-A", "0.38",
+                                                               "--polach-B", "0.7"}))
+                                          .out),
+                        polach);
+    // Full sliding: Polach's closed form A + (1 - A) exp(-B xi V) within 2e-4.
+    assert_close(-polach.Fx / (0.36 * 106700), 0.38 + 0.62 * std::exp(-0.7 * 0.15 * 10), 0.0, 2e-4);
+
+    // Series 4: the global slip speed with Spiryagin's reduction, full mode.
+    p = tractcurv(0.02);
+    cw_tractcurv_series4(&p, 1);
+    const cw_result global = library_solve(tractcurv_grid(), p, CW_SOLVE_FULL);
+    j = parse_or_fail(cli_ok(with(kTractcurv, {"--xi-x", "0.02", "--friction-law", "exponential",
+                                               "--mu", "0.1368", "--mu-e1", "0.2232", "--s-h1",
+                                               "0.99", "--friction-speed", "global", "--k0",
+                                               "0.54", "--alpha-inf", "0.02", "--beta", "0.62"}))
+                          .out);
+    expect_library_bits(j, global);
+    assert_true(j.num("W_macro") == global.W_macro);
+    assert_close(global.Fx / (0.36 * 106700), -0.8444, 0.0, 0.5e-4 + 6e-5);
+}
+
+void bad_friction_inputs_are_named(void**)
+{
+    const std::vector<std::string> law = {"--friction-law", "exponential", "--mu-e1", "0.2",
+                                          "--s-h1", "1"};
+    const struct {
+        std::vector<std::string> args;
+        const char* names;
+    } bad[] = {
+        {with(law, {"--V", "0"}), "--V"},
+        {{"--friction-law", "exponential", "--mu-e1", "0.2", "--s-h1", "1"}, "--V"},
+        {{"--friction-law", "stribeck", "--V", "10"}, "--friction-law"},
+        {with(law, {"--V", "10", "--mu-e1", "-0.2"}), "--mu-e1"},
+        {{"--friction-law", "rational", "--mu-e1", "0.2", "--V", "10"}, "--s-h1"},
+        {{"--mu-e1", "0.2", "--V", "10"}, "--mu-e1"},
+        {with(law, {"--V", "10", "--polach-A", "0.4"}), "--polach-A"},
+        {{"--friction-law", "polach", "--polach-A", "0.4", "--V", "10"}, "--polach-B"},
+        {{"--friction-law", "polach", "--polach-A", "1.4", "--polach-B", "0.7", "--V", "10"},
+         "--polach-A"},
+        {{"--polach", "0.36,0.38", "--V", "10"}, "--polach"},
+        {{"--polach", "0.36,0.38,0", "--V", "10"}, "--polach"},
+        {{"--polach", "0.36,0.38,0.7"}, "--V"},
+        {{"--polach", "0.36,0.38,0.7", "--mu", "0.3", "--V", "10"}, "--polach/--mu"},
+        {with(law, {"--V", "10", "--k0", "0.5"}), "--k0"},
+        {with(law, {"--V", "10", "--friction-speed", "global", "--alpha-inf", "2"}),
+         "--alpha-inf"},
+        {with(law, {"--V", "10", "--friction-speed", "global", "--memory-distance", "1e-3"}),
+         "--memory-distance"},
+        {with(law, {"--V", "10", "--memory-s0", "-1"}), "--memory-s0"},
+        {with(law, {"--V", "10", "--model", "calibrated"}), "--friction-law"},
+        {with(law, {"--V", "10", "--out", "never"}), "--out"},
+    };
+    for (const auto& b : bad) {
+        std::vector<std::string> args = {"solve", "--a", "0.006", "--b", "0.006", "--N", "80000",
+                                         "--xi-x", "0.01"};
+        args.insert(args.end(), b.args.begin(), b.args.end());
+        std::string shown = "creepwork";
+        for (const std::string& a : args) shown += " " + a;
+        expect_refusal(cli(args), 2, b.names, shown);
+    }
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+    if (!set_up(argc, argv, "test_cli_friction", {"creepwork", "scratch"})) return 2;
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(friction_json_matches_library),
+        cmocka_unit_test(bad_friction_inputs_are_named),
+    };
+    return cw_run_tests(tests, g_tools.test);
+}
