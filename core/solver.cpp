@@ -193,6 +193,8 @@ const SolveTotals& Solver::solve_impl(const ContactInput& input, SolveMode mode,
                         "friction_speed: the global slip speed is FASTSIM's (model = fastsim), "
                         "not " + m.name() + "'s");
         m.set_law(slip_speed_law(input), input.V);
+    } else {
+        m.clear_law();
     }
     auto* law_model = dynamic_cast<FastsimLawModel*>(&m);
     if (input.memory_distance > 0.0 && input.friction_law != FrictionLaw::coulomb && !law_model)

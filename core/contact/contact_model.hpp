@@ -53,6 +53,10 @@ public:
         throw Error(ErrorKind::invalid_input,
                     "friction_law: " + name_ + " takes Coulomb's law only");
     }
+    // Back to Coulomb's law (input.mu) for the next solves: the solver calls
+    // it before a solve of an input without a law, so that a law set for
+    // one call does not stay with a model that serves both.
+    virtual void clear_law() {}
     // The smallest and largest friction coefficient of the last solve over
     // its slipping elements, for a model under a law of the slip speed;
     // false for a model that holds one mu.

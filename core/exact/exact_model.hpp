@@ -70,9 +70,9 @@ public:
     // s = |micro-slip| V; input.mu is then not read (the traction unit is
     // mu(0) p0). Throws Error(invalid_input) naming the input (the law's
     // parameters, V). The Jacobian takes the law (exact_jacobian.cpp).
-    void set_law(const SlipSpeedLaw& law, double V);
+    void set_law(const SlipSpeedLaw& law, double V) override;
     // Back to Coulomb's law with input.mu.
-    void clear_law() { law_.clear(); }
+    void clear_law() override { law_.clear(); }
 
     const ExactSolveInfo& info() const { return info_; }
     int nx() const { return nx_; }

@@ -77,9 +77,9 @@ public:
     // next solves, as ExactModel's (exact/exact_law.hpp): the traction unit
     // is mu(0) p_max and input.mu is not read. Throws Error(invalid_input)
     // naming the input. The Jacobian takes the law.
-    void set_law(const SlipSpeedLaw& law, double V);
+    void set_law(const SlipSpeedLaw& law, double V) override;
     // Back to Coulomb's law with input.mu.
-    void clear_law() { law_.clear(); }
+    void clear_law() override { law_.clear(); }
 
     const GapExactSolveInfo& info() const { return info_; }
     // dN/d(approach) [N/m] at the last solve, its normal method's own
