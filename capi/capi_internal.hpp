@@ -29,6 +29,7 @@ struct cw_solver {
     explicit cw_solver(const cw::Solver& view) : solver(const_cast<cw::Solver&>(view)) {}
     std::unique_ptr<cw::Solver> owned;
     cw::Solver& solver;
+    double V = 0.0; // cw_params.V of the last successful solve [m/s] (0: not given)
     mutable std::string last_error; // the last call's message, const getters' included
 };
 
@@ -178,6 +179,7 @@ void require_length(size_t have, size_t need, const char* name);
 size_t element_count(const cw::Solver& s);
 void require_solution(const cw::Solver& s, bool needs_work);
 void require_finite(const char* name, double v);
+double rolling_speed_of(double own, const char* own_name, double solve_V);
 int hardware_threads();
 
 } // namespace creepwork::capi

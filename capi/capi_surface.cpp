@@ -204,8 +204,8 @@ int cw_temperature_compute(cw_temperature* t, const cw_solver* solver,
         require_result_size(result, "cw_temperature_result_init");
         const cw::Solver& s = solver->solver;
         surface::require_grid(s, t->contact.grid, "temperature");
-        const cw_temperature_params p =
-            read_struct(params, surface::temperature_defaults(), "params");
+        cw_temperature_params p = read_struct(params, surface::temperature_defaults(), "params");
+        p.rolling_speed = rolling_speed_of(p.rolling_speed, "rolling_speed", solver->V);
         const th::ThermalParams tp = surface::to_thermal(p);
         SolvedContact& c = t->contact;
         surface::read_solved_contact(s, c);

@@ -1,5 +1,6 @@
 #include "surface_outputs.hpp"
 
+#include <cmath>
 #include <memory>
 
 #include "cli_error.hpp"
@@ -106,7 +107,7 @@ std::vector<OptionSpec> surface_options()
     return specs;
 }
 
-SurfaceRequest read_surface_request(const ParsedOptions& opts, int rolling_direction)
+SurfaceRequest read_surface_request(const ParsedOptions& opts, int rolling_direction, double V)
 {
     SurfaceRequest r;
     r.temperature = opts.has("temperature");
@@ -121,9 +122,14 @@ SurfaceRequest read_surface_request(const ParsedOptions& opts, int rolling_direc
         cw_temperature_params& p = r.temperature_params;
         for (const auto& n : kTemperatureNumbers)
             if (opts.has(n[0])) *temperature_field(p, n[1]) = opts.number(n[0], 0.0);
-        if (!opts.has("speed"))
-            throw usage_error("--temperature", "needs the rolling speed --speed V (m/s)");
-        p.rolling_speed = opts.number("speed", 0.0);
+        if (!opts.has("speed") && !(V > 0.0))
+            throw usage_error("--temperature", "needs the rolling speed (m/s): --V or --speed");
+        // 0: the library takes the solve's V
+        p.rolling_speed = opts.has("speed") ? opts.number("speed", 0.0) : 0.0;
+        if (opts.has("speed") && V > 0.0 && std::fabs(p.rolling_speed - V) > 1e-9 * V)
+            throw usage_error("--speed", round_trip_text(p.rolling_speed) + " differs from --V " +
+                                             round_trip_text(V) +
+                                             ": give the rolling speed once, or the same in both");
         p.rolling_direction = rolling_direction;
         p.discretisation = opts.text("temperature-discretisation", "consistent") == "contact"
                                ? CW_TEMPERATURE_CONTACT

@@ -29,8 +29,10 @@ struct SurfaceRequest {
 };
 
 // Throws CliError(kExitUsage) naming the option: a temperature option
-// without --temperature, --temperature without --speed.
-SurfaceRequest read_surface_request(const ParsedOptions& opts, int rolling_direction);
+// without --temperature, --temperature without a rolling speed (--speed or
+// the solve's V), --speed and V that differ. V: the solve's cw_params.V
+// (0: not given); without --speed the temperature takes it.
+SurfaceRequest read_surface_request(const ParsedOptions& opts, int rolling_direction, double V);
 
 struct SurfaceOutput {
     bool temperature = false, damage = false;

@@ -39,7 +39,10 @@ typedef struct cw_temperature_params {
     double density_1;        /* rho [kg/m^3] in [1, 1e5]; default 7850 */
     /* Body 2, the wheel; the same ranges and defaults. */
     double T0_2, heat_capacity_2, conductivity_2, density_2;
-    double rolling_speed;    /* V [m/s] in [1e-3, 1e3]; default 0: must be set */
+    double rolling_speed;    /* V [m/s] in [1e-3, 1e3]; 0 (default): the V the solve was
+                                given (cw_params.V), which must then be > 0. Both given:
+                                they must agree (to 1e-9), else CW_ERR_INVALID_INPUT
+                                naming both */
     int rolling_direction;   /* the solve's cw_params.rolling_direction (+1 default, -1) */
     int discretisation;      /* CW_TEMPERATURE_CONSISTENT (default) or _CONTACT */
 } cw_temperature_params;
