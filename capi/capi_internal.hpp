@@ -29,7 +29,11 @@ struct cw_solver {
     explicit cw_solver(const cw::Solver& view) : solver(const_cast<cw::Solver&>(view)) {}
     std::unique_ptr<cw::Solver> owned;
     cw::Solver& solver;
-    double V = 0.0; // cw_params.V of the last successful solve [m/s] (0: not given)
+    // The rolling speed and direction of the last successful solve
+    // (cw_params.V, 0: not given; cw_params.rolling_direction, 0: no solve),
+    // for the post-processors that need them (capi_surface.cpp, capi_wear.cpp).
+    double V = 0.0;
+    int rolling_direction = 0;
     mutable std::string last_error; // the last call's message, const getters' included
 };
 

@@ -82,8 +82,10 @@ int cw_solver_solve(cw_solver* solver, const cw_params* params, int mode, cw_res
         const cw::ContactInput in = to_input(params);
         const cw::SolveMode m = to_mode(mode);
         solver->V = 0.0;
+        solver->rolling_direction = 0;
         const cw::SolveTotals& t = solver->solver.solve(in, m);
         solver->V = in.V;
+        solver->rolling_direction = in.rolling_direction;
         if (result) write_struct(result, to_result(t));
         return CW_OK;
     });
@@ -105,8 +107,10 @@ int cw_solver_solve_jacobian(cw_solver* solver, const cw_params* params, int mod
         const cw::SolveMode m = to_mode(mode);
         cw::Jacobian J;
         solver->V = 0.0;
+        solver->rolling_direction = 0;
         const cw::SolveTotals& t = solver->solver.solve_jacobian(in, m, J);
         solver->V = in.V;
+        solver->rolling_direction = in.rolling_direction;
         if (result) write_struct(result, to_result(t));
         for (int r = 0; r < 4; ++r)
             for (int c = 0; c < 4; ++c) jacobian[4 * r + c] = J.d[r][c];

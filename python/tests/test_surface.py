@@ -101,7 +101,7 @@ def test_errors_name_the_input():
     with creepwork.Solver() as s:
         s.solve(**CONTACT)
         with pytest.raises(creepwork.InvalidInputError, match="rolling_speed"):
-            s.temperature()  # the rolling speed has no default
+            s.temperature()  # no rolling speed: none given, the solve's V is 0
         with pytest.raises(creepwork.InvalidInputError, match="density_1"):
             s.temperature(rolling_speed=30.0, density_1=7.85e-6)
         with pytest.raises(creepwork.InvalidInputError, match="k_yield"):

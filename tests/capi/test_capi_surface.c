@@ -316,7 +316,8 @@ static void wlrm_damage_of_every_contact(void** state)
  * and the handle holds no result afterwards. */
 /* One rolling speed: rolling_speed = 0 takes the solve's cw_params.V, and
  * gives the bits of rolling_speed = V; both given must agree (to 1e-9), and
- * the error names both; neither given names both too. */
+ * the error names both; neither given names both too. rolling_direction = 0
+ * takes the solve's likewise. */
 static void rolling_speed_from_the_solve(void** state)
 {
     (void)state;
@@ -341,6 +342,11 @@ static void rolling_speed_from_the_solve(void** state)
     assert_memory_equal(&from_V, &given, sizeof given);
     assert_memory_equal(T_from_V, T_given, sizeof T_given);
     assert_true(given.T_max_1 > tp.T0_1 + 1.0); /* the speed heats */
+    tp.rolling_direction = 0; /* the solve's */
+    assert_status(cw_temperature_compute(t, s, &tp, &given), CW_OK);
+    assert_status(cw_temperature_get_field(t, CW_TEMPERATURE_FIELD_RAIL, T_given, N), CW_OK);
+    assert_memory_equal(T_from_V, T_given, sizeof T_given);
+    tp.rolling_direction = p.rolling_direction;
     tp.rolling_speed = 30.0 * (1 + 1e-12); /* the same speed, another rounding */
     assert_status(cw_temperature_compute(t, s, &tp, &given), CW_OK);
     tp.rolling_speed = 31.0;
@@ -405,10 +411,14 @@ static void invalid_inputs(void** state)
         assert_names(cw_temperature_last_error(t), bad[b].name);
         *bad[b].field = keep;
     }
-    tp.rolling_direction = 0;
+    tp.rolling_direction = 2;
     assert_status(cw_temperature_compute(t, s, &tp, &r), CW_ERR_INVALID_INPUT);
     assert_names(cw_temperature_last_error(t), "rolling_direction");
-    tp.rolling_direction = 1;
+    tp.rolling_direction = -p.rolling_direction; /* not the solve's */
+    assert_status(cw_temperature_compute(t, s, &tp, &r), CW_ERR_INVALID_INPUT);
+    assert_names(cw_temperature_last_error(t), "rolling_direction");
+    assert_names(cw_temperature_last_error(t), "cw_params.rolling_direction");
+    tp.rolling_direction = p.rolling_direction;
     tp.discretisation = 7;
     assert_status(cw_temperature_compute(t, s, &tp, &r), CW_ERR_UNKNOWN_OPTION);
     assert_names(cw_temperature_last_error(t), "discretisation");

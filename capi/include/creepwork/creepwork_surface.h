@@ -43,7 +43,9 @@ typedef struct cw_temperature_params {
                                 given (cw_params.V), which must then be > 0. Both given:
                                 they must agree (to 1e-9), else CW_ERR_INVALID_INPUT
                                 naming both */
-    int rolling_direction;   /* the solve's cw_params.rolling_direction (+1 default, -1) */
+    int rolling_direction;   /* the solve's cw_params.rolling_direction (+1 default, -1);
+                                0: the solve's (a wheel/rail patch: its own). Another
+                                than the solve's: CW_ERR_INVALID_INPUT */
     int discretisation;      /* CW_TEMPERATURE_CONSISTENT (default) or _CONTACT */
 } cw_temperature_params;
 
