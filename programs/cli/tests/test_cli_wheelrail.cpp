@@ -37,6 +37,28 @@ std::vector<std::string> benchmark_args()
             "--roll", "-0.004376", "--Fz", "1e4", "--V", "2", "--pitch-rate", "-4.2748834"};
 }
 
+// The benchmark_args() wheel through the C ABI, solved for Fz = 10 kN.
+cw_wheelrail* solved_benchmark(cw_wheelrail_totals& t)
+{
+    cw_wheelrail_params p;
+    cw_wheelrail_params_init(&p);
+    p.side = CW_WHEELRAIL_LEFT;
+    cw_wheelrail* w = nullptr;
+    assert_int_equal(cw_wheelrail_create(&p, (g_data + "/MBench_UIC60_v3.prr").c_str(),
+                                         (g_data + "/MBench_S1002_v3.prw").c_str(), &w, nullptr, 0),
+                     CW_OK);
+    cw_wheelrail_motion m;
+    cw_wheelrail_motion_init(&m);
+    m.y = 6.5e-3;
+    m.yaw = 0.0156;
+    m.roll = -0.004376;
+    m.vs = 2.0;
+    m.vpitch = -4.2748834;
+    cw_wheelrail_totals_init(&t);
+    assert_int_equal(cw_wheelrail_solve(w, &m, CW_WHEELRAIL_FORCE, 1e4, &t), CW_OK);
+    return w;
+}
+
 void json_matches_library(void**)
 {
     const cwtest::Run r = cwtest::cli_ok(cwtest::with(benchmark_args(), {"--format", "json"}));
@@ -59,23 +81,8 @@ void json_matches_library(void**)
     assert_close(j.at("total_rail").num("Fz"), 1e4, 1e-6, 0);
 
     // the library, through the C ABI, for the same wheel
-    cw_wheelrail_params p;
-    cw_wheelrail_params_init(&p);
-    p.side = CW_WHEELRAIL_LEFT;
-    cw_wheelrail* w = nullptr;
-    assert_int_equal(cw_wheelrail_create(&p, (g_data + "/MBench_UIC60_v3.prr").c_str(),
-                                         (g_data + "/MBench_S1002_v3.prw").c_str(), &w, nullptr, 0),
-                     CW_OK);
-    cw_wheelrail_motion m;
-    cw_wheelrail_motion_init(&m);
-    m.y = 6.5e-3;
-    m.yaw = 0.0156;
-    m.roll = -0.004376;
-    m.vs = 2.0;
-    m.vpitch = -4.2748834;
     cw_wheelrail_totals t;
-    cw_wheelrail_totals_init(&t);
-    assert_int_equal(cw_wheelrail_solve(w, &m, CW_WHEELRAIL_FORCE, 1e4, &t), CW_OK);
+    cw_wheelrail* w = solved_benchmark(t);
     cw_wheelrail_patch pa;
     cw_wheelrail_patch_init(&pa);
     assert_int_equal(cw_wheelrail_get_patch(w, 0, &pa), CW_OK);
@@ -108,23 +115,8 @@ void temperature_matches_library(void**)
         benchmark_args(), {"--temperature", "--T0-1", "10", "--T0-2", "30", "--format", "json"}));
     const cwtest::Json j = cwtest::parse_json(r.out);
     const cwtest::Json& q = j.at("patches").array.at(0);
-    cw_wheelrail_params p;
-    cw_wheelrail_params_init(&p);
-    p.side = CW_WHEELRAIL_LEFT;
-    cw_wheelrail* w = nullptr;
-    assert_int_equal(cw_wheelrail_create(&p, (g_data + "/MBench_UIC60_v3.prr").c_str(),
-                                         (g_data + "/MBench_S1002_v3.prw").c_str(), &w, nullptr, 0),
-                     CW_OK);
-    cw_wheelrail_motion m;
-    cw_wheelrail_motion_init(&m);
-    m.y = 6.5e-3;
-    m.yaw = 0.0156;
-    m.roll = -0.004376;
-    m.vs = 2.0;
-    m.vpitch = -4.2748834;
     cw_wheelrail_totals t;
-    cw_wheelrail_totals_init(&t);
-    assert_int_equal(cw_wheelrail_solve(w, &m, CW_WHEELRAIL_FORCE, 1e4, &t), CW_OK);
+    cw_wheelrail* w = solved_benchmark(t);
     cw_wheelrail_patch pa;
     cw_wheelrail_patch_init(&pa);
     assert_int_equal(cw_wheelrail_get_patch(w, 0, &pa), CW_OK);
