@@ -59,18 +59,20 @@ std::vector<OptionSpec> wheelrail_options()
 }
 
 // --temperature: each patch's hottest rail and wheel element, through the C
-// ABI (cw_temperature on cw_wheelrail_patch_solver, the patch's own rolling
-// speed veloc and direction). Throws CliError naming the option on a
-// library refusal.
+// ABI (cw_temperature on cw_wheelrail_patch_solver at the patch's rolling
+// speed veloc, rolling_direction 0: the patch's). Throws CliError naming the
+// option on a library refusal.
 struct PatchTemperature {
     double T_max_1 = 0, T_max_2 = 0;
 };
 
-std::vector<PatchTemperature> patch_temperatures(const cw_wheelrail* w, size_t n,
-                                                 const cw_temperature_params& params)
+std::vector<PatchTemperature> patch_temperatures(const cw_wheelrail* w,
+                                                 const std::vector<cw_wheelrail_patch>& patches,
+                                                 cw_temperature_params params)
 {
     std::vector<PatchTemperature> out;
-    for (size_t k = 0; k < n; ++k) {
+    for (size_t k = 0; k < patches.size(); ++k) {
+        params.rolling_speed = patches[k].veloc;
         const cw_solver* view = cw_wheelrail_patch_solver(w, k);
         if (!view) throw CliError(kExitFailure, cw_wheelrail_last_error(w));
         cw_temperature* raw = nullptr;
@@ -286,7 +288,7 @@ int command_wheelrail(int argc, char** argv, int first)
                   << " rad/s (-V / 0.46 m: rolling at the nominal radius) taken as defaults\n";
     const bool temperature = o.has("temperature");
     const std::vector<PatchTemperature> hot =
-        temperature ? patch_temperatures(w.get(), patches.size(), temperature_params)
+        temperature ? patch_temperatures(w.get(), patches, temperature_params)
                     : std::vector<PatchTemperature>();
     std::vector<JsonObject> list;
     for (size_t k = 0; k < patches.size(); ++k) {

@@ -573,7 +573,7 @@ contact:
 surface temperature (degC; body 1 the rail, body 2 the wheel):
   --temperature          also each patch's hottest rail and wheel element
                          (JSON: T_max_1, T_max_2 per patch), at the patch's
-                         own rolling speed (veloc) and direction
+                         rolling speed (veloc) and direction
   --T0-1 T --T0-2 T, --heat-capacity-1/-2, --conductivity-1/-2,
   --density-1/-2, --temperature-discretisation consistent|contact
                          as creepwork solve (steel by default)
