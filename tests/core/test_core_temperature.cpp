@@ -342,7 +342,7 @@ double ertz_continuous_max()
 
 // The Ertz heat on a grid of spacing dx over [-7.9, 7.9 + ...] mm (element
 // edges at -7.9 mm as CONTACT's example), three rows around y = 0.
-double ertz_max(double dx, th::Discretisation d)
+Grid ertz_grid(double dx)
 {
     const int nx = static_cast<int>(std::lround(15.8e-3 / dx));
     Grid g(nx, 3, -7.9e-3 + dx / 2, -0.5e-3, dx, 0.5e-3);
@@ -353,6 +353,13 @@ double ertz_max(double dx, th::Discretisation d)
             g.q[e] = ertz_q0() * std::sqrt(r);
         }
     }
+    return g;
+}
+
+// The maximum temperature of the Ertz heat at spacing dx.
+double ertz_max(double dx, th::Discretisation d)
+{
+    Grid g = ertz_grid(dx);
     const th::TemperatureTotals t = g.solve(ertz_params(d));
     assert_true(t.rail.T == t.wheel.T);
     assert_close(t.rail.y, 0.0, 0.0, 1e-15); // the hottest row is y = 0
@@ -384,16 +391,8 @@ void ertz_recursion_matches_direct_sum(void** state)
     (void)state;
     using Method = th::MovingSourceKernel::Method;
     for (double dx : {0.1e-3, 0.025e-3}) {
-        const int nx = static_cast<int>(std::lround(15.8e-3 / dx));
-        assert_true(nx > th::MovingSourceKernel::kDirectMaxLength);
-        Grid g(nx, 3, -7.9e-3 + dx / 2, -0.5e-3, dx, 0.5e-3);
-        for (size_t e = 0; e < g.q.size(); ++e) {
-            const double r = 1 - std::pow(g.x[e] / kErtzA, 2) - std::pow(g.y[e] / kErtzB, 2);
-            if (r > 0.0) {
-                g.state[e] = 2;
-                g.q[e] = ertz_q0() * std::sqrt(r);
-            }
-        }
+        Grid g = ertz_grid(dx);
+        assert_true(g.nx > th::MovingSourceKernel::kDirectMaxLength);
         for (th::Discretisation d : {th::Discretisation::consistent, th::Discretisation::contact}) {
             Grid direct = g;
             const th::TemperatureTotals a = direct.solve(ertz_params(d, 0.0, 150.0), Method::direct);
