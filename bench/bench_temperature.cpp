@@ -3,8 +3,8 @@
 // solve, the fields the post-processors read, the heat and both bodies'
 // temperatures (consistent discretisation), the damage indices. The
 // partial-slip contact of creepwork_bench, Kalker strip grid n x n, best of
-// 21 samples. Second table: one row of the moving-source kernel, direct sum
-// against FFT, for the break-even (MovingSourceKernel::kDirectMaxLength).
+// 21 samples. Second table: one row of the moving-source kernel, direct sum,
+// recursion and FFT, for the break-even (MovingSourceKernel::kDirectMaxLength).
 // Not a test: prints tables (`build/bin/creepwork_bench_temperature`).
 #include <chrono>
 #include <cstdio>
@@ -115,20 +115,25 @@ void contact_table()
 
 void kernel_table()
 {
+    using Method = th::MovingSourceKernel::Method;
     std::printf("\nThe moving-source kernel on one row, two rows per call; ns per element (best of 11 "
                 "samples)\n\n");
-    std::printf("| row length | direct ns/element | FFT ns/element (two rows per transform) |\n"
-                "|---:|---:|---:|\n");
-    for (int n : {16, 32, 64, 96, 128, 256, 512, 1000}) {
-        th::MovingSourceKernel direct(n, n), fft(n, 0);
+    std::printf("| row length | direct ns/element | recursive ns/element (exponentials) | "
+                "FFT ns/element | automatic |\n|---:|---:|---:|---:|---|\n");
+    for (int n : {16, 32, 48, 64, 80, 96, 128, 256, 512, 1000}) {
+        th::MovingSourceKernel direct(n, Method::direct), recursive(n, Method::recursive),
+            fft(n, Method::fft), chosen(n);
         std::vector<double> qa(n), qb(n), oa(n), ob(n);
         for (int t = 0; t < n; ++t) qa[t] = qb[t] = 1.0 + 0.001 * t;
         const int reps = 200000 / n + 1;
-        const double td =
-            best_of(11, reps, [&] { direct.apply(qa.data(), qb.data(), oa.data(), ob.data(), 0.7); });
-        const double tf =
-            best_of(11, reps, [&] { fft.apply(qa.data(), qb.data(), oa.data(), ob.data(), 0.7); });
-        std::printf("| %d | %.2f | %.2f |\n", n, 1e9 * td / (2 * n), 1e9 * tf / (2 * n));
+        auto time = [&](th::MovingSourceKernel& k) {
+            return 1e9 *
+                   best_of(11, reps, [&] { k.apply(qa.data(), qb.data(), oa.data(), ob.data(), 0.7); }) /
+                   (2 * n);
+        };
+        const double td = time(direct), tr = time(recursive), tf = time(fft);
+        std::printf("| %d | %.2f | %.2f (%d) | %.2f | %s |\n", n, td, tr, recursive.exponentials(),
+                    tf, chosen.method() == Method::direct ? "direct" : "recursive");
     }
 }
 

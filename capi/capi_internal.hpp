@@ -29,6 +29,11 @@ struct cw_solver {
     explicit cw_solver(const cw::Solver& view) : solver(const_cast<cw::Solver&>(view)) {}
     std::unique_ptr<cw::Solver> owned;
     cw::Solver& solver;
+    // The rolling speed and direction of the last successful solve
+    // (cw_params.V, 0: not given; cw_params.rolling_direction, 0: no solve),
+    // for the post-processors that need them (capi_surface.cpp, capi_wear.cpp).
+    double V = 0.0;
+    int rolling_direction = 0;
     mutable std::string last_error; // the last call's message, const getters' included
 };
 
@@ -178,6 +183,7 @@ void require_length(size_t have, size_t need, const char* name);
 size_t element_count(const cw::Solver& s);
 void require_solution(const cw::Solver& s, bool needs_work);
 void require_finite(const char* name, double v);
+double rolling_speed_of(double own, const char* own_name, double solve_V);
 int hardware_threads();
 
 } // namespace creepwork::capi

@@ -81,7 +81,11 @@ int cw_solver_solve(cw_solver* solver, const cw_params* params, int mode, cw_res
         require_result_size(result, "cw_result_init");
         const cw::ContactInput in = to_input(params);
         const cw::SolveMode m = to_mode(mode);
+        solver->V = 0.0;
+        solver->rolling_direction = 0;
         const cw::SolveTotals& t = solver->solver.solve(in, m);
+        solver->V = in.V;
+        solver->rolling_direction = in.rolling_direction;
         if (result) write_struct(result, to_result(t));
         return CW_OK;
     });
@@ -102,7 +106,11 @@ int cw_solver_solve_jacobian(cw_solver* solver, const cw_params* params, int mod
         const cw::ContactInput in = to_input(params);
         const cw::SolveMode m = to_mode(mode);
         cw::Jacobian J;
+        solver->V = 0.0;
+        solver->rolling_direction = 0;
         const cw::SolveTotals& t = solver->solver.solve_jacobian(in, m, J);
+        solver->V = in.V;
+        solver->rolling_direction = in.rolling_direction;
         if (result) write_struct(result, to_result(t));
         for (int r = 0; r < 4; ++r)
             for (int c = 0; c < 4; ++c) jacobian[4 * r + c] = J.d[r][c];

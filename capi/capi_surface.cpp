@@ -134,6 +134,23 @@ th::ThermalParams to_thermal(const cw_temperature_params& p)
     return t;
 }
 
+// The temperature's rolling direction: its own, or 0 for the solve's; both
+// known must agree.
+int rolling_direction_of(int own, const cw_solver& solver)
+{
+    const int solve = solver.rolling_direction;
+    if (own == 0 && solve != 0) return solve;
+    if (own != 1 && own != -1)
+        fail(CW_ERR_INVALID_INPUT, "rolling_direction = " + std::to_string(own) +
+                                       " is invalid: must be +1, -1 or 0 (the solve's)");
+    if (solve != 0 && own != solve)
+        fail(CW_ERR_INVALID_INPUT,
+             "rolling_direction = " + std::to_string(own) +
+                 " differs from the solve's cw_params.rolling_direction = " +
+                 std::to_string(solve) + ": the heat would run the wrong way (0 takes the solve's)");
+    return own;
+}
+
 } // namespace surface
 
 using surface::SolvedContact;
@@ -205,8 +222,9 @@ int cw_temperature_compute(cw_temperature* t, const cw_solver* solver,
         require_result_size(result, "cw_temperature_result_init");
         const cw::Solver& s = solver->solver;
         surface::require_grid(s, t->contact.grid, "temperature");
-        const cw_temperature_params p =
-            read_struct(params, surface::temperature_defaults(), "params");
+        cw_temperature_params p = read_struct(params, surface::temperature_defaults(), "params");
+        p.rolling_speed = rolling_speed_of(p.rolling_speed, "rolling_speed", solver->V);
+        p.rolling_direction = surface::rolling_direction_of(p.rolling_direction, *solver);
         const th::ThermalParams tp = surface::to_thermal(p);
         SolvedContact& c = t->contact;
         surface::read_solved_contact(s, c);

@@ -4,6 +4,8 @@
 
 #include <cmath>
 
+#include "contact/number_text.hpp"
+
 #ifdef _OPENMP
 #include <omp.h>
 #endif
@@ -299,6 +301,30 @@ void require_solution(const cw::Solver& s, bool needs_work)
 void require_finite(const char* name, double v)
 {
     if (!std::isfinite(v)) fail(CW_ERR_INVALID_INPUT, std::string(name) + " must be finite");
+}
+
+// A post-processor's rolling speed [m/s]: its own (own_name) when > 0, else
+// the V its solve was given (cw_params.V). Both given must agree.
+double rolling_speed_of(double own, const char* own_name, double solve_V)
+{
+    const std::string name = own_name;
+    require_finite(own_name, own);
+    if (!(own >= 0.0))
+        fail(CW_ERR_INVALID_INPUT, name + " = " + cw::number_text(own) +
+                                       " is invalid: must be >= 0 (0: the solve's cw_params.V)");
+    if (own == 0.0) {
+        if (solve_V > 0.0) return solve_V;
+        fail(CW_ERR_INVALID_INPUT,
+             name + " = 0 and the solve's cw_params.V = 0: the rolling speed is needed, "
+                    "in one of them");
+    }
+    if (solve_V > 0.0 && std::fabs(own - solve_V) > 1e-9 * solve_V)
+        fail(CW_ERR_INVALID_INPUT, name + " = " + cw::number_text(own) +
+                                       " differs from the solve's cw_params.V = " +
+                                       cw::number_text(solve_V) +
+                                       ": give the rolling speed once (" + name +
+                                       " = 0 takes cw_params.V), or the same in both");
+    return own;
 }
 
 int hardware_threads()

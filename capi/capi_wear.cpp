@@ -54,9 +54,12 @@ cw_wear_params wear_defaults()
     return p;
 }
 
-cww::WearLaw to_wear_law(const cw_wear_params* caller)
+// solve_V: the solve's cw_params.V, Archard's rolling speed when its own is 0.
+cww::WearLaw to_wear_law(const cw_wear_params* caller, double solve_V)
 {
-    const cw_wear_params p = read_struct(caller, wear_defaults(), "params");
+    cw_wear_params p = read_struct(caller, wear_defaults(), "params");
+    if (p.law == CW_WEAR_ARCHARD_KTH)
+        p.rolling_speed = rolling_speed_of(p.rolling_speed, "rolling_speed", solve_V);
     if (p.law != CW_WEAR_USFD && p.law != CW_WEAR_ARCHARD_KTH)
         fail(CW_ERR_UNKNOWN_OPTION, "law = " + std::to_string(p.law) +
                                         " is not CW_WEAR_USFD (0) or CW_WEAR_ARCHARD_KTH (1)");
@@ -159,7 +162,7 @@ int cw_wear_compute(cw_wear* wear, const cw_solver* solver, const cw_wear_params
         const cw::Solver& s = solver->solver;
         if (!same_grid(s.grid().spec(), wear->grid))
             fail(CW_ERR_GRID_MISMATCH, "the solver's grid differs from the one wear was made for");
-        const cww::WearLaw law = to_wear_law(params);
+        const cww::WearLaw law = to_wear_law(params, solver->V);
         require_solution(s, true);
         const cw::SolvedContact& view = s.solved(); // the solve's fields, read once
         cw::export_field(view, cw::Field::area, wear->area.data());

@@ -126,6 +126,11 @@ const cw_solver* cw_wheelrail_patch_solver(const cw_wheelrail* wheelrail, size_t
         const cw::Solver& s = patch_solver(solved_patch(*wheelrail, k));
         auto it = wheelrail->views.find(&s);
         if (it == wheelrail->views.end()) it = wheelrail->views.emplace(&s, std::make_unique<cw_solver>(s)).first;
+        // The patch's rolling direction, for cw_temperature_compute with
+        // rolling_direction 0. Not its speed (veloc) as cw_params.V: a wear
+        // law's rolling_speed given as the wheelset's would then disagree.
+        const wr::ContactPatch& g = wheelrail->contact.geometry().state().patches.at(k);
+        it->second->rolling_direction = g.forward ? 1 : -1;
         view = it->second.get();
         return CW_OK;
     });

@@ -1,7 +1,8 @@
 ! creepwork_legacy.f90 -- the FORTRAN-77-callable layer of libcreepwork_fortran:
 ! the contact solves (this file); creepwork_legacy_tools.f90 has the work
 ! accumulation, Kalker's coefficients and flexibilities, Hertz, the messages
-! and the kind check; creepwork_legacy_wear.f90 the wear routines.
+! and the kind check; creepwork_legacy_wear.f90 the wear routines,
+! creepwork_legacy_surface.f90 the surface temperature.
 !
 ! Plain external subroutines: no module, no derived type, no optional
 ! argument in the caller. Scalars are passed by reference, arrays have
@@ -29,6 +30,7 @@
 !   CWWEAR  wear of one contact (USFD or Archard/KTH): depth per pass per strip
 !   CWWPRF  adds passes of a lateral wear profile to a profile grid's depths
 !   CWWUPD  profile update: new = old - (smoothed) depth
+!   CWTEMP  surface temperature of both bodies of one contact, their maxima
 !   CWERRM  the message of an IERR value
 !   CWLAST  the detailed message of the calling thread's last call, naming
 !           the offending input
@@ -44,7 +46,7 @@
 ! invalid: must lie in [0, 0.5]"); CALL CWLAST(MSG) reads it. Each thread has
 ! its own (legacy_thread_state.cpp), so threads do not see each other's.
 !
-! Cost: CWSOLM, CWSOLL, CWSOLX, CWJACO and CWWEAR make and free a solver in
+! Cost: CWSOLM, CWSOLL, CWSOLX, CWJACO, CWWEAR and CWTEMP make and free a solver in
 ! every call and fill every map: no state, any grid from call to call, but
 ! several times a forces-only solve on a reused solver (the benchmark
 ! creepwork_bench_legacy measures both). CWFORC keeps one solver per grid

@@ -11,15 +11,17 @@
 
 namespace creepwork {
 
-// v unchanged, but opaque to the optimiser.
-inline double fp_opaque(double v)
+// v unchanged, but opaque to the optimiser: a double, or a vector of them
+// (DoublePair below) in one register.
+template <class T>
+inline T fp_opaque(T v)
 {
 #if defined(__GNUC__) && defined(__x86_64__)
     __asm__("" : "+x"(v));
 #elif defined(__GNUC__) && defined(__aarch64__)
     __asm__("" : "+w"(v));
 #else
-    volatile double copy = v;
+    volatile T copy = v;
     v = copy;
 #endif
     return v;
@@ -38,6 +40,17 @@ inline double quotient_if_positive(double num, double den)
 {
     const bool ok = den > 0.0;
     return (ok ? num : 0.0) / fp_opaque(ok ? den : 1.0);
+}
+
+// Two lanes at once (GCC's vector extension), for loops that take two
+// elements per step: the same operations lane by lane, so the same bits.
+typedef double DoublePair __attribute__((vector_size(16)));
+
+inline DoublePair quotient_if_positive(DoublePair num, DoublePair den)
+{
+    const DoublePair zero = {0.0, 0.0}, one = {1.0, 1.0};
+    const auto ok = den > zero;
+    return (ok ? num : zero) / fp_opaque(ok ? den : one);
 }
 
 } // namespace creepwork

@@ -135,7 +135,8 @@ void validate(const ThermalParams& p)
                      "must be consistent (0) or contact (1)");
 }
 
-FlashTemperature::FlashTemperature(int nx, int ny) : nx_(nx), ny_(ny), kernel_(nx)
+FlashTemperature::FlashTemperature(int nx, int ny, MovingSourceKernel::Method method)
+    : nx_(nx), ny_(ny), kernel_(nx, method)
 {
     if (ny < 1)
         throw Error(ErrorKind::invalid_input, "ny = " + std::to_string(ny) + " must be >= 1");

@@ -92,7 +92,10 @@ struct TemperatureTotals {
 // can call it every iteration.
 class FlashTemperature {
 public:
-    FlashTemperature(int nx, int ny);
+    // method: how the moving-source sum is taken along a row (automatic: by
+    // the row length, thermal/moving_source.hpp).
+    FlashTemperature(int nx, int ny,
+                     MovingSourceKernel::Method method = MovingSourceKernel::Method::automatic);
     int nx() const { return nx_; }
     int ny() const { return ny_; }
 

@@ -4,13 +4,23 @@
 #include <cmath>
 
 #include "contact/fp_safe.hpp"
+#include "simd/simd.hpp"
 
 namespace creepwork::thermal {
 
 void heat_from_work(long n, const double* work, const double* area, double rolling_speed,
                     double* q)
 {
-    for (long e = 0; e < n; ++e)
+    // Two elements a step: one packed division instead of two.
+    typedef simd::Vec<2> Pair;
+    const Pair zero = {0.0, 0.0};
+    long e = 0;
+    for (; e + 2 <= n; e += 2) {
+        const Pair w = simd::load<2>(work + e);
+        simd::store<2>(q + e, rolling_speed * quotient_if_positive(zero < w ? w : zero,
+                                                                   simd::load<2>(area + e)));
+    }
+    for (; e < n; ++e)
         q[e] = rolling_speed * quotient_if_positive(std::max(0.0, work[e]), area[e]);
 }
 

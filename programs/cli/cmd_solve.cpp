@@ -33,7 +33,7 @@ int command_solve(int argc, char** argv, int first)
     reject_gap_options(opts);
     const ContactSetup c = read_contact(opts, library_default_params(), library_default_grid(),
                                         SizeAndLoad::required);
-    const SurfaceRequest surface = read_surface_request(opts, c.params.rolling_direction);
+    const SurfaceRequest surface = read_surface_request(opts, c.params.rolling_direction, c.params.V);
     const std::string out = opts.text("out", "");
     if (!out.empty()) check_output_target(out, "--out", opts.has("force"));
 

@@ -125,9 +125,11 @@ std::vector<State> read_states(const std::string& path, const ParsedOptions& o, 
         for (const std::string& note : header.notes()) u.notes.push_back(note);
         const std::string defaults = defaults_note(header, u.base.params, path, u.base_given);
         if (!defaults.empty()) u.notes.push_back(defaults);
-        if (u.wear.law == CW_WEAR_ARCHARD_KTH && !o.has("speed") && !header.has(Input::speed))
+        if (u.wear.law == CW_WEAR_ARCHARD_KTH && !o.has("speed") && !header.has(Input::speed) &&
+            !header.has(Input::V))
             throw usage_error("--speed", "missing: Archard's KTH map needs the rolling speed V "
-                                         "[m/s] (sliding velocity = slip x V)");
+                                         "[m/s] (sliding velocity = slip x V): --speed, or a "
+                                         "speed or V column");
         WearRules rules;
         rules.default_body = u.wheel ? 1 : 0;
         rules.wheel_radius = u.radius;

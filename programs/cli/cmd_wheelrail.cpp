@@ -19,6 +19,7 @@
 #include "contact_inputs.hpp"
 #include "json.hpp"
 #include "output_dir.hpp"
+#include "surface_outputs.hpp"
 #include "units.hpp"
 #include "wheelrail_data.hpp"
 #include "wheelrail_plots.hpp"
@@ -29,7 +30,7 @@ namespace {
 
 std::vector<OptionSpec> wheelrail_options()
 {
-    return {{"format", OptionKind::choice, {"text", "json"}},
+    std::vector<OptionSpec> specs = {{"format", OptionKind::choice, {"text", "json"}},
             {"help", OptionKind::flag, {}},
             {"model", OptionKind::choice, {"exact", "fastsim"}},
             {"out", OptionKind::text, {}},
@@ -53,6 +54,40 @@ std::vector<OptionSpec> wheelrail_options()
             {"side", OptionKind::choice, {"right", "left"}},
             {"dx", OptionKind::number, {}},
             {"ds", OptionKind::number, {}}};
+    for (const OptionSpec& s : temperature_options()) specs.push_back(s);
+    return specs;
+}
+
+// --temperature: each patch's hottest rail and wheel element, through the C
+// ABI (cw_temperature on cw_wheelrail_patch_solver at the patch's rolling
+// speed veloc, rolling_direction 0: the patch's). Throws CliError naming the
+// option on a library refusal.
+struct PatchTemperature {
+    double T_max_1 = 0, T_max_2 = 0;
+};
+
+std::vector<PatchTemperature> patch_temperatures(const cw_wheelrail* w,
+                                                 const std::vector<cw_wheelrail_patch>& patches,
+                                                 cw_temperature_params params)
+{
+    std::vector<PatchTemperature> out;
+    for (size_t k = 0; k < patches.size(); ++k) {
+        params.rolling_speed = patches[k].veloc;
+        const cw_solver* view = cw_wheelrail_patch_solver(w, k);
+        if (!view) throw CliError(kExitFailure, cw_wheelrail_last_error(w));
+        cw_temperature* raw = nullptr;
+        if (cw_temperature_create(view, &raw) != CW_OK)
+            throw CliError(kExitFailure, "cw_temperature_create failed");
+        const std::unique_ptr<cw_temperature, int (*)(cw_temperature*)> t(raw,
+                                                                          cw_temperature_destroy);
+        cw_temperature_result r;
+        cw_temperature_result_init(&r);
+        if (cw_temperature_compute(t.get(), view, &params, &r) != CW_OK)
+            throw CliError(kExitUsage, std::string("--temperature: patch ") + std::to_string(k) +
+                                           ": " + cw_temperature_last_error(t.get()));
+        out.push_back({r.T_max_1, r.T_max_2});
+    }
+    return out;
 }
 
 // The library's findings (cw_wheelrail_check), each naming the option as
@@ -212,6 +247,7 @@ int command_wheelrail(int argc, char** argv, int first)
     for (const char* offset : {"wheel-y-offset", "rail-y-offset"})
         if (!(std::fabs(o.number(offset, 0.0)) <= 1.0))
             throw usage_error(std::string("--") + offset, "must lie within +-1 m");
+    const cw_temperature_params temperature_params = read_temperature_params(o);
     const std::string out = o.text("out", "");
     if (!out.empty()) check_output_target(out, "--out", o.has("force"));
     else
@@ -250,8 +286,15 @@ int command_wheelrail(int argc, char** argv, int first)
         std::cerr << "creepwork: note: " << (o.has("V") ? "" : "--V 1 m/s, ")
                   << "--pitch-rate " << round_trip_text(pitch_rate)
                   << " rad/s (-V / 0.46 m: rolling at the nominal radius) taken as defaults\n";
+    const bool temperature = o.has("temperature");
+    const std::vector<PatchTemperature> hot =
+        temperature ? patch_temperatures(w.get(), patches, temperature_params)
+                    : std::vector<PatchTemperature>();
     std::vector<JsonObject> list;
-    for (const cw_wheelrail_patch& q : patches) list.push_back(patch_json(q));
+    for (size_t k = 0; k < patches.size(); ++k) {
+        list.push_back(patch_json(patches[k]));
+        if (temperature) list.back().number("T_max_1", hot[k].T_max_1).number("T_max_2", hot[k].T_max_2);
+    }
     JsonObject total;
     total.number("Fx", t.Fx).number("Fy", t.Fy).number("Fz", t.Fz);
     JsonObject json;
@@ -265,8 +308,16 @@ int command_wheelrail(int argc, char** argv, int first)
     if (!out.empty()) write_output(out, o, w.get(), p, t, model, json);
     if (o.text("format", "text") == "json")
         std::cout << json.str(true) << "\n";
-    else
+    else {
         print_text(std::cout, model, t, patches);
+        for (size_t k = 0; k < hot.size(); ++k) {
+            char line[160];
+            std::snprintf(line, sizeof line,
+                          "patch %zu temperature: rail max %.2f degC, wheel max %.2f degC\n", k,
+                          hot[k].T_max_1, hot[k].T_max_2);
+            std::cout << line;
+        }
+    }
     return kExitOk;
 }
 

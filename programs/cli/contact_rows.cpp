@@ -291,9 +291,16 @@ WearPlacement read_wear_columns(const RowSource& r, const WearRules& rules)
         w.speed = r.number(Input::speed);
         if (!(w.speed > 0 && w.speed <= 1e3))
             out_of_range(Input::speed, "must lie in (0, 1000] m/s", round_trip_text(w.speed) + " m/s");
-    } else if (rules.archard && !rules.speed_given) {
+        if (r.has(Input::V) && std::fabs(w.speed - r.number(Input::V)) > 1e-9 * w.speed)
+            r.fail(r.name(Input::speed),
+                   round_trip_text(w.speed) + " m/s differs from the row's V " +
+                       round_trip_text(r.number(Input::V)) +
+                       " m/s: give the rolling speed once, or the same in both",
+                   R::unreadable);
+    } else if (rules.archard && !rules.speed_given && !r.has(Input::V)) {
         r.fail(r.name(Input::speed),
-               "empty: Archard's KTH map needs the rolling speed (a speed column or --speed)",
+               "empty: Archard's KTH map needs the rolling speed (a speed or V column, or "
+               "--speed)",
                R::unreadable);
     }
     return w;

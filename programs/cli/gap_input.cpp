@@ -414,7 +414,7 @@ int command_solve_gap(const ParsedOptions& opts)
     if (opts.text("normal-method", "exact") == "semi_hertz") p.normal_method = CW_NORMAL_SEMI_HERTZ;
     for (const std::string& w : plausibility_warnings(g.grid, p, OptionSource(opts), file))
         c.notes.push_back("warning: " + w);
-    const SurfaceRequest surface = read_surface_request(opts, p.rolling_direction);
+    const SurfaceRequest surface = read_surface_request(opts, p.rolling_direction, p.V);
     const std::string out = opts.text("out", "");
     if (!out.empty()) check_output_target(out, "--out", opts.has("force"));
 

@@ -1,5 +1,6 @@
 #include "surface_outputs.hpp"
 
+#include <cmath>
 #include <memory>
 
 #include "cli_error.hpp"
@@ -94,40 +95,62 @@ std::vector<std::string> implausible(const SurfaceRequest& r)
 
 using namespace surface_options_detail;
 
-std::vector<OptionSpec> surface_options()
+std::vector<OptionSpec> temperature_options()
 {
     using K = OptionKind;
     std::vector<OptionSpec> specs = {{"temperature", K::flag, {}},
                                      {"temperature-discretisation", K::choice,
-                                      {"consistent", "contact"}},
-                                     {"speed", K::number, {}},
-                                     {"k-yield", K::number, {}}};
+                                      {"consistent", "contact"}}};
     for (const auto& n : kTemperatureNumbers) specs.push_back({n[0], K::number, {}});
     return specs;
 }
 
-SurfaceRequest read_surface_request(const ParsedOptions& opts, int rolling_direction)
+std::vector<OptionSpec> surface_options()
 {
-    SurfaceRequest r;
-    r.temperature = opts.has("temperature");
-    cw_temperature_params_init(&r.temperature_params);
-    cw_damage_params_init(&r.damage_params);
+    using K = OptionKind;
+    std::vector<OptionSpec> specs = temperature_options();
+    specs.push_back({"speed", K::number, {}});
+    specs.push_back({"k-yield", K::number, {}});
+    return specs;
+}
+
+cw_temperature_params read_temperature_params(const ParsedOptions& opts)
+{
+    cw_temperature_params p;
+    cw_temperature_params_init(&p);
+    const bool on = opts.has("temperature");
     for (const char* name : {"temperature-discretisation", "T0-1", "T0-2", "heat-capacity-1",
                              "heat-capacity-2", "conductivity-1", "conductivity-2", "density-1",
                              "density-2"})
-        if (opts.has(name) && !r.temperature)
+        if (opts.has(name) && !on)
             throw usage_error(std::string("--") + name, "needs --temperature");
+    for (const auto& n : kTemperatureNumbers)
+        if (opts.has(n[0])) *temperature_field(p, n[1]) = opts.number(n[0], 0.0);
+    p.rolling_speed = 0.0;   // the solve's
+    p.rolling_direction = 0; // the solve's
+    p.discretisation = opts.text("temperature-discretisation", "consistent") == "contact"
+                           ? CW_TEMPERATURE_CONTACT
+                           : CW_TEMPERATURE_CONSISTENT;
+    return p;
+}
+
+SurfaceRequest read_surface_request(const ParsedOptions& opts, int rolling_direction, double V)
+{
+    SurfaceRequest r;
+    r.temperature = opts.has("temperature");
+    r.temperature_params = read_temperature_params(opts);
+    cw_damage_params_init(&r.damage_params);
     if (r.temperature) {
         cw_temperature_params& p = r.temperature_params;
-        for (const auto& n : kTemperatureNumbers)
-            if (opts.has(n[0])) *temperature_field(p, n[1]) = opts.number(n[0], 0.0);
-        if (!opts.has("speed"))
-            throw usage_error("--temperature", "needs the rolling speed --speed V (m/s)");
-        p.rolling_speed = opts.number("speed", 0.0);
+        if (!opts.has("speed") && !(V > 0.0))
+            throw usage_error("--temperature", "needs the rolling speed (m/s): --V or --speed");
+        // 0: the library takes the solve's V
+        p.rolling_speed = opts.has("speed") ? opts.number("speed", 0.0) : 0.0;
+        if (opts.has("speed") && V > 0.0 && std::fabs(p.rolling_speed - V) > 1e-9 * V)
+            throw usage_error("--speed", round_trip_text(p.rolling_speed) + " differs from --V " +
+                                             round_trip_text(V) +
+                                             ": give the rolling speed once, or the same in both");
         p.rolling_direction = rolling_direction;
-        p.discretisation = opts.text("temperature-discretisation", "consistent") == "contact"
-                               ? CW_TEMPERATURE_CONTACT
-                               : CW_TEMPERATURE_CONSISTENT;
     } else if (opts.has("speed")) {
         throw usage_error("--speed", "is the rolling speed of --temperature; give that too");
     }

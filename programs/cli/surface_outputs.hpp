@@ -19,6 +19,15 @@ namespace cwcli {
 // --density-1/-2, --temperature-discretisation, --speed, --k-yield.
 std::vector<OptionSpec> surface_options();
 
+// The temperature's part of them, without --speed (creepwork wheelrail: each
+// patch rolls at its own speed).
+std::vector<OptionSpec> temperature_options();
+
+// The bodies and the discretisation of those options; rolling speed and
+// direction 0 (the solve's). Throws CliError(kExitUsage) for a temperature
+// option without --temperature.
+cw_temperature_params read_temperature_params(const ParsedOptions& opts);
+
 struct SurfaceRequest {
     bool temperature = false, damage = false;
     cw_temperature_params temperature_params{};
@@ -29,8 +38,10 @@ struct SurfaceRequest {
 };
 
 // Throws CliError(kExitUsage) naming the option: a temperature option
-// without --temperature, --temperature without --speed.
-SurfaceRequest read_surface_request(const ParsedOptions& opts, int rolling_direction);
+// without --temperature, --temperature without a rolling speed (--speed or
+// the solve's V), --speed and V that differ. V: the solve's cw_params.V
+// (0: not given); without --speed the temperature takes it.
+SurfaceRequest read_surface_request(const ParsedOptions& opts, int rolling_direction, double V);
 
 struct SurfaceOutput {
     bool temperature = false, damage = false;

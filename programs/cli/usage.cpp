@@ -170,8 +170,9 @@ surface temperature and damage (SI whatever --units; body 1 is the rail,
 body 2 the wheel):
   --temperature     also the steady flash temperature of both surfaces from
                     the frictional power (doc/theory/temperature.md); needs
-                    --speed
-  --speed V         the rolling speed [m/s] of --temperature
+                    the rolling speed, --V or --speed
+  --speed V         the rolling speed [m/s] of --temperature (default --V;
+                    both given must be the same)
   --T0-1 T --T0-2 T bulk temperature of the rail and of the wheel [degC]
                     (default 20)
   --heat-capacity-1 C --heat-capacity-2 C
@@ -592,6 +593,14 @@ contact:
   --G PA                 combined shear modulus [Pa] (default 8.2e10)
   --nu NU                combined Poisson's ratio (default 0.28)
   --dx M, --ds M         element sizes of the patch grids [m] (default 2e-4)
+
+surface temperature (degC; body 1 the rail, body 2 the wheel):
+  --temperature          also each patch's hottest rail and wheel element
+                         (JSON: T_max_1, T_max_2 per patch), at the patch's
+                         rolling speed (veloc) and direction
+  --T0-1 T --T0-2 T, --heat-capacity-1/-2, --conductivity-1/-2,
+  --density-1/-2, --temperature-discretisation consistent|contact
+                         as creepwork solve (steel by default)
 
 Warnings (stderr, exit 0) name inputs in a wrong unit and placements no
 running wheel has: a patch on the wheel's flange tip, a wheelset lifted or

@@ -347,7 +347,8 @@ class Solver(Handle):
     def temperature(self, **keywords: Any) -> "TemperatureResult":
         """Both bodies' surface temperatures from this solver's last solve
         (fields=True): see creepwork.Temperature.compute for the keywords
-        (rolling_speed is needed). Returns a TemperatureResult."""
+        (rolling_speed: default the V of the last solve). Returns a
+        TemperatureResult."""
         from ._surface import Temperature
         if "temperature" not in self._surface:
             self._surface["temperature"] = Temperature(self)

@@ -37,13 +37,17 @@ def test_temperature_of_dissimilar_bodies():
         assert t.iterations == 1 and t.discretisation == creepwork.CW_TEMPERATURE_CONSISTENT
         # the solve's rolling direction is passed on: rolling towards -x the
         # material meets the low-x side first, so the hottest contact element
-        # lies on the high-x half; the default is the solve's own direction
+        # lies on the high-x half; the default is the solve's own direction,
+        # 0 takes it too, and the other one is refused naming both
         assert t.x_max_1 > 0
         same = s.temperature(rolling_speed=30.0, T0_1=10.0, T0_2=70.0, conductivity_2=200.0,
                              rolling_direction=-1)
-        other = s.temperature(rolling_speed=30.0, T0_1=10.0, T0_2=70.0, conductivity_2=200.0,
-                              rolling_direction=1)
-        assert np.array_equal(same.rail, t.rail) and not np.array_equal(other.rail, t.rail)
+        solves = s.temperature(rolling_speed=30.0, T0_1=10.0, T0_2=70.0, conductivity_2=200.0,
+                               rolling_direction=0)
+        assert np.array_equal(same.rail, t.rail) and np.array_equal(solves.rail, t.rail)
+        with pytest.raises(creepwork.InvalidInputError, match="cw_params.rolling_direction"):
+            s.temperature(rolling_speed=30.0, T0_1=10.0, T0_2=70.0, conductivity_2=200.0,
+                          rolling_direction=1)
         # CONTACT's discretisation: its body-1 flash is beta2/beta1 of body 2's
         c = s.temperature(rolling_speed=30.0, T0_1=0.0, T0_2=0.0, conductivity_2=200.0,
                           discretisation="contact")
@@ -101,7 +105,7 @@ def test_errors_name_the_input():
     with creepwork.Solver() as s:
         s.solve(**CONTACT)
         with pytest.raises(creepwork.InvalidInputError, match="rolling_speed"):
-            s.temperature()  # the rolling speed has no default
+            s.temperature()  # no rolling speed: none given, the solve's V is 0
         with pytest.raises(creepwork.InvalidInputError, match="density_1"):
             s.temperature(rolling_speed=30.0, density_1=7.85e-6)
         with pytest.raises(creepwork.InvalidInputError, match="k_yield"):

@@ -314,6 +314,57 @@ static void wlrm_damage_of_every_contact(void** state)
 
 /* Every invalid input: its status, a message naming it, nothing written,
  * and the handle holds no result afterwards. */
+/* One rolling speed: rolling_speed = 0 takes the solve's cw_params.V, and
+ * gives the bits of rolling_speed = V; both given must agree (to 1e-9), and
+ * the error names both; neither given names both too. rolling_direction = 0
+ * takes the solve's likewise. */
+static void rolling_speed_from_the_solve(void** state)
+{
+    (void)state;
+    cw_params p;
+    cw_solver* s = solved(1, CW_GRID_KALKER_STRIPS, &p);
+    p.V = 30.0;
+    assert_status(cw_solver_solve(s, &p, CW_SOLVE_FULL, NULL), CW_OK);
+    cw_temperature* t = NULL;
+    assert_status(cw_temperature_create(s, &t), CW_OK);
+    cw_temperature_params tp;
+    cw_temperature_params_init(&tp);
+    tp.rolling_direction = p.rolling_direction;
+    cw_temperature_result from_V, given;
+    cw_temperature_result_init(&from_V);
+    cw_temperature_result_init(&given);
+    double T_from_V[N], T_given[N];
+    assert_status(cw_temperature_compute(t, s, &tp, &from_V), CW_OK); /* rolling_speed 0 */
+    assert_status(cw_temperature_get_field(t, CW_TEMPERATURE_FIELD_RAIL, T_from_V, N), CW_OK);
+    tp.rolling_speed = 30.0;
+    assert_status(cw_temperature_compute(t, s, &tp, &given), CW_OK);
+    assert_status(cw_temperature_get_field(t, CW_TEMPERATURE_FIELD_RAIL, T_given, N), CW_OK);
+    assert_memory_equal(&from_V, &given, sizeof given);
+    assert_memory_equal(T_from_V, T_given, sizeof T_given);
+    assert_true(given.T_max_1 > tp.T0_1 + 1.0); /* the speed heats */
+    tp.rolling_direction = 0; /* the solve's */
+    assert_status(cw_temperature_compute(t, s, &tp, &given), CW_OK);
+    assert_status(cw_temperature_get_field(t, CW_TEMPERATURE_FIELD_RAIL, T_given, N), CW_OK);
+    assert_memory_equal(T_from_V, T_given, sizeof T_given);
+    tp.rolling_direction = p.rolling_direction;
+    tp.rolling_speed = 30.0 * (1 + 1e-12); /* the same speed, another rounding */
+    assert_status(cw_temperature_compute(t, s, &tp, &given), CW_OK);
+    tp.rolling_speed = 31.0;
+    assert_status(cw_temperature_compute(t, s, &tp, &given), CW_ERR_INVALID_INPUT);
+    assert_names(cw_temperature_last_error(t), "rolling_speed");
+    assert_names(cw_temperature_last_error(t), "cw_params.V");
+    p.V = 0.0; /* neither */
+    assert_status(cw_solver_solve(s, &p, CW_SOLVE_FULL, NULL), CW_OK);
+    tp.rolling_speed = 0.0;
+    assert_status(cw_temperature_compute(t, s, &tp, &given), CW_ERR_INVALID_INPUT);
+    assert_names(cw_temperature_last_error(t), "rolling_speed");
+    assert_names(cw_temperature_last_error(t), "cw_params.V");
+    tp.rolling_speed = 31.0; /* its own alone */
+    assert_status(cw_temperature_compute(t, s, &tp, &given), CW_OK);
+    cw_temperature_destroy(t);
+    cw_solver_destroy(s);
+}
+
 static void invalid_inputs(void** state)
 {
     (void)state;
@@ -360,10 +411,14 @@ static void invalid_inputs(void** state)
         assert_names(cw_temperature_last_error(t), bad[b].name);
         *bad[b].field = keep;
     }
-    tp.rolling_direction = 0;
+    tp.rolling_direction = 2;
     assert_status(cw_temperature_compute(t, s, &tp, &r), CW_ERR_INVALID_INPUT);
     assert_names(cw_temperature_last_error(t), "rolling_direction");
-    tp.rolling_direction = 1;
+    tp.rolling_direction = -p.rolling_direction; /* not the solve's */
+    assert_status(cw_temperature_compute(t, s, &tp, &r), CW_ERR_INVALID_INPUT);
+    assert_names(cw_temperature_last_error(t), "rolling_direction");
+    assert_names(cw_temperature_last_error(t), "cw_params.rolling_direction");
+    tp.rolling_direction = p.rolling_direction;
     tp.discretisation = 7;
     assert_status(cw_temperature_compute(t, s, &tp, &r), CW_ERR_UNKNOWN_OPTION);
     assert_names(cw_temperature_last_error(t), "discretisation");
@@ -433,6 +488,7 @@ int main(int argc, char** argv)
         cmocka_unit_test(contact_example_through_the_door),
         cmocka_unit_test(damage_indices),
         cmocka_unit_test(wlrm_damage_of_every_contact),
+        cmocka_unit_test(rolling_speed_from_the_solve),
         cmocka_unit_test(invalid_inputs),
     };
     return cw_run_tests(tests, argc > 1 ? argv[1] : NULL);

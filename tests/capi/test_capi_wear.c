@@ -752,6 +752,49 @@ static void exact_model_wear(void** state)
     cw_solver_destroy(s);
 }
 
+/* Archard's rolling speed 0 takes the solve's cw_params.V, with the bits of
+ * the same speed given; both given must agree and the error names both;
+ * USFD, which does not use the speed, needs neither. */
+static void archard_speed_from_the_solve(void** state)
+{
+    (void)state;
+    cw_solver* s = cw_test_solver(CW_GRID_KALKER_STRIPS, NX, NY, 1.2);
+    cw_params p;
+    cw_test_case(1, &p);
+    p.V = 25.0;
+    assert_int_equal(cw_solver_solve(s, &p, CW_SOLVE_FULL, NULL), CW_OK);
+    cw_wear* w = NULL;
+    assert_int_equal(cw_wear_create(s, &w), CW_OK);
+    cw_wear_params wp;
+    cw_wear_params_init(&wp);
+    wp.law = CW_WEAR_ARCHARD_KTH;
+    cw_wear_result from_V, given;
+    cw_wear_result_init(&from_V);
+    cw_wear_result_init(&given);
+    double rate_from_V[N], rate_given[N];
+    assert_int_equal(cw_wear_compute(w, s, &wp, &from_V), CW_OK);
+    assert_int_equal(cw_wear_get_field(w, CW_WEAR_FIELD_RATE, rate_from_V, N), CW_OK);
+    wp.rolling_speed = 25.0;
+    assert_int_equal(cw_wear_compute(w, s, &wp, &given), CW_OK);
+    assert_int_equal(cw_wear_get_field(w, CW_WEAR_FIELD_RATE, rate_given, N), CW_OK);
+    assert_memory_equal(&from_V, &given, sizeof given);
+    assert_memory_equal(rate_from_V, rate_given, sizeof rate_given);
+    assert_true(given.mass_per_distance > 0.0);
+    wp.rolling_speed = 20.0;
+    assert_int_equal(cw_wear_compute(w, s, &wp, &given), CW_ERR_INVALID_INPUT);
+    assert_non_null(strstr(cw_wear_last_error(w), "rolling_speed"));
+    assert_non_null(strstr(cw_wear_last_error(w), "cw_params.V"));
+    p.V = 0.0;
+    assert_int_equal(cw_solver_solve(s, &p, CW_SOLVE_FULL, NULL), CW_OK);
+    wp.rolling_speed = 0.0;
+    assert_int_equal(cw_wear_compute(w, s, &wp, &given), CW_ERR_INVALID_INPUT);
+    assert_non_null(strstr(cw_wear_last_error(w), "cw_params.V"));
+    wp.law = CW_WEAR_USFD;
+    assert_int_equal(cw_wear_compute(w, s, &wp, &given), CW_OK);
+    cw_wear_destroy(w);
+    cw_solver_destroy(s);
+}
+
 int main(int argc, char** argv)
 {
     const struct CMUnitTest tests[] = {
@@ -765,6 +808,7 @@ int main(int argc, char** argv)
         cmocka_unit_test(kth_boundaries_from_both_sides),
         cmocka_unit_test(update_keeps_volume_on_uneven_nodes),
         cmocka_unit_test(exact_model_wear),
+        cmocka_unit_test(archard_speed_from_the_solve),
     };
     return cw_run_tests(tests, argc > 1 ? argv[1] : NULL);
 }

@@ -7,6 +7,8 @@
 !                fields' largest contact values; errors through stat/errmsg
 !   damage       cw_damage_type in full sliding: the RCF index mu - k/pz,
 !                sum of the T_gamma density x area = W_macro, FI_surf
+!   legacy       CWTEMP equals cw_temperature_type on the same solve (V
+!                given as cw_params.V), bitwise; errors leave its outputs
 !   checks       cw_temperature_params_check, cw_damage_params_check: steel's
 !                defaults find nothing; a conductivity in W/(mm K), 300 km/h
 !                typed as m/s, k_yield in MPa and a WLRM threshold in kN are
@@ -16,6 +18,7 @@ program test_fortran_surface
    use creepwork
    use cw_test_support
    implicit none
+   include 'creepwork_legacy.fi'
 
    integer, parameter :: nx = 16, ny = 12
    real(c_double), parameter :: pi = 3.14159265358979323846_c_double
@@ -24,6 +27,7 @@ program test_fortran_surface
    call check_temperature()
    call check_damage()
    call check_plausibility()
+   call check_legacy()
    call test_summary('test_fortran_surface')
 
 contains
@@ -200,5 +204,63 @@ contains
       call check_int(stat, CW_ERR_STRUCT_SIZE, 'not initialised: stat')
       call check_int(size(checks), 0, 'not initialised: no findings')
    end subroutine check_plausibility
+
+   ! CWTEMP = module on the same contact (CWSOLM's: flexibilities from G and
+   ! nu, rolling towards +x), with the speed as the solve's cw_params.V.
+   subroutine check_legacy()
+      type(cw_solver_type) :: solver
+      type(cw_temperature_type) :: t
+      type(cw_params) :: p
+      type(cw_temperature_params) :: tp
+      type(cw_temperature_result) :: r
+      real(c_double) :: T1(nx, ny), T2(nx, ny), rail(nx, ny), wheel(nx, ny)
+      real(c_double) :: tmax(2), xmax(2), ymax(2)
+      integer(c_int) :: ierr
+      call CWTEMP(6e-3_c_double, 4e-3_c_double, 60e3_c_double, 0.35_c_double, 82e9_c_double, &
+                  0.28_c_double, 2e-3_c_double, -1e-3_c_double, 1.5_c_double, int(nx, c_int), &
+                  int(ny, c_int), 30.0_c_double, 10.0_c_double, 70.0_c_double, T1, T2, tmax, &
+                  xmax, ymax, ierr)
+      call check_int(int(ierr), CW_OK, 'CWTEMP')
+      call cw_params_init(p)
+      p%a = 6e-3_c_double
+      p%b = 4e-3_c_double
+      p%normal_force = 60e3_c_double
+      p%mu = 0.35_c_double
+      p%G = 82e9_c_double
+      p%nu = 0.28_c_double
+      p%xi_x = 2e-3_c_double
+      p%xi_y = -1e-3_c_double
+      p%phi = 1.5_c_double
+      call solver%create(nx=nx, ny=ny)
+      call solver%solve(p, CW_SOLVE_FULL)
+      call t%create(solver)
+      call cw_temperature_params_init(tp)
+      tp%T0_1 = 10
+      tp%T0_2 = 70
+      tp%rolling_speed = 30
+      call t%compute(solver, tp, r)
+      call t%get_field(CW_TEMPERATURE_FIELD_RAIL, rail)
+      call t%get_field(CW_TEMPERATURE_FIELD_WHEEL, wheel)
+      call check_true(all(T1 == rail) .and. all(T2 == wheel), 'CWTEMP fields = module, bitwise')
+      call check_true(tmax(1) == r%T_max_1 .and. tmax(2) == r%T_max_2, 'CWTEMP maxima = module')
+      call check_true(xmax(1) == r%x_max_1 .and. ymax(1) == r%y_max_1 .and. &
+                      xmax(2) == r%x_max_2 .and. ymax(2) == r%y_max_2, 'CWTEMP positions = module')
+      call check_true(tmax(1) > 30, 'CWTEMP heats')
+      ! errors leave the outputs alone and name the input
+      T1 = -7
+      call CWTEMP(6e-3_c_double, 4e-3_c_double, 60e3_c_double, 0.35_c_double, 82e9_c_double, &
+                  0.28_c_double, 2e-3_c_double, -1e-3_c_double, 1.5_c_double, int(nx, c_int), &
+                  int(ny, c_int), 0.0_c_double, 10.0_c_double, 70.0_c_double, T1, T2, tmax, &
+                  xmax, ymax, ierr)
+      call check_int(int(ierr), CW_ERR_INVALID_INPUT, 'CWTEMP with V = 0')
+      call check_true(all(T1 == -7), 'CWTEMP outputs untouched on error')
+      call CWTEMP(6e-3_c_double, 4e-3_c_double, 60e3_c_double, 0.35_c_double, 82e9_c_double, &
+                  0.28_c_double, 2e-3_c_double, -1e-3_c_double, 1.5_c_double, int(nx, c_int), &
+                  int(ny, c_int), 30.0_c_double, -300.0_c_double, 70.0_c_double, T1, T2, tmax, &
+                  xmax, ymax, ierr)
+      call check_int(int(ierr), CW_ERR_INVALID_INPUT, 'CWTEMP with T01 below absolute zero')
+      call t%destroy()
+      call solver%destroy()
+   end subroutine check_legacy
 
 end program test_fortran_surface

@@ -39,8 +39,13 @@ typedef struct cw_temperature_params {
     double density_1;        /* rho [kg/m^3] in [1, 1e5]; default 7850 */
     /* Body 2, the wheel; the same ranges and defaults. */
     double T0_2, heat_capacity_2, conductivity_2, density_2;
-    double rolling_speed;    /* V [m/s] in [1e-3, 1e3]; default 0: must be set */
-    int rolling_direction;   /* the solve's cw_params.rolling_direction (+1 default, -1) */
+    double rolling_speed;    /* V [m/s] in [1e-3, 1e3]; 0 (default): the V the solve was
+                                given (cw_params.V), which must then be > 0. Both given:
+                                they must agree (to 1e-9), else CW_ERR_INVALID_INPUT
+                                naming both */
+    int rolling_direction;   /* the solve's cw_params.rolling_direction (+1 default, -1);
+                                0: the solve's (a wheel/rail patch: its own). Another
+                                than the solve's: CW_ERR_INVALID_INPUT */
     int discretisation;      /* CW_TEMPERATURE_CONSISTENT (default) or _CONTACT */
 } cw_temperature_params;
 

@@ -62,7 +62,10 @@ typedef struct cw_wear_params {
     int source;           /* CW_WEAR_SOURCE_CONSISTENT (default), _PAPER or _SLIP */
     double density;       /* rho [kg/m^3] in [1, 1e5]; default 7800 (steel) */
     double rolling_speed; /* V [m/s]: Archard only (sliding velocity = sliding * V),
-                             in (0, 1e3] there; >= 0 and unused for USFD. Default 0 */
+                             in (0, 1e3] there; >= 0 and unused for USFD. Default 0:
+                             Archard takes the V the solve was given (cw_params.V);
+                             both given must agree (to 1e-9), else
+                             CW_ERR_INVALID_INPUT naming both */
     double pass_length;   /* rolled distance of one pass [m] in (0, 1e6], for the mass
                              per pass only: 2 pi R for a wheel (kg per revolution);
                              default 1 (rail: kg per metre of rail per axle passage) */

@@ -198,7 +198,9 @@ CW_API int cw_wheelrail_get_patch_state(const cw_wheelrail* wheelrail, size_t k,
  * and cw_wear_create / cw_wear_compute: its fields are in creepwork's own
  * conventions (doc/wheelrail.md: y = -s, forces on the wheel) on a grid
  * whose element (0, 0) is at (field_x0, -(field_s0 + (field_ny - 1)
- * field_ds)) from the reference point. Owned by the handle: never destroy
+ * field_ds)) from the reference point. It carries the patch's rolling
+ * direction: cw_temperature_compute with rolling_direction 0 takes it (its
+ * rolling_speed: the patch's veloc). Owned by the handle: never destroy
  * or solve it; valid until the next cw_wheelrail_solve. NULL on error
  * (wheelrail NULL, no solution, k out of range). */
 CW_API const cw_solver* cw_wheelrail_patch_solver(const cw_wheelrail* wheelrail, size_t k);

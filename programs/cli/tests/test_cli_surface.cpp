@@ -111,6 +111,24 @@ void surface_contact_example(void**)
     assert_string_equal(j.at("temperature_discretisation").string.c_str(), "contact");
 }
 
+// One rolling speed: without --speed the temperature takes the solve's --V,
+// with the bits of --speed given the same; --speed and --V that differ are
+// refused naming both.
+void surface_speed_from_V(void**)
+{
+    const std::vector<std::string> rest = {"--T0-1", "10", "--T0-2", "70", "--format", "json"};
+    const Json from_V = parse_or_fail(
+        cli_ok(with(with(kContact, {"--temperature", "--V", "30"}), rest)).out);
+    const Json given = parse_or_fail(
+        cli_ok(with(with(kContact, {"--temperature", "--speed", "30"}), rest)).out);
+    for (const char* key : {"T_max_1", "T_max_2", "T_max_x", "T_max_y", "power"})
+        assert_true(from_V.num(key) == given.num(key));
+    assert_true(given.num("T_max_1") > 11.0);
+    const Run r = cli(with(kContact, {"--temperature", "--speed", "31", "--V", "30"}));
+    expect_refusal(r, 2, "--speed", "--speed 31 --V 30");
+    expect_contains(r.err, "--V");
+}
+
 void surface_bad_inputs_fail_cleanly(void**)
 {
     struct Case {
@@ -183,6 +201,7 @@ int main(int argc, char** argv)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(surface_matches_library),
         cmocka_unit_test(surface_contact_example),
+        cmocka_unit_test(surface_speed_from_V),
         cmocka_unit_test(surface_bad_inputs_fail_cleanly),
         cmocka_unit_test(surface_warns_about_implausible_units),
         cmocka_unit_test(surface_writes_pictures),

@@ -129,6 +129,38 @@ void wear_matches_library(void**)
 }
 
 // A wheel: distance becomes revolutions distance / (2 pi R), and the mass is
+// One rolling speed for Archard's map: a V column (the solve's V) without
+// --speed gives the profile of --speed given the same, byte for byte; a row
+// whose speed and V columns differ is refused naming its line.
+void wear_speed_from_V(void**)
+{
+    const char* const rows = "s0,a,b,N,xi_x,xi_y,spin,passes%s\n"
+                             "0.001,6e-3,4e-3,60e3,1e-3,-5e-4,0.5,200%s\n"
+                             "-0.003,5e-3,3e-3,70e3,5e-4,1e-3,4.0,300%s\n";
+    char with_V[256], without[256];
+    std::snprintf(with_V, sizeof with_V, rows, ",V", ",25", ",25");
+    std::snprintf(without, sizeof without, rows, "", "", "");
+    const std::vector<std::string> common = {"--nx", "12", "--ny", "10", "--law", "archard",
+                                             "--no-plots"};
+    const std::string from_V = g_tools.scratch + "/from_V", given = g_tools.scratch + "/given";
+    cli_ok(with({"wear", "--in", scratch_file("states_v.csv", with_V), "--out", from_V}, common));
+    cli_ok(with({"wear", "--in", scratch_file("states_nov.csv", without), "--out", given,
+                 "--speed", "25"},
+                common));
+    const auto a = read_csv(from_V + "/wear_profile.csv"), b = read_csv(given + "/wear_profile.csv");
+    assert_true(a == b);
+    bool worn = false;
+    for (size_t k = 1; k < a.size(); ++k) worn |= std::stod(a[k][2]) > 0.0;
+    assert_true(worn);
+    const std::string both = scratch_file("states_speed_V.csv",
+                                          "s0,a,b,N,xi_x,passes,speed,V\n"
+                                          "0.001,6e-3,4e-3,60e3,1e-3,200,25,30\n");
+    const Run r = cli({"wear", "--in", both, "--out", g_tools.scratch + "/never_v", "--nx", "12",
+                       "--ny", "10", "--law", "archard", "--no-plots"});
+    expect_refusal(r, 2, "line 2", "a row with speed 25 and V 30");
+    expect_contains(r.err, "V 30");
+}
+
 // per wheel: sum of passes x mass per revolution.
 void wear_wheel_distance(void**)
 {
@@ -311,6 +343,7 @@ int main(int argc, char** argv)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(wear_matches_library),
         cmocka_unit_test(wear_wheel_distance),
+        cmocka_unit_test(wear_speed_from_V),
         cmocka_unit_test(wear_bad_inputs_fail_cleanly),
         cmocka_unit_test(wear_warns_about_implausible_values),
         cmocka_unit_test(wear_writes_picture),

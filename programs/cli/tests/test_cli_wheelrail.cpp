@@ -37,6 +37,28 @@ std::vector<std::string> benchmark_args()
             "--roll", "-0.004376", "--Fz", "1e4", "--V", "2", "--pitch-rate", "-4.2748834"};
 }
 
+// The benchmark_args() wheel through the C ABI, solved for Fz = 10 kN.
+cw_wheelrail* solved_benchmark(cw_wheelrail_totals& t)
+{
+    cw_wheelrail_params p;
+    cw_wheelrail_params_init(&p);
+    p.side = CW_WHEELRAIL_LEFT;
+    cw_wheelrail* w = nullptr;
+    assert_int_equal(cw_wheelrail_create(&p, (g_data + "/MBench_UIC60_v3.prr").c_str(),
+                                         (g_data + "/MBench_S1002_v3.prw").c_str(), &w, nullptr, 0),
+                     CW_OK);
+    cw_wheelrail_motion m;
+    cw_wheelrail_motion_init(&m);
+    m.y = 6.5e-3;
+    m.yaw = 0.0156;
+    m.roll = -0.004376;
+    m.vs = 2.0;
+    m.vpitch = -4.2748834;
+    cw_wheelrail_totals_init(&t);
+    assert_int_equal(cw_wheelrail_solve(w, &m, CW_WHEELRAIL_FORCE, 1e4, &t), CW_OK);
+    return w;
+}
+
 void json_matches_library(void**)
 {
     const cwtest::Run r = cwtest::cli_ok(cwtest::with(benchmark_args(), {"--format", "json"}));
@@ -59,23 +81,8 @@ void json_matches_library(void**)
     assert_close(j.at("total_rail").num("Fz"), 1e4, 1e-6, 0);
 
     // the library, through the C ABI, for the same wheel
-    cw_wheelrail_params p;
-    cw_wheelrail_params_init(&p);
-    p.side = CW_WHEELRAIL_LEFT;
-    cw_wheelrail* w = nullptr;
-    assert_int_equal(cw_wheelrail_create(&p, (g_data + "/MBench_UIC60_v3.prr").c_str(),
-                                         (g_data + "/MBench_S1002_v3.prw").c_str(), &w, nullptr, 0),
-                     CW_OK);
-    cw_wheelrail_motion m;
-    cw_wheelrail_motion_init(&m);
-    m.y = 6.5e-3;
-    m.yaw = 0.0156;
-    m.roll = -0.004376;
-    m.vs = 2.0;
-    m.vpitch = -4.2748834;
     cw_wheelrail_totals t;
-    cw_wheelrail_totals_init(&t);
-    assert_int_equal(cw_wheelrail_solve(w, &m, CW_WHEELRAIL_FORCE, 1e4, &t), CW_OK);
+    cw_wheelrail* w = solved_benchmark(t);
     cw_wheelrail_patch pa;
     cw_wheelrail_patch_init(&pa);
     assert_int_equal(cw_wheelrail_get_patch(w, 0, &pa), CW_OK);
@@ -96,6 +103,63 @@ void json_matches_library(void**)
     const cwtest::Run text = cwtest::cli_ok(benchmark_args());
     cwtest::expect_contains(text.out, "wheelset height z_ws = -3.04");
     cwtest::expect_contains(text.out, "total on the rail");
+}
+
+// --temperature: each patch's hottest rail and wheel element equal, bitwise,
+// to cw_temperature on the patch's solver (cw_wheelrail_patch_solver) at
+// the patch's veloc, rolling direction 0 (the patch's): the same bits as
+// the patch's direction given, the other refused; a speed is needed.
+void temperature_matches_library(void**)
+{
+    const cwtest::Run r = cwtest::cli_ok(cwtest::with(
+        benchmark_args(), {"--temperature", "--T0-1", "10", "--T0-2", "30", "--format", "json"}));
+    const cwtest::Json j = cwtest::parse_json(r.out);
+    const cwtest::Json& q = j.at("patches").array.at(0);
+    cw_wheelrail_totals t;
+    cw_wheelrail* w = solved_benchmark(t);
+    cw_wheelrail_patch pa;
+    cw_wheelrail_patch_init(&pa);
+    assert_int_equal(cw_wheelrail_get_patch(w, 0, &pa), CW_OK);
+    const cw_solver* view = cw_wheelrail_patch_solver(w, 0);
+    assert_non_null(view);
+    cw_temperature* temperature = nullptr;
+    assert_int_equal(cw_temperature_create(view, &temperature), CW_OK);
+    cw_temperature_params tp;
+    cw_temperature_params_init(&tp);
+    tp.T0_1 = 10;
+    tp.T0_2 = 30;
+    tp.rolling_speed = pa.veloc;
+    tp.rolling_direction = 0;
+    cw_temperature_result from_patch, given;
+    cw_temperature_result_init(&from_patch);
+    cw_temperature_result_init(&given);
+    assert_int_equal(cw_temperature_compute(temperature, view, &tp, &from_patch), CW_OK);
+    assert_true(q.num("T_max_1") == from_patch.T_max_1);
+    assert_true(q.num("T_max_2") == from_patch.T_max_2);
+    assert_true(from_patch.T_max_1 > 20.0); /* in slip: the frictional power heats */
+    tp.rolling_speed = 0; /* a patch view has no cw_params.V */
+    assert_int_equal(cw_temperature_compute(temperature, view, &tp, &given), CW_ERR_INVALID_INPUT);
+    cwtest::expect_contains(cw_temperature_last_error(temperature), "rolling_speed");
+    tp.rolling_speed = pa.veloc;
+    int refused = 0;
+    for (int d : {1, -1}) {
+        tp.rolling_direction = d;
+        const int st = cw_temperature_compute(temperature, view, &tp, &given);
+        if (st == CW_OK) {
+            assert_memory_equal(&from_patch, &given, sizeof given);
+        } else {
+            assert_int_equal(st, CW_ERR_INVALID_INPUT);
+            cwtest::expect_contains(cw_temperature_last_error(temperature), "rolling_direction");
+            ++refused;
+        }
+    }
+    assert_int_equal(refused, 1);
+    cw_temperature_destroy(temperature);
+    cw_wheelrail_destroy(w);
+    const cwtest::Run text = cwtest::cli_ok(cwtest::with(benchmark_args(), {"--temperature"}));
+    cwtest::expect_contains(text.out, "patch 0 temperature: rail max");
+    const cwtest::Run bad = cwtest::cli(cwtest::with(benchmark_args(), {"--T0-1", "10"}));
+    cwtest::expect_refusal(bad, 2, "--T0-1", "--T0-1 without --temperature");
 }
 
 // Case at y_ws = 3 mm, the right wheel (CONTACT's
@@ -425,6 +489,7 @@ int main(int argc, char** argv)
         return 2;
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(json_matches_library),
+        cmocka_unit_test(temperature_matches_library),
         cmocka_unit_test(fast_model_near_exact),
         cmocka_unit_test(writes_the_data_files),
         cmocka_unit_test(adhesion_leads),
