@@ -22,6 +22,9 @@ namespace {
 // to ten.
 constexpr int kMaxForceIterations = 30;
 constexpr double kTangentTolerance = 1e-4;
+// The step Jacobian's linear solves: well below the forces' own tolerance,
+// so that it matches central differences of converged steps.
+constexpr double kStepJacobianTolerance = 1e-12;
 constexpr char kMagic[8] = {'c', 'w', 't', 'r', 'a', 'n', 's', '1'};
 
 void check_finite(const char* name, double v)
@@ -77,11 +80,14 @@ TransientContact::TransientContact(const GridSpec& grid, const ContactInput& in)
     for (int k = 0; k < bn_; ++k) g[k] = p[cell(k)] / p_ref_;
     for (auto* v : {&q0_, &aq0_, &bq0_, &base_, &dw_, &tangent_[0], &tangent_[1]})
         v->assign(bn_, Complex(0.0, 0.0));
+    work_.assign(bn_, 0.0);
+    aq_.assign(bn_, Complex(0.0, 0.0));
     start_zero();
 }
 
 void TransientContact::start_zero()
 {
+    has_solution_ = false;
     std::fill(q0_.begin(), q0_.end(), Complex(0.0, 0.0));
     std::fill(creep0_, creep0_ + 3, 0.0);
     steps_ = 0;
@@ -146,6 +152,20 @@ void TransientContact::set_slip(const double c[3], double dq, bool steady)
             const int k = i + box_.nx * j;
             const double x = x0_ + (box_.i0 + i) * dx_ + offset;
             w[k] = Complex(ux - th * y, uy + th * x) + base_[k];
+        }
+    }
+}
+
+void TransientContact::unit_slip(int u, double length, double offset)
+{
+    const double t = length / U_;
+    for (int j = 0; j < box_.ny; ++j) {
+        const double y = y0_ + (box_.j0 + j) * dy_;
+        for (int i = 0; i < box_.nx; ++i) {
+            const double x = x0_ + (box_.i0 + i) * dx_ + offset;
+            dw_[i + box_.nx * j] = u == 0   ? Complex(t, 0.0)
+                                   : u == 1 ? Complex(0.0, t)
+                                            : Complex(-t * y, t * x);
         }
     }
 }
@@ -255,7 +275,12 @@ const TransientStepResult& TransientContact::solve(const TransientStepInput& s, 
             for (int k = 0; k < bn_; ++k) qn[k] += dc[u] * tangent_[u][k];
         }
     }
-    totals(c, ti);
+    totals(c, ti, steady);
+    last_length_ = length;
+    last_offset_ = steady ? spin_offset_ * dx_ : spin_offset_ * s.dq;
+    last_fx_ = s.prescribe_fx;
+    last_fy_ = s.prescribe_fy;
+    has_solution_ = true;
     result_.newton_steps = newton;
     result_.products = products + 2 * (steady ? 0 : 1);
     result_.force_iterations = iterations;
@@ -265,9 +290,22 @@ const TransientStepResult& TransientContact::solve(const TransientStepInput& s, 
     return result_;
 }
 
-void TransientContact::totals(const double c[3], const SteadyRollingInfo& ti)
+void TransientContact::totals(const double c[3], const SteadyRollingInfo& ti, bool steady)
 {
     const std::vector<Complex>& q = solver_.traction();
+    // The energy balance: the rigid displacement is the solver's rigid slip
+    // less the committed state's share (base_); a steady start has p_prev = p.
+    conv_.apply_tangential(q.data(), aq_.data(), false);
+    const std::vector<Complex>& rs = solver_.rigid_slip();
+    double rigid = 0.0, energy = 0.0;
+    for (int k = 0; k < bn_; ++k) {
+        const Complex r = rs[k] - base_[k], qp = steady ? q[k] : q0_[k];
+        const Complex mean = 0.5 * (q[k] + qp);
+        rigid -= mean.real() * r.real() + mean.imag() * r.imag();
+        if (!steady)
+            energy += 0.5 * (q[k].real() * aq_[k].real() + q[k].imag() * aq_[k].imag() -
+                             q0_[k].real() * aq0_[k].real() - q0_[k].imag() * aq0_[k].imag());
+    }
     const std::vector<Complex>& sl = solver_.slip();
     const std::vector<signed char>& state = solver_.state();
     const std::vector<double>& g = solver_.bound();
@@ -282,11 +320,13 @@ void TransientContact::totals(const double c[3], const SteadyRollingInfo& ti)
             fx += q[k].real();
             fy += q[k].imag();
             mz += x * q[k].imag() - y * q[k].real();
+            work_[k] = 0.0;
             if (g[k] > 0.0) {
                 ++r.n_contact;
                 if (state[k] == 2) {
                     ++r.n_slip;
-                    w -= q[k].real() * sl[k].real() + q[k].imag() * sl[k].imag();
+                    work_[k] = -(q[k].real() * sl[k].real() + q[k].imag() * sl[k].imag());
+                    w += work_[k];
                 }
             }
         }
@@ -299,7 +339,11 @@ void TransientContact::totals(const double c[3], const SteadyRollingInfo& ti)
     r.Fy = T_ * area * fy;
     r.Mz = T_ * area * mz;
     r.n_adhesion = r.n_contact - r.n_slip;
-    r.W_step = T_ * U_ * area * w;
+    r.W_slip = T_ * U_ * area * w;
+    r.W_step = T_ * U_ * area * (rigid - energy);
+    // The map: each slip element's dissipation scaled to the step's work.
+    const double factor = w > 0.0 ? (rigid - energy) / w : 0.0;
+    for (double& v : work_) v *= factor;
     r.residual = ti.residual;
 }
 
@@ -310,10 +354,11 @@ void TransientContact::commit()
                     "commit: there is no step to commit (step() first; a trial is "
                     "committed once, and rewind drops it)");
     q0_ = solver_.traction();
+    aq0_ = aq_; // A q of the trial (the same bits as computing it again)
+    conv_.apply_tangential(q0_.data(), bq0_.data(), true);
     if (trial_rolling_) std::copy(trial_creep_, trial_creep_ + 3, creep0_);
     ++steps_;
     trial_valid_ = false;
-    set_committed_terms();
 }
 
 namespace {
@@ -382,6 +427,7 @@ void TransientContact::restore(const unsigned char* bytes, std::size_t n)
         v = Complex(re, im);
     }
     q0_ = q;
+    has_solution_ = false;
     std::copy(creep, creep + 3, creep0_);
     steps_ = static_cast<long>(steps);
     trial_valid_ = false;
@@ -417,6 +463,61 @@ void TransientContact::copy_state(int* out) const
     const std::vector<signed char>& state = solver_.state();
     std::fill(out, out + n_, 0);
     for (int k = 0; k < bn_; ++k) out[cell(k)] = state[k];
+}
+
+void TransientContact::copy_work(double* out) const
+{
+    std::fill(out, out + n_, 0.0);
+    const double scale = T_ * U_ * dx_ * dy_;
+    for (int k = 0; k < bn_; ++k) out[cell(k)] = scale * work_[k];
+}
+
+void TransientContact::jacobian(double out[9])
+{
+    if (!has_solution_)
+        throw Error(ErrorKind::invalid_input,
+                    "jacobian: there is no step (step() or start_steady() first)");
+    const double fs = T_ * dx_ * dy_;
+    double J[3][3];
+    for (int u = 0; u < 3; ++u) {
+        unit_slip(u, last_length_, last_offset_);
+        const std::vector<Complex>& dq =
+            solver_.tangent(conv_, dw_, kStepJacobianTolerance, kMaxJacobianIterations);
+        double fx = 0.0, fy = 0.0, mz = 0.0;
+        for (int j = 0; j < box_.ny; ++j) {
+            const double y = y0_ + (box_.j0 + j) * dy_;
+            for (int i = 0; i < box_.nx; ++i) {
+                const int k = i + box_.nx * j;
+                const double x = x0_ + (box_.i0 + i) * dx_;
+                fx += dq[k].real();
+                fy += dq[k].imag();
+                mz += x * dq[k].imag() - y * dq[k].real();
+            }
+        }
+        J[0][u] = fs * fx;
+        J[1][u] = fs * fy;
+        J[2][u] = fs * mz;
+    }
+    // A prescribed force and its creepage trade places: the sweep (principal
+    // pivot) on that index, once per prescribed force.
+    for (int p = 0; p < 2; ++p) {
+        if (!(p == 0 ? last_fx_ : last_fy_)) continue;
+        const double a = J[p][p];
+        if (!(std::fabs(a) > 0.0))
+            throw Error(ErrorKind::not_converged,
+                        "jacobian: the prescribed force does not depend on its creepage "
+                        "(full slip)");
+        for (int r = 0; r < 3; ++r)
+            for (int c = 0; c < 3; ++c)
+                if (r != p && c != p) J[r][c] -= J[r][p] * J[p][c] / a;
+        for (int c = 0; c < 3; ++c)
+            if (c != p) J[p][c] = -J[p][c] / a;
+        for (int r = 0; r < 3; ++r)
+            if (r != p) J[r][p] = J[r][p] / a;
+        J[p][p] = 1.0 / a;
+    }
+    for (int r = 0; r < 3; ++r)
+        for (int c = 0; c < 3; ++c) out[3 * r + c] = J[r][c];
 }
 
 void TransientContact::copy_pressure(double* out) const

@@ -65,7 +65,18 @@ struct TransientStepResult {
     double xi_x = 0.0, xi_y = 0.0, phi = 0.0; // as given, the prescribed forces' found
     double Fx = 0.0, Fy = 0.0, Mz = 0.0;      // on the wheel [N, N, N m], Mz about the origin
     int n_contact = 0, n_adhesion = 0, n_slip = 0;
-    double W_step = 0.0; // frictional work of the step [J]: sum of |p_t| |S| dA
+    // Frictional work of the step [J], energy-consistent: the work of the
+    // rigid displacement r of the step under the mean of the old and new
+    // tractions less the change of the elastic energy,
+    //   W_step = -sum 1/2 (p_prev + p) . r dA - (E(p) - E(p_prev)),
+    // E(p) = 1/2 sum p . u(p) dA; in steady rolling (p = p_prev) it is
+    // dq (W_macro - phi spin_offset Fy), the steady model's W_macro per
+    // rolled distance. The sum of the work map (copy_work).
+    double W_step = 0.0;
+    // The friction dissipation of the step's own slip, sum of |p_t| |S| dA
+    // [J] (CONTACT's frictional work): below W_step by the exact theory's
+    // numerical dissipation (exact/exact_work.hpp).
+    double W_slip = 0.0;
     int newton_steps = 0;     // of the tangential problem, all force iterations
     int products = 0;         // FFT products, all of the step
     int force_iterations = 0; // Newton steps on the prescribed forces
@@ -118,6 +129,26 @@ public:
     void copy_slip(double* sx, double* sy) const;
     void copy_state(int* out) const;
     void copy_pressure(double* out) const;
+    // Of the last step (or steady start), [i + nx j]: the frictional work of
+    // each element over the step [J], its dissipation |p_t| |S| dA times
+    // W_step / W_slip (0 in adhesion and outside the contact); its sum is
+    // W_step (0 everywhere when no element slips).
+    void copy_work(double* out) const;
+
+    // The step map's derivative at the last step (or steady start), row-major
+    // J[3 r + c], rows the step's outputs, columns its inputs, as an
+    // integrator linearises the step. With creepages given (no force
+    // prescribed): rows Fx, Fy, Mz [N, N, N m]; columns xi_x, xi_y, phi
+    // (rolling; a shift: the shift along x, y [m] and the rotation [rad]).
+    // With Fx (and Fy) prescribed, the prescribed force and the found
+    // creepage trade places: row 0 is xi_x and column 0 is Fx (row 1, column
+    // 1 likewise with Fy prescribed). From the derivative of the converged
+    // discrete problem (SteadyRolling::tangent), to a relative residual of
+    // kStepJacobianTolerance; the tractions, states and the trial are
+    // untouched. Throws Error(invalid_input) without a step, or
+    // Error(not_converged) when a prescribed force does not depend on its
+    // creepage (full slip).
+    void jacobian(double J[9]);
 
 private:
     void validate(const TransientStepInput& s, bool steady) const;
@@ -126,7 +157,10 @@ private:
     void set_slip(const double c[3], double dq, bool steady);
     void set_committed_terms(); // aq0_ = A q0, bq0_ = B q0
     const TransientStepResult& solve(const TransientStepInput& s, bool steady);
-    void totals(const double c[3], const SteadyRollingInfo& ti);
+    void totals(const double c[3], const SteadyRollingInfo& ti, bool steady);
+    // The rigid-slip change of a unit change of input column u (xi_x, xi_y,
+    // phi) of a step of length (dq; dx steady; 1 a shift) into dw_.
+    void unit_slip(int u, double length, double offset);
 
     int nx_, ny_, n_;
     double x0_, y0_, dx_, dy_;
@@ -146,11 +180,18 @@ private:
     // The committed state: tractions (normalised), A q0 and B q0, the last
     // rolling step's creepages (the force iteration's start), steps.
     std::vector<Complex> q0_, aq0_, bq0_, base_, dw_, tangent_[2];
+    std::vector<Complex> aq_; // A q of the last solve (the next commit's A q0)
     double creep0_[3] = {0.0, 0.0, 0.0};
     long steps_ = 0;
     // The trial.
     TransientStepResult result_;
     bool trial_valid_ = false, trial_rolling_ = false;
+    // The last solve (trial or steady start): its step length and spin
+    // offset [m] (in set_slip's sense), prescribed forces, work per element
+    // (normalised, box), and whether there is one.
+    double last_length_ = 0.0, last_offset_ = 0.0;
+    bool last_fx_ = false, last_fy_ = false, has_solution_ = false;
+    std::vector<double> work_;
     double trial_creep_[3] = {0.0, 0.0, 0.0};
 };
 

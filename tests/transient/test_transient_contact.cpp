@@ -72,7 +72,7 @@ void catt_to_cart_history(void**)
         const double adh = ref.number(r, "n_adhesion"), slip = ref.number(r, "n_slip");
         max_division = std::max({max_division, std::fabs(res.n_adhesion - adh),
                                  std::fabs(res.n_slip - slip)});
-        const double fric = -res.W_step / (shift ? 1.0 : 2.5e-4);
+        const double fric = -res.W_slip / (shift ? 1.0 : 2.5e-4);
         max_fric = std::max(max_fric, std::fabs(fric / ref.number(r, "fric") - 1.0));
         if (cwtest::printed(fric) != cwtest::printed(ref.number(r, "fric"))) {
             ++mismatches;
@@ -213,6 +213,145 @@ void rewind_and_restore_repeat_bits(void**)
     assert_true(refused);
 }
 
+// The work map of each step of catt_to_cart sums to W_step (to 1e-12,
+// relative), is >= 0 and vanishes in adhesion and outside the contact.
+void work_map_sums_to_w_step(void**)
+{
+    cwtest::TransientCase c = cwtest::catt_to_cart();
+    TransientContact tc(c.grid, c.input);
+    const size_t n = 34 * 33;
+    std::vector<double> work(n);
+    std::vector<int> state(n);
+    double worst = 0.0;
+    for (int k = 0; k < 12; ++k) {
+        const TransientStepResult& r = tc.step(force_step(k == 0 ? 0.0 : c.grid.dx, -0.657, c));
+        tc.copy_work(work.data());
+        tc.copy_state(state.data());
+        double sum = 0.0;
+        for (size_t e = 0; e < n; ++e) {
+            sum += work[e];
+            assert_true(work[e] >= 0.0);
+            if (state[e] != 2) assert_true(work[e] == 0.0);
+        }
+        assert_true(r.W_step > 0.0);
+        worst = std::max(worst, std::fabs(sum / r.W_step - 1.0));
+        tc.commit();
+    }
+    std::printf("work map: largest |sum / W_step - 1| %.2e\n", worst);
+    assert_true(worst <= 1e-12);
+}
+
+// In steady state (a step of dq = dx at the steady creepage of Fx = -0.657
+// mu N, from the steady start) the work per rolled distance W_step / dq is
+// the steady exact model's W_macro = -(Fx xi_x) on the same grid, and the
+// same creepage 150 steps after a Cattaneo shift gives it too.
+void steady_work_per_distance_is_w_macro(void**)
+{
+    cwtest::TransientCase c = cwtest::catt_to_cart();
+    c.input.tolerance = 1e-12;
+    TransientContact tc(c.grid, c.input);
+    const TransientStepResult steady = tc.start_steady(force_step(0.0, -0.657, c));
+    creepwork::GapExactModel model(c.grid);
+    creepwork::ContactInput in = c.input;
+    in.xi_x = steady.xi_x;
+    const creepwork::SolveTotals t = model.solve(in, creepwork::SolveMode::full);
+    TransientStepInput s;
+    s.dq = c.grid.dx;
+    s.xi_x = steady.xi_x;
+    const double w = tc.step(s).W_step / c.grid.dx;
+    std::printf("steady: W_step / dq %.9e J/m, W_macro %.9e J/m (%.2e); W_slip / dq %.9e, "
+                "the model's W_micro_paper %.9e\n",
+                w, t.W_macro, w / t.W_macro - 1.0, tc.last().W_slip / c.grid.dx, t.W_micro_paper);
+    assert_true(std::fabs(w / t.W_macro - 1.0) <= 1e-9);
+    // The dissipation of the slip itself is the steady model's paper map.
+    assert_true(std::fabs(tc.last().W_slip / c.grid.dx / t.W_micro_paper - 1.0) <= 1e-9);
+}
+
+// Central differences of a step (h = 1e-5 of the input's scale) against
+// jacobian().
+double jacobian_difference(TransientContact& tc, const TransientStepInput& base,
+                           const double scale[3])
+{
+    double J[9];
+    tc.step(base);
+    tc.jacobian(J);
+    double worst = 0.0;
+    for (int col = 0; col < 3; ++col) {
+        const double h = 1e-5 * scale[col];
+        double out[2][3];
+        for (int side = 0; side < 2; ++side) {
+            TransientStepInput s = base;
+            const double d = side == 0 ? h : -h;
+            if (col == 0) (s.prescribe_fx ? s.Fx : s.xi_x) += d;
+            if (col == 1) (s.prescribe_fy ? s.Fy : s.xi_y) += d;
+            if (col == 2) s.phi += d;
+            const TransientStepResult& r = tc.step(s);
+            tc.rewind();
+            out[side][0] = s.prescribe_fx ? r.xi_x : r.Fx;
+            out[side][1] = s.prescribe_fy ? r.xi_y : r.Fy;
+            out[side][2] = r.Mz;
+        }
+        for (int row = 0; row < 3; ++row) {
+            const double fd = (out[0][row] - out[1][row]) / (2 * h);
+            double size = 0.0; // the row's largest entry
+            for (int k = 0; k < 3; ++k) size = std::max(size, std::fabs(J[3 * row + k]));
+            const double e = std::fabs(fd - J[3 * row + col]) / size;
+            worst = std::max(worst, e);
+        }
+    }
+    return worst;
+}
+
+// The step map's Jacobian (creepages given; Fx given; Fx and Fy given; a
+// shift) equals central differences of the step to 1e-6 of each row's
+// largest entry, after four steps of catt_to_cart with lateral creepage and
+// spin added.
+void step_jacobian_matches_differences(void**)
+{
+    cwtest::TransientCase c = cwtest::catt_to_cart();
+    c.input.tolerance = 1e-12;
+    TransientContact tc(c.grid, c.input);
+    tc.step(force_step(0.0, -0.657, c));
+    tc.commit();
+    double xi[3] = {0.0, 1e-3, 20.0};
+    for (int k = 0; k < 4; ++k) {
+        TransientStepInput s = force_step(c.grid.dx, -0.5, c);
+        s.xi_y = xi[1];
+        s.phi = xi[2];
+        xi[0] = tc.step(s).xi_x;
+        tc.commit();
+    }
+    TransientStepInput s;
+    s.dq = c.grid.dx;
+    s.xi_x = xi[0];
+    s.xi_y = xi[1];
+    s.phi = xi[2];
+    const double creep_scale[3] = {1e-3, 1e-3, 20.0};
+    const double e_creep = jacobian_difference(tc, s, creep_scale);
+    const double muN = c.input.mu * c.input.normal_force;
+    TransientStepInput f = s;
+    f.prescribe_fx = true;
+    f.Fx = -0.5 * muN;
+    const double force_scale[3] = {muN, muN, 20.0};
+    const double e_fx = jacobian_difference(tc, f, force_scale);
+    f.prescribe_fy = true;
+    f.Fy = tc.step(s).Fy;
+    const double e_forces = jacobian_difference(tc, f, force_scale);
+    TransientStepInput shift;
+    shift.xi_x = -2e-6;
+    shift.xi_y = 1e-6;
+    shift.phi = 1e-4;
+    const double shift_scale[3] = {1e-6, 1e-6, 1e-4};
+    const double e_shift = jacobian_difference(tc, shift, shift_scale);
+    std::printf("step Jacobian vs central differences: creepages %.2e, Fx %.2e, Fx Fy %.2e, "
+                "shift %.2e\n",
+                e_creep, e_fx, e_forces, e_shift);
+    assert_true(e_creep <= 1e-6);
+    assert_true(e_fx <= 1e-6);
+    assert_true(e_forces <= 1e-6);
+    assert_true(e_shift <= 1e-6);
+}
+
 } // namespace
 
 int main()
@@ -222,6 +361,9 @@ int main()
         cmocka_unit_test(cattaneo_shift),
         cmocka_unit_test(asymptote_is_steady),
         cmocka_unit_test(rewind_and_restore_repeat_bits),
+        cmocka_unit_test(work_map_sums_to_w_step),
+        cmocka_unit_test(steady_work_per_distance_is_w_macro),
+        cmocka_unit_test(step_jacobian_matches_differences),
     };
     return cmocka_run_group_tests(tests, nullptr, nullptr);
 }
