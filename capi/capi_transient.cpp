@@ -64,6 +64,7 @@ cw_transient_result to_result(const cw::TransientStepResult& r, long steps)
     out.force_iterations = r.force_iterations;
     out.residual = r.residual;
     out.steps_committed = steps;
+    out.W_slip = r.W_slip;
     return out;
 }
 
@@ -71,7 +72,7 @@ cw_transient_result to_result(const cw::TransientStepResult& r, long steps)
 // leaves the library).
 void require_finite_result(const cw_transient_result& r)
 {
-    const double v[] = {r.xi_x, r.xi_y, r.phi, r.Fx, r.Fy, r.Mz, r.W_step, r.residual};
+    const double v[] = {r.xi_x, r.xi_y, r.phi, r.Fx, r.Fy, r.Mz, r.W_step, r.W_slip, r.residual};
     for (double x : v)
         if (!std::isfinite(x)) fail(CW_ERR_NUMERIC, "the step's result is not finite: inputs too extreme");
 }
@@ -257,12 +258,13 @@ int cw_transient_get_field(const cw_transient* transient, int field, double* out
         case CW_FIELD_PX:
         case CW_FIELD_PY:
         case CW_FIELD_SX:
-        case CW_FIELD_SY: break;
+        case CW_FIELD_SY:
+        case CW_FIELD_WORK_CONSISTENT: break;
         default:
             fail(CW_ERR_UNKNOWN_OPTION,
                  "field = " + std::to_string(field) +
                      " is not a field of transient rolling (CW_FIELD_X, _Y, _PZ, _PX, _PY, "
-                     "_SX, _SY)");
+                     "_SX, _SY, _WORK_CONSISTENT)");
         }
         require_length(len, n, "out");
         if (field == CW_FIELD_X || field == CW_FIELD_Y) {
@@ -272,6 +274,8 @@ int cw_transient_get_field(const cw_transient* transient, int field, double* out
                         field == CW_FIELD_X ? g.x0 + i * g.dx : g.y0 + j * g.dy;
         } else if (field == CW_FIELD_PZ) {
             c.copy_pressure(out);
+        } else if (field == CW_FIELD_WORK_CONSISTENT) {
+            c.copy_work(out);
         } else if (field == CW_FIELD_PX || field == CW_FIELD_PY) {
             c.copy_traction(field == CW_FIELD_PX ? out : nullptr,
                             field == CW_FIELD_PY ? out : nullptr);
@@ -290,6 +294,23 @@ int cw_transient_get_state(const cw_transient* transient, int* out, size_t len)
         require_fields(transient);
         require_length(len, static_cast<size_t>(transient->grid.nx) * transient->grid.ny, "out");
         transient->contact.copy_state(out);
+        return CW_OK;
+    });
+}
+
+int cw_transient_jacobian(cw_transient* transient, double* jacobian, size_t len)
+{
+    if (!transient) return CW_ERR_NULL_POINTER;
+    return guarded(&transient->last_error, [&] {
+        require(jacobian, "jacobian");
+        require_fields(transient);
+        require_length(len, CW_TRANSIENT_JACOBIAN_LEN, "jacobian");
+        double J[CW_TRANSIENT_JACOBIAN_LEN];
+        transient->contact.jacobian(J);
+        for (double v : J)
+            if (!std::isfinite(v))
+                fail(CW_ERR_NUMERIC, "the step's Jacobian is not finite: inputs too extreme");
+        std::memcpy(jacobian, J, sizeof J);
         return CW_OK;
     });
 }

@@ -5,7 +5,9 @@
  * every function's errors name their input and leave the handle usable. */
 #include "capi_fixtures.h"
 
+#include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 
 static cw_transient* make(double* h)
 {
@@ -64,7 +66,7 @@ static void catt_to_cart_first_cases(void** state)
         assert_int_equal(r.n_slip, slip);
         /* CONTACT's frictional work of the shift [N m] and power of a step
          * [N m/s] at V = 1 m/s (dt = 2.5e-4 s), negative. */
-        snprintf(got, sizeof got, "%.3E", -r.W_step / (shift ? 1.0 : 2.5e-4));
+        snprintf(got, sizeof got, "%.3E", -r.W_slip / (shift ? 1.0 : 2.5e-4));
         char want[32];
         snprintf(want, sizeof want, "%.3E", fric);
         assert_string_equal(got, want);
@@ -217,12 +219,68 @@ static void errors_name_their_input(void** state)
     assert_int_equal(cw_transient_result_init(NULL), CW_ERR_NULL_POINTER);
 }
 
+/* After the shift and three steps of catt_to_cart: the work field adds up
+ * to W_step (1e-12, relative) and W_step >= W_slip; the Jacobian of a step
+ * at prescribed Fx (row xi_x, column Fx) equals a central difference of two
+ * trials (h = 1e-5 mu N) to 1e-6, and so does d Fx / d xi_x of a step at
+ * the creepage found (its inverse); its errors. */
+static void work_field_and_jacobian(void** state)
+{
+    (void)state;
+    double h[CW_CATT_NX * CW_CATT_NY];
+    cw_transient* t = make(h);
+    const size_t n = (size_t)CW_CATT_NX * CW_CATT_NY;
+    double J[CW_TRANSIENT_JACOBIAN_LEN], K[CW_TRANSIENT_JACOBIAN_LEN];
+    assert_int_equal(cw_transient_jacobian(t, J, 9), CW_ERR_NO_SOLUTION);
+    cw_transient_result r;
+    cw_transient_result_init(&r);
+    for (int k = 0; k < 4; ++k) {
+        const cw_transient_input s = force_step(k == 0 ? 0.0 : 0.25e-3, -0.657);
+        assert_int_equal(cw_transient_step(t, &s, &r), CW_OK);
+        assert_int_equal(cw_transient_commit(t), CW_OK);
+    }
+    const cw_transient_input s = force_step(0.25e-3, -0.5);
+    assert_int_equal(cw_transient_step(t, &s, &r), CW_OK);
+    double* w = malloc(n * sizeof(double));
+    assert_int_equal(cw_transient_get_field(t, CW_FIELD_WORK_CONSISTENT, w, n), CW_OK);
+    double sum = 0.0;
+    for (size_t k = 0; k < n; ++k) sum += w[k];
+    free(w);
+    assert_true(fabs(sum / r.W_step - 1.0) <= 1e-12);
+    assert_true(r.W_step >= r.W_slip && r.W_slip > 0.0);
+    assert_int_equal(cw_transient_jacobian(t, J, 8), CW_ERR_BUFFER_TOO_SMALL);
+    assert_int_equal(cw_transient_jacobian(t, NULL, 9), CW_ERR_NULL_POINTER);
+    assert_int_equal(cw_transient_jacobian(NULL, J, 9), CW_ERR_NULL_POINTER);
+    assert_int_equal(cw_transient_jacobian(t, J, 9), CW_OK);
+    const double muN = 0.4013 * 0.4705, dF = 1e-5 * muN, xi = r.xi_x;
+    double side[2];
+    for (int k = 0; k < 2; ++k) {
+        cw_transient_input p = s;
+        p.Fx += k == 0 ? dF : -dF;
+        assert_int_equal(cw_transient_step(t, &p, &r), CW_OK);
+        side[k] = r.xi_x;
+        assert_int_equal(cw_transient_rewind(t), CW_OK);
+    }
+    const double fd = (side[0] - side[1]) / (2 * dF);
+    printf("d xi_x / d Fx: Jacobian %.9e, central difference %.9e\n", J[0], fd);
+    assert_true(fabs(fd / J[0] - 1.0) <= 1e-6);
+    cw_transient_input c;
+    cw_transient_input_init(&c);
+    c.dq = 0.25e-3;
+    c.xi_x = xi;
+    assert_int_equal(cw_transient_step(t, &c, &r), CW_OK);
+    assert_int_equal(cw_transient_jacobian(t, K, 9), CW_OK);
+    assert_true(fabs(K[0] * J[0] - 1.0) <= 1e-6);
+    assert_int_equal(cw_transient_destroy(t), CW_OK);
+}
+
 int main(int argc, char** argv)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(catt_to_cart_first_cases),
         cmocka_unit_test(trial_repeats_bitwise),
         cmocka_unit_test(errors_name_their_input),
+        cmocka_unit_test(work_field_and_jacobian),
     };
     return cw_run_tests(tests, argc > 1 ? argv[1] : NULL);
 }

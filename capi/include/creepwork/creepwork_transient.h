@@ -51,12 +51,19 @@ typedef struct cw_transient_result {
     double Fx, Fy;          /* creep force on the wheel [N] */
     double Mz;              /* creep moment about the grid's origin, on the wheel [N m] */
     int n_contact, n_adhesion, n_slip;
-    double W_step;          /* frictional work of the step [J]: |traction| |slip| summed over
-                               the slipping elements times their area */
+    double W_step;          /* frictional work of the step [J], energy-consistent: the work of
+                               the step's rigid displacement under the mean of the old and
+                               new tractions less the change of the elastic energy; in
+                               steady rolling dq times the steady model's W_macro (less
+                               dq phi spin_offset Fy) */
     int iterations;         /* Newton steps of the tangential problem, all force iterations */
     int force_iterations;   /* Newton steps on the prescribed forces */
     double residual;        /* final relative residual of the tangential problem */
     int64_t steps_committed;/* committed steps since the last start or restore */
+    double W_slip;          /* dissipation of the step's own slip [J]: |traction| |slip|
+                               summed over the slipping elements times their area
+                               (CONTACT's frictional work); below W_step by the exact
+                               theory's numerical dissipation */
 } cw_transient_result;
 
 /* Fills defaults and struct_size. Errors: CW_ERR_NULL_POINTER. */
@@ -121,9 +128,12 @@ CW_API int cw_transient_save(const cw_transient* transient, uint64_t* out, size_
 CW_API int cw_transient_restore(cw_transient* transient, const uint64_t* state, size_t len);
 
 /* Copies a field of the last step (or steady start) at [i + j*nx]:
- * CW_FIELD_X, CW_FIELD_Y, CW_FIELD_PZ, CW_FIELD_PX, CW_FIELD_PY, and
+ * CW_FIELD_X, CW_FIELD_Y, CW_FIELD_PZ, CW_FIELD_PX, CW_FIELD_PY,
  * CW_FIELD_SX, CW_FIELD_SY as the slip of the step [m] (0 in adhesion and
- * outside the contact). Errors: CW_ERR_NULL_POINTER, CW_ERR_NO_SOLUTION,
+ * outside the contact), and CW_FIELD_WORK_CONSISTENT as the frictional work
+ * of each element over the step [J]: its slip's dissipation scaled to add up
+ * to W_step (0 in adhesion, outside the contact, and everywhere when no
+ * element slips). Errors: CW_ERR_NULL_POINTER, CW_ERR_NO_SOLUTION,
  * CW_ERR_UNKNOWN_OPTION (another field), CW_ERR_BUFFER_TOO_SMALL. */
 CW_API int cw_transient_get_field(const cw_transient* transient, int field, double* out,
                                   size_t len);
@@ -132,6 +142,21 @@ CW_API int cw_transient_get_field(const cw_transient* transient, int field, doub
  * j*nx], as cw_solver_get_state. Errors: CW_ERR_NULL_POINTER,
  * CW_ERR_NO_SOLUTION, CW_ERR_BUFFER_TOO_SMALL. */
 CW_API int cw_transient_get_state(const cw_transient* transient, int* out, size_t len);
+
+/* The derivative of the last step (or steady start) by its inputs, for an
+ * implicit integrator, row-major: jacobian[3*r + c] = d(output r)/d(input c)
+ * (CW_TRANSIENT_JACOBIAN_LEN values). With CW_PRESCRIBE_CREEPAGES rows are
+ * Fx, Fy, Mz [N, N, N m] and columns xi_x, xi_y, phi (rolling; a shift:
+ * the shift along x, y [m] and the rotation [rad]). A prescribed force and
+ * its found creepage trade places: with CW_PRESCRIBE_FX row 0 is xi_x and
+ * column 0 is Fx; with CW_PRESCRIBE_FORCES also row 1 is xi_y and column 1
+ * Fy. The derivative of the converged discrete step (no extra steps; the
+ * state and the trial are unchanged). Errors: CW_ERR_NULL_POINTER,
+ * CW_ERR_NO_SOLUTION, CW_ERR_BUFFER_TOO_SMALL, CW_ERR_NOT_CONVERGED (a
+ * prescribed force in full slip), CW_ERR_NUMERIC. On error nothing is
+ * written. */
+#define CW_TRANSIENT_JACOBIAN_LEN 9
+CW_API int cw_transient_jacobian(cw_transient* transient, double* jacobian, size_t len);
 
 /* Detailed message of the last error on this handle, as cw_solver_last_error. */
 CW_API const char* cw_transient_last_error(const cw_transient* transient);
