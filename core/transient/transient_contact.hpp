@@ -70,8 +70,8 @@ struct TransientStepResult {
     // tractions less the change of the elastic energy,
     //   W_step = -sum 1/2 (p_prev + p) . r dA - (E(p) - E(p_prev)),
     // E(p) = 1/2 sum p . u(p) dA; in steady rolling (p = p_prev) it is
-    // dq (W_macro - phi spin_offset Fy), the steady model's W_macro per
-    // rolled distance. The sum of the work map (copy_work).
+    // dq (W_macro - phi s dq Fy) (s the spin offset), the steady model's
+    // W_macro per rolled distance. The sum of the work map (copy_work).
     double W_step = 0.0;
     // The friction dissipation of the step's own slip, sum of |p_t| |S| dA
     // [J] (CONTACT's frictional work): below W_step by the exact theory's

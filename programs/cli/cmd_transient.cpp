@@ -152,6 +152,7 @@ JsonObject step_json(const cw_transient_result& r, long line)
         .integer("n_adhesion", r.n_adhesion)
         .integer("n_slip", r.n_slip)
         .number("W_step", r.W_step)
+        .number("W_slip", r.W_slip)
         .integer("iterations", r.iterations);
     return j;
 }
@@ -221,7 +222,7 @@ int command_transient(int argc, char** argv, int first)
     // Printed when every step succeeded: a refusal prints only its line.
     std::ostringstream out;
     if (!json)
-        out << "# step  line  dq_m  xi_x  xi_y  phi  Fx  Fy  Mz  n_adhesion  n_slip  W_step\n";
+        out << "# step  line  dq_m  xi_x  xi_y  phi  Fx  Fy  Mz  n_adhesion  n_slip  W_step  W_slip\n";
     else
         out << "[\n";
     for (size_t k = 0; k < rows.size(); ++k) {
@@ -239,7 +240,7 @@ int command_transient(int argc, char** argv, int first)
             for (double v : {r.xi_x, r.xi_y, r.phi, r.Fx, r.Fy, r.Mz})
                 out << "  " << round_trip_text(v);
             out << "  " << r.n_adhesion << "  " << r.n_slip << "  "
-                      << round_trip_text(r.W_step) << "\n";
+                      << round_trip_text(r.W_step) << "  " << round_trip_text(r.W_slip) << "\n";
         }
     }
     if (json) out << "]\n";

@@ -652,11 +652,14 @@ options:
                       forces, then every line as a step)
   --format F          text (default: one line per step) or json: a list
                       with one object per step: line xi_x xi_y phi Fx Fy Mz
-                      n_contact n_adhesion n_slip W_step iterations
+                      n_contact n_adhesion n_slip W_step W_slip
+                      iterations
 
 Outputs: xi_x, xi_y, phi as given or found; Fx, Fy, Mz on the wheel [N, N,
 N m], Mz about the gap file's origin; W_step the frictional work of the
-step [J].
+step [J], energy-consistent (in steady rolling dq times the steady model's
+W_macro); W_slip the dissipation of the step's own slip [J] (CONTACT's
+frictional work), below W_step by the numerical dissipation.
 )";
 }
 

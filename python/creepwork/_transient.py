@@ -15,9 +15,11 @@ from ._solver import _params_record
 
 _MESSAGE_LEN = 512
 
-#: Field name -> CW_FIELD_* id of Transient.field (sx, sy: the slip of the step [m]).
+#: Field name -> CW_FIELD_* id of Transient.field (sx, sy: the slip of the step [m];
+#: work: the frictional work of each element over the step [J], summing to W_step).
 TRANSIENT_FIELDS = {name: CONSTANTS["CW_FIELD_" + name.upper()]
                     for name in ("x", "y", "pz", "px", "py", "sx", "sy")}
+TRANSIENT_FIELDS["work"] = CONSTANTS["CW_FIELD_WORK_CONSISTENT"]
 
 
 class Transient(Handle):
@@ -119,13 +121,24 @@ class Transient(Handle):
 
     def field(self, name: str) -> np.ndarray:
         """A field of the last step as an (ny, nx) array: x, y [m], pz, px, py
-        [Pa], sx, sy (the slip of the step [m])."""
+        [Pa], sx, sy (the slip of the step [m]), work (each element's
+        frictional work over the step [J]; the sum is W_step)."""
         if name not in TRANSIENT_FIELDS:
             raise _errors.BY_STATUS[CONSTANTS["CW_ERR_UNKNOWN_OPTION"]](
                 "Transient.field(): %r is not one of %s" % (name, ", ".join(TRANSIENT_FIELDS)))
         out = np.empty((self.ny, self.nx))
         self._check(lib.cw_transient_get_field(self._live(), TRANSIENT_FIELDS[name],
                                                address(out), out.size))
+        return out
+
+    def jacobian(self) -> np.ndarray:
+        """The derivative of the last step by its inputs, a (3, 3) array
+        J[r, c] = d(output r)/d(input c): rows Fx, Fy, Mz, columns xi_x,
+        xi_y, phi (a shift: the shift [m] and rotation [rad]); a prescribed
+        force and its found creepage trade places (Fx given: row 0 is xi_x,
+        column 0 Fx; Fy given too: row 1 is xi_y, column 1 Fy)."""
+        out = np.empty((3, 3))
+        self._check(lib.cw_transient_jacobian(self._live(), address(out), out.size))
         return out
 
     def state(self) -> np.ndarray:

@@ -80,3 +80,26 @@ def test_errors_name_their_input():
     with pytest.raises(creepwork.InvalidInputError, match="mu"):
         grid = {"kind": "gap", "nx": 34, "ny": 33, "x0": -4e-3, "y0": -4e-3, "dx": DX, "dy": DX}
         creepwork.Transient(grid, gap=np.ones((33, 34)), N=0.4705, G=1e6, nu=0.28, mu=0.0)
+
+
+def test_work_map_and_jacobian():
+    """The work field adds up to W_step (1e-12) and W_step >= W_slip; the
+    Jacobian at prescribed Fx (d xi_x / d Fx) equals a central difference of
+    two trials (h = 1e-5 mu N) to 1e-6, and is the C API's (same bits)."""
+    with catt_to_cart() as t:
+        with pytest.raises(creepwork.NoSolutionError):
+            t.jacobian()
+        for k in range(4):
+            t.step(dq=0.0 if k == 0 else DX, Fx=FX)
+            t.commit()
+        r = t.step(dq=DX, Fx=-0.5 * 0.4013 * 0.4705)
+        assert abs(t.field("work").sum() / r["W_step"] - 1.0) <= 1e-12
+        assert r["W_step"] >= r["W_slip"] > 0.0
+        J = t.jacobian()
+        h = 1e-5 * 0.4013 * 0.4705
+        side = []
+        for d in (h, -h):
+            side.append(t.step(dq=DX, Fx=-0.5 * 0.4013 * 0.4705 + d)["xi_x"])
+            t.rewind()
+        fd = (side[0] - side[1]) / (2 * h)
+        assert abs(fd / J[0, 0] - 1.0) <= 1e-6

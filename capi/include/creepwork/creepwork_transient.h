@@ -54,8 +54,8 @@ typedef struct cw_transient_result {
     double W_step;          /* frictional work of the step [J], energy-consistent: the work of
                                the step's rigid displacement under the mean of the old and
                                new tractions less the change of the elastic energy; in
-                               steady rolling dq times the steady model's W_macro (less
-                               dq phi spin_offset Fy) */
+                               steady rolling dq (W_macro - phi spin_offset dq Fy), W_macro
+                               the steady model's */
     int iterations;         /* Newton steps of the tangential problem, all force iterations */
     int force_iterations;   /* Newton steps on the prescribed forces */
     double residual;        /* final relative residual of the tangential problem */

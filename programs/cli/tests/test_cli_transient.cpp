@@ -100,6 +100,7 @@ void transient_json_matches_library(void**)
         assert_true(o.num("Fy") == lib.Fy);
         assert_true(o.num("Mz") == lib.Mz);
         assert_true(o.num("W_step") == lib.W_step);
+        assert_true(o.num("W_slip") == lib.W_slip);
         assert_int_equal(static_cast<int>(o.num("n_adhesion")), lib.n_adhesion);
         assert_int_equal(static_cast<int>(o.num("n_slip")), lib.n_slip);
         assert_int_equal(static_cast<int>(o.num("line")), k + 2);
