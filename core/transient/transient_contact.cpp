@@ -25,7 +25,7 @@ constexpr double kTangentTolerance = 1e-4;
 // The step Jacobian's linear solves: well below the forces' own tolerance,
 // so that it matches central differences of converged steps.
 constexpr double kStepJacobianTolerance = 1e-12;
-constexpr char kMagic[8] = {'c', 'w', 't', 'r', 'a', 'n', 's', '1'};
+constexpr char kMagic[8] = {'c', 'w', 't', 'r', 'a', 'n', 's', '2'};
 
 void check_finite(const char* name, double v)
 {
@@ -71,10 +71,18 @@ TransientContact::TransientContact(const GridSpec& grid, const ContactInput& in)
                     "transient rolling needs normal_force > 0 or an approach with contact");
     T_ = in.mu * p_ref_;
     U_ = T_ * dx_ / in.G;
-    box_ = cell_box(nx_, ny_, [&](std::size_t k) { return p[k] > 0.0; });
+    set_box();
+    start_zero();
+}
+
+void TransientContact::set_box()
+{
+    const std::vector<double>& p = normal_.pressure();
+    box_ = world_ ? CellBox{0, 0, nx_, ny_}
+                  : cell_box(nx_, ny_, [&](std::size_t k) { return p[k] > 0.0; });
     bn_ = box_.nx * box_.ny;
     conv_.set_size(box_.nx, box_.ny);
-    conv_.copy_coefficients(normal_.half_space(in.nu));
+    conv_.copy_coefficients(normal_.half_space(in_.nu));
     solver_.set_size(box_.nx, box_.ny);
     std::vector<double>& g = solver_.bound();
     for (int k = 0; k < bn_; ++k) g[k] = p[cell(k)] / p_ref_;
@@ -82,12 +90,46 @@ TransientContact::TransientContact(const GridSpec& grid, const ContactInput& in)
         v->assign(bn_, Complex(0.0, 0.0));
     work_.assign(bn_, 0.0);
     aq_.assign(bn_, Complex(0.0, 0.0));
+}
+
+void TransientContact::move_geometry(double X)
+{
+    if (X == normal_position_) return;
+    // h(x - X): X = m dx + f dx, between the elements m and m + 1 upstream.
+    const double steps = X / dx_;
+    const int m = static_cast<int>(std::floor(steps));
+    const double f = steps - m;
+    double far = gap_[0];
+    for (double v : gap_) far = std::max(far, v);
+    moved_gap_.resize(gap_.size());
+    for (int j = 0; j < ny_; ++j)
+        for (int i = 0; i < nx_; ++i) {
+            const int a = i - m, b = i - m - 1; // x - X lies between element b and a
+            const std::size_t row = static_cast<std::size_t>(nx_) * j;
+            const double ha = a >= 0 && a < nx_ ? gap_[row + a] : far;
+            const double hb = b >= 0 && b < nx_ ? gap_[row + b] : far;
+            moved_gap_[row + i] = f == 0.0 ? ha : (1.0 - f) * ha + f * hb;
+        }
+    ContactInput in = own_gap(in_, moved_gap_);
+    normal_.solve(X == 0.0 ? in_ : in, false);
+    normal_position_ = X;
+    const std::vector<double>& p = normal_.pressure();
+    std::vector<double>& g = solver_.bound();
+    for (int k = 0; k < bn_; ++k) g[k] = p[cell(k)] / p_ref_;
+}
+
+void TransientContact::set_frame(TransientFrame frame)
+{
+    world_ = frame == TransientFrame::world;
+    move_geometry(0.0);
+    set_box();
     start_zero();
 }
 
 void TransientContact::start_zero()
 {
     has_solution_ = false;
+    position_ = trial_position_ = 0.0;
     std::fill(q0_.begin(), q0_.end(), Complex(0.0, 0.0));
     std::fill(creep0_, creep0_ + 3, 0.0);
     steps_ = 0;
@@ -145,12 +187,13 @@ void TransientContact::set_slip(const double c[3], double dq, bool steady)
     const double length = steady ? dx_ : dq > 0.0 ? dq : 1.0;
     const double offset = steady ? spin_offset_ * dx_ : spin_offset_ * dq;
     const double ux = c[0] * length / U_, uy = c[1] * length / U_, th = c[2] * length / U_;
+    const double origin = world_ ? trial_position_ : 0.0;
     std::vector<Complex>& w = solver_.rigid_slip();
     for (int j = 0; j < box_.ny; ++j) {
         const double y = y0_ + (box_.j0 + j) * dy_;
         for (int i = 0; i < box_.nx; ++i) {
             const int k = i + box_.nx * j;
-            const double x = x0_ + (box_.i0 + i) * dx_ + offset;
+            const double x = x0_ + (box_.i0 + i) * dx_ + offset - origin;
             w[k] = Complex(ux - th * y, uy + th * x) + base_[k];
         }
     }
@@ -159,10 +202,11 @@ void TransientContact::set_slip(const double c[3], double dq, bool steady)
 void TransientContact::unit_slip(int u, double length, double offset)
 {
     const double t = length / U_;
+    const double origin = world_ ? trial_position_ : 0.0;
     for (int j = 0; j < box_.ny; ++j) {
         const double y = y0_ + (box_.j0 + j) * dy_;
         for (int i = 0; i < box_.nx; ++i) {
-            const double x = x0_ + (box_.i0 + i) * dx_ + offset;
+            const double x = x0_ + (box_.i0 + i) * dx_ + offset - origin;
             dw_[i + box_.nx * j] = u == 0   ? Complex(t, 0.0)
                                    : u == 1 ? Complex(0.0, t)
                                             : Complex(-t * y, t * x);
@@ -174,9 +218,14 @@ const TransientStepResult& TransientContact::step(const TransientStepInput& s)
 {
     validate(s, false);
     trial_valid_ = false;
-    // The committed state's share: -A q0 + d B q0.
-    const double d = std::min(s.dq / dx_, 1.0);
+    // The committed state's share: -A q0 + d B q0 (world-fixed: -A q0 on
+    // the moved geometry).
+    const double d = world_ ? 0.0 : std::min(s.dq / dx_, 1.0);
     for (int k = 0; k < bn_; ++k) base_[k] = d * bq0_[k] - aq0_[k];
+    if (world_) {
+        trial_position_ = position_ + s.dq;
+        move_geometry(trial_position_);
+    }
     solver_.set_operator(SlipOperator::shift);
     solver_.traction() = q0_;
     return solve(s, false);
@@ -186,6 +235,10 @@ const TransientStepResult& TransientContact::start_steady(const TransientStepInp
 {
     validate(s, true);
     trial_valid_ = false;
+    if (world_) {
+        trial_position_ = position_;
+        move_geometry(position_);
+    }
     std::fill(base_.begin(), base_.end(), Complex(0.0, 0.0));
     solver_.set_operator(SlipOperator::rolling);
     std::fill(solver_.traction().begin(), solver_.traction().end(), Complex(0.0, 0.0));
@@ -357,6 +410,7 @@ void TransientContact::commit()
     aq0_ = aq_; // A q of the trial (the same bits as computing it again)
     conv_.apply_tangential(q0_.data(), bq0_.data(), true);
     if (trial_rolling_) std::copy(trial_creep_, trial_creep_ + 3, creep0_);
+    if (world_) position_ = trial_position_;
     ++steps_;
     trial_valid_ = false;
 }
@@ -385,6 +439,8 @@ std::vector<unsigned char> TransientContact::save() const
     put(out, T_);
     put(out, static_cast<std::int64_t>(steps_));
     for (double v : creep0_) put(out, v);
+    put(out, static_cast<std::int64_t>(world_ ? 1 : 0));
+    put(out, position_);
     for (const Complex& v : q0_) {
         put(out, v.real());
         put(out, v.imag());
@@ -394,7 +450,7 @@ std::vector<unsigned char> TransientContact::save() const
 
 void TransientContact::restore(const unsigned char* bytes, std::size_t n)
 {
-    const std::size_t size = sizeof(kMagic) + 2 * 4 + 2 * 8 + 8 + 3 * 8 + 16 * q0_.size();
+    const std::size_t size = sizeof(kMagic) + 2 * 4 + 2 * 8 + 8 + 3 * 8 + 2 * 8 + 16 * q0_.size();
     if (!bytes || n != size || std::memcmp(bytes, kMagic, sizeof(kMagic)) != 0)
         throw Error(ErrorKind::invalid_input,
                     "restore: the bytes (" + std::to_string(n) +
@@ -416,6 +472,16 @@ void TransientContact::restore(const unsigned char* bytes, std::size_t n)
     double creep[3];
     for (double& v : creep) get(p, v);
     for (double v : creep) check_finite("restored creepage", v);
+    std::int64_t world = 0;
+    double position = 0.0;
+    get(p, world);
+    get(p, position);
+    if (world != (world_ ? 1 : 0))
+        throw Error(ErrorKind::invalid_input,
+                    "restore: the bytes are the state of another contact (the coordinates, "
+                    "world- or contact-fixed, differ)");
+    if (!std::isfinite(position) || position < 0.0)
+        throw Error(ErrorKind::invalid_input, "restore: the bytes hold a bad rolled distance");
     std::vector<Complex>& q = solver_.traction(); // scratch until the next step
     for (Complex& v : q) {
         double re = 0.0, im = 0.0;
@@ -427,6 +493,7 @@ void TransientContact::restore(const unsigned char* bytes, std::size_t n)
         v = Complex(re, im);
     }
     q0_ = q;
+    position_ = trial_position_ = position;
     has_solution_ = false;
     std::copy(creep, creep + 3, creep0_);
     steps_ = static_cast<long>(steps);

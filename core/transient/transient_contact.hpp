@@ -33,6 +33,19 @@
 // (the tractions vanish outside; the same discrete problem with smaller
 // FFTs), as the steady model on a gap grid does.
 //
+// World-fixed coordinates (CONTACT's T = 1; set_frame(world)): the grid
+// stays with the material and the geometry moves over it, by dq towards +x
+// per step: the gap of a step at rolled distance X is the given gap at
+// x - X (interpolated linearly between the elements; exact for X a
+// multiple of dx; elements whose geometry comes from beyond the grid's -x
+// edge take the grid's largest gap), the normal problem is solved per step
+// (cold, so a trial repeats bitwise), and nothing is transported:
+//   s = r + A (q - q_prev),
+// the spin's rigid slip taken about x = X (the geometry's origin now). The
+// problem runs on the whole grid, which must hold the contact over the run.
+// With dq = dx this is the contact-fixed step seen from the ground: the two
+// agree to the solver's tolerance.
+//
 // Frame: the leading edge at +x (rolling towards +x); positions from the
 // grid's origin; forces on the wheel (body 1) as in the steady models.
 #pragma once
@@ -48,6 +61,10 @@
 #include "normal/gap_normal.hpp"
 
 namespace creepwork {
+
+// Where the grid is fixed: to the contact (CONTACT's T = 2), or to the
+// world (the material; T = 1).
+enum class TransientFrame { contact = 0, world = 1 };
 
 // What one step is given.
 struct TransientStepInput {
@@ -95,8 +112,15 @@ public:
     // or Error(not_converged).
     TransientContact(const GridSpec& grid, const ContactInput& in);
 
-    // The committed state: zero tractions.
+    // The committed state: zero tractions (the geometry back at its start).
     void start_zero();
+    // Chooses the coordinates (the handle starts contact-fixed) and starts
+    // from zero tractions with the geometry at its start.
+    void set_frame(TransientFrame frame);
+    TransientFrame frame() const { return world_ ? TransientFrame::world : TransientFrame::contact; }
+    // World-fixed: the distance the geometry has rolled over the grid [m]
+    // (committed); 0 contact-fixed.
+    double position() const { return position_; }
     // The committed state: the steady-rolling solution of step's creepages
     // (dq is not read; its forces may be prescribed). Returns it.
     const TransientStepResult& start_steady(const TransientStepInput& step);
@@ -156,6 +180,12 @@ private:
     // plus base_, into the solver's rigid slip.
     void set_slip(const double c[3], double dq, bool steady);
     void set_committed_terms(); // aq0_ = A q0, bq0_ = B q0
+    // The box the problem runs on (the contact's, or the whole grid
+    // world-fixed), its bound from the normal solution, the fields' sizes.
+    void set_box();
+    // World-fixed: the normal problem of the geometry rolled by X [m] over
+    // the grid, and the bound from it (nothing when it is solved already).
+    void move_geometry(double X);
     const TransientStepResult& solve(const TransientStepInput& s, bool steady);
     void totals(const double c[3], const SteadyRollingInfo& ti, bool steady);
     // The rigid-slip change of a unit change of input column u (xi_x, xi_y,
@@ -190,6 +220,11 @@ private:
     // offset [m] (in set_slip's sense), prescribed forces, work per element
     // (normalised, box), and whether there is one.
     double last_length_ = 0.0, last_offset_ = 0.0;
+    // World-fixed: the frame, the committed and the trial rolled distance,
+    // that of the normal solution, and the moved gap.
+    bool world_ = false;
+    double position_ = 0.0, trial_position_ = 0.0, normal_position_ = 0.0;
+    std::vector<double> moved_gap_;
     bool last_fx_ = false, last_fy_ = false, has_solution_ = false;
     std::vector<double> work_;
     double trial_creep_[3] = {0.0, 0.0, 0.0};
