@@ -298,6 +298,22 @@ int cw_transient_get_state(const cw_transient* transient, int* out, size_t len)
     });
 }
 
+int cw_transient_set_coordinates(cw_transient* transient, int coordinates)
+{
+    if (!transient) return CW_ERR_NULL_POINTER;
+    return guarded(&transient->last_error, [&] {
+        if (coordinates != CW_COORDINATES_CONTACT && coordinates != CW_COORDINATES_WORLD)
+            fail(CW_ERR_UNKNOWN_OPTION, "coordinates = " + std::to_string(coordinates) +
+                                            " is not CW_COORDINATES_CONTACT or "
+                                            "CW_COORDINATES_WORLD");
+        transient->contact.set_frame(coordinates == CW_COORDINATES_WORLD
+                                         ? cw::TransientFrame::world
+                                         : cw::TransientFrame::contact);
+        transient->has_fields = false;
+        return CW_OK;
+    });
+}
+
 int cw_transient_jacobian(cw_transient* transient, double* jacobian, size_t len)
 {
     if (!transient) return CW_ERR_NULL_POINTER;

@@ -120,8 +120,8 @@ void TransientContact::move_geometry(double X)
 
 void TransientContact::set_frame(TransientFrame frame)
 {
+    move_geometry(0.0); // may throw: the frame is unchanged then
     world_ = frame == TransientFrame::world;
-    move_geometry(0.0);
     set_box();
     start_zero();
 }

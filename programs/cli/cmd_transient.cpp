@@ -38,6 +38,7 @@ std::vector<OptionSpec> transient_options()
             {"spin-offset", OptionKind::number, {}},
             {"prescribe", OptionKind::choice, {"creepages", "forces"}},
             {"start", OptionKind::choice, {"zero", "steady"}},
+            {"coordinates", OptionKind::choice, {"contact", "world"}},
             {"format", OptionKind::choice, {"text", "json"}},
             {"help", OptionKind::flag, {}}};
 }
@@ -211,6 +212,11 @@ int command_transient(int argc, char** argv, int first)
     char message[512] = "";
     const int made = cw_transient_create(&g.grid, &p, &h.t, message, sizeof message);
     if (made != CW_OK) library_failure(made, "creepwork transient", message);
+    if (o.text("coordinates", "contact") == "world") {
+        const int s = cw_transient_set_coordinates(h.t, CW_COORDINATES_WORLD);
+        if (s != CW_OK)
+            library_failure(s, "creepwork transient --coordinates world", cw_transient_last_error(h.t));
+    }
     const std::string steps = o.text("steps", "");
     if (o.text("start", "zero") == "steady") {
         const int s = cw_transient_start_steady(h.t, &rows.front().input, nullptr);

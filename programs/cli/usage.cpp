@@ -624,7 +624,10 @@ Transient rolling (doc/theory/transient.md): Kalker's exact theory with
 memory on the gap grid of GAP.csv (the file of creepwork solve --gap), in
 contact-fixed coordinates: the material moves through the contact from +x
 (the leading edge) by dq per step, and the tractions of each step start from
-those of the last. Every step is committed. SI units throughout.
+those of the last. Every step is committed. SI units throughout. With
+--coordinates world the grid stays with the material and the geometry moves
+over it by dq towards +x per step (the grid must hold the contact over the
+run).
 
 STEPS.csv: a header naming the columns, then one step per line ('#' lines
 and blank lines are skipped):
@@ -647,6 +650,8 @@ options:
   --tolerance T, --max-iterations K, --spin-offset S
                       as for creepwork solve --model exact
   --prescribe P       creepages (default) or forces
+  --coordinates C     contact (default: contact-fixed, CONTACT's T = 2) or
+                      world (world-fixed, T = 1: the normal problem per step)
   --start S           zero (default: zero tractions) or steady (the steady
                       rolling solution of the first line's creepages or
                       forces, then every line as a step)

@@ -22,6 +22,11 @@ TRANSIENT_FIELDS = {name: CONSTANTS["CW_FIELD_" + name.upper()]
 TRANSIENT_FIELDS["work"] = CONSTANTS["CW_FIELD_WORK_CONSISTENT"]
 
 
+#: Transient(coordinates=...) -> CW_COORDINATES_* id.
+_COORDINATES = {"contact": CONSTANTS["CW_COORDINATES_CONTACT"],
+                "world": CONSTANTS["CW_COORDINATES_WORLD"]}
+
+
 class Transient(Handle):
     """The transient contact of a gap grid (cw_transient): the normal problem
     is solved here, the state starts from zero tractions.
@@ -37,15 +42,23 @@ class Transient(Handle):
 
     grid: a dict of cw_grid fields with kind "gap"; the keywords are
     solve()'s (gap, N or approach, normal_method, G, nu, mu, tolerance,
-    max_iterations, spin_offset); the model is the exact one. step() is a
+    max_iterations, spin_offset); the model is the exact one. coordinates:
+    "contact" (contact-fixed, CONTACT's T = 2) or "world" (world-fixed, T =
+    1: the grid stays with the material, the geometry moves over it by dq
+    towards +x per step and the normal problem is solved per step). step() is a
     trial: repeated after rewind() it gives the same bits; commit() makes
     it the state; save() and restore() give and take the state."""
 
     _destroy = "cw_transient_destroy"
     _last_error = "cw_transient_last_error"
 
-    def __init__(self, grid: Any, params: Any = None, **keywords: Any) -> None:
+    def __init__(self, grid: Any, params: Any = None, coordinates: str = "contact",
+                 **keywords: Any) -> None:
         self._handle = ctypes.c_void_p()
+        if coordinates not in _COORDINATES:
+            raise _errors.BY_STATUS[CONSTANTS["CW_ERR_UNKNOWN_OPTION"]](
+                "Transient(): coordinates = %r is not one of %s"
+                % (coordinates, ", ".join(_COORDINATES)))
         keywords.setdefault("model", "exact")
         rec_grid = grid_record(grid, "Transient")
         keep = []  # arrays whose addresses the record holds, alive until create returns
@@ -56,6 +69,8 @@ class Transient(Handle):
         _errors.check(status, lambda: message.value)
         #: Cells along x and y.
         self.nx, self.ny = int(rec_grid["nx"]), int(rec_grid["ny"])
+        if coordinates != "contact":
+            self._check(lib.cw_transient_set_coordinates(self._live(), _COORDINATES[coordinates]))
         self._result = np.zeros((), DTYPES["cw_transient_result"])
         lib.cw_transient_result_init(address(self._result))
 

@@ -15,12 +15,12 @@ DX = 0.25e-3
 FX = -0.657 * 0.4013 * 0.4705
 
 
-def catt_to_cart():
+def catt_to_cart(**options):
     x = -4e-3 + DX * np.arange(34)
     y = -4e-3 + DX * np.arange(33)
     h = 2.963 * (x[None, :] ** 2 + y[:, None] ** 2)  # (ny, nx): C order is [i + nx j]
     grid = {"kind": "gap", "nx": 34, "ny": 33, "x0": -4e-3, "y0": -4e-3, "dx": DX, "dy": DX}
-    return creepwork.Transient(grid, gap=h, N=0.4705, G=1e6, nu=0.28, mu=0.4013)
+    return creepwork.Transient(grid, gap=h, N=0.4705, G=1e6, nu=0.28, mu=0.4013, **options)
 
 
 def reference():
@@ -103,3 +103,18 @@ def test_work_map_and_jacobian():
             t.rewind()
         fd = (side[0] - side[1]) / (2 * h)
         assert abs(fd / J[0, 0] - 1.0) <= 1e-6
+
+
+def test_world_coordinates():
+    """World-fixed: the shift and two steps (the contact moves two elements,
+    still on the grid) give the contact-fixed creepages to 1e-6; a bad
+    coordinates value names itself."""
+    with catt_to_cart() as c, catt_to_cart(coordinates="world") as w:
+        for k in range(3):
+            a = c.step(dq=0.0 if k == 0 else DX, Fx=FX)
+            b = w.step(dq=0.0 if k == 0 else DX, Fx=FX)
+            c.commit()
+            w.commit()
+            assert abs(b["xi_x"] / a["xi_x"] - 1.0) <= 1e-6
+    with pytest.raises(ValueError, match="coordinates"):
+        catt_to_cart(coordinates="ground")

@@ -274,6 +274,36 @@ static void work_field_and_jacobian(void** state)
     assert_int_equal(cw_transient_destroy(t), CW_OK);
 }
 
+/* World-fixed coordinates through the ABI: the shift and two steps of
+ * catt_to_cart (the contact moves two elements, still on the 34 x 33 grid)
+ * give the contact-fixed creepages to 1e-6 (the core test compares 57
+ * steps on 90 x 33); a bad coordinates value names itself. */
+static void world_coordinates(void** state)
+{
+    (void)state;
+    double h[CW_CATT_NX * CW_CATT_NY];
+    cw_transient* c = make(h);
+    cw_transient* w = make(h);
+    assert_int_equal(cw_transient_set_coordinates(w, 7), CW_ERR_UNKNOWN_OPTION);
+    assert_non_null(strstr(cw_transient_last_error(w), "coordinates"));
+    assert_int_equal(cw_transient_set_coordinates(NULL, CW_COORDINATES_WORLD), CW_ERR_NULL_POINTER);
+    assert_int_equal(cw_transient_set_coordinates(w, CW_COORDINATES_WORLD), CW_OK);
+    for (int k = 0; k < 3; ++k) {
+        const cw_transient_input s = force_step(k == 0 ? 0.0 : 0.25e-3, -0.657);
+        cw_transient_result a, b;
+        cw_transient_result_init(&a);
+        cw_transient_result_init(&b);
+        assert_int_equal(cw_transient_step(c, &s, &a), CW_OK);
+        assert_int_equal(cw_transient_step(w, &s, &b), CW_OK);
+        assert_int_equal(cw_transient_commit(c), CW_OK);
+        assert_int_equal(cw_transient_commit(w), CW_OK);
+        assert_true(fabs(b.xi_x / a.xi_x - 1.0) <= 1e-6);
+        assert_int_equal(b.n_slip, a.n_slip);
+    }
+    cw_transient_destroy(c);
+    cw_transient_destroy(w);
+}
+
 int main(int argc, char** argv)
 {
     const struct CMUnitTest tests[] = {
@@ -281,6 +311,7 @@ int main(int argc, char** argv)
         cmocka_unit_test(trial_repeats_bitwise),
         cmocka_unit_test(errors_name_their_input),
         cmocka_unit_test(work_field_and_jacobian),
+        cmocka_unit_test(world_coordinates),
     };
     return cw_run_tests(tests, argc > 1 ? argv[1] : NULL);
 }

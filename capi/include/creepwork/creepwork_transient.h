@@ -14,7 +14,9 @@
  * oscillations or an integrator's steps at the adhesion limit. Contact-fixed
  * coordinates (CONTACT's T = 2) on a gap grid (CW_GRID_GAP): the contact
  * stays on the grid and the material moves through it from +x (the leading
- * edge) to -x by dq per step; dq = 0 is a shift (Cattaneo's problem).
+ * edge) to -x by dq per step; dq = 0 is a shift (Cattaneo's problem). Or
+ * world-fixed (T = 1, cw_transient_set_coordinates): the grid stays with
+ * the material and the geometry moves over it.
  *
  * The handle holds a committed state (the tractions of the last committed
  * step). cw_transient_input computes one step from it without changing it
@@ -157,6 +159,22 @@ CW_API int cw_transient_get_state(const cw_transient* transient, int* out, size_
  * written. */
 #define CW_TRANSIENT_JACOBIAN_LEN 9
 CW_API int cw_transient_jacobian(cw_transient* transient, double* jacobian, size_t len);
+
+/* cw_transient_set_coordinates */
+#define CW_COORDINATES_CONTACT 0 /* contact-fixed (CONTACT's T = 2): the default */
+#define CW_COORDINATES_WORLD 1   /* world-fixed (T = 1): the grid stays with the material */
+
+/* Chooses the coordinates and starts from zero tractions with the geometry
+ * at its start. World-fixed (doc/theory/transient.md): the geometry (the
+ * gap) moves over the grid by dq towards +x per step, interpolated between
+ * the elements when dq is not a multiple of dx, and the normal problem is
+ * solved per step; the problem runs on the whole grid, which must hold the
+ * contact over the run; the spin's rigid slip turns about the geometry's
+ * moved origin. With dq = dx the two coordinates give the same steps to the
+ * solver's tolerance. Errors: CW_ERR_NULL_POINTER, CW_ERR_UNKNOWN_OPTION
+ * (coordinates), CW_ERR_NOT_CONVERGED (the normal problem). On error the
+ * handle is unchanged. */
+CW_API int cw_transient_set_coordinates(cw_transient* transient, int coordinates);
 
 /* Detailed message of the last error on this handle, as cw_solver_last_error. */
 CW_API const char* cw_transient_last_error(const cw_transient* transient);

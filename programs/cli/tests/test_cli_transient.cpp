@@ -171,6 +171,52 @@ void transient_bad_inputs_fail_cleanly(void**)
 
 } // namespace
 
+// --coordinates world: the JSON equals, bit for bit, a library handle set
+// to CW_COORDINATES_WORLD (the shift and two steps: the contact moves two
+// elements, still on the grid), and its creepage the contact-fixed run's
+// to 1e-6; a bad value names the option.
+void transient_world_coordinates(void**)
+{
+    std::vector<double> h;
+    cw_grid g;
+    const std::string gap = write_gap(h, g);
+    char line[96];
+    std::string steps = "dq_m,Fx\n";
+    for (int k = 0; k < 3; ++k) {
+        std::snprintf(line, sizeof line, "%.17g,%.17g\n", k == 0 ? 0.0 : kDx, kFx);
+        steps += line;
+    }
+    const std::string file = cwtest::scratch_file("steps_world.csv", steps);
+    const std::vector<std::string> args = {"transient", "--steps", file, "--gap", gap,
+                                           "--prescribe", "forces", "--format", "json"};
+    std::vector<std::string> world = args;
+    world.insert(world.end(), {"--coordinates", "world"});
+    const cwtest::Json jw = cwtest::parse_or_fail(cwtest::cli_ok(cwtest::with(world, kContact)).out);
+    const cwtest::Json jc = cwtest::parse_or_fail(cwtest::cli_ok(cwtest::with(args, kContact)).out);
+    assert_int_equal(jw.array.size(), 3);
+    cw_transient* t = library_handle(g, h);
+    assert_int_equal(cw_transient_set_coordinates(t, CW_COORDINATES_WORLD), CW_OK);
+    for (int k = 0; k < 3; ++k) {
+        cw_transient_input s;
+        cw_transient_input_init(&s);
+        s.dq = k == 0 ? 0.0 : kDx;
+        s.prescribe = CW_PRESCRIBE_FX;
+        s.Fx = kFx;
+        cw_transient_result lib;
+        cw_transient_result_init(&lib);
+        assert_int_equal(cw_transient_step(t, &s, &lib), CW_OK);
+        assert_int_equal(cw_transient_commit(t), CW_OK);
+        assert_true(jw.array[k].num("xi_x") == lib.xi_x);
+        assert_true(jw.array[k].num("W_step") == lib.W_step);
+        assert_true(std::fabs(jw.array[k].num("xi_x") / jc.array[k].num("xi_x") - 1.0) <= 1e-6);
+    }
+    cw_transient_destroy(t);
+    std::vector<std::string> bad = args;
+    bad.insert(bad.end(), {"--coordinates", "ground"});
+    cwtest::expect_refusal(cwtest::cli(cwtest::with(bad, kContact)), 2, "--coordinates",
+                           "a coordinates value that is not contact or world");
+}
+
 int main(int argc, char** argv)
 {
     if (!cwtest::set_up(argc, argv, "test_cli_transient", {"creepwork", "scratch"})) return 2;
@@ -178,6 +224,7 @@ int main(int argc, char** argv)
         cmocka_unit_test(transient_json_matches_library),
         cmocka_unit_test(transient_steady_start_and_creepages),
         cmocka_unit_test(transient_bad_inputs_fail_cleanly),
+        cmocka_unit_test(transient_world_coordinates),
     };
     return cw_run_tests(tests, cwtest::g_tools.test);
 }
