@@ -11,6 +11,7 @@
 #include "exact/exact_model.hpp"
 #include "exact/tangential_solve.hpp"
 #include "normal/gap_grid.hpp"
+#include "transient/ellipse_gap.hpp"
 
 namespace creepwork {
 namespace {
@@ -41,7 +42,25 @@ ContactInput own_gap(ContactInput in, const std::vector<double>& gap)
 
 } // namespace
 
+TransientContact::Form TransientContact::gap_form(const GridSpec& grid, const ContactInput& in)
+{
+    Form f{grid, in, {}};
+    if (grid.kind != GridKind::uniform) return f;
+    EllipseGap e = ellipse_gap(grid, in);
+    f.grid = e.grid;
+    f.h = std::move(e.h);
+    f.in.gap = f.h.data();
+    f.in.gap_len = f.h.size();
+    f.in.normal_load = NormalLoad::force;
+    return f;
+}
+
 TransientContact::TransientContact(const GridSpec& grid, const ContactInput& in)
+    : TransientContact(gap_form(grid, in))
+{
+}
+
+TransientContact::TransientContact(const GridSpec& grid, const ContactInput& in, OnGapGrid)
     : nx_(checked_gap_grid(grid).nx), ny_(grid.ny), n_(grid.nx * grid.ny), x0_(grid.x0),
       y0_(grid.y0), dx_(grid.dx), dy_(grid.dy),
       gap_(in.gap && in.gap_len >= static_cast<size_t>(n_) ? in.gap : nullptr,

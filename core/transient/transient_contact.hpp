@@ -107,9 +107,11 @@ public:
     // grid: a gap grid (normal/gap_grid.hpp); in: the contact -- its gap
     // (copied), normal force or approach, normal method, mu > 0, G, nu,
     // tolerance, max_iterations, spin_offset (creepages and the rolling
-    // direction are not read: the leading edge is at +x). Solves the normal
-    // problem. Starts from zero tractions. Throws Error naming a bad input,
-    // or Error(not_converged).
+    // direction are not read: the leading edge is at +x). Or the exact
+    // model's uniform grid and an elliptic contact (a, b, normal force;
+    // transient/ellipse_gap.hpp): its Hertzian gap on that grid. Solves the
+    // normal problem. Starts from zero tractions. Throws Error naming a bad
+    // input, or Error(not_converged).
     TransientContact(const GridSpec& grid, const ContactInput& in);
 
     // The committed state: zero tractions (the geometry back at its start).
@@ -175,6 +177,18 @@ public:
     void jacobian(double J[9]);
 
 private:
+    // The contact as a gap grid: the caller's, or an ellipse's (h owns the
+    // gap in.gap points to).
+    struct Form {
+        GridSpec grid;
+        ContactInput in;
+        std::vector<double> h;
+    };
+    static Form gap_form(const GridSpec& grid, const ContactInput& in);
+    struct OnGapGrid {};
+    explicit TransientContact(const Form& f) : TransientContact(f.grid, f.in, OnGapGrid{}) {}
+    TransientContact(const GridSpec& grid, const ContactInput& in, OnGapGrid);
+
     void validate(const TransientStepInput& s, bool steady) const;
     // The rigid displacement of creepages c (rolling) or shift c (dq = 0)
     // plus base_, into the solver's rigid slip.
