@@ -111,10 +111,11 @@ int cw_transient_create(const cw_grid* grid, const cw_params* params, cw_transie
         *transient = nullptr;
         require(params, "params");
         const cw::GridSpec spec = to_grid(grid);
-        if (spec.kind != cw::GridKind::gap)
+        if (spec.kind != cw::GridKind::gap && spec.kind != cw::GridKind::uniform)
             fail(CW_ERR_INVALID_INPUT, "grid->kind = " + std::to_string(grid->kind) +
                                            " is invalid for transient rolling: it runs on a "
-                                           "gap grid (CW_GRID_GAP)");
+                                           "gap grid (CW_GRID_GAP) or an ellipse's uniform "
+                                           "grid (CW_GRID_UNIFORM)");
         const cw::ContactInput in = to_input(params);
         if (in.model != cw::ModelKind::exact)
             fail(CW_ERR_INVALID_INPUT, "params->model = " + std::to_string(params->model) +

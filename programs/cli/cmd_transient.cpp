@@ -27,6 +27,11 @@ std::vector<OptionSpec> transient_options()
 {
     return {{"steps", OptionKind::text, {}},
             {"gap", OptionKind::text, {}},
+            {"a", OptionKind::number, {}},
+            {"b", OptionKind::number, {}},
+            {"nx", OptionKind::integer, {}},
+            {"ny", OptionKind::integer, {}},
+            {"box-scale", OptionKind::number, {}},
             {"N", OptionKind::number, {}},
             {"approach", OptionKind::number, {}},
             {"normal-method", OptionKind::choice, {"exact", "semi_hertz"}},
@@ -176,19 +181,42 @@ int command_transient(int argc, char** argv, int first)
 {
     ParsedOptions o;
     if (parse_or_help(transient_options(), argc, argv, first, usage_transient(), o)) return kExitOk;
-    for (const char* req : {"steps", "gap"})
-        if (!o.has(req))
-            throw usage_error(std::string("--") + req, "is required (see creepwork transient --help)");
+    if (!o.has("steps"))
+        throw usage_error("--steps", "is required (see creepwork transient --help)");
+    // The contact: a gap file, or an ellipse (--a --b) on the uniform grid.
+    const bool ellipse = o.has("a") || o.has("b");
+    if (ellipse == o.has("gap"))
+        throw usage_error("--gap", "give the contact's gap file --gap or its semi-axes --a and --b "
+                                   "(one of them)");
+    if (ellipse && !(o.has("a") && o.has("b")))
+        throw usage_error(o.has("a") ? "--b" : "--a", "is required with an elliptic contact "
+                                                      "(--a and --b)");
+    if (ellipse && o.has("approach"))
+        throw usage_error("--approach", "is for a gap file: an elliptic contact takes --N");
     if (o.has("N") == o.has("approach"))
         throw usage_error("--N", "give the normal force --N or the approach --approach (one of them)");
     const bool forces = o.text("prescribe", "creepages") == "forces";
     const std::vector<StepRow> rows = read_steps(o.text("steps", ""), forces);
-    GapFile g = read_gap_file(o.text("gap", ""));
+    GapFile g;
+    if (ellipse) {
+        g.grid = library_default_grid();
+        g.grid.kind = CW_GRID_UNIFORM;
+        g.grid.nx = o.integer("nx", g.grid.nx);
+        g.grid.ny = o.integer("ny", g.grid.ny);
+        g.grid.box_scale = o.number("box-scale", g.grid.box_scale);
+    } else {
+        g = read_gap_file(o.text("gap", ""));
+    }
 
     cw_params p = library_default_params();
     p.model = CW_MODEL_EXACT;
-    p.gap = g.h.data();
-    p.gap_len = g.h.size();
+    if (ellipse) {
+        p.a = o.number("a", 0.0);
+        p.b = o.number("b", 0.0);
+    } else {
+        p.gap = g.h.data();
+        p.gap_len = g.h.size();
+    }
     if (o.has("approach")) {
         p.normal_load = CW_NORMAL_APPROACH;
         p.approach = o.number("approach", 0.0);

@@ -619,6 +619,8 @@ const char* usage_transient()
 {
     return R"(usage: creepwork transient --steps STEPS.csv --gap GAP.csv (--N N | --approach A)
                           [options]
+       creepwork transient --steps STEPS.csv --a A --b B --N N [--nx NX --ny NY
+                          --box-scale S] [options]
 
 Transient rolling (doc/theory/transient.md): Kalker's exact theory with
 memory on the gap grid of GAP.csv (the file of creepwork solve --gap), in
@@ -641,7 +643,10 @@ With --prescribe forces:
 
 options:
   --steps FILE        the steps (required)
-  --gap FILE          the contact's gap: header x_m,y_m,h_m (required)
+  --gap FILE          the contact's gap: header x_m,y_m,h_m, or
+  --a A, --b B        an elliptic (Hertzian) contact's semi-axes [m] on the
+                      exact model's uniform grid --nx, --ny, --box-scale
+                      (as creepwork solve --model exact --grid uniform)
   --N N               normal force [N], or
   --approach A        the approach [m] from the gap's datum
   --normal-method M   exact (default) or semi_hertz

@@ -118,3 +118,18 @@ def test_world_coordinates():
             assert abs(b["xi_x"] / a["xi_x"] - 1.0) <= 1e-6
     with pytest.raises(ValueError, match="coordinates"):
         catt_to_cart(coordinates="ground")
+
+
+def test_ellipse_on_uniform_grid():
+    """An elliptic contact on the exact model's uniform grid: the steady
+    start equals the steady exact model (creepwork.Solver on the same grid)
+    to 1e-6 mu N."""
+    grid = {"kind": "uniform", "nx": 32, "ny": 24, "box_scale": 1.1}
+    contact = dict(a=4e-3, b=2.5e-3, N=0.4705, G=1e6, nu=0.28, mu=0.4013)
+    with creepwork.Transient(grid, **contact) as t:
+        r = t.start_steady(xi_x=1e-3, xi_y=5e-4)
+    with creepwork.Solver(grid) as s:
+        steady = s.solve(model="exact", xi_x=1e-3, xi_y=5e-4, **contact)
+    mu_n = 0.4013 * 0.4705
+    assert abs(r["Fx"] - steady.Fx) <= 1e-6 * mu_n
+    assert abs(r["Fy"] - steady.Fy) <= 1e-6 * mu_n

@@ -137,10 +137,15 @@ static void errors_name_their_input(void** state)
     assert_int_equal(cw_transient_create(&g, NULL, &t, message, sizeof message),
                      CW_ERR_NULL_POINTER);
     assert_null(t);
+    cw_grid strips = cw_test_grid(CW_GRID_KALKER_STRIPS, 20, 20, 1.0);
+    assert_int_equal(cw_transient_create(&strips, &p, &t, message, sizeof message),
+                     CW_ERR_INVALID_INPUT);
+    assert_non_null(strstr(message, "grid->kind"));
+    /* The uniform grid without semi-axes. */
     cw_grid uniform = cw_test_grid(CW_GRID_UNIFORM, 20, 20, 1.0);
     assert_int_equal(cw_transient_create(&uniform, &p, &t, message, sizeof message),
                      CW_ERR_INVALID_INPUT);
-    assert_non_null(strstr(message, "grid->kind"));
+    assert_null(t);
     p.model = CW_MODEL_FASTSIM;
     assert_int_equal(cw_transient_create(&g, &p, &t, message, sizeof message),
                      CW_ERR_INVALID_INPUT);
@@ -304,6 +309,56 @@ static void world_coordinates(void** state)
     cw_transient_destroy(w);
 }
 
+/* An elliptic contact on the uniform grid (a = 4 mm, b = 2.5 mm, 32 x 24,
+ * box scale 1.1): its steady start equals cw_solver's exact model on the
+ * same grid to 1e-6 mu N, and a shift and two steps at Fx run. */
+static void ellipse_on_uniform_grid(void** state)
+{
+    (void)state;
+    cw_grid g = cw_test_grid(CW_GRID_UNIFORM, 32, 24, 1.1);
+    cw_params p;
+    cw_params_init(&p);
+    p.model = CW_MODEL_EXACT;
+    p.a = 4e-3;
+    p.b = 2.5e-3;
+    p.normal_force = 0.4705;
+    p.G = 1e6;
+    p.nu = 0.28;
+    p.mu = 0.4013;
+    cw_transient* t = NULL;
+    char message[256] = "";
+    assert_int_equal(cw_transient_create(&g, &p, &t, message, sizeof message), CW_OK);
+    cw_transient_input s;
+    cw_transient_input_init(&s);
+    s.xi_x = 1e-3;
+    s.xi_y = 5e-4;
+    cw_transient_result r;
+    cw_transient_result_init(&r);
+    assert_int_equal(cw_transient_start_steady(t, &s, &r), CW_OK);
+    cw_solver* solver = cw_test_solver(CW_GRID_UNIFORM, 32, 24, 1.1);
+    p.xi_x = s.xi_x;
+    p.xi_y = s.xi_y;
+    cw_result steady;
+    cw_result_init(&steady);
+    assert_int_equal(cw_solver_solve(solver, &p, CW_SOLVE_FORCES, &steady), CW_OK);
+    const double muN = 0.4013 * 0.4705;
+    assert_true(fabs(r.Fx - steady.Fx) <= 1e-6 * muN);
+    assert_true(fabs(r.Fy - steady.Fy) <= 1e-6 * muN);
+    cw_solver_destroy(solver);
+    assert_int_equal(cw_transient_start_zero(t), CW_OK);
+    for (int k = 0; k < 3; ++k) {
+        cw_transient_input f;
+        cw_transient_input_init(&f);
+        f.dq = k == 0 ? 0.0 : 2.0 * 1.1 * 4e-3 / 32;
+        f.prescribe = CW_PRESCRIBE_FX;
+        f.Fx = -0.5 * muN;
+        assert_int_equal(cw_transient_step(t, &f, &r), CW_OK);
+        assert_int_equal(cw_transient_commit(t), CW_OK);
+        assert_true(fabs(r.Fx - f.Fx) <= 1e-8 * muN);
+    }
+    cw_transient_destroy(t);
+}
+
 int main(int argc, char** argv)
 {
     const struct CMUnitTest tests[] = {
@@ -312,6 +367,7 @@ int main(int argc, char** argv)
         cmocka_unit_test(errors_name_their_input),
         cmocka_unit_test(work_field_and_jacobian),
         cmocka_unit_test(world_coordinates),
+        cmocka_unit_test(ellipse_on_uniform_grid),
     };
     return cw_run_tests(tests, argc > 1 ? argv[1] : NULL);
 }

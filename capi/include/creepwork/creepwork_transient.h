@@ -14,7 +14,8 @@
  * oscillations or an integrator's steps at the adhesion limit. Contact-fixed
  * coordinates (CONTACT's T = 2) on a gap grid (CW_GRID_GAP): the contact
  * stays on the grid and the material moves through it from +x (the leading
- * edge) to -x by dq per step; dq = 0 is a shift (Cattaneo's problem). Or
+ * edge) to -x by dq per step; dq = 0 is a shift (Cattaneo's problem); or
+ * an elliptic contact on the uniform grid (CW_GRID_UNIFORM). Or
  * world-fixed (T = 1, cw_transient_set_coordinates): the grid stays with
  * the material and the geometry moves over it.
  *
@@ -76,8 +77,11 @@ CW_API int cw_transient_result_init(cw_transient_result* result);
 /* Creates the transient contact of grid (CW_GRID_GAP) and params
  * (model CW_MODEL_EXACT; the gap, normal load and method, mu > 0, G, nu,
  * tolerance, max_iterations and spin_offset are read, the creepages and
- * rolling_direction are not): solves the normal problem and starts from
- * zero tractions. All memory is allocated here. message (may be NULL)
+ * rolling_direction are not), or of an elliptic contact on the exact
+ * model's uniform grid (CW_GRID_UNIFORM: the semi-axes a, b and
+ * normal_force, as cw_solver's exact model reads them; it runs on that
+ * grid's elements with Hertz's undeformed distance of the ellipse): solves
+ * the normal problem and starts from zero tractions. All memory is allocated here. message (may be NULL)
  * receives an explanation of an error, truncated to message_len bytes.
  * Errors: CW_ERR_NULL_POINTER, CW_ERR_STRUCT_SIZE, CW_ERR_UNKNOWN_OPTION,
  * CW_ERR_GRID_OUT_OF_RANGE, CW_ERR_INVALID_INPUT (another grid kind or

@@ -217,6 +217,61 @@ void transient_world_coordinates(void**)
                            "a coordinates value that is not contact or world");
 }
 
+// An elliptic contact (--a --b on the uniform grid --nx --ny --box-scale):
+// the JSON equals, bit for bit, a library handle on CW_GRID_UNIFORM; a
+// contact given both ways, or half an ellipse, is refused naming the option.
+void transient_ellipse(void**)
+{
+    const std::string file =
+        cwtest::scratch_file("steps_ellipse.csv", "dq_m,xi_x\n0,1e-7\n2.75e-4,1e-3\n2.75e-4,1e-3\n");
+    const std::vector<std::string> args = {"transient", "--steps", file, "--a", "4e-3", "--b",
+                                           "2.5e-3", "--nx", "32", "--ny", "24", "--box-scale",
+                                           "1.1", "--format", "json"};
+    const cwtest::Json j = cwtest::parse_or_fail(cwtest::cli_ok(cwtest::with(args, kContact)).out);
+    assert_int_equal(j.array.size(), 3);
+    cw_grid g;
+    cw_grid_init(&g);
+    g.kind = CW_GRID_UNIFORM;
+    g.nx = 32;
+    g.ny = 24;
+    g.box_scale = 1.1;
+    cw_params p;
+    cw_params_init(&p);
+    p.model = CW_MODEL_EXACT;
+    p.a = 4e-3;
+    p.b = 2.5e-3;
+    p.normal_force = 0.4705;
+    p.G = 1e6;
+    p.nu = 0.28;
+    p.mu = 0.4013;
+    cw_transient* t = nullptr;
+    assert_int_equal(cw_transient_create(&g, &p, &t, nullptr, 0), CW_OK);
+    for (int k = 0; k < 3; ++k) {
+        cw_transient_input s;
+        cw_transient_input_init(&s);
+        s.dq = k == 0 ? 0.0 : 2.75e-4;
+        s.xi_x = k == 0 ? 1e-7 : 1e-3;
+        cw_transient_result lib;
+        cw_transient_result_init(&lib);
+        assert_int_equal(cw_transient_step(t, &s, &lib), CW_OK);
+        assert_int_equal(cw_transient_commit(t), CW_OK);
+        assert_true(j.array[k].num("Fx") == lib.Fx);
+        assert_true(j.array[k].num("W_step") == lib.W_step);
+    }
+    cw_transient_destroy(t);
+    std::vector<double> h;
+    cw_grid gg;
+    const std::string gap = write_gap(h, gg);
+    cwtest::expect_refusal(
+        cwtest::cli(cwtest::with({"transient", "--steps", file, "--gap", gap, "--a", "4e-3", "--b",
+                                  "2.5e-3"},
+                                 kContact)),
+        2, "--gap", "a contact given both as a gap file and as an ellipse");
+    cwtest::expect_refusal(
+        cwtest::cli(cwtest::with({"transient", "--steps", file, "--a", "4e-3"}, kContact)), 2,
+        "--b", "half an ellipse");
+}
+
 int main(int argc, char** argv)
 {
     if (!cwtest::set_up(argc, argv, "test_cli_transient", {"creepwork", "scratch"})) return 2;
@@ -225,6 +280,7 @@ int main(int argc, char** argv)
         cmocka_unit_test(transient_steady_start_and_creepages),
         cmocka_unit_test(transient_bad_inputs_fail_cleanly),
         cmocka_unit_test(transient_world_coordinates),
+        cmocka_unit_test(transient_ellipse),
     };
     return cw_run_tests(tests, cwtest::g_tools.test);
 }
