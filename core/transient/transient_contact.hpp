@@ -144,6 +144,13 @@ public:
 
     int nx() const { return nx_; }
     int ny() const { return ny_; }
+    double dx() const { return dx_; }
+    double dy() const { return dy_; }
+    double x0() const { return x0_; }
+    double y0() const { return y0_; }
+    // A step or steady start since the last start, frame change or restore:
+    // the fields and jacobian() are of it.
+    bool has_solution() const { return has_solution_; }
     long steps_committed() const { return steps_; }
     bool has_trial() const { return trial_valid_; }
     const TransientStepResult& last() const { return result_; }

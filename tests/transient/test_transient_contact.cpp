@@ -14,6 +14,7 @@
 #include "gap/gap_exact_model.hpp"
 #include "transient/transient_contact.hpp"
 #include "transient_cases.hpp"
+#include "wear/transient_wear.hpp"
 #include "test_support.h"
 
 using creepwork::TransientContact;
@@ -541,6 +542,62 @@ void ellipse_matches_gap(void**)
     assert_true(dF <= 1e-6);
 }
 
+// Wear over steps (USFD, energy-consistent work): catt_to_cart's work
+// densities are all in the law's mild regime, where the mass is k1 times the
+// work, so each step's mass is k1 W_step (to 1e-12, relative) through the
+// shift and 20 rolling steps (the shift adds none: no rolled distance), the
+// accumulated map sums to the accumulated mass, and ten steady steps from
+// the steady start wear 10 dx k1 W_macro of the steady exact model (1e-9).
+void wear_accumulates_over_steps(void**)
+{
+    cwtest::TransientCase c = cwtest::catt_to_cart();
+    TransientContact tc(c.grid, c.input);
+    creepwork::TransientWear wear(tc);
+    creepwork::wear::WearLaw law; // USFD
+    const double k1 = law.usfd.k1;
+    double worst = 0.0, total = 0.0;
+    for (int k = 0; k <= 20; ++k) {
+        const double dq = k == 0 ? 0.0 : c.grid.dx;
+        const TransientStepResult& r = tc.step(force_step(dq, -0.657, c));
+        const creepwork::wear::WearTotals t = wear.add(tc, dq, law);
+        tc.commit();
+        if (k == 0) {
+            assert_true(t.mass_per_pass == 0.0);
+            continue;
+        }
+        assert_true(t.regime_area[1] == 0.0 && t.regime_area[2] == 0.0);
+        worst = std::max(worst, std::fabs(t.mass_per_pass / (k1 * r.W_step) - 1.0));
+        total += k1 * r.W_step;
+    }
+    double map_sum = 0.0;
+    for (double m : wear.mass_map()) map_sum += m;
+    std::printf("wear: step mass / (k1 W_step) - 1 at most %.2e; accumulated %.6e kg, map sum "
+                "%.2e off\n",
+                worst, wear.mass(), map_sum / wear.mass() - 1.0);
+    assert_true(worst <= 1e-12);
+    assert_true(std::fabs(wear.mass() / total - 1.0) <= 1e-12);
+    assert_true(std::fabs(map_sum / wear.mass() - 1.0) <= 1e-12);
+    assert_int_equal(wear.steps(), 21);
+
+    const TransientStepResult steady = tc.start_steady(force_step(0.0, -0.657, c));
+    creepwork::GapExactModel model(c.grid);
+    creepwork::ContactInput in = c.input;
+    in.xi_x = steady.xi_x;
+    const creepwork::SolveTotals t = model.solve(in, creepwork::SolveMode::full);
+    wear.reset();
+    TransientStepInput s;
+    s.dq = c.grid.dx;
+    s.xi_x = steady.xi_x;
+    for (int k = 0; k < 10; ++k) {
+        tc.step(s);
+        wear.add(tc, s.dq, law);
+        tc.commit();
+    }
+    const double want = 10 * c.grid.dx * k1 * t.W_macro;
+    std::printf("ten steady steps: %.9e kg, 10 dx k1 W_macro %.9e kg\n", wear.mass(), want);
+    assert_true(std::fabs(wear.mass() / want - 1.0) <= 1e-9);
+}
+
 } // namespace
 
 int main()
@@ -556,6 +613,7 @@ int main()
         cmocka_unit_test(world_fixed_matches_contact_fixed),
         cmocka_unit_test(world_fixed_half_steps),
         cmocka_unit_test(ellipse_matches_gap),
+        cmocka_unit_test(wear_accumulates_over_steps),
     };
     return cmocka_run_group_tests(tests, nullptr, nullptr);
 }
