@@ -3,15 +3,19 @@
 
 #include <cmath>
 
+#include "capi_wear_law.hpp"
 #include "transient/transient_contact.hpp"
+#include "wear/transient_wear.hpp"
 
 struct cw_transient {
     explicit cw_transient(const cw::GridSpec& g, const cw::ContactInput& in)
-        : grid(g), contact(g, in)
+        : grid(g), contact(g, in), wear(contact)
     {
     }
     cw::GridSpec grid;
     cw::TransientContact contact;
+    cw::TransientWear wear;
+    double last_dq = 0.0; // of the last step (a steady start: dx)
     bool has_fields = false; // a step or steady start succeeded since the last start
     mutable std::string last_error; // the last call's message, const getters' included
 };
@@ -159,6 +163,7 @@ int cw_transient_start_steady(cw_transient* transient, const cw_transient_input*
             throw;
         }
         transient->has_fields = true;
+        transient->last_dq = transient->contact.dx();
         if (result) write_struct(result, r);
         return CW_OK;
     });
@@ -181,6 +186,7 @@ int cw_transient_step(cw_transient* transient, const cw_transient_input* step,
             throw;
         }
         transient->has_fields = true;
+        transient->last_dq = in.dq;
         if (result) write_struct(result, r);
         return CW_OK;
     });
@@ -330,6 +336,44 @@ int cw_transient_jacobian(cw_transient* transient, double* jacobian, size_t len)
         std::memcpy(jacobian, J, sizeof J);
         return CW_OK;
     });
+}
+
+int cw_transient_add_wear(cw_transient* transient, const cw_wear_params* params,
+                          double* step_mass)
+{
+    if (!transient) return CW_ERR_NULL_POINTER;
+    return guarded(&transient->last_error, [&] {
+        require(params, "params");
+        const creepwork::wear::WearLaw law = to_wear_law(params);
+        require_fields(transient);
+        const double mass = transient->wear.add(transient->contact, transient->last_dq, law)
+                                .mass_per_pass;
+        if (step_mass) *step_mass = mass;
+        return CW_OK;
+    });
+}
+
+int cw_transient_get_wear(const cw_transient* transient, double* mass_map, size_t len,
+                          double* mass)
+{
+    if (!transient) return CW_ERR_NULL_POINTER;
+    return guarded(&transient->last_error, [&] {
+        const std::vector<double>& m = transient->wear.mass_map();
+        if (mass_map) {
+            require_length(len, m.size(), "mass_map");
+            std::copy(m.begin(), m.end(), mass_map);
+        }
+        if (mass) *mass = transient->wear.mass();
+        return CW_OK;
+    });
+}
+
+int cw_transient_reset_wear(cw_transient* transient)
+{
+    if (!transient) return CW_ERR_NULL_POINTER;
+    transient->wear.reset();
+    transient->last_error.clear();
+    return CW_OK;
 }
 
 const char* cw_transient_last_error(const cw_transient* transient)

@@ -359,6 +359,50 @@ static void ellipse_on_uniform_grid(void** state)
     cw_transient_destroy(t);
 }
 
+/* Wear over the shift and five steps of catt_to_cart by the USFD law (all
+ * in its mild regime, mass = k1 x work): each step's mass is k1 W_step to
+ * 1e-12, the shift's zero, the accumulated map sums to the total; errors. */
+static void wear_over_steps(void** state)
+{
+    (void)state;
+    double h[CW_CATT_NX * CW_CATT_NY];
+    cw_transient* t = make(h);
+    cw_wear_params law;
+    cw_wear_params_init(&law);
+    double mass = -1.0, total = 0.0;
+    assert_int_equal(cw_transient_add_wear(t, &law, &mass), CW_ERR_NO_SOLUTION);
+    for (int k = 0; k < 6; ++k) {
+        const cw_transient_input s = force_step(k == 0 ? 0.0 : 0.25e-3, -0.657);
+        cw_transient_result r;
+        cw_transient_result_init(&r);
+        assert_int_equal(cw_transient_step(t, &s, &r), CW_OK);
+        assert_int_equal(cw_transient_commit(t), CW_OK);
+        assert_int_equal(cw_transient_add_wear(t, &law, &mass), CW_OK);
+        if (k == 0)
+            assert_true(mass == 0.0);
+        else
+            assert_true(fabs(mass / (law.usfd_k1 * r.W_step) - 1.0) <= 1e-12);
+        total += mass;
+    }
+    const size_t n = (size_t)CW_CATT_NX * CW_CATT_NY;
+    double* map = malloc(n * sizeof(double));
+    double got = 0.0, sum = 0.0;
+    assert_int_equal(cw_transient_get_wear(t, map, n - 1, &got), CW_ERR_BUFFER_TOO_SMALL);
+    assert_int_equal(cw_transient_get_wear(t, map, n, &got), CW_OK);
+    for (size_t k = 0; k < n; ++k) sum += map[k];
+    free(map);
+    assert_true(fabs(got / total - 1.0) <= 1e-12);
+    assert_true(fabs(sum / total - 1.0) <= 1e-12);
+    law.law = 9;
+    assert_int_equal(cw_transient_add_wear(t, &law, NULL), CW_ERR_UNKNOWN_OPTION);
+    assert_non_null(strstr(cw_transient_last_error(t), "law"));
+    assert_int_equal(cw_transient_add_wear(t, NULL, NULL), CW_ERR_NULL_POINTER);
+    assert_int_equal(cw_transient_reset_wear(t), CW_OK);
+    assert_int_equal(cw_transient_get_wear(t, NULL, 0, &got), CW_OK);
+    assert_true(got == 0.0);
+    cw_transient_destroy(t);
+}
+
 int main(int argc, char** argv)
 {
     const struct CMUnitTest tests[] = {
@@ -368,6 +412,7 @@ int main(int argc, char** argv)
         cmocka_unit_test(work_field_and_jacobian),
         cmocka_unit_test(world_coordinates),
         cmocka_unit_test(ellipse_on_uniform_grid),
+        cmocka_unit_test(wear_over_steps),
     };
     return cw_run_tests(tests, argc > 1 ? argv[1] : NULL);
 }

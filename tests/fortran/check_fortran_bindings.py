@@ -42,7 +42,8 @@ NOT_WRAPPED.update({name: "transient rolling: a C ABI door only (no Fortran type
                         "cw_transient_step", "cw_transient_commit", "cw_transient_rewind",
                         "cw_transient_state_size", "cw_transient_save", "cw_transient_restore",
                         "cw_transient_get_field", "cw_transient_get_state", "cw_transient_last_error",
-                        "cw_transient_jacobian", "cw_transient_set_coordinates"]})
+                        "cw_transient_jacobian", "cw_transient_set_coordinates",
+                        "cw_transient_add_wear", "cw_transient_get_wear", "cw_transient_reset_wear"]})
 
 
 def count_args(args):

@@ -180,6 +180,29 @@ CW_API int cw_transient_jacobian(cw_transient* transient, double* jacobian, size
  * handle is unchanged. */
 CW_API int cw_transient_set_coordinates(cw_transient* transient, int coordinates);
 
+/* Wear over the steps (doc/theory/transient.md): adds the wear of the last
+ * step (or steady start) to the handle's accumulated wear, by the law of
+ * params (cw_wear_params; its pass_length is not read): each element's
+ * frictional work of the step (CW_FIELD_WORK_CONSISTENT) per rolled
+ * distance dq of the step, the mass it loses in the step its rate times
+ * its area times dq. A shift (dq = 0) adds none. *step_mass (may be NULL)
+ * receives the step's mass [kg]. Add each step once, after it is
+ * committed. Errors: CW_ERR_NULL_POINTER (params), CW_ERR_STRUCT_SIZE,
+ * CW_ERR_UNKNOWN_OPTION, CW_ERR_INVALID_INPUT (a bad law), CW_ERR_NO_SOLUTION.
+ * On error nothing is added. */
+CW_API int cw_transient_add_wear(cw_transient* transient, const cw_wear_params* params,
+                                 double* step_mass);
+
+/* The accumulated wear: the mass per element [kg] at [i + j*nx] into
+ * mass_map (may be NULL; len >= nx*ny) and the total [kg] into *mass (may
+ * be NULL). The grid holds contact-fixed or world-fixed (material) places as
+ * the coordinates are. Errors: CW_ERR_NULL_POINTER, CW_ERR_BUFFER_TOO_SMALL. */
+CW_API int cw_transient_get_wear(const cw_transient* transient, double* mass_map, size_t len,
+                                 double* mass);
+
+/* Sets the accumulated wear to zero. Errors: CW_ERR_NULL_POINTER. */
+CW_API int cw_transient_reset_wear(cw_transient* transient);
+
 /* Detailed message of the last error on this handle, as cw_solver_last_error. */
 CW_API const char* cw_transient_last_error(const cw_transient* transient);
 
