@@ -225,7 +225,8 @@ static void errors_name_their_input(void** state)
 }
 
 /* After the shift and three steps of catt_to_cart: the work field adds up
- * to W_step (1e-12, relative) and W_step >= W_slip; the Jacobian of a step
+ * to W_step (1e-12, relative) and W_step >= W_slip (a small shift that
+ * sticks: W_step = 0 to 1e-9 of the rigid work); the Jacobian of a step
  * at prescribed Fx (row xi_x, column Fx) equals a central difference of two
  * trials (h = 1e-5 mu N) to 1e-6, and so does d Fx / d xi_x of a step at
  * the creepage found (its inverse); its errors. */
@@ -276,6 +277,15 @@ static void work_field_and_jacobian(void** state)
     assert_int_equal(cw_transient_step(t, &c, &r), CW_OK);
     assert_int_equal(cw_transient_jacobian(t, K, 9), CW_OK);
     assert_true(fabs(K[0] * J[0] - 1.0) <= 1e-6);
+    assert_int_equal(cw_transient_destroy(t), CW_OK);
+
+    /* A small shift from zero sticks everywhere: the rigid work goes into
+     * elastic energy, W_step is 0 to 1e-9 of it. */
+    t = make(h);
+    const cw_transient_input small = force_step(0.0, -0.01);
+    assert_int_equal(cw_transient_step(t, &small, &r), CW_OK);
+    assert_int_equal(r.n_slip, 0);
+    assert_true(fabs(r.W_step) <= 1e-9 * (-0.5 * r.Fx * r.xi_x));
     assert_int_equal(cw_transient_destroy(t), CW_OK);
 }
 

@@ -242,6 +242,18 @@ void work_map_sums_to_w_step(void**)
     }
     std::printf("work map: largest |sum / W_step - 1| %.2e\n", worst);
     assert_true(worst <= 1e-12);
+
+    // A small shift from zero tractions (Fx = -0.01 mu N) sticks everywhere:
+    // the rigid work -1/2 Fx delta goes into elastic energy and nothing is
+    // dissipated: |W_step| <= 1e-9 of the rigid work (measured 1.4e-11).
+    TransientContact fresh(c.grid, c.input);
+    const TransientStepResult& r = fresh.step(force_step(0.0, -0.01, c));
+    const double rigid = -0.5 * r.Fx * r.xi_x;
+    std::printf("small shift: rigid work %.3e J, W_step %.3e J, W_slip %.3e J\n", rigid, r.W_step,
+                r.W_slip);
+    assert_int_equal(r.n_slip, 0);
+    assert_true(r.W_slip == 0.0);
+    assert_true(rigid > 0.0 && std::fabs(r.W_step) <= 1e-9 * rigid);
 }
 
 // In steady state (a step of dq = dx at the steady creepage of Fx = -0.657
