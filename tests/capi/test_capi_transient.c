@@ -325,16 +325,8 @@ static void world_coordinates(void** state)
 static void ellipse_on_uniform_grid(void** state)
 {
     (void)state;
-    cw_grid g = cw_test_grid(CW_GRID_UNIFORM, 32, 24, 1.1);
     cw_params p;
-    cw_params_init(&p);
-    p.model = CW_MODEL_EXACT;
-    p.a = 4e-3;
-    p.b = 2.5e-3;
-    p.normal_force = 0.4705;
-    p.G = 1e6;
-    p.nu = 0.28;
-    p.mu = 0.4013;
+    const cw_grid g = cw_test_transient_ellipse(&p);
     cw_transient* t = NULL;
     char message[256] = "";
     assert_int_equal(cw_transient_create(&g, &p, &t, message, sizeof message), CW_OK);

@@ -14,6 +14,7 @@
 
 #include <creepwork/creepwork.h>
 
+#include "capi_fixtures.h"
 #include "cli_checks.hpp"
 // Last: cmocka defines macros (fail, skip) that clash with the C++ library.
 #include "test_support.h"
@@ -62,6 +63,21 @@ cw_transient* library_handle(const cw_grid& g, const std::vector<double>& h)
     return t;
 }
 
+// Step k of catt_to_cart at Fx (k = 0: the shift; then dq = dx), committed.
+cw_transient_result force_step(cw_transient* t, int k)
+{
+    cw_transient_input s;
+    cw_transient_input_init(&s);
+    s.dq = k == 0 ? 0.0 : kDx;
+    s.prescribe = CW_PRESCRIBE_FX;
+    s.Fx = kFx;
+    cw_transient_result r;
+    cw_transient_result_init(&r);
+    assert_int_equal(cw_transient_step(t, &s, &r), CW_OK);
+    assert_int_equal(cw_transient_commit(t), CW_OK);
+    return r;
+}
+
 const std::vector<std::string> kContact = {"--N", "0.4705", "--G", "1e6", "--nu", "0.28",
                                            "--mu", "0.4013"};
 
@@ -84,15 +100,7 @@ void transient_json_matches_library(void**)
     assert_int_equal(j.array.size(), 6);
     cw_transient* t = library_handle(g, h);
     for (int k = 0; k < 6; ++k) {
-        cw_transient_input s;
-        cw_transient_input_init(&s);
-        s.dq = k == 0 ? 0.0 : kDx;
-        s.prescribe = CW_PRESCRIBE_FX;
-        s.Fx = kFx;
-        cw_transient_result lib;
-        cw_transient_result_init(&lib);
-        assert_int_equal(cw_transient_step(t, &s, &lib), CW_OK);
-        assert_int_equal(cw_transient_commit(t), CW_OK);
+        const cw_transient_result lib = force_step(t, k);
         const cwtest::Json& o = j.array[k];
         // The JSON prints each number's shortest exact text: the same bits.
         assert_true(o.num("xi_x") == lib.xi_x);
@@ -197,15 +205,7 @@ void transient_world_coordinates(void**)
     cw_transient* t = library_handle(g, h);
     assert_int_equal(cw_transient_set_coordinates(t, CW_COORDINATES_WORLD), CW_OK);
     for (int k = 0; k < 3; ++k) {
-        cw_transient_input s;
-        cw_transient_input_init(&s);
-        s.dq = k == 0 ? 0.0 : kDx;
-        s.prescribe = CW_PRESCRIBE_FX;
-        s.Fx = kFx;
-        cw_transient_result lib;
-        cw_transient_result_init(&lib);
-        assert_int_equal(cw_transient_step(t, &s, &lib), CW_OK);
-        assert_int_equal(cw_transient_commit(t), CW_OK);
+        const cw_transient_result lib = force_step(t, k);
         assert_true(jw.array[k].num("xi_x") == lib.xi_x);
         assert_true(jw.array[k].num("W_step") == lib.W_step);
         assert_true(std::fabs(jw.array[k].num("xi_x") / jc.array[k].num("xi_x") - 1.0) <= 1e-6);
@@ -229,21 +229,8 @@ void transient_ellipse(void**)
                                            "1.1", "--format", "json"};
     const cwtest::Json j = cwtest::parse_or_fail(cwtest::cli_ok(cwtest::with(args, kContact)).out);
     assert_int_equal(j.array.size(), 3);
-    cw_grid g;
-    cw_grid_init(&g);
-    g.kind = CW_GRID_UNIFORM;
-    g.nx = 32;
-    g.ny = 24;
-    g.box_scale = 1.1;
     cw_params p;
-    cw_params_init(&p);
-    p.model = CW_MODEL_EXACT;
-    p.a = 4e-3;
-    p.b = 2.5e-3;
-    p.normal_force = 0.4705;
-    p.G = 1e6;
-    p.nu = 0.28;
-    p.mu = 0.4013;
+    const cw_grid g = cw_test_transient_ellipse(&p);
     cw_transient* t = nullptr;
     assert_int_equal(cw_transient_create(&g, &p, &t, nullptr, 0), CW_OK);
     for (int k = 0; k < 3; ++k) {
