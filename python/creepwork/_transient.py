@@ -10,7 +10,7 @@ import numpy as np
 from . import _errors
 from ._handle import Handle
 from ._library import CONSTANTS, DTYPES, address, lib
-from ._params import grid_record
+from ._params import WEAR_PARAMS, grid_record
 from ._solver import _params_record
 
 _MESSAGE_LEN = 512
@@ -155,6 +155,30 @@ class Transient(Handle):
         out = np.empty((3, 3))
         self._check(lib.cw_transient_jacobian(self._live(), address(out), out.size))
         return out
+
+    def add_wear(self, **law: Any) -> float:
+        """Adds the wear of the last step to the accumulated wear, by the law
+        the keywords give (the fields of cw_wear_params; pass_length is not
+        read): the step's work map per rolled distance dq through the law,
+        the mass of an element its rate times its area times dq (a shift
+        adds none). Returns the step's mass [kg]. Add each step once."""
+        rec = WEAR_PARAMS.record(law, "add_wear")
+        mass = ctypes.c_double()
+        self._check(lib.cw_transient_add_wear(self._live(), address(rec), ctypes.byref(mass)))
+        return mass.value
+
+    def wear(self) -> Dict[str, Any]:
+        """The accumulated wear: {"mass": total [kg], "mass_map": (ny, nx)
+        array [kg]}."""
+        out = np.empty((self.ny, self.nx))
+        mass = ctypes.c_double()
+        self._check(lib.cw_transient_get_wear(self._live(), address(out), out.size,
+                                              ctypes.byref(mass)))
+        return {"mass": mass.value, "mass_map": out}
+
+    def reset_wear(self) -> None:
+        """Sets the accumulated wear to zero."""
+        self._check(lib.cw_transient_reset_wear(self._live()))
 
     def state(self) -> np.ndarray:
         """The element states of the last step, an int (ny, nx) array (0

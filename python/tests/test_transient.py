@@ -133,3 +133,28 @@ def test_ellipse_on_uniform_grid():
     mu_n = 0.4013 * 0.4705
     assert abs(r["Fx"] - steady.Fx) <= 1e-6 * mu_n
     assert abs(r["Fy"] - steady.Fy) <= 1e-6 * mu_n
+
+
+def test_wear_over_steps():
+    """USFD wear over the shift and four steps (all in the mild regime, mass
+    = k1 x work): each step's mass is k1 W_step (1e-12), the shift's zero;
+    the accumulated map sums to the total; a bad law names itself."""
+    k1 = 5.3e-9
+    with catt_to_cart() as t:
+        total = 0.0
+        for k in range(5):
+            r = t.step(dq=0.0 if k == 0 else DX, Fx=FX)
+            t.commit()
+            m = t.add_wear(law=0)
+            if k == 0:
+                assert m == 0.0
+            else:
+                assert abs(m / (k1 * r["W_step"]) - 1.0) <= 1e-12
+            total += m
+        w = t.wear()
+        assert abs(w["mass"] / total - 1.0) <= 1e-12
+        assert abs(w["mass_map"].sum() / total - 1.0) <= 1e-12
+        with pytest.raises(ValueError, match="law"):
+            t.add_wear(law=9)
+        t.reset_wear()
+        assert t.wear()["mass"] == 0.0
