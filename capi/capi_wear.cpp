@@ -7,6 +7,7 @@
 #include <cmath>
 #include <memory>
 
+#include "capi_wear_law.hpp"
 #include "wear/wear_map.hpp"
 #include "wear/wear_profile.hpp"
 
@@ -54,6 +55,8 @@ cw_wear_params wear_defaults()
     return p;
 }
 
+} // namespace
+
 cww::WearLaw to_wear_law(const cw_wear_params* caller)
 {
     const cw_wear_params p = read_struct(caller, wear_defaults(), "params");
@@ -77,6 +80,8 @@ cww::WearLaw to_wear_law(const cw_wear_params* caller)
     cww::validate(w); // names the parameter
     return w;
 }
+
+namespace {
 
 bool same_grid(const cw::GridSpec& a, const cw::GridSpec& b)
 {
