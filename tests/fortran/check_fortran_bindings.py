@@ -33,10 +33,6 @@ NOT_WRAPPED = {
                                  "add_wear, and a borrowed solver would need a handle type that is never "
                                  "destroyed",
 }
-NOT_WRAPPED.update({name: "transient rolling: not yet in module creepwork"
-                    for name in ["cw_transient_jacobian", "cw_transient_set_coordinates",
-                                 "cw_transient_add_wear", "cw_transient_get_wear",
-                                 "cw_transient_reset_wear"]})
 
 
 def count_args(args):
