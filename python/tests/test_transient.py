@@ -180,3 +180,23 @@ def test_wear_over_steps():
             t.add_wear(law=9)
         t.reset_wear()
         assert t.wear()["mass"] == 0.0
+
+
+def test_fastsim_takes_work_and_wear_refuses_world_and_jacobian():
+    """model="fastsim": the work field is its slip's dissipation, summing to
+    W_step (1e-12) with W_slip = W_step (an explicit step); each step's USFD
+    wear (mild regime) is k1 W_step (1e-12). World-fixed coordinates and the
+    step Jacobian are the exact model's: refused, naming CW_MODEL_FASTSIM."""
+    with pytest.raises(creepwork.InvalidInputError, match="CW_MODEL_FASTSIM"):
+        catt_to_cart(model="fastsim", coordinates="world")
+    with catt_to_cart(model="fastsim") as t:
+        for k in range(4):
+            r = t.step(dq=0.0 if k == 0 else DX, Fx=FX)
+            t.commit()
+            assert r["W_slip"] == r["W_step"] > 0.0
+            assert abs(t.field("work").sum() / r["W_step"] - 1.0) <= 1e-12
+            m = t.add_wear(law=0)
+            if k > 0:
+                assert abs(m / (5.3e-9 * r["W_step"]) - 1.0) <= 1e-12
+        with pytest.raises(creepwork.InvalidInputError, match="CW_MODEL_FASTSIM"):
+            t.jacobian()
