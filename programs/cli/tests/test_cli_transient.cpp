@@ -179,6 +179,10 @@ void transient_bad_inputs_fail_cleanly(void**)
                            "no load");
     cwtest::expect_refusal(cwtest::cli({"transient", "--gap", gap, "--N", "1"}), 2, "--steps",
                            "no steps file");
+    // World-fixed coordinates are the exact model's: FASTSIM's are refused.
+    cwtest::expect_refusal(run("dq_m,xi_x\n0,1e-6\n", {"--model", "fastsim", "--coordinates",
+                                                      "world"}),
+                           2, "CW_MODEL_FASTSIM", "world-fixed FASTSIM");
 }
 
 
