@@ -496,6 +496,19 @@ TRANSIENT_FASTSIM_MUTANTS = [
          old="            const double L1 = rolling ? P.L1 : P.Ls, L2 = rolling ? P.L2 : P.Ls;",
          new="            const double L1 = P.L1, L2 = P.L2;",
          tests=TRANSIENT_FASTSIM, require=TRANSIENT_FASTSIM),
+    dict(id="transient-fastsim-work-area", what="FASTSIM's work field misses the element's area",
+         file="core/transient/transient_fastsim.cpp",
+         old="        out[k] = state_[k] == 2 ? -area * (p_[k].real() * slip_[k].real() +",
+         new="        out[k] = state_[k] == 2 ? -(p_[k].real() * slip_[k].real() +",
+         tests=["test_capi_transient", "python_test_transient"],
+         require=["test_capi_transient", "python_test_transient"]),
+    dict(id="transient-fastsim-world-accepted", what="FASTSIM takes world-fixed coordinates it cannot run",
+         file="core/transient/transient_model.cpp",
+         old="    if (frame == TransientFrame::world)",
+         new="    if (false && frame == TransientFrame::world)",
+         tests=["test_capi_transient", "python_test_transient", "test_fortran_transient",
+                "octave_test_transient", "cli_transient_bad_inputs_fail_cleanly"],
+         require=["test_capi_transient", "python_test_transient"]),
 ]
 MUTANTS += TRANSIENT_FASTSIM_MUTANTS
 # ------------------------------------------------------ end transient rolling
