@@ -3,15 +3,19 @@
 
 #include <cmath>
 
+#include "capi_wear_law.hpp"
 #include "transient/transient_model.hpp"
+#include "wear/transient_wear.hpp"
 
 struct cw_transient {
     explicit cw_transient(const cw::GridSpec& g, const cw::ContactInput& in)
-        : grid(g), contact(g, in)
+        : grid(g), contact(g, in), wear(contact)
     {
     }
     cw::GridSpec grid;
     cw::TransientModel contact; // the exact model's or FASTSIM's
+    cw::TransientWear wear;
+    double last_dq = 0.0; // of the last step (a steady start: dx)
     bool has_fields = false; // a step or steady start succeeded since the last start
     mutable std::string last_error; // the last call's message, const getters' included
 };
@@ -64,6 +68,7 @@ cw_transient_result to_result(const cw::TransientStepResult& r, long steps)
     out.force_iterations = r.force_iterations;
     out.residual = r.residual;
     out.steps_committed = steps;
+    out.W_slip = r.W_slip;
     return out;
 }
 
@@ -71,7 +76,7 @@ cw_transient_result to_result(const cw::TransientStepResult& r, long steps)
 // leaves the library).
 void require_finite_result(const cw_transient_result& r)
 {
-    const double v[] = {r.xi_x, r.xi_y, r.phi, r.Fx, r.Fy, r.Mz, r.W_step, r.residual};
+    const double v[] = {r.xi_x, r.xi_y, r.phi, r.Fx, r.Fy, r.Mz, r.W_step, r.W_slip, r.residual};
     for (double x : v)
         if (!std::isfinite(x)) fail(CW_ERR_NUMERIC, "the step's result is not finite: inputs too extreme");
 }
@@ -110,10 +115,11 @@ int cw_transient_create(const cw_grid* grid, const cw_params* params, cw_transie
         *transient = nullptr;
         require(params, "params");
         const cw::GridSpec spec = to_grid(grid);
-        if (spec.kind != cw::GridKind::gap)
+        if (spec.kind != cw::GridKind::gap && spec.kind != cw::GridKind::uniform)
             fail(CW_ERR_INVALID_INPUT, "grid->kind = " + std::to_string(grid->kind) +
                                            " is invalid for transient rolling: it runs on a "
-                                           "gap grid (CW_GRID_GAP)");
+                                           "gap grid (CW_GRID_GAP) or an ellipse's uniform "
+                                           "grid (CW_GRID_UNIFORM)");
         const cw::ContactInput in = to_input(params);
         if (in.model != cw::ModelKind::exact && in.model != cw::ModelKind::fastsim)
             fail(CW_ERR_INVALID_INPUT, "params->model = " + std::to_string(params->model) +
@@ -157,6 +163,7 @@ int cw_transient_start_steady(cw_transient* transient, const cw_transient_input*
             throw;
         }
         transient->has_fields = true;
+        transient->last_dq = transient->contact.dx();
         if (result) write_struct(result, r);
         return CW_OK;
     });
@@ -179,6 +186,7 @@ int cw_transient_step(cw_transient* transient, const cw_transient_input* step,
             throw;
         }
         transient->has_fields = true;
+        transient->last_dq = in.dq;
         if (result) write_struct(result, r);
         return CW_OK;
     });
@@ -257,12 +265,13 @@ int cw_transient_get_field(const cw_transient* transient, int field, double* out
         case CW_FIELD_PX:
         case CW_FIELD_PY:
         case CW_FIELD_SX:
-        case CW_FIELD_SY: break;
+        case CW_FIELD_SY:
+        case CW_FIELD_WORK_CONSISTENT: break;
         default:
             fail(CW_ERR_UNKNOWN_OPTION,
                  "field = " + std::to_string(field) +
                      " is not a field of transient rolling (CW_FIELD_X, _Y, _PZ, _PX, _PY, "
-                     "_SX, _SY)");
+                     "_SX, _SY, _WORK_CONSISTENT)");
         }
         require_length(len, n, "out");
         if (field == CW_FIELD_X || field == CW_FIELD_Y) {
@@ -272,6 +281,8 @@ int cw_transient_get_field(const cw_transient* transient, int field, double* out
                         field == CW_FIELD_X ? g.x0 + i * g.dx : g.y0 + j * g.dy;
         } else if (field == CW_FIELD_PZ) {
             c.copy_pressure(out);
+        } else if (field == CW_FIELD_WORK_CONSISTENT) {
+            c.copy_work(out);
         } else if (field == CW_FIELD_PX || field == CW_FIELD_PY) {
             c.copy_traction(field == CW_FIELD_PX ? out : nullptr,
                             field == CW_FIELD_PY ? out : nullptr);
@@ -292,6 +303,77 @@ int cw_transient_get_state(const cw_transient* transient, int* out, size_t len)
         transient->contact.copy_state(out);
         return CW_OK;
     });
+}
+
+int cw_transient_set_coordinates(cw_transient* transient, int coordinates)
+{
+    if (!transient) return CW_ERR_NULL_POINTER;
+    return guarded(&transient->last_error, [&] {
+        if (coordinates != CW_COORDINATES_CONTACT && coordinates != CW_COORDINATES_WORLD)
+            fail(CW_ERR_UNKNOWN_OPTION, "coordinates = " + std::to_string(coordinates) +
+                                            " is not CW_COORDINATES_CONTACT or "
+                                            "CW_COORDINATES_WORLD");
+        transient->contact.set_frame(coordinates == CW_COORDINATES_WORLD
+                                         ? cw::TransientFrame::world
+                                         : cw::TransientFrame::contact);
+        transient->has_fields = false;
+        return CW_OK;
+    });
+}
+
+int cw_transient_jacobian(cw_transient* transient, double* jacobian, size_t len)
+{
+    if (!transient) return CW_ERR_NULL_POINTER;
+    return guarded(&transient->last_error, [&] {
+        require(jacobian, "jacobian");
+        require_fields(transient);
+        require_length(len, CW_TRANSIENT_JACOBIAN_LEN, "jacobian");
+        double J[CW_TRANSIENT_JACOBIAN_LEN];
+        transient->contact.jacobian(J);
+        for (double v : J)
+            if (!std::isfinite(v))
+                fail(CW_ERR_NUMERIC, "the step's Jacobian is not finite: inputs too extreme");
+        std::memcpy(jacobian, J, sizeof J);
+        return CW_OK;
+    });
+}
+
+int cw_transient_add_wear(cw_transient* transient, const cw_wear_params* params,
+                          double* step_mass)
+{
+    if (!transient) return CW_ERR_NULL_POINTER;
+    return guarded(&transient->last_error, [&] {
+        require(params, "params");
+        const creepwork::wear::WearLaw law = to_wear_law(params, -1.0);
+        require_fields(transient);
+        const double mass = transient->wear.add(transient->contact, transient->last_dq, law)
+                                .mass_per_pass;
+        if (step_mass) *step_mass = mass;
+        return CW_OK;
+    });
+}
+
+int cw_transient_get_wear(const cw_transient* transient, double* mass_map, size_t len,
+                          double* mass)
+{
+    if (!transient) return CW_ERR_NULL_POINTER;
+    return guarded(&transient->last_error, [&] {
+        const std::vector<double>& m = transient->wear.mass_map();
+        if (mass_map) {
+            require_length(len, m.size(), "mass_map");
+            std::copy(m.begin(), m.end(), mass_map);
+        }
+        if (mass) *mass = transient->wear.mass();
+        return CW_OK;
+    });
+}
+
+int cw_transient_reset_wear(cw_transient* transient)
+{
+    if (!transient) return CW_ERR_NULL_POINTER;
+    transient->wear.reset();
+    transient->last_error.clear();
+    return CW_OK;
 }
 
 const char* cw_transient_last_error(const cw_transient* transient)

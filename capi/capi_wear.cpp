@@ -7,6 +7,8 @@
 #include <cmath>
 #include <memory>
 
+#include "capi_wear_law.hpp"
+#include "contact/number_text.hpp"
 #include "wear/wear_map.hpp"
 #include "wear/wear_profile.hpp"
 
@@ -54,12 +56,22 @@ cw_wear_params wear_defaults()
     return p;
 }
 
-// solve_V: the solve's cw_params.V, Archard's rolling speed when its own is 0.
+} // namespace
+
+// solve_V: the solve's cw_params.V, Archard's rolling speed when its own is
+// 0; negative where there is no such solve (transient rolling), so that
+// Archard's own rolling_speed must be given.
 cww::WearLaw to_wear_law(const cw_wear_params* caller, double solve_V)
 {
     cw_wear_params p = read_struct(caller, wear_defaults(), "params");
-    if (p.law == CW_WEAR_ARCHARD_KTH)
-        p.rolling_speed = rolling_speed_of(p.rolling_speed, "rolling_speed", solve_V);
+    if (p.law == CW_WEAR_ARCHARD_KTH) {
+        if (solve_V >= 0.0)
+            p.rolling_speed = rolling_speed_of(p.rolling_speed, "rolling_speed", solve_V);
+        else if (!(p.rolling_speed > 0.0))
+            fail(CW_ERR_INVALID_INPUT, "rolling_speed = " + creepwork::number_text(p.rolling_speed) +
+                                           " is invalid: Archard's law needs the rolling "
+                                           "speed > 0 [m/s]");
+    }
     if (p.law != CW_WEAR_USFD && p.law != CW_WEAR_ARCHARD_KTH)
         fail(CW_ERR_UNKNOWN_OPTION, "law = " + std::to_string(p.law) +
                                         " is not CW_WEAR_USFD (0) or CW_WEAR_ARCHARD_KTH (1)");
@@ -80,6 +92,8 @@ cww::WearLaw to_wear_law(const cw_wear_params* caller, double solve_V)
     cww::validate(w); // names the parameter
     return w;
 }
+
+namespace {
 
 bool same_grid(const cw::GridSpec& a, const cw::GridSpec& b)
 {

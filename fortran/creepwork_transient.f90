@@ -1,5 +1,6 @@
 ! cw_transient_type: owns one cw_transient -- transient rolling in Kalker's
-! exact theory on a gap grid (header section "transient rolling",
+! exact theory or FASTSIM's transient form on a gap grid or an ellipse's
+! uniform grid (header section "transient rolling",
 ! doc/theory/transient.md). create solves the normal problem and starts from
 ! zero tractions; step computes a trial from the committed state, commit
 ! makes it the state, rewind drops it; save and restore give and take the
@@ -8,7 +9,7 @@
 ! cannot be).
 module creepwork_transient
    use, intrinsic :: iso_c_binding, only: c_int, c_int64_t, c_size_t, c_double, c_char, c_ptr, &
-                                          c_null_char
+                                          c_null_char, c_null_ptr, c_loc
    use creepwork_types
    use creepwork_capi
    use creepwork_handle
@@ -31,6 +32,11 @@ module creepwork_transient
       generic :: get_field => transient_get_field_2d, transient_get_field_1d
       procedure, private :: transient_get_state_2d, transient_get_state_1d
       generic :: get_state => transient_get_state_2d, transient_get_state_1d
+      procedure :: set_coordinates => transient_set_coordinates
+      procedure :: jacobian => transient_jacobian
+      procedure :: add_wear => transient_add_wear
+      procedure :: get_wear => transient_get_wear
+      procedure :: reset_wear => transient_reset_wear
       procedure, nopass :: noun => transient_noun
    end type cw_transient_type
 
@@ -53,9 +59,10 @@ contains
       s = 'transient'
    end function transient_noun
 
-   ! Creates the transient contact of grid (CW_GRID_GAP) and params (model
-   ! CW_MODEL_EXACT, p%gap = c_loc(h) with h(nx, ny)), destroying a previous
-   ! one: solves the normal problem, starts from zero tractions.
+   ! Creates the transient contact of grid (CW_GRID_GAP with p%gap = c_loc(h),
+   ! h(nx, ny); or CW_GRID_UNIFORM with the semi-axes p%a, p%b) and params
+   ! (model CW_MODEL_EXACT or CW_MODEL_FASTSIM), destroying a previous one:
+   ! solves the normal problem, starts from zero tractions.
    subroutine transient_create(self, grid, params, stat, errmsg)
       class(cw_transient_type), intent(inout) :: self
       type(cw_grid), intent(in) :: grid
@@ -194,8 +201,9 @@ contains
       call deliver(o, stat)
    end subroutine transient_restore
 
-   ! A field of the last step (CW_FIELD_X, _Y, _PZ, _PX, _PY, _SX, _SY; sx,
-   ! sy the slip of the step [m]) into out(nx, ny).
+   ! A field of the last step (CW_FIELD_X, _Y, _PZ, _PX, _PY, _SX, _SY,
+   ! _WORK_CONSISTENT; sx, sy the slip of the step [m], the work [J]) into
+   ! out(nx, ny).
    subroutine transient_get_field_2d(self, field, out, stat, errmsg)
       class(cw_transient_type), intent(in) :: self
       integer, intent(in) :: field
@@ -250,5 +258,110 @@ contains
       if (present(errmsg)) call set_errmsg(o, errmsg)
       call deliver(o, stat)
    end subroutine transient_get_state_1d
+
+   ! CW_COORDINATES_CONTACT (the default) or CW_COORDINATES_WORLD (the exact
+   ! model's: the geometry moves over the grid); starts from zero tractions.
+   subroutine transient_set_coordinates(self, coordinates, stat, errmsg)
+      class(cw_transient_type), intent(inout) :: self
+      integer, intent(in) :: coordinates
+      integer, intent(out), optional :: stat
+      character(len=:), allocatable, intent(out), optional :: errmsg
+      type(outcome) :: o
+      o = created(self)
+      if (o%status == CW_OK) o = status_outcome(self, capi_transient_set_coordinates( &
+                                 handle_of(self), int(coordinates, c_int)))
+      if (present(errmsg)) call set_errmsg(o, errmsg)
+      call deliver(o, stat)
+   end subroutine transient_set_coordinates
+
+   ! The last step's derivative (the exact model's): jacobian(r, c) =
+   ! d(output r)/d(input c), rows Fx, Fy, Mz and columns xi_x, xi_y, phi with
+   ! creepages given (the C API's jacobian[3*(r-1) + c-1]; a prescribed force
+   ! and its found creepage trade places). Nothing is written on error.
+   subroutine transient_jacobian(self, jacobian, stat, errmsg)
+      class(cw_transient_type), intent(inout) :: self
+      real(c_double), intent(inout) :: jacobian(3, 3)
+      integer, intent(out), optional :: stat
+      character(len=:), allocatable, intent(out), optional :: errmsg
+      real(c_double) :: rows(CW_TRANSIENT_JACOBIAN_LEN)
+      type(outcome) :: o
+      o = created(self)
+      if (o%status == CW_OK) then
+         o = status_outcome(self, capi_transient_jacobian(handle_of(self), rows, &
+                                                          size(rows, kind=c_size_t)))
+         if (o%status == CW_OK) jacobian = transpose(reshape(rows, [3, 3]))
+      end if
+      if (present(errmsg)) call set_errmsg(o, errmsg)
+      call deliver(o, stat)
+   end subroutine transient_jacobian
+
+   ! Adds the wear of the last step by params' law (default: the defaults
+   ! of cw_wear_params_init); step_mass (optional) receives its mass [kg].
+   ! Add each step once, after it is committed.
+   subroutine transient_add_wear(self, params, step_mass, stat, errmsg)
+      class(cw_transient_type), intent(inout) :: self
+      type(cw_wear_params), intent(in), optional :: params
+      real(c_double), intent(out), optional :: step_mass
+      integer, intent(out), optional :: stat
+      character(len=:), allocatable, intent(out), optional :: errmsg
+      type(cw_wear_params) :: p
+      real(c_double) :: m
+      integer(c_int) :: status
+      type(outcome) :: o
+      o = created(self)
+      if (o%status == CW_OK) then
+         if (present(params)) then
+            p = params
+         else
+            status = capi_wear_params_init(p)
+         end if
+         m = 0
+         o = status_outcome(self, capi_transient_add_wear(handle_of(self), p, m))
+         if (o%status == CW_OK .and. present(step_mass)) step_mass = m
+      end if
+      if (present(errmsg)) call set_errmsg(o, errmsg)
+      call deliver(o, stat)
+   end subroutine transient_add_wear
+
+   ! The accumulated wear: the total [kg] into mass and (optional) the mass
+   ! per element [kg] into mass_map(nx, ny).
+   subroutine transient_get_wear(self, mass, mass_map, stat, errmsg)
+      class(cw_transient_type), intent(in) :: self
+      real(c_double), intent(out) :: mass
+      real(c_double), intent(inout), contiguous, target, optional :: mass_map(:, :)
+      integer, intent(out), optional :: stat
+      character(len=:), allocatable, intent(out), optional :: errmsg
+      type(c_ptr) :: map
+      integer(c_size_t) :: len
+      real(c_double) :: m
+      type(outcome) :: o
+      map = c_null_ptr
+      len = 0
+      m = 0
+      if (present(mass_map)) then
+         o = created_map(self, shape(mass_map))
+         map = c_loc(mass_map)
+         len = size(mass_map, kind=c_size_t)
+      else
+         o = created(self)
+      end if
+      if (o%status == CW_OK) o = status_outcome(self, capi_transient_get_wear( &
+                                 handle_of(self), map, len, m))
+      mass = m
+      if (present(errmsg)) call set_errmsg(o, errmsg)
+      call deliver(o, stat)
+   end subroutine transient_get_wear
+
+   ! Clears the accumulated wear.
+   subroutine transient_reset_wear(self, stat, errmsg)
+      class(cw_transient_type), intent(inout) :: self
+      integer, intent(out), optional :: stat
+      character(len=:), allocatable, intent(out), optional :: errmsg
+      type(outcome) :: o
+      o = created(self)
+      if (o%status == CW_OK) o = status_outcome(self, capi_transient_reset_wear(handle_of(self)))
+      if (present(errmsg)) call set_errmsg(o, errmsg)
+      call deliver(o, stat)
+   end subroutine transient_reset_wear
 
 end module creepwork_transient

@@ -53,7 +53,8 @@ NULLABLE = [
     "cw_batch_solve.statuses", "cw_wear_compute.result",
     "cw_wear_get_strips.y", "cw_wear_get_strips.width", "cw_wear_get_strips.depth",
     "cw_wear_get_strips.parabola", "cw_wheelrail_add_wear.result",
-    "cw_temperature_compute.result", "cw_damage_compute.result"]
+    "cw_temperature_compute.result", "cw_damage_compute.result",
+    "cw_transient_get_wear.mass_map"]
 # Struct pointers that are arrays (count elements): bound as type(cw_s) :: x(*).
 STRUCT_ARRAYS = ["cw_batch_solve.params", "cw_batch_solve.results", "cw_solver_get_patches.out",
                  "cw_params_check.params", "cw_params_check.out", "cw_wheelrail_check.out",

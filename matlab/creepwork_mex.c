@@ -77,6 +77,7 @@ static const field_info dparams_fields[] = {CW_FIELDS_cw_damage_params(FIELD_ENT
 static const field_info dresult_fields[] = {CW_FIELDS_cw_damage_result(FIELD_ENTRY)};
 static const field_info tinput_fields[] = {CW_FIELDS_cw_transient_input(FIELD_ENTRY)};
 static const field_info tstep_fields[] = {CW_FIELDS_cw_transient_result(FIELD_ENTRY)};
+static const field_info wparams_fields[] = {CW_FIELDS_cw_wear_params(FIELD_ENTRY)};
 #undef FIELD_ENTRY
 #define COUNT(a) (sizeof(a) / sizeof((a)[0]))
 static const struct_info PARAMS = {"cw_params", params_fields, COUNT(params_fields)};
@@ -91,6 +92,7 @@ static const struct_info DPARAMS = {"cw_damage_params", dparams_fields, COUNT(dp
 static const struct_info DRESULT = {"cw_damage_result", dresult_fields, COUNT(dresult_fields)};
 static const struct_info TINPUT = {"cw_transient_input", tinput_fields, COUNT(tinput_fields)};
 static const struct_info TSTEP = {"cw_transient_result", tstep_fields, COUNT(tstep_fields)};
+static const struct_info WPARAMS = {"cw_wear_params", wparams_fields, COUNT(wparams_fields)};
 
 typedef struct {
     const char* struct_name;
@@ -825,12 +827,12 @@ static mxArray* transient_step(int k, const mxArray* input_in, int steady, int c
 /* The fields of the last step as nx-by-ny matrices, and its element states. */
 static mxArray* transient_fields(int k)
 {
-    static const char* names[] = {"x", "y", "pz", "px", "py", "sx", "sy", "state"};
-    static const int ids[] = {CW_FIELD_X, CW_FIELD_Y, CW_FIELD_PZ, CW_FIELD_PX,
-                              CW_FIELD_PY, CW_FIELD_SX, CW_FIELD_SY};
+    static const char* names[] = {"x", "y", "pz", "px", "py", "sx", "sy", "work", "state"};
+    static const int ids[] = {CW_FIELD_X,  CW_FIELD_Y,  CW_FIELD_PZ, CW_FIELD_PX,
+                              CW_FIELD_PY, CW_FIELD_SX, CW_FIELD_SY, CW_FIELD_WORK_CONSISTENT};
     const size_t nx = (size_t)transient_nx[k], ny = (size_t)transient_ny[k], n = nx * ny;
-    mxArray* out = mxCreateStructMatrix(1, 1, 8, names);
-    for (int f = 0; f < 7; ++f) {
+    mxArray* out = mxCreateStructMatrix(1, 1, 9, names);
+    for (int f = 0; f < 8; ++f) {
         mxArray* m = mxCreateDoubleMatrix(nx, ny, mxREAL);
         mxSetField(out, 0, names[f], m);
         transient_check(k, cw_transient_get_field(transients[k], ids[f], mxGetPr(m), n));
@@ -862,6 +864,61 @@ static void transient_restore(int k, const mxArray* state)
              state ? mxGetClassName(state) : "nothing");
     transient_check(k, cw_transient_restore(transients[k], (const uint64_t*)mxGetData(state),
                                             mxGetNumberOfElements(state)));
+}
+
+static double scalar(const mxArray* v, const char* name);
+
+/* The coordinates: 'contact', 'world' or a CW_COORDINATES_* value. */
+static void transient_set_coordinates(int k, const mxArray* v)
+{
+    char text[16] = "";
+    int c = -1;
+    if (v && mxIsChar(v) && mxGetString(v, text, sizeof text) == 0) {
+        if (strcmp(text, "contact") == 0) c = CW_COORDINATES_CONTACT;
+        if (strcmp(text, "world") == 0) c = CW_COORDINATES_WORLD;
+        if (c < 0) FAIL("badValue", "coordinates = '%s' is not 'contact' or 'world'", text);
+    } else {
+        c = (int)scalar(v, "coordinates");
+    }
+    transient_check(k, cw_transient_set_coordinates(transients[k], c));
+}
+
+/* The last step's Jacobian as a 3-by-3 matrix: J(r, c) = the C API's
+ * jacobian[3 (r-1) + c-1]. */
+static mxArray* transient_jacobian(int k)
+{
+    double J[CW_TRANSIENT_JACOBIAN_LEN];
+    transient_check(k, cw_transient_jacobian(transients[k], J, CW_TRANSIENT_JACOBIAN_LEN));
+    mxArray* out = mxCreateDoubleMatrix(3, 3, mxREAL);
+    for (int r = 0; r < 3; ++r)
+        for (int c = 0; c < 3; ++c) mxGetPr(out)[r + 3 * c] = J[3 * r + c];
+    return out;
+}
+
+/* Adds the last step's wear by the law of params_in (cw_wear_params
+ * fields; the defaults otherwise); returns the step's mass [kg]. */
+static mxArray* transient_add_wear(int k, const mxArray* params_in)
+{
+    cw_wear_params w;
+    cw_wear_params_init(&w);
+    if (params_in) to_structs(&WPARAMS, params_in, &w, sizeof w, 1);
+    double mass = 0.0;
+    transient_check(k, cw_transient_add_wear(transients[k], &w, &mass));
+    return mxCreateDoubleScalar(mass);
+}
+
+/* The accumulated wear: mass [kg] and mass_map (nx-by-ny) [kg]. */
+static mxArray* transient_wear(int k)
+{
+    static const char* names[] = {"mass", "mass_map"};
+    const size_t nx = (size_t)transient_nx[k], ny = (size_t)transient_ny[k];
+    mxArray* out = mxCreateStructMatrix(1, 1, 2, names);
+    mxArray* map = mxCreateDoubleMatrix(nx, ny, mxREAL);
+    mxSetField(out, 0, "mass_map", map);
+    double mass = 0.0;
+    transient_check(k, cw_transient_get_wear(transients[k], mxGetPr(map), nx * ny, &mass));
+    mxSetField(out, 0, "mass", mxCreateDoubleScalar(mass));
+    return out;
 }
 
 /* ------------------------------------------------------------- helpers */
@@ -996,6 +1053,17 @@ void mexFunction(int nlhs, mxArray* plhs[], int nrhs, const mxArray* prhs[])
         transient_restore(transient_id(a1), a2);
     } else if (strcmp(command, "transient_fields") == 0) {
         plhs[0] = transient_fields(transient_id(a1));
+    } else if (strcmp(command, "transient_set_coordinates") == 0) { /* id, coordinates */
+        transient_set_coordinates(transient_id(a1), a2);
+    } else if (strcmp(command, "transient_jacobian") == 0) {
+        plhs[0] = transient_jacobian(transient_id(a1));
+    } else if (strcmp(command, "transient_add_wear") == 0) { /* id, law params */
+        plhs[0] = transient_add_wear(transient_id(a1), a2);
+    } else if (strcmp(command, "transient_wear") == 0) {
+        plhs[0] = transient_wear(transient_id(a1));
+    } else if (strcmp(command, "transient_reset_wear") == 0) {
+        const int k = transient_id(a1);
+        transient_check(k, cw_transient_reset_wear(transients[k]));
     } else if (strcmp(command, "transient_destroy") == 0) {
         const int k = transient_id(a1);
         cw_transient_destroy(transients[k]);

@@ -11,6 +11,7 @@
 #include "exact/exact_model.hpp"
 #include "exact/tangential_solve.hpp"
 #include "normal/gap_grid.hpp"
+#include "transient/ellipse_gap.hpp"
 
 namespace creepwork {
 namespace {
@@ -22,7 +23,10 @@ namespace {
 // to ten.
 constexpr int kMaxForceIterations = 30;
 constexpr double kTangentTolerance = 1e-4;
-constexpr char kMagic[8] = {'c', 'w', 't', 'r', 'a', 'n', 's', '1'};
+// The step Jacobian's linear solves: well below the forces' own tolerance,
+// so that it matches central differences of converged steps.
+constexpr double kStepJacobianTolerance = 1e-12;
+constexpr char kMagic[8] = {'c', 'w', 't', 'r', 'a', 'n', 's', '2'};
 
 void check_finite(const char* name, double v)
 {
@@ -38,7 +42,25 @@ ContactInput own_gap(ContactInput in, const std::vector<double>& gap)
 
 } // namespace
 
+TransientContact::Form TransientContact::gap_form(const GridSpec& grid, const ContactInput& in)
+{
+    Form f{grid, in, {}};
+    if (grid.kind != GridKind::uniform) return f;
+    EllipseGap e = ellipse_gap(grid, in);
+    f.grid = e.grid;
+    f.h = std::move(e.h);
+    f.in.gap = f.h.data();
+    f.in.gap_len = f.h.size();
+    f.in.normal_load = NormalLoad::force;
+    return f;
+}
+
 TransientContact::TransientContact(const GridSpec& grid, const ContactInput& in)
+    : TransientContact(gap_form(grid, in))
+{
+}
+
+TransientContact::TransientContact(const GridSpec& grid, const ContactInput& in, OnGapGrid)
     : nx_(checked_gap_grid(grid).nx), ny_(grid.ny), n_(grid.nx * grid.ny), x0_(grid.x0),
       y0_(grid.y0), dx_(grid.dx), dy_(grid.dy),
       gap_(in.gap && in.gap_len >= static_cast<size_t>(n_) ? in.gap : nullptr,
@@ -68,20 +90,65 @@ TransientContact::TransientContact(const GridSpec& grid, const ContactInput& in)
                     "transient rolling needs normal_force > 0 or an approach with contact");
     T_ = in.mu * p_ref_;
     U_ = T_ * dx_ / in.G;
-    box_ = cell_box(nx_, ny_, [&](std::size_t k) { return p[k] > 0.0; });
+    set_box();
+    start_zero();
+}
+
+void TransientContact::set_box()
+{
+    const std::vector<double>& p = normal_.pressure();
+    box_ = world_ ? CellBox{0, 0, nx_, ny_}
+                  : cell_box(nx_, ny_, [&](std::size_t k) { return p[k] > 0.0; });
     bn_ = box_.nx * box_.ny;
     conv_.set_size(box_.nx, box_.ny);
-    conv_.copy_coefficients(normal_.half_space(in.nu));
+    conv_.copy_coefficients(normal_.half_space(in_.nu));
     solver_.set_size(box_.nx, box_.ny);
     std::vector<double>& g = solver_.bound();
     for (int k = 0; k < bn_; ++k) g[k] = p[cell(k)] / p_ref_;
     for (auto* v : {&q0_, &aq0_, &bq0_, &base_, &dw_, &tangent_[0], &tangent_[1]})
         v->assign(bn_, Complex(0.0, 0.0));
+    work_.assign(bn_, 0.0);
+    aq_.assign(bn_, Complex(0.0, 0.0));
+}
+
+void TransientContact::move_geometry(double X)
+{
+    if (X == normal_position_) return;
+    // h(x - X): X = m dx + f dx, between the elements m and m + 1 upstream.
+    const double steps = X / dx_;
+    const int m = static_cast<int>(std::floor(steps));
+    const double f = steps - m;
+    double far = gap_[0];
+    for (double v : gap_) far = std::max(far, v);
+    moved_gap_.resize(gap_.size());
+    for (int j = 0; j < ny_; ++j)
+        for (int i = 0; i < nx_; ++i) {
+            const int a = i - m, b = i - m - 1; // x - X lies between element b and a
+            const std::size_t row = static_cast<std::size_t>(nx_) * j;
+            const double ha = a >= 0 && a < nx_ ? gap_[row + a] : far;
+            const double hb = b >= 0 && b < nx_ ? gap_[row + b] : far;
+            moved_gap_[row + i] = f == 0.0 ? ha : (1.0 - f) * ha + f * hb;
+        }
+    ContactInput in = own_gap(in_, moved_gap_);
+    normal_.solve(X == 0.0 ? in_ : in, false);
+    normal_position_ = X;
+    const std::vector<double>& p = normal_.pressure();
+    std::vector<double>& g = solver_.bound();
+    for (int k = 0; k < bn_; ++k) g[k] = p[cell(k)] / p_ref_;
+}
+
+void TransientContact::set_frame(TransientFrame frame)
+{
+    move_geometry(0.0); // may throw: the frame is unchanged then
+    world_ = frame == TransientFrame::world;
+    set_box();
     start_zero();
 }
 
 void TransientContact::start_zero()
 {
+    has_solution_ = false;
+    position_ = trial_position_ = 0.0;
     std::fill(q0_.begin(), q0_.end(), Complex(0.0, 0.0));
     std::fill(creep0_, creep0_ + 3, 0.0);
     steps_ = 0;
@@ -139,13 +206,29 @@ void TransientContact::set_slip(const double c[3], double dq, bool steady)
     const double length = steady ? dx_ : dq > 0.0 ? dq : 1.0;
     const double offset = steady ? spin_offset_ * dx_ : spin_offset_ * dq;
     const double ux = c[0] * length / U_, uy = c[1] * length / U_, th = c[2] * length / U_;
+    const double origin = world_ ? trial_position_ : 0.0;
     std::vector<Complex>& w = solver_.rigid_slip();
     for (int j = 0; j < box_.ny; ++j) {
         const double y = y0_ + (box_.j0 + j) * dy_;
         for (int i = 0; i < box_.nx; ++i) {
             const int k = i + box_.nx * j;
-            const double x = x0_ + (box_.i0 + i) * dx_ + offset;
+            const double x = x0_ + (box_.i0 + i) * dx_ + offset - origin;
             w[k] = Complex(ux - th * y, uy + th * x) + base_[k];
+        }
+    }
+}
+
+void TransientContact::unit_slip(int u, double length, double offset)
+{
+    const double t = length / U_;
+    const double origin = world_ ? trial_position_ : 0.0;
+    for (int j = 0; j < box_.ny; ++j) {
+        const double y = y0_ + (box_.j0 + j) * dy_;
+        for (int i = 0; i < box_.nx; ++i) {
+            const double x = x0_ + (box_.i0 + i) * dx_ + offset - origin;
+            dw_[i + box_.nx * j] = u == 0   ? Complex(t, 0.0)
+                                   : u == 1 ? Complex(0.0, t)
+                                            : Complex(-t * y, t * x);
         }
     }
 }
@@ -154,9 +237,14 @@ const TransientStepResult& TransientContact::step(const TransientStepInput& s)
 {
     validate(s, false);
     trial_valid_ = false;
-    // The committed state's share: -A q0 + d B q0.
-    const double d = std::min(s.dq / dx_, 1.0);
+    // The committed state's share: -A q0 + d B q0 (world-fixed: -A q0 on
+    // the moved geometry).
+    const double d = world_ ? 0.0 : std::min(s.dq / dx_, 1.0);
     for (int k = 0; k < bn_; ++k) base_[k] = d * bq0_[k] - aq0_[k];
+    if (world_) {
+        trial_position_ = position_ + s.dq;
+        move_geometry(trial_position_);
+    }
     solver_.set_operator(SlipOperator::shift);
     solver_.traction() = q0_;
     return solve(s, false);
@@ -166,6 +254,10 @@ const TransientStepResult& TransientContact::start_steady(const TransientStepInp
 {
     validate(s, true);
     trial_valid_ = false;
+    if (world_) {
+        trial_position_ = position_;
+        move_geometry(position_);
+    }
     std::fill(base_.begin(), base_.end(), Complex(0.0, 0.0));
     solver_.set_operator(SlipOperator::rolling);
     std::fill(solver_.traction().begin(), solver_.traction().end(), Complex(0.0, 0.0));
@@ -255,7 +347,12 @@ const TransientStepResult& TransientContact::solve(const TransientStepInput& s, 
             for (int k = 0; k < bn_; ++k) qn[k] += dc[u] * tangent_[u][k];
         }
     }
-    totals(c, ti);
+    totals(c, ti, steady);
+    last_length_ = length;
+    last_offset_ = steady ? spin_offset_ * dx_ : spin_offset_ * s.dq;
+    last_fx_ = s.prescribe_fx;
+    last_fy_ = s.prescribe_fy;
+    has_solution_ = true;
     result_.newton_steps = newton;
     result_.products = products + 2 * (steady ? 0 : 1);
     result_.force_iterations = iterations;
@@ -265,9 +362,22 @@ const TransientStepResult& TransientContact::solve(const TransientStepInput& s, 
     return result_;
 }
 
-void TransientContact::totals(const double c[3], const SteadyRollingInfo& ti)
+void TransientContact::totals(const double c[3], const SteadyRollingInfo& ti, bool steady)
 {
     const std::vector<Complex>& q = solver_.traction();
+    // The energy balance: the rigid displacement is the solver's rigid slip
+    // less the committed state's share (base_); a steady start has p_prev = p.
+    conv_.apply_tangential(q.data(), aq_.data(), false);
+    const std::vector<Complex>& rs = solver_.rigid_slip();
+    double rigid = 0.0, energy = 0.0;
+    for (int k = 0; k < bn_; ++k) {
+        const Complex r = rs[k] - base_[k], qp = steady ? q[k] : q0_[k];
+        const Complex mean = 0.5 * (q[k] + qp);
+        rigid -= mean.real() * r.real() + mean.imag() * r.imag();
+        if (!steady)
+            energy += 0.5 * (q[k].real() * aq_[k].real() + q[k].imag() * aq_[k].imag() -
+                             q0_[k].real() * aq0_[k].real() - q0_[k].imag() * aq0_[k].imag());
+    }
     const std::vector<Complex>& sl = solver_.slip();
     const std::vector<signed char>& state = solver_.state();
     const std::vector<double>& g = solver_.bound();
@@ -282,11 +392,13 @@ void TransientContact::totals(const double c[3], const SteadyRollingInfo& ti)
             fx += q[k].real();
             fy += q[k].imag();
             mz += x * q[k].imag() - y * q[k].real();
+            work_[k] = 0.0;
             if (g[k] > 0.0) {
                 ++r.n_contact;
                 if (state[k] == 2) {
                     ++r.n_slip;
-                    w -= q[k].real() * sl[k].real() + q[k].imag() * sl[k].imag();
+                    work_[k] = -(q[k].real() * sl[k].real() + q[k].imag() * sl[k].imag());
+                    w += work_[k];
                 }
             }
         }
@@ -299,7 +411,11 @@ void TransientContact::totals(const double c[3], const SteadyRollingInfo& ti)
     r.Fy = T_ * area * fy;
     r.Mz = T_ * area * mz;
     r.n_adhesion = r.n_contact - r.n_slip;
-    r.W_step = T_ * U_ * area * w;
+    r.W_slip = T_ * U_ * area * w;
+    r.W_step = T_ * U_ * area * (rigid - energy);
+    // The map: each slip element's dissipation scaled to the step's work.
+    const double factor = w > 0.0 ? (rigid - energy) / w : 0.0;
+    for (double& v : work_) v *= factor;
     r.residual = ti.residual;
 }
 
@@ -310,10 +426,12 @@ void TransientContact::commit()
                     "commit: there is no step to commit (step() first; a trial is "
                     "committed once, and rewind drops it)");
     q0_ = solver_.traction();
+    aq0_ = aq_; // A q of the trial (the same bits as computing it again)
+    conv_.apply_tangential(q0_.data(), bq0_.data(), true);
     if (trial_rolling_) std::copy(trial_creep_, trial_creep_ + 3, creep0_);
+    if (world_) position_ = trial_position_;
     ++steps_;
     trial_valid_ = false;
-    set_committed_terms();
 }
 
 namespace {
@@ -340,6 +458,8 @@ std::vector<unsigned char> TransientContact::save() const
     put(out, T_);
     put(out, static_cast<std::int64_t>(steps_));
     for (double v : creep0_) put(out, v);
+    put(out, static_cast<std::int64_t>(world_ ? 1 : 0));
+    put(out, position_);
     for (const Complex& v : q0_) {
         put(out, v.real());
         put(out, v.imag());
@@ -349,7 +469,7 @@ std::vector<unsigned char> TransientContact::save() const
 
 void TransientContact::restore(const unsigned char* bytes, std::size_t n)
 {
-    const std::size_t size = sizeof(kMagic) + 2 * 4 + 2 * 8 + 8 + 3 * 8 + 16 * q0_.size();
+    const std::size_t size = sizeof(kMagic) + 2 * 4 + 2 * 8 + 8 + 3 * 8 + 2 * 8 + 16 * q0_.size();
     if (!bytes || n != size || std::memcmp(bytes, kMagic, sizeof(kMagic)) != 0)
         throw Error(ErrorKind::invalid_input,
                     "restore: the bytes (" + std::to_string(n) +
@@ -371,6 +491,16 @@ void TransientContact::restore(const unsigned char* bytes, std::size_t n)
     double creep[3];
     for (double& v : creep) get(p, v);
     for (double v : creep) check_finite("restored creepage", v);
+    std::int64_t world = 0;
+    double position = 0.0;
+    get(p, world);
+    get(p, position);
+    if (world != (world_ ? 1 : 0))
+        throw Error(ErrorKind::invalid_input,
+                    "restore: the bytes are the state of another contact (the coordinates, "
+                    "world- or contact-fixed, differ)");
+    if (!std::isfinite(position) || position < 0.0)
+        throw Error(ErrorKind::invalid_input, "restore: the bytes hold a bad rolled distance");
     std::vector<Complex>& q = solver_.traction(); // scratch until the next step
     for (Complex& v : q) {
         double re = 0.0, im = 0.0;
@@ -382,6 +512,8 @@ void TransientContact::restore(const unsigned char* bytes, std::size_t n)
         v = Complex(re, im);
     }
     q0_ = q;
+    position_ = trial_position_ = position;
+    has_solution_ = false;
     std::copy(creep, creep + 3, creep0_);
     steps_ = static_cast<long>(steps);
     trial_valid_ = false;
@@ -417,6 +549,61 @@ void TransientContact::copy_state(int* out) const
     const std::vector<signed char>& state = solver_.state();
     std::fill(out, out + n_, 0);
     for (int k = 0; k < bn_; ++k) out[cell(k)] = state[k];
+}
+
+void TransientContact::copy_work(double* out) const
+{
+    std::fill(out, out + n_, 0.0);
+    const double scale = T_ * U_ * dx_ * dy_;
+    for (int k = 0; k < bn_; ++k) out[cell(k)] = scale * work_[k];
+}
+
+void TransientContact::jacobian(double out[9])
+{
+    if (!has_solution_)
+        throw Error(ErrorKind::invalid_input,
+                    "jacobian: there is no step (step() or start_steady() first)");
+    const double fs = T_ * dx_ * dy_;
+    double J[3][3];
+    for (int u = 0; u < 3; ++u) {
+        unit_slip(u, last_length_, last_offset_);
+        const std::vector<Complex>& dq =
+            solver_.tangent(conv_, dw_, kStepJacobianTolerance, kMaxJacobianIterations);
+        double fx = 0.0, fy = 0.0, mz = 0.0;
+        for (int j = 0; j < box_.ny; ++j) {
+            const double y = y0_ + (box_.j0 + j) * dy_;
+            for (int i = 0; i < box_.nx; ++i) {
+                const int k = i + box_.nx * j;
+                const double x = x0_ + (box_.i0 + i) * dx_;
+                fx += dq[k].real();
+                fy += dq[k].imag();
+                mz += x * dq[k].imag() - y * dq[k].real();
+            }
+        }
+        J[0][u] = fs * fx;
+        J[1][u] = fs * fy;
+        J[2][u] = fs * mz;
+    }
+    // A prescribed force and its creepage trade places: the sweep (principal
+    // pivot) on that index, once per prescribed force.
+    for (int p = 0; p < 2; ++p) {
+        if (!(p == 0 ? last_fx_ : last_fy_)) continue;
+        const double a = J[p][p];
+        if (!(std::fabs(a) > 0.0))
+            throw Error(ErrorKind::not_converged,
+                        "jacobian: the prescribed force does not depend on its creepage "
+                        "(full slip)");
+        for (int r = 0; r < 3; ++r)
+            for (int c = 0; c < 3; ++c)
+                if (r != p && c != p) J[r][c] -= J[r][p] * J[p][c] / a;
+        for (int c = 0; c < 3; ++c)
+            if (c != p) J[p][c] = -J[p][c] / a;
+        for (int r = 0; r < 3; ++r)
+            if (r != p) J[r][p] = J[r][p] / a;
+        J[p][p] = 1.0 / a;
+    }
+    for (int r = 0; r < 3; ++r)
+        for (int c = 0; c < 3; ++c) out[3 * r + c] = J[r][c];
 }
 
 void TransientContact::copy_pressure(double* out) const

@@ -33,6 +33,19 @@
 // (the tractions vanish outside; the same discrete problem with smaller
 // FFTs), as the steady model on a gap grid does.
 //
+// World-fixed coordinates (CONTACT's T = 1; set_frame(world)): the grid
+// stays with the material and the geometry moves over it, by dq towards +x
+// per step: the gap of a step at rolled distance X is the given gap at
+// x - X (interpolated linearly between the elements; exact for X a
+// multiple of dx; elements whose geometry comes from beyond the grid's -x
+// edge take the grid's largest gap), the normal problem is solved per step
+// (cold, so a trial repeats bitwise), and nothing is transported:
+//   s = r + A (q - q_prev),
+// the spin's rigid slip taken about x = X (the geometry's origin now). The
+// problem runs on the whole grid, which must hold the contact over the run.
+// With dq = dx this is the contact-fixed step seen from the ground: the two
+// agree to the solver's tolerance.
+//
 // Frame: the leading edge at +x (rolling towards +x); positions from the
 // grid's origin; forces on the wheel (body 1) as in the steady models.
 #pragma once
@@ -48,6 +61,10 @@
 #include "normal/gap_normal.hpp"
 
 namespace creepwork {
+
+// Where the grid is fixed: to the contact (CONTACT's T = 2), or to the
+// world (the material; T = 1).
+enum class TransientFrame { contact = 0, world = 1 };
 
 // What one step is given.
 struct TransientStepInput {
@@ -65,7 +82,18 @@ struct TransientStepResult {
     double xi_x = 0.0, xi_y = 0.0, phi = 0.0; // as given, the prescribed forces' found
     double Fx = 0.0, Fy = 0.0, Mz = 0.0;      // on the wheel [N, N, N m], Mz about the origin
     int n_contact = 0, n_adhesion = 0, n_slip = 0;
-    double W_step = 0.0; // frictional work of the step [J]: sum of |p_t| |S| dA
+    // Frictional work of the step [J], energy-consistent: the work of the
+    // rigid displacement r of the step under the mean of the old and new
+    // tractions less the change of the elastic energy,
+    //   W_step = -sum 1/2 (p_prev + p) . r dA - (E(p) - E(p_prev)),
+    // E(p) = 1/2 sum p . u(p) dA; in steady rolling (p = p_prev) it is
+    // dq (W_macro - phi s dq Fy) (s the spin offset), the steady model's
+    // W_macro per rolled distance. The sum of the work map (copy_work).
+    double W_step = 0.0;
+    // The friction dissipation of the step's own slip, sum of |p_t| |S| dA
+    // [J] (CONTACT's frictional work): below W_step by the exact theory's
+    // numerical dissipation (exact/exact_work.hpp).
+    double W_slip = 0.0;
     int newton_steps = 0;     // of the tangential problem, all force iterations
     int products = 0;         // FFT products, all of the step
     int force_iterations = 0; // Newton steps on the prescribed forces
@@ -79,13 +107,22 @@ public:
     // grid: a gap grid (normal/gap_grid.hpp); in: the contact -- its gap
     // (copied), normal force or approach, normal method, mu > 0, G, nu,
     // tolerance, max_iterations, spin_offset (creepages and the rolling
-    // direction are not read: the leading edge is at +x). Solves the normal
-    // problem. Starts from zero tractions. Throws Error naming a bad input,
-    // or Error(not_converged).
+    // direction are not read: the leading edge is at +x). Or the exact
+    // model's uniform grid and an elliptic contact (a, b, normal force;
+    // transient/ellipse_gap.hpp): its Hertzian gap on that grid. Solves the
+    // normal problem. Starts from zero tractions. Throws Error naming a bad
+    // input, or Error(not_converged).
     TransientContact(const GridSpec& grid, const ContactInput& in);
 
-    // The committed state: zero tractions.
+    // The committed state: zero tractions (the geometry back at its start).
     void start_zero();
+    // Chooses the coordinates (the handle starts contact-fixed) and starts
+    // from zero tractions with the geometry at its start.
+    void set_frame(TransientFrame frame);
+    TransientFrame frame() const { return world_ ? TransientFrame::world : TransientFrame::contact; }
+    // World-fixed: the distance the geometry has rolled over the grid [m]
+    // (committed); 0 contact-fixed.
+    double position() const { return position_; }
     // The committed state: the steady-rolling solution of step's creepages
     // (dq is not read; its forces may be prescribed). Returns it.
     const TransientStepResult& start_steady(const TransientStepInput& step);
@@ -107,6 +144,13 @@ public:
 
     int nx() const { return nx_; }
     int ny() const { return ny_; }
+    double dx() const { return dx_; }
+    double dy() const { return dy_; }
+    double x0() const { return x0_; }
+    double y0() const { return y0_; }
+    // A step or steady start since the last start, frame change or restore:
+    // the fields and jacobian() are of it.
+    bool has_solution() const { return has_solution_; }
     long steps_committed() const { return steps_; }
     bool has_trial() const { return trial_valid_; }
     const TransientStepResult& last() const { return result_; }
@@ -118,15 +162,56 @@ public:
     void copy_slip(double* sx, double* sy) const;
     void copy_state(int* out) const;
     void copy_pressure(double* out) const;
+    // Of the last step (or steady start), [i + nx j]: the frictional work of
+    // each element over the step [J], its dissipation |p_t| |S| dA times
+    // W_step / W_slip (0 in adhesion and outside the contact); its sum is
+    // W_step (0 everywhere when no element slips).
+    void copy_work(double* out) const;
+
+    // The step map's derivative at the last step (or steady start), row-major
+    // J[3 r + c], rows the step's outputs, columns its inputs, as an
+    // integrator linearises the step. With creepages given (no force
+    // prescribed): rows Fx, Fy, Mz [N, N, N m]; columns xi_x, xi_y, phi
+    // (rolling; a shift: the shift along x, y [m] and the rotation [rad]).
+    // With Fx (and Fy) prescribed, the prescribed force and the found
+    // creepage trade places: row 0 is xi_x and column 0 is Fx (row 1, column
+    // 1 likewise with Fy prescribed). From the derivative of the converged
+    // discrete problem (SteadyRolling::tangent), to a relative residual of
+    // kStepJacobianTolerance; the tractions, states and the trial are
+    // untouched. Throws Error(invalid_input) without a step, or
+    // Error(not_converged) when a prescribed force does not depend on its
+    // creepage (full slip).
+    void jacobian(double J[9]);
 
 private:
+    // The contact as a gap grid: the caller's, or an ellipse's (h owns the
+    // gap in.gap points to).
+    struct Form {
+        GridSpec grid;
+        ContactInput in;
+        std::vector<double> h;
+    };
+    static Form gap_form(const GridSpec& grid, const ContactInput& in);
+    struct OnGapGrid {};
+    explicit TransientContact(const Form& f) : TransientContact(f.grid, f.in, OnGapGrid{}) {}
+    TransientContact(const GridSpec& grid, const ContactInput& in, OnGapGrid);
+
     void validate(const TransientStepInput& s, bool steady) const;
     // The rigid displacement of creepages c (rolling) or shift c (dq = 0)
     // plus base_, into the solver's rigid slip.
     void set_slip(const double c[3], double dq, bool steady);
     void set_committed_terms(); // aq0_ = A q0, bq0_ = B q0
+    // The box the problem runs on (the contact's, or the whole grid
+    // world-fixed), its bound from the normal solution, the fields' sizes.
+    void set_box();
+    // World-fixed: the normal problem of the geometry rolled by X [m] over
+    // the grid, and the bound from it (nothing when it is solved already).
+    void move_geometry(double X);
     const TransientStepResult& solve(const TransientStepInput& s, bool steady);
-    void totals(const double c[3], const SteadyRollingInfo& ti);
+    void totals(const double c[3], const SteadyRollingInfo& ti, bool steady);
+    // The rigid-slip change of a unit change of input column u (xi_x, xi_y,
+    // phi) of a step of length (dq; dx steady; 1 a shift) into dw_.
+    void unit_slip(int u, double length, double offset);
 
     int nx_, ny_, n_;
     double x0_, y0_, dx_, dy_;
@@ -146,11 +231,23 @@ private:
     // The committed state: tractions (normalised), A q0 and B q0, the last
     // rolling step's creepages (the force iteration's start), steps.
     std::vector<Complex> q0_, aq0_, bq0_, base_, dw_, tangent_[2];
+    std::vector<Complex> aq_; // A q of the last solve (the next commit's A q0)
     double creep0_[3] = {0.0, 0.0, 0.0};
     long steps_ = 0;
     // The trial.
     TransientStepResult result_;
     bool trial_valid_ = false, trial_rolling_ = false;
+    // The last solve (trial or steady start): its step length and spin
+    // offset [m] (in set_slip's sense), prescribed forces, work per element
+    // (normalised, box), and whether there is one.
+    double last_length_ = 0.0, last_offset_ = 0.0;
+    // World-fixed: the frame, the committed and the trial rolled distance,
+    // that of the normal solution, and the moved gap.
+    bool world_ = false;
+    double position_ = 0.0, trial_position_ = 0.0, normal_position_ = 0.0;
+    std::vector<double> moved_gap_;
+    bool last_fx_ = false, last_fy_ = false, has_solution_ = false;
+    std::vector<double> work_;
     double trial_creep_[3] = {0.0, 0.0, 0.0};
 };
 

@@ -118,6 +118,7 @@ void TransientFastsim::start_zero()
     std::fill(creep0_, creep0_ + 3, 0.0);
     steps_ = 0;
     trial_valid_ = false;
+    has_solution_ = false;
 }
 
 void TransientFastsim::validate(const TransientStepInput& s, bool steady) const
@@ -211,6 +212,7 @@ const TransientStepResult& TransientFastsim::step(const TransientStepInput& s)
 {
     validate(s, false);
     trial_valid_ = false;
+    has_solution_ = false;
     return solve(s, false);
 }
 
@@ -218,6 +220,7 @@ const TransientStepResult& TransientFastsim::start_steady(const TransientStepInp
 {
     validate(s, true);
     trial_valid_ = false;
+    has_solution_ = false;
     solve(s, true);
     trial_valid_ = false;
     p0_ = p_;
@@ -323,6 +326,7 @@ const TransientStepResult& TransientFastsim::solve(const TransientStepInput& s, 
     result_.newton_steps = passes;
     result_.force_iterations = iterations;
     trial_valid_ = true;
+    has_solution_ = true;
     trial_rolling_ = rolling;
     std::copy(c, c + 3, trial_creep_);
     return result_;
@@ -358,6 +362,7 @@ void TransientFastsim::totals(const double c[3])
     r.Mz = area * mz;
     r.n_adhesion = r.n_contact - r.n_slip;
     r.W_step = area * w;
+    r.W_slip = r.W_step; // explicit: no numerical dissipation
 }
 
 void TransientFastsim::commit()
@@ -444,6 +449,16 @@ void TransientFastsim::restore(const unsigned char* bytes, std::size_t n)
     std::copy(creep, creep + 3, creep0_);
     steps_ = static_cast<long>(steps);
     trial_valid_ = false;
+    has_solution_ = false;
+}
+
+void TransientFastsim::copy_work(double* out) const
+{
+    const double area = dx_ * dy_;
+    for (int k = 0; k < n_; ++k)
+        out[k] = state_[k] == 2 ? -area * (p_[k].real() * slip_[k].real() +
+                                           p_[k].imag() * slip_[k].imag())
+                                : 0.0;
 }
 
 void TransientFastsim::copy_traction(double* px, double* py) const

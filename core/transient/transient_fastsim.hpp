@@ -58,6 +58,12 @@ public:
 
     int nx() const { return nx_; }
     int ny() const { return ny_; }
+    double dx() const { return dx_; }
+    double dy() const { return dy_; }
+    double x0() const { return x0_; }
+    double y0() const { return y0_; }
+    // A step or steady start since the last start or restore.
+    bool has_solution() const { return has_solution_; }
     long steps_committed() const { return steps_; }
     bool has_trial() const { return trial_valid_; }
     const TransientStepResult& last() const { return result_; }
@@ -65,6 +71,10 @@ public:
     void copy_slip(double* sx, double* sy) const;
     void copy_state(int* out) const;
     void copy_pressure(double* out) const;
+    // The work of each element over the step [J]: its slip's dissipation
+    // -p . S dA (0 in adhesion and outside). The step is explicit (no
+    // numerical dissipation), so W_slip = W_step, the map's sum.
+    void copy_work(double* out) const;
 
 private:
     struct Patch {
@@ -90,7 +100,7 @@ private:
     double creep0_[3] = {0.0, 0.0, 0.0};
     long steps_ = 0;
     TransientStepResult result_;
-    bool trial_valid_ = false, trial_rolling_ = false;
+    bool trial_valid_ = false, trial_rolling_ = false, has_solution_ = false;
     double trial_creep_[3] = {0.0, 0.0, 0.0};
 };
 

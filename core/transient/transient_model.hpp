@@ -1,7 +1,10 @@
 // The transient handle's model: the exact theory (transient_contact.hpp) or
 // FASTSIM's transient form (transient_fastsim.hpp), chosen by the contact's
 // model at construction. One interface for the C API: each call goes to the
-// model made.
+// model made. FASTSIM takes the elliptic contact (its gap on the uniform
+// grid, as the exact model) and gives the work map; it runs contact-fixed
+// only and has no step Jacobian: set_frame(world) and jacobian() throw
+// Error(invalid_input) naming the model.
 #pragma once
 
 #include <memory>
@@ -14,8 +17,17 @@ namespace creepwork {
 
 class TransientModel {
 public:
-    // in.model exact or fastsim (another throws Error(invalid_input) naming model).
+    // in.model exact or fastsim (another throws Error(invalid_input) naming
+    // model); grid a gap grid, or an ellipse's uniform grid
+    // (transient/ellipse_gap.hpp).
     TransientModel(const GridSpec& grid, const ContactInput& in);
+
+    // Contact-fixed starts from zero; world-fixed is the exact model's.
+    void set_frame(TransientFrame frame);
+    TransientFrame frame() const { return exact_ ? exact_->frame() : TransientFrame::contact; }
+    double position() const { return exact_ ? exact_->position() : 0.0; }
+    // The exact model's step Jacobian (TransientContact::jacobian).
+    void jacobian(double J[9]);
 
     void start_zero() { exact_ ? exact_->start_zero() : fastsim_->start_zero(); }
     const TransientStepResult& start_steady(const TransientStepInput& s)
@@ -35,6 +47,14 @@ public:
     }
     int nx() const { return exact_ ? exact_->nx() : fastsim_->nx(); }
     int ny() const { return exact_ ? exact_->ny() : fastsim_->ny(); }
+    double dx() const { return exact_ ? exact_->dx() : fastsim_->dx(); }
+    double dy() const { return exact_ ? exact_->dy() : fastsim_->dy(); }
+    double x0() const { return exact_ ? exact_->x0() : fastsim_->x0(); }
+    double y0() const { return exact_ ? exact_->y0() : fastsim_->y0(); }
+    bool has_solution() const
+    {
+        return exact_ ? exact_->has_solution() : fastsim_->has_solution();
+    }
     long steps_committed() const
     {
         return exact_ ? exact_->steps_committed() : fastsim_->steps_committed();
@@ -56,6 +76,10 @@ public:
     void copy_pressure(double* out) const
     {
         exact_ ? exact_->copy_pressure(out) : fastsim_->copy_pressure(out);
+    }
+    void copy_work(double* out) const
+    {
+        exact_ ? exact_->copy_work(out) : fastsim_->copy_work(out);
     }
 
 private:

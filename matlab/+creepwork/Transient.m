@@ -1,11 +1,14 @@
 classdef Transient < handle
-%TRANSIENT  Transient rolling: Kalker's exact theory with memory (cw_transient).
+%TRANSIENT  Transient rolling: rolling contact with memory (cw_transient).
 %   T = creepwork.Transient(GRID, ...) makes the transient contact of a gap
 %   grid (GRID a struct of cw_grid fields with 'kind', 'gap'; cell (i, j)
 %   centred at x0 + (i-1)*dx, y0 + (j-1)*dy) from creepwork.solve's
 %   parameters: 'gap' (nx-by-ny [m]), 'N' (or 'normal_load', 'approach'),
-%   'G', 'nu', 'mu', 'tolerance', ...; the model is the exact one. The
-%   normal problem is solved here and the state starts from zero tractions.
+%   'G', 'nu', 'mu', 'tolerance', ...; 'model', 'fastsim' takes FASTSIM's
+%   transient form instead of the exact theory (the default). An elliptic
+%   contact: GRID of kind 'uniform' (nx, ny, box_scale) with 'a', 'b', 'N'.
+%   The normal problem is solved here and the state starts from zero
+%   tractions.
 %
 %   R = T.step('dq', DQ, 'xi_x', XI, ...) computes one step from the
 %   committed state (a trial; repeated after T.rewind() it gives the same
@@ -17,8 +20,17 @@ classdef Transient < handle
 %   the steady solution of the same inputs, T.start_zero() from zero.
 %   W = T.save() gives the committed state (uint64 words), T.restore(W)
 %   takes it back. F = T.fields() gives the last step's x, y, pz, px, py,
-%   sx, sy (sx, sy the slip of the step [m]) and state as nx-by-ny
-%   matrices. delete(T) (or clearing T) frees it.
+%   sx, sy (sx, sy the slip of the step [m]), work (each element's
+%   frictional work over the step [J], summing to W_step) and state as
+%   nx-by-ny matrices. J = T.jacobian() is the last step's derivative (the
+%   exact model's): J(r, c) = d(output r)/d(input c), rows Fx, Fy, Mz and
+%   columns xi_x, xi_y, phi with creepages given (a prescribed force and
+%   its found creepage trade places). T.set_coordinates('world') runs
+%   world-fixed (the exact model's; 'contact' is the default) from zero
+%   tractions. M = T.add_wear('law', 0, ...) adds the last step's wear by
+%   cw_wear_params' fields (after the commit) and returns its mass [kg];
+%   W = T.wear() gives the accumulated mass and mass_map [kg];
+%   T.reset_wear() clears it. delete(T) (or clearing T) frees it.
 %
 %     t = creepwork.Transient(grid, 'gap', h, 'N', 0.4705, 'G', 1e6, ...
 %                             'nu', 0.28, 'mu', 0.4013);
@@ -69,6 +81,28 @@ classdef Transient < handle
     end
     function f = fields(obj)
       f = creepwork.call('transient_fields', obj.id);
+    end
+    function J = jacobian(obj)
+      J = creepwork.call('transient_jacobian', obj.id);
+    end
+    function set_coordinates(obj, coordinates)
+      creepwork.call('transient_set_coordinates', obj.id, coordinates);
+    end
+    function m = add_wear(obj, varargin)
+      if mod(numel(varargin), 2) ~= 0 || ~all(cellfun(@ischar, varargin(1:2:end)))
+        error('creepwork:usage', 'add_wear: expected name-value pairs of cw_wear_params');
+      end
+      law = struct();
+      for k = 1:2:numel(varargin)
+        law.(varargin{k}) = varargin{k + 1};
+      end
+      m = creepwork.call('transient_add_wear', obj.id, law);
+    end
+    function w = wear(obj)
+      w = creepwork.call('transient_wear', obj.id);
+    end
+    function reset_wear(obj)
+      creepwork.call('transient_reset_wear', obj.id);
     end
     function delete(obj)
       if obj.id

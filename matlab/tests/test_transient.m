@@ -6,6 +6,11 @@
 % printed creepages and element counts (tests/data/transient/catt_to_cart.csv,
 % eve70a/CONTACT d431cdb); a trial repeated after rewind and after restore
 % gives the same bits; the traction sums to Fx; errors name their input.
+% The shift and two steps world-fixed equal `creepwork transient
+% --coordinates world` bitwise; the work field sums to W_step (1e-12); the
+% Jacobian at prescribed Fx (d xi_x / d Fx) equals a central difference of
+% two trials (h = 1e-5 mu N) to 1e-6; each step's USFD wear (its mild
+% regime) is k1 W_step (1e-12) and the map sums to the total.
 nx = 34; ny = 33; dx = 0.25e-3; x0 = -4e-3;
 mu = 0.4013; load = 0.4705; Fx = -0.657 * mu * load;
 grid = struct('kind', 'gap', 'nx', nx, 'ny', ny, 'x0', x0, 'y0', x0, 'dx', dx, 'dy', dx);
@@ -30,14 +35,17 @@ fclose(f);
                                getenv('CREEPWORK_CLI'), fullfile(dir, 'steps.csv'), ...
                                fullfile(dir, 'gap.csv')));
 assert(status == 0, out);
-lines = strsplit(strtrim(out), "\n");
-lines = lines(~strncmp(lines, '#', 1));
-assert(numel(lines) == n_steps, sprintf('%d lines from the CLI', numel(lines)));
-% columns: step line dq_m xi_x xi_y phi Fx Fy Mz n_adhesion n_slip W_step
-cli = zeros(n_steps, 12);
-for k = 1:n_steps
-  cli(k, :) = str2double(strsplit(strtrim(lines{k})));  % strtod: correctly rounded
-end
+cli = transient_cli_rows(out, n_steps);
+f = fopen(fullfile(dir, 'steps3.csv'), 'w');
+fprintf(f, 'dq_m,Fx\n0,%.17g\n%.17g,%.17g\n%.17g,%.17g\n', Fx, dx, Fx, dx, Fx);
+fclose(f);
+[status, out] = system(sprintf(['%s transient --steps %s --gap %s --prescribe forces ' ...
+                                '--coordinates world ' ...
+                                '--N 0.4705 --G 1e6 --nu 0.28 --mu 0.4013 2>/dev/null'], ...
+                               getenv('CREEPWORK_CLI'), fullfile(dir, 'steps3.csv'), ...
+                               fullfile(dir, 'gap.csv')));
+assert(status == 0, out);
+cli_world = transient_cli_rows(out, 3);
 confirm_recursive_rmdir(false, 'local');
 rmdir(dir, 's');
 
@@ -48,7 +56,7 @@ fclose(fid);
 warning('off', 'creepwork:implausibleUnits');  % CONTACT's example: a 0.47 N load
 t = creepwork.Transient(grid, contact{:});
 assert(t.nx == nx && t.ny == ny);
-names = {'xi_x', 'xi_y', 'phi', 'Fx', 'Fy', 'Mz', 'n_adhesion', 'n_slip', 'W_step'};
+names = {'xi_x', 'xi_y', 'phi', 'Fx', 'Fy', 'Mz', 'n_adhesion', 'n_slip', 'W_step', 'W_slip'};
 for k = 1:n_steps
   r = t.step('dq', (k > 1) * dx, 'Fx', Fx);
   t.commit();
@@ -101,6 +109,66 @@ expect_error(@() creepwork.Transient(grid, 'gap', h, 'G', 1e6, 'mu', mu), ...
              'creepwork:missingInput', '^N: missing');
 expect_error(@() creepwork.Transient(grid, contact{:}, 'gap', h.'), ...
              'creepwork:CW_ERR_INVALID_INPUT', 'transposed');
+
+% World-fixed coordinates: the CLI's bits.
+w = creepwork.Transient(grid, contact{:});
+expect_error(@() w.set_coordinates('ground'), 'creepwork:badValue', 'coordinates');
+expect_error(@() w.set_coordinates(7), 'creepwork:CW_ERR_UNKNOWN_OPTION', 'coordinates');
+w.set_coordinates('world');
+for k = 1:3
+  r = w.step('dq', (k > 1) * dx, 'Fx', Fx);
+  w.commit();
+  for c = 1:numel(names)
+    assert(r.(names{c}) == cli_world(k, c + 3), sprintf('world step %d %s', k, names{c}));
+  end
+end
+delete(w);
+
+% The work field, the Jacobian and wear over steps.
+t.start_zero();
+expect_error(@() t.jacobian(), 'creepwork:CW_ERR_NO_SOLUTION', '.');
+k1 = 5.3e-9;  % cw_wear_params_init's usfd_k1
+total = 0;
+for k = 1:4
+  r = t.step('dq', (k > 1) * dx, 'Fx', Fx);
+  t.commit();
+  m = t.add_wear();
+  if k == 1
+    assert(m == 0);
+  else
+    assert(abs(m / (k1 * r.W_step) - 1) <= 1e-12, sprintf('step %d wear', k));
+  end
+  total = total + m;
+end
+ww = t.wear();
+assert(abs(ww.mass / total - 1) <= 1e-12 && abs(sum(ww.mass_map(:)) / total - 1) <= 1e-12);
+assert(all(size(ww.mass_map) == [nx, ny]));
+expect_error(@() t.add_wear('law', 9), 'creepwork:CW_ERR_UNKNOWN_OPTION', 'law');
+t.reset_wear();
+assert(t.wear().mass == 0);
+r = t.step('dq', dx, 'Fx', -0.5 * mu * load);
+fw = t.fields();
+assert(abs(sum(fw.work(:)) / r.W_step - 1) <= 1e-12);
+J = t.jacobian();
+assert(all(size(J) == [3, 3]));
+hF = 1e-5 * mu * load;
+side = zeros(1, 2);
+for k = 1:2
+  q = t.step('dq', dx, 'Fx', -0.5 * mu * load + (3 - 2 * k) * hF);
+  side(k) = q.xi_x;
+  t.rewind();
+end
+fd = (side(1) - side(2)) / (2 * hF);
+assert(abs(fd / J(1, 1) - 1) <= 1e-6, sprintf('d xi_x / d Fx: %.9e vs %.9e', J(1, 1), fd));
+
+% FASTSIM's transient form refuses what is the exact model's.
+s = creepwork.Transient(grid, contact{:}, 'model', 'fastsim');
+expect_error(@() s.set_coordinates('world'), 'creepwork:CW_ERR_INVALID_INPUT', 'CW_MODEL_FASTSIM');
+s.step('dq', 0, 'Fx', Fx);
+expect_error(@() s.jacobian(), 'creepwork:CW_ERR_INVALID_INPUT', 'CW_MODEL_FASTSIM');
+delete(s);
+
 delete(t);
 expect_error(@() t.step('dq', dx, 'xi_x', 1e-3), 'creepwork:badHandle', 'no such creepwork transient');
 disp('creepwork.Transient: the CLI''s bits and CONTACT''s digits on catt_to_cart');
+

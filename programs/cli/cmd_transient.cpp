@@ -30,6 +30,11 @@ std::vector<OptionSpec> transient_options()
     return {{"steps", OptionKind::text, {}},
             {"model", OptionKind::choice, {"exact", "fastsim"}},
             {"gap", OptionKind::text, {}},
+            {"a", OptionKind::number, {}},
+            {"b", OptionKind::number, {}},
+            {"nx", OptionKind::integer, {}},
+            {"ny", OptionKind::integer, {}},
+            {"box-scale", OptionKind::number, {}},
             {"N", OptionKind::number, {}},
             {"approach", OptionKind::number, {}},
             {"normal-method", OptionKind::choice, {"exact", "semi_hertz"}},
@@ -41,6 +46,7 @@ std::vector<OptionSpec> transient_options()
             {"spin-offset", OptionKind::number, {}},
             {"prescribe", OptionKind::choice, {"creepages", "forces"}},
             {"start", OptionKind::choice, {"zero", "steady"}},
+            {"coordinates", OptionKind::choice, {"contact", "world"}},
             {"format", OptionKind::choice, {"text", "json"}},
             {"out", OptionKind::text, {}},
             {"force", OptionKind::flag, {}},
@@ -158,6 +164,7 @@ JsonObject step_json(const cw_transient_result& r, long line)
         .integer("n_adhesion", r.n_adhesion)
         .integer("n_slip", r.n_slip)
         .number("W_step", r.W_step)
+        .number("W_slip", r.W_slip)
         .integer("iterations", r.iterations);
     return j;
 }
@@ -180,21 +187,44 @@ int command_transient(int argc, char** argv, int first)
 {
     ParsedOptions o;
     if (parse_or_help(transient_options(), argc, argv, first, usage_transient(), o)) return kExitOk;
-    for (const char* req : {"steps", "gap"})
-        if (!o.has(req))
-            throw usage_error(std::string("--") + req, "is required (see creepwork transient --help)");
+    if (!o.has("steps"))
+        throw usage_error("--steps", "is required (see creepwork transient --help)");
+    // The contact: a gap file, or an ellipse (--a --b) on the uniform grid.
+    const bool ellipse = o.has("a") || o.has("b");
+    if (ellipse == o.has("gap"))
+        throw usage_error("--gap", "give the contact's gap file --gap or its semi-axes --a and --b "
+                                   "(one of them)");
+    if (ellipse && !(o.has("a") && o.has("b")))
+        throw usage_error(o.has("a") ? "--b" : "--a", "is required with an elliptic contact "
+                                                      "(--a and --b)");
+    if (ellipse && o.has("approach"))
+        throw usage_error("--approach", "is for a gap file: an elliptic contact takes --N");
     if (o.has("N") == o.has("approach"))
         throw usage_error("--N", "give the normal force --N or the approach --approach (one of them)");
     const std::string out_dir = o.text("out", "");
     if (!out_dir.empty()) check_output_target(out_dir, "--out", o.has("force"));
     const bool forces = o.text("prescribe", "creepages") == "forces";
     const std::vector<StepRow> rows = read_steps(o.text("steps", ""), forces);
-    GapFile g = read_gap_file(o.text("gap", ""));
+    GapFile g;
+    if (ellipse) {
+        g.grid = library_default_grid();
+        g.grid.kind = CW_GRID_UNIFORM;
+        g.grid.nx = o.integer("nx", g.grid.nx);
+        g.grid.ny = o.integer("ny", g.grid.ny);
+        g.grid.box_scale = o.number("box-scale", g.grid.box_scale);
+    } else {
+        g = read_gap_file(o.text("gap", ""));
+    }
 
     cw_params p = library_default_params();
     p.model = o.text("model", "exact") == "fastsim" ? CW_MODEL_FASTSIM : CW_MODEL_EXACT;
-    p.gap = g.h.data();
-    p.gap_len = g.h.size();
+    if (ellipse) {
+        p.a = o.number("a", 0.0);
+        p.b = o.number("b", 0.0);
+    } else {
+        p.gap = g.h.data();
+        p.gap_len = g.h.size();
+    }
     if (o.has("approach")) {
         p.normal_load = CW_NORMAL_APPROACH;
         p.approach = o.number("approach", 0.0);
@@ -218,6 +248,11 @@ int command_transient(int argc, char** argv, int first)
     char message[512] = "";
     const int made = cw_transient_create(&g.grid, &p, &h.t, message, sizeof message);
     if (made != CW_OK) library_failure(made, "creepwork transient", message);
+    if (o.text("coordinates", "contact") == "world") {
+        const int s = cw_transient_set_coordinates(h.t, CW_COORDINATES_WORLD);
+        if (s != CW_OK)
+            library_failure(s, "creepwork transient --coordinates world", cw_transient_last_error(h.t));
+    }
     const std::string steps = o.text("steps", "");
     if (o.text("start", "zero") == "steady") {
         const int s = cw_transient_start_steady(h.t, &rows.front().input, nullptr);
@@ -231,7 +266,7 @@ int command_transient(int argc, char** argv, int first)
     // Printed when every step succeeded: a refusal prints only its line.
     std::ostringstream out;
     if (!json)
-        out << "# step  line  dq_m  xi_x  xi_y  phi  Fx  Fy  Mz  n_adhesion  n_slip  W_step\n";
+        out << "# step  line  dq_m  xi_x  xi_y  phi  Fx  Fy  Mz  n_adhesion  n_slip  W_step  W_slip\n";
     else
         out << "[\n";
     for (size_t k = 0; k < rows.size(); ++k) {
@@ -259,7 +294,7 @@ int command_transient(int argc, char** argv, int first)
             for (double v : {r.xi_x, r.xi_y, r.phi, r.Fx, r.Fy, r.Mz})
                 out << "  " << round_trip_text(v);
             out << "  " << r.n_adhesion << "  " << r.n_slip << "  "
-                      << round_trip_text(r.W_step) << "\n";
+                      << round_trip_text(r.W_step) << "  " << round_trip_text(r.W_slip) << "\n";
         }
     }
     if (json) out << "]\n";

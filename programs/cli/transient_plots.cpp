@@ -77,14 +77,14 @@ void write_transient_history(const std::string& dir, const std::vector<Transient
 {
     const std::string path = dir + "/history.csv";
     std::ofstream f(path);
-    f << "step,line,dq_m,xi_x,xi_y,phi,Fx_N,Fy_N,Mz_N_m,n_contact,n_adhesion,n_slip,W_step_J\n";
+    f << "step,line,dq_m,xi_x,xi_y,phi,Fx_N,Fy_N,Mz_N_m,n_contact,n_adhesion,n_slip,W_step_J,W_slip_J\n";
     char buf[512];
     for (size_t k = 0; k < steps.size(); ++k) {
         const cw_transient_result& r = steps[k].result;
         std::snprintf(buf, sizeof buf,
-                      "%zu,%ld,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%d,%d,%d,%.17g\n", k + 1,
+                      "%zu,%ld,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%d,%d,%d,%.17g,%.17g\n", k + 1,
                       steps[k].line, steps[k].input.dq, r.xi_x, r.xi_y, r.phi, r.Fx, r.Fy, r.Mz,
-                      r.n_contact, r.n_adhesion, r.n_slip, r.W_step);
+                      r.n_contact, r.n_adhesion, r.n_slip, r.W_step, r.W_slip);
         f << buf;
     }
     if (!f) throw CliError(kExitFailure, "cannot write " + path);

@@ -652,12 +652,17 @@ const char* usage_transient()
 {
     return R"(usage: creepwork transient --steps STEPS.csv --gap GAP.csv (--N N | --approach A)
                           [options]
+       creepwork transient --steps STEPS.csv --a A --b B --N N [--nx NX --ny NY
+                          --box-scale S] [options]
 
 Transient rolling (doc/theory/transient.md): Kalker's exact theory with
 memory on the gap grid of GAP.csv (the file of creepwork solve --gap), in
 contact-fixed coordinates: the material moves through the contact from +x
 (the leading edge) by dq per step, and the tractions of each step start from
-those of the last. Every step is committed. SI units throughout.
+those of the last. Every step is committed. SI units throughout. With
+--coordinates world the grid stays with the material and the geometry moves
+over it by dq towards +x per step (the grid must hold the contact over the
+run).
 
 STEPS.csv: a header naming the columns, then one step per line ('#' lines
 and blank lines are skipped):
@@ -671,7 +676,10 @@ With --prescribe forces:
 
 options:
   --steps FILE        the steps (required)
-  --gap FILE          the contact's gap: header x_m,y_m,h_m (required)
+  --gap FILE          the contact's gap: header x_m,y_m,h_m, or
+  --a A, --b B        an elliptic (Hertzian) contact's semi-axes [m] on the
+                      exact model's uniform grid --nx, --ny, --box-scale
+                      (as creepwork solve --model exact --grid uniform)
   --N N               normal force [N], or
   --approach A        the approach [m] from the gap's datum
   --model M           exact (default: Kalker's exact theory) or fastsim
@@ -682,12 +690,15 @@ options:
   --tolerance T, --max-iterations K, --spin-offset S
                       as for creepwork solve --model exact
   --prescribe P       creepages (default) or forces
+  --coordinates C     contact (default: contact-fixed, CONTACT's T = 2) or
+                      world (world-fixed, T = 1: the normal problem per step)
   --start S           zero (default: zero tractions) or steady (the steady
                       rolling solution of the first line's creepages or
                       forces, then every line as a step)
   --format F          text (default: one line per step) or json: a list
                       with one object per step: line xi_x xi_y phi Fx Fy Mz
-                      n_contact n_adhesion n_slip W_step iterations
+                      n_contact n_adhesion n_slip W_step W_slip
+                      iterations
   --out DIR           also write DIR/history.csv (every step's numbers,
                       round-trip) and pictures: step_NNN.png per step (the
                       slip/adhesion state, both tractions, p_x along the
@@ -700,7 +711,9 @@ options:
 
 Outputs: xi_x, xi_y, phi as given or found; Fx, Fy, Mz on the wheel [N, N,
 N m], Mz about the gap file's origin; W_step the frictional work of the
-step [J].
+step [J], energy-consistent (in steady rolling dq times the steady model's
+W_macro); W_slip the dissipation of the step's own slip [J] (CONTACT's
+frictional work), below W_step by the numerical dissipation.
 )";
 }
 

@@ -10,14 +10,21 @@ import numpy as np
 from . import _errors
 from ._handle import Handle
 from ._library import CONSTANTS, DTYPES, address, lib
-from ._params import grid_record
+from ._params import WEAR_PARAMS, grid_record
 from ._solver import _params_record
 
 _MESSAGE_LEN = 512
 
-#: Field name -> CW_FIELD_* id of Transient.field (sx, sy: the slip of the step [m]).
+#: Field name -> CW_FIELD_* id of Transient.field (sx, sy: the slip of the step [m];
+#: work: the frictional work of each element over the step [J], summing to W_step).
 TRANSIENT_FIELDS = {name: CONSTANTS["CW_FIELD_" + name.upper()]
                     for name in ("x", "y", "pz", "px", "py", "sx", "sy")}
+TRANSIENT_FIELDS["work"] = CONSTANTS["CW_FIELD_WORK_CONSISTENT"]
+
+
+#: Transient(coordinates=...) -> CW_COORDINATES_* id.
+_COORDINATES = {"contact": CONSTANTS["CW_COORDINATES_CONTACT"],
+                "world": CONSTANTS["CW_COORDINATES_WORLD"]}
 
 
 class Transient(Handle):
@@ -36,15 +43,24 @@ class Transient(Handle):
     grid: a dict of cw_grid fields with kind "gap"; the keywords are
     solve()'s (gap, N or approach, normal_method, G, nu, mu, tolerance,
     max_iterations, spin_offset); model="fastsim" takes FASTSIM's transient
-    form instead of the exact theory (the default). step() is a
+    form instead of the exact theory (the default). coordinates:
+    "contact" (contact-fixed, CONTACT's T = 2) or "world" (world-fixed, T =
+    1, the exact model's: the grid stays with the material, the geometry
+    moves over it by dq towards +x per step and the normal problem is solved
+    per step). step() is a
     trial: repeated after rewind() it gives the same bits; commit() makes
     it the state; save() and restore() give and take the state."""
 
     _destroy = "cw_transient_destroy"
     _last_error = "cw_transient_last_error"
 
-    def __init__(self, grid: Any, params: Any = None, **keywords: Any) -> None:
+    def __init__(self, grid: Any, params: Any = None, coordinates: str = "contact",
+                 **keywords: Any) -> None:
         self._handle = ctypes.c_void_p()
+        if coordinates not in _COORDINATES:
+            raise _errors.BY_STATUS[CONSTANTS["CW_ERR_UNKNOWN_OPTION"]](
+                "Transient(): coordinates = %r is not one of %s"
+                % (coordinates, ", ".join(_COORDINATES)))
         keywords.setdefault("model", "exact")
         rec_grid = grid_record(grid, "Transient")
         keep = []  # arrays whose addresses the record holds, alive until create returns
@@ -55,6 +71,8 @@ class Transient(Handle):
         _errors.check(status, lambda: message.value)
         #: Cells along x and y.
         self.nx, self.ny = int(rec_grid["nx"]), int(rec_grid["ny"])
+        if coordinates != "contact":
+            self._check(lib.cw_transient_set_coordinates(self._live(), _COORDINATES[coordinates]))
         self._result = np.zeros((), DTYPES["cw_transient_result"])
         lib.cw_transient_result_init(address(self._result))
 
@@ -120,7 +138,8 @@ class Transient(Handle):
 
     def field(self, name: str) -> np.ndarray:
         """A field of the last step as an (ny, nx) array: x, y [m], pz, px, py
-        [Pa], sx, sy (the slip of the step [m])."""
+        [Pa], sx, sy (the slip of the step [m]), work (each element's
+        frictional work over the step [J]; the sum is W_step)."""
         if name not in TRANSIENT_FIELDS:
             raise _errors.BY_STATUS[CONSTANTS["CW_ERR_UNKNOWN_OPTION"]](
                 "Transient.field(): %r is not one of %s" % (name, ", ".join(TRANSIENT_FIELDS)))
@@ -128,6 +147,40 @@ class Transient(Handle):
         self._check(lib.cw_transient_get_field(self._live(), TRANSIENT_FIELDS[name],
                                                address(out), out.size))
         return out
+
+    def jacobian(self) -> np.ndarray:
+        """The derivative of the last step by its inputs, a (3, 3) array
+        J[r, c] = d(output r)/d(input c): rows Fx, Fy, Mz, columns xi_x,
+        xi_y, phi (a shift: the shift [m] and rotation [rad]); a prescribed
+        force and its found creepage trade places (Fx given: row 0 is xi_x,
+        column 0 Fx; Fy given too: row 1 is xi_y, column 1 Fy)."""
+        out = np.empty((3, 3))
+        self._check(lib.cw_transient_jacobian(self._live(), address(out), out.size))
+        return out
+
+    def add_wear(self, **law: Any) -> float:
+        """Adds the wear of the last step to the accumulated wear, by the law
+        the keywords give (the fields of cw_wear_params; pass_length is not
+        read): the step's work map per rolled distance dq through the law,
+        the mass of an element its rate times its area times dq (a shift
+        adds none). Returns the step's mass [kg]. Add each step once."""
+        rec = WEAR_PARAMS.record(law, "add_wear")
+        mass = ctypes.c_double()
+        self._check(lib.cw_transient_add_wear(self._live(), address(rec), ctypes.byref(mass)))
+        return mass.value
+
+    def wear(self) -> Dict[str, Any]:
+        """The accumulated wear: {"mass": total [kg], "mass_map": (ny, nx)
+        array [kg]}."""
+        out = np.empty((self.ny, self.nx))
+        mass = ctypes.c_double()
+        self._check(lib.cw_transient_get_wear(self._live(), address(out), out.size,
+                                              ctypes.byref(mass)))
+        return {"mass": mass.value, "mass_map": out}
+
+    def reset_wear(self) -> None:
+        """Sets the accumulated wear to zero."""
+        self._check(lib.cw_transient_reset_wear(self._live()))
 
     def state(self) -> np.ndarray:
         """The element states of the last step, an int (ny, nx) array (0

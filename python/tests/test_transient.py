@@ -15,12 +15,12 @@ DX = 0.25e-3
 FX = -0.657 * 0.4013 * 0.4705
 
 
-def catt_to_cart():
+def catt_to_cart(**options):
     x = -4e-3 + DX * np.arange(34)
     y = -4e-3 + DX * np.arange(33)
     h = 2.963 * (x[None, :] ** 2 + y[:, None] ** 2)  # (ny, nx): C order is [i + nx j]
     grid = {"kind": "gap", "nx": 34, "ny": 33, "x0": -4e-3, "y0": -4e-3, "dx": DX, "dy": DX}
-    return creepwork.Transient(grid, gap=h, N=0.4705, G=1e6, nu=0.28, mu=0.4013)
+    return creepwork.Transient(grid, gap=h, N=0.4705, G=1e6, nu=0.28, mu=0.4013, **options)
 
 
 def reference():
@@ -102,3 +102,101 @@ def test_fastsim_model_steady_start_is_the_steady_fastsim():
         assert abs(r["Fx"] - s["Fx"]) <= 1e-12 * mu_n
     with pytest.raises(creepwork.InvalidInputError, match="model"):
         creepwork.Transient(grid, model="calibrated", **contact)
+
+
+def test_work_map_and_jacobian():
+    """The work field adds up to W_step (1e-12) and W_step >= W_slip; the
+    Jacobian at prescribed Fx (d xi_x / d Fx) equals a central difference of
+    two trials (h = 1e-5 mu N) to 1e-6, and is the C API's (same bits)."""
+    with catt_to_cart() as t:
+        with pytest.raises(creepwork.NoSolutionError):
+            t.jacobian()
+        for k in range(4):
+            t.step(dq=0.0 if k == 0 else DX, Fx=FX)
+            t.commit()
+        r = t.step(dq=DX, Fx=-0.5 * 0.4013 * 0.4705)
+        assert abs(t.field("work").sum() / r["W_step"] - 1.0) <= 1e-12
+        assert r["W_step"] >= r["W_slip"] > 0.0
+        J = t.jacobian()
+        h = 1e-5 * 0.4013 * 0.4705
+        side = []
+        for d in (h, -h):
+            side.append(t.step(dq=DX, Fx=-0.5 * 0.4013 * 0.4705 + d)["xi_x"])
+            t.rewind()
+        fd = (side[0] - side[1]) / (2 * h)
+        assert abs(fd / J[0, 0] - 1.0) <= 1e-6
+
+
+def test_world_coordinates():
+    """World-fixed: the shift and two steps (the contact moves two elements,
+    still on the grid) give the contact-fixed creepages to 1e-6; a bad
+    coordinates value names itself."""
+    with catt_to_cart() as c, catt_to_cart(coordinates="world") as w:
+        for k in range(3):
+            a = c.step(dq=0.0 if k == 0 else DX, Fx=FX)
+            b = w.step(dq=0.0 if k == 0 else DX, Fx=FX)
+            c.commit()
+            w.commit()
+            assert abs(b["xi_x"] / a["xi_x"] - 1.0) <= 1e-6
+    with pytest.raises(ValueError, match="coordinates"):
+        catt_to_cart(coordinates="ground")
+
+
+def test_ellipse_on_uniform_grid():
+    """An elliptic contact on the exact model's uniform grid: the steady
+    start equals the steady exact model (creepwork.Solver on the same grid)
+    to 1e-6 mu N."""
+    grid = {"kind": "uniform", "nx": 32, "ny": 24, "box_scale": 1.1}
+    contact = dict(a=4e-3, b=2.5e-3, N=0.4705, G=1e6, nu=0.28, mu=0.4013)
+    with creepwork.Transient(grid, **contact) as t:
+        r = t.start_steady(xi_x=1e-3, xi_y=5e-4)
+    with creepwork.Solver(grid) as s:
+        steady = s.solve(model="exact", xi_x=1e-3, xi_y=5e-4, **contact)
+    mu_n = 0.4013 * 0.4705
+    assert abs(r["Fx"] - steady.Fx) <= 1e-6 * mu_n
+    assert abs(r["Fy"] - steady.Fy) <= 1e-6 * mu_n
+
+
+def test_wear_over_steps():
+    """USFD wear over the shift and four steps (all in the mild regime, mass
+    = k1 x work): each step's mass is k1 W_step (1e-12), the shift's zero;
+    the accumulated map sums to the total; a bad law names itself."""
+    k1 = 5.3e-9
+    with catt_to_cart() as t:
+        total = 0.0
+        for k in range(5):
+            r = t.step(dq=0.0 if k == 0 else DX, Fx=FX)
+            t.commit()
+            m = t.add_wear(law=0)
+            if k == 0:
+                assert m == 0.0
+            else:
+                assert abs(m / (k1 * r["W_step"]) - 1.0) <= 1e-12
+            total += m
+        w = t.wear()
+        assert abs(w["mass"] / total - 1.0) <= 1e-12
+        assert abs(w["mass_map"].sum() / total - 1.0) <= 1e-12
+        with pytest.raises(ValueError, match="law"):
+            t.add_wear(law=9)
+        t.reset_wear()
+        assert t.wear()["mass"] == 0.0
+
+
+def test_fastsim_takes_work_and_wear_refuses_world_and_jacobian():
+    """model="fastsim": the work field is its slip's dissipation, summing to
+    W_step (1e-12) with W_slip = W_step (an explicit step); each step's USFD
+    wear (mild regime) is k1 W_step (1e-12). World-fixed coordinates and the
+    step Jacobian are the exact model's: refused, naming CW_MODEL_FASTSIM."""
+    with pytest.raises(creepwork.InvalidInputError, match="CW_MODEL_FASTSIM"):
+        catt_to_cart(model="fastsim", coordinates="world")
+    with catt_to_cart(model="fastsim") as t:
+        for k in range(4):
+            r = t.step(dq=0.0 if k == 0 else DX, Fx=FX)
+            t.commit()
+            assert r["W_slip"] == r["W_step"] > 0.0
+            assert abs(t.field("work").sum() / r["W_step"] - 1.0) <= 1e-12
+            m = t.add_wear(law=0)
+            if k > 0:
+                assert abs(m / (5.3e-9 * r["W_step"]) - 1.0) <= 1e-12
+        with pytest.raises(creepwork.InvalidInputError, match="CW_MODEL_FASTSIM"):
+            t.jacobian()

@@ -4,7 +4,11 @@
 !   bits      the Cattaneo shift to Fx = -0.657 mu N and 14 rolling steps,
 !             then a rewound trial and a trial at Fx = -0.5 mu N: every
 !             total, the px and sx fields and the element states equal the C
-!             API's (argv 1, written by transient_language_cases) bitwise
+!             API's (argv 1, written by transient_language_cases) bitwise,
+!             and so do W_slip, each committed step's wear, the work field,
+!             the Jacobian of the last trial (jacobian(r, c) = the C API's
+!             [3 (r-1) + c-1]), the accumulated wear and its map, and the
+!             shift and two steps in world-fixed coordinates
 !   CONTACT   the shift and the creepages of cases 2 .. 15 as CONTACT prints
 !             them (argv 2: tests/data/transient/catt_to_cart.csv, eve70a/CONTACT
 !             d431cdb; %.3E), the adhesion and slip counts
@@ -12,7 +16,9 @@
 !             gives the same bits; commit without a trial is CW_ERR_NO_SOLUTION
 !   errors    through stat/errmsg, naming the input: dq beyond dx, |Fx| >= mu N,
 !             the calibrated model, words of another handle, a field array of the wrong
-!             shape, a handle never created; nothing written on error
+!             shape, a handle never created, coordinates = 7, world-fixed FASTSIM,
+!             a Jacobian without a step, wear law 9, a wear map of the wrong shape;
+!             nothing written on error
 program test_fortran_transient
    use, intrinsic :: iso_c_binding, only: c_double, c_int, c_int64_t, c_loc, c_size_t
    use creepwork
@@ -77,16 +83,19 @@ contains
 
    subroutine check_bits(path)
       character(len=*), intent(in) :: path
-      type(cw_transient_type) :: t
+      type(cw_transient_type) :: t, world
       type(cw_grid) :: grid
       type(cw_params) :: p
       type(cw_transient_input) :: s
       type(cw_transient_result) :: r
-      real(c_double) :: c(9), field(nx, ny), expected(nx*ny)
+      real(c_double) :: c(9), extra(2), field(nx, ny), expected(nx*ny), jac(3, 3), jv(9), mass, m
+      real(c_double) :: x(5)
       integer(c_int) :: state(nx, ny)
-      integer :: unit, ios, counts(4), id, n, expected_state(nx*ny), n_steps, n_fields
+      integer :: unit, ios, counts(4), id, n, expected_state(nx*ny), n_steps, n_fields, n_world
+      integer :: slip, row, col
       character(len=8) :: what
       call make(t, grid, p)
+      n_world = 0
       open (newunit=unit, file=path, status='old', action='read', iostat=ios)
       call check_true(ios == 0, 'open '//path)
       if (ios /= 0) return
@@ -97,7 +106,7 @@ contains
          if (ios /= 0) exit
          select case (line(1:1))
          case ('S')
-            read (line(2:), *) c, counts
+            read (line(2:), *) c, counts, extra
             n_steps = n_steps + 1
             write (what, '(i0)') n_steps
             s = force_step(c(1), 0.0_c_double)
@@ -114,7 +123,13 @@ contains
             end if
             call cw_transient_result_init(r)
             call t%step(s, r)
-            if (n_steps <= n_rolling + 1) call t%commit()
+            m = 0
+            if (n_steps <= n_rolling + 1) then
+               call t%commit()
+               call t%add_wear(step_mass=m)
+            end if
+            call check_same(r%W_slip, extra(1), 'step '//trim(what)//' W_slip')
+            call check_same(m, extra(2), 'step '//trim(what)//' wear mass')
             call check_same(r%xi_x, c(3), 'step '//trim(what)//' xi_x')
             call check_same(r%xi_y, c(4), 'step '//trim(what)//' xi_y')
             call check_same(r%phi, c(5), 'step '//trim(what)//' phi')
@@ -138,12 +153,44 @@ contains
             call t%get_state(state)
             call check_true(all(reshape(state, [nx*ny]) == expected_state), 'element states')
             n_fields = n_fields + 1
+         case ('J')
+            read (line(2:), *) jv
+            call t%jacobian(jac)
+            do row = 1, 3
+               do col = 1, 3
+                  call check_same(jac(row, col), jv(3*(row - 1) + col), 'jacobian')
+               end do
+            end do
+            n_fields = n_fields + 1
+         case ('M')
+            read (line(2:), *) mass, n, expected
+            call t%get_wear(m, field)
+            call check_same(m, mass, 'accumulated wear')
+            call check_true(all(reshape(field, [nx*ny]) == expected), 'wear map bitwise')
+            n_fields = n_fields + 1
+         case ('X')
+            read (line(2:), *) x, slip
+            if (n_world == 0) then
+               call make(world, grid, p)
+               call world%set_coordinates(CW_COORDINATES_WORLD)
+            end if
+            n_world = n_world + 1
+            s = force_step(x(1), 0.0_c_double)
+            s%Fx = x(2)
+            call world%step(s, r)
+            call world%commit()
+            call check_same(r%xi_x, x(3), 'world step xi_x')
+            call check_same(r%Fx, x(4), 'world step Fx')
+            call check_same(r%W_step, x(5), 'world step W_step')
+            call check_int(int(r%n_slip), slip, 'world step n_slip')
          end select
       end do
       close (unit)
       call check_int(n_steps, n_rolling + 2, 'steps read')
-      call check_int(n_fields, 3, 'fields and states read')
+      call check_int(n_fields, 6, 'fields, states, Jacobian and wear read')
+      call check_int(n_world, 3, 'world-fixed steps read')
       call t%destroy()
+      call world%destroy()
    end subroutine check_bits
 
    ! CONTACT's printed creepage (the shift in mm there) and element counts.
@@ -236,7 +283,8 @@ contains
       type(cw_transient_input) :: s
       type(cw_transient_result) :: r
       integer(c_int64_t) :: junk(3)
-      real(c_double) :: wrong(ny, nx)
+      real(c_double) :: wrong(ny, nx), jac(3, 3), mass
+      type(cw_wear_params) :: law
       integer :: stat
       character(len=:), allocatable :: msg
       call make(t, grid, p)
@@ -257,6 +305,31 @@ contains
       call t%get_field(CW_FIELD_PX, wrong, stat=stat, errmsg=msg)
       call check_int(stat, CW_ERR_INVALID_INPUT, 'a (ny, nx) array refused')
       call check_true(index(msg, '(33, 34)') > 0, 'the message names the shape: '//msg)
+      call t%get_wear(mass, wrong, stat=stat, errmsg=msg)
+      call check_int(stat, CW_ERR_INVALID_INPUT, 'a (ny, nx) wear map refused')
+      call check_true(index(msg, '(33, 34)') > 0, 'the message names the shape: '//msg)
+      call cw_wear_params_init(law)
+      law%law = 9
+      call t%add_wear(law, stat=stat, errmsg=msg)
+      call check_int(stat, CW_ERR_UNKNOWN_OPTION, 'wear law 9 refused')
+      call check_true(index(msg, 'law') > 0, 'the message names the law: '//msg)
+      call t%set_coordinates(7, stat=stat, errmsg=msg)
+      call check_int(stat, CW_ERR_UNKNOWN_OPTION, 'coordinates = 7 refused')
+      call check_true(index(msg, 'coordinates') > 0, 'the message names coordinates: '//msg)
+      call t%start_zero()
+      jac = -7.0_c_double
+      call t%jacobian(jac, stat=stat, errmsg=msg)
+      call check_int(stat, CW_ERR_NO_SOLUTION, 'a Jacobian without a step')
+      call check_true(all(jac == -7.0_c_double), 'nothing written on error (Jacobian)')
+      call t%reset_wear()
+      call t%get_wear(mass)
+      call check_same(mass, 0.0_c_double, 'reset_wear clears the mass')
+      call t%destroy()
+      p%model = CW_MODEL_FASTSIM
+      call t%create(grid, p)
+      call t%set_coordinates(CW_COORDINATES_WORLD, stat=stat, errmsg=msg)
+      call check_int(stat, CW_ERR_INVALID_INPUT, 'world-fixed FASTSIM refused')
+      call check_true(index(msg, 'CW_MODEL_FASTSIM') > 0, 'the message names the model: '//msg)
       call t%destroy()
       p%model = CW_MODEL_CALIBRATED
       call t%create(grid, p, stat=stat, errmsg=msg)

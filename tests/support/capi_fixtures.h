@@ -107,6 +107,22 @@ static inline cw_grid cw_test_catt_to_cart(double* h, cw_params* params)
     return g;
 }
 
+/* An elliptic contact on the exact model's uniform grid (32 x 24, box
+ * scale 1.1): a = 4 mm, b = 2.5 mm and catt_to_cart's load and material. */
+static inline cw_grid cw_test_transient_ellipse(cw_params* params)
+{
+    cw_grid g = cw_test_grid(CW_GRID_UNIFORM, 32, 24, 1.1);
+    cw_params_init(params);
+    params->model = CW_MODEL_EXACT;
+    params->a = 4e-3;
+    params->b = 2.5e-3;
+    params->normal_force = 0.4705;
+    params->G = 1e6;
+    params->nu = 0.28;
+    params->mu = 0.4013;
+    return g;
+}
+
 /* Elements of the solver's grid. */
 static inline size_t cw_cells(const cw_solver* s)
 {

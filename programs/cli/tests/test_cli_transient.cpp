@@ -17,6 +17,7 @@
 
 #include <creepwork/creepwork.h>
 
+#include "capi_fixtures.h"
 #include "cli_checks.hpp"
 #include "test_files.hpp"
 // Last: cmocka defines macros (fail, skip) that clash with the C++ library.
@@ -66,6 +67,21 @@ cw_transient* library_handle(const cw_grid& g, const std::vector<double>& h)
     return t;
 }
 
+// Step k of catt_to_cart at Fx (k = 0: the shift; then dq = dx), committed.
+cw_transient_result force_step(cw_transient* t, int k)
+{
+    cw_transient_input s;
+    cw_transient_input_init(&s);
+    s.dq = k == 0 ? 0.0 : kDx;
+    s.prescribe = CW_PRESCRIBE_FX;
+    s.Fx = kFx;
+    cw_transient_result r;
+    cw_transient_result_init(&r);
+    assert_int_equal(cw_transient_step(t, &s, &r), CW_OK);
+    assert_int_equal(cw_transient_commit(t), CW_OK);
+    return r;
+}
+
 const std::vector<std::string> kContact = {"--N", "0.4705", "--G", "1e6", "--nu", "0.28",
                                            "--mu", "0.4013"};
 
@@ -88,15 +104,7 @@ void transient_json_matches_library(void**)
     assert_int_equal(j.array.size(), 6);
     cw_transient* t = library_handle(g, h);
     for (int k = 0; k < 6; ++k) {
-        cw_transient_input s;
-        cw_transient_input_init(&s);
-        s.dq = k == 0 ? 0.0 : kDx;
-        s.prescribe = CW_PRESCRIBE_FX;
-        s.Fx = kFx;
-        cw_transient_result lib;
-        cw_transient_result_init(&lib);
-        assert_int_equal(cw_transient_step(t, &s, &lib), CW_OK);
-        assert_int_equal(cw_transient_commit(t), CW_OK);
+        const cw_transient_result lib = force_step(t, k);
         const cwtest::Json& o = j.array[k];
         // The JSON prints each number's shortest exact text: the same bits.
         assert_true(o.num("xi_x") == lib.xi_x);
@@ -104,6 +112,7 @@ void transient_json_matches_library(void**)
         assert_true(o.num("Fy") == lib.Fy);
         assert_true(o.num("Mz") == lib.Mz);
         assert_true(o.num("W_step") == lib.W_step);
+        assert_true(o.num("W_slip") == lib.W_slip);
         assert_int_equal(static_cast<int>(o.num("n_adhesion")), lib.n_adhesion);
         assert_int_equal(static_cast<int>(o.num("n_slip")), lib.n_slip);
         assert_int_equal(static_cast<int>(o.num("line")), k + 2);
@@ -170,6 +179,10 @@ void transient_bad_inputs_fail_cleanly(void**)
                            "no load");
     cwtest::expect_refusal(cwtest::cli({"transient", "--gap", gap, "--N", "1"}), 2, "--steps",
                            "no steps file");
+    // World-fixed coordinates are the exact model's: FASTSIM's are refused.
+    cwtest::expect_refusal(run("dq_m,xi_x\n0,1e-6\n", {"--model", "fastsim", "--coordinates",
+                                                      "world"}),
+                           2, "CW_MODEL_FASTSIM", "world-fixed FASTSIM");
 }
 
 
@@ -220,15 +233,16 @@ void transient_out_writes_history(void**)
         cwtest::parse_or_fail(cwtest::cli_ok(cwtest::with(run, {"--out", out, "--no-plots"})).out);
     const std::vector<std::vector<double>> rows = number_rows(out + "/history.csv", ',');
     assert_int_equal(rows.size(), 15);
-    // step,line,dq_m,xi_x,xi_y,phi,Fx_N,Fy_N,Mz_N_m,n_contact,n_adhesion,n_slip,W_step_J
+    // step,line,dq_m,xi_x,xi_y,phi,Fx_N,Fy_N,Mz_N_m,n_contact,n_adhesion,n_slip,W_step_J,
+    // W_slip_J
     const char* keys[] = {"xi_x", "xi_y", "phi", "Fx", "Fy", "Mz", "n_contact", "n_adhesion",
-                          "n_slip", "W_step"};
+                          "n_slip", "W_step", "W_slip"};
     for (size_t k = 0; k < rows.size(); ++k) {
-        assert_int_equal(rows[k].size(), 13);
+        assert_int_equal(rows[k].size(), 14);
         assert_true(rows[k][0] == double(k + 1));
         assert_true(rows[k][1] == j.array[k].num("line"));
         assert_true(rows[k][2] == (k == 0 ? 0.0 : kDx));
-        for (size_t c = 0; c < 10; ++c)
+        for (size_t c = 0; c < 11; ++c)
             if (!(rows[k][3 + c] == j.array[k].num(keys[c])))
                 fail_msg("step %zu %s: %.17g in history.csv, %.17g in the JSON", k + 1, keys[c],
                          rows[k][3 + c], j.array[k].num(keys[c]));
@@ -293,6 +307,86 @@ void transient_out_draws_steps(void**)
 
 } // namespace
 
+// --coordinates world: the JSON equals, bit for bit, a library handle set
+// to CW_COORDINATES_WORLD (the shift and two steps: the contact moves two
+// elements, still on the grid), and its creepage the contact-fixed run's
+// to 1e-6; a bad value names the option.
+void transient_world_coordinates(void**)
+{
+    std::vector<double> h;
+    cw_grid g;
+    const std::string gap = write_gap(h, g);
+    char line[96];
+    std::string steps = "dq_m,Fx\n";
+    for (int k = 0; k < 3; ++k) {
+        std::snprintf(line, sizeof line, "%.17g,%.17g\n", k == 0 ? 0.0 : kDx, kFx);
+        steps += line;
+    }
+    const std::string file = cwtest::scratch_file("steps_world.csv", steps);
+    const std::vector<std::string> args = {"transient", "--steps", file, "--gap", gap,
+                                           "--prescribe", "forces", "--format", "json"};
+    std::vector<std::string> world = args;
+    world.insert(world.end(), {"--coordinates", "world"});
+    const cwtest::Json jw = cwtest::parse_or_fail(cwtest::cli_ok(cwtest::with(world, kContact)).out);
+    const cwtest::Json jc = cwtest::parse_or_fail(cwtest::cli_ok(cwtest::with(args, kContact)).out);
+    assert_int_equal(jw.array.size(), 3);
+    cw_transient* t = library_handle(g, h);
+    assert_int_equal(cw_transient_set_coordinates(t, CW_COORDINATES_WORLD), CW_OK);
+    for (int k = 0; k < 3; ++k) {
+        const cw_transient_result lib = force_step(t, k);
+        assert_true(jw.array[k].num("xi_x") == lib.xi_x);
+        assert_true(jw.array[k].num("W_step") == lib.W_step);
+        assert_true(std::fabs(jw.array[k].num("xi_x") / jc.array[k].num("xi_x") - 1.0) <= 1e-6);
+    }
+    cw_transient_destroy(t);
+    std::vector<std::string> bad = args;
+    bad.insert(bad.end(), {"--coordinates", "ground"});
+    cwtest::expect_refusal(cwtest::cli(cwtest::with(bad, kContact)), 2, "--coordinates",
+                           "a coordinates value that is not contact or world");
+}
+
+// An elliptic contact (--a --b on the uniform grid --nx --ny --box-scale):
+// the JSON equals, bit for bit, a library handle on CW_GRID_UNIFORM; a
+// contact given both ways, or half an ellipse, is refused naming the option.
+void transient_ellipse(void**)
+{
+    const std::string file =
+        cwtest::scratch_file("steps_ellipse.csv", "dq_m,xi_x\n0,1e-7\n2.75e-4,1e-3\n2.75e-4,1e-3\n");
+    const std::vector<std::string> args = {"transient", "--steps", file, "--a", "4e-3", "--b",
+                                           "2.5e-3", "--nx", "32", "--ny", "24", "--box-scale",
+                                           "1.1", "--format", "json"};
+    const cwtest::Json j = cwtest::parse_or_fail(cwtest::cli_ok(cwtest::with(args, kContact)).out);
+    assert_int_equal(j.array.size(), 3);
+    cw_params p;
+    const cw_grid g = cw_test_transient_ellipse(&p);
+    cw_transient* t = nullptr;
+    assert_int_equal(cw_transient_create(&g, &p, &t, nullptr, 0), CW_OK);
+    for (int k = 0; k < 3; ++k) {
+        cw_transient_input s;
+        cw_transient_input_init(&s);
+        s.dq = k == 0 ? 0.0 : 2.75e-4;
+        s.xi_x = k == 0 ? 1e-7 : 1e-3;
+        cw_transient_result lib;
+        cw_transient_result_init(&lib);
+        assert_int_equal(cw_transient_step(t, &s, &lib), CW_OK);
+        assert_int_equal(cw_transient_commit(t), CW_OK);
+        assert_true(j.array[k].num("Fx") == lib.Fx);
+        assert_true(j.array[k].num("W_step") == lib.W_step);
+    }
+    cw_transient_destroy(t);
+    std::vector<double> h;
+    cw_grid gg;
+    const std::string gap = write_gap(h, gg);
+    cwtest::expect_refusal(
+        cwtest::cli(cwtest::with({"transient", "--steps", file, "--gap", gap, "--a", "4e-3", "--b",
+                                  "2.5e-3"},
+                                 kContact)),
+        2, "--gap", "a contact given both as a gap file and as an ellipse");
+    cwtest::expect_refusal(
+        cwtest::cli(cwtest::with({"transient", "--steps", file, "--a", "4e-3"}, kContact)), 2,
+        "--b", "half an ellipse");
+}
+
 int main(int argc, char** argv)
 {
     if (!cwtest::set_up(argc, argv, "test_cli_transient", {"creepwork", "scratch"})) return 2;
@@ -302,6 +396,8 @@ int main(int argc, char** argv)
         cmocka_unit_test(transient_bad_inputs_fail_cleanly),
         cmocka_unit_test(transient_out_writes_history),
         cmocka_unit_test(transient_out_draws_steps),
+        cmocka_unit_test(transient_world_coordinates),
+        cmocka_unit_test(transient_ellipse),
     };
     return cw_run_tests(tests, cwtest::g_tools.test);
 }
