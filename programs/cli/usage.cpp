@@ -713,7 +713,8 @@ Outputs: xi_x, xi_y, phi as given or found; Fx, Fy, Mz on the wheel [N, N,
 N m], Mz about the gap file's origin; W_step the frictional work of the
 step [J], energy-consistent (in steady rolling dq times the steady model's
 W_macro); W_slip the dissipation of the step's own slip [J] (CONTACT's
-frictional work), below W_step by the numerical dissipation.
+frictional work): the slip weighted by the new traction, below W_step in
+steady rolling, 2 W_step at a shift from rest.
 )";
 }
 
