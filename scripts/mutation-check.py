@@ -916,6 +916,22 @@ MUTANTS += [
          new="        const LocalLaw local{law_, law_.coefficient(0.0), V_};",
          tests=EXACT_LAW, require=EXACT_LAW),
 ]
+# The exact models' law through the doors: mu_min, mu_max against the law
+# at the exported slip speeds, and a Coulomb solve after a law's on one
+# handle against a fresh handle's (C ABI, Python; the CLI, one solve per
+# run, the range only).
+EXACT_LAW_DOORS = ["test_capi_exact_law", "python_test_friction",
+                   "cli_exact_law_json_matches_library"]
+MUTANTS += [
+    dict(id="exact-law-range", what="the exact models report mu_max as mu_min",
+         file="core/exact/exact_law.hpp",
+         old="        mu_min = info.mu_min;", new="        mu_min = info.mu_max;",
+         tests=EXACT_LAW_DOORS),
+    dict(id="exact-law-clear-warm", what="a Coulomb solve after a law's starts warm from the "
+         "law's solution", file="core/exact/exact_model.hpp",
+         old="        if (law_.clear()) has_previous_ = false;", new="        law_.clear();",
+         tests=EXACT_LAW_DOORS[:2]),
+]
 # The friction law through the doors: CONTACT's tractcurv rows and Polach's
 # closed form through the C ABI, Python, Fortran, the CLI and campaigns.
 FRICTION_DOORS = [

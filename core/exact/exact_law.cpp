@@ -8,15 +8,19 @@
 
 namespace creepwork {
 
-void ExactLaw::set(const SlipSpeedLaw& law, double V)
+bool ExactLaw::set(const SlipSpeedLaw& law, double V)
 {
     check_slip_speed_law(law);
     if (!(std::isfinite(V) && V > 0.0))
         reject_input("V", V,
                      "must be finite and > 0 [m/s] (the rolling speed) for a law of the slip speed");
+    const bool same = active_ && law.kind == law_.kind && law.mu_kin == law_.mu_kin &&
+                      law.mu_e1 == law_.mu_e1 && law.s_h1 == law_.s_h1 &&
+                      law.mu_e2 == law_.mu_e2 && law.s_h2 == law_.s_h2 && V == V_;
     law_ = law;
     V_ = V;
     active_ = true;
+    return !same;
 }
 
 double ExactLaw::coefficient(const ContactInput& in) const

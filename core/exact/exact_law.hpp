@@ -18,10 +18,27 @@ namespace creepwork {
 class ExactLaw {
 public:
     // Throws Error(invalid_input) naming the input: the law's parameters, or
-    // V unless finite and > 0 [m/s].
-    void set(const SlipSpeedLaw& law, double V);
-    void clear() { active_ = false; }
+    // V unless finite and > 0 [m/s]. True when it changes the law (the
+    // model's warm start belongs to the last law; the solver sets the law
+    // before every solve).
+    bool set(const SlipSpeedLaw& law, double V);
+    // True when a law was set (the next solve is then cold).
+    bool clear()
+    {
+        const bool was = active_;
+        active_ = false;
+        return was;
+    }
     bool active() const { return active_; }
+    // Under a law, info's range of mu (diagnose) into mu_min, mu_max; false
+    // under Coulomb's law (ContactModel::friction_range).
+    bool friction_range(const TangentialInfo& info, double& mu_min, double& mu_max) const
+    {
+        if (!active_) return false;
+        mu_min = info.mu_min;
+        mu_max = info.mu_max;
+        return true;
+    }
     // The coefficient that scales the tractions: mu(0) under a law, in.mu
     // otherwise.
     double coefficient(const ContactInput& in) const;

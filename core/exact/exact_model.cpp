@@ -165,8 +165,7 @@ void ExactModel::remember(double ratio, double nu)
 
 void ExactModel::set_law(const SlipSpeedLaw& law, double V)
 {
-    law_.set(law, V);
-    has_previous_ = false; // the warm start's history belongs to the last law
+    if (law_.set(law, V)) has_previous_ = false; // the warm start's history is the last law's
 }
 
 void ExactModel::validate(const ContactInput& in) const

@@ -71,8 +71,18 @@ public:
     // mu(0) p0). Throws Error(invalid_input) naming the input (the law's
     // parameters, V). The Jacobian takes the law (exact_jacobian.cpp).
     void set_law(const SlipSpeedLaw& law, double V) override;
-    // Back to Coulomb's law with input.mu.
-    void clear_law() override { law_.clear(); }
+    // Back to Coulomb's law with input.mu (the next solve is cold after a
+    // law's).
+    void clear_law() override
+    {
+        if (law_.clear()) has_previous_ = false;
+    }
+    // Under a law: the range of mu over the last solve's slipping elements
+    // (mu(0) when none slips); false under Coulomb's law.
+    bool friction_range(double& mu_min, double& mu_max) const override
+    {
+        return law_.friction_range(info_, mu_min, mu_max);
+    }
 
     const ExactSolveInfo& info() const { return info_; }
     int nx() const { return nx_; }

@@ -295,8 +295,7 @@ void GapExactModel::remember(double nu)
 
 void GapExactModel::set_law(const SlipSpeedLaw& law, double V)
 {
-    law_.set(law, V);
-    has_previous_ = false; // the warm start's history belongs to the last law
+    if (law_.set(law, V)) has_previous_ = false; // the warm start's history is the last law's
 }
 
 SolveTotals GapExactModel::solve(const ContactInput& in, SolveMode mode)

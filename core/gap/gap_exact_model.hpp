@@ -78,8 +78,18 @@ public:
     // is mu(0) p_max and input.mu is not read. Throws Error(invalid_input)
     // naming the input. The Jacobian takes the law.
     void set_law(const SlipSpeedLaw& law, double V) override;
-    // Back to Coulomb's law with input.mu.
-    void clear_law() override { law_.clear(); }
+    // Back to Coulomb's law with input.mu (the next solve is cold after a
+    // law's).
+    void clear_law() override
+    {
+        if (law_.clear()) has_previous_ = false;
+    }
+    // Under a law: the range of mu over the last solve's slipping elements
+    // (mu(0) when none slips); false under Coulomb's law.
+    bool friction_range(double& mu_min, double& mu_max) const override
+    {
+        return law_.friction_range(info_, mu_min, mu_max);
+    }
 
     const GapExactSolveInfo& info() const { return info_; }
     // dN/d(approach) [N/m] at the last solve, its normal method's own

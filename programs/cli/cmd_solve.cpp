@@ -38,9 +38,11 @@ int command_solve(int argc, char** argv, int first)
     if (!out.empty()) check_output_target(out, "--out", opts.has("force"));
 
     ContactSolver solver(c.grid);
-    // The law at every element gives forces only (no work map, no fields).
+    // FASTSIM with the law at every element gives forces only (no work map,
+    // no fields); the exact model gives every field under a law.
     const bool forces_only = c.params.friction_law != CW_FRICTION_COULOMB &&
-                             c.params.friction_speed == CW_FRICTION_SPEED_LOCAL;
+                             c.params.friction_speed == CW_FRICTION_SPEED_LOCAL &&
+                             c.params.model == CW_MODEL_FASTSIM;
     if (forces_only && (!out.empty() || surface.temperature || surface.damage))
         throw usage_error(!out.empty() ? "--out" : surface.temperature ? "--temperature"
                                                                        : "--damage",

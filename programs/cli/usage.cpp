@@ -137,8 +137,9 @@ strips or the uniform grid; doc/theory/friction.md):
                     --friction-law polach --mu MU0 --polach-A A --polach-B B
                     is the same
   --friction-speed local|global
-                    local (default): the law at each element's slip speed,
-                    forces only (no --out); global: mu at the contact's slip
+                    local (default): the law at each element's slip speed
+                    (--model exact: every field; fastsim: forces only, no
+                    --out); global: FASTSIM with mu at the contact's slip
                     speed V |(xi_x, xi_y)| as CONTACT's FASTSIM, every field
   --k0 K --alpha-inf A --beta B
                     global: Spiryagin's slope reduction of the flexibilities

@@ -406,9 +406,12 @@ def solve(params: ParamsLike = None, *, grid: GridLike = None, fields: bool = Tr
     A friction law of the slip speed (doc/theory/friction.md): e.g.
     friction_law="exponential", mu=0.1368 (the kinetic coefficient),
     mu_e1=0.2232, s_h1=0.99 [m/s], V=10 [m/s]; or Polach's law as
-    polach=(mu0, A, B) with B in s/m (written by cw_friction_polach). FASTSIM
-    takes it at every element in forces mode (fields=False), or with
-    friction_speed="global" at the contact's slip speed in either mode.
+    polach=(mu0, A, B) with B in s/m (written by cw_friction_polach). The
+    exact model takes it at every element's slip speed on the uniform and
+    gap grids, in either mode; FASTSIM at every element in forces mode
+    (fields=False), or with friction_speed="global" at the contact's slip
+    speed in either mode. The calibrated model and FASTSIM on a gap grid
+    refuse it naming friction_law.
 
     For many contacts use solve_many (one call, threads); for loops, a
     Solver. Keywords: every field of the C struct cw_params, in SI units,

@@ -5,7 +5,8 @@ k0=...) and polach=(mu0, A, B), against CONTACT's tractcurv example
 law at the contact's slip speed and Spiryagin's reduction) and Polach's
 full-sliding closed form; polach= gives the bits of the fields
 cw_friction_polach writes; solve_many the bits of solve; bad inputs raise
-naming them; a half speed in mm/s warns."""
+naming them; a half speed in mm/s warns; the exact model with a law
+against CONTACT's exact theory."""
 
 import csv
 import math
@@ -95,6 +96,41 @@ def test_solve_many_gives_solve_bits():
         one = creepwork.solve(grid=GRID, xi_x=xi[k], polach=(0.36, A[k], 0.7), fields=False,
                               **tractcurv())
         assert (many.Fx[k], many.Fy[k], many.mu_min[k]) == (one.Fx, one.Fy, one.mu_min)
+
+
+EXACT_LAW = dict(model="exact", pressure="elliptic", exact_load=0, friction_law="exponential",
+                 mu=0.14, mu_e1=0.19, s_h1=1.25)
+
+
+def test_exact_model_with_a_law(test_data_dir):
+    """The exact model with the exponential law alone (CONTACT's FKIN 0.14,
+    FEXP1 0.19, SABSH1 1250 mm/s; tests/data/contact_tractcurv_exponential.csv):
+    every pure-creepage row within half CONTACT's last printed digit of
+    Fx/(mu_s N) and its slip area; with fields the work map sums to W_macro
+    (1e-9), mu_min and mu_max bound the law at the slip speeds |s| V; a
+    Coulomb solve after it on the same Solver gives a new Solver's bits."""
+    with open(os.path.join(test_data_dir, "contact_tractcurv_exponential.csv"), newline="") as f:
+        table = [r for r in csv.DictReader(f)
+                 if float(r["CETA"]) == 0.0 and float(r["CPHI_per_mm"]) == 0.0]
+    assert len(table) >= 10
+    with creepwork.Solver(GRID) as s:
+        for r in table:
+            res = s.solve(tractcurv(xi_x=float(r["CKSI"]), **EXACT_LAW), fields=False)
+            ref = r["FX_over_FSTAT_FN"]
+            assert res.Fx / (0.33 * N) == pytest.approx(float(ref), abs=half_unit(ref))
+            assert res.n_slip == int(r["NSLIP"])
+        res = s.solve(tractcurv(xi_x=3e-3, **EXACT_LAW))
+        assert abs(res.work_consistent.sum() - res.W_macro) <= 1e-9 * res.W_macro
+        slipping = res.state == 2  # CW_STATE_SLIP
+        mu = 0.14 + 0.19 * np.exp(-math.log(2) * np.hypot(res.sx, res.sy)[slipping] * V / 1.25)
+        assert res.mu_min == pytest.approx(mu.min(), abs=1e-12)
+        assert res.mu_max == pytest.approx(mu.max(), abs=1e-12)
+        coulomb = tractcurv(xi_x=3e-3, **dict(EXACT_LAW, friction_law="coulomb", mu=0.33))
+        after = s.solve(coulomb)
+    with creepwork.Solver(GRID) as fresh:
+        new = fresh.solve(coulomb)
+    assert (after.Fx, after.Fy, after.Mz, after.W_macro) == (new.Fx, new.Fy, new.Mz, new.W_macro)
+    assert after.px.tobytes() == new.px.tobytes()
 
 
 @pytest.mark.parametrize("keywords, name", [

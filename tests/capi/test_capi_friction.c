@@ -8,6 +8,7 @@
  * results bitwise whatever the law's unread fields hold; every bad input
  * refused naming it; the half-speed plausibility rule. */
 #include "capi_fixtures.h"
+#include "contact_csv.h"
 #include "tractcurv_case.h"
 
 #include <math.h>
@@ -30,56 +31,25 @@ typedef struct {
     double tol;      /* half a unit of its last printed digit */
 } tractcurv_row;
 
-static double printed_half_unit(const char* text)
-{
-    const char* e = strpbrk(text, "Ee");
-    const char* dot = strchr(text, '.');
-    const size_t mant = e ? (size_t)(e - text) : strlen(text);
-    const int decimals = dot && (size_t)(dot - text) < mant ? (int)(mant - (dot - text) - 1) : 0;
-    const int exponent = e ? atoi(e + 1) : 0;
-    return 0.5 * pow(10.0, exponent - decimals);
-}
-
-/* Splits a CSV line in place; returns the number of fields. */
-static int split(char* line, char** fields, int max)
-{
-    int n = 0;
-    for (char* p = line; n < max;) {
-        fields[n++] = p;
-        char* c = strchr(p, ',');
-        if (!c) break;
-        *c = '\0';
-        p = c + 1;
-    }
-    return n;
-}
-
 static int read_tractcurv(tractcurv_row* rows, int max)
 {
     FILE* f = fopen(CW_TEST_DATA_DIR "/contact_tractcurv.csv", "r");
     assert_non_null(f);
     char line[1024], *fields[40];
     assert_non_null(fgets(line, sizeof line, f));
-    int n = split(line, fields, 40), c_series = -1, c_cksi = -1, c_fx = -1, c_nadh = -1,
-        c_nslip = -1;
-    for (int k = 0; k < n; ++k) {
-        fields[k][strcspn(fields[k], "\r\n")] = '\0';
-        if (!strcmp(fields[k], "series")) c_series = k;
-        if (!strcmp(fields[k], "CKSI")) c_cksi = k;
-        if (!strcmp(fields[k], "FX_over_FSTAT_FN")) c_fx = k;
-        if (!strcmp(fields[k], "NADH")) c_nadh = k;
-        if (!strcmp(fields[k], "NSLIP")) c_nslip = k;
-    }
+    const int n = cw_csv_split(line, fields, 40);
+    const int c_series = cw_csv_column(fields, n, "series"), c_cksi = cw_csv_column(fields, n, "CKSI"),
+              c_fx = cw_csv_column(fields, n, "FX_over_FSTAT_FN"),
+              c_nadh = cw_csv_column(fields, n, "NADH"), c_nslip = cw_csv_column(fields, n, "NSLIP");
     assert_true(c_series >= 0 && c_cksi >= 0 && c_fx >= 0 && c_nadh >= 0 && c_nslip >= 0);
     int count = 0;
     while (count < max && fgets(line, sizeof line, f)) {
-        n = split(line, fields, 40);
-        if (n <= c_nslip) continue;
+        if (cw_csv_split(line, fields, 40) <= c_nslip) continue;
         tractcurv_row* r = &rows[count++];
         r->series = atoi(fields[c_series]);
         r->cksi = atof(fields[c_cksi]);
         r->fx = atof(fields[c_fx]);
-        r->tol = printed_half_unit(fields[c_fx]);
+        r->tol = cw_printed_half_unit(fields[c_fx]);
         r->nadh = atoi(fields[c_nadh]);
         r->nslip = atoi(fields[c_nslip]);
     }
@@ -340,7 +310,8 @@ static void spoil(int k, cw_params* p, cw_grid* g)
     case 11: p->memory_s0 = NAN; break;
     case 12: p->friction_speed = CW_FRICTION_SPEED_GLOBAL, p->memory_distance = 1e-3; break;
     case 13: p->model = CW_MODEL_CALIBRATED; break;
-    case 14: p->model = CW_MODEL_EXACT, *g = cw_test_grid(CW_GRID_UNIFORM, 14, 12, 1.1); break;
+    case 14: p->model = CW_MODEL_EXACT, p->memory_distance = 1e-3;
+             *g = cw_test_grid(CW_GRID_UNIFORM, 14, 12, 1.1); break;
     case 15: break; /* full mode: the law at every element gives no work map */
     case 16: p->s_h1 = INFINITY; break;
     default: p->model = CW_MODEL_EXACT, p->friction_law = CW_FRICTION_COULOMB;
@@ -367,7 +338,7 @@ static void bad_inputs_are_named(void** state)
         {"memory_s0 NaN", CW_ERR_INVALID_INPUT, "memory_s0", CW_SOLVE_FORCES},
         {"memory with global", CW_ERR_INVALID_INPUT, "memory_distance", CW_SOLVE_FORCES},
         {"calibrated", CW_ERR_INVALID_INPUT, "friction_law", CW_SOLVE_FORCES},
-        {"exact", CW_ERR_INVALID_INPUT, "friction_law", CW_SOLVE_FORCES},
+        {"memory with exact", CW_ERR_INVALID_INPUT, "memory_distance", CW_SOLVE_FORCES},
         {"full mode", CW_ERR_INVALID_INPUT, "mode", CW_SOLVE_FULL},
         {"s_h1 Inf", CW_ERR_INVALID_INPUT, "s_h1", CW_SOLVE_FORCES},
         {"global with exact", CW_ERR_INVALID_INPUT, "friction_speed", CW_SOLVE_FORCES},

@@ -299,8 +299,10 @@ typedef struct cw_params {
                               friction law of the slip speed (|micro-slip| * V) needs it;
                               Coulomb's law (every model's) does not use it */
     /* A friction law of the slip speed (doc/theory/friction.md). Beyond Coulomb's
-     * law CW_MODEL_FASTSIM runs on the ellipse's grids, in CW_SOLVE_FORCES with
-     * friction_speed LOCAL; the other models refuse a law by name. */
+     * law CW_MODEL_EXACT runs on the uniform and gap grids (friction_speed
+     * LOCAL, every mode); CW_MODEL_FASTSIM on the ellipse's grids, in
+     * CW_SOLVE_FORCES with friction_speed LOCAL or every mode with GLOBAL; the
+     * calibrated model and FASTSIM on a gap grid refuse a law by name. */
     int friction_law;      /* CW_FRICTION_COULOMB (default), _LINEAR, _RATIONAL or
                               _EXPONENTIAL; beyond Coulomb's V > 0 is needed */
     double mu_e1, s_h1;    /* first falling term: [-] >= 0, half speed [m/s] > 0 when

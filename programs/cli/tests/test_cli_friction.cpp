@@ -4,12 +4,14 @@
  * JSON equals the C ABI's result for the same cw_params bit for bit (the
  * law at every element in forces mode, at the global slip speed in full
  * mode), CONTACT's tractcurv series 4 at 2 % (tests/data/
- * contact_tractcurv.csv: Fx/(mu_s N) = -0.8444) is met, and every bad
+ * contact_tractcurv.csv: Fx/(mu_s N) = -0.8444) is met, the exact model
+ * with the law gives the C ABI's bits with every output, and every bad
  * friction input is refused naming its option.
  *
  * usage: test_cli_friction <creepwork binary> <scratch dir> [cmocka filter] */
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <string>
 #include <vector>
 
@@ -91,6 +93,42 @@ void friction_json_matches_library(void**)
     assert_close(global.Fx / (0.36 * 106700), -0.8444, 0.0, 0.5e-4 + 6e-5);
 }
 
+// The exact model with the law at every element's slip speed (CONTACT's
+// exact theory with the exponential law FKIN 0.14, FEXP1 0.19, SABSH1
+// 1250 mm/s; tests/data/contact_tractcurv_exponential.csv): its JSON and
+// its totals equal the C ABI's full solve bit for bit, --out writes the
+// fields, whose work map sums to W_macro, and
+// the row xi = 3e-3 meets CONTACT's printed Fx/(mu_s N) = -0.9840 to its digits.
+void exact_law_json_matches_library(void**)
+{
+    cw_params p = tractcurv(3e-3);
+    p.model = CW_MODEL_EXACT;
+    p.exact_load = 0;
+    p.friction_law = CW_FRICTION_EXPONENTIAL;
+    p.mu = 0.14;
+    p.mu_e1 = 0.19;
+    p.s_h1 = 1.25;
+    const cw_result lib = library_solve(tractcurv_grid(), p, CW_SOLVE_FULL);
+    const std::vector<std::string> args = {
+        "solve", "--format", "json", "--a", "6.304e-3", "--b", "12.61e-3", "--N", "106700",
+        "--grid", "uniform", "--nx", "48", "--ny", "44", "--box-scale", "1.1", "--V", "10",
+        "--model", "exact", "--xi-x", "3e-3", "--friction-law", "exponential", "--mu", "0.14",
+        "--mu-e1", "0.19", "--s-h1", "1.25", "--out", path("exact_law"), "--no-plots"};
+    const Json j = parse_or_fail(cli_ok(args).out);
+    expect_library_bits(j, lib);
+    assert_true(j.num("W_macro") == lib.W_macro);
+    assert_true(j.num("W_consistent") == lib.W_consistent);
+    assert_true(lib.mu_min < lib.mu_max && lib.mu_max < 0.33);
+    assert_close(lib.Fx / (0.33 * 106700), -0.9840, 0.0, 0.5e-4);
+    // fields.csv's energy-consistent map (exact doubles) sums to W_macro.
+    const auto rows = read_csv(path("exact_law/fields.csv"));
+    assert_true(rows.size() > 1);
+    const size_t col = header_index(rows[0]).at("work_consistent_J_per_m");
+    double sum = 0.0;
+    for (size_t r = 1; r < rows.size(); ++r) sum += std::strtod(rows[r][col].c_str(), nullptr);
+    assert_close(sum, lib.W_macro, 1e-9, 0.0);
+}
+
 void bad_friction_inputs_are_named(void**)
 {
     const std::vector<std::string> law = {"--friction-law", "exponential", "--mu-e1", "0.2",
@@ -139,6 +177,7 @@ int main(int argc, char** argv)
     if (!set_up(argc, argv, "test_cli_friction", {"creepwork", "scratch"})) return 2;
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(friction_json_matches_library),
+        cmocka_unit_test(exact_law_json_matches_library),
         cmocka_unit_test(bad_friction_inputs_are_named),
     };
     return cw_run_tests(tests, g_tools.test);
