@@ -19,6 +19,7 @@
 #   nonhertz       creepwork_bench_nonhertz          CONTACT beside it (needs CONTACT)
 #   wheelrail      creepwork_bench_wheelrail 200     CONTACT beside it (needs CONTACT)
 #   transient      creepwork_bench_transient 20      CONTACT beside it (needs CONTACT)
+#   friction       creepwork_bench_friction          FASTSIM with a law of the slip speed
 #   friction-exact creepwork_bench_friction_exact 5  CONTACT beside it (needs CONTACT)
 #   legacy         creepwork_bench_legacy
 #   python         python/bench/bench_python.py      the package against the C batch
@@ -49,7 +50,7 @@
 #            (numbers not for the page: the stamp says --quick)
 set -euo pipefail
 source_dir=$(cd "$(dirname "$0")/.." && pwd)
-all_sections=(fastsim exact jacobian wear temperature calibrated nonhertz wheelrail transient friction-exact legacy python campaign campaign-wear)
+all_sections=(fastsim exact jacobian wear temperature calibrated nonhertz wheelrail transient friction friction-exact legacy python campaign campaign-wear)
 usage() { sed -n '/^# usage:/,/^set -euo/p' "$0" | sed '$d; s/^# \{0,1\}//' >&2; exit 2; }
 build="" update="" only="" quick=0 allow_dirty=0 allow_load=0 wait_max=300 list=0
 while [ $# -gt 0 ]; do
@@ -145,6 +146,7 @@ needs() {
     nonhertz) programs=(creepwork_bench_nonhertz) ;;
     wheelrail) programs=(creepwork_bench_wheelrail) ;;
     transient) programs=(creepwork_bench_transient) ;;
+    friction) programs=(creepwork_bench_friction) ;;
     friction-exact) programs=(creepwork_bench_friction_exact) ;;
     legacy) programs=(creepwork_bench_legacy) ;;
     python) programs=(creepwork_bench_python_batch) ;;
@@ -192,6 +194,7 @@ run_section() {
     transient)
       (cd "$work" && "$bin/creepwork_bench_transient" "$([ $quick -eq 1 ] && echo 3 || echo 20)" \
         "$contact_dir/bin/contact" "$contact_dir/CONTACT/examples") ;;
+    friction) "$bin/creepwork_bench_friction" ;;
     friction-exact)
       (cd "$work" && "$bin/creepwork_bench_friction_exact" "$([ $quick -eq 1 ] && echo 1 || echo 5)" \
         "$contact_dir/bin/contact") ;;
