@@ -61,7 +61,8 @@ void check_params(const cw_wheelrail_params& p)
         {"nominal_radius", p.nominal_radius}, {"dx", p.dx}, {"ds", p.ds}, {"a_sep", p.a_sep},
         {"d_sep", p.d_sep}, {"d_comb", p.d_comb}, {"mu", p.mu}, {"G", p.G}, {"nu", p.nu},
         {"tolerance", p.tolerance}, {"profile_unit", p.profile_unit},
-        {"rail_y_offset", p.rail_y_offset}, {"wheel_y_offset", p.wheel_y_offset}};
+        {"rail_y_offset", p.rail_y_offset}, {"wheel_y_offset", p.wheel_y_offset},
+        {"mu_e1", p.mu_e1}, {"s_h1", p.s_h1}, {"mu_e2", p.mu_e2}, {"s_h2", p.s_h2}};
     for (const auto& [name, v] : all) require_finite((std::string("params->") + name).c_str(), v);
     if (p.model != CW_MODEL_EXACT && p.model != CW_MODEL_FASTSIM)
         fail(CW_ERR_UNKNOWN_OPTION, "params->model = " + std::to_string(p.model) +
@@ -86,6 +87,15 @@ void check_params(const cw_wheelrail_params& p)
     if (p.mirror_wheel != 0 && p.mirror_wheel != 1)
         fail(CW_ERR_INVALID_INPUT, "params->mirror_wheel = " + std::to_string(p.mirror_wheel) +
                                        " must be 0 or 1");
+    if (p.friction_law != CW_FRICTION_COULOMB && p.friction_law != CW_FRICTION_LINEAR &&
+        p.friction_law != CW_FRICTION_RATIONAL && p.friction_law != CW_FRICTION_EXPONENTIAL)
+        fail(CW_ERR_UNKNOWN_OPTION, "params->friction_law = " + std::to_string(p.friction_law) +
+                                        " is none of CW_FRICTION_COULOMB (0), _LINEAR (2), _RATIONAL (3), "
+                                        "_EXPONENTIAL (4)");
+    if (p.friction_law != CW_FRICTION_COULOMB && p.model != CW_MODEL_EXACT)
+        fail(CW_ERR_INVALID_INPUT, "params->friction_law = " + std::to_string(p.friction_law) +
+                                       " needs params->model = CW_MODEL_EXACT (FASTSIM on a patch is "
+                                       "Coulomb's)");
     if (!(p.profile_unit >= 0.0 && p.profile_unit <= 1.0))
         fail(CW_ERR_INVALID_INPUT, "params->profile_unit = " + creepwork::number_text(p.profile_unit) +
                                        " must lie in [0, 1] m per unit");
@@ -119,6 +129,11 @@ wr::WheelRailContact make_contact(const cw_wheelrail_params& p, const wr::Profil
     c.G = p.G;
     c.nu = p.nu;
     c.tolerance = p.tolerance;
+    c.friction_law = static_cast<cw::FrictionLaw>(p.friction_law);
+    c.mu_e1 = p.mu_e1;
+    c.s_h1 = p.s_h1;
+    c.mu_e2 = p.mu_e2;
+    c.s_h2 = p.s_h2;
     c.model = p.model == CW_MODEL_FASTSIM ? cw::ModelKind::fastsim : cw::ModelKind::exact;
     c.normal_method =
         p.normal_method == CW_NORMAL_SEMI_HERTZ ? cw::NormalMethod::semi_hertz : cw::NormalMethod::exact;

@@ -597,6 +597,18 @@ WHEELRAIL_MUTANTS += [
          old="start.z = 2.0 * balance_z_[1] - balance_z_[0];",
          new="start.z = balance_z_[1];",
          tests=BALANCE, require=["test_wheelrail_forces", "test_wheelrail_capi"]),
+    dict(id="wheelrail-law-speed", what="a patch's law takes twice its rolling speed",
+         file="core/wheelrail/patch_contact.cpp",
+         old="        in.V = p.veloc;",
+         new="        in.V = 2.0 * p.veloc;",
+         tests=["test_wheelrail_friction", "python_test_wheelrail"],
+         require=["test_wheelrail_friction", "python_test_wheelrail"]),
+    dict(id="wheelrail-law-term", what="a patch's law without its first falling term",
+         file="core/wheelrail/patch_contact.cpp",
+         old="        in.mu_e1 = settings_.mu_e1;",
+         new="        in.mu_e1 = 0.0;",
+         tests=["test_wheelrail_friction", "python_test_wheelrail"],
+         require=["test_wheelrail_friction", "python_test_wheelrail"]),
 ]
 MUTANTS += WHEELRAIL_MUTANTS
 # ------------------------------------------------------------ end wheel/rail

@@ -30,6 +30,9 @@ PatchContact::PatchContact(const PatchContactSettings& s) : settings_(s)
     check_setting("tolerance", s.tolerance, 0.0, 0.1);
     if (s.model != ModelKind::exact && s.model != ModelKind::fastsim)
         throw Error(ErrorKind::invalid_input, "wheel/rail contact: the model must be the exact model or FASTSIM");
+    if (s.friction_law != FrictionLaw::coulomb && s.model != ModelKind::exact)
+        throw Error(ErrorKind::invalid_input, "wheel/rail contact: friction_law: a law of the slip speed "
+                                              "needs the exact model (FASTSIM on a patch is Coulomb's)");
 }
 
 Solver& PatchContact::solver_for(std::size_t k, int nx, int ny, double dx, double dy)
@@ -94,6 +97,19 @@ const PatchSolution& PatchContact::solve(const ContactPatch& p, std::size_t k, b
     in.normal_load = NormalLoad::approach;
     in.approach = 0.0; // the grid's datum is the wheelset's height
     in.mu = settings_.mu;
+    if (settings_.friction_law != FrictionLaw::coulomb) {
+        // the law takes the slip speed from the patch's rolling speed
+        if (!(p.veloc > 0.0))
+            throw Error(ErrorKind::invalid_input,
+                        "wheel/rail contact: friction_law needs the rolling speed: the patch's veloc is " +
+                            number_text(p.veloc) + " m/s (give the wheelset a forward speed vs)");
+        in.friction_law = settings_.friction_law;
+        in.mu_e1 = settings_.mu_e1;
+        in.s_h1 = settings_.s_h1;
+        in.mu_e2 = settings_.mu_e2;
+        in.s_h2 = settings_.s_h2;
+        in.V = p.veloc;
+    }
     in.G = settings_.G;
     in.nu = settings_.nu;
     in.tolerance = settings_.tolerance;

@@ -47,6 +47,13 @@ std::vector<OptionSpec> wheelrail_options()
             {"roll", OptionKind::number, {}},
             {"Fz", OptionKind::number, {}, {"N"}},
             {"mu", OptionKind::number, {}},
+            {"friction-law", OptionKind::choice, {"coulomb", "linear", "rational", "exponential", "polach"}},
+            {"mu-e1", OptionKind::number, {}},
+            {"s-h1", OptionKind::number, {}},
+            {"mu-e2", OptionKind::number, {}},
+            {"s-h2", OptionKind::number, {}},
+            {"polach-A", OptionKind::number, {}},
+            {"polach-B", OptionKind::number, {}},
             {"G", OptionKind::number, {}},
             {"nu", OptionKind::number, {}},
             {"V", OptionKind::number, {}},
@@ -120,6 +127,48 @@ std::vector<std::string> warnings(const ParsedOptions& o, const cw_wheelrail* w)
                       " is implausible for a wheel-rail contact: " + reason);
     }
     return out;
+}
+
+// --friction-law and its terms (creepwork solve's names) into the
+// parameters; Polach's A and B through the library's cw_friction_polach.
+// The library checks the terms' values and names them.
+void read_friction(const ParsedOptions& o, cw_wheelrail_params& p)
+{
+    const std::string law = o.text("friction-law", "coulomb");
+    for (const char* term : {"mu-e1", "s-h1", "mu-e2", "s-h2"})
+        if (o.has(term) && (law == "coulomb" || law == "polach"))
+            throw usage_error(std::string("--") + term, "not used with --friction-law " + law);
+    for (const char* term : {"polach-A", "polach-B"})
+        if (o.has(term) != (law == "polach"))
+            throw usage_error(std::string("--") + term,
+                              law == "polach" ? "missing: --friction-law polach takes --mu (its mu0), "
+                                                "--polach-A and --polach-B"
+                                              : "only used with --friction-law polach");
+    if (law != "coulomb" && o.text("model", "exact") != "exact")
+        throw usage_error("--friction-law", "a law of the slip speed needs --model exact "
+                                            "(FASTSIM on a patch is Coulomb's)");
+    if (law == "polach") {
+        cw_params c;
+        cw_params_init(&c);
+        char message[256] = "";
+        if (cw_friction_polach(p.mu, o.number("polach-A", 0.0), o.number("polach-B", 0.0), &c, message,
+                               sizeof message) != CW_OK)
+            throw usage_error("--polach-A", message);
+        p.friction_law = c.friction_law;
+        p.mu = c.mu;
+        p.mu_e1 = c.mu_e1;
+        p.s_h1 = c.s_h1;
+        p.mu_e2 = c.mu_e2;
+        p.s_h2 = c.s_h2;
+    } else if (law != "coulomb") {
+        p.friction_law = law == "linear"     ? CW_FRICTION_LINEAR
+                         : law == "rational" ? CW_FRICTION_RATIONAL
+                                             : CW_FRICTION_EXPONENTIAL;
+        p.mu_e1 = o.number("mu-e1", 0.0);
+        p.s_h1 = o.number("s-h1", 0.0);
+        p.mu_e2 = o.number("mu-e2", 0.0);
+        p.s_h2 = o.number("s-h2", 0.0);
+    }
 }
 
 JsonObject patch_json(const cw_wheelrail_patch& p)
@@ -229,6 +278,7 @@ int command_wheelrail(int argc, char** argv, int first)
     p.wheel_y_offset = o.number("wheel-y-offset", p.wheel_y_offset);
     p.rail_y_offset = o.number("rail-y-offset", p.rail_y_offset);
     p.mirror_wheel = o.has("mirror-wheel") ? 1 : 0;
+    read_friction(o, p);
     const std::string model = o.text("model", "exact");
     if (model == "fastsim") {
         p.model = CW_MODEL_FASTSIM;

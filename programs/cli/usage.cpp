@@ -590,7 +590,18 @@ contact:
                          fastsim (or fast): FASTSIM with the semi-Hertzian
                          normal problem (doc/validation/manchester.md: its
                          accuracy)
-  --mu MU                friction coefficient (default 0.3)
+  --mu MU                friction coefficient (default 0.3); with a law, its
+                         kinetic coefficient mu_kin
+  --friction-law coulomb|linear|rational|exponential|polach
+                         a law of the slip speed in every patch (--model
+                         exact; as creepwork solve's, doc/theory/friction.md):
+                         an element's slip speed is its micro-slip times the
+                         patch's rolling speed veloc
+  --mu-e1 M --s-h1 S --mu-e2 M --s-h2 S
+                         the law's falling terms [-] and half speeds [m/s]
+  --polach-A A --polach-B B
+                         --friction-law polach: Polach's A [-] and B [s/m],
+                         with --mu as mu0
   --G PA                 combined shear modulus [Pa] (default 8.2e10)
   --nu NU                combined Poisson's ratio (default 0.28)
   --dx M, --ds M         element sizes of the patch grids [m] (default 2e-4)

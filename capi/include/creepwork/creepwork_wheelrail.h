@@ -72,6 +72,15 @@ typedef struct cw_wheelrail_params {
     double wheel_y_offset;       /* [m] added to the wheel profile's y (0) */
     int mirror_wheel;            /* 1: the wheel profile's y is mirrored before the offset
                                     (measured with y towards the track centre); 0 (default) */
+    /* A friction law of the slip speed in every patch (the exact model only;
+     * cw_params' fields of the same names): mu is then its mu_kin, and the
+     * slip speed of an element its micro-slip times the patch's rolling
+     * speed veloc. Polach's law: cw_friction_polach writes these fields of a
+     * cw_params, copy them. */
+    int friction_law;            /* CW_FRICTION_COULOMB (default), _LINEAR, _RATIONAL or
+                                    _EXPONENTIAL */
+    double mu_e1, s_h1;          /* [-], [m/s] the law's first term (0, 0) */
+    double mu_e2, s_h2;          /* [-], [m/s] its second term (0, 0) */
 } cw_wheelrail_params;
 
 /* The wheelset's position (CONTACT's Z_WS etc.) and velocity. */
