@@ -2,7 +2,8 @@
 ! the contact solves (this file); creepwork_legacy_tools.f90 has the work
 ! accumulation, Kalker's coefficients and flexibilities, Hertz, the messages
 ! and the kind check; creepwork_legacy_wear.f90 the wear routines,
-! creepwork_legacy_surface.f90 the surface temperature.
+! creepwork_legacy_surface.f90 the surface temperature,
+! creepwork_legacy_friction.f90 the friction laws of the slip speed.
 !
 ! Plain external subroutines: no module, no derived type, no optional
 ! argument in the caller. Scalars are passed by reference, arrays have
@@ -31,6 +32,7 @@
 !   CWWPRF  adds passes of a lateral wear profile to a profile grid's depths
 !   CWWUPD  profile update: new = old - (smoothed) depth
 !   CWTEMP  surface temperature of both bodies of one contact, their maxima
+!   CWFLAW  forces of one contact under a friction law of the slip speed
 !   CWERRM  the message of an IERR value
 !   CWLAST  the detailed message of the calling thread's last call, naming
 !           the offending input
