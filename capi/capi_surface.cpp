@@ -4,11 +4,14 @@
 // that knows where they come from), checks the inputs and translates errors.
 #include "capi_internal.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 
 #include "damage/damage_indices.hpp"
 #include "thermal/flash_temperature.hpp"
+#include "contact/number_text.hpp"
+#include "thermal/friction_temperature.hpp"
 #include "thermal/heat_source.hpp"
 
 namespace th = creepwork::thermal;
@@ -151,6 +154,36 @@ int rolling_direction_of(int own, const cw_solver& solver)
     return own;
 }
 
+// The temperatures of s's last full solve into t (its fields, its result
+// without iterations); p's rolling speed and direction resolved.
+void compute_temperature(cw_temperature& t, const cw::Solver& s, const cw_temperature_params& p,
+                         const th::ThermalParams& tp);
+
+cw_mu_temperature mu_temperature_defaults()
+{
+    cw_mu_temperature m{};
+    m.struct_size = sizeof m;
+    m.count = 0;
+    m.temperature = nullptr;
+    m.mu = nullptr;
+    m.tolerance = 1e-6;
+    m.max_iterations = 100;
+    return m;
+}
+
+// The loop's own inputs (the table's are th::validate's).
+void check_loop(const cw_mu_temperature& m)
+{
+    require_finite("mu_T.tolerance", m.tolerance);
+    if (!(m.tolerance >= 1e-12 && m.tolerance <= 0.1))
+        fail(CW_ERR_INVALID_INPUT, "mu_T.tolerance = " + cw::number_text(m.tolerance) +
+                                       " is outside [1e-12, 0.1] (a change of the forces per "
+                                       "normal force)");
+    if (m.max_iterations < 1 || m.max_iterations > 1000)
+        fail(CW_ERR_INVALID_INPUT, "mu_T.max_iterations = " + std::to_string(m.max_iterations) +
+                                       " is outside [1, 1000]");
+}
+
 } // namespace surface
 
 using surface::SolvedContact;
@@ -159,12 +192,13 @@ struct cw_temperature {
     explicit cw_temperature(const cw::Solver& s)
         : contact(s), flash(s.grid().nx(), s.grid().ny())
     {
-        for (auto* v : {&q, &T1, &T2}) v->assign(contact.area.size(), 0.0);
+        for (auto* v : {&q, &T1, &T2, &factor}) v->assign(contact.area.size(), 0.0);
         cw_temperature_result_init(&result);
     }
     SolvedContact contact;
     th::FlashTemperature flash;
     std::vector<double> q, T1, T2;
+    std::vector<double> factor; // cw_temperature_solve's friction factors
     bool computed = false;
     cw_temperature_result result{};
     mutable std::string last_error; // the last call's message, const getters' included
@@ -182,6 +216,43 @@ struct cw_damage {
     cw_damage_result result{};
     mutable std::string last_error; // the last call's message, const getters' included
 };
+
+void surface::compute_temperature(cw_temperature& t, const cw::Solver& s,
+                                  const cw_temperature_params& p, const th::ThermalParams& tp)
+{
+    SolvedContact& c = t.contact;
+    surface::read_solved_contact(s, c);
+    const long n = static_cast<long>(c.area.size());
+    if (tp.discretisation == th::Discretisation::consistent)
+        th::heat_from_work(n, c.work.data(), c.area.data(), tp.rolling_speed, t.q.data());
+    else
+        th::heat_from_slip(n, c.px.data(), c.py.data(), c.sx.data(), c.sy.data(),
+                           tp.rolling_speed, t.q.data());
+    th::HeatedContact in;
+    in.nx = c.nx;
+    in.ny = c.ny;
+    in.x = c.x.data();
+    in.y = c.y.data();
+    in.row_dx = c.row_dx.data();
+    in.state = c.state.data();
+    in.q = t.q.data();
+    in.rolling_direction = p.rolling_direction;
+    const th::TemperatureTotals tt = t.flash.compute(in, tp, t.T1.data(), t.T2.data());
+    const int heats = tp.discretisation == th::Discretisation::consistent ? 1 : 2;
+    cw_temperature_result r{};
+    r.struct_size = sizeof r;
+    r.T_max_1 = tt.rail.T;
+    r.x_max_1 = tt.rail.x;
+    r.y_max_1 = tt.rail.y;
+    r.T_max_2 = tt.wheel.T;
+    r.x_max_2 = tt.wheel.x;
+    r.y_max_2 = tt.wheel.y;
+    r.contact_temperature = tt.contact_temperature;
+    for (long e = 0; e < n; ++e)
+        if (c.state[e] >= heats) r.power += t.q[e] * c.area[e];
+    r.discretisation = p.discretisation;
+    t.result = r;
+}
 
 extern "C" {
 
@@ -220,49 +291,99 @@ int cw_temperature_compute(cw_temperature* t, const cw_solver* solver,
         require(solver, "solver");
         require(params, "params");
         require_result_size(result, "cw_temperature_result_init");
-        const cw::Solver& s = solver->solver;
-        surface::require_grid(s, t->contact.grid, "temperature");
+        surface::require_grid(solver->solver, t->contact.grid, "temperature");
         cw_temperature_params p = read_struct(params, surface::temperature_defaults(), "params");
         p.rolling_speed = rolling_speed_of(p.rolling_speed, "rolling_speed", solver->V);
         p.rolling_direction = surface::rolling_direction_of(p.rolling_direction, *solver);
-        const th::ThermalParams tp = surface::to_thermal(p);
-        SolvedContact& c = t->contact;
-        surface::read_solved_contact(s, c);
-        const long n = static_cast<long>(c.area.size());
-        if (tp.discretisation == th::Discretisation::consistent)
-            th::heat_from_work(n, c.work.data(), c.area.data(), tp.rolling_speed, t->q.data());
-        else
-            th::heat_from_slip(n, c.px.data(), c.py.data(), c.sx.data(), c.sy.data(),
-                               tp.rolling_speed, t->q.data());
-        th::HeatedContact in;
-        in.nx = c.nx;
-        in.ny = c.ny;
-        in.x = c.x.data();
-        in.y = c.y.data();
-        in.row_dx = c.row_dx.data();
-        in.state = c.state.data();
-        in.q = t->q.data();
-        in.rolling_direction = p.rolling_direction;
-        const th::TemperatureTotals tt = t->flash.compute(in, tp, t->T1.data(), t->T2.data());
-        const int heats = tp.discretisation == th::Discretisation::consistent ? 1 : 2;
-        cw_temperature_result r{};
-        r.struct_size = sizeof r;
-        r.T_max_1 = tt.rail.T;
-        r.x_max_1 = tt.rail.x;
-        r.y_max_1 = tt.rail.y;
-        r.T_max_2 = tt.wheel.T;
-        r.x_max_2 = tt.wheel.x;
-        r.y_max_2 = tt.wheel.y;
-        r.contact_temperature = tt.contact_temperature;
-        for (long e = 0; e < n; ++e)
-            if (c.state[e] >= heats) r.power += t->q[e] * c.area[e];
-        r.iterations = 1;
-        r.discretisation = p.discretisation;
-        t->result = r;
+        surface::compute_temperature(*t, solver->solver, p, surface::to_thermal(p));
+        t->result.iterations = 1;
         t->computed = true;
-        if (result) write_struct(result, r);
+        if (result) write_struct(result, t->result);
         return CW_OK;
     });
+}
+
+int cw_mu_temperature_init(cw_mu_temperature* mu_T)
+{
+    if (!mu_T) return CW_ERR_NULL_POINTER;
+    *mu_T = surface::mu_temperature_defaults();
+    return CW_OK;
+}
+
+int cw_temperature_solve(cw_temperature* t, cw_solver* solver, const cw_params* params,
+                         const cw_temperature_params* temperature_params,
+                         const cw_mu_temperature* mu_T, cw_result* result,
+                         cw_temperature_result* temperature_result)
+{
+    if (!t) return CW_ERR_NULL_POINTER;
+    if (!solver) return CW_ERR_NULL_POINTER;
+    const int status = guarded(&t->last_error, [&] {
+        t->computed = false;
+        require(params, "params");
+        require(temperature_params, "temperature_params");
+        require(mu_T, "mu_T");
+        require_result_size(result, "cw_result_init");
+        require_result_size(temperature_result, "cw_temperature_result_init");
+        cw::Solver& s = solver->solver;
+        surface::require_grid(s, t->contact.grid, "temperature");
+        cw::ContactInput in = to_input(params);
+        cw_temperature_params p =
+            read_struct(temperature_params, surface::temperature_defaults(), "temperature_params");
+        p.rolling_speed = rolling_speed_of(p.rolling_speed, "rolling_speed", in.V);
+        if (p.rolling_direction == 0) p.rolling_direction = in.rolling_direction;
+        solver->V = 0.0;
+        solver->rolling_direction = in.rolling_direction;
+        p.rolling_direction = surface::rolling_direction_of(p.rolling_direction, *solver);
+        const th::ThermalParams tp = surface::to_thermal(p);
+        const cw_mu_temperature m = read_struct(mu_T, surface::mu_temperature_defaults(), "mu_T");
+        const th::FrictionTemperature table{m.count, m.temperature, m.mu};
+        th::validate(table); // names the entry
+        surface::check_loop(m);
+        // The law's unit: Coulomb's mu is the table's largest, a law keeps its own.
+        if (in.friction_law == cw::FrictionLaw::coulomb) in.mu = th::mu_max(table);
+        const double mu_ref = in.mu + (in.friction_law == cw::FrictionLaw::coulomb
+                                           ? 0.0
+                                           : in.mu_e1 + in.mu_e2);
+        const long n = static_cast<long>(t->factor.size());
+        // First pass: every element at mu of the bulk contact temperature.
+        std::fill(t->T1.begin(), t->T1.end(), th::bulk_contact_temperature(tp));
+        cw::SolveTotals totals;
+        int pass = 0;
+        for (double fx = 0.0, fy = 0.0;; ) {
+            th::friction_factors(table, mu_ref, n, t->T1.data(), t->factor.data());
+            s.set_friction_factors(t->factor.data());
+            totals = s.solve(in, cw::SolveMode::full);
+            s.set_friction_factors(nullptr);
+            ++pass;
+            surface::compute_temperature(*t, s, p, tp);
+            const double dx = std::fabs(totals.Fx - fx), dy = std::fabs(totals.Fy - fy);
+            if (pass > 1 && dx <= m.tolerance * in.normal_force &&
+                dy <= m.tolerance * in.normal_force)
+                break;
+            if (pass == m.max_iterations)
+                fail(CW_ERR_NOT_CONVERGED,
+                     "mu_T.max_iterations = " + std::to_string(m.max_iterations) +
+                         " passes of solve and temperature without convergence: the forces "
+                         "still change by " + cw::number_text(std::max(dx, dy) / in.normal_force) +
+                         " N per pass (mu_T.tolerance = " + cw::number_text(m.tolerance) + ")");
+            fx = totals.Fx;
+            fy = totals.Fy;
+        }
+        solver->V = in.V;
+        t->result.iterations = pass;
+        t->computed = true;
+        if (result) write_struct(result, to_result(totals));
+        if (temperature_result) write_struct(temperature_result, t->result);
+        return CW_OK;
+    });
+    if (status != CW_OK) {
+        solver->solver.set_friction_factors(nullptr);
+        solver->solver.discard();
+        solver->V = 0.0;
+        solver->rolling_direction = 0;
+        solver->last_error = t->last_error;
+    }
+    return status;
 }
 
 int cw_temperature_get_field(const cw_temperature* t, int field, double* out, size_t out_len)

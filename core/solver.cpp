@@ -1,5 +1,6 @@
 #include "solver.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -154,6 +155,30 @@ void Solver::set_kernel_isa(KernelIsa isa)
     for (const auto& m : models_) m.second->set_kernel_isa(isa);
 }
 
+void Solver::set_friction_factors(const double* factor)
+{
+    has_factors_ = factor != nullptr;
+    if (!factor) return;
+    const size_t n = static_cast<size_t>(grid_->nx()) * static_cast<size_t>(grid_->ny());
+    factors_.assign(factor, factor + n);
+    factor_state_.resize(n);
+}
+
+// Coulomb's law with element-wise factors: the range of mu_static times the
+// factor over the slipping elements (none slipping: mu_static).
+void Solver::factor_range(const SolvedContact& view, SolveTotals& t)
+{
+    export_state(view, factor_state_.data());
+    bool any = false;
+    for (size_t e = 0; e < factor_state_.size(); ++e) {
+        if (factor_state_[e] != 2) continue;
+        const double mu = t.mu_static * factors_[e];
+        t.mu_min = any ? std::min(t.mu_min, mu) : mu;
+        t.mu_max = any ? std::max(t.mu_max, mu) : mu;
+        any = true;
+    }
+}
+
 const SolveTotals& Solver::solve(const ContactInput& input, SolveMode mode)
 {
     return solve_impl(input, mode, nullptr);
@@ -196,6 +221,7 @@ const SolveTotals& Solver::solve_impl(const ContactInput& input, SolveMode mode,
     } else {
         m.clear_law();
     }
+    m.set_friction_factors(has_factors_ ? factors_.data() : nullptr);
     auto* law_model = dynamic_cast<FastsimLawModel*>(&m);
     if (input.memory_distance > 0.0 && input.friction_law != FrictionLaw::coulomb && !law_model)
         throw Error(ErrorKind::invalid_input,
@@ -206,7 +232,10 @@ const SolveTotals& Solver::solve_impl(const ContactInput& input, SolveMode mode,
     last_ = &m;
     t.mu_static = input.mu;
     if (input.friction_law != FrictionLaw::coulomb) t.mu_static += input.mu_e1 + input.mu_e2;
-    if (!m.friction_range(t.mu_min, t.mu_max)) t.mu_min = t.mu_max = t.mu_static;
+    if (!m.friction_range(t.mu_min, t.mu_max)) {
+        t.mu_min = t.mu_max = t.mu_static;
+        if (has_factors_) factor_range(m.solved(), t);
+    }
 
     const double checks[] = {t.Fx, t.Fy, t.Mz, t.W_macro, t.W_micro_paper, t.K, t.W_consistent,
                              t.balance_factor, t.profile_max_diff, t.profile_rms_diff};

@@ -87,6 +87,17 @@ public:
     }
     static bool needs_work(Field f) { return field_needs_work(f); }
 
+    // Element-wise factors on the friction coefficient of the following
+    // solves (contact/friction_law.hpp: nx*ny values >= 0 at [i + j*nx],
+    // copied; friction that depends on the temperature), or none (null, the
+    // default: every solve bitwise without). The exact model on the
+    // ellipse's uniform grid takes them; another model's solve refuses them
+    // by name. Under Coulomb's law the totals' mu_min, mu_max are then the
+    // range of mu times the factor over the slipping elements. Allocates on
+    // the first call only.
+    void set_friction_factors(const double* factor);
+    bool has_friction_factors() const { return has_factors_; }
+
     // The kernel of the models' SIMD marches: best_kernel_isa() unless set.
     // Every kernel gives bitwise the same results; set_kernel_isa is for
     // tests and benchmarks, applies to every model (also those made later)
@@ -138,6 +149,10 @@ private:
     ContactModel* last_ = nullptr;    // the model of the last solve (its fields are exported)
     std::vector<PatchTotals> one_patch_; // of a model without patches: the contact, if any
     SolveTotals totals_;
+    void factor_range(const SolvedContact& view, SolveTotals& t);
+    std::vector<double> factors_; // set_friction_factors' copy
+    std::vector<int> factor_state_; // the states, for the range of mu under the factors
+    bool has_factors_ = false;
     SolveMode mode_ = SolveMode::full;
     bool solved_ = false;
     mutable SolvedContact view_; // of last_, valid while view_made_

@@ -23,6 +23,7 @@ module creepwork_surface
    contains
       procedure :: create => temperature_create
       procedure :: compute => temperature_compute
+      procedure :: solve => temperature_solve
       procedure, private :: temperature_get_field_2d, temperature_get_field_1d
       generic :: get_field => temperature_get_field_2d, temperature_get_field_1d
       procedure :: get_result => temperature_get_result
@@ -107,6 +108,62 @@ contains
       if (present(errmsg)) call set_errmsg(o, errmsg)
       call deliver(o, stat)
    end subroutine temperature_compute
+
+   ! Solves params with friction mu(T), mu piecewise linear through the points
+   ! (temperatures(k), mu(k)), in cw_temperature_solve's fixed-point loop of
+   ! solve and temperature (doc/theory/temperature.md): solver keeps the last
+   ! solve, self its temperatures, temperature_result%iterations the passes.
+   ! tolerance (default 1e-6) and max_iterations (default 100) as
+   ! cw_mu_temperature's; results are optional, uninitialised ones are
+   ! initialised first. temperatures and mu of different lengths:
+   ! CW_ERR_INVALID_INPUT naming mu_T.
+   subroutine temperature_solve(self, solver, params, temperature_params, temperatures, mu, &
+                                result, temperature_result, tolerance, max_iterations, stat, errmsg)
+      class(cw_temperature_type), intent(inout) :: self
+      class(cw_solver_type), intent(inout) :: solver
+      type(cw_params), intent(in) :: params
+      type(cw_temperature_params), intent(in) :: temperature_params
+      real(c_double), intent(in), target, contiguous :: temperatures(:), mu(:)
+      type(cw_result), intent(inout), target, optional :: result
+      type(cw_temperature_result), intent(inout), target, optional :: temperature_result
+      real(c_double), intent(in), optional :: tolerance
+      integer, intent(in), optional :: max_iterations
+      integer, intent(out), optional :: stat
+      character(len=:), allocatable, intent(out), optional :: errmsg
+      type(c_ptr) :: pr, pt
+      type(cw_mu_temperature) :: m
+      integer(c_int) :: status
+      type(outcome) :: o
+      o = created(self)
+      if (o%status == CW_OK) o = created(solver)
+      if (o%status == CW_OK .and. size(temperatures) /= size(mu)) &
+         o = make_outcome(CW_ERR_INVALID_INPUT, 'mu_T: temperatures and mu differ in length')
+      if (o%status == CW_OK) then
+         status = capi_mu_temperature_init(m)
+         m%count = size(temperatures, kind=c_size_t)
+         if (size(temperatures) > 0) then
+            m%temperature = c_loc(temperatures)
+            m%mu = c_loc(mu)
+         end if
+         if (present(tolerance)) m%tolerance = tolerance
+         if (present(max_iterations)) m%max_iterations = int(max_iterations, c_int)
+         pr = c_null_ptr
+         pt = c_null_ptr
+         if (present(result)) then
+            if (result%struct_size == 0) status = capi_result_init(result)
+            pr = c_loc(result)
+         end if
+         if (present(temperature_result)) then
+            if (temperature_result%struct_size == 0) &
+               status = capi_temperature_result_init(temperature_result)
+            pt = c_loc(temperature_result)
+         end if
+         o = status_outcome(self, capi_temperature_solve(handle_of(self), handle_of(solver), &
+                                  params, temperature_params, m, pr, pt))
+      end if
+      if (present(errmsg)) call set_errmsg(o, errmsg)
+      call deliver(o, stat)
+   end subroutine temperature_solve
 
    ! A CW_TEMPERATURE_FIELD_* of the last compute into out(nx, ny).
    subroutine temperature_get_field_2d(self, field, out, stat, errmsg)

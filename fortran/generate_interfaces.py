@@ -54,6 +54,7 @@ NULLABLE = [
     "cw_wear_get_strips.y", "cw_wear_get_strips.width", "cw_wear_get_strips.depth",
     "cw_wear_get_strips.parabola", "cw_wheelrail_add_wear.result",
     "cw_temperature_compute.result", "cw_damage_compute.result",
+    "cw_temperature_solve.result", "cw_temperature_solve.temperature_result",
     "cw_transient_get_wear.mass_map"]
 # Struct pointers that are arrays (count elements): bound as type(cw_s) :: x(*).
 STRUCT_ARRAYS = ["cw_batch_solve.params", "cw_batch_solve.results", "cw_solver_get_patches.out",

@@ -515,6 +515,9 @@ static mxArray* patches_of(cw_solver* s)
     return out;
 }
 
+static mxArray* solved_result(cw_solver* s, int owned, const cw_result* r, int fields,
+                              const double* jac);
+
 /* One solve of p on s: totals and patches, and with fields the per-element maps,
  * states and profile; with jacobian the 4 x 4 matrix. On error s is
  * destroyed first when owned (an error does not return). */
@@ -534,6 +537,17 @@ static mxArray* solve_one(cw_solver* s, int owned, cw_params p, int fields, int 
         if (owned) cw_solver_destroy(s);
         fail_status(status, message);
     }
+    return solved_result(s, owned, &r, fields, jacobian ? jac : NULL);
+}
+
+/* The result of s's last solve r: totals and patches, with fields the maps,
+ * states and profile, with jac the 4 x 4 matrix. */
+static mxArray* solved_result(cw_solver* s, int owned, const cw_result* rp, int fields,
+                              const double* jac)
+{
+    cw_result r = *rp;
+    const int jacobian = jac != NULL;
+    int status = CW_OK;
     static const char* extra_names[] = {"fields", "state", "profile", "jacobian", "patches"};
     mxArray* out = from_structs(&RESULT, &r, sizeof r, 1, NULL, 5, extra_names);
     mxSetField(out, 0, "patches", patches_of(s));
@@ -636,15 +650,27 @@ static int damage_field(const void* h, int id, double* out, size_t n)
 }
 
 /* Both bodies' temperatures of s's last solve (the result's fields, and
- * rail, wheel, heat as nx-by-ny matrices). */
-static mxArray* temperature_of(cw_solver* s, const cw_temperature_params* p)
+ * rail, wheel, heat as nx-by-ny matrices); with table (count points, its
+ * temperatures then its mu, count >= 0) solved with friction mu(T) first
+ * (cw_temperature_solve of params p, the loop's defaults). */
+static mxArray* temperature_of(cw_solver* s, const cw_temperature_params* tp,
+                               const cw_params* p, const double* table, size_t count)
 {
     cw_temperature* t = NULL;
     int status = cw_temperature_create(s, &t);
     if (status != CW_OK) fail_status(status, "making the temperature workspace");
     cw_temperature_result r;
     cw_temperature_result_init(&r);
-    status = cw_temperature_compute(t, s, p, &r);
+    if (p) {
+        cw_mu_temperature m;
+        cw_mu_temperature_init(&m);
+        m.count = count;
+        m.temperature = count ? table : NULL;
+        m.mu = count ? table + count : NULL;
+        status = cw_temperature_solve(t, s, p, tp, &m, NULL, &r);
+    } else {
+        status = cw_temperature_compute(t, s, tp, &r);
+    }
     if (status != CW_OK) {
         char message[MESSAGE_LEN];
         snprintf(message, sizeof message, "%s", cw_temperature_last_error(t));
@@ -1017,7 +1043,23 @@ void mexFunction(int nlhs, mxArray* plhs[], int nrhs, const mxArray* prhs[])
         tp.rolling_direction = directions[k]; /* the last solve's, unless given */
         to_structs(&TPARAMS, a2, &tp, sizeof tp, 1);
         warn_surface_units(&tp, NULL);
-        plhs[0] = temperature_of(solvers[k], &tp);
+        plhs[0] = temperature_of(solvers[k], &tp, NULL, NULL, 0);
+    } else if (strcmp(command, "solver_solve_mu_T") == 0) { /* id, params, tparams, [T mu] */
+        const int k = solver_id(a1);
+        const cw_params p = params_of(a2, &solver_grids[k]);
+        cw_temperature_params tp;
+        cw_temperature_params_init(&tp);
+        tp.rolling_direction = 0; /* the solve's, unless given */
+        to_structs(&TPARAMS, a3, &tp, sizeof tp, 1);
+        warn_surface_units(&tp, NULL);
+        if (!a4 || !mxIsDouble(a4) || mxIsComplex(a4) || mxGetN(a4) != 2)
+            FAIL("badValue", "mu_T: a real matrix of two columns, temperature [deg C] and mu");
+        directions[k] = p.rolling_direction;
+        plhs[0] = temperature_of(solvers[k], &tp, &p, mxGetPr(a4), mxGetM(a4));
+        cw_result r;
+        cw_result_init(&r);
+        cw_solver_get_result(solvers[k], &r);
+        if (nlhs > 1) plhs[1] = solved_result(solvers[k], 0, &r, 1, NULL);
     } else if (strcmp(command, "solver_damage") == 0) { /* id, params */
         const int k = solver_id(a1);
         cw_damage_params dp;

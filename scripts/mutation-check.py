@@ -786,6 +786,22 @@ MUTANTS += [
          new="    if (T_gamma <= f.peak) return f.peak_damage * (T_gamma - f.onset) / (f.zero - f.onset);",
          tests=SURFACE),
 ]
+# Friction that depends on the temperature: the loop against CONTACT's
+# euro_tractcurv and the fixed point, at the C ABI, the CLI and Fortran.
+MU_T = ["test_capi_mu_temperature", "test_fortran_surface", "cli_surface_mu_T_matches_library"]
+MUTANTS += [
+    dict(id="mu-t-factor-unit", what="the element's factor is mu(T), not mu(T) over the law's unit",
+         file="core/thermal/friction_temperature.cpp",
+         old="    for (long e = 0; e < n; ++e) factor[e] = mu_of_temperature(t, T[e]) / mu_ref;",
+         new="    for (long e = 0; e < n; ++e) factor[e] = mu_of_temperature(t, T[e]);", tests=MU_T),
+    dict(id="mu-t-bound-unscaled", what="the exact model ignores the element-wise factors",
+         file="core/exact/exact_model.cpp",
+         old="    scale_bounds(ElementFriction{factor_, nx_, setup_.direction < 0}, g.data(), nx_, ny_);",
+         new="", tests=MU_T),
+    dict(id="mu-t-last-forces", what="the loop keeps Fx as the last pass's Fy",
+         file="capi/capi_surface.cpp",
+         old="            fy = totals.Fy;", new="            fy = totals.Fx;", tests=MU_T),
+]
 # ------------------------------------------------- end temperature, damage
 
 # ---------------------------------------------------------------- progress

@@ -57,6 +57,19 @@ public:
     // it before a solve of an input without a law, so that a law set for
     // one call does not stay with a model that serves both.
     virtual void clear_law() {}
+    // Element-wise factors on the friction coefficient of the next solves
+    // (contact/friction_law.hpp, ElementFriction: nx*ny values in the
+    // caller's layout, kept by the caller; null: none, the default). The
+    // solver sets them before every solve. A model without them refuses
+    // factors by name.
+    virtual void set_friction_factors(const double* factor)
+    {
+        if (factor)
+            throw Error(ErrorKind::invalid_input,
+                        "mu_T: " + name_ +
+                            " takes no friction that varies element by element (the exact "
+                            "model on the ellipse's uniform grid does)");
+    }
     // The smallest and largest friction coefficient of the last solve over
     // its slipping elements, for a model under a law of the slip speed;
     // false for a model that holds one mu.

@@ -25,6 +25,7 @@
 #pragma once
 
 #include <cmath>
+#include <cstddef>
 
 #include "contact/params.hpp"
 #include "simd/simd.hpp"
@@ -58,6 +59,33 @@ template <class Law>
 inline double traction_bound(const Law& law, double pressure, double slip_speed = 0.0)
 {
     return law.coefficient(slip_speed) * pressure;
+}
+
+// Element-wise factors on the coefficient: friction that depends on a field
+// of the surface (the temperature, thermal/friction_temperature.hpp). Element
+// k's coefficient is factor[k] mu(s), its bound factor[k] mu(s) p. factor
+// holds nx*ny values >= 0 at [i + j*nx] in the caller's layout; a model
+// whose x runs mirrored (rolling_direction -1) reads element i' = nx - 1 - i.
+// Without factors (null) the bound is the law's alone, bitwise.
+struct ElementFriction {
+    const double* factor = nullptr;
+    int nx = 0;
+    bool mirrored = false;
+    bool active() const { return factor != nullptr; }
+    // Element (i, j) of the model's layout.
+    double at(int i, int j) const
+    {
+        return factor[static_cast<std::size_t>(mirrored ? nx - 1 - i : i) + static_cast<std::size_t>(nx) * j];
+    }
+};
+
+// Scales the bounds g[i + nx j] (nx by ny, the model's layout) by the
+// element-wise factors; nothing without them.
+inline void scale_bounds(const ElementFriction& f, double* g, int nx, int ny)
+{
+    if (!f.active()) return;
+    for (int j = 0; j < ny; ++j)
+        for (int i = 0; i < nx; ++i) g[i + static_cast<std::size_t>(nx) * j] *= f.at(i, j);
 }
 
 // ---- the vector form (the march kernels, W strips at once)

@@ -253,6 +253,7 @@ SolveTotals ExactModel::solve(const ContactInput& in, SolveMode mode)
     std::vector<double>& g = fine.tangential.bound();
     const std::vector<double>& qn = fine.normal.pressure();
     for (size_t k = 0; k < g.size(); ++k) g[k] = loaded ? qn[k] : 0.0;
+    scale_bounds(ElementFriction{factor_, nx_, setup_.direction < 0}, g.data(), nx_, ny_);
     // (With no friction g is the contact set for slide_freely, not a bound.)
     set_rigid_slip(fine);
 

@@ -77,6 +77,10 @@ public:
     {
         if (law_.clear()) has_previous_ = false;
     }
+    // Element-wise factors on the coefficient (contact/friction_law.hpp),
+    // applied to the finest level's bound; the coarse levels that give the
+    // cold start's first guess take the law alone.
+    void set_friction_factors(const double* factor) override { factor_ = factor; }
     // Under a law: the range of mu over the last solve's slipping elements
     // (mu(0) when none slips); false under Coulomb's law.
     bool friction_range(double& mu_min, double& mu_max) const override
@@ -124,6 +128,7 @@ private:
     ExactSolveInfo info_;
     bool has_previous_ = false;
     ExactLaw law_;
+    const double* factor_ = nullptr; // element-wise friction factors, the caller's
 
     // The last solve (rolling frame), for the exports.
     struct Setup {

@@ -232,4 +232,6 @@ TemperatureTotals FlashTemperature::compute(const HeatedContact& in, const Therm
     return totals;
 }
 
+double bulk_contact_temperature(const ThermalParams& p) { return partition(p, 1).Tc; }
+
 } // namespace creepwork::thermal

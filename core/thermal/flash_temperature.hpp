@@ -73,6 +73,10 @@ struct HeatedContact {
     int rolling_direction = 1;      // +1: leading edge at +x (material moves to -x); -1 mirrors
 };
 
+// The bulk part T_c both surfaces take in contact, as the discretisation
+// takes it (the rail's temperature in contact without heat).
+double bulk_contact_temperature(const ThermalParams& p);
+
 // The hottest contact element of one body (the maximum over the contact, as
 // CONTACT prints it: away from the contact a body is at most its T0).
 // Without contact: T = T0, element = -1, x = y = 0.

@@ -9,6 +9,8 @@ classdef Solver < handle
 %   name-value pairs, e.g. 'T0_1', 'conductivity_2', 'discretisation',
 %   'contact'; body 1 the rail, body 2 the wheel): T.T_max_1, T.x_max_1,
 %   ..., and T.rail, T.wheel, T.heat as nx-by-ny matrices.
+%   [R, T] = S.solve_mu_T(MU_T, TEMPERATURE, ...) solves with friction
+%   that depends on the temperature (help creepwork.Solver.solve_mu_T).
 %   D = S.damage('k_yield', K, ...) gives the damage indices: D.rcf_index_max,
 %   D.FI_surf, D.T_gamma, D.wlrm_damage, ..., D.rcf_index and
 %   D.t_gamma_density (nx-by-ny). The exact model starts from the
@@ -48,6 +50,22 @@ classdef Solver < handle
     end
     function t = temperature(obj, varargin)
       t = creepwork.call('solver_temperature', obj.id, creepwork.Solver.pairs(varargin));
+    end
+    function [r, t] = solve_mu_T(obj, mu_T, temperature, varargin)
+      %SOLVE_MU_T  Friction that depends on the surface temperature.
+      %   [R, T] = S.solve_mu_T(MU_T, TEMPERATURE, ...) solves with mu
+      %   piecewise linear through the rows [T mu] of MU_T (deg C; e.g.
+      %   [0 0.33; 400 0.14], CONTACT's L=6) in the rail's temperature,
+      %   TEMPERATURE a struct of cw_temperature_params fields (or []), then
+      %   creepwork.solve's parameters (model 'exact' on a uniform grid), in
+      %   cw_temperature_solve's loop of solve and temperature. R is the
+      %   last solve with its fields, T its temperatures (T.iterations: the
+      %   passes).
+      p = creepwork.inputs(varargin{:});
+      if isempty(temperature)
+        temperature = struct();
+      end
+      [t, r] = creepwork.call('solver_solve_mu_T', obj.id, p, temperature, mu_T);
     end
     function d = damage(obj, varargin)
       d = creepwork.call('solver_damage', obj.id, creepwork.Solver.pairs(varargin));

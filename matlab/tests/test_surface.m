@@ -68,4 +68,17 @@ s.temperature('rolling_speed', 149.5, 'conductivity_1', 1.01);
 s.damage('k_yield', 1.01e6);
 assert(isempty(lastwarn()), lastwarn());
 delete(s);
+% Friction mu(T): CONTACT's euro_tractcurv at 25 % creepage (L=6, -0.19 over
+% 400 deg C; Fx/(0.33 N) = -0.6108, T_max 364.7 deg C printed) within the C
+% test's tolerances; unsorted points named.
+e = creepwork.Solver(struct('kind', 'uniform', 'nx', 44, 'ny', 44, 'box_scale', 1.1));
+tp = struct('T0_1', 0, 'T0_2', 0, 'discretisation', 'contact');
+euro = {'model', 'exact', 'a', 6.304e-3, 'b', 12.61e-3, 'N', 106.7e3, 'V', 10, 'xi_x', 0.25};
+[r, t] = e.solve_mu_T([0 0.33; 400 0.14], tp, euro{:});
+assert(abs(r.Fx / (0.33 * 106.7e3) + 0.6108) <= 5.5e-4, sprintf('Fx %g', r.Fx));
+assert(abs(max(t.T_max_1, t.T_max_2) - 364.7) <= 2e-3 * 364.7, sprintf('T_max %g', t.T_max_1));
+assert(t.iterations > 2 && t.T_max_1 == max(t.rail(r.state >= 1)));
+expect_error(@() e.solve_mu_T([400 0.33; 0 0.14], tp, euro{:}), 'creepwork:CW_ERR_INVALID_INPUT', ...
+             'temperature\[1\]');
+delete(e);
 disp('temperature and damage indices as the header defines them');

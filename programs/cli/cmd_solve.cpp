@@ -49,8 +49,15 @@ int command_solve(int argc, char** argv, int first)
                           "needs the fields, which FASTSIM with a law at every element's slip "
                           "speed does not give (forces only; --friction-speed global gives "
                           "them)");
-    const Solution s = forces_only ? solver.solve_forces(c.params) : solver.solve_full(c.params);
-    const SurfaceOutput post = compute_surface(solver.handle(), surface);
+    Solution s;
+    SurfaceOutput post;
+    if (surface.mu_T()) { // the temperature's fixed-point loop solves
+        post = solve_surface_mu_T(solver.handle(), c.params, surface);
+        s = read_solution(solver.handle(), c.params, solver.grid());
+    } else {
+        s = forces_only ? solver.solve_forces(c.params) : solver.solve_full(c.params);
+        post = compute_surface(solver.handle(), surface);
+    }
     print_notes(c);
     for (const std::string& w : surface.warnings) std::fprintf(stderr, "creepwork: %s\n", w.c_str());
     JsonObject json = result_json(s.result, s.params, s.grid, c.units);

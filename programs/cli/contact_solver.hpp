@@ -48,6 +48,9 @@ public:
     int ny() const { return ny_; }
     // The library's handle, for the post-processors that read a solver.
     const cw_solver* handle() const { return solver_; }
+    // The same for the calls that solve on it (cw_temperature_solve).
+    cw_solver* handle() { return solver_; }
+    const cw_grid& grid() const { return grid_; }
 
 private:
     void check(int status, const char* call) const;

@@ -415,6 +415,9 @@ int command_solve_gap(const ParsedOptions& opts)
     for (const std::string& w : plausibility_warnings(g.grid, p, OptionSource(opts), file))
         c.notes.push_back("warning: " + w);
     const SurfaceRequest surface = read_surface_request(opts, p.rolling_direction, p.V);
+    if (surface.mu_T())
+        throw usage_error("--mu-T", "runs on the exact model on the ellipse's uniform grid, not "
+                                    "on a gap grid (--gap)");
     const std::string out = opts.text("out", "");
     if (!out.empty()) check_output_target(out, "--out", opts.has("force"));
 

@@ -1,5 +1,6 @@
 #include "surface_outputs.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 
@@ -91,6 +92,27 @@ std::vector<std::string> implausible(const SurfaceRequest& r)
     return w;
 }
 
+// "T1:mu1,T2:mu2,...": the pairs as written; their values (order, range,
+// count) are the library's to check.
+void read_mu_T(const std::string& text, std::vector<double>& T, std::vector<double>& mu)
+{
+    size_t at = 0;
+    while (at <= text.size()) {
+        const size_t end = std::min(text.find(',', at), text.size());
+        const std::string pair = text.substr(at, end - at);
+        const size_t colon = pair.find(':');
+        double t = 0.0, m = 0.0;
+        if (colon == std::string::npos || !parse_finite_double(pair.substr(0, colon), t) ||
+            !parse_finite_double(pair.substr(colon + 1), m))
+            throw usage_error("--mu-T", "\"" + pair +
+                                            "\" is not a pair T:mu (deg C and the coefficient), "
+                                            "as in \"0:0.33,400:0.14\"");
+        T.push_back(t);
+        mu.push_back(m);
+        at = end + 1;
+    }
+}
+
 } // namespace surface_options_detail
 
 using namespace surface_options_detail;
@@ -109,6 +131,7 @@ std::vector<OptionSpec> surface_options()
 {
     using K = OptionKind;
     std::vector<OptionSpec> specs = temperature_options();
+    specs.push_back({"mu-T", K::text, {}});
     specs.push_back({"speed", K::number, {}});
     specs.push_back({"k-yield", K::number, {}});
     return specs;
@@ -154,49 +177,98 @@ SurfaceRequest read_surface_request(const ParsedOptions& opts, int rolling_direc
     } else if (opts.has("speed")) {
         throw usage_error("--speed", "is the rolling speed of --temperature; give that too");
     }
+    if (opts.has("mu-T")) {
+        if (!r.temperature) throw usage_error("--mu-T", "needs --temperature");
+        read_mu_T(opts.text("mu-T", ""), r.mu_T_temperature, r.mu_T_mu);
+    }
     r.damage = opts.has("k-yield");
     if (r.damage) r.damage_params.k_yield = opts.number("k-yield", 0.0);
     r.warnings = implausible(r);
     return r;
 }
 
+namespace surface_options_detail {
+
+using TemperatureHandle = std::unique_ptr<cw_temperature, Destroy<cw_temperature>>;
+
+TemperatureHandle make_temperature(const cw_solver* solver)
+{
+    cw_temperature* raw = nullptr;
+    if (const int st = cw_temperature_create(solver, &raw)) rejected(st, nullptr, "cw_temperature_create");
+    return TemperatureHandle(raw, {cw_temperature_destroy});
+}
+
+// Both bodies' temperature fields of t's last compute into o.
+void read_temperatures(const cw_temperature* t, size_t n, SurfaceOutput& o)
+{
+    o.rail.resize(n);
+    o.wheel.resize(n);
+    if (cw_temperature_get_field(t, CW_TEMPERATURE_FIELD_RAIL, o.rail.data(), n) ||
+        cw_temperature_get_field(t, CW_TEMPERATURE_FIELD_WHEEL, o.wheel.data(), n))
+        throw CliError(kExitFailure, std::string("cw_temperature_get_field failed: ") +
+                                         cw_temperature_last_error(t));
+}
+
+size_t element_count(const cw_solver* solver)
+{
+    int nx = 0, ny = 0;
+    cw_solver_grid_size(solver, &nx, &ny);
+    return static_cast<size_t>(nx) * static_cast<size_t>(ny);
+}
+
+// The damage indices of the request on solver's last solve, into o.
+void compute_damage(const cw_solver* solver, const SurfaceRequest& request, SurfaceOutput& o)
+{
+    o.damage = request.damage;
+    if (!request.damage) return;
+    cw_damage* raw = nullptr;
+    if (const int st = cw_damage_create(solver, &raw)) rejected(st, nullptr, "cw_damage_create");
+    std::unique_ptr<cw_damage, Destroy<cw_damage>> d(raw, {cw_damage_destroy});
+    cw_damage_result_init(&o.damage_result);
+    if (const int st = cw_damage_compute(d.get(), solver, &request.damage_params, &o.damage_result))
+        rejected(st, cw_damage_last_error(d.get()), "cw_damage_compute");
+    const size_t n = element_count(solver);
+    o.rcf_index.resize(n);
+    if (cw_damage_get_field(d.get(), CW_DAMAGE_FIELD_RCF_INDEX, o.rcf_index.data(), n))
+        throw CliError(kExitFailure, std::string("cw_damage_get_field failed: ") +
+                                         cw_damage_last_error(d.get()));
+}
+
+} // namespace surface_options_detail
+
 SurfaceOutput compute_surface(const cw_solver* solver, const SurfaceRequest& request)
 {
     SurfaceOutput o;
     o.temperature = request.temperature;
-    o.damage = request.damage;
-    int nx = 0, ny = 0;
-    cw_solver_grid_size(solver, &nx, &ny);
-    const size_t n = static_cast<size_t>(nx) * static_cast<size_t>(ny);
     if (request.temperature) {
-        cw_temperature* raw = nullptr;
-        if (const int st = cw_temperature_create(solver, &raw))
-            rejected(st, nullptr, "cw_temperature_create");
-        std::unique_ptr<cw_temperature, Destroy<cw_temperature>> t(raw, {cw_temperature_destroy});
+        const TemperatureHandle t = make_temperature(solver);
         cw_temperature_result_init(&o.temperature_result);
         if (const int st = cw_temperature_compute(t.get(), solver, &request.temperature_params,
                                                   &o.temperature_result))
             rejected(st, cw_temperature_last_error(t.get()), "cw_temperature_compute");
-        o.rail.resize(n);
-        o.wheel.resize(n);
-        if (cw_temperature_get_field(t.get(), CW_TEMPERATURE_FIELD_RAIL, o.rail.data(), n) ||
-            cw_temperature_get_field(t.get(), CW_TEMPERATURE_FIELD_WHEEL, o.wheel.data(), n))
-            throw CliError(kExitFailure, std::string("cw_temperature_get_field failed: ") +
-                                             cw_temperature_last_error(t.get()));
+        read_temperatures(t.get(), element_count(solver), o);
     }
-    if (request.damage) {
-        cw_damage* raw = nullptr;
-        if (const int st = cw_damage_create(solver, &raw)) rejected(st, nullptr, "cw_damage_create");
-        std::unique_ptr<cw_damage, Destroy<cw_damage>> d(raw, {cw_damage_destroy});
-        cw_damage_result_init(&o.damage_result);
-        if (const int st = cw_damage_compute(d.get(), solver, &request.damage_params,
-                                             &o.damage_result))
-            rejected(st, cw_damage_last_error(d.get()), "cw_damage_compute");
-        o.rcf_index.resize(n);
-        if (cw_damage_get_field(d.get(), CW_DAMAGE_FIELD_RCF_INDEX, o.rcf_index.data(), n))
-            throw CliError(kExitFailure, std::string("cw_damage_get_field failed: ") +
-                                             cw_damage_last_error(d.get()));
-    }
+    compute_damage(solver, request, o);
+    return o;
+}
+
+SurfaceOutput solve_surface_mu_T(cw_solver* solver, const cw_params& params,
+                                 const SurfaceRequest& request)
+{
+    SurfaceOutput o;
+    o.temperature = true;
+    const TemperatureHandle t = make_temperature(solver);
+    cw_mu_temperature m;
+    cw_mu_temperature_init(&m);
+    m.count = request.mu_T_temperature.size();
+    m.temperature = request.mu_T_temperature.data();
+    m.mu = request.mu_T_mu.data();
+    cw_temperature_result_init(&o.temperature_result);
+    if (const int st = cw_temperature_solve(t.get(), solver, &params, &request.temperature_params,
+                                            &m, nullptr, &o.temperature_result))
+        rejected(st, cw_temperature_last_error(t.get()), "cw_temperature_solve");
+    read_temperatures(t.get(), element_count(solver), o);
+    compute_damage(solver, request, o);
     return o;
 }
 

@@ -16,7 +16,7 @@
 namespace cwcli {
 
 // --temperature, --T0-1, --T0-2, --heat-capacity-1/-2, --conductivity-1/-2,
-// --density-1/-2, --temperature-discretisation, --speed, --k-yield.
+// --density-1/-2, --temperature-discretisation, --mu-T, --speed, --k-yield.
 std::vector<OptionSpec> surface_options();
 
 // The temperature's part of them, without --speed (creepwork wheelrail: each
@@ -32,6 +32,9 @@ struct SurfaceRequest {
     bool temperature = false, damage = false;
     cw_temperature_params temperature_params{};
     cw_damage_params damage_params{};
+    // --mu-T "T1:mu1,T2:mu2,...": friction mu(T) [deg C, -] (empty: none).
+    std::vector<double> mu_T_temperature, mu_T_mu;
+    bool mu_T() const { return !mu_T_temperature.empty(); }
     // "warning: ..." for values valid but implausible for steel wheels and
     // rails (W/(mm K) typed as W/(m K), km/h as m/s, MPa as Pa).
     std::vector<std::string> warnings;
@@ -53,6 +56,12 @@ struct SurfaceOutput {
 // Computes what was requested on solver's last CW_SOLVE_FULL solve. Throws
 // CliError(kExitUsage) with the library's message and the options it names.
 SurfaceOutput compute_surface(const cw_solver* solver, const SurfaceRequest& request);
+
+// Solves params with friction mu(T) (request.mu_T(), through
+// cw_temperature_solve on solver) and computes the rest of the request on
+// that solve. Throws as compute_surface.
+SurfaceOutput solve_surface_mu_T(cw_solver* solver, const cw_params& params,
+                                 const SurfaceRequest& request);
 
 // T_max_1, T_max_2 [deg C], T_max_x, T_max_y [m] (the hotter body's hottest
 // contact element), temperature_iterations; rcf_index_max, FI_surf,

@@ -188,6 +188,14 @@ body 2 the wheel):
                     surface temperature in contact; contact: CONTACT's
                     discretisation (its element's own term runs hot, of
                     order sqrt(dx)), for comparison with CONTACT
+  --mu-T "T1:mu1,T2:mu2,..."
+                    friction that depends on the temperature: mu piecewise
+                    linear in the rail's surface temperature [degC],
+                    constant beyond the ends (CONTACT's L=6 is two points);
+                    solved in a fixed-point loop of solve and temperature
+                    (JSON: temperature_iterations); --model exact on the
+                    ellipse's grid; under a --friction-law the table gives
+                    the coefficient at rest
   --k-yield K       also the damage indices with the surface shear yield
                     stress K [Pa] (doc/theory/damage.md): the RCF index per
                     element, FI_surf, T_gamma and the WLRM damage per pass

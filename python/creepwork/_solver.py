@@ -8,7 +8,7 @@ library writes straight into the array: no copy, no transpose.
 
 import ctypes
 from collections import namedtuple
-from typing import TYPE_CHECKING, Any, Dict, Optional, Union
+from typing import TYPE_CHECKING, Any, Dict, Optional, Tuple, Union
 
 import numpy as np
 
@@ -233,7 +233,29 @@ class Solver(Handle):
         jac = np.empty((4, 4))
         return self._solve(params, keywords, fields, jac, warn, "jacobian", 2)
 
-    def _solve(self, params_in, keywords, fields, jacobian, warn, caller, stacklevel):
+    def solve_mu_T(self, mu_T, params: ParamsLike = None, *, temperature: Optional[dict] = None,
+                   tolerance: float = 1e-6, max_iterations: int = 100, warn: bool = True,
+                   **keywords: Any) -> Tuple["Result", "TemperatureResult"]:
+        """Solves one contact with friction that depends on the surface
+        temperature (cw_temperature_solve, doc/theory/temperature.md): mu_T
+        the points (T [deg C], mu) of mu piecewise linear in the rail's
+        temperature, e.g. [(0, 0.33), (400, 0.14)] (CONTACT's L=6); params
+        and keywords as solve() (model="exact" on a uniform grid);
+        temperature the keywords of Temperature.compute (rolling_speed
+        defaults to V); tolerance and max_iterations those of the loop.
+        Returns (Result with fields, TemperatureResult whose iterations are
+        the loop's passes)."""
+        from ._surface import Temperature
+        if "temperature" not in self._surface:
+            self._surface["temperature"] = Temperature(self)
+        t = dict(temperature or {})
+        t.setdefault("rolling_direction", 0)  # 0: the solve's
+        call, read = self._surface["temperature"]._solve_call(mu_T, tolerance, max_iterations, t,
+                                                              warn)
+        result = self._solve(params, keywords, True, None, warn, "solve_mu_T", 2, call)
+        return result, read()
+
+    def _solve(self, params_in, keywords, fields, jacobian, warn, caller, stacklevel, call=None):
         handle = self._live()
         keywords = polach_keywords(keywords, caller)
         if isinstance(params_in, dict):
@@ -249,7 +271,11 @@ class Solver(Handle):
         if warn:
             _errors.warn_units(_checks.warnings_for(self._grid_rec, rec, typed), stacklevel)
         mode = CONSTANTS["CW_SOLVE_FULL"] if fields else CONSTANTS["CW_SOLVE_FORCES"]
-        if jacobian is None:
+        if call is not None:  # a solve by another call (cw_temperature_solve), then its result
+            status = call(handle, address(rec))
+            if status == 0:
+                status = lib.cw_solver_get_result(handle, self._result_address)
+        elif jacobian is None:
             status = lib.cw_solver_solve(handle, address(rec), mode, self._result_address)
         else:
             status = lib.cw_solver_solve_jacobian(handle, address(rec), mode,

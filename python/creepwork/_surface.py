@@ -66,15 +66,22 @@ class _Surface(Handle):
         _errors.check(getattr(lib, "cw_%s_create" % self._noun)(solver._live(),
                                                                   ctypes.byref(self._handle)))
 
-    def _compute(self, solver, keywords, warn):
+    def _record(self, keywords, warn):
         rec = self._params.record(keywords, "compute")
         if warn:
             typed = {self._params.field(k, "compute"): k for k in keywords}
-            _errors.warn_units(_checks.params_warnings(self._noun, rec, typed), 3)
+            _errors.warn_units(_checks.params_warnings(self._noun, rec, typed), 4)
         res = np.zeros((), DTYPES["cw_%s_result" % self._noun])
         getattr(lib, "cw_%s_result_init" % self._noun)(address(res))
+        return rec, res
+
+    def _compute(self, solver, keywords, warn):
+        rec, res = self._record(keywords, warn)
         self._check(getattr(lib, "cw_%s_compute" % self._noun)(
             self._live(), solver._live(), address(rec), address(res)))
+        return self._read(res)
+
+    def _read(self, res):
         block = np.empty((len(self._fields), self.ny, self.nx))
         n, base = self.nx * self.ny, address(block)
         get = getattr(lib, "cw_%s_get_field" % self._noun)
@@ -111,6 +118,28 @@ class Temperature(_Surface):
         """
         keywords.setdefault("rolling_direction", getattr(solver, "_rolling_direction", 1))
         return self._compute(solver, keywords, warn)
+
+    def _solve_call(self, mu_T, tolerance, max_iterations, keywords, warn):
+        """What Solver.solve_mu_T calls: a function of the solver's handle and
+        the params' address that runs cw_temperature_solve and returns its
+        status, and a function that reads the TemperatureResult after it."""
+        table = np.ascontiguousarray(np.asarray(mu_T, dtype=np.float64).reshape(-1, 2).T)
+        rec, res = self._record(keywords, warn)
+        m = np.zeros((), DTYPES["cw_mu_temperature"])
+        lib.cw_mu_temperature_init(address(m))
+        m["count"] = table.shape[1]
+        m["temperature"] = address(table[0]) if table.size else 0
+        m["mu"] = address(table[1]) if table.size else 0
+        m["tolerance"] = tolerance
+        m["max_iterations"] = max_iterations
+
+        def call(handle, params_address):
+            keep = (table, rec, m)  # alive until the call returns
+            return lib.cw_temperature_solve(self._live(), handle, params_address,
+                                            address(keep[1]), address(keep[2]), None,
+                                            address(res))
+
+        return call, lambda: self._read(res)
 
 
 class Damage(_Surface):

@@ -151,3 +151,52 @@ def test_implausible_units_warn():
         (w,) = _unit_warnings(s.damage, k_yield=3e8, wlrm_onset=0.0, wlrm_peak=0.065,
                               wlrm_zero=175.0)
         assert w.startswith("wlrm_peak = 0.065 N" + implausible)
+
+
+EURO = dict(a=6.304e-3, b=12.61e-3, N=106.7e3, V=10.0, xi_x=0.25, model="exact")
+EURO_GRID = {"kind": "uniform", "nx": 44, "ny": 44, "box_scale": 1.1}
+EURO_TEMPERATURE = dict(T0_1=0.0, T0_2=0.0, discretisation="contact")
+
+
+def test_mu_of_temperature_as_the_c_abi():
+    """solve_mu_T: CONTACT's euro_tractcurv at 25 % creepage (L=6, -0.19 over
+    400 deg C; Fx/(0.33 N) = -0.6108, T_max 364.7 deg C printed, within the
+    C test's tolerances), the fields those of the last solve, and the same
+    bits as the CLI's JSON (cw_temperature_solve behind both)."""
+    import json
+    import os
+    import subprocess
+    with creepwork.Solver(EURO_GRID) as s:
+        r, t = s.solve_mu_T([(0.0, 0.33), (400.0, 0.14)], temperature=EURO_TEMPERATURE, **EURO)
+        assert abs(r.Fx / (0.33 * 106.7e3) + 0.6108) <= 5.5e-4
+        assert abs(max(t.T_max_1, t.T_max_2) - 364.7) <= 2e-3 * 364.7
+        assert t.iterations > 2
+        assert t.T_max_1 == t.rail.max()
+        assert r.Fx == s.result().Fx
+        cli = os.environ.get("CREEPWORK_CLI")
+        if cli:
+            out = subprocess.run(
+                [cli, "solve", "--model", "exact", "--a", "6.304e-3", "--b", "12.61e-3", "--N",
+                 "106.7e3", "--V", "10", "--xi-x", "0.25", "--nx", "44", "--ny", "44",
+                 "--box-scale", "1.1", "--temperature", "--T0-1", "0", "--T0-2", "0",
+                 "--temperature-discretisation", "contact", "--mu-T", "0:0.33,400:0.14",
+                 "--format", "json"], check=True, capture_output=True, text=True).stdout
+            j = json.loads(out)
+            assert j["Fx"] == r.Fx and j["T_max_1"] == t.T_max_1
+            assert j["temperature_iterations"] == t.iterations
+
+
+def test_mu_of_temperature_errors_name_the_entry():
+    with creepwork.Solver(EURO_GRID) as s:
+        with pytest.raises(creepwork.InvalidInputError, match=r"temperature\[1\]"):
+            s.solve_mu_T([(400.0, 0.33), (0.0, 0.14)], temperature=EURO_TEMPERATURE, **EURO)
+        with pytest.raises(creepwork.InvalidInputError, match="count"):
+            s.solve_mu_T([(0.0, 0.33)], temperature=EURO_TEMPERATURE, **EURO)
+        with pytest.raises(creepwork.InvalidInputError, match=r"mu\[1\]"):
+            s.solve_mu_T([(0.0, 0.33), (400.0, float("nan"))], temperature=EURO_TEMPERATURE,
+                         **EURO)
+        with pytest.raises(creepwork.InvalidInputError, match="mu_T"):
+            s.solve_mu_T([(0.0, 0.33), (400.0, 0.14)], temperature=EURO_TEMPERATURE,
+                         **dict(EURO, model="fastsim"))
+        with pytest.raises(creepwork.NoSolutionError):
+            s.result()

@@ -5,6 +5,11 @@
 !                contact for dissimilar bodies, T_c = (b1 T0_1 + b2 T0_2)/(b1
 !                + b2), the heat = V x the work map's sum, the maxima are the
 !                fields' largest contact values; errors through stat/errmsg
+!   mu(T)        cw_temperature_type%solve: CONTACT's euro_tractcurv at 25 %
+!                creepage (L=6, -0.19 over 400 deg C; Fx/(0.33 N) = -0.6108,
+!                T_max 364.7 deg C, tests/data/temperature) within the C
+!                test's tolerances; unsorted points and arrays of different
+!                lengths refused naming them
 !   damage       cw_damage_type in full sliding: the RCF index mu - k/pz,
 !                sum of the T_gamma density x area = W_macro, FI_surf
 !   legacy       CWTEMP equals cw_temperature_type on the same solve (V
@@ -25,6 +30,7 @@ program test_fortran_surface
 
    call check_structs()
    call check_temperature()
+   call check_mu_temperature()
    call check_damage()
    call check_plausibility()
    call check_legacy()
@@ -121,6 +127,50 @@ contains
       call temperature%destroy()
       call solver%destroy()
    end subroutine check_temperature
+
+   subroutine check_mu_temperature()
+      type(cw_solver_type) :: solver
+      type(cw_temperature_type) :: temperature
+      type(cw_temperature_params) :: tp
+      type(cw_temperature_result) :: tr
+      type(cw_params) :: p
+      type(cw_result) :: r
+      real(c_double) :: T(2), mu(2), mu3(3)
+      character(len=:), allocatable :: msg
+      integer :: stat
+      call solver%create(kind=CW_GRID_UNIFORM, nx=44, ny=44, box_scale=1.1_c_double)
+      call temperature%create(solver)
+      call cw_params_init(p)
+      p%model = CW_MODEL_EXACT
+      p%a = 6.304e-3_c_double
+      p%b = 12.61e-3_c_double
+      p%normal_force = 106.7e3_c_double
+      p%V = 10
+      p%xi_x = 0.25_c_double
+      call cw_temperature_params_init(tp)
+      tp%T0_1 = 0
+      tp%T0_2 = 0
+      tp%discretisation = CW_TEMPERATURE_CONTACT
+      T = [0.0_c_double, 400.0_c_double]
+      mu = [0.33_c_double, 0.14_c_double]
+      call temperature%solve(solver, p, tp, T, mu, r, tr)
+      call check_close(r%Fx/(0.33_c_double*p%normal_force), -0.6108_c_double, 0.0_c_double, &
+                       5.5e-4_c_double, 'euro_tractcurv 25 %: Fx/(FREF N)')
+      call check_close(max(tr%T_max_1, tr%T_max_2), 364.7_c_double, 2e-3_c_double, &
+                       0.05_c_double, 'euro_tractcurv 25 %: T_max')
+      call check_true(tr%iterations >= 2, 'passes of solve and temperature')
+      T = [400.0_c_double, 0.0_c_double]
+      call temperature%solve(solver, p, tp, T, mu, stat=stat, errmsg=msg)
+      call check_int(stat, CW_ERR_INVALID_INPUT, 'unsorted temperatures')
+      call check_true(index(msg, 'temperature[1]') > 0, 'message names temperature[1]: '//msg)
+      T = [0.0_c_double, 400.0_c_double]
+      mu3 = 0.3_c_double
+      call temperature%solve(solver, p, tp, T, mu3, stat=stat, errmsg=msg)
+      call check_int(stat, CW_ERR_INVALID_INPUT, 'lengths differ')
+      call check_true(index(msg, 'mu_T') > 0, 'message names mu_T: '//msg)
+      call temperature%destroy()
+      call solver%destroy()
+   end subroutine check_mu_temperature
 
    subroutine check_damage()
       type(cw_solver_type) :: solver

@@ -62,8 +62,8 @@ typedef struct cw_temperature_result {
     double contact_temperature; /* bulk part in contact [deg C]: (b1 T0_1 + b2 T0_2)/(b1 + b2),
                                    b = sqrt(lambda rho c) (CONTACT's with b1, b2 swapped) */
     double power;               /* total frictional power, sum of q area [W] */
-    int iterations;             /* passes of temperature and solve: 1 (friction does not
-                                   depend on temperature) */
+    int iterations;             /* passes of solve and temperature: 1 for
+                                   cw_temperature_compute; cw_temperature_solve's count */
     int discretisation;         /* as computed */
 } cw_temperature_result;
 
@@ -103,6 +103,53 @@ CW_API int cw_temperature_get_result(const cw_temperature* temperature,
 
 /* Detailed message of the last error on this handle, as cw_solver_last_error. */
 CW_API const char* cw_temperature_last_error(const cw_temperature* temperature);
+
+/* Friction that depends on the surface temperature: mu(T) piecewise linear
+ * through count points (temperature[k], mu[k]), constant beyond the first
+ * and the last. CONTACT's L=6 (FREF, TREF, DFHEAT, DTHEAT) is the table
+ * of two points (TREF, FREF), (TREF + DTHEAT, FREF + DFHEAT). Element e's
+ * coefficient is mu(T_e) under Coulomb's law (cw_params.mu is not read),
+ * and mu_law(s) mu(T_e) / mu_law(0) under a law of the slip speed (the
+ * table gives the static coefficient, the law its fall with s); T_e is the
+ * rail's (body 1's) surface temperature at the element, as CONTACT's
+ * TEMP1 (in contact both bodies share it under the consistent
+ * discretisation). The arrays are the caller's, read during the call.
+ * Under Coulomb's law cw_result.mu_static is the table's largest mu and
+ * mu_min, mu_max the range over the slipping elements. */
+typedef struct cw_mu_temperature {
+    size_t struct_size;        /* set by cw_mu_temperature_init */
+    size_t count;              /* points, >= 2; default 0: must be set */
+    const double* temperature; /* [deg C], count values, finite, strictly increasing */
+    const double* mu;          /* [-], count values, finite, > 0 */
+    double tolerance;          /* the loop stops when Fx and Fy change by at most
+                                  tolerance N from one pass to the next; in [1e-12, 0.1],
+                                  default 1e-6 */
+    int max_iterations;        /* passes of solve and temperature, in [1, 1000]; default
+                                  100; reaching it is CW_ERR_NOT_CONVERGED */
+} cw_mu_temperature;
+
+/* Fills the defaults above. Errors: CW_ERR_NULL_POINTER. */
+CW_API int cw_mu_temperature_init(cw_mu_temperature* mu_T);
+
+/* Solves params (CW_SOLVE_FULL) with friction mu(T) in a fixed-point loop:
+ * the first pass with every element at mu of the bulk contact temperature,
+ * then temperatures -> each element's mu from its temperature -> solve
+ * again, until the forces change by at most mu_T->tolerance N. The solver
+ * keeps the last solve (its fields and totals, as after cw_solver_solve;
+ * later solves have no mu(T)), the handle its temperatures (as after
+ * cw_temperature_compute, with iterations the passes taken). result and
+ * temperature_result may be NULL. The exact model on the ellipse's uniform
+ * grid (CW_MODEL_EXACT, CW_GRID_UNIFORM) takes mu(T); other models refuse
+ * it. Errors: those of cw_solver_solve and cw_temperature_compute,
+ * CW_ERR_INVALID_INPUT naming a bad mu_T entry (mu_T.count,
+ * mu_T.temperature[k], mu_T.mu[k], mu_T.tolerance, mu_T.max_iterations) or
+ * a model without mu(T), CW_ERR_NOT_CONVERGED (max_iterations reached).
+ * After an error neither handle holds a solution. */
+CW_API int cw_temperature_solve(cw_temperature* temperature, cw_solver* solver,
+                                const cw_params* params,
+                                const cw_temperature_params* temperature_params,
+                                const cw_mu_temperature* mu_T, cw_result* result,
+                                cw_temperature_result* temperature_result);
 
 /* Checks params for values that are valid but implausible for steel wheels
  * and rails, as cw_params_check does a contact's (doc/input-schema.md,

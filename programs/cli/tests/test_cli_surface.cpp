@@ -1,7 +1,8 @@
 /* Tests of `creepwork solve --temperature / --k-yield`, run as a user runs
  * it: its JSON equals what the C ABI's cw_temperature and cw_damage give for
  * the same contact (bitwise: the JSON prints exact doubles), on an ellipse
- * and on CONTACT's example grid (--gap); bad input fails cleanly (status 2,
+ * and on CONTACT's example grid (--gap), and with --mu-T what
+ * cw_temperature_solve gives; bad input fails cleanly (status 2,
  * one stderr line naming the option); the pictures are drawn.
  *
  * usage: test_cli_surface <creepwork binary> <scratch dir> [cmocka filter] */
@@ -129,6 +130,52 @@ void surface_speed_from_V(void**)
     expect_contains(r.err, "--V");
 }
 
+// --mu-T: the JSON equals cw_temperature_solve on the same contact, bitwise
+// (forces, temperatures, passes), CONTACT's euro_tractcurv at 25 % creepage
+// (L=6 falling by 0.19 over 400 deg C; the C test holds every row).
+void surface_mu_T_matches_library(void**)
+{
+    const Json j = parse_or_fail(
+        cli_ok({"solve", "--model", "exact", "--a", "6.304e-3", "--b", "12.61e-3", "--N",
+                "106.7e3", "--V", "10", "--xi-x", "0.25", "--nx", "44", "--ny", "44",
+                "--box-scale", "1.1", "--temperature", "--T0-1", "0", "--T0-2", "0",
+                "--temperature-discretisation", "contact", "--mu-T", "0:0.33,400:0.14",
+                "--format", "json"})
+            .out);
+    cw_grid g;
+    cw_grid_init(&g);
+    g.kind = CW_GRID_UNIFORM;
+    g.nx = g.ny = 44;
+    g.box_scale = 1.1;
+    cw_params p;
+    cw_params_init(&p);
+    p.model = CW_MODEL_EXACT;
+    p.a = 6.304e-3, p.b = 12.61e-3, p.normal_force = 106.7e3, p.V = 10, p.xi_x = 0.25;
+    cw_solver* s = nullptr;
+    assert_int_equal(cw_solver_create(&g, &s, nullptr, 0), CW_OK);
+    cw_temperature* t = nullptr;
+    assert_int_equal(cw_temperature_create(s, &t), CW_OK);
+    cw_temperature_params tp;
+    cw_temperature_params_init(&tp);
+    tp.T0_1 = tp.T0_2 = 0;
+    tp.discretisation = CW_TEMPERATURE_CONTACT;
+    const double T[2] = {0, 400}, mu[2] = {0.33, 0.14};
+    cw_mu_temperature m;
+    cw_mu_temperature_init(&m);
+    m.count = 2, m.temperature = T, m.mu = mu;
+    cw_result r;
+    cw_result_init(&r);
+    cw_temperature_result tr;
+    cw_temperature_result_init(&tr);
+    assert_int_equal(cw_temperature_solve(t, s, &p, &tp, &m, &r, &tr), CW_OK);
+    assert_true(j.num("Fx") == r.Fx && j.num("mu_min") == r.mu_min && j.num("mu_max") == r.mu_max);
+    assert_true(j.num("T_max_1") == tr.T_max_1 && j.num("T_max_2") == tr.T_max_2);
+    assert_true(j.num("temperature_iterations") == tr.iterations && tr.iterations > 2);
+    assert_close(j.num("Fx") / (0.33 * 106.7e3), -0.6108, 0, 5.5e-4);
+    cw_temperature_destroy(t);
+    cw_solver_destroy(s);
+}
+
 void surface_bad_inputs_fail_cleanly(void**)
 {
     struct Case {
@@ -142,7 +189,19 @@ void surface_bad_inputs_fail_cleanly(void**)
                  {{"--temperature", "--speed", "30", "--density-2", "7.85e-6"}, "--density-2"},
                  {{"--temperature", "--speed", "30", "--temperature-discretisation", "exact"},
                   "--temperature-discretisation"},
-                 {{"--k-yield", "0"}, "--k-yield"}};
+                 {{"--k-yield", "0"}, "--k-yield"},
+                 {{"--model", "exact", "--mu-T", "0:0.3,100:0.2"}, "--mu-T"},
+                 {{"--model", "exact", "--temperature", "--speed", "30", "--mu-T", "0:0.3,x"},
+                  "--mu-T"},
+                 {{"--model", "exact", "--temperature", "--speed", "30", "--mu-T", "0:0.3,nan:0.2"},
+                  "--mu-T"},
+                 {{"--model", "exact", "--temperature", "--speed", "30", "--mu-T", "0:0.3"},
+                  "--mu-T"},
+                 {{"--model", "exact", "--temperature", "--speed", "30", "--mu-T",
+                   "100:0.3,0:0.2"}, "--mu-T"},
+                 {{"--model", "exact", "--temperature", "--speed", "30", "--mu-T",
+                   "0:0.3,100:0"}, "--mu-T"},
+                 {{"--temperature", "--speed", "30", "--mu-T", "0:0.3,100:0.2"}, "--mu-T"}};
     for (const Case& c : cases) {
         const std::string out = g_tools.scratch + "/refused";
         const Run r = cli(with(with(kContact, c.extra), {"--out", out}));
@@ -202,6 +261,7 @@ int main(int argc, char** argv)
         cmocka_unit_test(surface_matches_library),
         cmocka_unit_test(surface_contact_example),
         cmocka_unit_test(surface_speed_from_V),
+        cmocka_unit_test(surface_mu_T_matches_library),
         cmocka_unit_test(surface_bad_inputs_fail_cleanly),
         cmocka_unit_test(surface_warns_about_implausible_units),
         cmocka_unit_test(surface_writes_pictures),
