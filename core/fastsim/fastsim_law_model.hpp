@@ -1,10 +1,12 @@
 // FASTSIM with a friction law of the slip speed at every element: Kalker's
 // march (the grid, setup, traction bound and totals of march_model.hpp)
 // where each slipping element keeps its predictor's direction and the
-// magnitude t = p_n mu(s) at its own slip speed s (friction/local_slip.hpp)
-// instead of Coulomb's p_n mu. The rolling speed V turns micro-slip into
-// slip speed. The march is scalar, strip after strip; Coulomb's law gives
-// FASTSIM's tractions (test_core_friction_fastsim).
+// magnitude t = p_n mu(s) at its own slip speed s instead of Coulomb's
+// p_n mu. The rolling speed V turns micro-slip into slip speed. Without
+// memory the march is the SIMD kernel of march_law.hpp (every ISA the same
+// bits); Coulomb's law is FASTSIM's march itself (bitwise FastsimModel's);
+// with memory the march is scalar, element after element
+// (friction/local_slip.hpp).
 //
 // Slip speed of an element: its slip over one step h is the elastic
 // predictor's displacement less the displacement it keeps, (L1 dq_x, L2 dq_y)
@@ -41,9 +43,9 @@ public:
     // The Jacobian by forward differentiation of the same march (the totals
     // bitwise solve()'s): per slipping element the derivative of t through
     // P = |q'|, the slip-speed factor c (which moves with q' and, through
-    // the traction unit, with N) and the law's slope, dt = (p_n mu' (c dP +
-    // (P - t) dc)) / (1 + p_n c mu'); held fixed as in FASTSIM's Jacobian
-    // (fastsim_jacobian.hpp), and V. Not with memory (Error naming it).
+    // the traction unit, with N) and the law's slope (march_law.hpp); held
+    // fixed as in FASTSIM's Jacobian (fastsim_jacobian.hpp), and V. Not
+    // with memory (Error naming it).
     SolveTotals solve_jacobian(const ContactInput& input, SolveMode mode,
                                Jacobian& jacobian) override;
 
@@ -61,6 +63,7 @@ public:
 
 private:
     void march_with_law(bool tangents);
+    void march_with_memory();
     void prepare(const ContactInput& input, SolveMode mode);
 
     SlipSpeedLaw law_;
@@ -69,8 +72,9 @@ private:
     double mu_min_ = 0.0, mu_max_ = 0.0;
     int iterations_ = 0;
     ContactInput input_; // the last solve's, with mu = the law's static coefficient
+    // Tangents: rows ux, uy, kappa (fastsim_jacobian reads them) and ln T.
     TangentState tangent_;
-    Eigen::ArrayXd tau_px_, tau_py_, tau_x_py_; // per strip: sums' derivatives by ln T
+    Eigen::ArrayXd ratio_min_, ratio_max_, strip_iterations_; // per strip (march_law.hpp)
 };
 
 } // namespace creepwork
