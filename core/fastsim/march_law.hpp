@@ -4,9 +4,9 @@
 // root of
 //   t = g m(c (P - t)),   m = mu/mu_s,  c = (V T / a) |(L1 q'_x, L2 q'_y)| / (P h)
 // (the slip speed s = c (P - t) [m/s], fastsim_law_model.hpp), which keeps
-// q's direction: f = t / P. Newton's method from the strip's previous
-// slipping element's m, safeguarded by bisection in [0, g] (g(0) <= 0 <=
-// g(g) there); all lanes of a group iterate together, each frozen once its
+// q's direction: f = t / P. Newton's method from m extrapolated along the
+// strip from its last two slipping elements, safeguarded by bisection in
+// [0, g] (g(0) <= 0 <= g(g) there); all lanes of a group iterate together, each frozen once its
 // step is below 1e-8 g, whose Newton step it then takes (its error squared:
 // the root to rounding), moving m to first order. The law's form is a
 // template parameter: no branch on it in the loop.
