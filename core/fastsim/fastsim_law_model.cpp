@@ -40,11 +40,8 @@ void FastsimLawModel::set_law(const SlipSpeedLaw& law, double V)
     V_ = V;
 }
 
-void FastsimLawModel::prepare(const ContactInput& input, SolveMode mode)
+void FastsimLawModel::prepare(const ContactInput& input)
 {
-    if (mode == SolveMode::full)
-        throw Error(ErrorKind::invalid_input,
-                    "mode: FASTSIM with a law of the slip speed gives forces only (no work map)");
     if (V_ <= 0.0) throw Error(ErrorKind::invalid_input, "V: no friction law set (set_law)");
     input_ = input;
     input_.mu = static_friction(law_);
@@ -55,11 +52,12 @@ void FastsimLawModel::prepare(const ContactInput& input, SolveMode mode)
 
 SolveTotals FastsimLawModel::solve(const ContactInput& input, SolveMode mode)
 {
-    prepare(input, mode);
+    prepare(input);
     if (memory_.distance > 0.0)
         march_with_memory();
     else
         march_with_law(false);
+    if (mode == SolveMode::full) work_of_march();
     return totals(input_, mode, ModelKind::fastsim);
 }
 
@@ -75,8 +73,9 @@ SolveTotals FastsimLawModel::solve_jacobian(const ContactInput& input, SolveMode
     if (memory_.distance > 0.0)
         throw Error(ErrorKind::invalid_input,
                     "memory_distance: FASTSIM with friction memory has no Jacobian");
-    prepare(input, mode);
+    prepare(input);
     march_with_law(true);
+    if (mode == SolveMode::full) work_of_march();
     Jacobian J = fastsim_jacobian(input_, setup(), grid(), march_state(), tangent_);
     // The slip-speed factor c is proportional to the traction unit T, which
     // N moves (T = mu_s p0, p0 proportional to N): the column of N gains

@@ -37,8 +37,10 @@ public:
     void set_memory(const FrictionMemory& memory);
 
     // input.mu is not read: the traction unit is the law's static
-    // coefficient. Forces mode only (full mode: Error naming the mode, the
-    // work map under a local law is not made).
+    // coefficient. Full mode: the work of every element from the march's
+    // (q', f) (march_work.hpp): the friction dissipation of each slipping
+    // element is its traction times its slip, whatever law set the
+    // traction, so the map sums to W_macro, is >= 0 and 0 in adhesion.
     SolveTotals solve(const ContactInput& input, SolveMode mode) override;
     // The Jacobian by forward differentiation of the same march (the totals
     // bitwise solve()'s): per slipping element the derivative of t through
@@ -64,7 +66,7 @@ public:
 private:
     void march_with_law(bool tangents);
     void march_with_memory();
-    void prepare(const ContactInput& input, SolveMode mode);
+    void prepare(const ContactInput& input);
 
     SlipSpeedLaw law_;
     FrictionMemory memory_;

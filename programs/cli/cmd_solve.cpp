@@ -38,18 +38,7 @@ int command_solve(int argc, char** argv, int first)
     if (!out.empty()) check_output_target(out, "--out", opts.has("force"));
 
     ContactSolver solver(c.grid);
-    // FASTSIM with the law at every element gives forces only (no work map,
-    // no fields); the exact model gives every field under a law.
-    const bool forces_only = c.params.friction_law != CW_FRICTION_COULOMB &&
-                             c.params.friction_speed == CW_FRICTION_SPEED_LOCAL &&
-                             c.params.model == CW_MODEL_FASTSIM;
-    if (forces_only && (!out.empty() || surface.temperature || surface.damage))
-        throw usage_error(!out.empty() ? "--out" : surface.temperature ? "--temperature"
-                                                                       : "--damage",
-                          "needs the fields, which FASTSIM with a law at every element's slip "
-                          "speed does not give (forces only; --friction-speed global gives "
-                          "them)");
-    const Solution s = forces_only ? solver.solve_forces(c.params) : solver.solve_full(c.params);
+    const Solution s = solver.solve_full(c.params);
     const SurfaceOutput post = compute_surface(solver.handle(), surface);
     print_notes(c);
     for (const std::string& w : surface.warnings) std::fprintf(stderr, "creepwork: %s\n", w.c_str());

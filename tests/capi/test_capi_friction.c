@@ -104,7 +104,7 @@ static void tractcurv_series_3_and_4(void** state)
  * rows (CONTACT: NADH = 0) and Polach's closed form A + (1 - A) exp(-B xi V)
  * within 2e-4 (Polach's mu0 = 0.36, A = 0.38, B = 0.7 s/m through
  * cw_friction_polach; no slope reduction: in full sliding it does not
- * matter). Forces mode: the local law gives no work map. */
+ * matter). */
 static void local_law_in_full_sliding(void** state)
 {
     (void)state;
@@ -312,7 +312,7 @@ static void spoil(int k, cw_params* p, cw_grid* g)
     case 13: p->model = CW_MODEL_CALIBRATED; break;
     case 14: p->model = CW_MODEL_EXACT, p->memory_distance = 1e-3;
              *g = cw_test_grid(CW_GRID_UNIFORM, 14, 12, 1.1); break;
-    case 15: break; /* full mode: the law at every element gives no work map */
+    case 15: p->V = NAN; break; /* full mode: named as in forces mode */
     case 16: p->s_h1 = INFINITY; break;
     default: p->model = CW_MODEL_EXACT, p->friction_law = CW_FRICTION_COULOMB;
              p->friction_speed = CW_FRICTION_SPEED_GLOBAL;
@@ -339,7 +339,7 @@ static void bad_inputs_are_named(void** state)
         {"memory with global", CW_ERR_INVALID_INPUT, "memory_distance", CW_SOLVE_FORCES},
         {"calibrated", CW_ERR_INVALID_INPUT, "friction_law", CW_SOLVE_FORCES},
         {"memory with exact", CW_ERR_INVALID_INPUT, "memory_distance", CW_SOLVE_FORCES},
-        {"full mode", CW_ERR_INVALID_INPUT, "mode", CW_SOLVE_FULL},
+        {"V NaN, full mode", CW_ERR_INVALID_INPUT, "V", CW_SOLVE_FULL},
         {"s_h1 Inf", CW_ERR_INVALID_INPUT, "s_h1", CW_SOLVE_FORCES},
         {"global with exact", CW_ERR_INVALID_INPUT, "friction_speed", CW_SOLVE_FORCES},
     };
