@@ -134,12 +134,7 @@ void FastsimLawModel::march_with_law(bool tangents)
     A.ratio_max = ratio_max_.data();
     A.iterations = strip_iterations_.data();
     if (tangents) {
-        for (int j = 0; j < geo.ny; ++j) {
-            tangent_.kappa_wx[j] = -s.b * grid().y_centre()[j];
-            tangent_.kappa_wy[j] = s.kin.spin_offset > 0.0
-                                       ? s.a * (s.kin.spin_offset * grid().x_length()[j])
-                                       : 0.0;
-        }
+        set_kappa_slip(grid(), s, tangent_);
         A.a = s.a;
         A.kappa_wx = tangent_.kappa_wx.data();
         A.kappa_wy = tangent_.kappa_wy.data();

@@ -127,16 +127,20 @@ struct TangentKernel : KernelWidths {
 
 } // namespace
 
-void march_tangent(const MarchView& view, const ContactGrid& grid, const ModelSetup& setup,
-                   TangentState& t, KernelIsa isa)
+void set_kappa_slip(const ContactGrid& grid, const ModelSetup& setup, TangentState& t)
 {
-    const int ny = grid.ny();
     const NormalisedKinematics& kin = setup.kin;
-    for (int j = 0; j < ny; ++j) {
+    for (int j = 0; j < grid.ny(); ++j) {
         t.kappa_wx[j] = -setup.b * grid.y_centre()[j];
         t.kappa_wy[j] = kin.spin_offset > 0.0 ? setup.a * (kin.spin_offset * grid.x_length()[j])
                                               : 0.0;
     }
+}
+
+void march_tangent(const MarchView& view, const ContactGrid& grid, const ModelSetup& setup,
+                   TangentState& t, KernelIsa isa)
+{
+    set_kappa_slip(grid, setup, t);
     TangentArgs A;
     A.march = view;
     A.a = setup.a;
