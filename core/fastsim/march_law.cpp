@@ -1,5 +1,6 @@
 #include "fastsim/march_law.hpp"
 
+#include "contact/fp_safe.hpp"
 #include "friction/slip_speed_law_lanes.hpp"
 
 namespace creepwork {
@@ -75,12 +76,14 @@ struct LawKernel : KernelWidths {
                 V lo[G], hi[G], act[G];
                 CREEPWORK_UNROLL
                 for (int g = 0; g < G; ++g) {
-                    safeP[g] = P[g] > tiny ? P[g] : one;
+                    // Guarded divisors pass fp_opaque (contact/fp_safe.hpp): no
+                    // lane, live or discarded, divides by zero.
+                    safeP[g] = fp_opaque(P[g] > tiny ? P[g] : one);
                     lx[g] = L1 * qx[g];
                     ly[g] = L2 * qy[g];
                     Lq[g] = simd::sqrt<W>(lx[g] * lx[g] + ly[g] * ly[g]);
                     const V hs = slip[g] > zero ? h[g] : one;
-                    c[g] = speed * Lq[g] / (safeP[g] * hs);
+                    c[g] = speed * Lq[g] / fp_opaque(safeP[g] * hs);
                     lo[g] = zero;
                     hi[g] = bnd[g];
                     const V m_start = mprev[g] + mstep[g];
@@ -106,7 +109,7 @@ struct LawKernel : KernelWidths {
                         lo[g] = live > zero ? (res < zero ? t[g] : lo[g]) : lo[g];
                         hi[g] = live > zero ? (res < zero ? hi[g] : t[g]) : hi[g];
                         const V mid = half * (lo[g] + hi[g]);
-                        const V newton = t[g] - res / (slope > zero ? slope : one);
+                        const V newton = t[g] - res / fp_opaque(slope > zero ? slope : one);
                         V next = slope > zero ? newton : mid;
                         const V inside = next > lo[g] ? (next < hi[g] ? one : zero) : zero;
                         next = inside > zero ? next : mid;
@@ -163,9 +166,9 @@ struct LawKernel : KernelWidths {
                     if (any) {
                         // dt = dt_dP dP + dt_dc dc; derivative 0 where 1 + g c m' = 0.
                         const V invP = one / safeP[g];
-                        const V invLq = one / (Lq[g] > tiny ? Lq[g] : one);
-                        const V gdm = dG[g] != zero ? bnd[g] * dmu[g] / (dG[g] != zero ? dG[g] : one)
-                                                    : zero;
+                        const V invLq = one / fp_opaque(Lq[g] > tiny ? Lq[g] : one);
+                        const V gdm = (dG[g] != zero ? bnd[g] * dmu[g] : zero) /
+                                      fp_opaque(dG[g] != zero ? dG[g] : one);
                         const V dt_dP = gdm * c[g], dt_dc = gdm * (P[g] - t[g]);
                         CREEPWORK_UNROLL
                         for (int k = 0; k < K; ++k) {

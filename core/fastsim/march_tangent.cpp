@@ -1,5 +1,7 @@
 #include "fastsim/march_tangent.hpp"
 
+#include "contact/fp_safe.hpp"
+
 namespace creepwork {
 
 void TangentState::resize(const MarchGeometry& geo)
@@ -7,7 +9,7 @@ void TangentState::resize(const MarchGeometry& geo)
     stride = geo.stride;
     auto inverse_square = [](const Eigen::ArrayXd& g) {
         Eigen::ArrayXd r(g.size());
-        for (Eigen::Index k = 0; k < g.size(); ++k) r[k] = g[k] > 0.0 ? 1.0 / (g[k] * g[k]) : 0.0;
+        for (Eigen::Index k = 0; k < g.size(); ++k) r[k] = quotient_if_positive(1.0, g[k] * g[k]);
         return r;
     };
     inv_bound2_parabolic = inverse_square(geo.shape_parabolic);

@@ -2,7 +2,8 @@
 // kernels that evaluate it at every element: its form fixed at compile time
 // (no branch on the kind inside a kernel's loop), its coefficients divided
 // by the static one, so that it gives m(s) = mu(s)/mu_s and dm/ds [s/m].
-// The exponential form takes simd::exp_nonpositive (within 1e-15 of exp);
+// The exponential form takes simd::exp_nonpositive (within 1e-15 of exp;
+// a term below 1e-148 of its mu_e is 0);
 // the others are the scalar formulas of slip_speed_law.cpp lane by lane.
 // Every operation is an IEEE one: each ISA's copy gives the same bits.
 #pragma once
@@ -53,7 +54,11 @@ private:
     CREEPWORK_INLINE static void term(const V& e, const V& rate, const V& s, V& m, V& dm)
     {
         if constexpr (Kind == SlipSpeedLawKind::exponential) {
-            m = e * simd::exp_nonpositive<W>(-(rate * s));
+            // A term below exp(-340) ~ 1e-148 of its mu_e is 0: the
+            // kernels' products with it stay normal numbers.
+            const V x = -(rate * s);
+            const V cutoff = simd::broadcast<W>(-340.0), zero = simd::broadcast<W>(0.0);
+            m = x > cutoff ? e * simd::exp_nonpositive<W>(x) : zero;
             dm = -(rate * m);
         } else if constexpr (Kind == SlipSpeedLawKind::linear) {
             const V zero = simd::broadcast<W>(0.0), one = simd::broadcast<W>(1.0);

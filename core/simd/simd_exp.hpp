@@ -11,7 +11,7 @@
 // error against the correctly rounded exp below 1e-15 over [-700, 0]
 // (test_core_slip_speed_laws samples it); x below -700 gives exp(-700)
 // (~1e-304, a normal number: no lane ever meets a subnormal), and so does a
-// NaN lane.
+// NaN lane; above -1e-20, exactly 1.
 #pragma once
 
 #include <cstring>
@@ -32,7 +32,9 @@ CREEPWORK_INLINE Vec<W> exp_nonpositive(const Vec<W>& x_in)
     using I = typename IntVecOf<W>::type;
     const V lowest = broadcast<W>(-700.0), zero = broadcast<W>(0.0);
     const V x0 = x_in > lowest ? x_in : lowest; // NaN compares false: lowest
-    const V x = x0 < zero ? x0 : zero;
+    // Above -1e-20 exp rounds to 1: x = 0 gives it exactly and keeps r^8
+    // from underflowing.
+    const V x = x0 < broadcast<W>(-1e-20) ? x0 : zero;
     // n = round(x log2 e): adding 1.5 2^52 rounds to an integer, held in
     // the low bits of the sum.
     const V shifter = broadcast<W>(0x1.8p52);
