@@ -7,6 +7,7 @@
 
 #include "contact/error.hpp"
 #include "fastsim/fastsim_jacobian.hpp"
+#include "fastsim/march_law.hpp"
 #include "friction/local_slip.hpp"
 
 namespace creepwork {
@@ -20,9 +21,13 @@ FastsimLawModel::FastsimLawModel(std::shared_ptr<const ContactGrid> grid)
     : MarchModel(std::move(grid))
 {
     tangent_.resize(geometry());
-    tau_px_.setZero(geometry().stride);
-    tau_py_.setZero(geometry().stride);
-    tau_x_py_.setZero(geometry().stride);
+    const int stride = geometry().stride;
+    tangent_.sum_px.setZero(kLawTangents * stride);
+    tangent_.sum_py.setZero(kLawTangents * stride);
+    tangent_.sum_x_py.setZero(kLawTangents * stride);
+    ratio_min_.setZero(stride);
+    ratio_max_.setZero(stride);
+    strip_iterations_.setZero(stride);
 }
 
 void FastsimLawModel::set_law(const SlipSpeedLaw& law, double V)
@@ -35,11 +40,8 @@ void FastsimLawModel::set_law(const SlipSpeedLaw& law, double V)
     V_ = V;
 }
 
-void FastsimLawModel::prepare(const ContactInput& input, SolveMode mode)
+void FastsimLawModel::prepare(const ContactInput& input)
 {
-    if (mode == SolveMode::full)
-        throw Error(ErrorKind::invalid_input,
-                    "mode: FASTSIM with a law of the slip speed gives forces only (no work map)");
     if (V_ <= 0.0) throw Error(ErrorKind::invalid_input, "V: no friction law set (set_law)");
     input_ = input;
     input_.mu = static_friction(law_);
@@ -50,8 +52,12 @@ void FastsimLawModel::prepare(const ContactInput& input, SolveMode mode)
 
 SolveTotals FastsimLawModel::solve(const ContactInput& input, SolveMode mode)
 {
-    prepare(input, mode);
-    march_with_law(false);
+    prepare(input);
+    if (memory_.distance > 0.0)
+        march_with_memory();
+    else
+        march_with_law(false);
+    if (mode == SolveMode::full) work_of_march();
     return totals(input_, mode, ModelKind::fastsim);
 }
 
@@ -67,19 +73,21 @@ SolveTotals FastsimLawModel::solve_jacobian(const ContactInput& input, SolveMode
     if (memory_.distance > 0.0)
         throw Error(ErrorKind::invalid_input,
                     "memory_distance: FASTSIM with friction memory has no Jacobian");
-    prepare(input, mode);
+    prepare(input);
     march_with_law(true);
+    if (mode == SolveMode::full) work_of_march();
     Jacobian J = fastsim_jacobian(input_, setup(), grid(), march_state(), tangent_);
     // The slip-speed factor c is proportional to the traction unit T, which
     // N moves (T = mu_s p0, p0 proportional to N): the column of N gains
     // frame_i T dPhi_i/dln T (dT/dN)/T.
     if (input_.mu > 0.0 && input_.normal_force > 0.0) {
         StripTangents tau;
-        Eigen::ArrayXd zero = Eigen::ArrayXd::Zero(kStripTangents * geometry().stride);
+        const int stride = geometry().stride;
+        Eigen::ArrayXd zero = Eigen::ArrayXd::Zero(kStripTangents * stride);
         Eigen::ArrayXd px = zero, py = zero, xpy = zero;
-        px.head(geometry().stride) = tau_px_;
-        py.head(geometry().stride) = tau_py_;
-        xpy.head(geometry().stride) = tau_x_py_;
+        px.head(stride) = tangent_.sum_px.segment(kTangents * stride, stride);
+        py.head(stride) = tangent_.sum_py.segment(kTangents * stride, stride);
+        xpy.head(stride) = tangent_.sum_x_py.segment(kTangents * stride, stride);
         tau.sum_px = px.data();
         tau.sum_py = py.data();
         tau.sum_x_py = xpy.data();
@@ -94,12 +102,64 @@ SolveTotals FastsimLawModel::solve_jacobian(const ContactInput& input, SolveMode
     return totals(input_, mode, ModelKind::fastsim);
 }
 
-// The march of march_step.hpp, one element at a time, with the law's
-// projection in slipping elements; with tangents also the derivatives of
-// each traction by k = ux, uy, kappa (march_tangent.hpp) and by ln T.
+// A falling law: the SIMD kernel (march_law.hpp), then the per-strip
+// outputs reduced. Coulomb's law (or mu_s = 0): FASTSIM's own march and
+// tangent march, whose tractions do not depend on T (the ln T row is 0).
 void FastsimLawModel::march_with_law(bool tangents)
 {
-    constexpr int K = kTangents + 1; // ux, uy, kappa, ln T
+    const MarchGeometry& geo = geometry();
+    const ModelSetup& s = setup();
+    const double mu_s = static_friction(law_);
+    mu_min_ = mu_max_ = mu_s;
+    iterations_ = 0;
+    if (law_.kind == SlipSpeedLawKind::coulomb || mu_s == 0.0) {
+        if (tangents) {
+            march_tangent(view(), grid(), s, tangent_, kernel_isa());
+            const int stride = geo.stride;
+            tangent_.sum_px.segment(kTangents * stride, stride).setZero();
+            tangent_.sum_py.segment(kTangents * stride, stride).setZero();
+            tangent_.sum_x_py.segment(kTangents * stride, stride).setZero();
+        } else {
+            march();
+        }
+        return;
+    }
+    LawMarch A;
+    A.view = view();
+    A.law = law_;
+    A.L1 = s.L1;
+    A.L2 = s.L2;
+    A.slip_speed_scale = V_ * s.traction_scale / s.a;
+    A.ratio_min = ratio_min_.data();
+    A.ratio_max = ratio_max_.data();
+    A.iterations = strip_iterations_.data();
+    if (tangents) {
+        set_kappa_slip(grid(), s, tangent_);
+        A.a = s.a;
+        A.kappa_wx = tangent_.kappa_wx.data();
+        A.kappa_wy = tangent_.kappa_wy.data();
+        A.sum_px = tangent_.sum_px.data();
+        A.sum_py = tangent_.sum_py.data();
+        A.sum_x_py = tangent_.sum_x_py.data();
+    }
+    march_law(A, kernel_isa());
+    double lo = 2.0, hi = -1.0, evaluations = 0.0;
+    for (int j = 0; j < geo.ny; ++j) {
+        lo = std::min(lo, ratio_min_[j]);
+        hi = std::max(hi, ratio_max_[j]);
+        evaluations += strip_iterations_[j];
+    }
+    if (hi >= 0.0) {
+        mu_min_ = mu_s * lo;
+        mu_max_ = mu_s * hi;
+    }
+    iterations_ = static_cast<int>(evaluations);
+}
+
+// With memory: the march of march_step.hpp one element at a time, each
+// slipping element solved by local_slip() under its MemoryElement.
+void FastsimLawModel::march_with_memory()
+{
     const MarchGeometry& geo = geometry();
     MarchState& st = march_state();
     const ModelSetup& s = setup();
@@ -112,12 +172,7 @@ void FastsimLawModel::march_with_law(bool tangents)
     for (int j = 0; j < geo.ny; ++j) {
         double px = 0.0, py = 0.0, sum_px = 0.0, sum_py = 0.0, sum_x_py = 0.0, slips = 0.0;
         double mu_prev = mu_s;   // Newton's start: the strip's last slipping element's mu
-        double mu_memory = mu_s; // memory: the previous element's mu (mu_s before the strip)
-        // Tangents: dp and the strip sums, dw of kappa (-b Y, a (X_slip + offset dX)).
-        double dpx[K] = {}, dpy[K] = {}, tsx[K] = {}, tsy[K] = {}, tsxy[K] = {};
-        const double kwx = -s.b * grid().y_centre()[j];
-        const double kwy = s.kin.spin_offset > 0.0 ? s.a * s.kin.spin_offset * grid().x_length()[j]
-                                                    : 0.0;
+        double mu_memory = mu_s; // the previous element's mu (mu_s before the strip)
         for (int m = 0; m < geo.nx; ++m) {
             const Eigen::Index p = static_cast<Eigen::Index>(m) * geo.stride + j;
             const double h = geo.step[p], in = geo.inside[p];
@@ -126,30 +181,18 @@ void FastsimLawModel::march_with_law(bool tangents)
             const double qy = in * (py - h * (st.wy[j] + s.kin.cy * geo.x_slip[p]));
             const double P = std::sqrt(qx * qx + qy * qy);
             double f = 1.0;
-            double dqx[K], dqy[K];
-            if (tangents) {
-                const double dwx[K] = {1.0, 0.0, kwx, 0.0};
-                const double dwy[K] = {0.0, 1.0, kwy + s.a * geo.x_slip[p], 0.0};
-                for (int k = 0; k < K; ++k) {
-                    dqx[k] = in * (dpx[k] - h * dwx[k]);
-                    dqy[k] = in * (dpy[k] - h * dwy[k]);
-                }
-            }
-            // With memory the element's law is mu_m, and its coefficient at
-            // s = 0 decides slip; without, mu_s and the bound itself.
-            const bool memory = memory_.distance > 0.0 && in != 0.0;
+            // The element's law is mu_m, and its coefficient at s = 0 decides slip.
             const MemoryElement element{&law_, memory_, h * s.a / V_, mu_memory};
-            const double mu_at_rest = memory ? friction_value(element, 0.0).mu : mu_s;
-            if (memory) mu_memory = mu_at_rest;
+            const double mu_at_rest = in != 0.0 ? friction_value(element, 0.0).mu : mu_s;
+            if (in != 0.0) mu_memory = mu_at_rest;
             if (P > bound[p] * (mu_at_rest / mu_s)) {
                 // Slip speed per unit of q' lost: V |(L1 q_x, L2 q_y)| / |q'| T / (h a).
                 const double lx = s.L1 * qx, ly = s.L2 * qy;
                 const double Lq = std::sqrt(lx * lx + ly * ly);
                 const double c = V_ * Lq / P * T / (h * s.a);
-                const LocalSlip r = memory ? local_slip(element, P, bound[p] / mu_s, c, mu_prev)
-                                           : local_slip(law_, P, bound[p] / mu_s, c, mu_prev);
+                const LocalSlip r = local_slip(element, P, bound[p] / mu_s, c, mu_prev);
                 mu_prev = r.mu;
-                if (memory) mu_memory = r.mu;
+                mu_memory = r.mu;
                 f = r.t / P;
                 iterations_ += r.iterations;
                 if (!any_slip) mu_min_ = mu_max_ = r.mu;
@@ -157,21 +200,6 @@ void FastsimLawModel::march_with_law(bool tangents)
                 mu_min_ = std::min(mu_min_, r.mu);
                 mu_max_ = std::max(mu_max_, r.mu);
                 slips += 1.0;
-                if (tangents)
-                    for (int k = 0; k < K; ++k) {
-                        const double dP = (qx * dqx[k] + qy * dqy[k]) / P;
-                        const double dLq = (s.L1 * lx * dqx[k] + s.L2 * ly * dqy[k]) / Lq;
-                        const double dc = c * (dLq / Lq - dP / P) + (k == kTangents ? c : 0.0);
-                        const double dt = r.dt_dP * dP + r.dt_dc * dc;
-                        const double df = (dt - f * dP) / P;
-                        dpx[k] = df * qx + f * dqx[k];
-                        dpy[k] = df * qy + f * dqy[k];
-                    }
-            } else if (tangents) {
-                for (int k = 0; k < K; ++k) {
-                    dpx[k] = dqx[k];
-                    dpy[k] = dqy[k];
-                }
             }
             st.qx[p] = qx;
             st.qy[p] = qy;
@@ -181,12 +209,6 @@ void FastsimLawModel::march_with_law(bool tangents)
             sum_px += px;
             sum_py += py;
             sum_x_py += geo.x_centre[p] * py;
-            if (tangents)
-                for (int k = 0; k < K; ++k) {
-                    tsx[k] += dpx[k];
-                    tsy[k] += dpy[k];
-                    tsxy[k] += geo.x_centre[p] * dpy[k];
-                }
         }
         st.px[j] = px;
         st.py[j] = py;
@@ -194,16 +216,6 @@ void FastsimLawModel::march_with_law(bool tangents)
         st.sum_py[j] = sum_py;
         st.sum_x_py[j] = sum_x_py;
         st.slip_count[j] = slips;
-        if (tangents) {
-            for (int k = 0; k < kTangents; ++k) {
-                tangent_.sum_px[k * geo.stride + j] = tsx[k];
-                tangent_.sum_py[k * geo.stride + j] = tsy[k];
-                tangent_.sum_x_py[k * geo.stride + j] = tsxy[k];
-            }
-            tau_px_[j] = tsx[kTangents];
-            tau_py_[j] = tsy[kTangents];
-            tau_x_py_[j] = tsxy[kTangents];
-        }
     }
 }
 

@@ -1,10 +1,12 @@
 // FASTSIM with a friction law of the slip speed at every element: Kalker's
 // march (the grid, setup, traction bound and totals of march_model.hpp)
 // where each slipping element keeps its predictor's direction and the
-// magnitude t = p_n mu(s) at its own slip speed s (friction/local_slip.hpp)
-// instead of Coulomb's p_n mu. The rolling speed V turns micro-slip into
-// slip speed. The march is scalar, strip after strip; Coulomb's law gives
-// FASTSIM's tractions (test_core_friction_fastsim).
+// magnitude t = p_n mu(s) at its own slip speed s instead of Coulomb's
+// p_n mu. The rolling speed V turns micro-slip into slip speed. Without
+// memory the march is the SIMD kernel of march_law.hpp (every ISA the same
+// bits); Coulomb's law is FASTSIM's march itself (bitwise FastsimModel's);
+// with memory the march is scalar, element after element
+// (friction/local_slip.hpp).
 //
 // Slip speed of an element: its slip over one step h is the elastic
 // predictor's displacement less the displacement it keeps, (L1 dq_x, L2 dq_y)
@@ -35,15 +37,17 @@ public:
     void set_memory(const FrictionMemory& memory);
 
     // input.mu is not read: the traction unit is the law's static
-    // coefficient. Forces mode only (full mode: Error naming the mode, the
-    // work map under a local law is not made).
+    // coefficient. Full mode: the work of every element from the march's
+    // (q', f) (march_work.hpp): the friction dissipation of each slipping
+    // element is its traction times its slip, whatever law set the
+    // traction, so the map sums to W_macro, is >= 0 and 0 in adhesion.
     SolveTotals solve(const ContactInput& input, SolveMode mode) override;
     // The Jacobian by forward differentiation of the same march (the totals
     // bitwise solve()'s): per slipping element the derivative of t through
     // P = |q'|, the slip-speed factor c (which moves with q' and, through
-    // the traction unit, with N) and the law's slope, dt = (p_n mu' (c dP +
-    // (P - t) dc)) / (1 + p_n c mu'); held fixed as in FASTSIM's Jacobian
-    // (fastsim_jacobian.hpp), and V. Not with memory (Error naming it).
+    // the traction unit, with N) and the law's slope (march_law.hpp); held
+    // fixed as in FASTSIM's Jacobian (fastsim_jacobian.hpp), and V. Not
+    // with memory (Error naming it).
     SolveTotals solve_jacobian(const ContactInput& input, SolveMode mode,
                                Jacobian& jacobian) override;
 
@@ -61,7 +65,8 @@ public:
 
 private:
     void march_with_law(bool tangents);
-    void prepare(const ContactInput& input, SolveMode mode);
+    void march_with_memory();
+    void prepare(const ContactInput& input);
 
     SlipSpeedLaw law_;
     FrictionMemory memory_;
@@ -69,8 +74,9 @@ private:
     double mu_min_ = 0.0, mu_max_ = 0.0;
     int iterations_ = 0;
     ContactInput input_; // the last solve's, with mu = the law's static coefficient
+    // Tangents: rows ux, uy, kappa (fastsim_jacobian reads them) and ln T.
     TangentState tangent_;
-    Eigen::ArrayXd tau_px_, tau_py_, tau_x_py_; // per strip: sums' derivatives by ln T
+    Eigen::ArrayXd ratio_min_, ratio_max_, strip_iterations_; // per strip (march_law.hpp)
 };
 
 } // namespace creepwork

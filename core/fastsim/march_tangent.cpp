@@ -1,5 +1,7 @@
 #include "fastsim/march_tangent.hpp"
 
+#include "contact/fp_safe.hpp"
+
 namespace creepwork {
 
 void TangentState::resize(const MarchGeometry& geo)
@@ -7,7 +9,7 @@ void TangentState::resize(const MarchGeometry& geo)
     stride = geo.stride;
     auto inverse_square = [](const Eigen::ArrayXd& g) {
         Eigen::ArrayXd r(g.size());
-        for (Eigen::Index k = 0; k < g.size(); ++k) r[k] = g[k] > 0.0 ? 1.0 / (g[k] * g[k]) : 0.0;
+        for (Eigen::Index k = 0; k < g.size(); ++k) r[k] = quotient_if_positive(1.0, g[k] * g[k]);
         return r;
     };
     inv_bound2_parabolic = inverse_square(geo.shape_parabolic);
@@ -127,16 +129,20 @@ struct TangentKernel : KernelWidths {
 
 } // namespace
 
-void march_tangent(const MarchView& view, const ContactGrid& grid, const ModelSetup& setup,
-                   TangentState& t, KernelIsa isa)
+void set_kappa_slip(const ContactGrid& grid, const ModelSetup& setup, TangentState& t)
 {
-    const int ny = grid.ny();
     const NormalisedKinematics& kin = setup.kin;
-    for (int j = 0; j < ny; ++j) {
+    for (int j = 0; j < grid.ny(); ++j) {
         t.kappa_wx[j] = -setup.b * grid.y_centre()[j];
         t.kappa_wy[j] = kin.spin_offset > 0.0 ? setup.a * (kin.spin_offset * grid.x_length()[j])
                                               : 0.0;
     }
+}
+
+void march_tangent(const MarchView& view, const ContactGrid& grid, const ModelSetup& setup,
+                   TangentState& t, KernelIsa isa)
+{
+    set_kappa_slip(grid, setup, t);
     TangentArgs A;
     A.march = view;
     A.a = setup.a;

@@ -49,6 +49,10 @@ struct TangentState {
     void resize(const MarchGeometry& geometry);
 };
 
+// The kappa tangent's rigid slip per strip into t.kappa_wx, t.kappa_wy:
+// -b Y and the strip part of a (X_slip + spin_offset dX).
+void set_kappa_slip(const ContactGrid& grid, const ModelSetup& setup, TangentState& t);
+
 // The march of view (as march(), bitwise the same state) and its tangents,
 // with FASTSIM's bound for setup.pressure. Writes the view's state and
 // tangents (sized by resize()); allocates nothing.

@@ -1,5 +1,7 @@
-// One slipping element of FASTSIM's march under a law of the slip speed:
-// the step the march calls in place of Coulomb's projection. The element's
+// One slipping element of FASTSIM's march under a law of the slip speed,
+// scalar: the step the march with friction memory calls in place of
+// Coulomb's projection (without memory the march is a SIMD kernel with the
+// same method, fastsim/march_law.hpp). The element's
 // elastic predictor has traction magnitude P (the traction it would carry
 // if it adhered); slipping, it keeps the predictor's direction and a
 // magnitude t < P, and slides at the slip speed s = c (P - t) [m/s], where
@@ -27,9 +29,6 @@ struct LocalSlip {
     double t = 0.0;     // traction magnitude [Pa]
     double s = 0.0;     // slip speed c (P - t) [m/s]
     double mu = 0.0;    // mu(s)
-    double dt_dP = 0.0; // derivative of t with respect to P at fixed p_n
-    double dt_dpn = 0.0; // derivative of t with respect to p_n at fixed P
-    double dt_dc = 0.0;  // derivative of t with respect to c at fixed P, p_n
     int iterations = 0; // Newton steps taken
 };
 
@@ -50,12 +49,11 @@ LocalSlip local_slip(const Law& law, double P, double pn, double c, double mu_gu
     // (Newton's error squares), so it takes that step without another
     // evaluation of the law and moves s and mu with it to first order.
     FrictionValue v;
-    double dg = 1.0;
     double s = c * (P - t);
     for (int it = 0;; ++it) {
         v = friction_value(law, s);
         const double g = t - pn * v.mu;
-        dg = 1.0 + pn * c * v.dmu_ds; // dg/dt
+        const double dg = 1.0 + pn * c * v.dmu_ds; // dg/dt
         r.iterations = it + 1;
         if (g == 0.0 || it == 200) break; // 200: bisection alone halves the bracket to rounding
         (g < 0.0 ? lo : hi) = t;
@@ -75,9 +73,6 @@ LocalSlip local_slip(const Law& law, double P, double pn, double c, double mu_gu
     r.t = t;
     r.s = s;
     r.mu = v.mu;
-    r.dt_dP = dg != 0.0 ? pn * c * v.dmu_ds / dg : 0.0;
-    r.dt_dpn = dg != 0.0 ? v.mu / dg : 0.0;
-    r.dt_dc = dg != 0.0 ? pn * v.dmu_ds * (P - t) / dg : 0.0;
     return r;
 }
 

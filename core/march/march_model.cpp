@@ -45,6 +45,11 @@ void MarchModel::march_with_work()
     creepwork::march_with_work(geometry_, bound_, *grid_, setup_, state_, work_, isa_);
 }
 
+void MarchModel::work_of_march()
+{
+    creepwork::work_of_march(geometry_, bound_, *grid_, setup_, state_, work_, isa_);
+}
+
 SolveTotals MarchModel::totals(const ContactInput& input, SolveMode mode, ModelKind model)
 {
     // Totals in the rolling frame: F = T a b sum(p' A'), A' per strip.

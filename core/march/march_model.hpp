@@ -47,6 +47,9 @@ protected:
     // The plain march, or the march with the work of every element (full mode).
     void march();
     void march_with_work();
+    // The work of every element of a march the model did with its own
+    // kernel (march_work.hpp, work_of_march).
+    void work_of_march();
     // The view of every strip for a model's own kernels (a Jacobian march).
     MarchView view()
     {

@@ -271,10 +271,9 @@ void lateral_profile(const MarchGeometry& geo, const ContactGrid& grid, const Mo
     }
 }
 
-} // namespace
-
-void march_with_work(const MarchGeometry& geo, const double* bound, const ContactGrid& grid,
-                     const ModelSetup& s, MarchState& st, WorkState& w, KernelIsa isa)
+// march_with_work(), with the march (march_too) or after it.
+void work_pass(const MarchGeometry& geo, const double* bound, const ContactGrid& grid,
+               const ModelSetup& s, MarchState& st, WorkState& w, KernelIsa isa, bool march_too)
 {
     const int ny = grid.ny();
     const double T = s.traction_scale;
@@ -320,7 +319,7 @@ void march_with_work(const MarchGeometry& geo, const double* bound, const Contac
     // Block by block, so that the work pass finds the march's output in cache.
     for (int first = 0; first < ny; first += kStripBlock) {
         A.march = march_view(geo, bound, s.kin.cy, st, first, std::min(ny, first + kStripBlock));
-        march(A.march, isa);
+        if (march_too) march(A.march, isa);
         run_kernel<WorkKernel>(isa, A);
     }
     // The elastic energy carried out of the trailing edge.
@@ -329,6 +328,20 @@ void march_with_work(const MarchGeometry& geo, const double* bound, const Contac
         w.strip_loss[j] += 0.5 * T * (T * s.L1 * px * px + T * s.L2 * py * py) * s.b *
                            grid.y_width()[j];
     }
+}
+
+} // namespace
+
+void march_with_work(const MarchGeometry& geo, const double* bound, const ContactGrid& grid,
+                     const ModelSetup& s, MarchState& st, WorkState& w, KernelIsa isa)
+{
+    work_pass(geo, bound, grid, s, st, w, isa, true);
+}
+
+void work_of_march(const MarchGeometry& geo, const double* bound, const ContactGrid& grid,
+                   const ModelSetup& s, MarchState& st, WorkState& w, KernelIsa isa)
+{
+    work_pass(geo, bound, grid, s, st, w, isa, false);
 }
 
 WorkTotals distribute_work(const MarchGeometry& geo, const ContactGrid& grid,

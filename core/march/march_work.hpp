@@ -69,6 +69,11 @@ struct WorkTotals {
 // march, and the work of every element. Allocates nothing.
 void march_with_work(const MarchGeometry& geometry, const double* bound, const ContactGrid& grid,
                      const ModelSetup& setup, MarchState& march, WorkState& work, KernelIsa isa);
+// The same work for a march already done by a model's own kernel (march
+// holds every element's q' and f and the exit tractions): the work depends
+// on (q', f) alone, not on the law that found f. Allocates nothing.
+void work_of_march(const MarchGeometry& geometry, const double* bound, const ContactGrid& grid,
+                   const ModelSetup& setup, MarchState& march, WorkState& work, KernelIsa isa);
 
 // The paper's total and the energy-consistent map, given W_macro of the
 // march just done by march_with_work.

@@ -18,8 +18,8 @@ function r = solve(varargin)
 %   (doc/theory/friction.md): friction_law 'linear', 'rational' or
 %   'exponential' with mu the kinetic coefficient and its terms mu_e1,
 %   s_h1, mu_e2, s_h2 [m/s], or 'polach', [mu0 A B] (B in s/m);
-%   friction_speed 'local' (the exact model: every field; FASTSIM: forces
-%   only, 'fields', false) or 'global' (FASTSIM) with k0, alpha_inf, beta;
+%   friction_speed 'local' (every element's slip speed, every field) or
+%   'global' (FASTSIM) with k0, alpha_inf, beta;
 %   memory_distance [m], memory_s0 [m/s] (FASTSIM, local).
 %   Options: 'grid', a struct of cw_grid fields (kind 'kalker_strips',
 %   'uniform' or 'gap', nx, ny, box_scale; default Kalker's strips 20 x 20,

@@ -22,10 +22,10 @@ function test_friction()
                          cli_base, cli_law), cli);
   assert(abs(r.Fx / (0.36 * 106.7e3) - (-0.8444)) <= 0.5e-4 + 6e-5, sprintf('series 4: %.6f', ...
          r.Fx / (0.36 * 106.7e3)));
-  % The law at every element (forces only), and Polach's law in full sliding.
-  r = creepwork.solve(base{:}, law{:}, 'xi_x', 0.004, 'fields', false);
+  % The law at every element, and Polach's law in full sliding.
+  r = creepwork.solve(base{:}, law{:}, 'xi_x', 0.004);
   same_as_cli(r, sprintf('%s %s --xi-x 0.004', cli_base, cli_law), cli);
-  r = creepwork.solve(base{:}, 'polach', [0.36 0.38 0.7], 'xi_x', 0.15, 'fields', false);
+  r = creepwork.solve(base{:}, 'polach', [0.36 0.38 0.7], 'xi_x', 0.15);
   same_as_cli(r, sprintf('%s --polach 0.36,0.38,0.7 --xi-x 0.15', cli_base), cli);
   assert(abs(-r.Fx / (0.36 * 106.7e3) - (0.38 + 0.62 * exp(-0.7 * 0.15 * 10))) <= 2e-4);
   assert(abs(r.mu_static - 0.36) <= 1e-15);

@@ -146,19 +146,7 @@ std::vector<Outcome> ChunkSolver::solve(const Chunk& chunk)
             }
             continue;
         }
-        // A FASTSIM row under a friction law at every element's slip speed
-        // has no fields: it is solved for its forces, in a batch call of its
-        // own (the exact model's rows have every field under a law).
-        std::vector<size_t> full_rows, forces_rows;
-        for (size_t i : rows) {
-            const cw_params& p = chunk.cases[i].params;
-            const bool forces_only = p.friction_law != CW_FRICTION_COULOMB &&
-                                     p.friction_speed == CW_FRICTION_SPEED_LOCAL &&
-                                     p.model == CW_MODEL_FASTSIM;
-            (forces_only && chunk.mode == CW_SOLVE_FULL ? forces_rows : full_rows).push_back(i);
-        }
-        solve_rows(batch, chunk, full_rows, chunk.mode, out);
-        solve_rows(batch, chunk, forces_rows, CW_SOLVE_FORCES, out);
+        solve_rows(batch, chunk, rows, chunk.mode, out);
     }
     return out;
 }

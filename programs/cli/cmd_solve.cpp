@@ -38,24 +38,13 @@ int command_solve(int argc, char** argv, int first)
     if (!out.empty()) check_output_target(out, "--out", opts.has("force"));
 
     ContactSolver solver(c.grid);
-    // FASTSIM with the law at every element gives forces only (no work map,
-    // no fields); the exact model gives every field under a law.
-    const bool forces_only = c.params.friction_law != CW_FRICTION_COULOMB &&
-                             c.params.friction_speed == CW_FRICTION_SPEED_LOCAL &&
-                             c.params.model == CW_MODEL_FASTSIM;
-    if (forces_only && (!out.empty() || surface.temperature || surface.damage))
-        throw usage_error(!out.empty() ? "--out" : surface.temperature ? "--temperature"
-                                                                       : "--damage",
-                          "needs the fields, which FASTSIM with a law at every element's slip "
-                          "speed does not give (forces only; --friction-speed global gives "
-                          "them)");
     Solution s;
     SurfaceOutput post;
     if (surface.mu_T()) { // the temperature's fixed-point loop solves
         post = solve_surface_mu_T(solver.handle(), c.params, surface);
         s = read_solution(solver.handle(), c.params, solver.grid());
     } else {
-        s = forces_only ? solver.solve_forces(c.params) : solver.solve_full(c.params);
+        s = solver.solve_full(c.params);
         post = compute_surface(solver.handle(), surface);
     }
     print_notes(c);

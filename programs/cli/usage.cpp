@@ -138,9 +138,9 @@ strips or the uniform grid; doc/theory/friction.md):
                     is the same
   --friction-speed local|global
                     local (default): the law at each element's slip speed
-                    (--model exact: every field; fastsim: forces only, no
-                    --out); global: FASTSIM with mu at the contact's slip
-                    speed V |(xi_x, xi_y)| as CONTACT's FASTSIM, every field
+                    (every field, --out too); global: FASTSIM with mu at
+                    the contact's slip speed V |(xi_x, xi_y)| as CONTACT's
+                    FASTSIM, every field
   --k0 K --alpha-inf A --beta B
                     global: Spiryagin's slope reduction of the flexibilities
                     (defaults 1, 1, 0: none)

@@ -150,13 +150,24 @@ def test_bad_inputs_are_named(keywords, name):
         creepwork.solve(fields=False, **tractcurv(xi_x=0.01, **keywords))
 
 
-def test_unknown_law_and_mode_are_named():
+def test_unknown_law_is_named():
     with pytest.raises(creepwork.UnknownOptionError, match="friction_law"):
         creepwork.solve(fields=False, **tractcurv(xi_x=0.01, friction_law="stribeck"))
-    with pytest.raises(creepwork.InvalidInputError, match=r"\bmode\b"):
-        creepwork.solve(fields=True, **tractcurv(xi_x=0.01, polach=(0.36, 0.38, 0.7)))
     with pytest.raises(TypeError, match="polach"):
         creepwork.solve(fields=False, **tractcurv(xi_x=0.01, polach=(0.36, 0.38, 0.7), mu_e1=0.1))
+
+
+def test_local_law_gives_the_work_map():
+    """FASTSIM with Polach's law at every element, with fields: the
+    energy-consistent map sums to W_macro (1e-12), is >= 0 and 0 outside
+    slip (the march's energy identity); the forces are forces mode's."""
+    case = tractcurv(xi_x=0.004, polach=(0.36, 0.38, 0.7))
+    res = creepwork.solve(fields=True, **case)
+    forces = creepwork.solve(fields=False, **case)
+    assert res.Fx == forces.Fx and res.W_macro == forces.W_macro
+    assert abs(res.work_consistent.sum() - res.W_macro) <= 1e-12 * res.W_macro
+    assert (res.work_consistent >= 0.0).all()
+    assert (res.work_consistent[res.state != 2] == 0.0).all()
 
 
 def test_half_speed_in_mm_per_s_warns():

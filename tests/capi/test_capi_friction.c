@@ -104,7 +104,7 @@ static void tractcurv_series_3_and_4(void** state)
  * rows (CONTACT: NADH = 0) and Polach's closed form A + (1 - A) exp(-B xi V)
  * within 2e-4 (Polach's mu0 = 0.36, A = 0.38, B = 0.7 s/m through
  * cw_friction_polach; no slope reduction: in full sliding it does not
- * matter). Forces mode: the local law gives no work map. */
+ * matter). */
 static void local_law_in_full_sliding(void** state)
 {
     (void)state;
@@ -283,6 +283,50 @@ static void coulomb_ignores_the_law_fields(void** state)
     }
 }
 
+/* Full mode with series 4's law at every element (and with friction
+ * memory): the energy-consistent work map through cw_solver_get_field sums
+ * to W_macro within 1e-12, is >= 0 and 0 wherever the state is not slip
+ * (the march's energy identity); the forces are forces mode's bits. */
+static void local_law_work_map(void** state)
+{
+    (void)state;
+    const cw_grid g = cw_tractcurv_grid();
+    cw_solver* s = NULL;
+    assert_status(cw_solver_create(&g, &s, NULL, 0), CW_OK);
+    const size_t n = (size_t)g.nx * (size_t)g.ny;
+    double* work = malloc(n * sizeof *work);
+    int* st = malloc(n * sizeof *st);
+    assert_non_null(work);
+    assert_non_null(st);
+    const double xis[] = {0.002, 0.004, 0.02};
+    for (int memory = 0; memory < 2; ++memory)
+        for (int k = 0; k < 3; ++k) {
+            cw_params p = tractcurv(xis[k]);
+            cw_tractcurv_series4(&p, 0);
+            p.memory_distance = memory ? 3e-6 : 0.0;
+            p.memory_s0 = 1e-3;
+            cw_result forces, full;
+            cw_result_init(&forces);
+            cw_result_init(&full);
+            assert_status(cw_solver_solve(s, &p, CW_SOLVE_FORCES, &forces), CW_OK);
+            assert_status(cw_solver_solve(s, &p, CW_SOLVE_FULL, &full), CW_OK);
+            assert_true(full.Fx == forces.Fx && full.Fy == forces.Fy && full.Mz == forces.Mz);
+            assert_true(full.W_macro > 0.0 && full.n_slip > 0);
+            assert_status(cw_solver_get_field(s, CW_FIELD_WORK_CONSISTENT, work, n), CW_OK);
+            assert_status(cw_solver_get_state(s, st, n), CW_OK);
+            double sum = 0.0;
+            for (size_t e = 0; e < n; ++e) {
+                assert_true(work[e] >= 0.0);
+                if (st[e] != CW_STATE_SLIP) assert_true(work[e] == 0.0);
+                sum += work[e];
+            }
+            assert_close(sum, full.W_macro, 1e-12, 0.0);
+        }
+    free(work);
+    free(st);
+    cw_solver_destroy(s);
+}
+
 /* Every bad friction input is refused with a message naming it. */
 typedef struct {
     const char* what;
@@ -312,7 +356,7 @@ static void spoil(int k, cw_params* p, cw_grid* g)
     case 13: p->model = CW_MODEL_CALIBRATED; break;
     case 14: p->model = CW_MODEL_EXACT, p->memory_distance = 1e-3;
              *g = cw_test_grid(CW_GRID_UNIFORM, 14, 12, 1.1); break;
-    case 15: break; /* full mode: the law at every element gives no work map */
+    case 15: p->V = NAN; break; /* full mode: named as in forces mode */
     case 16: p->s_h1 = INFINITY; break;
     default: p->model = CW_MODEL_EXACT, p->friction_law = CW_FRICTION_COULOMB;
              p->friction_speed = CW_FRICTION_SPEED_GLOBAL;
@@ -339,7 +383,7 @@ static void bad_inputs_are_named(void** state)
         {"memory with global", CW_ERR_INVALID_INPUT, "memory_distance", CW_SOLVE_FORCES},
         {"calibrated", CW_ERR_INVALID_INPUT, "friction_law", CW_SOLVE_FORCES},
         {"memory with exact", CW_ERR_INVALID_INPUT, "memory_distance", CW_SOLVE_FORCES},
-        {"full mode", CW_ERR_INVALID_INPUT, "mode", CW_SOLVE_FULL},
+        {"V NaN, full mode", CW_ERR_INVALID_INPUT, "V", CW_SOLVE_FULL},
         {"s_h1 Inf", CW_ERR_INVALID_INPUT, "s_h1", CW_SOLVE_FORCES},
         {"global with exact", CW_ERR_INVALID_INPUT, "friction_speed", CW_SOLVE_FORCES},
     };
@@ -410,6 +454,7 @@ int main(void)
         cmocka_unit_test(tractcurv_series_3_and_4),
         cmocka_unit_test(local_law_in_full_sliding),
         cmocka_unit_test(jacobian_across_the_peak),
+        cmocka_unit_test(local_law_work_map),
         cmocka_unit_test(polach_inputs),
         cmocka_unit_test(coulomb_ignores_the_law_fields),
         cmocka_unit_test(bad_inputs_are_named),

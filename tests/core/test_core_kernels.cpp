@@ -115,6 +115,44 @@ void kernel_gives_the_baseline_bits(void**)
     assert_int_equal(compared, grids().size() * inputs().size() * 2);
 }
 
+// FASTSIM with a law of the slip speed at every element (the law's SIMD
+// march, fastsim/march_law.hpp, with its vectorised exp): g_isa against the
+// baseline, bitwise, every grid and creeping input, each form of the law
+// (two terms), forces and every field, then the Jacobian.
+void law_kernel_gives_the_baseline_bits(void**)
+{
+    assert_true(g_isa != cw::KernelIsa::baseline);
+    size_t compared = 0;
+    for (const cw::GridSpec& g : grids()) {
+        cw::Solver reference(g), s(g);
+        reference.set_kernel_isa(cw::KernelIsa::baseline);
+        s.set_kernel_isa(g_isa);
+        for (cw::ContactInput in : inputs())
+            for (cw::FrictionLaw law : {cw::FrictionLaw::linear, cw::FrictionLaw::rational,
+                                        cw::FrictionLaw::exponential}) {
+                if (in.xi_x == 0.0 && in.phi == 0.0) continue;
+                in.friction_law = law;
+                in.V = 20.0;
+                in.mu_e1 = 0.1;
+                in.s_h1 = 0.05;
+                in.mu_e2 = 0.05;
+                in.s_h2 = 0.01;
+                const std::string a = outputs(reference, in, cw::SolveMode::forces_only);
+                const std::string b = outputs(s, in, cw::SolveMode::forces_only);
+                assert_int_equal(a.size(), b.size());
+                assert_true(std::memcmp(a.data(), b.data(), a.size()) == 0);
+                cw::Jacobian ja, jb;
+                reference.solve_jacobian(in, cw::SolveMode::forces_only, ja);
+                s.solve_jacobian(in, cw::SolveMode::forces_only, jb);
+                assert_true(std::memcmp(&ja, &jb, sizeof ja) == 0);
+                ++compared;
+            }
+    }
+    size_t creeping = 0;
+    for (const cw::ContactInput& in : inputs()) creeping += in.xi_x != 0.0 || in.phi != 0.0;
+    assert_int_equal(compared, grids().size() * creeping * 3);
+}
+
 // The same on gap grids: the fast model (FASTSIM with the semi-Hertzian
 // normal method, whose roots are a kernel) and the exact model (which starts
 // from that method), on shapes of one and of several patches, force and
@@ -244,6 +282,7 @@ int main(int argc, char** argv)
             return kSkip;
         }
         const struct CMUnitTest tests[] = {cmocka_unit_test(kernel_gives_the_baseline_bits),
+                                           cmocka_unit_test(law_kernel_gives_the_baseline_bits),
                                            cmocka_unit_test(gap_kernel_gives_the_baseline_bits)};
         return cmocka_run_group_tests(tests, nullptr, nullptr);
     }

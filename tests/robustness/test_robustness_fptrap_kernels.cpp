@@ -89,6 +89,15 @@ void test_contact_sweep_every_kernel(void**)
                          cw::kernel_isa_name(isa), g.kind, g.nx, g.ny, c.a, c.b, c.xi_x, c.xi_y,
                          c.phi, c.pressure, c.rolling_direction, c.contact_options);
                 solves += solve_and_read(s, input_of(c), out, states, strips);
+                // FASTSIM's march with a law of the slip speed at every
+                // element (its own kernel, fastsim/march_law.cpp, with its exp).
+                cw::ContactInput law = input_of(c);
+                law.friction_law = cw::FrictionLaw::exponential;
+                law.mu = 0.12;
+                law.mu_e1 = 0.18;
+                law.s_h1 = 0.5;
+                law.V = 20.0;
+                solves += solve_and_read(s, law, out, states, strips);
             }
             const int flags = fptrap_flags();
             fptrap_disable();

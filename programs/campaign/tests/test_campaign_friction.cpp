@@ -1,10 +1,9 @@
 /* creepwork campaign with friction-law columns (friction_law, mu_e1, s_h1,
  * friction_speed, k0, alpha_inf, beta, polach_A, polach_B, V): each row's
  * results.csv numbers are the C ABI's for the same cw_params, printed with
- * the shortest digits that read back (the law at every element solved for
- * its forces inside a full-mode campaign, the global slip speed in full
- * mode, Polach's law written by cw_friction_polach, the exact model's law
- * in full mode with its work), CONTACT's tractcurv
+ * the shortest digits that read back (every row of the full-mode campaign
+ * in full mode: the law at every element, the global slip speed, Polach's
+ * law written by cw_friction_polach, the exact model's law), CONTACT's tractcurv
  * series 4 at 2 % (Fx/(mu_s N) = -0.8444), and a bad friction cell fails
  * its row alone, naming the column.
  *
@@ -63,9 +62,9 @@ void friction_rows_match_library(void** state)
     const struct {
         size_t row;
         cw_result lib;
-    } expect[] = {{1, library_solve(g, local, CW_SOLVE_FORCES)},
+    } expect[] = {{1, library_solve(g, local, CW_SOLVE_FULL)},
                   {2, library_solve(g, global, CW_SOLVE_FULL)},
-                  {3, library_solve(g, polach, CW_SOLVE_FORCES)},
+                  {3, library_solve(g, polach, CW_SOLVE_FULL)},
                   {6, library_solve(g, exact, CW_SOLVE_FULL)}};
     for (const auto& e : expect) {
         assert_string_equal(cell(e.row, "status").c_str(), "ok");

@@ -158,7 +158,6 @@ void bad_friction_inputs_are_named(void**)
          "--memory-distance"},
         {with(law, {"--V", "10", "--memory-s0", "-1"}), "--memory-s0"},
         {with(law, {"--V", "10", "--model", "calibrated"}), "--friction-law"},
-        {with(law, {"--V", "10", "--out", "never"}), "--out"},
     };
     for (const auto& b : bad) {
         std::vector<std::string> args = {"solve", "--a", "0.006", "--b", "0.006", "--N", "80000",
