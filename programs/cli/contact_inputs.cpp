@@ -466,7 +466,8 @@ std::vector<std::string> plausibility_warnings(const cw_grid& grid, const cw_par
         {"mu", Input::mu},     {"G", Input::G},       {"L1", Input::L1},
         {"L2", Input::L2},     {"L3", Input::L3},     {"xi_x", Input::xi_x},
         {"xi_y", Input::xi_y}, {"phi", Input::phi},   {"approach", Input::approach},
-        {"V", Input::V},       {"s_h1", Input::s_h1}, {"s_h2", Input::s_h2}};
+        {"V", Input::V},       {"s_h1", Input::s_h1}, {"s_h2", Input::s_h2},
+        {"layer_h", Input::layer_h}, {"layer_G", Input::layer_G}, {"tau_c0", Input::tau_c0}};
     std::vector<std::string> w;
     for (const cw_check& c : library_checks(grid, &p, 1)) {
         // Every command requires a, b and N, or takes documented defaults.

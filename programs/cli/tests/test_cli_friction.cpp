@@ -157,6 +157,13 @@ void layer_json_matches_library(void**)
     p.layer_h = p.tau_c0 = 0.0;
     assert_true(std::fabs(lib.Fx) < std::fabs(library_solve(tractcurv_grid(), p, CW_SOLVE_FORCES).Fx));
 
+    // Millimetres typed as metres and MPa as Pa are warned about by option.
+    const Run warned = cli_ok({"solve", "--a", "0.006", "--b", "0.006", "--N", "80000",
+                                  "--xi-x", "0.001", "--model", "exact", "--layer-h", "1.25",
+                                  "--layer-G", "8200", "--tau-c0", "150"});
+    for (const char* option : {"--layer-h = 1.25 m", "--layer-G = 8200 Pa", "--tau-c0 = 150 Pa"})
+        assert_true(warned.err.find(option) != std::string::npos);
+
     const std::vector<std::string> exact = {"--model", "exact"};
     const struct {
         std::vector<std::string> args;
