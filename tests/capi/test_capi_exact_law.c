@@ -28,14 +28,7 @@
  * FKIN 0.14, FEXP1 0.19, SABSH1 1.25 m/s at V = 10 m/s. */
 static cw_params law_contact(double xi_x, double xi_y, double phi)
 {
-    cw_params p = cw_tractcurv_params(xi_x);
-    p.model = CW_MODEL_EXACT;
-    p.pressure = CW_PRESSURE_ELLIPTIC;
-    p.exact_load = 0;
-    p.G = 82e9;
-    p.nu = 0.28;
-    p.xi_y = xi_y;
-    p.phi = phi;
+    cw_params p = cw_tractcurv_exact_params(xi_x, xi_y, phi);
     p.friction_law = CW_FRICTION_EXPONENTIAL;
     p.mu = 0.14;
     p.mu_e1 = 0.19;

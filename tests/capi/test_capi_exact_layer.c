@@ -24,15 +24,8 @@
 /* Hertz's pressure on CONTACT's printed semi-axes, Coulomb's 0.33. */
 static cw_params layer_contact(double xi_x, double xi_y, double phi, int plastic)
 {
-    cw_params p = cw_tractcurv_params(xi_x);
-    p.model = CW_MODEL_EXACT;
-    p.pressure = CW_PRESSURE_ELLIPTIC;
-    p.exact_load = 0;
-    p.G = 82e9;
-    p.nu = 0.28;
+    cw_params p = cw_tractcurv_exact_params(xi_x, xi_y, phi);
     p.mu = MU;
-    p.xi_y = xi_y;
-    p.phi = phi;
     if (plastic) {
         p.tau_c0 = 150e6;
     } else {

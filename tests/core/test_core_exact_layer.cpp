@@ -57,24 +57,13 @@ cw::ContactInput plastic(cw::ContactInput in)
 // CONTACT's rounding noise where the exact value is 0: F / (mu N), Mz [N mm].
 const double kForceNoise = 1e-9, kMomentNoise = 1e-3;
 
-// Half a unit of the printed value's last digit.
-double half_digit(const std::string& text)
-{
-    const auto e = text.find_first_of("Ee");
-    const std::string mant = text.substr(0, e);
-    const auto dot = mant.find('.');
-    const int decimals = dot == std::string::npos ? 0 : int(mant.size() - dot - 1);
-    const int exponent = e == std::string::npos ? 0 : std::stoi(text.substr(e + 1));
-    return 0.5 * std::pow(10.0, exponent - decimals);
-}
-
 // |ours - printed| over half a unit of its last digit, or over floor where
 // that is larger: where the exact value is 0 (Fy, Mz at pure xi_x) CONTACT
 // with its layer prints its rounding noise, |Fy| ~ 1e-10 mu N and
 // |Mz| ~ 1e-4 N mm.
 double digits_ratio(double ours, const std::string& printed, double floor)
 {
-    return std::fabs(ours - std::stod(printed)) / std::max(half_digit(printed), floor);
+    return std::fabs(ours - std::stod(printed)) / std::max(cwtest::printed_half_digit(printed), floor);
 }
 
 // Every row of a CONTACT table of the tractcurv contact, the input made by
