@@ -12,6 +12,7 @@ namespace {
 
 static_assert(static_cast<int>(cw::CheckRule::default_geometry) == CW_CHECK_DEFAULT_GEOMETRY &&
                   static_cast<int>(cw::CheckRule::approach) == CW_CHECK_APPROACH &&
+                  static_cast<int>(cw::CheckRule::layer_thickness) == CW_CHECK_LAYER_THICKNESS &&
                   static_cast<int>(cw::CheckRule::profile_origin) == CW_CHECK_PROFILE_ORIGIN,
               "core check rules and the header's CW_CHECK_* differ");
 
@@ -39,6 +40,9 @@ cw::ContactPlausibility plausibility_of(const cw_grid& g, const cw_params& p)
         c.s_h1 = p.mu_e1 > 0.0 ? p.s_h1 : 0.0;
         c.s_h2 = p.mu_e2 > 0.0 ? p.s_h2 : 0.0;
     }
+    c.layer_h = p.layer_h;
+    c.layer_G = p.layer_G;
+    c.tau_c0 = p.tau_c0;
     c.flexibilities_given = p.flexibility == CW_FLEX_GIVEN;
     c.gap_grid = g.kind == CW_GRID_GAP;
     c.default_geometry = p.a == d.a && p.b == d.b && p.normal_force == d.normal_force;

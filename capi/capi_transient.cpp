@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "capi_wear_law.hpp"
+#include "contact/contact_input.hpp"
 #include "transient/transient_model.hpp"
 #include "wear/transient_wear.hpp"
 
@@ -121,6 +122,10 @@ int cw_transient_create(const cw_grid* grid, const cw_params* params, cw_transie
                                            "gap grid (CW_GRID_GAP) or an ellipse's uniform "
                                            "grid (CW_GRID_UNIFORM)");
         const cw::ContactInput in = to_input(params);
+        if (const char* layer = cw::layer_input_name(in))
+            fail(CW_ERR_INVALID_INPUT, std::string("params->") + layer +
+                                           ": transient rolling has no interface layer (the "
+                                           "steady exact model has)");
         if (in.model != cw::ModelKind::exact && in.model != cw::ModelKind::fastsim)
             fail(CW_ERR_INVALID_INPUT, "params->model = " + std::to_string(params->model) +
                                            " is invalid for transient rolling: the exact model "

@@ -202,6 +202,10 @@ cw::ContactInput to_input(const cw_params* params)
     in.beta = p.beta;
     in.memory_distance = p.memory_distance;
     in.memory_s0 = p.memory_s0;
+    in.layer_h = p.layer_h;
+    in.layer_G = p.layer_G;
+    in.tau_c0 = p.tau_c0;
+    in.k_tau = p.k_tau;
     return in;
 }
 

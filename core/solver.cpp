@@ -210,8 +210,14 @@ const SolveTotals& Solver::solve_impl(const ContactInput& input, SolveMode mode,
     mode_ = mode;
     validate_grid_input(grid_->spec(), input);
     validate_friction_input(input);
+    validate_layer_input(input);
     const bool gap_grid = grid_->spec().kind == GridKind::gap;
     ContactModel& m = model(route(input, gap_grid));
+    if (const char* layer = layer_input_name(input))
+        if (!m.takes_interface_layer())
+            throw Error(ErrorKind::invalid_input,
+                        std::string(layer) + ": " + m.name() +
+                            " has no interface layer (the exact model has)");
     if (beyond_coulomb(input)) {
         if (input.friction_speed == FrictionSpeed::global && input.model != ModelKind::fastsim)
             throw Error(ErrorKind::invalid_input,

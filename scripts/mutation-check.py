@@ -959,6 +959,38 @@ MUTANTS += [
          new="        const LocalLaw local{law_, law_.coefficient(0.0), V_};",
          tests=EXACT_LAW, require=EXACT_LAW),
 ]
+# The interface layer in the exact model (steady_rolling's operator,
+# exact_model's compliance and yield, the solver's refusal): CONTACT's rows
+# with the elastic layer and the plastic surface, central differences of
+# the Jacobian, the refusals (test_core_exact_layer, test_capi_exact_layer).
+LAYER = ["test_core_exact_layer", "test_capi_exact_layer"]
+MUTANTS += [
+    dict(id="layer-ahead", what="the layer's compliance couples to the element ahead with the "
+         "wrong sign", file="core/exact/steady_rolling.cpp",
+         old="            s[k] += layer_ * (v[k] - ahead);",
+         new="            s[k] += layer_ * (v[k] + ahead);", tests=LAYER, require=LAYER),
+    dict(id="layer-own-diagonal", what="the sweep's own coefficient misses the layer",
+         file="core/exact/steady_rolling.cpp",
+         old="    b0x_ += layer_;", new="    b0x_ += 0.0;", tests=LAYER, require=LAYER),
+    dict(id="layer-element-length", what="the layer's compliance per element width, not length",
+         file="core/exact/exact_model.cpp",
+         old="    s.layer = in.layer_h > 0.0 ? in.layer_h / in.layer_G * in.G / s.dx : 0.0;",
+         new="    s.layer = in.layer_h > 0.0 ? in.layer_h / in.layer_G * in.G / s.dy : 0.0;",
+         tests=LAYER, require=LAYER),
+    dict(id="layer-yield-unit", what="the yield stress over p0, not over mu p0",
+         file="core/exact/exact_model.cpp",
+         old="    s.yield = in.tau_c0 > 0.0 && s.traction_scale > 0.0 ? in.tau_c0 / s.traction_scale : 0.0;",
+         new="    s.yield = in.tau_c0 > 0.0 && s.traction_scale > 0.0 ? in.tau_c0 / s.p0 : 0.0;",
+         tests=LAYER, require=LAYER),
+    dict(id="layer-yield-jacobian-N", what="the N column ignores that tau_c does not grow with N",
+         file="core/exact/exact_jacobian.cpp",
+         old="        if (s.yield > 0.0) euler -= frame[r] * T * area * dS_yield[r];",
+         new="        (void)dS_yield;", tests=LAYER, require=LAYER),
+    dict(id="layer-refusal", what="a model without the layer ignores it silently",
+         file="core/solver.cpp",
+         old="        if (!m.takes_interface_layer())",
+         new="        if (false && !m.takes_interface_layer())", tests=LAYER, require=LAYER),
+]
 # The exact models' law through the doors: mu_min, mu_max against the law
 # at the exported slip speeds, and a Coulomb solve after a law's on one
 # handle against a fresh handle's (C ABI, Python; the CLI, one solve per

@@ -112,6 +112,28 @@ void validate_friction_input(const ContactInput& in)
                      "friction memory needs friction_speed = local (each element's slip speed)");
 }
 
+void validate_layer_input(const ContactInput& in)
+{
+    require_non_negative("layer_h", in.layer_h);
+    require_non_negative("layer_G", in.layer_G);
+    require_non_negative("tau_c0", in.tau_c0);
+    require_finite("k_tau", in.k_tau);
+    if (in.layer_h > 0.0 && !(in.layer_G > 0.0))
+        reject_input("layer_G", in.layer_G,
+                     "must be > 0 [Pa] when layer_h > 0 (the layer's shear modulus G3)");
+    if (in.k_tau != 0.0 && !(in.tau_c0 > 0.0))
+        reject_input("k_tau", in.k_tau,
+                     "needs tau_c0 > 0 (the yield stress it hardens or softens) [Pa/m]");
+}
+
+const char* layer_input_name(const ContactInput& in)
+{
+    if (in.layer_h != 0.0) return "layer_h";
+    if (in.tau_c0 != 0.0) return "tau_c0";
+    if (in.k_tau != 0.0) return "k_tau";
+    return nullptr;
+}
+
 void validate_grid_input(const GridSpec& grid, const ContactInput& in)
 {
     if (grid.kind == GridKind::gap) return;

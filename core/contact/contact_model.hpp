@@ -74,6 +74,10 @@ public:
     // its slipping elements, for a model under a law of the slip speed;
     // false for a model that holds one mu.
     virtual bool friction_range(double& /*mu_min*/, double& /*mu_max*/) const { return false; }
+    // Whether the model takes an interface layer (ContactInput::layer_h,
+    // tau_c0, k_tau); the solver refuses a layer, naming its input, for a
+    // model that does not.
+    virtual bool takes_interface_layer() const { return false; }
     // The model's name in messages ("the exact model"), set by the solver
     // that makes it.
     void set_name(std::string name) { name_ = std::move(name); }

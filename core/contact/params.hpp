@@ -134,7 +134,19 @@ struct ContactInput {
     // Friction memory (friction_speed local): the distance d_c [m] >= 0 (0:
     // none) and the background slip speed s0 [m/s] >= 0.
     double memory_distance = 0.0, memory_s0 = 0.0;
+    // The interface (third-body) layer, CONTACT's M = 4: an elastic shear
+    // compliance layer_h / layer_G [m/Pa] in series with the bodies (h >= 0
+    // [m], G3 > 0 [Pa] when h > 0) and the yield stress tau_c = tau_c0 +
+    // k_tau u_pl (tau_c0 >= 0 [Pa], 0: no yield; k_tau [Pa/m]). All 0: none.
+    // The exact models take it (exact/exact_model.hpp, gap/gap_exact_model.hpp).
+    double layer_h = 0.0, layer_G = 0.0, tau_c0 = 0.0, k_tau = 0.0;
 };
+
+// Whether the input asks for an interface layer (elastic or yielding).
+inline bool has_interface_layer(const ContactInput& in)
+{
+    return in.layer_h != 0.0 || in.tau_c0 != 0.0 || in.k_tau != 0.0;
+}
 
 // Whether the input asks for more than Coulomb's law at every element (a
 // law of the slip speed, the global slip speed, friction memory).

@@ -111,6 +111,20 @@ const Row kRows[] = {
      "approaches are 10-200 um (millimetres typed as metres?)",
      [](const C& c) { return c.approach; },
      [](const C& c, double v) { return c.gap_grid && c.approach_given && std::fabs(v) > 1e-3; }},
+    // Third-body layers are micrometres thick; CONTACT's fitted effective
+    // layer of its traction-curve example is 1.25 mm. Millimetres typed as
+    // metres give metres.
+    {CheckRule::layer_thickness, "layer_h", "m",
+     "interface layers are micrometres to about a millimetre thick, not above 10 mm "
+     "(millimetres typed as metres?)",
+     [](const C& c) { return c.layer_h; }, [](const C&, double v) { return v > 1e-2; }},
+    {CheckRule::modulus, "layer_G", "Pa",
+     "layer moduli are 10 MPa (MoS2) to 100 GPa, inside 1e6 .. 1e12 Pa (MPa typed as Pa?)",
+     [](const C& c) { return c.layer_G; },
+     [](const C& c, double v) { return c.layer_h > 0.0 && (v < 1e6 || v > 1e12); }},
+    {CheckRule::yield_stress, "tau_c0", "Pa",
+     "layers yield at 10-1000 MPa, not below 1e6 Pa (MPa typed as Pa?)",
+     [](const C& c) { return c.tau_c0; }, [](const C&, double v) { return v > 0.0 && v < 1e6; }},
 };
 
 } // namespace

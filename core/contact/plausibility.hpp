@@ -18,7 +18,7 @@ enum class CheckRule {
     semi_axis = 1,        // a, b outside 0.1 mm .. 0.1 m
     normal_force = 2,     // N (or a wheel load) outside 1 kN .. 10 MN
     friction = 3,         // mu above 1.5
-    modulus = 4,          // G outside 1 MPa .. 1 TPa
+    modulus = 4,          // G (and a layer's layer_G) outside 1 MPa .. 1 TPa
     flexibility = 5,      // L1..L3 outside 1e-18 .. 1e-10 m/Pa
     creepage = 6,         // |xi| above 0.5
     spin = 7,             // |phi| above 50 1/m
@@ -27,6 +27,7 @@ enum class CheckRule {
     approach = 10,        // |approach| above 1 mm
     default_geometry = 11, // a, b and N all at cw_params_init's values
     half_speed = 12,      // a friction law's s_h1, s_h2 above 50 m/s
+    layer_thickness = 13, // an interface layer's layer_h above 10 mm
     wheelset_shift = 20,  // |y| above 20 mm
     wheelset_angle = 21,  // |roll|, |yaw| above 0.05 rad
     patch_element = 22,   // dx, ds above 5 mm
@@ -38,7 +39,7 @@ enum class CheckRule {
     conductivity = 30,    // lambda outside 1 .. 1000 W/(m K)
     heat_capacity = 31,   // c outside 100 .. 5000 J/kg/K
     density = 32,         // rho outside 1000 .. 25000 kg/m^3
-    yield_stress = 33,    // k_yield below 1e6 Pa
+    yield_stress = 33,    // k_yield (and a layer's tau_c0 > 0) below 1e6 Pa
     wlrm_threshold = 34,  // a WLRM threshold in (0, 1) N
 };
 
@@ -70,6 +71,9 @@ struct ContactPlausibility {
     double V = 0; // the rolling speed [m/s] (0: not given)
     // A friction law's half speeds [m/s] (0: no law, or the term absent).
     double s_h1 = 0, s_h2 = 0;
+    // An interface layer's thickness [m], shear modulus [Pa] (read when the
+    // thickness is > 0) and yield stress [Pa] (0: none).
+    double layer_h = 0, layer_G = 0, tau_c0 = 0;
     bool flexibilities_given = false;
     // A contact of any shape (a gap grid): a and b are not used, the
     // spacing and the gap's heights are.

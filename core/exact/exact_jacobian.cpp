@@ -13,6 +13,10 @@
 // (Euler), exactly for the discrete system. Under a law of the slip speed
 // the law's argument kappa sigma (kappa = V mu(0) p0 / G, proportional to
 // N) adds the derivative by ln kappa (SteadyRolling::tangent_speed) over N.
+// A layer's yield stress tau_c does not grow with N: the bound it caps,
+// tau_c / (mu p0), falls as 1/N, which adds -tau_c dF/dtau_c / N
+// (SteadyRolling::tangent_bound on the capped elements). The layer's
+// compliance is in the operator and does not depend on N.
 
 #include "contact/jacobian_load.hpp"
 #include "exact/exact_model.hpp"
@@ -67,6 +71,21 @@ SolveTotals ExactModel::solve_jacobian(const ContactInput& in, SolveMode mode, J
         dS_speed[1] = m.y;
         dS_speed[2] = m.z;
     }
+    // tau_c dS/dtau_c: the capped elements' bound scaled by 1 + epsilon.
+    double dS_yield[3] = {};
+    if (s.yield > 0.0) {
+        const std::vector<double>& g = fine.tangential.bound();
+        const std::vector<double>& pn = fine.normal.pressure();
+        for (size_t k = 0; k < g.size(); ++k) tangent_yield_[k] = pn[k] > s.yield ? g[k] : 0.0;
+        const TractionMoments m = traction_moments(
+            fine.tangential.tangent_bound(fine.conv, tangent_yield_, tolerance,
+                                          kMaxJacobianIterations),
+            nx_, ny_, [&](int i) { return fine.geom.X(i) * s.dx; },
+            [&](int j) { return fine.geom.Y(j) * s.dx; });
+        dS_yield[0] = m.x;
+        dS_yield[1] = m.y;
+        dS_yield[2] = m.z;
+    }
     for (int r = 0; r < 3; ++r) {
         double euler = F[r];
         for (int c = 0; c < 3; ++c) {
@@ -74,6 +93,7 @@ SolveTotals ExactModel::solve_jacobian(const ContactInput& in, SolveMode mode, J
             euler -= inputs[c] * out.d[r][c];
         }
         if (law_.active()) euler += frame[r] * T * area * dS_speed[r];
+        if (s.yield > 0.0) euler -= frame[r] * T * area * dS_yield[r];
         out.d[r][3] = euler / in.normal_force;
     }
     J = out;

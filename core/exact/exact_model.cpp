@@ -37,8 +37,7 @@ struct ExactModel::Steps {
     {
         Level& L = *m.levels_[l];
         m.solve_normal(L, ratio, in.warm_start, "coarse");
-        std::vector<double>& gl = L.tangential.bound();
-        for (size_t k = 0; k < gl.size(); ++k) gl[k] = L.normal.pressure()[k];
+        m.set_bound(L, L.normal.pressure());
         m.set_rigid_slip(L);
     }
     void first_guess(int l) { m.fastsim_start(*m.levels_[l], ratio, in.nu, in.G, in.a, in.b); }
@@ -71,6 +70,7 @@ ExactModel::ExactModel(const GridSpec& grid)
     history_.resize(n);
     paper_.assign(n, 0.0);
     tangent_w_.assign(n, SteadyRolling::Complex(0.0, 0.0));
+    tangent_yield_.assign(n, 0.0);
     consistent_.assign(n, 0.0);
     profile_.assign(ny_, 0.0);
     x_column_.assign(nx_, 0.0);
@@ -120,6 +120,36 @@ void ExactModel::set_rigid_slip(Level& L) const
                                setup_.c_eta + cphi * (L.geom.X(i) + setup_.spin_offset)};
 }
 
+void ExactModel::set_bound(TangentialLevel& L, const std::vector<double>& pressure) const
+{
+    std::vector<double>& g = L.tangential.bound();
+    const double cap = setup_.yield;
+    for (size_t k = 0; k < g.size(); ++k)
+        g[k] = cap > 0.0 && pressure[k] > cap ? cap : pressure[k];
+}
+
+// The layer on every level: the compliance per level's dx (dx = a / alpha),
+// the yield stress in traction units.
+void ExactModel::set_layer(const ContactInput& in)
+{
+    if (in.k_tau != 0.0)
+        reject_input("k_tau", in.k_tau,
+                     "must be 0 for model = exact: the layer's yield stress is perfectly "
+                     "plastic (tau_c = tau_c0)");
+    if (in.tau_c0 > 0.0 && law_.active())
+        reject_input("tau_c0", in.tau_c0,
+                     "must be 0 with a friction law of the slip speed: the layer's yield "
+                     "takes Coulomb's law (friction_law = coulomb)");
+    Setup& s = setup_;
+    s.layer = in.layer_h > 0.0 ? in.layer_h / in.layer_G * in.G / s.dx : 0.0;
+    s.yield = in.tau_c0 > 0.0 && s.traction_scale > 0.0 ? in.tau_c0 / s.traction_scale : 0.0;
+    if (!std::isfinite(s.layer) || !std::isfinite(s.yield))
+        throw Error(ErrorKind::invalid_input,
+                    "layer_h / layer_G or tau_c0 is so extreme that the layer overflows");
+    const double alpha0 = levels_[0]->geom.alpha;
+    for (auto& L : levels_) L->tangential.set_layer(s.layer * (L->geom.alpha / alpha0));
+}
+
 // Kalker's simplified theory as a first guess on the coarsest grid: march
 // each row from the leading edge, q += -dx w / (L G) per element (L1, L2 for
 // creepage, L3 for spin), clipped to the bound.
@@ -150,14 +180,14 @@ void ExactModel::interpolate(const Level& C, Level& F) const
 // dropped when a/b, nu or the spin offset change).
 void ExactModel::predict_start(double ratio, double nu)
 {
-    const double key[CreepageHistory::kKey] = {ratio, nu, setup_.spin_offset, 0.0};
+    const double key[CreepageHistory::kKey] = {ratio, nu, setup_.spin_offset, setup_.layer};
     const double c[3] = {setup_.c_xi, setup_.c_eta, setup_.c_phi};
     history_.predict(key, c, levels_[0]->tangential.traction());
 }
 
 void ExactModel::remember(double ratio, double nu)
 {
-    const double key[CreepageHistory::kKey] = {ratio, nu, setup_.spin_offset, 0.0};
+    const double key[CreepageHistory::kKey] = {ratio, nu, setup_.spin_offset, setup_.layer};
     const double c[3] = {setup_.c_xi, setup_.c_eta, setup_.c_phi};
     history_.remember(key, c, levels_[0]->tangential.traction(), 1.0,
                       levels_[0]->tangential.state().data());
@@ -249,11 +279,18 @@ SolveTotals ExactModel::solve(const ContactInput& in, SolveMode mode)
     if (loaded) solve_normal(fine, ratio, in.warm_start, "finest");
     set_normalised_creepages(in.G);
     law_.apply(levels_, setup_.slip_scale);
+    set_layer(in);
 
-    std::vector<double>& g = fine.tangential.bound();
-    const std::vector<double>& qn = fine.normal.pressure();
-    for (size_t k = 0; k < g.size(); ++k) g[k] = loaded ? qn[k] : 0.0;
-    scale_bounds(ElementFriction{factor_, nx_, setup_.direction < 0}, g.data(), nx_, ny_);
+    if (factor_ && setup_.yield > 0.0)
+        reject_input("tau_c0", setup_.yield * setup_.traction_scale,
+                     "must be 0 with friction that depends on the temperature: the layer's "
+                     "yield takes one coefficient");
+    if (loaded)
+        set_bound(fine, fine.normal.pressure());
+    else
+        std::fill(fine.tangential.bound().begin(), fine.tangential.bound().end(), 0.0);
+    scale_bounds(ElementFriction{factor_, nx_, setup_.direction < 0}, fine.tangential.bound().data(),
+                 nx_, ny_);
     // (With no friction g is the contact set for slide_freely, not a bound.)
     set_rigid_slip(fine);
 

@@ -88,6 +88,11 @@ public:
         return law_.friction_range(info_, mu_min, mu_max);
     }
 
+    // The interface layer (ContactInput::layer_h, layer_G, tau_c0; k_tau
+    // must be 0): the elastic compliance in every solve's operator, the
+    // yield stress a cap on every element's bound (Coulomb's law only).
+    bool takes_interface_layer() const override { return true; }
+
     const ExactSolveInfo& info() const { return info_; }
     int nx() const { return nx_; }
     int ny() const { return ny_; }
@@ -119,6 +124,9 @@ private:
     void interpolate(const Level& coarse, Level& fine) const;
     void fastsim_start(Level& level, double ratio, double nu, double G, double a, double b) const;
     void set_rigid_slip(Level& level) const;
+    // Level's bound: the normalised pressure, capped by the yield stress.
+    void set_bound(TangentialLevel& level, const std::vector<double>& pressure) const;
+    void set_layer(const ContactInput& in);
     void predict_start(double ratio, double nu);
     void remember(double ratio, double nu);
 
@@ -138,11 +146,15 @@ private:
         double xi = 0, eta = 0, phi = 0;          // rolling frame, physical
         double c_xi = 0, c_eta = 0, c_phi = 0;     // normalised (per dx for phi)
         double spin_offset = 0;
+        // The layer: compliance (h / G3) G / dx on the finest grid, and the
+        // yield stress over the traction unit (0: no yield).
+        double layer = 0, yield = 0;
         bool full = false;
     } setup_;
     std::vector<double> paper_, consistent_, profile_, row_d_, row_pool_;
     std::vector<double> x_column_, y_row_; // element centres of the caller's grid [m]
     std::vector<SteadyRolling::Complex> tangent_w_; // solve_jacobian's rigid-slip derivative
+    std::vector<double> tangent_yield_;              // and the yield-capped bound's
     // The last solutions and their creepages, for the warm start's
     // prediction (key: a/b, nu, spin offset).
     CreepageHistory history_;

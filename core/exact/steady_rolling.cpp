@@ -107,11 +107,25 @@ void SteadyRolling::slide_freely(const std::vector<double>& contact)
     }
 }
 
+void SteadyRolling::product(GridConvolution& conv, const Complex* v, Complex* s)
+{
+    conv.apply_tangential(v, s, rolling_);
+    ++products_;
+    if (layer_ == 0.0) return;
+    // The layer's diagonal c I in A: B = A(k) - A(k + 1) couples an element
+    // to itself (+c) and to the one ahead along x (-c).
+    for (int j = 0; j < ny_; ++j)
+        for (int i = 0; i < nx_; ++i) {
+            const int k = i + nx_ * j;
+            const Complex ahead = rolling_ && i + 1 < nx_ ? v[k + 1] : Complex(0.0, 0.0);
+            s[k] += layer_ * (v[k] - ahead);
+        }
+}
+
 void SteadyRolling::sweep(GridConvolution& conv, const std::vector<Complex>& q,
                           std::vector<Complex>& out)
 {
-    conv.apply_tangential(q.data(), s_.data(), rolling_);
-    ++products_;
+    product(conv, q.data(), s_.data());
     for (int k = 0; k < n_; ++k) s_[k] += w_[k];
     for (int j = 0; j < ny_; ++j) {
         Complex ahead(0.0, 0.0); // change of q at the element ahead (i + 1)
@@ -144,8 +158,7 @@ void SteadyRolling::sweep(GridConvolution& conv, const std::vector<Complex>& q,
 
 void SteadyRolling::linear_sweep(GridConvolution& conv, const Complex* v, Complex* out)
 {
-    conv.apply_tangential(v, work_.data(), rolling_);
-    ++products_;
+    product(conv, v, work_.data());
     for (int j = 0; j < ny_; ++j) {
         Complex ahead(0.0, 0.0);
         for (int i = nx_ - 1; i >= 0; --i) {
@@ -277,6 +290,13 @@ SteadyRollingInfo SteadyRolling::solve(GridConvolution& conv, double tolerance, 
         b1y_ = conv.cf22(-1, 0);
     }
     // (cf12 vanishes on the row of the loaded element: B(0,0), B(-1,0) are diagonal.)
+    // The layer's c I: +c on the own element, -c on the one ahead (rolling).
+    b0x_ += layer_;
+    b0y_ += layer_;
+    if (rolling_) {
+        b1x_ -= layer_;
+        b1y_ -= layer_;
+    }
 
     project(q_);
     sweep(conv, q_, gq_);

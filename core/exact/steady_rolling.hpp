@@ -64,6 +64,11 @@ public:
     int ny() const { return ny_; }
     // The operator of the next solves (rolling unless set).
     void set_operator(SlipOperator op) { rolling_ = op == SlipOperator::rolling; }
+    // An interface layer's shear compliance in the normalised units, c =
+    // (h / G3) G / dx >= 0 (0, the default: none): the displacement gains
+    // c q at each element, A + c I in series with the half-space, so the
+    // rolling operator's s_I gains c (q_I - q_ahead) and the shift's c q_I.
+    void set_layer(double compliance) { layer_ = compliance; }
     // The friction law of the next solves: Coulomb's (bound g, the default,
     // law = nullptr) or a law of the slip speed (bound g m(sigma) at each
     // element's own normalised slip sigma = |s|, local_friction.hpp), inside
@@ -139,6 +144,9 @@ private:
                                               int max_iterations);
     // out = G(q); also s_, state_, jac_ at q. One FFT product.
     void sweep(GridConvolution& conv, const std::vector<Complex>& q, std::vector<Complex>& out);
+    // s = B v (the operator's product, A v for a shift) with the layer's
+    // share. One FFT product.
+    void product(GridConvolution& conv, const Complex* v, Complex* s);
     // out = G'(q) v at the q of the last sweep. One FFT product.
     void linear_sweep(GridConvolution& conv, const Complex* v, Complex* out);
     // out = G_w dw + G_g dg (+ G_kappa under a law, with speed) at the q of
@@ -153,6 +161,7 @@ private:
 
     int nx_, ny_, n_, m_;
     bool rolling_ = true;
+    double layer_ = 0.0; // set_layer
     // The operator's own element and the one ahead (diagonal): B(0,0), B(-1,0)
     // rolling, A(0,0), A(-1,0) shift.
     double b0x_ = 0, b0y_ = 0, b1x_ = 0, b1y_ = 0;

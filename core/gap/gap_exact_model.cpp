@@ -81,6 +81,10 @@ void GapExactModel::validate(const ContactInput& in) const
                     "flexibility = given is invalid for model = exact: the exact theory needs "
                     "the material (G, nu), not L1, L2, L3");
     validate_gap_input(in, static_cast<size_t>(nx_) * ny_, normal_.kernel_isa());
+    if (in.tau_c0 != 0.0 || in.k_tau != 0.0)
+        reject_input(in.tau_c0 != 0.0 ? "tau_c0" : "k_tau", in.tau_c0 != 0.0 ? in.tau_c0 : in.k_tau,
+                     "must be 0 on a gap grid: the exact model there takes the interface "
+                     "layer's elastic compliance (layer_h, layer_G) only");
     require_non_negative("tolerance", in.tolerance);
     if (in.tolerance != 0.0 && !(in.tolerance >= 1e-13 && in.tolerance < 1.0))
         reject_input("tolerance", in.tolerance,
@@ -271,7 +275,7 @@ void GapExactModel::predict_start(double nu)
 {
     const Setup& s = setup_;
     const double T = s.traction_scale;
-    const double key[CreepageHistory::kKey] = {nu, s.spin_offset, double(s.direction), 0.0};
+    const double key[CreepageHistory::kKey] = {nu, s.spin_offset, double(s.direction), s.layer};
     const double c[3] = {s.xi, s.eta, s.phi};
     if (!history_.predict(key, c, traction_, 1.0 / T)) {
         const double f = previous_traction_scale_ / T;
@@ -288,7 +292,7 @@ void GapExactModel::predict_start(double nu)
 void GapExactModel::remember(double nu)
 {
     const Setup& s = setup_;
-    const double key[CreepageHistory::kKey] = {nu, s.spin_offset, double(s.direction), 0.0};
+    const double key[CreepageHistory::kKey] = {nu, s.spin_offset, double(s.direction), s.layer};
     const double c[3] = {s.xi, s.eta, s.phi};
     history_.remember(key, c, traction_, s.traction_scale, state_.data());
 }
@@ -330,6 +334,11 @@ SolveTotals GapExactModel::solve(const ContactInput& in, SolveMode mode)
     set_box(normal_.half_space(in.nu));
     set_normalised_creepages(in);
     law_.apply(levels_, s.slip_scale);
+    // The layer in the normalised units of each level: (h / G3) G / dx.
+    s.layer = in.layer_h > 0.0 ? in.layer_h / in.layer_G : 0.0;
+    if (!std::isfinite(s.layer * in.G / grid_.dx))
+        throw Error(ErrorKind::invalid_input, "layer_h / layer_G is so extreme that the layer overflows");
+    for (auto& L : levels_) L->tangential.set_layer(L->dx > 0.0 ? s.layer * in.G / L->dx : 0.0);
 
     Level& fine = *levels_[0];
     std::vector<double>& g = fine.tangential.bound();

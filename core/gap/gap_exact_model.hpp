@@ -90,6 +90,9 @@ public:
     {
         return law_.friction_range(info_, mu_min, mu_max);
     }
+    // The interface layer's elastic compliance layer_h / layer_G in every
+    // level's operator (its yield, tau_c0, is refused by name).
+    bool takes_interface_layer() const override { return true; }
 
     const GapExactSolveInfo& info() const { return info_; }
     // dN/d(approach) [N/m] at the last solve, its normal method's own
@@ -153,6 +156,7 @@ private:
         double xi = 0, eta = 0, phi = 0;        // rolling frame, physical
         double spin_offset = 0;
         double G = 0;
+        double layer = 0; // the interface layer's compliance h / G3 [m/Pa]
         double y_mid = 0, half_width = 0;       // lateral centre and half extent of the contact [m]
         bool full = false, loaded = false;
     } setup_;

@@ -37,9 +37,11 @@ the columns of `creepwork wear` and the options of `creepwork solve`
             friction_law (coulomb|linear|rational|exponential|polach), mu_e1,
             s_h1, mu_e2, s_h2 (m/s), polach_A, polach_B (s/m), friction_speed
             (local|global), k0, alpha_inf, beta, memory_distance, memory_s0,
-            rolling_direction (+1|-1), spin_offset, flexibility_blending
-            (0|1), exact_load (0|1), tolerance, max_iterations (exact
-            model); s0, distance (m; carried to results.csv)
+            layer_h (m), layer_G, tau_c0 (Pa), k_tau (Pa/m; the exact model's
+            interface layer), rolling_direction (+1|-1), spin_offset,
+            flexibility_blending (0|1), exact_load (0|1), tolerance,
+            max_iterations (exact model); s0, distance (m; carried to
+            results.csv)
   any shape gap_file: the CSV of `creepwork solve --gap` (x_m,y_m,h_m, a
             path relative to FILE.csv's directory, or absolute) instead of
             a, b and the grid; N or approach (m, from the file's h = 0);

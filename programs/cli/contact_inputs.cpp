@@ -63,6 +63,10 @@ const std::vector<InputInfo>& all_inputs()
         {I::beta, "beta", "beta", Q::dimensionless},
         {I::memory_distance, "memory-distance", "memory_distance", Q::length},
         {I::memory_s0, "memory-s0", "memory_s0", Q::dimensionless}, // m/s
+        {I::layer_h, "layer-h", "layer_h", Q::length},
+        {I::layer_G, "layer-G", "layer_G", Q::stress},
+        {I::tau_c0, "tau-c0", "tau_c0", Q::stress},
+        {I::k_tau, "k-tau", "k_tau", Q::dimensionless}, // Pa/m in every unit system
     };
     return list;
 }
@@ -308,6 +312,28 @@ void read_friction(const Reader& r, cw_params& p)
                   "must be > 0 (m/s): " + named + " is a law of the slip speed", p.V);
 }
 
+// The interface layer: an elastic compliance layer_h / layer_G and a yield
+// stress; the library refuses it for a model without it.
+void read_layer(const Reader& r, cw_params& p)
+{
+    const ContactSource& s = r.s;
+    r.read(Input::layer_h, &p.layer_h);
+    r.read(Input::layer_G, &p.layer_G);
+    r.read(Input::tau_c0, &p.tau_c0);
+    if (s.has(Input::k_tau)) p.k_tau = s.number(Input::k_tau);
+    r.require(p.layer_h >= 0.0, Input::layer_h, "must be >= 0", p.layer_h);
+    if (s.has(Input::layer_G) && !(p.layer_h > 0.0))
+        r.refuse(Input::layer_G, "only used with " + s.name(Input::layer_h) + " > 0",
+                 Refusal::unreadable);
+    r.require(p.layer_h == 0.0 || p.layer_G > 0.0, Input::layer_G,
+              "must be > 0 when " + s.name(Input::layer_h) + " > 0", p.layer_G);
+    r.require(p.tau_c0 >= 0.0, Input::tau_c0, "must be >= 0 (0: no yield)", p.tau_c0);
+    r.require(std::isfinite(p.k_tau), Input::k_tau, "must be a finite number", p.k_tau);
+    if (s.has(Input::k_tau) && !(p.tau_c0 > 0.0))
+        r.refuse(Input::k_tau, "only used with " + s.name(Input::tau_c0) + " > 0",
+                 Refusal::unreadable);
+}
+
 void validate(const Reader& r, const cw_params& p)
 {
     const ContactSource& s = r.s;
@@ -397,6 +423,7 @@ ContactInputs read_contact_inputs(const ContactSource& s, const cw_params& defau
     read_model(r, p);
     read_flexibilities(r, p);
     read_friction(r, p);
+    read_layer(r, p);
     if (s.has(Input::pressure))
         p.pressure = s.choice(Input::pressure, {"parabolic", "elliptic"}) == "elliptic"
                          ? CW_PRESSURE_ELLIPTIC
@@ -439,7 +466,8 @@ std::vector<std::string> plausibility_warnings(const cw_grid& grid, const cw_par
         {"mu", Input::mu},     {"G", Input::G},       {"L1", Input::L1},
         {"L2", Input::L2},     {"L3", Input::L3},     {"xi_x", Input::xi_x},
         {"xi_y", Input::xi_y}, {"phi", Input::phi},   {"approach", Input::approach},
-        {"V", Input::V},       {"s_h1", Input::s_h1}, {"s_h2", Input::s_h2}};
+        {"V", Input::V},       {"s_h1", Input::s_h1}, {"s_h2", Input::s_h2},
+        {"layer_h", Input::layer_h}, {"layer_G", Input::layer_G}, {"tau_c0", Input::tau_c0}};
     std::vector<std::string> w;
     for (const cw_check& c : library_checks(grid, &p, 1)) {
         // Every command requires a, b and N, or takes documented defaults.

@@ -34,7 +34,10 @@ enum class Input {
     // with mu as mu0, where FASTSIM takes the slip speed, Spiryagin's slope
     // reduction, friction memory.
     friction_law, mu_e1, s_h1, mu_e2, s_h2, polach_A, polach_B, friction_speed, k0, alpha_inf,
-    beta, memory_distance, memory_s0
+    beta, memory_distance, memory_s0,
+    // The interface layer (doc/theory/interface-layer.md): thickness, shear
+    // modulus, yield stress and its slope (Pa/m in every unit system).
+    layer_h, layer_G, tau_c0, k_tau
 };
 
 struct InputInfo {

@@ -45,7 +45,11 @@ std::vector<OptionSpec> friction_options()
             {"alpha-inf", K::number, {}},
             {"beta", K::number, {}},
             {"memory-distance", K::number, {}},
-            {"memory-s0", K::number, {}}};
+            {"memory-s0", K::number, {}},
+            {"layer-h", K::number, {}},
+            {"layer-G", K::number, {}},
+            {"tau-c0", K::number, {}},
+            {"k-tau", K::number, {}}};
 }
 
 std::vector<OptionSpec> creepage_options()

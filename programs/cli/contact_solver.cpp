@@ -36,7 +36,8 @@ std::string options_named_in(const std::string& message)
         {"polach_A", "--polach-A"}, {"polach_B", "--polach-B"},
         {"friction_speed", "--friction-speed"}, {"k0", "--k0"}, {"alpha_inf", "--alpha-inf"},
         {"beta", "--beta"}, {"memory_distance", "--memory-distance"},
-        {"memory_s0", "--memory-s0"}, {"mu_T", "--mu-T"}};
+        {"memory_s0", "--memory-s0"}, {"mu_T", "--mu-T"}, {"layer_h", "--layer-h"},
+        {"layer_G", "--layer-G"}, {"tau_c0", "--tau-c0"}, {"k_tau", "--k-tau"}};
     const auto is_word = [](char c) {
         return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
     };

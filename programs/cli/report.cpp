@@ -89,6 +89,14 @@ JsonObject input_json(const cw_params& p, const cw_grid& g, const Units& u)
         in.number("G", u.from_si(Quantity::stress, p.G)).number("nu", p.nu);
     if (p.friction_law != CW_FRICTION_COULOMB || p.friction_speed != CW_FRICTION_SPEED_LOCAL)
         in.object("friction", friction_json(p, u));
+    if (p.layer_h > 0.0 || p.tau_c0 > 0.0) {
+        JsonObject layer;
+        layer.number("layer_h", u.from_si(Quantity::length, p.layer_h))
+            .number("layer_G", u.from_si(Quantity::stress, p.layer_G))
+            .number("tau_c0", u.from_si(Quantity::stress, p.tau_c0))
+            .number("k_tau", p.k_tau);
+        in.object("layer", layer);
+    }
     in.text("model", model_name(p.model));
     if (p.model == CW_MODEL_EXACT)
         in.number("tolerance", effective_tolerance(p))

@@ -147,6 +147,16 @@ strips or the uniform grid; doc/theory/friction.md):
   --memory-distance D --memory-s0 S
                     local: CONTACT's friction memory over the slip distance D
                     (length) with background slip speed S [m/s]
+interface (third-body) layer, --model exact:
+  --layer-h H --layer-G G3
+                    an elastic layer of thickness H (length) and shear modulus
+                    G3 (stress) in series with the bodies (only H/G3 matters)
+  --tau-c0 T        the layer's yield stress in shear (stress; default 0: no
+                    yield); with --layer-h 0 the surface yields. Coulomb's
+                    law, the ellipse's grid (not --gap)
+  --k-tau K         hardening (> 0) or softening (< 0) of the yield stress
+                    with the plastic displacement [Pa/m in every --units
+                    system]; the exact model takes 0 (perfectly plastic) only
 contact of any shape (instead of --a, --b and the grid options):
   --gap FILE        the undeformed distance on a regular grid: a CSV file with
                     the header x_m,y_m,h_m and one line per cell centre (any

@@ -6,7 +6,9 @@ law at the contact's slip speed and Spiryagin's reduction) and Polach's
 full-sliding closed form; polach= gives the bits of the fields
 cw_friction_polach writes; solve_many the bits of solve; bad inputs raise
 naming them; a half speed in mm/s warns; the exact model with a law
-against CONTACT's exact theory."""
+against CONTACT's exact theory; the interface layer's keywords (layer_h,
+layer_G, tau_c0, k_tau) against CONTACT's exact theory with the layer, named
+when bad, warned about in mm."""
 
 import csv
 import math
@@ -177,3 +179,41 @@ def test_half_speed_in_mm_per_s_warns():
                                                   mu=0.1368, mu_e1=0.2232, s_h1=990.0))
     messages = [str(w.message) for w in caught if issubclass(w.category, creepwork.UnitWarning)]
     assert len(messages) == 1 and messages[0].startswith("s_h1 = 990 m/s")
+
+
+LAYER = dict(model="exact", pressure="elliptic", exact_load=0, mu=0.33,
+             layer_h=1.25e-3, layer_G=8.2e9)
+
+
+def test_interface_layer_against_contact(test_data_dir):
+    """The exact model with tractcurv's elastic layer (layer_h, layer_G as
+    keywords) meets CONTACT's printed Fx/(mu N) of the layer alone
+    (tests/data/contact_tractcurv_layer.csv) to half a unit of its last
+    digit, and its adhesion count."""
+    with open(os.path.join(test_data_dir, "contact_tractcurv_layer.csv"), newline="") as f:
+        table = [r for r in csv.DictReader(f) if r["CETA"] == "0.000" and r["CPHI_per_mm"] == "0.000"]
+    assert len(table) == 30
+    for r in table[::5]:
+        res = creepwork.solve(fields=False, grid=GRID, **tractcurv(xi_x=float(r["CKSI"]), **LAYER))
+        printed = r["FX_over_FSTAT_FN"]
+        assert res.Fx / (0.33 * N) == pytest.approx(float(printed), abs=half_unit(printed))
+        assert res.n_adhesion == int(r["NADH"])
+
+
+@pytest.mark.parametrize("keywords, name", [
+    (dict(LAYER, layer_G=0.0), "layer_G"),
+    (dict(LAYER, tau_c0=-1.0), "tau_c0"),
+    (dict(LAYER, tau_c0=1.5e8, k_tau=1e9), "k_tau"),
+    (dict(layer_h=1.25e-3, layer_G=8.2e9), "layer_h"),  # FASTSIM has no layer
+])
+def test_bad_layer_inputs_are_named(keywords, name):
+    with pytest.raises(creepwork.InvalidInputError, match=r"\b%s\b" % name):
+        creepwork.solve(fields=False, **tractcurv(xi_x=0.01, **keywords))
+
+
+def test_layer_in_mm_warns():
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        creepwork.solve(fields=False, grid=GRID, **tractcurv(xi_x=0.002, **dict(LAYER, layer_h=1.25)))
+    messages = [str(w.message) for w in caught if issubclass(w.category, creepwork.UnitWarning)]
+    assert len(messages) == 1 and messages[0].startswith("layer_h = 1.25 m")

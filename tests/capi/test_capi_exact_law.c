@@ -11,6 +11,7 @@
 #include "capi_fixtures.h"
 #include "contact_csv.h"
 #include "tractcurv_case.h"
+#include "tractcurv_gap.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -27,14 +28,7 @@
  * FKIN 0.14, FEXP1 0.19, SABSH1 1.25 m/s at V = 10 m/s. */
 static cw_params law_contact(double xi_x, double xi_y, double phi)
 {
-    cw_params p = cw_tractcurv_params(xi_x);
-    p.model = CW_MODEL_EXACT;
-    p.pressure = CW_PRESSURE_ELLIPTIC;
-    p.exact_load = 0;
-    p.G = 82e9;
-    p.nu = 0.28;
-    p.xi_y = xi_y;
-    p.phi = phi;
+    cw_params p = cw_tractcurv_exact_params(xi_x, xi_y, phi);
     p.friction_law = CW_FRICTION_EXPONENTIAL;
     p.mu = 0.14;
     p.mu_e1 = 0.19;
@@ -91,48 +85,6 @@ static double digits(double ours, const char* printed)
     return fabs(ours - atof(printed)) / cw_printed_half_unit(printed);
 }
 
-/* Complete elliptic integrals K(k), E(k) by the arithmetic-geometric mean
- * (Abramowitz and Stegun 17.6), to rounding. */
-static void elliptic_KE(double k, double* K, double* E)
-{
-    double a = 1.0, b = sqrt(1.0 - k * k), sum = 0.5 * k * k, w = 0.5;
-    for (int n = 0; n < 40 && fabs(a - b) > 1e-16 * a; ++n) {
-        const double c = 0.5 * (a - b), an = 0.5 * (a + b);
-        b = sqrt(a * b);
-        a = an;
-        w *= 2.0;
-        sum += w * c * c;
-    }
-    *K = 3.14159265358979323846 / (2.0 * a);
-    *E = *K * (1.0 - sum);
-}
-
-/* The gap grid over the uniform grid's box (48 x 44 over 1.1 a, 1.1 b)
- * holding Hertz's gap A x^2 + B y^2 of the semi-axes a < b under N
- * (Johnson eqs. 4.38-4.39, as hertz_from_semi_axes): h receives 48 * 44
- * values. */
-static cw_grid hertz_gap_grid(const cw_params* p, double* h)
-{
-    const cw_grid u = cw_tractcurv_grid();
-    cw_grid g = cw_test_grid(CW_GRID_GAP, u.nx, u.ny, 1.0);
-    g.dx = 2.0 * u.box_scale * p->a / u.nx;
-    g.dy = 2.0 * u.box_scale * p->b / u.ny;
-    g.x0 = -u.box_scale * p->a + 0.5 * g.dx;
-    g.y0 = -u.box_scale * p->b + 0.5 * g.dy;
-    const double small = p->a, big = p->b, k = sqrt(1.0 - (small / big) * (small / big));
-    double K, E;
-    elliptic_KE(k, &K, &E);
-    const double p0 = 3.0 * p->normal_force / (2.0 * 3.14159265358979323846 * p->a * p->b);
-    const double c = p0 * small / (p->G / (1.0 - p->nu) * k * k * big * big);
-    const double A = c * ((big / small) * (big / small) * E - K), B = c * (K - E);
-    for (int j = 0; j < g.ny; ++j)
-        for (int i = 0; i < g.nx; ++i) {
-            const double x = g.x0 + i * g.dx, y = g.y0 + j * g.dy;
-            h[i + g.nx * j] = A * x * x + B * y * y;
-        }
-    return g;
-}
-
 /* Every row of CONTACT's table on grid g (gap: the Hertzian gap h): the
  * worst difference in halves of a printed digit; the contact and slip
  * areas element for element. */
@@ -181,7 +133,7 @@ static void contact_rows_on_a_gap_grid(void** state)
     (void)state;
     static double h[48 * 44];
     const cw_params p = law_contact(0.0, 0.0, 0.0);
-    const cw_grid g = hertz_gap_grid(&p, h);
+    const cw_grid g = cw_tractcurv_gap_grid(&p, h);
     const double worst = contact_rows(&g, h);
     printf("  gap grid, 36 rows: worst %.3f of half a printed digit\n", worst);
     assert_true(worst <= 1.0);
@@ -201,7 +153,7 @@ static void range_and_work_maps(void** state)
     const cw_params base = law_contact(0.0, 0.0, 0.0);
     cw_grid grids[2];
     grids[0] = cw_tractcurv_grid();
-    grids[1] = hertz_gap_grid(&base, h);
+    grids[1] = cw_tractcurv_gap_grid(&base, h);
     const double creep[][3] = {{2e-3, 0.0, 0.0}, {3e-3, 2e-4, 0.3}, {0.02, 0.0, 1.0}, {0.15, 0.0, 0.0}};
     static double sx[48 * 44], sy[48 * 44], wc[48 * 44], wp[48 * 44];
     static int st[48 * 44];
@@ -267,7 +219,7 @@ static void coulomb_after_a_law_is_a_fresh_handles(void** state)
     const cw_params base = law_contact(0.0, 0.0, 0.0);
     cw_grid grids[2];
     grids[0] = cw_tractcurv_grid();
-    grids[1] = hertz_gap_grid(&base, h);
+    grids[1] = cw_tractcurv_gap_grid(&base, h);
     static double px[2][48 * 44];
     for (int gi = 0; gi < 2; ++gi) {
         cw_params law = law_contact(3e-3, 2e-4, 0.3);
@@ -316,7 +268,7 @@ static void memory_is_refused_by_name(void** state)
     cw_params p = law_contact(3e-3, 0.0, 0.0);
     cw_grid grids[2];
     grids[0] = cw_tractcurv_grid();
-    grids[1] = hertz_gap_grid(&p, h);
+    grids[1] = cw_tractcurv_gap_grid(&p, h);
     p.memory_distance = 1e-3;
     for (int gi = 0; gi < 2; ++gi) {
         if (gi == 1) p.gap = h, p.gap_len = 48 * 44;

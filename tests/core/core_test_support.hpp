@@ -55,6 +55,18 @@ inline CsvTable read_csv(const std::string& path)
     return t;
 }
 
+// Half a unit of a printed number's last digit ("-0.4733" 5e-5,
+// "1.870E-03" 5e-7): how far a value may lie from it and still print so.
+inline double printed_half_digit(const std::string& text)
+{
+    const auto e = text.find_first_of("Ee");
+    const std::string mant = text.substr(0, e);
+    const auto dot = mant.find('.');
+    const int decimals = dot == std::string::npos ? 0 : int(mant.size() - dot - 1);
+    const int exponent = e == std::string::npos ? 0 : std::stoi(text.substr(e + 1));
+    return 0.5 * std::pow(10.0, exponent - decimals);
+}
+
 // A file of the tests' reference data (tests/data, its README.md).
 inline std::string test_data_path(const std::string& relative)
 {

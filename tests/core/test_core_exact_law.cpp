@@ -45,22 +45,11 @@ void expect_error_naming(F&& f, const char* name)
     }
 }
 
-// Half a unit of the printed value's last digit.
-double half_digit(const std::string& text)
-{
-    const auto e = text.find_first_of("Ee");
-    const std::string mant = text.substr(0, e);
-    const auto dot = mant.find('.');
-    const int decimals = dot == std::string::npos ? 0 : int(mant.size() - dot - 1);
-    const int exponent = e == std::string::npos ? 0 : std::stoi(text.substr(e + 1));
-    return 0.5 * std::pow(10.0, exponent - decimals);
-}
-
 // |ours - printed| against half a unit of the last printed digit; returns
 // the worst ratio (<= 1: every digit).
 double digits_ratio(double ours, const std::string& printed)
 {
-    return std::fabs(ours - std::stod(printed)) / half_digit(printed);
+    return std::fabs(ours - std::stod(printed)) / cwtest::printed_half_digit(printed);
 }
 
 void series1_coulomb(void**)

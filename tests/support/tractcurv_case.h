@@ -40,6 +40,22 @@ static inline cw_params cw_tractcurv_params(double xi_x)
     return p;
 }
 
+/* The exact model on the contact (CONTACT's exact theory): its own
+ * discrete normal problem on the printed semi-axes, steel, creepages
+ * (xi_x, xi_y) and spin phi [1/m]; the friction left to the caller. */
+static inline cw_params cw_tractcurv_exact_params(double xi_x, double xi_y, double phi)
+{
+    cw_params p = cw_tractcurv_params(xi_x);
+    p.model = CW_MODEL_EXACT;
+    p.pressure = CW_PRESSURE_ELLIPTIC;
+    p.exact_load = 0;
+    p.G = 82e9;
+    p.nu = 0.28;
+    p.xi_y = xi_y;
+    p.phi = phi;
+    return p;
+}
+
 /* Series 4's law as CONTACT reads it, one to one (mu is mu_kin), at every
  * element's slip speed; global: at the contact's with Spiryagin's reduction. */
 static inline void cw_tractcurv_series4(cw_params* p, int global)

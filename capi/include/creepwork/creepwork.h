@@ -316,6 +316,19 @@ typedef struct cw_params {
     double memory_distance;/* friction memory (LOCAL): CONTACT's characteristic slip
                               distance d_c [m] >= 0; 0 (default) = none */
     double memory_s0;      /* its background slip speed s0 [m/s] >= 0 (default 0) */
+    /* An interface (third-body) layer between the bodies (doc/theory/interface-layer.md):
+     * an elastic shear compliance layer_h / layer_G in series with the bodies and a yield
+     * stress tau_c = tau_c0 + k_tau u_pl. CW_MODEL_EXACT takes the elastic layer on
+     * the uniform and gap grids and the yield on the uniform grid (CW_FRICTION_COULOMB,
+     * k_tau = 0); every other model and the transient handle refuse a layer with an
+     * error naming layer_h (or tau_c0, k_tau). Defaults 0: no layer. */
+    double layer_h;        /* the layer's thickness h [m] >= 0; 0 (default) = no elastic layer */
+    double layer_G;        /* its shear modulus G3 [Pa], > 0 when layer_h > 0 (only
+                              layer_h / layer_G matters) */
+    double tau_c0;         /* its yield stress in shear [Pa] >= 0; 0 (default) = no yield */
+    double k_tau;          /* its hardening (> 0) or softening (< 0) with the plastic
+                              displacement [Pa/m]; 0 (default) = perfectly plastic, the
+                              only value the exact model takes */
 } cw_params;
 
 /* Defaults: steel (G = 82e9 Pa, nu = 0.28), mu = 0.3, a = b = 6e-3 m,
@@ -333,7 +346,7 @@ CW_API int cw_params_init(cw_params* params);
 #define CW_CHECK_SEMI_AXIS 1        /* a, b outside 0.1 mm .. 0.1 m */
 #define CW_CHECK_NORMAL_FORCE 2     /* a load outside 1 kN .. 10 MN (kN typed as N?) */
 #define CW_CHECK_FRICTION 3         /* mu above 1.5 */
-#define CW_CHECK_MODULUS 4          /* G outside 1e6 .. 1e12 Pa (MPa typed as Pa?) */
+#define CW_CHECK_MODULUS 4          /* G, layer_G outside 1e6 .. 1e12 Pa (MPa typed as Pa?) */
 #define CW_CHECK_FLEXIBILITY 5      /* L1..L3 outside 1e-18 .. 1e-10 m/Pa */
 #define CW_CHECK_CREEPAGE 6         /* |xi_x|, |xi_y| above 0.5 (a per cent typed?) */
 #define CW_CHECK_SPIN 7             /* |phi| above 50 1/m (1/mm typed as 1/m?) */
@@ -342,6 +355,7 @@ CW_API int cw_params_init(cw_params* params);
 #define CW_CHECK_APPROACH 10        /* |approach| above 1 mm (CW_NORMAL_APPROACH) */
 #define CW_CHECK_DEFAULT_GEOMETRY 11 /* a, b, normal_force all at cw_params_init's values */
 #define CW_CHECK_HALF_SPEED 12      /* a friction law's s_h1, s_h2 above 50 m/s (mm/s typed?) */
+#define CW_CHECK_LAYER_THICKNESS 13 /* an interface layer's layer_h above 10 mm (mm typed as m?) */
 #define CW_CHECK_WHEELSET_SHIFT 20  /* |y| of the wheelset above 20 mm */
 #define CW_CHECK_WHEELSET_ANGLE 21  /* |roll|, |yaw| above 0.05 rad (degrees typed?) */
 #define CW_CHECK_PATCH_ELEMENT 22   /* wheel/rail dx, ds above 5 mm */
@@ -353,7 +367,7 @@ CW_API int cw_params_init(cw_params* params);
 #define CW_CHECK_CONDUCTIVITY 30    /* lambda outside 1 .. 1000 W/(m K) (W/(mm K) typed?) */
 #define CW_CHECK_HEAT_CAPACITY 31   /* c outside 100 .. 5000 J/kg/K (kJ/kg/K typed?) */
 #define CW_CHECK_DENSITY 32         /* rho outside 1000 .. 25000 kg/m^3 (g/cm^3 typed?) */
-#define CW_CHECK_YIELD_STRESS 33    /* k_yield below 1e6 Pa (MPa typed as Pa?) */
+#define CW_CHECK_YIELD_STRESS 33    /* k_yield, tau_c0 > 0 below 1e6 Pa (MPa typed as Pa?) */
 #define CW_CHECK_WLRM_THRESHOLD 34  /* a WLRM threshold in (0, 1) N (kN typed as N?) */
 
 /* One input whose value a solve accepts but no wheel-rail contact has: the

@@ -129,6 +129,65 @@ void exact_law_json_matches_library(void**)
     assert_close(sum, lib.W_macro, 1e-9, 0.0);
 }
 
+// The exact model with an interface layer (CONTACT's tractcurv layer, G3 =
+// 8200 N/mm^2, h = 1.25 mm, and a yield of 150 MPa): the JSON equals the C
+// ABI's full solve bit for bit and echoes the layer; bad layer inputs are refused naming their option,
+// the layer under FASTSIM naming --layer-h (the library's refusal).
+void layer_json_matches_library(void**)
+{
+    cw_params p = tractcurv(2e-3);
+    p.model = CW_MODEL_EXACT;
+    p.exact_load = 0;
+    p.mu = 0.33;
+    p.layer_h = 1.25e-3;
+    p.layer_G = 8.2e9;
+    p.tau_c0 = 150e6;
+    const cw_result lib = library_solve(tractcurv_grid(), p, CW_SOLVE_FULL);
+    const std::vector<std::string> base = {
+        "solve", "--format", "json", "--a", "6.304e-3", "--b", "12.61e-3", "--N", "106700",
+        "--grid", "uniform", "--nx", "48", "--ny", "44", "--box-scale", "1.1", "--mu", "0.33",
+        "--model", "exact", "--xi-x", "2e-3", "--layer-h", "1.25e-3", "--layer-G", "8.2e9",
+        "--tau-c0", "1.5e8"};
+    const Json j = parse_or_fail(cli_ok(base).out);
+    expect_library_bits(j, lib);
+    assert_true(j.num("W_consistent") == lib.W_consistent);
+    assert_true(j.at("input").at("layer").num("layer_h") == 1.25e-3);
+    assert_true(j.at("input").at("layer").num("tau_c0") == 150e6);
+    // The layer lowers the force below Coulomb's without it.
+    p.layer_h = p.tau_c0 = 0.0;
+    assert_true(std::fabs(lib.Fx) < std::fabs(library_solve(tractcurv_grid(), p, CW_SOLVE_FORCES).Fx));
+
+    // Millimetres typed as metres and MPa as Pa are warned about by option.
+    const Run warned = cli_ok({"solve", "--a", "0.006", "--b", "0.006", "--N", "80000",
+                                  "--xi-x", "0.001", "--model", "exact", "--layer-h", "1.25",
+                                  "--layer-G", "8200", "--tau-c0", "150"});
+    for (const char* option : {"--layer-h = 1.25 m", "--layer-G = 8200 Pa", "--tau-c0 = 150 Pa"})
+        assert_true(warned.err.find(option) != std::string::npos);
+
+    const std::vector<std::string> exact = {"--model", "exact"};
+    const struct {
+        std::vector<std::string> args;
+        const char* names;
+    } bad[] = {
+        {with(exact, {"--layer-h", "-1e-3", "--layer-G", "8e9"}), "--layer-h"},
+        {with(exact, {"--layer-h", "1e-3"}), "--layer-G"},
+        {with(exact, {"--layer-G", "8e9"}), "--layer-G"},
+        {with(exact, {"--tau-c0", "-5"}), "--tau-c0"},
+        {with(exact, {"--k-tau", "1e9"}), "--k-tau"},
+        {with(exact, {"--tau-c0", "1.5e8", "--k-tau", "1e9"}), "--k-tau"},
+        {{"--layer-h", "1e-3", "--layer-G", "8e9"}, "--layer-h"},
+        {{"--model", "calibrated", "--tau-c0", "1.5e8"}, "--tau-c0"},
+    };
+    for (const auto& b : bad) {
+        std::vector<std::string> args = {"solve", "--a", "0.006", "--b", "0.006", "--N", "80000",
+                                         "--xi-x", "0.01"};
+        args.insert(args.end(), b.args.begin(), b.args.end());
+        std::string shown = "creepwork";
+        for (const std::string& a : args) shown += " " + a;
+        expect_refusal(cli(args), 2, b.names, shown);
+    }
+}
+
 void bad_friction_inputs_are_named(void**)
 {
     const std::vector<std::string> law = {"--friction-law", "exponential", "--mu-e1", "0.2",
@@ -178,6 +237,7 @@ int main(int argc, char** argv)
         cmocka_unit_test(friction_json_matches_library),
         cmocka_unit_test(exact_law_json_matches_library),
         cmocka_unit_test(bad_friction_inputs_are_named),
+        cmocka_unit_test(layer_json_matches_library),
     };
     return cw_run_tests(tests, g_tools.test);
 }
