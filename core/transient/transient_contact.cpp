@@ -2,16 +2,14 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 #include <string>
 
-#include "contact/contact_input.hpp"
 #include "contact/error.hpp"
 #include "contact/number_text.hpp"
 #include "exact/exact_model.hpp"
 #include "exact/tangential_solve.hpp"
-#include "normal/gap_grid.hpp"
 #include "transient/ellipse_gap.hpp"
+#include "transient/state_bytes.hpp"
 
 namespace creepwork {
 namespace {
@@ -27,11 +25,6 @@ constexpr double kTangentTolerance = 1e-4;
 // so that it matches central differences of converged steps.
 constexpr double kStepJacobianTolerance = 1e-12;
 constexpr char kMagic[8] = {'c', 'w', 't', 'r', 'a', 'n', 's', '2'};
-
-void check_finite(const char* name, double v)
-{
-    if (!std::isfinite(v)) reject_input(name, v, "must be finite");
-}
 
 ContactInput own_gap(ContactInput in, const std::vector<double>& gap)
 {
@@ -61,21 +54,14 @@ TransientContact::TransientContact(const GridSpec& grid, const ContactInput& in)
 }
 
 TransientContact::TransientContact(const GridSpec& grid, const ContactInput& in, OnGapGrid)
-    : nx_(checked_gap_grid(grid).nx), ny_(grid.ny), n_(grid.nx * grid.ny), x0_(grid.x0),
-      y0_(grid.y0), dx_(grid.dx), dy_(grid.dy),
+    : TransientBase(grid),
       gap_(in.gap && in.gap_len >= static_cast<size_t>(n_) ? in.gap : nullptr,
            in.gap && in.gap_len >= static_cast<size_t>(n_) ? in.gap + n_ : nullptr),
       in_(own_gap(in, gap_)), normal_(grid, GapNormalOptions{false, true}),
       conv_(grid.nx, grid.ny, ConvolutionUse::tangential),
       solver_(grid.nx, grid.ny, kKrylovDimension)
 {
-    ContactInput check = in;
-    check.xi_x = check.xi_y = check.phi = 0.0;
-    check.rolling_direction = 1;
-    validate_gap_input(check, static_cast<size_t>(n_), normal_.kernel_isa());
-    if (!(in.mu > 0.0))
-        reject_input("mu", in.mu, "must be > 0 for transient rolling (without friction "
-                                  "there are no tangential tractions to carry over)");
+    check_contact(in, static_cast<size_t>(n_), normal_.kernel_isa());
     in_.rolling_direction = 1;
     in_.xi_x = in_.xi_y = in_.phi = 0.0;
     tolerance_ = in.tolerance > 0.0 ? in.tolerance : kExactDefaultTolerance;
@@ -84,10 +70,7 @@ TransientContact::TransientContact(const GridSpec& grid, const ContactInput& in,
     normal_.solve(in_, false);
     const std::vector<double>& p = normal_.pressure();
     for (double v : p) p_ref_ = std::max(p_ref_, v);
-    if (!(p_ref_ > 0.0))
-        throw Error(ErrorKind::invalid_input,
-                    "the contact carries no load (no element of the gap grid is in contact): "
-                    "transient rolling needs normal_force > 0 or an approach with contact");
+    check_loaded(p_ref_);
     T_ = in.mu * p_ref_;
     U_ = T_ * dx_ / in.G;
     set_box();
@@ -147,12 +130,9 @@ void TransientContact::set_frame(TransientFrame frame)
 
 void TransientContact::start_zero()
 {
-    has_solution_ = false;
     position_ = trial_position_ = 0.0;
     std::fill(q0_.begin(), q0_.end(), Complex(0.0, 0.0));
-    std::fill(creep0_, creep0_ + 3, 0.0);
-    steps_ = 0;
-    trial_valid_ = false;
+    clear_committed();
     set_committed_terms();
 }
 
@@ -162,41 +142,9 @@ void TransientContact::set_committed_terms()
     conv_.apply_tangential(q0_.data(), bq0_.data(), true);
 }
 
-void TransientContact::validate(const TransientStepInput& s, bool steady) const
+double TransientContact::force_limit() const
 {
-    if (!steady) {
-        check_finite("dq", s.dq);
-        // dq within a rounding of dx counts as dx.
-        if (s.dq < 0.0 || s.dq > dx_ * (1.0 + 1e-12))
-            reject_input("dq", s.dq,
-                         ("must be in [0, dx = " + number_text(dx_) +
-                          " m] (the distance rolled in one step; 0 is a shift)")
-                             .c_str());
-    }
-    check_finite("xi_x", s.xi_x);
-    check_finite("xi_y", s.xi_y);
-    check_finite("phi", s.phi);
-    const double limit = in_.mu * normal_.force();
-    if (s.prescribe_fx) {
-        check_finite("Fx", s.Fx);
-        if (!(std::fabs(s.Fx) < limit))
-            reject_input("Fx", s.Fx,
-                         ("must be below mu N = " + number_text(limit) +
-                          " N in magnitude (at mu N the contact slides: no creepage gives it)")
-                             .c_str());
-    }
-    if (s.prescribe_fy) {
-        check_finite("Fy", s.Fy);
-        if (!(std::fabs(s.Fy) < limit))
-            reject_input("Fy", s.Fy,
-                         ("must be below mu N = " + number_text(limit) +
-                          " N in magnitude (at mu N the contact slides: no creepage gives it)")
-                             .c_str());
-    }
-    if (s.prescribe_fx && s.prescribe_fy && std::hypot(s.Fx, s.Fy) >= limit)
-        reject_input("Fx", s.Fx,
-                     ("and Fy together must stay below mu N = " + number_text(limit) + " N")
-                         .c_str());
+    return in_.mu * normal_.force();
 }
 
 void TransientContact::set_slip(const double c[3], double dq, bool steady)
@@ -235,7 +183,7 @@ void TransientContact::unit_slip(int u, double length, double offset)
 
 const TransientStepResult& TransientContact::step(const TransientStepInput& s)
 {
-    validate(s, false);
+    validate(s, false, force_limit());
     trial_valid_ = false;
     // The committed state's share: -A q0 + d B q0 (world-fixed: -A q0 on
     // the moved geometry).
@@ -252,7 +200,7 @@ const TransientStepResult& TransientContact::step(const TransientStepInput& s)
 
 const TransientStepResult& TransientContact::start_steady(const TransientStepInput& s)
 {
-    validate(s, true);
+    validate(s, true, force_limit());
     trial_valid_ = false;
     if (world_) {
         trial_position_ = position_;
@@ -262,10 +210,8 @@ const TransientStepResult& TransientContact::start_steady(const TransientStepInp
     solver_.set_operator(SlipOperator::rolling);
     std::fill(solver_.traction().begin(), solver_.traction().end(), Complex(0.0, 0.0));
     solve(s, true);
-    trial_valid_ = false;
     q0_ = solver_.traction();
-    std::copy(trial_creep_, trial_creep_ + 3, creep0_);
-    steps_ = 0;
+    commit_steady();
     set_committed_terms();
     return result_;
 }
@@ -273,11 +219,8 @@ const TransientStepResult& TransientContact::start_steady(const TransientStepInp
 const TransientStepResult& TransientContact::solve(const TransientStepInput& s, bool steady)
 {
     const bool rolling = steady || s.dq > 0.0;
-    double c[3] = {s.xi_x, s.xi_y, s.phi};
-    // The force iteration starts from the last rolling creepages (rolling)
-    // or no shift.
-    if (s.prescribe_fx) c[0] = rolling ? creep0_[0] : 0.0;
-    if (s.prescribe_fy) c[1] = rolling ? creep0_[1] : 0.0;
+    double c[3];
+    first_creepages(s, rolling, c);
     const int unknowns = (s.prescribe_fx ? 1 : 0) + (s.prescribe_fy ? 1 : 0);
     const int comp[2] = {s.prescribe_fx ? 0 : 1, 1};
     const double target[2] = {s.prescribe_fx ? s.Fx : s.Fy, s.Fy};
@@ -352,13 +295,10 @@ const TransientStepResult& TransientContact::solve(const TransientStepInput& s, 
     last_offset_ = steady ? spin_offset_ * dx_ : spin_offset_ * s.dq;
     last_fx_ = s.prescribe_fx;
     last_fy_ = s.prescribe_fy;
-    has_solution_ = true;
     result_.newton_steps = newton;
     result_.products = products + 2 * (steady ? 0 : 1);
     result_.force_iterations = iterations;
-    trial_valid_ = true;
-    trial_rolling_ = rolling;
-    std::copy(c, c + 3, trial_creep_);
+    hold_trial(c, rolling);
     return result_;
 }
 
@@ -421,80 +361,35 @@ void TransientContact::totals(const double c[3], const SteadyRollingInfo& ti, bo
 
 void TransientContact::commit()
 {
-    if (!trial_valid_)
-        throw Error(ErrorKind::invalid_input,
-                    "commit: there is no step to commit (step() first; a trial is "
-                    "committed once, and rewind drops it)");
+    require_trial();
     q0_ = solver_.traction();
     aq0_ = aq_; // A q of the trial (the same bits as computing it again)
     conv_.apply_tangential(q0_.data(), bq0_.data(), true);
-    if (trial_rolling_) std::copy(trial_creep_, trial_creep_ + 3, creep0_);
     if (world_) position_ = trial_position_;
-    ++steps_;
-    trial_valid_ = false;
+    count_commit();
 }
 
-namespace {
-template <class T>
-void put(std::vector<unsigned char>& out, const T& v)
-{
-    const unsigned char* p = reinterpret_cast<const unsigned char*>(&v);
-    out.insert(out.end(), p, p + sizeof(T));
-}
-template <class T>
-void get(const unsigned char*& p, T& v)
-{
-    std::memcpy(&v, p, sizeof(T));
-    p += sizeof(T);
-}
-} // namespace
-
+// The bytes: TransientBase's part (p_max and the traction scale T identify
+// the contact), the coordinates and the rolled distance, then the committed
+// tractions.
 std::vector<unsigned char> TransientContact::save() const
 {
-    std::vector<unsigned char> out(kMagic, kMagic + sizeof(kMagic));
-    put(out, static_cast<std::int32_t>(nx_));
-    put(out, static_cast<std::int32_t>(ny_));
-    put(out, p_ref_);
-    put(out, T_);
-    put(out, static_cast<std::int64_t>(steps_));
-    for (double v : creep0_) put(out, v);
-    put(out, static_cast<std::int64_t>(world_ ? 1 : 0));
-    put(out, position_);
-    for (const Complex& v : q0_) {
-        put(out, v.real());
-        put(out, v.imag());
-    }
+    std::vector<unsigned char> out = save_committed(kMagic, p_ref_, T_);
+    put_bytes(out, static_cast<std::int64_t>(world_ ? 1 : 0));
+    put_bytes(out, position_);
+    put_tractions(out, q0_);
     return out;
 }
 
 void TransientContact::restore(const unsigned char* bytes, std::size_t n)
 {
-    const std::size_t size = sizeof(kMagic) + 2 * 4 + 2 * 8 + 8 + 3 * 8 + 2 * 8 + 16 * q0_.size();
-    if (!bytes || n != size || std::memcmp(bytes, kMagic, sizeof(kMagic)) != 0)
-        throw Error(ErrorKind::invalid_input,
-                    "restore: the bytes (" + std::to_string(n) +
-                        ") are not a saved transient state of this grid (" +
-                        std::to_string(size) + " bytes expected)");
-    const unsigned char* p = bytes + sizeof(kMagic);
-    std::int32_t nx = 0, ny = 0;
-    double pref = 0.0, T = 0.0;
-    std::int64_t steps = 0;
-    get(p, nx);
-    get(p, ny);
-    get(p, pref);
-    get(p, T);
-    get(p, steps);
-    if (nx != nx_ || ny != ny_ || pref != p_ref_ || T != T_)
-        throw Error(ErrorKind::invalid_input,
-                    "restore: the bytes are the state of another contact (grid, load or "
-                    "friction differ)");
-    double creep[3];
-    for (double& v : creep) get(p, v);
-    for (double v : creep) check_finite("restored creepage", v);
+    const std::size_t size = kCommittedBytes + 2 * 8 + 16 * q0_.size();
+    const Committed c = read_committed(bytes, n, size, kMagic, "transient state", p_ref_, T_);
+    const unsigned char* p = c.p;
     std::int64_t world = 0;
     double position = 0.0;
-    get(p, world);
-    get(p, position);
+    get_bytes(p, world);
+    get_bytes(p, position);
     if (world != (world_ ? 1 : 0))
         throw Error(ErrorKind::invalid_input,
                     "restore: the bytes are the state of another contact (the coordinates, "
@@ -502,21 +397,10 @@ void TransientContact::restore(const unsigned char* bytes, std::size_t n)
     if (!std::isfinite(position) || position < 0.0)
         throw Error(ErrorKind::invalid_input, "restore: the bytes hold a bad rolled distance");
     std::vector<Complex>& q = solver_.traction(); // scratch until the next step
-    for (Complex& v : q) {
-        double re = 0.0, im = 0.0;
-        get(p, re);
-        get(p, im);
-        if (!std::isfinite(re) || !std::isfinite(im))
-            throw Error(ErrorKind::invalid_input, "restore: the bytes hold a non-finite "
-                                                  "traction");
-        v = Complex(re, im);
-    }
+    get_tractions(p, q);
     q0_ = q;
     position_ = trial_position_ = position;
-    has_solution_ = false;
-    std::copy(creep, creep + 3, creep0_);
-    steps_ = static_cast<long>(steps);
-    trial_valid_ = false;
+    set_committed(c);
     set_committed_terms();
 }
 

@@ -59,6 +59,7 @@
 #include "halfspace/cell_box.hpp"
 #include "halfspace/grid_convolution.hpp"
 #include "normal/gap_normal.hpp"
+#include "transient/transient_base.hpp"
 
 namespace creepwork {
 
@@ -66,41 +67,7 @@ namespace creepwork {
 // world (the material; T = 1).
 enum class TransientFrame { contact = 0, world = 1 };
 
-// What one step is given.
-struct TransientStepInput {
-    double dq = 0.0; // distance rolled in the step [m], 0 <= dq <= dx; 0: a shift
-    // Rolling (dq > 0): the creepages xi_x, xi_y [-] and spin phi [1/m].
-    // Shift (dq = 0): the rigid shift along x, y [m] and rotation [rad].
-    double xi_x = 0.0, xi_y = 0.0, phi = 0.0;
-    // Prescribed forces on the wheel [N]: the matching xi_x (xi_y) is found.
-    bool prescribe_fx = false, prescribe_fy = false;
-    double Fx = 0.0, Fy = 0.0;
-};
-
-// What one step gave (in the input's units).
-struct TransientStepResult {
-    double xi_x = 0.0, xi_y = 0.0, phi = 0.0; // as given, the prescribed forces' found
-    double Fx = 0.0, Fy = 0.0, Mz = 0.0;      // on the wheel [N, N, N m], Mz about the origin
-    int n_contact = 0, n_adhesion = 0, n_slip = 0;
-    // Frictional work of the step [J], energy-consistent: the work of the
-    // rigid displacement r of the step under the mean of the old and new
-    // tractions less the change of the elastic energy,
-    //   W_step = -sum 1/2 (p_prev + p) . r dA - (E(p) - E(p_prev)),
-    // E(p) = 1/2 sum p . u(p) dA; in steady rolling (p = p_prev) it is
-    // dq (W_macro - phi s dq Fy) (s the spin offset), the steady model's
-    // W_macro per rolled distance. The sum of the work map (copy_work).
-    double W_step = 0.0;
-    // The friction dissipation of the step's own slip, sum of |p_t| |S| dA
-    // [J] (CONTACT's frictional work): below W_step by the exact theory's
-    // numerical dissipation (exact/exact_work.hpp).
-    double W_slip = 0.0;
-    int newton_steps = 0;     // of the tangential problem, all force iterations
-    int products = 0;         // FFT products, all of the step
-    int force_iterations = 0; // Newton steps on the prescribed forces
-    double residual = 0.0;    // the tangential problem's, relative
-};
-
-class TransientContact {
+class TransientContact : public TransientBase {
 public:
     using Complex = std::complex<double>;
 
@@ -130,10 +97,8 @@ public:
     // input (the state is unchanged), or Error(not_converged).
     const TransientStepResult& step(const TransientStepInput& step);
     // The last trial becomes the committed state; throws Error(invalid_input)
-    // without one.
+    // without one. rewind(), the grid and the trial's state: TransientBase's.
     void commit();
-    // Drops the last trial (the committed state stays).
-    void rewind() { trial_valid_ = false; }
 
     // The committed state as bytes (a whole number of 8-byte words), and
     // back. restore() throws
@@ -142,18 +107,6 @@ public:
     std::vector<unsigned char> save() const;
     void restore(const unsigned char* bytes, std::size_t n);
 
-    int nx() const { return nx_; }
-    int ny() const { return ny_; }
-    double dx() const { return dx_; }
-    double dy() const { return dy_; }
-    double x0() const { return x0_; }
-    double y0() const { return y0_; }
-    // A step or steady start since the last start, frame change or restore:
-    // the fields and jacobian() are of it.
-    bool has_solution() const { return has_solution_; }
-    long steps_committed() const { return steps_; }
-    bool has_trial() const { return trial_valid_; }
-    const TransientStepResult& last() const { return result_; }
     double p_max() const { return p_ref_; }
     // Of the last step (or steady start), [i + nx j]: tangential tractions
     // on the wheel [Pa], slip over the step [m], element states (0
@@ -196,7 +149,7 @@ private:
     explicit TransientContact(const Form& f) : TransientContact(f.grid, f.in, OnGapGrid{}) {}
     TransientContact(const GridSpec& grid, const ContactInput& in, OnGapGrid);
 
-    void validate(const TransientStepInput& s, bool steady) const;
+    double force_limit() const; // mu N [N]
     // The rigid displacement of creepages c (rolling) or shift c (dq = 0)
     // plus base_, into the solver's rigid slip.
     void set_slip(const double c[3], double dq, bool steady);
@@ -213,8 +166,6 @@ private:
     // phi) of a step of length (dq; dx steady; 1 a shift) into dw_.
     void unit_slip(int u, double length, double offset);
 
-    int nx_, ny_, n_;
-    double x0_, y0_, dx_, dy_;
     CellBox box_; // of the contact; every field below is on it
     int bn_ = 0;
     std::size_t cell(int k) const // box element k -> grid element
@@ -228,27 +179,21 @@ private:
     SteadyRolling solver_;
     double p_ref_ = 0.0, T_ = 0.0, U_ = 0.0, tolerance_ = 0.0, spin_offset_ = 0.0;
     int max_steps_ = 0;
-    // The committed state: tractions (normalised), A q0 and B q0, the last
-    // rolling step's creepages (the force iteration's start), steps.
+    // The committed state: tractions (normalised), A q0 and B q0 (its
+    // creepages and steps: TransientBase's).
     std::vector<Complex> q0_, aq0_, bq0_, base_, dw_, tangent_[2];
     std::vector<Complex> aq_; // A q of the last solve (the next commit's A q0)
-    double creep0_[3] = {0.0, 0.0, 0.0};
-    long steps_ = 0;
-    // The trial.
-    TransientStepResult result_;
-    bool trial_valid_ = false, trial_rolling_ = false;
     // The last solve (trial or steady start): its step length and spin
-    // offset [m] (in set_slip's sense), prescribed forces, work per element
-    // (normalised, box), and whether there is one.
+    // offset [m] (in set_slip's sense), prescribed forces and work per
+    // element (normalised, box).
     double last_length_ = 0.0, last_offset_ = 0.0;
     // World-fixed: the frame, the committed and the trial rolled distance,
     // that of the normal solution, and the moved gap.
     bool world_ = false;
     double position_ = 0.0, trial_position_ = 0.0, normal_position_ = 0.0;
     std::vector<double> moved_gap_;
-    bool last_fx_ = false, last_fy_ = false, has_solution_ = false;
+    bool last_fx_ = false, last_fy_ = false;
     std::vector<double> work_;
-    double trial_creep_[3] = {0.0, 0.0, 0.0};
 };
 
 } // namespace creepwork

@@ -2,16 +2,14 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 #include <string>
 
-#include "contact/contact_input.hpp"
 #include "contact/error.hpp"
 #include "contact/kalker_coefficients.hpp"
 #include "contact/number_text.hpp"
 #include "exact/exact_model.hpp"
-#include "normal/gap_grid.hpp"
 #include "normal/patches.hpp"
+#include "transient/state_bytes.hpp"
 
 namespace creepwork {
 namespace {
@@ -32,28 +30,19 @@ GapNormalOptions fastsim_normal()
     return o;
 }
 
-void check_finite(const char* name, double v)
-{
-    if (!std::isfinite(v)) reject_input(name, v, "must be finite");
-}
-
 } // namespace
 
 TransientFastsim::TransientFastsim(const GridSpec& grid, const ContactInput& in)
-    : nx_(checked_gap_grid(grid).nx), ny_(grid.ny), n_(grid.nx * grid.ny), x0_(grid.x0),
-      y0_(grid.y0), dx_(grid.dx), dy_(grid.dy), normal_(grid, fastsim_normal())
+    : TransientBase(grid), normal_(grid, fastsim_normal())
 {
     if (in.flexibility != FlexibilitySource::kalker_from_material)
         throw Error(ErrorKind::invalid_input,
                     "flexibility = given is invalid for transient FASTSIM on a gap grid: each "
                     "patch's flexibilities come from the material (G, nu) and its size");
+    check_contact(in, static_cast<size_t>(n_), normal_.kernel_isa());
     ContactInput own = in;
     own.xi_x = own.xi_y = own.phi = 0.0;
     own.rolling_direction = 1;
-    validate_gap_input(own, static_cast<size_t>(n_), normal_.kernel_isa());
-    if (!(in.mu > 0.0))
-        reject_input("mu", in.mu, "must be > 0 for transient rolling (without friction "
-                                  "there are no tangential tractions to carry over)");
     gap_.assign(in.gap, in.gap + n_);
     own.gap = gap_.data();
     own.gap_len = gap_.size();
@@ -63,10 +52,7 @@ TransientFastsim::TransientFastsim(const GridSpec& grid, const ContactInput& in)
     normal_.solve(own, false);
     pz_ = normal_.pressure();
     load_ = normal_.force();
-    if (!(*std::max_element(pz_.begin(), pz_.end()) > 0.0))
-        throw Error(ErrorKind::invalid_input,
-                    "the contact carries no load (no element of the gap grid is in contact): "
-                    "transient rolling needs normal_force > 0 or an approach with contact");
+    check_loaded(*std::max_element(pz_.begin(), pz_.end()));
     set_patches(own);
     for (auto* v : {&p0_, &p_, &slip_, &dp_[0], &dp_[1]}) v->assign(n_, Complex(0.0, 0.0));
     state_.assign(n_, 0);
@@ -115,40 +101,7 @@ void TransientFastsim::set_patches(const ContactInput& in)
 void TransientFastsim::start_zero()
 {
     std::fill(p0_.begin(), p0_.end(), Complex(0.0, 0.0));
-    std::fill(creep0_, creep0_ + 3, 0.0);
-    steps_ = 0;
-    trial_valid_ = false;
-    has_solution_ = false;
-}
-
-void TransientFastsim::validate(const TransientStepInput& s, bool steady) const
-{
-    if (!steady) {
-        check_finite("dq", s.dq);
-        if (s.dq < 0.0 || s.dq > dx_ * (1.0 + 1e-12))
-            reject_input("dq", s.dq,
-                         ("must be in [0, dx = " + number_text(dx_) +
-                          " m] (the distance rolled in one step; 0 is a shift)")
-                             .c_str());
-    }
-    for (const auto& v : {std::make_pair("xi_x", s.xi_x), std::make_pair("xi_y", s.xi_y),
-                          std::make_pair("phi", s.phi)})
-        check_finite(v.first, v.second);
-    const double limit = mu_ * load_;
-    const std::string below = "must be below mu N = " + number_text(limit) +
-                              " N in magnitude (at mu N the contact slides: no creepage gives it)";
-    if (s.prescribe_fx) {
-        check_finite("Fx", s.Fx);
-        if (!(std::fabs(s.Fx) < limit)) reject_input("Fx", s.Fx, below.c_str());
-    }
-    if (s.prescribe_fy) {
-        check_finite("Fy", s.Fy);
-        if (!(std::fabs(s.Fy) < limit)) reject_input("Fy", s.Fy, below.c_str());
-    }
-    if (s.prescribe_fx && s.prescribe_fy && std::hypot(s.Fx, s.Fy) >= limit)
-        reject_input("Fx", s.Fx,
-                     ("and Fy together must stay below mu N = " + number_text(limit) + " N")
-                         .c_str());
+    clear_committed();
 }
 
 void TransientFastsim::pass(const double c[3], double dq, bool steady, bool derivative)
@@ -210,7 +163,7 @@ void TransientFastsim::pass(const double c[3], double dq, bool steady, bool deri
 
 const TransientStepResult& TransientFastsim::step(const TransientStepInput& s)
 {
-    validate(s, false);
+    validate(s, false, mu_ * load_);
     trial_valid_ = false;
     has_solution_ = false;
     return solve(s, false);
@@ -218,23 +171,20 @@ const TransientStepResult& TransientFastsim::step(const TransientStepInput& s)
 
 const TransientStepResult& TransientFastsim::start_steady(const TransientStepInput& s)
 {
-    validate(s, true);
+    validate(s, true, mu_ * load_);
     trial_valid_ = false;
     has_solution_ = false;
     solve(s, true);
-    trial_valid_ = false;
     p0_ = p_;
-    std::copy(trial_creep_, trial_creep_ + 3, creep0_);
-    steps_ = 0;
+    commit_steady();
     return result_;
 }
 
 const TransientStepResult& TransientFastsim::solve(const TransientStepInput& s, bool steady)
 {
     const bool rolling = steady || s.dq > 0.0;
-    double c[3] = {s.xi_x, s.xi_y, s.phi};
-    if (s.prescribe_fx) c[0] = rolling ? creep0_[0] : 0.0;
-    if (s.prescribe_fy) c[1] = rolling ? creep0_[1] : 0.0;
+    double c[3];
+    first_creepages(s, rolling, c);
     const int unknowns = (s.prescribe_fx ? 1 : 0) + (s.prescribe_fy ? 1 : 0);
     const double area = dx_ * dy_, ftol = tolerance_ * mu_ * load_;
     // A creepage (or shift) that saturates a step from zero traction: the
@@ -325,10 +275,7 @@ const TransientStepResult& TransientFastsim::solve(const TransientStepInput& s, 
     totals(c);
     result_.newton_steps = passes;
     result_.force_iterations = iterations;
-    trial_valid_ = true;
-    has_solution_ = true;
-    trial_rolling_ = rolling;
-    std::copy(c, c + 3, trial_creep_);
+    hold_trial(c, rolling);
     return result_;
 }
 
@@ -367,89 +314,30 @@ void TransientFastsim::totals(const double c[3])
 
 void TransientFastsim::commit()
 {
-    if (!trial_valid_)
-        throw Error(ErrorKind::invalid_input,
-                    "commit: there is no step to commit (step() first; a trial is "
-                    "committed once, and rewind drops it)");
+    require_trial();
     p0_ = p_;
-    if (trial_rolling_) std::copy(trial_creep_, trial_creep_ + 3, creep0_);
-    ++steps_;
-    trial_valid_ = false;
+    count_commit();
 }
 
-namespace {
-
-template <class T>
-void put(std::vector<unsigned char>& out, const T& v)
-{
-    const unsigned char* p = reinterpret_cast<const unsigned char*>(&v);
-    out.insert(out.end(), p, p + sizeof(T));
-}
-
-template <class T>
-void get(const unsigned char*& p, T& v)
-{
-    std::memcpy(&v, p, sizeof(T));
-    p += sizeof(T);
-}
-
-} // namespace
-
+// The bytes: TransientBase's part (the load and mu identify the contact),
+// then the committed tractions.
 std::vector<unsigned char> TransientFastsim::save() const
 {
-    std::vector<unsigned char> out(kMagic, kMagic + sizeof(kMagic));
-    put(out, static_cast<std::int32_t>(nx_));
-    put(out, static_cast<std::int32_t>(ny_));
-    put(out, load_);
-    put(out, mu_);
-    put(out, static_cast<std::int64_t>(steps_));
-    for (double v : creep0_) put(out, v);
-    for (const Complex& v : p0_) {
-        put(out, v.real());
-        put(out, v.imag());
-    }
+    std::vector<unsigned char> out = save_committed(kMagic, load_, mu_);
+    put_tractions(out, p0_);
     return out;
 }
 
 void TransientFastsim::restore(const unsigned char* bytes, std::size_t n)
 {
-    const std::size_t size = sizeof(kMagic) + 2 * 4 + 2 * 8 + 8 + 3 * 8 + 16 * p0_.size();
-    if (!bytes || n != size || std::memcmp(bytes, kMagic, sizeof(kMagic)) != 0)
-        throw Error(ErrorKind::invalid_input,
-                    "restore: the bytes (" + std::to_string(n) +
-                        ") are not a saved transient FASTSIM state of this grid (" +
-                        std::to_string(size) + " bytes expected)");
-    const unsigned char* p = bytes + sizeof(kMagic);
-    std::int32_t nx = 0, ny = 0;
-    double load = 0.0, mu = 0.0;
-    std::int64_t steps = 0;
-    get(p, nx);
-    get(p, ny);
-    get(p, load);
-    get(p, mu);
-    get(p, steps);
-    if (nx != nx_ || ny != ny_ || load != load_ || mu != mu_)
-        throw Error(ErrorKind::invalid_input,
-                    "restore: the bytes are the state of another contact (grid, load or "
-                    "friction differ)");
-    double creep[3];
-    for (double& v : creep) get(p, v);
-    for (double v : creep) check_finite("restored creepage", v);
+    const std::size_t size = kCommittedBytes + 16 * p0_.size();
+    const Committed c =
+        read_committed(bytes, n, size, kMagic, "transient FASTSIM state", load_, mu_);
+    const unsigned char* p = c.p;
     std::vector<Complex> q(p0_.size());
-    for (Complex& v : q) {
-        double re = 0.0, im = 0.0;
-        get(p, re);
-        get(p, im);
-        if (!std::isfinite(re) || !std::isfinite(im))
-            throw Error(ErrorKind::invalid_input, "restore: the bytes hold a non-finite "
-                                                  "traction");
-        v = Complex(re, im);
-    }
+    get_tractions(p, q);
     p0_ = q;
-    std::copy(creep, creep + 3, creep0_);
-    steps_ = static_cast<long>(steps);
-    trial_valid_ = false;
-    has_solution_ = false;
+    set_committed(c);
 }
 
 void TransientFastsim::copy_work(double* out) const

@@ -36,11 +36,11 @@
 
 #include "contact/params.hpp"
 #include "normal/gap_normal.hpp"
-#include "transient/transient_contact.hpp"
+#include "transient/transient_base.hpp"
 
 namespace creepwork {
 
-class TransientFastsim {
+class TransientFastsim : public TransientBase {
 public:
     using Complex = std::complex<double>;
 
@@ -52,21 +52,9 @@ public:
     const TransientStepResult& start_steady(const TransientStepInput& step);
     const TransientStepResult& step(const TransientStepInput& step);
     void commit();
-    void rewind() { trial_valid_ = false; }
     std::vector<unsigned char> save() const;
     void restore(const unsigned char* bytes, std::size_t n);
 
-    int nx() const { return nx_; }
-    int ny() const { return ny_; }
-    double dx() const { return dx_; }
-    double dy() const { return dy_; }
-    double x0() const { return x0_; }
-    double y0() const { return y0_; }
-    // A step or steady start since the last start or restore.
-    bool has_solution() const { return has_solution_; }
-    long steps_committed() const { return steps_; }
-    bool has_trial() const { return trial_valid_; }
-    const TransientStepResult& last() const { return result_; }
     void copy_traction(double* px, double* py) const;
     void copy_slip(double* sx, double* sy) const;
     void copy_state(int* out) const;
@@ -82,26 +70,19 @@ private:
         double Ls = 0; // a shift's flexibility along x and y (Mindlin's compliance)
     };
     void set_patches(const ContactInput& in);
-    void validate(const TransientStepInput& s, bool steady) const;
     // One pass with creepages (or shift) c: p_, state_, slip_, and with
     // derivative the derivatives of p_ along c[0] and c[1] (dp_[0], dp_[1]).
     void pass(const double c[3], double dq, bool steady, bool derivative);
     const TransientStepResult& solve(const TransientStepInput& s, bool steady);
     void totals(const double c[3]);
 
-    int nx_, ny_, n_;
-    double x0_, y0_, dx_, dy_, mu_ = 0.0, tolerance_ = 0.0, spin_offset_ = 0.0, load_ = 0.0;
+    double mu_ = 0.0, tolerance_ = 0.0, spin_offset_ = 0.0, load_ = 0.0;
     std::vector<double> gap_, pz_;
     GapNormal normal_;
     std::vector<int> patch_of_; // [i + nx j], -1 outside the contact
     std::vector<Patch> patches_;
     std::vector<Complex> p0_, p_, slip_, dp_[2];
     std::vector<signed char> state_;
-    double creep0_[3] = {0.0, 0.0, 0.0};
-    long steps_ = 0;
-    TransientStepResult result_;
-    bool trial_valid_ = false, trial_rolling_ = false, has_solution_ = false;
-    double trial_creep_[3] = {0.0, 0.0, 0.0};
 };
 
 } // namespace creepwork

@@ -39,28 +39,22 @@ public:
         return exact_ ? exact_->step(s) : fastsim_->step(s);
     }
     void commit() { exact_ ? exact_->commit() : fastsim_->commit(); }
-    void rewind() { exact_ ? exact_->rewind() : fastsim_->rewind(); }
+    void rewind() { base().rewind(); }
     std::vector<unsigned char> save() const { return exact_ ? exact_->save() : fastsim_->save(); }
     void restore(const unsigned char* bytes, std::size_t n)
     {
         exact_ ? exact_->restore(bytes, n) : fastsim_->restore(bytes, n);
     }
-    int nx() const { return exact_ ? exact_->nx() : fastsim_->nx(); }
-    int ny() const { return exact_ ? exact_->ny() : fastsim_->ny(); }
-    double dx() const { return exact_ ? exact_->dx() : fastsim_->dx(); }
-    double dy() const { return exact_ ? exact_->dy() : fastsim_->dy(); }
-    double x0() const { return exact_ ? exact_->x0() : fastsim_->x0(); }
-    double y0() const { return exact_ ? exact_->y0() : fastsim_->y0(); }
-    bool has_solution() const
-    {
-        return exact_ ? exact_->has_solution() : fastsim_->has_solution();
-    }
-    long steps_committed() const
-    {
-        return exact_ ? exact_->steps_committed() : fastsim_->steps_committed();
-    }
-    bool has_trial() const { return exact_ ? exact_->has_trial() : fastsim_->has_trial(); }
-    const TransientStepResult& last() const { return exact_ ? exact_->last() : fastsim_->last(); }
+    int nx() const { return base().nx(); }
+    int ny() const { return base().ny(); }
+    double dx() const { return base().dx(); }
+    double dy() const { return base().dy(); }
+    double x0() const { return base().x0(); }
+    double y0() const { return base().y0(); }
+    bool has_solution() const { return base().has_solution(); }
+    long steps_committed() const { return base().steps_committed(); }
+    bool has_trial() const { return base().has_trial(); }
+    const TransientStepResult& last() const { return base().last(); }
     void copy_traction(double* px, double* py) const
     {
         exact_ ? exact_->copy_traction(px, py) : fastsim_->copy_traction(px, py);
@@ -83,6 +77,12 @@ public:
     }
 
 private:
+    // What both models share: the grid and the trial's state.
+    const TransientBase& base() const
+    {
+        return exact_ ? static_cast<const TransientBase&>(*exact_) : *fastsim_;
+    }
+    TransientBase& base() { return exact_ ? static_cast<TransientBase&>(*exact_) : *fastsim_; }
     std::unique_ptr<TransientContact> exact_;
     std::unique_ptr<TransientFastsim> fastsim_;
 };

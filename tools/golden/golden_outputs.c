@@ -1,10 +1,11 @@
 /* Golden outputs: one 64-bit hash per case over every number the public C
  * ABI gives back (totals, each field, states, profiles, patches, Jacobians,
- * batches, accumulators, wear, wheel/rail), for every model, grid kind,
- * solve mode, normal method and load mode. Built against the public header
- * only, so the same source builds against any commit's library: a
- * refactoring that must not change a result bit is checked by running this
- * before and after and comparing the lines (tools/golden/compare.sh).
+ * batches, accumulators, wear, wheel/rail, transient steps and their saved
+ * states), for every model, grid kind, solve mode, normal method and load
+ * mode. Built against the public header only, so the same source builds
+ * against any commit's library: a refactoring that must not change a result
+ * bit is checked by running this before and after and comparing the lines
+ * (tools/golden/compare.sh).
  * The kernel ISA is the machine's (the kernels' bitwise equality across
  * ISAs is test_core_kernels's job).
  *   golden_outputs <profile dir>   (tests/wheelrail/data)
@@ -393,6 +394,150 @@ static void gap_cases(void)
     }
 }
 
+/* One transient step's (or steady start's) status, totals, fields and
+ * states on n elements, and the step Jacobian's status and values (the
+ * exact model's; FASTSIM's is an error, its status hashed). */
+static void hash_transient(hash* h, cw_transient* t, int status, const cw_transient_result* r,
+                           size_t n)
+{
+    hi(h, status);
+    if (status != CW_OK) return;
+    const double d[] = {r->xi_x, r->xi_y, r->phi, r->Fx, r->Fy, r->Mz, r->W_step, r->W_slip, r->residual};
+    hds(h, d, sizeof d / sizeof d[0]);
+    const int i[] = {r->n_contact, r->n_adhesion, r->n_slip, r->iterations, r->force_iterations};
+    his(h, i, sizeof i / sizeof i[0]);
+    hi(h, (long)r->steps_committed);
+    static const int fields[] = {CW_FIELD_X, CW_FIELD_Y, CW_FIELD_PZ, CW_FIELD_PX, CW_FIELD_PY,
+                                 CW_FIELD_SX, CW_FIELD_SY, CW_FIELD_WORK_CONSISTENT};
+    double* f = malloc(n * sizeof *f);
+    int* st = malloc(n * sizeof *st);
+    for (size_t k = 0; k < sizeof fields / sizeof fields[0]; ++k) {
+        hi(h, cw_transient_get_field(t, fields[k], f, n));
+        hds(h, f, n);
+    }
+    hi(h, cw_transient_get_state(t, st, n));
+    his(h, st, n);
+    double J[CW_TRANSIENT_JACOBIAN_LEN] = {0};
+    hi(h, cw_transient_jacobian(t, J, CW_TRANSIENT_JACOBIAN_LEN));
+    hds(h, J, CW_TRANSIENT_JACOBIAN_LEN);
+    free(f);
+    free(st);
+}
+
+/* The saved state's words. */
+static void hash_saved(hash* h, const cw_transient* t, uint64_t** words, size_t* len)
+{
+    hi(h, cw_transient_state_size(t, len));
+    *words = malloc(*len * sizeof **words);
+    hi(h, cw_transient_save(t, *words, *len));
+    hash_bytes(h, *words, *len * sizeof **words), ++h->n;
+}
+
+/* One transient handle through a run: a steady start, rolling steps (whole
+ * and part elements), prescribed Fx and both forces, a shift, a rewound
+ * trial repeated, save, more steps, restore and a step again, wear over the
+ * committed steps; world-fixed too where the model has it. */
+static void transient_run(const char* name, const cw_grid* g, const cw_params* p, size_t n,
+                          int coordinates)
+{
+    cw_transient* t = NULL;
+    char msg[512];
+    hash h = begin();
+    const int created = cw_transient_create(g, p, &t, msg, sizeof msg);
+    hi(&h, created);
+    if (created != CW_OK) {
+        end(name, &h);
+        return;
+    }
+    hi(&h, cw_transient_set_coordinates(t, coordinates));
+    double* x = malloc(n * sizeof *x);
+    hi(&h, cw_transient_get_field(t, CW_FIELD_X, x, n)); /* none yet */
+    cw_transient_input in;
+    cw_transient_result r;
+    cw_transient_input_init(&in);
+    cw_transient_result_init(&r);
+    in.xi_x = p->xi_x, in.xi_y = p->xi_y, in.phi = p->phi;
+    int status = cw_transient_start_steady(t, &in, &r);
+    hash_transient(&h, t, status, &r, n);
+    if (status == CW_OK && cw_transient_get_field(t, CW_FIELD_X, x, n) == CW_OK) {
+        const double dx = x[1] - x[0];
+        const double fn = p->normal_force * p->mu;
+        cw_wear_params wp;
+        cw_wear_params_init(&wp);
+        const struct { double dq, xi_x, xi_y, phi; int prescribe; double Fx, Fy; } steps[] = {
+            {1.0, 1.2 * p->xi_x, p->xi_y, p->phi, CW_PRESCRIBE_CREEPAGES, 0, 0},
+            {0.5, 1.5 * p->xi_x, 0.5 * p->xi_y, -p->phi, CW_PRESCRIBE_CREEPAGES, 0, 0},
+            {1.0, 0.0, p->xi_y, p->phi, CW_PRESCRIBE_FX, 0.25 * fn, 0},
+            {0.75, 0.0, 0.0, 0.5 * p->phi, CW_PRESCRIBE_FORCES, -0.3 * fn, 0.2 * fn},
+            {0.0, 2e-7, -1e-7, 1e-5, CW_PRESCRIBE_CREEPAGES, 0, 0},
+            {1.0, -p->xi_x, 2.0 * p->xi_y, p->phi, CW_PRESCRIBE_CREEPAGES, 0, 0},
+        };
+        uint64_t* saved = NULL;
+        size_t len = 0;
+        for (size_t k = 0; k < sizeof steps / sizeof steps[0]; ++k) {
+            in.dq = steps[k].dq * dx, in.xi_x = steps[k].xi_x, in.xi_y = steps[k].xi_y;
+            in.phi = steps[k].phi, in.prescribe = steps[k].prescribe;
+            in.Fx = steps[k].Fx, in.Fy = steps[k].Fy;
+            hash_transient(&h, t, cw_transient_step(t, &in, &r), &r, n);
+            if (k == 1) { /* a trial dropped and repeated */
+                hi(&h, cw_transient_rewind(t));
+                hash_transient(&h, t, cw_transient_step(t, &in, &r), &r, n);
+            }
+            hi(&h, cw_transient_commit(t));
+            double mass = 0.0;
+            hi(&h, cw_transient_add_wear(t, &wp, &mass)), hd(&h, mass);
+            if (k == 2) hash_saved(&h, t, &saved, &len);
+        }
+        hi(&h, cw_transient_restore(t, saved, len));
+        in.dq = dx, in.xi_x = p->xi_x, in.xi_y = p->xi_y, in.phi = p->phi;
+        in.prescribe = CW_PRESCRIBE_CREEPAGES;
+        hash_transient(&h, t, cw_transient_step(t, &in, &r), &r, n);
+        double mass = 0.0;
+        hi(&h, cw_transient_get_wear(t, x, n, &mass)), hds(&h, x, n), hd(&h, mass);
+        free(saved);
+        hash_saved(&h, t, &saved, &len);
+        free(saved);
+    }
+    free(x);
+    cw_transient_destroy(t);
+    end(name, &h);
+}
+
+/* Transient rolling: both models on an ellipse's uniform grid and on a gap
+ * grid, the exact model world-fixed too. */
+static void transient_cases(void)
+{
+    enum { NX = 24, NY = 20 };
+    const double dx = 0.6e-3, dy = 0.6e-3, x0 = -6.9e-3, y0 = -5.7e-3;
+    static double h[NX * NY];
+    for (int j = 0; j < NY; ++j)
+        for (int i = 0; i < NX; ++i) {
+            const double x = x0 + i * dx, y = y0 + j * dy;
+            h[i + NX * j] = x * x / (2 * 0.46) + y * y / (2 * 0.3);
+        }
+    cw_grid gap;
+    cw_grid_init(&gap);
+    gap.kind = CW_GRID_GAP, gap.nx = NX, gap.ny = NY, gap.x0 = x0, gap.y0 = y0, gap.dx = dx, gap.dy = dy;
+    const cw_grid uniform = grid_of(CW_GRID_UNIFORM, 16, 14, 1.1);
+    char name[160];
+    for (int model = 0; model < 2; ++model)
+        for (int coordinates = CW_COORDINATES_CONTACT; coordinates <= CW_COORDINATES_WORLD; ++coordinates) {
+            if (!model && coordinates == CW_COORDINATES_WORLD) continue; /* the exact model's */
+            cw_params p = base_params(&creepages[0]);
+            p.model = model ? CW_MODEL_EXACT : CW_MODEL_FASTSIM;
+            const char* m = model ? "exact" : "fastsim";
+            const char* c = coordinates ? "world" : "contact";
+            snprintf(name, sizeof name, "transient/uniform16x14/%s/%s", m, c);
+            transient_run(name, &uniform, &p, 16 * 14, coordinates);
+            p.gap = h, p.gap_len = NX * NY, p.normal_force = 60e3;
+            snprintf(name, sizeof name, "transient/gap/%s/%s", m, c);
+            transient_run(name, &gap, &p, NX * NY, coordinates);
+            p.normal_method = CW_NORMAL_SEMI_HERTZ, p.spin_offset = 0.3;
+            snprintf(name, sizeof name, "transient/gap/%s/%s/semi_hertz", m, c);
+            transient_run(name, &gap, &p, NX * NY, coordinates);
+        }
+}
+
 static void wheelrail_cases(const char* dir)
 {
     char rail[512], wheel[512], msg[512];
@@ -523,6 +668,7 @@ int main(int argc, char** argv)
         wear_case(name, &g, &p);
     }
     gap_cases();
+    transient_cases();
     wheelrail_cases(argv[1]);
     return 0;
 }
