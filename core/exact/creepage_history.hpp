@@ -16,9 +16,8 @@
 // the start is the secant step plus the last secant step's error (the
 // solution minus what was predicted for it); once the newest five have them,
 // plus the error extrapolated linearly from the last two, 2 e_1 - e_2
-// (measured on the benchmark's drift at 20 x 20: 18.1 -> 17.2 FFT products
-// a warm step). It is left out as soon as an element changes state: across
-// a change the error jumps.
+// (fewer FFT products a warm step, doc/dev/decisions.md). It is left out as
+// soon as an element changes state: across a change the error jumps.
 #pragma once
 
 #include <complex>
