@@ -13,7 +13,8 @@
 //             step (xi_x, xi_y, phi each x (1 + 0.1 sin(2 pi k/100 + offset)))
 //             with the gap fixed (the normal solution is kept), and with the
 //             gap drifting too (h x (1 + 0.01 sin(2 pi k/100)): the normal
-//             problem re-solved from the last pressure)
+//             problem re-solved from the last pressure); FFT products per step
+//             of each
 //  semi-Hertz the fast normal method alone, N prescribed (per call)
 // and a second table, FASTSIM on the gap grid with the semi-Hertzian normal
 // method (the fast model, gap_fastsim_model.hpp): per solve on one solver,
@@ -229,11 +230,12 @@ int main(int argc, char** argv)
     if (contact_gap_init() != 0) return 1;
 #endif
     std::printf("\n\n| shape | cells | contact elements | patches | cold ms | warm ms (gap fixed) | "
-                "warm ms (gap drifting) | semi-Hertz normal us |");
+                "warm ms (gap drifting) | warm FFT products/step (fixed, drifting) | "
+                "semi-Hertz normal us |");
 #ifdef CW_BENCH_CONTACT
     std::printf(" CONTACT ms | CONTACT / cold | CONTACT / warm (gap drifting) |");
 #endif
-    std::printf("\n|---|---:|---:|---:|---:|---:|---:|---:|");
+    std::printf("\n|---|---:|---:|---:|---:|---:|---:|---:|---:|");
 #ifdef CW_BENCH_CONTACT
     std::printf("---:|---:|---:|");
 #endif
@@ -269,6 +271,7 @@ int main(int argc, char** argv)
         // Warm: the gap fixed, then drifting; best of three runs.
         const int steps = quick ? 20 : 100;
         double warm_fixed = 1e300, warm_moving = 1e300;
+        double products[2] = {0, 0}; // FFT products per warm step: gap fixed, drifting
         std::vector<double> h = s.h;
         for (int run = 0; run < (quick ? 1 : 3); ++run)
             for (int moving = 0; moving < 2; ++moving) {
@@ -278,6 +281,7 @@ int main(int argc, char** argv)
                 w.gap = h.data();
                 h = s.h;
                 solver.solve(w, cw::SolveMode::full);
+                long count = 0;
                 const double t0 = thread_seconds();
                 for (int k = 1; k <= steps; ++k) {
                     const double a = 2.0 * 3.14159265358979323846 * k / 100.0;
@@ -287,8 +291,10 @@ int main(int argc, char** argv)
                     if (moving)
                         for (size_t q = 0; q < h.size(); ++q) h[q] = s.h[q] * (1.0 + 0.01 * std::sin(a));
                     solver.solve(w, cw::SolveMode::full);
+                    count += solver.gap_model()->info().products;
                 }
                 const double per = (thread_seconds() - t0) / steps;
+                products[moving] = double(count) / steps;
                 (moving ? warm_moving : warm_fixed) = std::min(moving ? warm_moving : warm_fixed, per);
             }
         // The semi-Hertzian method alone.
@@ -303,10 +309,10 @@ int main(int argc, char** argv)
                          s.approach_given ? s.approach : s.normal_force, p.data());
             fast = std::min(fast, (thread_seconds() - t0) / reps);
         }
-        std::printf("| %s | %d x %d | %d | %d | %s | %s | %s | %s |", id.c_str(), s.nx, s.ny,
-                    t.n_contact, t.n_patches, sig3(cold * 1e3).c_str(),
-                    sig3(warm_fixed * 1e3).c_str(), sig3(warm_moving * 1e3).c_str(),
-                    sig3(fast * 1e6).c_str());
+        std::printf("| %s | %d x %d | %d | %d | %s | %s | %s | %.1f, %.1f | %s |", id.c_str(), s.nx,
+                    s.ny, t.n_contact, t.n_patches, sig3(cold * 1e3).c_str(),
+                    sig3(warm_fixed * 1e3).c_str(), sig3(warm_moving * 1e3).c_str(), products[0],
+                    products[1], sig3(fast * 1e6).c_str());
 #ifdef CW_BENCH_CONTACT
         contact_gap_case cc{};
         cc.nx = s.nx;

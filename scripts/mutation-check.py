@@ -56,6 +56,11 @@ COLD = [
     "test_core_exact_model", "test_capi_exact", "test_robustness_determinism", "test_capi_batch",
     "test_capi_threads",
 ]
+# The warm start's prediction: the history's polynomial paths, a warm drift's
+# products on the ellipse and on a gap patch, the warm = cold checks.
+WARM = [
+    "test_core_exact_parts", "test_core_exact_model", "test_nonhertz_model", "test_capi_exact",
+]
 # The calibrated model: its linear limit (Kalker's coefficients), accuracy
 # against the exact model's continuum estimate, its Jacobian against
 # central differences, the C ABI and the CLI.
@@ -179,6 +184,17 @@ MUTANTS = [
     dict(id="exact-cold-reuse", what="exact: a cold solve reuses a warm-started normal solution",
          file="core/exact/exact_model.cpp", old="(warm || L.normal_cold))",
          new="(warm || true))", tests=COLD),
+    # The warm start's prediction (core/exact/creepage_history.cpp): the secant
+    # step's error extrapolated along a drift. Caught by the history's own
+    # polynomial paths and by the products of a warm drift's steps.
+    dict(id="warm-error-constant", what="exact: the warm start adds the last error, not its "
+         "linear extrapolation", file="core/exact/creepage_history.cpp",
+         old="            v += 2.0 * error_[k] - error_before_[k];",
+         new="            v += error_[k];", tests=WARM),
+    dict(id="warm-error-not-kept", what="exact: the warm start extrapolates from an error never "
+         "kept (zero)", file="core/exact/creepage_history.cpp",
+         old="    error_before_.swap(error_);", new="    error_before_.swap(error_before_);",
+         tests=WARM),
     # The calibrated model.
     dict(id="calibrated-moment-flexibility", what="calibrated: spin x-slip on L3/L_M, not L_M/L3",
          file="core/calibrated/calibrated_model.cpp", old="        s.kin.cx *= s.L3 / L_M;",

@@ -10,6 +10,7 @@ void CreepageHistory::resize(std::size_t n)
     for (auto& q : q_) q.assign(n, Complex(0.0, 0.0));
     predicted_.assign(n, Complex(0.0, 0.0));
     error_.assign(n, Complex(0.0, 0.0));
+    error_before_.assign(n, Complex(0.0, 0.0));
     state_.assign(n, 0);
     clear();
 }
@@ -56,13 +57,18 @@ bool CreepageHistory::predict(const double key[kKey], const double c[3], std::ve
     const std::vector<Complex>& q0 = q_[0];
     // The error of the last secant step when it and this one see the same
     // states: the newest four solutions (this step's three and the one
-    // before them) share them.
+    // before them) share them. With the newest five, the last two errors
+    // share them too, and the error is extrapolated linearly from them.
     const bool correct = m == 2 && error_valid_ && same_states_ >= 4;
+    const bool linear = correct && error_before_valid_ && same_states_ >= 5;
     for (size_t k = 0; k < q.size(); ++k) {
         Complex v = q0[k];
         for (int i = 0; i < m; ++i) v += g[i] * (q_[i + 1][k] - q0[k]);
         predicted_[k] = v;
-        if (correct) v += error_[k];
+        if (linear)
+            v += 2.0 * error_[k] - error_before_[k];
+        else if (correct)
+            v += error_[k];
         q[k] = scale == 1.0 ? v : v * scale;
     }
     predicted_valid_ = m == 2;
@@ -94,6 +100,8 @@ void CreepageHistory::remember(const double key[kKey], const double c[3],
     else
         for (size_t k = 0; k < n; ++k) q_[0][k] = scale * q[k];
     for (int k = 0; k < 3; ++k) c_[0][k] = c[k];
+    error_before_.swap(error_);
+    error_before_valid_ = error_valid_;
     error_valid_ = predicted_valid_;
     if (error_valid_)
         for (size_t k = 0; k < n; ++k) error_[k] = q_[0][k] - predicted_[k];

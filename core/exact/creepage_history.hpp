@@ -11,11 +11,13 @@
 // spin offset): a different key drops it.
 //
 // The secant step's error is smooth along a drift while no element changes
-// between slip and adhesion, so the last one is added too: with the element
-// states given to remember(), once the newest four solutions have the same
-// states, the start is the secant step plus the last secant step's error
-// (the solution minus what was predicted for it). It is left out as soon as
-// an element changes state: across a change the error jumps.
+// between slip and adhesion, so it is predicted too: with the element states
+// given to remember(), once the newest four solutions have the same states,
+// the start is the secant step plus the last secant step's error (the
+// solution minus what was predicted for it); once the newest five have them,
+// plus the error extrapolated linearly from the last two, 2 e_1 - e_2
+// (fewer FFT products a warm step, doc/dev/decisions.md). It is left out as
+// soon as an element changes state: across a change the error jumps.
 #pragma once
 
 #include <complex>
@@ -35,7 +37,7 @@ public:
     {
         count_ = 0;
         same_states_ = 0;
-        predicted_valid_ = error_valid_ = false;
+        predicted_valid_ = error_valid_ = error_before_valid_ = false;
     }
     // With a history of this key: the prediction for creepages c into q,
     // times scale (returns true; with one solution it is that solution).
@@ -52,11 +54,12 @@ private:
     bool same(const double key[kKey]) const;
 
     std::vector<Complex> q_[3];
-    // The last secant step (without correction) and its error, the states of
-    // the newest solution, and how many of the newest solutions share them.
-    std::vector<Complex> predicted_, error_;
+    // The last secant step (without correction), its error and the one
+    // before, the states of the newest solution, and how many of the newest
+    // solutions share them.
+    std::vector<Complex> predicted_, error_, error_before_;
     std::vector<signed char> state_;
-    bool predicted_valid_ = false, error_valid_ = false;
+    bool predicted_valid_ = false, error_valid_ = false, error_before_valid_ = false;
     int same_states_ = 0;
     double c_[3][3] = {};
     double key_[kKey] = {};

@@ -239,6 +239,43 @@ void history_predicts_a_drift(void**)
     }
 }
 
+// The same on a quartic q = a + ... + d t^3 + e t^4: quadratic
+// extrapolation's error is then E(t) = q(t) - 3 q(t - 1) + 3 q(t - 2) -
+// q(t - 3) = 6 d + (24 t - 36) e, linear in t. The last error added leaves E(t) - E(t - 1) = 24 e; once the
+// five newest solutions share their states the error is extrapolated
+// linearly from the last two, 2 E(t - 1) - E(t - 2) = E(t), and the
+// prediction is exact.
+void history_extrapolates_the_error(void**)
+{
+    const C a(0.3, -0.1), b(0.02, 0.01), c2(-0.004, 0.003), d(5e-4, -2e-4), e(2e-5, 3e-5);
+    auto q_of = [&](double t) { return a + t * (b + t * (c2 + t * (d + t * e))); };
+    const double key[cw::CreepageHistory::kKey] = {1.0, 0.28, 1.15, 1.0};
+    for (int change : {-1, 5}) { // the step at which the element changes state (-1: never)
+        cw::CreepageHistory h;
+        h.resize(1);
+        std::vector<C> q(1);
+        signed char state = 2;
+        for (int t = 0; t <= 14; ++t) {
+            const double c[3] = {double(t), double(t) * t, 0.0};
+            if (t > 0) {
+                assert_true(h.predict(key, c, q));
+                const bool same4 = change < 0 || t <= change || t >= change + 4;
+                const bool same5 = change < 0 || t <= change || t >= change + 5;
+                const double err = std::abs(q[0] - q_of(t));
+                if (t >= 5 && same5)
+                    assert_close(err, 0.0, 0.0, 1e-12);
+                else if (t >= 4 && same4)
+                    assert_close(err, 24.0 * std::abs(e), 1e-9, 0.0);
+                else if (t >= 3)
+                    assert_close(err, std::abs(6.0 * d + (24.0 * t - 36.0) * e), 1e-9, 0.0);
+            }
+            if (t == change) state = 1;
+            q[0] = q_of(t);
+            h.remember(key, c, q, 1.0, &state);
+        }
+    }
+}
+
 int main()
 {
     const struct CMUnitTest tests[] = {
@@ -247,6 +284,7 @@ int main()
         cmocka_unit_test(products_match_direct_sums),
         cmocka_unit_test(local_friction_solves_coulomb),
         cmocka_unit_test(history_predicts_a_drift),
+        cmocka_unit_test(history_extrapolates_the_error),
     };
     return cmocka_run_group_tests(tests, nullptr, nullptr);
 }
