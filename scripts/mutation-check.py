@@ -912,8 +912,8 @@ MUTANTS += [
          tests=EXACT_LAW, require=EXACT_LAW),
     dict(id="exact-law-slip-unit", what="the law's argument the normalised slip times V, without "
          "the slip's unit", file="core/exact/exact_law.hpp",
-         old="        const LocalLaw local{law_, law_.coefficient(0.0), V_ * slip_scale};",
-         new="        const LocalLaw local{law_, law_.coefficient(0.0), V_};",
+         old="        LocalLaw local{law_, law_.coefficient(0.0), V_ * slip_scale, FrictionMemory{}, 0.0, 0.0};",
+         new="        LocalLaw local{law_, law_.coefficient(0.0), V_, FrictionMemory{}, 0.0, 0.0};",
          tests=EXACT_LAW, require=EXACT_LAW),
 ]
 # The exact models' law through the doors: mu_min, mu_max against the law

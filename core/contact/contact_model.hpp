@@ -57,6 +57,10 @@ public:
     // it before a solve of an input without a law, so that a law set for
     // one call does not stay with a model that serves both.
     virtual void clear_law() {}
+    // Friction memory under a law of the slip speed for the next solves: the
+    // characteristic distance d_c [m] (0: none) and s0 [m/s], validated.
+    // False from a model without it (the solver then refuses d_c > 0).
+    virtual bool set_friction_memory(double /*distance*/, double /*s0*/) { return false; }
     // The smallest and largest friction coefficient of the last solve over
     // its slipping elements, for a model under a law of the slip speed;
     // false for a model that holds one mu.

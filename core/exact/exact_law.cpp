@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "contact/contact_input.hpp"
+#include "contact/error.hpp"
 #include "contact/friction_law.hpp"
 
 namespace creepwork {
@@ -31,6 +32,22 @@ double ExactLaw::coefficient(const ContactInput& in) const
 double ExactLaw::traction_scale(const ContactInput& in, double pressure) const
 {
     return active_ ? traction_bound(law_, pressure, 0.0) : traction_bound(friction_law(in), pressure);
+}
+
+void ExactLaw::set_local_memory(LocalLaw& local, double dx) const
+{
+    local.memory = memory_;
+    local.dt = dx / V_;
+    local.mu_prev = static_friction(law_);
+}
+
+void ExactLaw::refuse_jacobian_under_memory(const std::string& model) const
+{
+    if (memory_active())
+        throw Error(ErrorKind::invalid_input,
+                    "memory_distance: " + model +
+                        " with friction memory has no Jacobian (solve without one, or set "
+                        "memory_distance = 0)");
 }
 
 void ExactLaw::range(const SteadyRolling& fine, TangentialInfo& info) const

@@ -67,10 +67,16 @@ SteadyRolling::SteadyRolling(int nx, int ny, int krylov_dimension)
 void SteadyRolling::set_law(const LocalLaw* law)
 {
     law_active_ = law != nullptr;
+    memory_active_ = law && law->memory.distance > 0.0;
     if (!law) return;
     law_ = *law;
     slip_info_.reserve(capacity_);
     slip_info_.resize(static_cast<size_t>(n_));
+    if (!memory_active_) return;
+    for (auto* v : {&mu_prev_, &mu_}) {
+        v->reserve(capacity_);
+        v->resize(static_cast<size_t>(n_));
+    }
 }
 
 void SteadyRolling::set_size(int nx, int ny)
@@ -84,6 +90,10 @@ void SteadyRolling::set_size(int nx, int ny)
     jac_.resize(n);
     state_.resize(n);
     if (law_active_) slip_info_.resize(n);
+    if (memory_active_) {
+        mu_prev_.resize(n);
+        mu_.resize(n);
+    }
 }
 
 void SteadyRolling::project(std::vector<Complex>& q) const
@@ -130,6 +140,7 @@ void SteadyRolling::sweep(GridConvolution& conv, const std::vector<Complex>& q,
             bool slips;
             if (law_active_) {
                 ElementSlip& e = slip_info_[k];
+                if (memory_active_) law_.mu_prev = mu_prev_[k];
                 slips = solve_local_friction(law_, c, b0x_, b0y_, g_[k], qk, jac_[k], e);
                 friction_iterations_ += e.iterations;
             } else {
@@ -259,8 +270,8 @@ double SteadyRolling::residual_norm(const std::vector<Complex>& q, const std::ve
     return std::sqrt(sum);
 }
 
-SteadyRollingInfo SteadyRolling::solve(GridConvolution& conv, double tolerance, int max_steps,
-                                       bool warm)
+SteadyRollingInfo SteadyRolling::newton(GridConvolution& conv, double tolerance, int max_steps,
+                                        bool warm)
 {
     SteadyRollingInfo info;
     products_ = 0;

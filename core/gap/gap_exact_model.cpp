@@ -329,7 +329,7 @@ SolveTotals GapExactModel::solve(const ContactInput& in, SolveMode mode)
     label_patches(t);
     set_box(normal_.half_space(in.nu));
     set_normalised_creepages(in);
-    law_.apply(levels_, s.slip_scale);
+    law_.apply(levels_, s.slip_scale, [](const Level& L) { return L.dx; });
 
     Level& fine = *levels_[0];
     std::vector<double>& g = fine.tangential.bound();
