@@ -5,8 +5,10 @@
  * law at every element in forces mode, at the global slip speed in full
  * mode), CONTACT's tractcurv series 4 at 2 % (tests/data/
  * contact_tractcurv.csv: Fx/(mu_s N) = -0.8444) is met, the exact model
- * with the law gives the C ABI's bits with every output, and every bad
- * friction input is refused naming its option.
+ * with the law gives the C ABI's bits with every output, with friction
+ * memory too (--memory-distance, --memory-s0: CONTACT's MEMDST 3 um, MEM_S0
+ * 1 mm/s, tests/data/contact_tractcurv_memory.csv), and every bad friction
+ * input is refused naming its option.
  *
  * usage: test_cli_friction <creepwork binary> <scratch dir> [cmocka filter] */
 #include <algorithm>
@@ -129,6 +131,36 @@ void exact_law_json_matches_library(void**)
     assert_close(sum, lib.W_macro, 1e-9, 0.0);
 }
 
+// The exact model with friction memory: --memory-distance and --memory-s0
+// reach it; its JSON equals the C ABI's solve of the same cw_params bit for
+// bit, and the row xi = 4e-3 meets CONTACT's printed Fx/(mu_s N) = -0.9887
+// to its digits; --jacobian is refused naming --memory-distance.
+void exact_memory_json_matches_library(void**)
+{
+    cw_params p = tractcurv(4e-3);
+    p.model = CW_MODEL_EXACT;
+    p.exact_load = 0;
+    p.friction_law = CW_FRICTION_EXPONENTIAL;
+    p.mu = 0.14;
+    p.mu_e1 = 0.19;
+    p.s_h1 = 1.25;
+    p.memory_distance = 3e-6;
+    p.memory_s0 = 1e-3;
+    const cw_result lib = library_solve(tractcurv_grid(), p, CW_SOLVE_FORCES);
+    std::vector<std::string> args = {
+        "solve", "--format", "json", "--a", "6.304e-3", "--b", "12.61e-3", "--N", "106700",
+        "--grid", "uniform", "--nx", "48", "--ny", "44", "--box-scale", "1.1", "--V", "10",
+        "--G", "82e9", "--nu", "0.28", "--model", "exact", "--xi-x", "4e-3", "--friction-law",
+        "exponential", "--mu", "0.14", "--mu-e1", "0.19", "--s-h1", "1.25", "--memory-distance",
+        "3e-6", "--memory-s0", "1e-3"};
+    expect_library_bits(parse_or_fail(cli_ok(args).out), lib);
+    assert_close(lib.Fx / (0.33 * 106700), -0.9887, 0.0, 0.5e-4);
+    args.push_back("--jacobian");
+    std::string shown = "creepwork";
+    for (const std::string& a : args) shown += " " + a;
+    expect_refusal(cli(args), 2, "--memory-distance", shown);
+}
+
 void bad_friction_inputs_are_named(void**)
 {
     const std::vector<std::string> law = {"--friction-law", "exponential", "--mu-e1", "0.2",
@@ -178,6 +210,7 @@ int main(int argc, char** argv)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(friction_json_matches_library),
         cmocka_unit_test(exact_law_json_matches_library),
+        cmocka_unit_test(exact_memory_json_matches_library),
         cmocka_unit_test(bad_friction_inputs_are_named),
     };
     return cw_run_tests(tests, g_tools.test);
