@@ -916,6 +916,22 @@ MUTANTS += [
          new="        LocalLaw local{law_, law_.coefficient(0.0), V_, FrictionMemory{}, 0.0, 0.0};",
          tests=EXACT_LAW, require=EXACT_LAW),
 ]
+# Friction memory in the exact models (core/exact/steady_memory.cpp):
+# CONTACT's rows with MEMDST 3 um, the recurrence read back from the fields
+# (test_core_exact_memory), and CONTACT's rows through the C ABI on both
+# grids (test_capi_exact_law).
+EXACT_MEMORY = ["test_core_exact_memory", "test_capi_exact_law"]
+MUTANTS += [
+    dict(id="exact-memory-leading-edge", what="memory starts each row from mu = 0, not the "
+         "static coefficient", file="core/exact/steady_memory.cpp",
+         old="        double ahead = mu_static;", new="        double ahead = 0.0;",
+         tests=EXACT_MEMORY, require=EXACT_MEMORY),
+    dict(id="exact-memory-slip-speed", what="the memory pass takes every element as adhering "
+         "(theta at s0)", file="core/exact/steady_memory.cpp",
+         old="            const double sigma = state_[k] == 2 ? std::abs(s_[k]) : 0.0;",
+         new="            const double sigma = 0.0;",
+         tests=EXACT_MEMORY, require=EXACT_MEMORY),
+]
 # The exact models' law through the doors: mu_min, mu_max against the law
 # at the exported slip speeds, and a Coulomb solve after a law's on one
 # handle against a fresh handle's (C ABI, Python; the CLI, one solve per
