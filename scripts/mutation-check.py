@@ -932,6 +932,21 @@ MUTANTS += [
          new="            const double sigma = 0.0;",
          tests=EXACT_MEMORY, require=EXACT_MEMORY),
 ]
+# The exact models' Jacobian under memory (the chain along each row in the
+# tangents): central differences of the solver (test_core_exact_law_jacobian)
+# and through the C ABI on both grids (test_capi_exact_law).
+EXACT_MEMORY_JACOBIAN = ["test_core_exact_law_jacobian", "test_capi_exact_law"]
+MUTANTS += [
+    dict(id="exact-memory-chain-bound", what="the tangents drop the bound's change with the "
+         "coefficient ahead", file="core/exact/steady_memory.cpp",
+         old="    d += slip_info_[k].u * (l.bound * dmu);", new="",
+         tests=EXACT_MEMORY_JACOBIAN, require=EXACT_MEMORY_JACOBIAN),
+    dict(id="exact-memory-chain-theta", what="the chain forgets the coefficient ahead (theta)",
+         file="core/exact/steady_memory.cpp",
+         old="    dmu = l.theta * dmu + l.dmu_dsigma * (dsigma + (speed ? l.sigma : 0.0));",
+         new="    dmu = l.dmu_dsigma * (dsigma + (speed ? l.sigma : 0.0));",
+         tests=EXACT_MEMORY_JACOBIAN, require=EXACT_MEMORY_JACOBIAN),
+]
 # The exact models' law through the doors: mu_min, mu_max against the law
 # at the exported slip speeds, and a Coulomb solve after a law's on one
 # handle against a fresh handle's (C ABI, Python; the CLI, one solve per

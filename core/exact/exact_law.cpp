@@ -41,15 +41,6 @@ void ExactLaw::set_local_memory(LocalLaw& local, double dx) const
     local.mu_prev = static_friction(law_);
 }
 
-void ExactLaw::refuse_jacobian_under_memory(const std::string& model) const
-{
-    if (memory_active())
-        throw Error(ErrorKind::invalid_input,
-                    "memory_distance: " + model +
-                        " with friction memory has no Jacobian (solve without one, or set "
-                        "memory_distance = 0)");
-}
-
 void ExactLaw::range(const SteadyRolling& fine, TangentialInfo& info) const
 {
     const double mu0 = law_.coefficient(0.0);

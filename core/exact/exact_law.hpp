@@ -43,9 +43,7 @@ public:
         return !same;
     }
     bool memory_active() const { return active_ && memory_.distance > 0.0; }
-    // Throws Error(invalid_input) naming memory_distance when memory is
-    // active: the exact models' Jacobians do not hold it.
-    void refuse_jacobian_under_memory(const std::string& model) const;
+
     // Under a law, info's range of mu (diagnose) into mu_min, mu_max; false
     // under Coulomb's law (ContactModel::friction_range).
     bool friction_range(const TangentialInfo& info, double& mu_min, double& mu_max) const

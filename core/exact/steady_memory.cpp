@@ -46,6 +46,37 @@ double SteadyRolling::memory_pass()
     return change / mu_static;
 }
 
+void SteadyRolling::link_memory(int k, Complex c, Complex qk)
+{
+    // The element's slip s = c + B0 q (local_friction.hpp) at its solution.
+    const Complex s(c.real() + b0x_ * qk.real(), c.imag() + b0y_ * qk.imag());
+    const double sigma = std::abs(s);
+    const double d_c = law_.memory.distance;
+    MemoryLink& l = links_[k];
+    l.theta = d_c / (d_c + law_.dt * std::max(law_.kappa * sigma, law_.memory.s0));
+    l.sigma = sigma;
+    l.e = sigma > 0.0 ? s / sigma : Complex(0.0, 0.0);
+    l.dmu_dsigma = law_.mu_ref * law_.value(sigma).dmu_ds;
+    l.bound = g_[k] * l.theta / law_.mu_ref;
+}
+
+void SteadyRolling::memory_link(int k, double cx, double cy, Complex& d, double& dmu,
+                                bool speed) const
+{
+    // mu_k = theta mu_ahead + (1 - theta) mu_s: at rest (adhesion) theta0
+    // alone; in slip the bound g mu_k / mu_ref moves q by u per unit (u of
+    // local_friction.hpp), and mu_k moves with sigma = |c + B0 q| too.
+    if (state_[k] != 2) {
+        dmu *= theta0_;
+        return;
+    }
+    const MemoryLink& l = links_[k];
+    d += slip_info_[k].u * (l.bound * dmu);
+    const double dsigma =
+        l.e.real() * (cx + b0x_ * d.real()) + l.e.imag() * (cy + b0y_ * d.imag());
+    dmu = l.theta * dmu + l.dmu_dsigma * (dsigma + (speed ? l.sigma : 0.0));
+}
+
 SteadyRollingInfo SteadyRolling::solve_with_memory(GridConvolution& conv, double tolerance,
                                                    int max_steps, bool warm)
 {
@@ -73,6 +104,13 @@ SteadyRollingInfo SteadyRolling::solve_with_memory(GridConvolution& conv, double
         const double change = memory_pass();
         info.residual = std::max(round.residual, change);
         if (change <= tolerance) {
+            // The states, local Jacobians and chain at the traction with
+            // the mu_prev just found: a warm solve from this traction
+            // linearises at the same point (its Jacobian has these bits).
+            const long before = friction_iterations_;
+            sweep(conv, q_, gq_);
+            ++products;
+            local_steps += friction_iterations_ - before;
             info.converged = true;
             break;
         }

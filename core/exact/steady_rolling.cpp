@@ -77,6 +77,9 @@ void SteadyRolling::set_law(const LocalLaw* law)
         v->reserve(capacity_);
         v->resize(static_cast<size_t>(n_));
     }
+    links_.reserve(capacity_);
+    links_.resize(static_cast<size_t>(n_));
+    theta0_ = law->memory.distance / (law->memory.distance + law->dt * law->memory.s0);
 }
 
 void SteadyRolling::set_size(int nx, int ny)
@@ -93,6 +96,7 @@ void SteadyRolling::set_size(int nx, int ny)
     if (memory_active_) {
         mu_prev_.resize(n);
         mu_.resize(n);
+        links_.resize(n);
     }
 }
 
@@ -143,6 +147,7 @@ void SteadyRolling::sweep(GridConvolution& conv, const std::vector<Complex>& q,
                 if (memory_active_) law_.mu_prev = mu_prev_[k];
                 slips = solve_local_friction(law_, c, b0x_, b0y_, g_[k], qk, jac_[k], e);
                 friction_iterations_ += e.iterations;
+                if (memory_active_ && slips) link_memory(k, c, qk);
             } else {
                 slips = solve_local_friction(c, b0x_, b0y_, g_[k], qk, jac_[k]);
             }
@@ -159,17 +164,20 @@ void SteadyRolling::linear_sweep(GridConvolution& conv, const Complex* v, Comple
     ++products_;
     for (int j = 0; j < ny_; ++j) {
         Complex ahead(0.0, 0.0);
+        double dmu = 0.0; // under memory (tangents): the change of mu ahead
         for (int i = nx_ - 1; i >= 0; --i) {
             const int k = i + nx_ * j;
             if (!(g_[k] > 0.0)) {
                 out[k] = 0.0;
                 ahead = 0.0;
+                dmu *= theta0_;
                 continue;
             }
             const double cx = work_[k].real() - b0x_ * v[k].real() + b1x_ * ahead.real();
             const double cy = work_[k].imag() - b0y_ * v[k].imag() + b1y_ * ahead.imag();
             const LocalJacobian& J = jac_[k];
-            const Complex d(J.j11 * cx + J.j12 * cy, J.j21 * cx + J.j22 * cy);
+            Complex d(J.j11 * cx + J.j12 * cy, J.j21 * cx + J.j22 * cy);
+            if (memory_linear_) memory_link(k, cx, cy, d, dmu, false);
             out[k] = d;
             ahead = d - v[k];
         }
@@ -276,6 +284,7 @@ SteadyRollingInfo SteadyRolling::newton(GridConvolution& conv, double tolerance,
     SteadyRollingInfo info;
     products_ = 0;
     friction_iterations_ = 0;
+    memory_linear_ = false; // Newton's steps hold mu_prev
     if (rolling_) {
         b0x_ = conv.cf11(0, 0) - conv.cf11(1, 0);
         b0y_ = conv.cf22(0, 0) - conv.cf22(1, 0);
@@ -341,11 +350,13 @@ void SteadyRolling::source_sweep(const Complex* dw, const double* dg, bool speed
     // local problem is homogeneous of degree 1 in (c, g)).
     for (int j = 0; j < ny_; ++j) {
         Complex ahead(0.0, 0.0);
+        double dmu = 0.0; // under memory (tangents): the change of mu ahead
         for (int i = nx_ - 1; i >= 0; --i) {
             const int k = i + nx_ * j;
             if (!(g_[k] > 0.0)) {
                 out[k] = 0.0;
                 ahead = 0.0;
+                dmu *= theta0_;
                 continue;
             }
             double cx = b1x_ * ahead.real(), cy = b1y_ * ahead.imag();
@@ -369,6 +380,7 @@ void SteadyRolling::source_sweep(const Complex* dw, const double* dg, bool speed
                 const Complex jc(J.j11 * c0x + J.j12 * c0y, J.j21 * c0x + J.j22 * c0y);
                 d += (gq_[k] - jc) * (dg[k] / g_[k]);
             }
+            if (memory_linear_) memory_link(k, cx, cy, d, dmu, speed);
             out[k] = d;
             ahead = d;
         }
@@ -380,6 +392,7 @@ const std::vector<SteadyRolling::Complex>& SteadyRolling::tangent(GridConvolutio
                                                                   double tolerance,
                                                                   int max_iterations)
 {
+    memory_linear_ = memory_active_ && rolling_;
     source_sweep(dw.data(), nullptr, false, gt_.data()); // gt_, qt_, ft_: scratch after solve()
     return solve_tangent(conv, tolerance, max_iterations);
 }
@@ -387,6 +400,7 @@ const std::vector<SteadyRolling::Complex>& SteadyRolling::tangent(GridConvolutio
 const std::vector<SteadyRolling::Complex>& SteadyRolling::tangent_bound(
     GridConvolution& conv, const std::vector<double>& dg, double tolerance, int max_iterations)
 {
+    memory_linear_ = memory_active_ && rolling_;
     source_sweep(nullptr, dg.data(), false, gt_.data());
     return solve_tangent(conv, tolerance, max_iterations);
 }
@@ -395,6 +409,7 @@ const std::vector<SteadyRolling::Complex>& SteadyRolling::tangent_speed(GridConv
                                                                         double tolerance,
                                                                         int max_iterations)
 {
+    memory_linear_ = memory_active_ && rolling_;
     source_sweep(nullptr, nullptr, law_active_, gt_.data());
     return solve_tangent(conv, tolerance, max_iterations);
 }

@@ -156,6 +156,13 @@ private:
     // mu_ and mu_prev_ along each row from the last sweep's slip; returns
     // the largest change of mu_prev over mu_ref.
     double memory_pass();
+    // Under memory, of sweep(): a slipping element's share of the chain
+    // mu_k(sigma_k, mu_prev) along its row, for the tangents.
+    void link_memory(int k, Complex c, Complex qk);
+    // The chain in a linearised sweep (the tangents only): element k's dq
+    // d gains what the change dmu of the coefficient ahead moves it by, and
+    // dmu becomes element k's (speed: with the change of ln kappa).
+    void memory_link(int k, double cx, double cy, Complex& d, double& dmu, bool speed) const;
     // Solves (I - G') dq = rhs (in gt_) into qt_ and checks the true residual.
     const std::vector<Complex>& solve_tangent(GridConvolution& conv, double tolerance,
                                               int max_iterations);
@@ -188,6 +195,16 @@ private:
     bool memory_active_ = false;
     std::vector<double> mu_prev_, mu_; // per element: the element ahead's mu, its own
     int memory_iterations_ = 0;
+    // A slipping element's linearisation under memory: theta at its slip
+    // speed, d mu / d sigma, sigma, e = s / sigma, and the bound's change
+    // per unit change of mu_prev (g theta / mu_ref).
+    struct MemoryLink {
+        double theta = 0.0, dmu_dsigma = 0.0, sigma = 0.0, bound = 0.0;
+        Complex e{0.0, 0.0};
+    };
+    std::vector<MemoryLink> links_;
+    double theta0_ = 0.0;        // theta at rest (adhesion, exterior)
+    bool memory_linear_ = false; // the tangents carry the chain
     size_t capacity_ = 0; // the constructor's element count
     long friction_iterations_ = 0;
     // GMRES: basis (m + 1 vectors of n), Hessenberg, Givens rotations, rhs.

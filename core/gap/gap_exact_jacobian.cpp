@@ -26,7 +26,6 @@
 namespace creepwork {
 SolveTotals GapExactModel::solve_jacobian(const ContactInput& in, SolveMode mode, Jacobian& J)
 {
-    law_.refuse_jacobian_under_memory(name());
     const SolveTotals t = solve(in, mode);
     ContactInput effective = in; // under a law, its mu(0) scales the tractions
     effective.mu = law_.coefficient(in);

@@ -5,8 +5,8 @@
 % CONTACT's tractcurv series 4 at 2 % (tests/data/contact_tractcurv.csv:
 % Fx/(mu_s N) = -0.8444, printed to 4 digits) and Polach's full-sliding
 % closed form A + (1 - A) exp(-B xi V) within 2e-4; the exact model with
-% friction memory the CLI's bits, its Jacobian refused naming
-% memory_distance; bad inputs name themselves.
+% friction memory the CLI's bits, with its Jacobian too; bad inputs name
+% themselves.
 function test_friction()
   cli = getenv('CREEPWORK_CLI');
   grid = struct('kind', 'uniform', 'nx', 48, 'ny', 44, 'box_scale', 1.1);
@@ -39,8 +39,15 @@ function test_friction()
   same_as_cli(r, sprintf(['%s --model exact --friction-law exponential --mu 0.14 --mu-e1 0.19 ' ...
                           '--s-h1 1.25 --memory-distance 3e-6 --memory-s0 1e-3 --xi-x 0.004'], ...
                          cli_base), cli);
-  expect_error(@() creepwork.jacobian(base{:}, memory{:}, 'xi_x', 0.004), ...
-               'creepwork:CW_ERR_INVALID_INPUT', 'memory_distance');
+  r = creepwork.jacobian(base{:}, memory{:}, 'xi_x', 0.004);
+  [status, out] = system(sprintf(['%s solve %s --model exact --friction-law exponential ' ...
+                                  '--mu 0.14 --mu-e1 0.19 --s-h1 1.25 --memory-distance 3e-6 ' ...
+                                  '--memory-s0 1e-3 --xi-x 0.004 --jacobian 2>/dev/null'], ...
+                                 cli, cli_base));
+  assert(status == 0, out);
+  t = regexp(out, '"jacobian": \{\s*"Fx": \{\s*"xi_x": (-?[0-9][-+.eE0-9]*)', 'tokens', 'once');
+  assert(r.jacobian(1, 1) == str2double(t{1}), sprintf('dFx/dxi_x: %.17g (MEX) vs %s (CLI)', ...
+         r.jacobian(1, 1), t{1}));
 
   ok = {'a', 7e-3, 'b', 5e-3, 'N', 100e3, 'xi_x', 1e-3, 'fields', false};
   expect_error(@() creepwork.solve(ok{:}, law{:}), 'creepwork:CW_ERR_INVALID_INPUT', '\<V = 0');

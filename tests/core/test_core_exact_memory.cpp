@@ -8,8 +8,8 @@
 //  - the recurrence itself, element by element, from the exported fields:
 //    mu = |traction| / pressure of a slipping element and of the slipping
 //    element ahead of it, theta from its exported slip speed;
-//  - d_c -> 0 tends to the law without memory, d_c = 0 is the law's bits;
-//  - the Jacobian refused naming memory_distance.
+//  - d_c -> 0 tends to the law without memory, d_c = 0 is the law's bits.
+// Its Jacobian: test_core_exact_law_jacobian.
 #include "core_test_support.hpp"
 #include "tractcurv_exact.hpp"
 #include "test_support.h"
@@ -158,23 +158,6 @@ void vanishing_distance_is_the_law(void**)
     }
 }
 
-void jacobian_refused_by_name(void**)
-{
-    cw::ExactModel m(cwtest::tractcurv_grid());
-    with_memory(m);
-    cw::Jacobian J;
-    try {
-        m.solve_jacobian(tractcurv_exact(4e-3), cw::SolveMode::forces_only, J);
-        fail_msg("a Jacobian under friction memory");
-    } catch (const cw::Error& e) {
-        assert_true(e.kind() == cw::ErrorKind::invalid_input);
-        assert_true(std::string(e.what()).rfind("memory_distance", 0) == 0);
-    }
-    m.set_friction_memory(0.0, kS0); // without memory the Jacobian is there
-    m.solve_jacobian(tractcurv_exact(4e-3), cw::SolveMode::forces_only, J);
-    assert_true(J.d[0][0] != 0.0);
-}
-
 } // namespace
 
 int main()
@@ -183,7 +166,6 @@ int main()
         cmocka_unit_test(contact_memory_rows),
         cmocka_unit_test(recurrence_holds_element_by_element),
         cmocka_unit_test(vanishing_distance_is_the_law),
-        cmocka_unit_test(jacobian_refused_by_name),
     };
     return cmocka_run_group_tests(tests, nullptr, nullptr);
 }
