@@ -4,7 +4,6 @@
 #include <cmath>
 
 #include "contact/contact_input.hpp"
-#include "contact/error.hpp"
 #include "contact/friction_law.hpp"
 
 namespace creepwork {

@@ -9,7 +9,6 @@
 #pragma once
 
 #include <memory>
-#include <string>
 #include <vector>
 
 #include "contact/params.hpp"
@@ -43,7 +42,6 @@ public:
         return !same;
     }
     bool memory_active() const { return active_ && memory_.distance > 0.0; }
-
     // Under a law, info's range of mu (diagnose) into mu_min, mu_max; false
     // under Coulomb's law (ContactModel::friction_range).
     bool friction_range(const TangentialInfo& info, double& mu_min, double& mu_max) const
