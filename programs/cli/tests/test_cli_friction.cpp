@@ -101,21 +101,34 @@ void friction_json_matches_library(void**)
 // its totals equal the C ABI's full solve bit for bit, --out writes the
 // fields, whose work map sums to W_macro, and
 // the row xi = 3e-3 meets CONTACT's printed Fx/(mu_s N) = -0.9840 to its digits.
-void exact_law_json_matches_library(void**)
+cw_params exact_law_params(double xi_x)
 {
-    cw_params p = tractcurv(3e-3);
+    cw_params p = tractcurv(xi_x);
     p.model = CW_MODEL_EXACT;
     p.exact_load = 0;
     p.friction_law = CW_FRICTION_EXPONENTIAL;
     p.mu = 0.14;
     p.mu_e1 = 0.19;
     p.s_h1 = 1.25;
+    return p;
+}
+
+// The same on the command line, and more.
+std::vector<std::string> exact_law_args(const char* xi_x, const std::vector<std::string>& more)
+{
+    return with({"solve", "--format", "json", "--a", "6.304e-3", "--b", "12.61e-3", "--N",
+                 "106700", "--grid", "uniform", "--nx", "48", "--ny", "44", "--box-scale", "1.1",
+                 "--V", "10", "--model", "exact", "--xi-x", xi_x, "--friction-law", "exponential",
+                 "--mu", "0.14", "--mu-e1", "0.19", "--s-h1", "1.25"},
+                more);
+}
+
+void exact_law_json_matches_library(void**)
+{
+    const cw_params p = exact_law_params(3e-3);
     const cw_result lib = library_solve(tractcurv_grid(), p, CW_SOLVE_FULL);
-    const std::vector<std::string> args = {
-        "solve", "--format", "json", "--a", "6.304e-3", "--b", "12.61e-3", "--N", "106700",
-        "--grid", "uniform", "--nx", "48", "--ny", "44", "--box-scale", "1.1", "--V", "10",
-        "--model", "exact", "--xi-x", "3e-3", "--friction-law", "exponential", "--mu", "0.14",
-        "--mu-e1", "0.19", "--s-h1", "1.25", "--out", path("exact_law"), "--no-plots"};
+    const std::vector<std::string> args =
+        exact_law_args("3e-3", {"--out", path("exact_law"), "--no-plots"});
     const Json j = parse_or_fail(cli_ok(args).out);
     expect_library_bits(j, lib);
     assert_true(j.num("W_macro") == lib.W_macro);
@@ -137,22 +150,12 @@ void exact_law_json_matches_library(void**)
 // to its digits; with --jacobian every entry is the C ABI's.
 void exact_memory_json_matches_library(void**)
 {
-    cw_params p = tractcurv(4e-3);
-    p.model = CW_MODEL_EXACT;
-    p.exact_load = 0;
-    p.friction_law = CW_FRICTION_EXPONENTIAL;
-    p.mu = 0.14;
-    p.mu_e1 = 0.19;
-    p.s_h1 = 1.25;
+    cw_params p = exact_law_params(4e-3);
     p.memory_distance = 3e-6;
     p.memory_s0 = 1e-3;
     const cw_result lib = library_solve(tractcurv_grid(), p, CW_SOLVE_FORCES);
-    std::vector<std::string> args = {
-        "solve", "--format", "json", "--a", "6.304e-3", "--b", "12.61e-3", "--N", "106700",
-        "--grid", "uniform", "--nx", "48", "--ny", "44", "--box-scale", "1.1", "--V", "10",
-        "--G", "82e9", "--nu", "0.28", "--model", "exact", "--xi-x", "4e-3", "--friction-law",
-        "exponential", "--mu", "0.14", "--mu-e1", "0.19", "--s-h1", "1.25", "--memory-distance",
-        "3e-6", "--memory-s0", "1e-3"};
+    std::vector<std::string> args = exact_law_args(
+        "4e-3", {"--G", "82e9", "--nu", "0.28", "--memory-distance", "3e-6", "--memory-s0", "1e-3"});
     expect_library_bits(parse_or_fail(cli_ok(args).out), lib);
     assert_close(lib.Fx / (0.33 * 106700), -0.9887, 0.0, 0.5e-4);
     args.push_back("--jacobian");
