@@ -229,10 +229,12 @@ const SolveTotals& Solver::solve_impl(const ContactInput& input, SolveMode mode,
     }
     m.set_friction_factors(has_factors_ ? factors_.data() : nullptr);
     auto* law_model = dynamic_cast<FastsimLawModel*>(&m);
-    if (input.memory_distance > 0.0 && input.friction_law != FrictionLaw::coulomb && !law_model)
+    const bool has_memory =
+        law_model || m.set_friction_memory(input.memory_distance, input.memory_s0);
+    if (input.memory_distance > 0.0 && input.friction_law != FrictionLaw::coulomb && !has_memory)
         throw Error(ErrorKind::invalid_input,
-                    "memory_distance: " + m.name() + " has no friction memory (FASTSIM with "
-                    "friction_speed = local has)");
+                    "memory_distance: " + m.name() + " has no friction memory (the exact model "
+                    "and FASTSIM with friction_speed = local have)");
     if (law_model) law_model->set_memory(friction_memory(input));
     SolveTotals t = jacobian ? m.solve_jacobian(input, mode, *jacobian) : m.solve(input, mode);
     last_ = &m;

@@ -971,8 +971,8 @@ MUTANTS += [
          tests=EXACT_LAW, require=EXACT_LAW),
     dict(id="exact-law-slip-unit", what="the law's argument the normalised slip times V, without "
          "the slip's unit", file="core/exact/exact_law.hpp",
-         old="        const LocalLaw local{law_, law_.coefficient(0.0), V_ * slip_scale};",
-         new="        const LocalLaw local{law_, law_.coefficient(0.0), V_};",
+         old="        LocalLaw local{law_, law_.coefficient(0.0), V_ * slip_scale, FrictionMemory{}, 0.0, 0.0};",
+         new="        LocalLaw local{law_, law_.coefficient(0.0), V_, FrictionMemory{}, 0.0, 0.0};",
          tests=EXACT_LAW, require=EXACT_LAW),
 ]
 # The interface layer in the exact model (steady_rolling's operator,
@@ -1006,6 +1006,37 @@ MUTANTS += [
          file="core/solver.cpp",
          old="        if (!m.takes_interface_layer())",
          new="        if (false && !m.takes_interface_layer())", tests=LAYER, require=LAYER),
+]
+# Friction memory in the exact models (core/exact/steady_memory.cpp):
+# CONTACT's rows with MEMDST 3 um, the recurrence read back from the fields
+# (test_core_exact_memory), and CONTACT's rows through the C ABI on both
+# grids (test_capi_exact_law).
+EXACT_MEMORY = ["test_core_exact_memory", "test_capi_exact_law"]
+MUTANTS += [
+    dict(id="exact-memory-leading-edge", what="memory starts each row from mu = 0, not the "
+         "static coefficient", file="core/exact/steady_memory.cpp",
+         old="        double ahead = mu_static;", new="        double ahead = 0.0;",
+         tests=EXACT_MEMORY, require=EXACT_MEMORY),
+    dict(id="exact-memory-slip-speed", what="the memory pass takes every element as adhering "
+         "(theta at s0)", file="core/exact/steady_memory.cpp",
+         old="            const double sigma = state_[k] == 2 ? std::abs(s_[k]) : 0.0;",
+         new="            const double sigma = 0.0;",
+         tests=EXACT_MEMORY, require=EXACT_MEMORY),
+]
+# The exact models' Jacobian under memory (the chain along each row in the
+# tangents): central differences of the solver (test_core_exact_law_jacobian)
+# and through the C ABI on both grids (test_capi_exact_law).
+EXACT_MEMORY_JACOBIAN = ["test_core_exact_law_jacobian", "test_capi_exact_law"]
+MUTANTS += [
+    dict(id="exact-memory-chain-bound", what="the tangents drop the bound's change with the "
+         "coefficient ahead", file="core/exact/steady_memory.cpp",
+         old="    d += slip_info_[k].u * (l.bound * dmu);", new="",
+         tests=EXACT_MEMORY_JACOBIAN, require=EXACT_MEMORY_JACOBIAN),
+    dict(id="exact-memory-chain-theta", what="the chain forgets the coefficient ahead (theta)",
+         file="core/exact/steady_memory.cpp",
+         old="    dmu = l.theta * dmu + l.dmu_dsigma * (dsigma + (speed ? l.sigma : 0.0));",
+         new="    dmu = l.dmu_dsigma * (dsigma + (speed ? l.sigma : 0.0));",
+         tests=EXACT_MEMORY_JACOBIAN, require=EXACT_MEMORY_JACOBIAN),
 ]
 # The exact models' law through the doors: mu_min, mu_max against the law
 # at the exported slip speeds, and a Coulomb solve after a law's on one

@@ -70,6 +70,10 @@ public:
                             " takes no friction that varies element by element (the exact "
                             "model on the ellipse's uniform grid does)");
     }
+    // Friction memory under a law of the slip speed for the next solves: the
+    // characteristic distance d_c [m] (0: none) and s0 [m/s], validated.
+    // False from a model without it (the solver then refuses d_c > 0).
+    virtual bool set_friction_memory(double /*distance*/, double /*s0*/) { return false; }
     // The smallest and largest friction coefficient of the last solve over
     // its slipping elements, for a model under a law of the slip speed;
     // false for a model that holds one mu.

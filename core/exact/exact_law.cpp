@@ -33,6 +33,13 @@ double ExactLaw::traction_scale(const ContactInput& in, double pressure) const
     return active_ ? traction_bound(law_, pressure, 0.0) : traction_bound(friction_law(in), pressure);
 }
 
+void ExactLaw::set_local_memory(LocalLaw& local, double dx) const
+{
+    local.memory = memory_;
+    local.dt = dx / V_;
+    local.mu_prev = static_friction(law_);
+}
+
 void ExactLaw::range(const SteadyRolling& fine, TangentialInfo& info) const
 {
     const double mu0 = law_.coefficient(0.0);

@@ -278,7 +278,8 @@ SolveTotals ExactModel::solve(const ContactInput& in, SolveMode mode)
     const bool loaded = in.normal_force > 0.0;
     if (loaded) solve_normal(fine, ratio, in.warm_start, "finest");
     set_normalised_creepages(in.G);
-    law_.apply(levels_, setup_.slip_scale);
+    law_.apply(levels_, setup_.slip_scale,
+               [&](const Level& L) { return 2.0 * box_scale_ * in.a / L.nx; });
     set_layer(in);
 
     if (factor_ && setup_.yield > 0.0)

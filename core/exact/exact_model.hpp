@@ -73,6 +73,11 @@ public:
     void set_law(const SlipSpeedLaw& law, double V) override;
     // Back to Coulomb's law with input.mu (the next solve is cold after a
     // law's).
+    bool set_friction_memory(double distance, double s0) override
+    {
+        if (law_.set_memory(FrictionMemory{distance, s0})) has_previous_ = false;
+        return true;
+    }
     void clear_law() override
     {
         if (law_.clear()) has_previous_ = false;

@@ -98,11 +98,15 @@ bool solve_local_friction(const LocalLaw& law, std::complex<double> c, double b1
         return true;
     }
     // f(sigma) = (cx/(sigma + h b1))^2 + (cy/(sigma + h b2))^2 - 1 with
-    // h = g m(sigma) <= g0: f >= Coulomb's f at g0, so f(lo) >= 0 at
-    // lo = |c| - g0 max(b); f(|c|) <= 0 (h >= 0). Newton's steps inside the
-    // bracket, bisection otherwise; the bracket shrinks with each sign.
+    // h = g m(sigma) <= g_hi: f >= Coulomb's f at g_hi, so f(lo) >= 0 at
+    // lo = |c| - g_hi max(b); f(|c|) <= 0 (h >= 0). Newton's steps inside the
+    // bracket, bisection otherwise; the bracket shrinks with each sign. A
+    // law falls from m(0) = 1 (g_hi = g0); under memory m can rise above
+    // m(0) (an element behind a slipping one), never above the static
+    // coefficient, m = 1.
+    const double g_hi = law.memory.distance > 0.0 ? pressure : g0;
     const double norm_c = std::sqrt(cx * cx + cy * cy);
-    double lo = norm_c - g0 * (b1 > b2 ? b1 : b2), hi = norm_c;
+    double lo = norm_c - g_hi * (b1 > b2 ? b1 : b2), hi = norm_c;
     if (lo < 0.0) lo = 0.0;
     double sigma = lo, h = g0, dh = 0.0;
     for (int it = 0; it < 200; ++it) {

@@ -17,6 +17,7 @@
 #include <complex>
 
 #include "contact/friction_law.hpp"
+#include "friction/friction_memory.hpp"
 #include "friction/slip_speed_law.hpp"
 
 namespace creepwork {
@@ -31,13 +32,21 @@ struct LocalJacobian {
 // kappa = V times the unit of the normalised slip [m/s], mu_ref = mu(0)
 // (the traction unit's coefficient, so m(0) = 1). A law of the friction
 // hook (coefficient, slope by sigma, uses_slip_speed).
+// Under friction memory (memory.distance > 0) the law is the element's
+// mu_m(s) of friction_memory.hpp, with dt = dx / V [s] and mu_prev the
+// coefficient of the element ahead, which the caller sets per element.
 struct LocalLaw {
     SlipSpeedLaw law;
     double mu_ref = 1.0, kappa = 0.0;
+    FrictionMemory memory;
+    double dt = 0.0, mu_prev = 0.0;
     static constexpr bool uses_slip_speed = true;
     FrictionValue value(double sigma) const // m and dm/dsigma
     {
-        const FrictionValue v = friction_value(law, kappa * sigma);
+        const FrictionValue v = memory.distance > 0.0
+                                    ? friction_value(MemoryElement{&law, memory, dt, mu_prev},
+                                                     kappa * sigma)
+                                    : friction_value(law, kappa * sigma);
         return {v.mu / mu_ref, v.dmu_ds * kappa / mu_ref};
     }
     double coefficient(double sigma) const { return value(sigma).mu; }

@@ -67,10 +67,19 @@ SteadyRolling::SteadyRolling(int nx, int ny, int krylov_dimension)
 void SteadyRolling::set_law(const LocalLaw* law)
 {
     law_active_ = law != nullptr;
+    memory_active_ = law && law->memory.distance > 0.0;
     if (!law) return;
     law_ = *law;
     slip_info_.reserve(capacity_);
     slip_info_.resize(static_cast<size_t>(n_));
+    if (!memory_active_) return;
+    for (auto* v : {&mu_prev_, &mu_}) {
+        v->reserve(capacity_);
+        v->resize(static_cast<size_t>(n_));
+    }
+    links_.reserve(capacity_);
+    links_.resize(static_cast<size_t>(n_));
+    theta0_ = law->memory.distance / (law->memory.distance + law->dt * law->memory.s0);
 }
 
 void SteadyRolling::set_size(int nx, int ny)
@@ -84,6 +93,11 @@ void SteadyRolling::set_size(int nx, int ny)
     jac_.resize(n);
     state_.resize(n);
     if (law_active_) slip_info_.resize(n);
+    if (memory_active_) {
+        mu_prev_.resize(n);
+        mu_.resize(n);
+        links_.resize(n);
+    }
 }
 
 void SteadyRolling::project(std::vector<Complex>& q) const
@@ -144,8 +158,10 @@ void SteadyRolling::sweep(GridConvolution& conv, const std::vector<Complex>& q,
             bool slips;
             if (law_active_) {
                 ElementSlip& e = slip_info_[k];
+                if (memory_active_) law_.mu_prev = mu_prev_[k];
                 slips = solve_local_friction(law_, c, b0x_, b0y_, g_[k], qk, jac_[k], e);
                 friction_iterations_ += e.iterations;
+                if (memory_active_ && slips) link_memory(k, c, qk);
             } else {
                 slips = solve_local_friction(c, b0x_, b0y_, g_[k], qk, jac_[k]);
             }
@@ -161,17 +177,20 @@ void SteadyRolling::linear_sweep(GridConvolution& conv, const Complex* v, Comple
     product(conv, v, work_.data());
     for (int j = 0; j < ny_; ++j) {
         Complex ahead(0.0, 0.0);
+        double dmu = 0.0; // under memory (tangents): the change of mu ahead
         for (int i = nx_ - 1; i >= 0; --i) {
             const int k = i + nx_ * j;
             if (!(g_[k] > 0.0)) {
                 out[k] = 0.0;
                 ahead = 0.0;
+                dmu *= theta0_;
                 continue;
             }
             const double cx = work_[k].real() - b0x_ * v[k].real() + b1x_ * ahead.real();
             const double cy = work_[k].imag() - b0y_ * v[k].imag() + b1y_ * ahead.imag();
             const LocalJacobian& J = jac_[k];
-            const Complex d(J.j11 * cx + J.j12 * cy, J.j21 * cx + J.j22 * cy);
+            Complex d(J.j11 * cx + J.j12 * cy, J.j21 * cx + J.j22 * cy);
+            if (memory_linear_) memory_link(k, cx, cy, d, dmu, false);
             out[k] = d;
             ahead = d - v[k];
         }
@@ -272,12 +291,13 @@ double SteadyRolling::residual_norm(const std::vector<Complex>& q, const std::ve
     return std::sqrt(sum);
 }
 
-SteadyRollingInfo SteadyRolling::solve(GridConvolution& conv, double tolerance, int max_steps,
-                                       bool warm)
+SteadyRollingInfo SteadyRolling::newton(GridConvolution& conv, double tolerance, int max_steps,
+                                        bool warm)
 {
     SteadyRollingInfo info;
     products_ = 0;
     friction_iterations_ = 0;
+    memory_linear_ = false; // Newton's steps hold mu_prev
     if (rolling_) {
         b0x_ = conv.cf11(0, 0) - conv.cf11(1, 0);
         b0y_ = conv.cf22(0, 0) - conv.cf22(1, 0);
@@ -350,11 +370,13 @@ void SteadyRolling::source_sweep(const Complex* dw, const double* dg, bool speed
     // local problem is homogeneous of degree 1 in (c, g)).
     for (int j = 0; j < ny_; ++j) {
         Complex ahead(0.0, 0.0);
+        double dmu = 0.0; // under memory (tangents): the change of mu ahead
         for (int i = nx_ - 1; i >= 0; --i) {
             const int k = i + nx_ * j;
             if (!(g_[k] > 0.0)) {
                 out[k] = 0.0;
                 ahead = 0.0;
+                dmu *= theta0_;
                 continue;
             }
             double cx = b1x_ * ahead.real(), cy = b1y_ * ahead.imag();
@@ -378,6 +400,7 @@ void SteadyRolling::source_sweep(const Complex* dw, const double* dg, bool speed
                 const Complex jc(J.j11 * c0x + J.j12 * c0y, J.j21 * c0x + J.j22 * c0y);
                 d += (gq_[k] - jc) * (dg[k] / g_[k]);
             }
+            if (memory_linear_) memory_link(k, cx, cy, d, dmu, speed);
             out[k] = d;
             ahead = d;
         }
@@ -389,6 +412,7 @@ const std::vector<SteadyRolling::Complex>& SteadyRolling::tangent(GridConvolutio
                                                                   double tolerance,
                                                                   int max_iterations)
 {
+    memory_linear_ = memory_active_ && rolling_;
     source_sweep(dw.data(), nullptr, false, gt_.data()); // gt_, qt_, ft_: scratch after solve()
     return solve_tangent(conv, tolerance, max_iterations);
 }
@@ -396,6 +420,7 @@ const std::vector<SteadyRolling::Complex>& SteadyRolling::tangent(GridConvolutio
 const std::vector<SteadyRolling::Complex>& SteadyRolling::tangent_bound(
     GridConvolution& conv, const std::vector<double>& dg, double tolerance, int max_iterations)
 {
+    memory_linear_ = memory_active_ && rolling_;
     source_sweep(nullptr, dg.data(), false, gt_.data());
     return solve_tangent(conv, tolerance, max_iterations);
 }
@@ -404,6 +429,7 @@ const std::vector<SteadyRolling::Complex>& SteadyRolling::tangent_speed(GridConv
                                                                         double tolerance,
                                                                         int max_iterations)
 {
+    memory_linear_ = memory_active_ && rolling_;
     source_sweep(nullptr, nullptr, law_active_, gt_.data());
     return solve_tangent(conv, tolerance, max_iterations);
 }

@@ -44,6 +44,7 @@ struct SteadyRollingInfo {
     int products = 0;        // FFT products (sweeps, GMRES iterations)
     double residual = 0;     // max |G(q) - q| / max(max |G(q)|, 1e-6 max g)
     bool converged = false;
+    int memory_iterations = 0; // under friction memory: the solves with fixed mu_prev
 };
 
 // Throws Error(not_converged) unless info converged: the exact model's
@@ -73,7 +74,9 @@ public:
     // law = nullptr) or a law of the slip speed (bound g m(sigma) at each
     // element's own normalised slip sigma = |s|, local_friction.hpp), inside
     // the Newton system: the local Jacobians hold the law's slope. The first
-    // call with a law allocates its per-element record.
+    // call with a law allocates its per-element record. A law with memory
+    // (law->memory.distance > 0, the rolling operator) is solved by
+    // solve_with_memory().
     void set_law(const LocalLaw* law);
     // Under a law, of the last sweep: each element's record (m, sources;
     // m = 1 outside slip) and the scalar Newton steps of every sweep since
@@ -95,7 +98,16 @@ public:
     // (forcing min(0.3, residual^1.5) instead of min(0.3, residual)) and
     // target the tolerance itself instead of half of it. Fewer products from
     // such a start; from any start, a safe margin (the .cpp).
-    SteadyRollingInfo solve(GridConvolution& conv, double tolerance, int max_steps, bool warm);
+    SteadyRollingInfo solve(GridConvolution& conv, double tolerance, int max_steps, bool warm)
+    {
+        return memory_active_ && rolling_ ? solve_with_memory(conv, tolerance, max_steps, warm)
+                              : newton(conv, tolerance, max_steps, warm);
+    }
+    // Under memory: each element's coefficient mu_k (mu_ref m), of the last
+    // memory pass (steady_memory.cpp).
+    const std::vector<double>& memory_coefficient() const { return mu_; }
+    // Under memory: the rounds of the last solve's fixed point.
+    int memory_iterations() const { return memory_iterations_; }
 
     std::vector<double>& bound() { return g_; }
     std::vector<Complex>& rigid_slip() { return w_; }
@@ -139,6 +151,23 @@ public:
                                               int max_iterations);
 
 private:
+    // solve() with the law's bounds as they stand (mu_prev held under memory).
+    SteadyRollingInfo newton(GridConvolution& conv, double tolerance, int max_steps, bool warm);
+    // Friction memory (steady_memory.cpp): CONTACT's outer fixed point.
+    // Newton's method with every element's mu_prev held, then mu_prev again
+    // from the solution, until it moves by no more than the tolerance.
+    SteadyRollingInfo solve_with_memory(GridConvolution& conv, double tolerance, int max_steps,
+                                        bool warm);
+    // mu_ and mu_prev_ along each row from the last sweep's slip; returns
+    // the largest change of mu_prev over mu_ref.
+    double memory_pass();
+    // Under memory, of sweep(): a slipping element's share of the chain
+    // mu_k(sigma_k, mu_prev) along its row, for the tangents.
+    void link_memory(int k, Complex c, Complex qk);
+    // The chain in a linearised sweep (the tangents only): element k's dq
+    // d gains what the change dmu of the coefficient ahead moves it by, and
+    // dmu becomes element k's (speed: with the change of ln kappa).
+    void memory_link(int k, double cx, double cy, Complex& d, double& dmu, bool speed) const;
     // Solves (I - G') dq = rhs (in gt_) into qt_ and checks the true residual.
     const std::vector<Complex>& solve_tangent(GridConvolution& conv, double tolerance,
                                               int max_iterations);
@@ -172,6 +201,19 @@ private:
     bool law_active_ = false;
     LocalLaw law_;
     std::vector<ElementSlip> slip_info_;
+    bool memory_active_ = false;
+    std::vector<double> mu_prev_, mu_; // per element: the element ahead's mu, its own
+    int memory_iterations_ = 0;
+    // A slipping element's linearisation under memory: theta at its slip
+    // speed, d mu / d sigma, sigma, e = s / sigma, and the bound's change
+    // per unit change of mu_prev (g theta / mu_ref).
+    struct MemoryLink {
+        double theta = 0.0, dmu_dsigma = 0.0, sigma = 0.0, bound = 0.0;
+        Complex e{0.0, 0.0};
+    };
+    std::vector<MemoryLink> links_;
+    double theta0_ = 0.0;        // theta at rest (adhesion, exterior)
+    bool memory_linear_ = false; // the tangents carry the chain
     size_t capacity_ = 0; // the constructor's element count
     long friction_iterations_ = 0;
     // GMRES: basis (m + 1 vectors of n), Hessenberg, Givens rotations, rhs.

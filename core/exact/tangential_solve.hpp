@@ -74,6 +74,9 @@ struct TangentialInfo {
     long friction_iterations = 0;
     double friction_steps_per_element = 0;
     double mu_min = 0, mu_max = 0;
+    // Under friction memory: the fine grid's rounds of the fixed point on
+    // mu_prev (exact/steady_memory.cpp).
+    int memory_iterations = 0;
 };
 
 enum class TangentialStart { slide, zero_creepage, warm, cold };

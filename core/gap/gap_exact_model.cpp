@@ -333,7 +333,7 @@ SolveTotals GapExactModel::solve(const ContactInput& in, SolveMode mode)
     label_patches(t);
     set_box(normal_.half_space(in.nu));
     set_normalised_creepages(in);
-    law_.apply(levels_, s.slip_scale);
+    law_.apply(levels_, s.slip_scale, [](const Level& L) { return L.dx; });
     // The layer in the normalised units of each level: (h / G3) G / dx.
     s.layer = in.layer_h > 0.0 ? in.layer_h / in.layer_G : 0.0;
     if (!std::isfinite(s.layer * in.G / grid_.dx))

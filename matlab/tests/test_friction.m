@@ -4,7 +4,8 @@
 % same inputs (== on doubles: the C ABI's bits through both doors),
 % CONTACT's tractcurv series 4 at 2 % (tests/data/contact_tractcurv.csv:
 % Fx/(mu_s N) = -0.8444, printed to 4 digits) and Polach's full-sliding
-% closed form A + (1 - A) exp(-B xi V) within 2e-4; bad inputs name
+% closed form A + (1 - A) exp(-B xi V) within 2e-4; the exact model with
+% friction memory the CLI's bits, with its Jacobian too; bad inputs name
 % themselves.
 function test_friction()
   cli = getenv('CREEPWORK_CLI');
@@ -29,6 +30,24 @@ function test_friction()
   same_as_cli(r, sprintf('%s --polach 0.36,0.38,0.7 --xi-x 0.15', cli_base), cli);
   assert(abs(-r.Fx / (0.36 * 106.7e3) - (0.38 + 0.62 * exp(-0.7 * 0.15 * 10))) <= 2e-4);
   assert(abs(r.mu_static - 0.36) <= 1e-15);
+
+  % Friction memory reaches the exact model: CONTACT's MEMDST 3 um, MEM_S0
+  % 1 mm/s (tests/data/contact_tractcurv_memory.csv), the CLI's bits.
+  memory = {'model', 'exact', 'friction_law', 'exponential', 'mu', 0.14, 'mu_e1', 0.19, 's_h1', 1.25, ...
+            'memory_distance', 3e-6, 'memory_s0', 1e-3};
+  r = creepwork.solve(base{:}, memory{:}, 'xi_x', 0.004);
+  same_as_cli(r, sprintf(['%s --model exact --friction-law exponential --mu 0.14 --mu-e1 0.19 ' ...
+                          '--s-h1 1.25 --memory-distance 3e-6 --memory-s0 1e-3 --xi-x 0.004'], ...
+                         cli_base), cli);
+  r = creepwork.jacobian(base{:}, memory{:}, 'xi_x', 0.004);
+  [status, out] = system(sprintf(['%s solve %s --model exact --friction-law exponential ' ...
+                                  '--mu 0.14 --mu-e1 0.19 --s-h1 1.25 --memory-distance 3e-6 ' ...
+                                  '--memory-s0 1e-3 --xi-x 0.004 --jacobian 2>/dev/null'], ...
+                                 cli, cli_base));
+  assert(status == 0, out);
+  t = regexp(out, '"jacobian": \{\s*"Fx": \{\s*"xi_x": (-?[0-9][-+.eE0-9]*)', 'tokens', 'once');
+  assert(r.jacobian(1, 1) == str2double(t{1}), sprintf('dFx/dxi_x: %.17g (MEX) vs %s (CLI)', ...
+         r.jacobian(1, 1), t{1}));
 
   ok = {'a', 7e-3, 'b', 5e-3, 'N', 100e3, 'xi_x', 1e-3, 'fields', false};
   expect_error(@() creepwork.solve(ok{:}, law{:}), 'creepwork:CW_ERR_INVALID_INPUT', '\<V = 0');

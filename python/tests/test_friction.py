@@ -135,6 +135,29 @@ def test_exact_model_with_a_law(test_data_dir):
     assert after.px.tobytes() == new.px.tobytes()
 
 
+def test_exact_model_with_memory(test_data_dir):
+    """Friction memory reaches the exact model (CONTACT's MEMDST 3 um,
+    MEM_S0 1 mm/s with the exponential law; tests/data/contact_tractcurv_memory.csv):
+    every row within half CONTACT's last printed digit of Fx/(mu_s N); the
+    Jacobian's dFx/dxi_x at 2 % against central differences (1e-4)."""
+    with open(os.path.join(test_data_dir, "contact_tractcurv_memory.csv"), newline="") as f:
+        table = list(csv.DictReader(f))
+    assert len(table) == 6
+    memory = dict(EXACT_LAW, memory_distance=3e-6, memory_s0=1e-3)
+    with creepwork.Solver(GRID) as s:
+        for r in table:
+            res = s.solve(tractcurv(xi_x=float(r["CKSI"]), **memory), fields=False)
+            ref = r["FX_over_FSTAT_FN"]
+            assert res.Fx / (0.33 * N) == pytest.approx(float(ref), abs=half_unit(ref))
+        cold = dict(memory, tolerance=1e-12, warm_start=0)
+        J = s.jacobian(tractcurv(xi_x=0.02, **cold)).jacobian
+        h = 1e-5 * 0.02
+        up = s.solve(tractcurv(xi_x=0.02 + h, **cold), fields=False).Fx
+        down = s.solve(tractcurv(xi_x=0.02 - h, **cold), fields=False).Fx
+        assert J[0][0] > 0.0  # past the peak |Fx| falls (Fx < 0)
+        assert J[0][0] == pytest.approx((up - down) / (2 * h), rel=1e-4)
+
+
 @pytest.mark.parametrize("keywords, name", [
     (dict(friction_law="exponential", mu_e1=0.2, s_h1=1.0, V=0.0), "V"),
     (dict(friction_law="exponential", mu_e1=-0.2, s_h1=1.0), "mu_e1"),

@@ -7,7 +7,9 @@
  * area (the bar of test_core_exact_law); mu_min and mu_max against the law
  * at the exported slip speeds; full mode's work maps against W_macro; a
  * Coulomb solve after a law's on one handle gives a fresh handle's bits;
- * friction memory refused naming memory_distance. */
+ * with friction memory (MEMDST 3 um, MEM_S0 1 mm/s) CONTACT's rows of
+ * tests/data/contact_tractcurv_memory.csv on both grids, to every printed
+ * digit, and its Jacobian's xi_x column against central differences. */
 #include "capi_fixtures.h"
 #include "contact_csv.h"
 #include "tractcurv_case.h"
@@ -46,9 +48,11 @@ typedef struct {
     int ncon, nslip;
 } exp_row;
 
-static int read_rows(exp_row* rows, int max)
+static int read_rows(const char* file, exp_row* rows, int max)
 {
-    FILE* f = fopen(CW_TEST_DATA_DIR "/contact_tractcurv_exponential.csv", "r");
+    char path[1024];
+    snprintf(path, sizeof path, "%s/%s", CW_TEST_DATA_DIR, file);
+    FILE* f = fopen(path, "r");
     assert_non_null(f);
     char line[1024], *fields[40];
     assert_non_null(fgets(line, sizeof line, f));
@@ -85,20 +89,24 @@ static double digits(double ours, const char* printed)
     return fabs(ours - atof(printed)) / cw_printed_half_unit(printed);
 }
 
-/* Every row of CONTACT's table on grid g (gap: the Hertzian gap h): the
- * worst difference in halves of a printed digit; the contact and slip
- * areas element for element. */
-static double contact_rows(const cw_grid* g, const double* h)
+/* Every row of CONTACT's table in file (rows of them) on grid g (gap: the
+ * Hertzian gap h), with friction memory over memory_distance [m] (0: none,
+ * else MEM_S0 1 mm/s): the worst difference in halves of a printed digit;
+ * the contact and slip areas element for element. */
+static double contact_rows(const cw_grid* g, const double* h, const char* file, int rows_expected,
+                           double memory_distance)
 {
     static exp_row rows[MAX_ROWS];
-    const int n = read_rows(rows, MAX_ROWS);
-    assert_int_equal(n, 36);
+    const int n = read_rows(file, rows, MAX_ROWS);
+    assert_int_equal(n, rows_expected);
     cw_solver* s = NULL;
     assert_status(cw_solver_create(g, &s, NULL, 0), CW_OK);
     double worst = 0.0;
     for (int k = 0; k < n; ++k) {
         const exp_row* r = &rows[k];
         cw_params p = law_contact(r->cksi, r->ceta, r->cphi);
+        p.memory_distance = memory_distance;
+        p.memory_s0 = memory_distance > 0.0 ? 1e-3 : 0.0;
         if (h) {
             p.gap = h;
             p.gap_len = (size_t)g->nx * (size_t)g->ny;
@@ -123,7 +131,7 @@ static void contact_rows_on_the_uniform_grid(void** state)
 {
     (void)state;
     const cw_grid g = cw_tractcurv_grid();
-    const double worst = contact_rows(&g, NULL);
+    const double worst = contact_rows(&g, NULL, "contact_tractcurv_exponential.csv", 36, 0.0);
     printf("  uniform grid, 36 rows: worst %.3f of half a printed digit\n", worst);
     assert_true(worst <= 1.0);
 }
@@ -134,7 +142,7 @@ static void contact_rows_on_a_gap_grid(void** state)
     static double h[48 * 44];
     const cw_params p = law_contact(0.0, 0.0, 0.0);
     const cw_grid g = cw_tractcurv_gap_grid(&p, h);
-    const double worst = contact_rows(&g, h);
+    const double worst = contact_rows(&g, h, "contact_tractcurv_exponential.csv", 36, 0.0);
     printf("  gap grid, 36 rows: worst %.3f of half a printed digit\n", worst);
     assert_true(worst <= 1.0);
 }
@@ -259,9 +267,12 @@ static void coulomb_after_a_law_is_a_fresh_handles(void** state)
     }
 }
 
-/* Friction memory is FASTSIM's (friction_speed = local): the exact model
- * with a law refuses it naming memory_distance, on both grids. */
-static void memory_is_refused_by_name(void** state)
+/* Friction memory, CONTACT's MEMDST 3 um and MEM_S0 1 mm/s: its rows on
+ * the uniform grid and on the gap grid of the same Hertzian gap, every
+ * printed digit of Fx / (mu_s N) and the slip area; on both the Jacobian's
+ * dFx/dxi_x at 2 % (past the peak) against central differences of the
+ * solves (step 1e-5 xi, within 1e-4 of the column). */
+static void memory_rows_and_jacobian(void** state)
 {
     (void)state;
     static double h[48 * 44];
@@ -269,15 +280,38 @@ static void memory_is_refused_by_name(void** state)
     cw_grid grids[2];
     grids[0] = cw_tractcurv_grid();
     grids[1] = cw_tractcurv_gap_grid(&p, h);
-    p.memory_distance = 1e-3;
+    p.memory_distance = 3e-6;
+    p.memory_s0 = 1e-3;
+    p.xi_x = 0.02;
+    p.xi_y = 3e-4;
+    p.tolerance = 1e-12;
+    p.warm_start = 0;
     for (int gi = 0; gi < 2; ++gi) {
+        const double worst = contact_rows(&grids[gi], gi ? h : NULL,
+                                          "contact_tractcurv_memory.csv", 6, 3e-6);
+        printf("  memory, %s grid, 6 rows: worst %.3f of half a printed digit\n",
+               gi ? "gap" : "uniform", worst);
+        assert_true(worst <= 1.0);
         if (gi == 1) p.gap = h, p.gap_len = 48 * 44;
         cw_solver* s = NULL;
         assert_status(cw_solver_create(&grids[gi], &s, NULL, 0), CW_OK);
         cw_result r;
         cw_result_init(&r);
-        assert_status(cw_solver_solve(s, &p, CW_SOLVE_FORCES, &r), CW_ERR_INVALID_INPUT);
-        assert_names(cw_solver_last_error(s), "memory_distance");
+        double J[CW_JACOBIAN_LEN];
+        assert_status(cw_solver_solve_jacobian(s, &p, CW_SOLVE_FORCES, &r, J, CW_JACOBIAN_LEN),
+                      CW_OK);
+        double F[2];
+        for (int side = 0; side < 2; ++side) {
+            cw_params q = p;
+            q.xi_x += (side ? -1.0 : 1.0) * 1e-5 * p.xi_x;
+            assert_status(cw_solver_solve(s, &q, CW_SOLVE_FORCES, &r), CW_OK);
+            F[side] = r.Fx;
+        }
+        const double central = (F[0] - F[1]) / (2e-5 * p.xi_x);
+        printf("  memory, %s grid: dFx/dxi_x %.6g, central differences %.6g\n",
+               gi ? "gap" : "uniform", J[0], central);
+        assert_true(J[0] > 0.0); /* past the peak |Fx| falls (Fx < 0) */
+        assert_close(J[0], central, 1e-4, 0.0);
         cw_solver_destroy(s);
     }
 }
@@ -289,7 +323,7 @@ int main(void)
         cmocka_unit_test(contact_rows_on_a_gap_grid),
         cmocka_unit_test(range_and_work_maps),
         cmocka_unit_test(coulomb_after_a_law_is_a_fresh_handles),
-        cmocka_unit_test(memory_is_refused_by_name),
+        cmocka_unit_test(memory_rows_and_jacobian),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -354,7 +354,7 @@ static void spoil(int k, cw_params* p, cw_grid* g)
     case 11: p->memory_s0 = NAN; break;
     case 12: p->friction_speed = CW_FRICTION_SPEED_GLOBAL, p->memory_distance = 1e-3; break;
     case 13: p->model = CW_MODEL_CALIBRATED; break;
-    case 14: p->model = CW_MODEL_EXACT, p->memory_distance = 1e-3;
+    case 14: p->model = CW_MODEL_EXACT, p->memory_distance = 1e-3, p->memory_s0 = -1e-3;
              *g = cw_test_grid(CW_GRID_UNIFORM, 14, 12, 1.1); break;
     case 15: p->V = NAN; break; /* full mode: named as in forces mode */
     case 16: p->s_h1 = INFINITY; break;
@@ -382,7 +382,7 @@ static void bad_inputs_are_named(void** state)
         {"memory_s0 NaN", CW_ERR_INVALID_INPUT, "memory_s0", CW_SOLVE_FORCES},
         {"memory with global", CW_ERR_INVALID_INPUT, "memory_distance", CW_SOLVE_FORCES},
         {"calibrated", CW_ERR_INVALID_INPUT, "friction_law", CW_SOLVE_FORCES},
-        {"memory with exact", CW_ERR_INVALID_INPUT, "memory_distance", CW_SOLVE_FORCES},
+        {"memory_s0 < 0 with exact", CW_ERR_INVALID_INPUT, "memory_s0", CW_SOLVE_FORCES},
         {"V NaN, full mode", CW_ERR_INVALID_INPUT, "V", CW_SOLVE_FULL},
         {"s_h1 Inf", CW_ERR_INVALID_INPUT, "s_h1", CW_SOLVE_FORCES},
         {"global with exact", CW_ERR_INVALID_INPUT, "friction_speed", CW_SOLVE_FORCES},

@@ -6,7 +6,9 @@
 //    phi, N);
 //  - the gap-exact model given the grid's Hertzian gap: the same forces and
 //    creepage columns by another path, its own N column against its
-//    central differences.
+//    central differences;
+//  - with friction memory (CONTACT's MEMDST 3 um, MEM_S0 1 mm/s): central
+//    differences of the solver at 0.2, 0.4 and 2 %, every column.
 #include "core_test_support.hpp"
 #include "tractcurv_exact.hpp"
 #include "test_support.h"
@@ -75,6 +77,30 @@ void jacobian_across_the_peak(void**)
         assert_true(worst <= 1e-4);
         if (xi == 2e-2) assert_true(J.d[0][0] > 0.0); // past the peak |Fx| falls (Fx < 0)
         if (xi == 2e-3) assert_true(J.d[0][0] < 0.0);
+    }
+}
+
+// Under friction memory the tangents carry the chain mu_k(sigma_k, mu_ahead)
+// along each row (exact/steady_memory.cpp): every column against central
+// differences of the solver on both sides of the peak.
+void jacobian_under_memory(void**)
+{
+    cw::ExactModel m(cwtest::tractcurv_grid());
+    m.set_law(exponential_law(), kV);
+    m.set_friction_memory(3e-6, 1e-3);
+    for (double xi : {2e-3, 4e-3, 2e-2}) {
+        cw::ContactInput in = tractcurv_exact(xi, 3e-4, 0.1);
+        in.tolerance = 1e-13;
+        in.warm_start = false;
+        cw::Jacobian J;
+        m.solve_jacobian(in, cw::SolveMode::forces_only, J);
+        assert_true(m.info().memory_iterations >= 2);
+        const double scales[4] = {xi, 1e-3, 1.0, kN};
+        double worst = 0.0;
+        for (int c = 0; c < 4; ++c) worst = std::max(worst, column_error(m, in, J, c, scales[c]));
+        printf("  memory, xi %.3g: dFx/dxi_x / (mu_s N) = %+.4f, worst column error %.2g\n", xi,
+               J.d[0][0] / (0.33 * kN), worst);
+        assert_true(worst <= 1e-4);
     }
 }
 
@@ -169,6 +195,7 @@ int main()
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(jacobian_across_the_peak),
         cmocka_unit_test(gap_grid_meets_the_ellipse),
+        cmocka_unit_test(jacobian_under_memory),
     };
     return cmocka_run_group_tests(tests, nullptr, nullptr);
 }

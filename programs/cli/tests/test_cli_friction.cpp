@@ -5,8 +5,10 @@
  * law at every element in forces mode, at the global slip speed in full
  * mode), CONTACT's tractcurv series 4 at 2 % (tests/data/
  * contact_tractcurv.csv: Fx/(mu_s N) = -0.8444) is met, the exact model
- * with the law gives the C ABI's bits with every output, and every bad
- * friction input is refused naming its option.
+ * with the law gives the C ABI's bits with every output, with friction
+ * memory too (--memory-distance, --memory-s0: CONTACT's MEMDST 3 um, MEM_S0
+ * 1 mm/s, tests/data/contact_tractcurv_memory.csv), and every bad friction
+ * input is refused naming its option.
  *
  * usage: test_cli_friction <creepwork binary> <scratch dir> [cmocka filter] */
 #include <algorithm>
@@ -99,21 +101,34 @@ void friction_json_matches_library(void**)
 // its totals equal the C ABI's full solve bit for bit, --out writes the
 // fields, whose work map sums to W_macro, and
 // the row xi = 3e-3 meets CONTACT's printed Fx/(mu_s N) = -0.9840 to its digits.
-void exact_law_json_matches_library(void**)
+cw_params exact_law_params(double xi_x)
 {
-    cw_params p = tractcurv(3e-3);
+    cw_params p = tractcurv(xi_x);
     p.model = CW_MODEL_EXACT;
     p.exact_load = 0;
     p.friction_law = CW_FRICTION_EXPONENTIAL;
     p.mu = 0.14;
     p.mu_e1 = 0.19;
     p.s_h1 = 1.25;
+    return p;
+}
+
+// The same on the command line, and more.
+std::vector<std::string> exact_law_args(const char* xi_x, const std::vector<std::string>& more)
+{
+    return with({"solve", "--format", "json", "--a", "6.304e-3", "--b", "12.61e-3", "--N",
+                 "106700", "--grid", "uniform", "--nx", "48", "--ny", "44", "--box-scale", "1.1",
+                 "--V", "10", "--model", "exact", "--xi-x", xi_x, "--friction-law", "exponential",
+                 "--mu", "0.14", "--mu-e1", "0.19", "--s-h1", "1.25"},
+                more);
+}
+
+void exact_law_json_matches_library(void**)
+{
+    const cw_params p = exact_law_params(3e-3);
     const cw_result lib = library_solve(tractcurv_grid(), p, CW_SOLVE_FULL);
-    const std::vector<std::string> args = {
-        "solve", "--format", "json", "--a", "6.304e-3", "--b", "12.61e-3", "--N", "106700",
-        "--grid", "uniform", "--nx", "48", "--ny", "44", "--box-scale", "1.1", "--V", "10",
-        "--model", "exact", "--xi-x", "3e-3", "--friction-law", "exponential", "--mu", "0.14",
-        "--mu-e1", "0.19", "--s-h1", "1.25", "--out", path("exact_law"), "--no-plots"};
+    const std::vector<std::string> args =
+        exact_law_args("3e-3", {"--out", path("exact_law"), "--no-plots"});
     const Json j = parse_or_fail(cli_ok(args).out);
     expect_library_bits(j, lib);
     assert_true(j.num("W_macro") == lib.W_macro);
@@ -188,6 +203,36 @@ void layer_json_matches_library(void**)
     }
 }
 
+// The exact model with friction memory: --memory-distance and --memory-s0
+// reach it; its JSON equals the C ABI's solve of the same cw_params bit for
+// bit, and the row xi = 4e-3 meets CONTACT's printed Fx/(mu_s N) = -0.9887
+// to its digits; with --jacobian every entry is the C ABI's.
+void exact_memory_json_matches_library(void**)
+{
+    cw_params p = exact_law_params(4e-3);
+    p.memory_distance = 3e-6;
+    p.memory_s0 = 1e-3;
+    const cw_result lib = library_solve(tractcurv_grid(), p, CW_SOLVE_FORCES);
+    std::vector<std::string> args = exact_law_args(
+        "4e-3", {"--G", "82e9", "--nu", "0.28", "--memory-distance", "3e-6", "--memory-s0", "1e-3"});
+    expect_library_bits(parse_or_fail(cli_ok(args).out), lib);
+    assert_close(lib.Fx / (0.33 * 106700), -0.9887, 0.0, 0.5e-4);
+    args.push_back("--jacobian");
+    const Json j = parse_or_fail(cli_ok(args).out).at("jacobian");
+    cw_solver* s = nullptr;
+    const cw_grid g = tractcurv_grid();
+    assert_int_equal(cw_solver_create(&g, &s, nullptr, 0), CW_OK);
+    double J[CW_JACOBIAN_LEN];
+    cw_result r;
+    cw_result_init(&r);
+    assert_int_equal(cw_solver_solve_jacobian(s, &p, CW_SOLVE_FORCES, &r, J, CW_JACOBIAN_LEN), CW_OK);
+    cw_solver_destroy(s);
+    const char* rows[4] = {"Fx", "Fy", "Mz", "W_macro"};
+    const char* cols[4] = {"xi_x", "xi_y", "phi", "N"};
+    for (int row = 0; row < 4; ++row)
+        for (int c = 0; c < 4; ++c) assert_true(j.at(rows[row]).num(cols[c]) == J[4 * row + c]);
+}
+
 void bad_friction_inputs_are_named(void**)
 {
     const std::vector<std::string> law = {"--friction-law", "exponential", "--mu-e1", "0.2",
@@ -236,6 +281,7 @@ int main(int argc, char** argv)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(friction_json_matches_library),
         cmocka_unit_test(exact_law_json_matches_library),
+        cmocka_unit_test(exact_memory_json_matches_library),
         cmocka_unit_test(bad_friction_inputs_are_named),
         cmocka_unit_test(layer_json_matches_library),
     };
