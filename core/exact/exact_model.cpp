@@ -286,12 +286,12 @@ SolveTotals ExactModel::solve(const ContactInput& in, SolveMode mode)
         reject_input("tau_c0", setup_.yield * setup_.traction_scale,
                      "must be 0 with friction that depends on the temperature: the layer's "
                      "yield takes one coefficient");
+    std::vector<double>& g = fine.tangential.bound();
     if (loaded)
         set_bound(fine, fine.normal.pressure());
     else
-        std::fill(fine.tangential.bound().begin(), fine.tangential.bound().end(), 0.0);
-    scale_bounds(ElementFriction{factor_, nx_, setup_.direction < 0}, fine.tangential.bound().data(),
-                 nx_, ny_);
+        std::fill(g.begin(), g.end(), 0.0);
+    scale_bounds(ElementFriction{factor_, nx_, setup_.direction < 0}, g.data(), nx_, ny_);
     // (With no friction g is the contact set for slide_freely, not a bound.)
     set_rigid_slip(fine);
 
