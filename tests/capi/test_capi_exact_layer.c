@@ -292,6 +292,7 @@ static void implausible_units_are_warned(void** state)
     (void)state;
     const cw_grid g = cw_tractcurv_grid();
     cw_check c[8];
+    for (int k = 0; k < 8; ++k) cw_check_init(&c[k]);
     size_t found = 99;
     cw_params p = layer_contact(1e-3, 0.0, 0.0, 0);
     p.tau_c0 = 150e6;
