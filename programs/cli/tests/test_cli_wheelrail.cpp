@@ -37,11 +37,15 @@ std::vector<std::string> benchmark_args()
             "--roll", "-0.004376", "--Fz", "1e4", "--V", "2", "--pitch-rate", "-4.2748834"};
 }
 
-// The benchmark_args() wheel through the C ABI, solved for Fz = 10 kN.
-cw_wheelrail* solved_benchmark(cw_wheelrail_totals& t)
+// The benchmark_args() wheel through the C ABI (params: the defaults; the
+// left side always), solved for Fz = 10 kN at forward speed vs and pitch
+// rate vpitch.
+cw_wheelrail* solved_benchmark(cw_wheelrail_totals& t, const cw_wheelrail_params* params = nullptr,
+                               double vs = 2.0, double vpitch = -4.2748834)
 {
     cw_wheelrail_params p;
     cw_wheelrail_params_init(&p);
+    if (params) p = *params;
     p.side = CW_WHEELRAIL_LEFT;
     cw_wheelrail* w = nullptr;
     assert_int_equal(cw_wheelrail_create(&p, (g_data + "/MBench_UIC60_v3.prr").c_str(),
@@ -52,8 +56,8 @@ cw_wheelrail* solved_benchmark(cw_wheelrail_totals& t)
     m.y = 6.5e-3;
     m.yaw = 0.0156;
     m.roll = -0.004376;
-    m.vs = 2.0;
-    m.vpitch = -4.2748834;
+    m.vs = vs;
+    m.vpitch = vpitch;
     cw_wheelrail_totals_init(&t);
     assert_int_equal(cw_wheelrail_solve(w, &m, CW_WHEELRAIL_FORCE, 1e4, &t), CW_OK);
     return w;
@@ -477,25 +481,12 @@ void friction_law_matches_library(void**)
     assert_int_equal(cw_friction_polach(0.36, 0.38, 0.7, &law, nullptr, 0), CW_OK);
     cw_wheelrail_params p;
     cw_wheelrail_params_init(&p);
-    p.side = CW_WHEELRAIL_LEFT;
     p.friction_law = law.friction_law;
     p.mu = law.mu;
     p.mu_e1 = law.mu_e1;
     p.s_h1 = law.s_h1;
-    cw_wheelrail* w = nullptr;
-    assert_int_equal(cw_wheelrail_create(&p, (g_data + "/MBench_UIC60_v3.prr").c_str(),
-                                         (g_data + "/MBench_S1002_v3.prw").c_str(), &w, nullptr, 0),
-                     CW_OK);
-    cw_wheelrail_motion m;
-    cw_wheelrail_motion_init(&m);
-    m.y = 6.5e-3;
-    m.yaw = 0.0156;
-    m.roll = -0.004376;
-    m.vs = 10.0;
-    m.vpitch = -21.374417;
     cw_wheelrail_totals t;
-    cw_wheelrail_totals_init(&t);
-    assert_int_equal(cw_wheelrail_solve(w, &m, CW_WHEELRAIL_FORCE, 1e4, &t), CW_OK);
+    cw_wheelrail* w = solved_benchmark(t, &p, 10.0, -21.374417);
     cw_wheelrail_patch pa;
     cw_wheelrail_patch_init(&pa);
     assert_int_equal(cw_wheelrail_get_patch(w, 0, &pa), CW_OK);
