@@ -16,7 +16,15 @@ namespace creepwork {
 template <class T>
 inline T fp_opaque(T v)
 {
-#if defined(__GNUC__) && defined(__x86_64__)
+#if defined(__clang__) && defined(__x86_64__)
+    // clang checks a register constraint against the translation unit's
+    // ISA, not that of the AVX kernel the call is inlined into: a vector
+    // wider than SSE's passes through memory instead.
+    if constexpr (sizeof(T) > 16)
+        __asm__("" : "+m"(v));
+    else
+        __asm__("" : "+x"(v));
+#elif defined(__GNUC__) && defined(__x86_64__)
     __asm__("" : "+x"(v));
 #elif defined(__GNUC__) && defined(__aarch64__)
     __asm__("" : "+w"(v));
