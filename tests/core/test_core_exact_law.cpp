@@ -14,6 +14,7 @@
 #include "core_test_support.hpp"
 #include "tractcurv_exact.hpp"
 #include "test_support.h"
+#include "error_naming.hpp"
 
 #include "contact/error.hpp"
 #include "exact/exact_model.hpp"
@@ -28,22 +29,11 @@ namespace cw = creepwork;
 
 namespace {
 
+using cwtest::expect_error_naming;
+
 const double kN = cwtest::kTractcurvN, kV = cwtest::kTractcurvV;
 using cwtest::tractcurv_exact;
 cw::SlipSpeedLaw exponential_law() { return cwtest::tractcurv_exponential_law(); }
-
-// f throws Error(invalid_input) whose message starts with the input's name.
-template <class F>
-void expect_error_naming(F&& f, const char* name)
-{
-    try {
-        f();
-        fail_msg("accepted, expected an error naming %s", name);
-    } catch (const cw::Error& e) {
-        assert_true(e.kind() == cw::ErrorKind::invalid_input);
-        assert_true(std::string(e.what()).rfind(name, 0) == 0);
-    }
-}
 
 // |ours - printed| against half a unit of the last printed digit; returns
 // the worst ratio (<= 1: every digit).

@@ -19,6 +19,7 @@
 #include "jacobian_step_study.hpp"
 #include "tractcurv_exact.hpp"
 #include "test_support.h"
+#include "error_naming.hpp"
 
 #include "contact/error.hpp"
 #include "contact/kalker_coefficients.hpp"
@@ -34,6 +35,8 @@
 namespace cw = creepwork;
 
 namespace {
+
+using cwtest::expect_error_naming;
 
 const double kN = cwtest::kTractcurvN, kMu = 0.33;
 // tractcurv's series 2 layer: G3 = 8200 N/mm^2, h = 1.25 mm.
@@ -238,18 +241,6 @@ void work_map_balances(void**)
             assert_close(t.W_consistent, t.W_macro, 1e-9, 1e-300);
             assert_true(t.W_micro_paper > 0.0 && t.W_micro_paper <= t.W_macro * (1.0 + 1e-12));
         }
-}
-
-template <class F>
-void expect_error_naming(F&& f, const char* name)
-{
-    try {
-        f();
-        fail_msg("accepted, expected an error naming %s", name);
-    } catch (const cw::Error& e) {
-        assert_true(e.kind() == cw::ErrorKind::invalid_input);
-        if (std::string(e.what()).rfind(name, 0) != 0) fail_msg("%s", e.what());
-    }
 }
 
 void refusals_name_the_input(void**)
