@@ -144,6 +144,21 @@ void exact_law_json_matches_library(void**)
     assert_close(sum, lib.W_macro, 1e-9, 0.0);
 }
 
+// Each row's options, added to a partial-slip solve of an 80 kN circle,
+// are refused with exit status 2 and a message naming row.names.
+template <class Rows>
+void expect_each_refused(const Rows& bad)
+{
+    for (const auto& b : bad) {
+        std::vector<std::string> args = {"solve", "--a", "0.006", "--b", "0.006", "--N", "80000",
+                                         "--xi-x", "0.01"};
+        args.insert(args.end(), b.args.begin(), b.args.end());
+        std::string shown = "creepwork";
+        for (const std::string& a : args) shown += " " + a;
+        expect_refusal(cli(args), 2, b.names, shown);
+    }
+}
+
 // The exact model with an interface layer (CONTACT's tractcurv layer, G3 =
 // 8200 N/mm^2, h = 1.25 mm, and a yield of 150 MPa): the JSON equals the C
 // ABI's full solve bit for bit and echoes the layer; bad layer inputs are refused naming their option,
@@ -193,14 +208,7 @@ void layer_json_matches_library(void**)
         {{"--layer-h", "1e-3", "--layer-G", "8e9"}, "--layer-h"},
         {{"--model", "calibrated", "--tau-c0", "1.5e8"}, "--tau-c0"},
     };
-    for (const auto& b : bad) {
-        std::vector<std::string> args = {"solve", "--a", "0.006", "--b", "0.006", "--N", "80000",
-                                         "--xi-x", "0.01"};
-        args.insert(args.end(), b.args.begin(), b.args.end());
-        std::string shown = "creepwork";
-        for (const std::string& a : args) shown += " " + a;
-        expect_refusal(cli(args), 2, b.names, shown);
-    }
+    expect_each_refused(bad);
 }
 
 // The exact model with friction memory: --memory-distance and --memory-s0
@@ -263,14 +271,7 @@ void bad_friction_inputs_are_named(void**)
         {with(law, {"--V", "10", "--memory-s0", "-1"}), "--memory-s0"},
         {with(law, {"--V", "10", "--model", "calibrated"}), "--friction-law"},
     };
-    for (const auto& b : bad) {
-        std::vector<std::string> args = {"solve", "--a", "0.006", "--b", "0.006", "--N", "80000",
-                                         "--xi-x", "0.01"};
-        args.insert(args.end(), b.args.begin(), b.args.end());
-        std::string shown = "creepwork";
-        for (const std::string& a : args) shown += " " + a;
-        expect_refusal(cli(args), 2, b.names, shown);
-    }
+    expect_each_refused(bad);
 }
 
 } // namespace
