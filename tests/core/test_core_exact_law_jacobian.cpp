@@ -59,19 +59,27 @@ double column_error(cw::ExactModel& m, const cw::ContactInput& base, const cw::J
     return best;
 }
 
+// The Jacobian at tractcurv's creepage xi (with a lateral creepage and spin,
+// tolerance 1e-13, cold) into J; returns its worst column error.
+double worst_column_error(cw::ExactModel& m, double xi, cw::Jacobian& J)
+{
+    cw::ContactInput in = tractcurv_exact(xi, 3e-4, 0.1);
+    in.tolerance = 1e-13;
+    in.warm_start = false;
+    m.solve_jacobian(in, cw::SolveMode::forces_only, J);
+    const double scales[4] = {xi, 1e-3, 1.0, kN};
+    double worst = 0.0;
+    for (int c = 0; c < 4; ++c) worst = std::max(worst, column_error(m, in, J, c, scales[c]));
+    return worst;
+}
+
 void jacobian_across_the_peak(void**)
 {
     cw::ExactModel m(cwtest::tractcurv_grid());
     m.set_law(exponential_law(), kV);
     for (double xi : {2e-3, 4e-3, 2e-2}) {
-        cw::ContactInput in = tractcurv_exact(xi, 3e-4, 0.1);
-        in.tolerance = 1e-13;
-        in.warm_start = false;
         cw::Jacobian J;
-        m.solve_jacobian(in, cw::SolveMode::forces_only, J);
-        const double scales[4] = {xi, 1e-3, 1.0, kN};
-        double worst = 0.0;
-        for (int c = 0; c < 4; ++c) worst = std::max(worst, column_error(m, in, J, c, scales[c]));
+        const double worst = worst_column_error(m, xi, J);
         printf("  xi %.3g: dFx/dxi_x / (mu_s N) = %+.4f, worst column error %.2g\n", xi,
                J.d[0][0] / (0.33 * kN), worst);
         assert_true(worst <= 1e-4);
@@ -89,15 +97,9 @@ void jacobian_under_memory(void**)
     m.set_law(exponential_law(), kV);
     m.set_friction_memory(3e-6, 1e-3);
     for (double xi : {2e-3, 4e-3, 2e-2}) {
-        cw::ContactInput in = tractcurv_exact(xi, 3e-4, 0.1);
-        in.tolerance = 1e-13;
-        in.warm_start = false;
         cw::Jacobian J;
-        m.solve_jacobian(in, cw::SolveMode::forces_only, J);
+        const double worst = worst_column_error(m, xi, J);
         assert_true(m.info().memory_iterations >= 2);
-        const double scales[4] = {xi, 1e-3, 1.0, kN};
-        double worst = 0.0;
-        for (int c = 0; c < 4; ++c) worst = std::max(worst, column_error(m, in, J, c, scales[c]));
         printf("  memory, xi %.3g: dFx/dxi_x / (mu_s N) = %+.4f, worst column error %.2g\n", xi,
                J.d[0][0] / (0.33 * kN), worst);
         assert_true(worst <= 1e-4);
