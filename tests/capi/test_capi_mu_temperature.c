@@ -441,6 +441,19 @@ static void check_identity(const full_sliding* f, const cw_params* p, const char
     }
 }
 
+/* The same contact rolling towards -x (the model reads the caller's
+ * factors the other way round): the identity, and the mirror image's Fx
+ * within rtol of f's. */
+static void check_other_direction(cw_solver* s, const cw_params* p, const full_sliding* f,
+                                  double rtol, const char* what)
+{
+    cw_params m = *p;
+    m.rolling_direction = -1;
+    const full_sliding fm = solve_full_sliding(s, &m);
+    check_identity(&fm, &m, what);
+    assert_close(fm.r.Fx, f->r.Fx, rtol, 0.0);
+}
+
 /* FASTSIM takes mu(T): under Coulomb's law and under a local law of the
  * slip speed, the fixed point's identity in full sliding. */
 static void fastsim_fixed_point_in_full_sliding(void** state)
@@ -451,13 +464,7 @@ static void fastsim_fixed_point_in_full_sliding(void** state)
     p.model = CW_MODEL_FASTSIM;
     const full_sliding c = solve_full_sliding(s, &p);
     check_identity(&c, &p, "FASTSIM, Coulomb");
-    /* Rolling towards -x: the march runs the other way through the
-     * caller's factors; the contact is the mirror image, the same Fx. */
-    cw_params m = p;
-    m.rolling_direction = -1;
-    const full_sliding cm = solve_full_sliding(s, &m);
-    check_identity(&cm, &m, "FASTSIM, Coulomb, rolling towards -x");
-    assert_close(cm.r.Fx, c.r.Fx, 1e-12, 0.0);
+    check_other_direction(s, &p, &c, 1e-12, "FASTSIM, Coulomb, rolling towards -x");
     /* mu_min, mu_max: the factors' range, between L=6's ends. */
     assert_true(c.r.mu_static == FREF);
     assert_true(c.r.mu_min >= FREF - 0.19 && c.r.mu_max <= FREF && c.r.mu_min < c.r.mu_max);
@@ -489,12 +496,7 @@ static void gap_exact_fixed_point_in_full_sliding(void** state)
     pg.gap_len = N;
     const full_sliding fg = solve_full_sliding(g, &pg);
     check_identity(&fg, &pg, "exact, gap grid");
-    /* Rolling towards -x: the box read mirrored; the mirror image's Fx. */
-    cw_params pm = pg;
-    pm.rolling_direction = -1;
-    const full_sliding fm = solve_full_sliding(g, &pm);
-    check_identity(&fm, &pm, "exact, gap grid, rolling towards -x");
-    assert_close(fm.r.Fx, fg.r.Fx, 1e-9, 0.0);
+    check_other_direction(g, &pg, &fg, 1e-9, "exact, gap grid, rolling towards -x");
     cw_solver* u = euro_solver();
     const full_sliding fu = solve_full_sliding(u, &p);
     check_identity(&fu, &p, "exact, uniform grid");
