@@ -9,7 +9,9 @@
 // to rounding with the exported slip). Every element slides. Models:
 // FASTSIM on the uniform grid (Coulomb's law; the rational law at each
 // element's slip speed), the exact model on the gap grid (Coulomb's law).
-// Without factors the next solve is bitwise a fresh solver's.
+// Without factors the next solve is bitwise a fresh solver's. The gap exact
+// model's Jacobian holds the factors (its N column against central
+// differences).
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -158,6 +160,26 @@ void gap_exact_takes_factors(void**)
     }
     in.warm_start = false;
     check_plain(s, g, in);
+    // The Jacobian holds the factors: its N column in partial slip against
+    // central differences of solves with the same factors (steps 1e-5 N,
+    // no element entering or leaving contact or slip; agreement 1e-6,
+    // measured 5e-8: the differences' truncation and the solves' tolerance).
+    in.xi_x = 2e-3;
+    in.rolling_direction = 1;
+    const std::vector<double> f = factors();
+    s.set_friction_factors(f.data());
+    cw::Jacobian J;
+    s.solve_jacobian(in, cw::SolveMode::forces_only, J);
+    const double step = 1e-5 * in.normal_force;
+    cw::ContactInput up = in, down = in;
+    up.normal_force += step;
+    down.normal_force -= step;
+    const double fu = s.solve(up, cw::SolveMode::forces_only).Fx;
+    const double fd = s.solve(down, cw::SolveMode::forces_only).Fx;
+    s.set_friction_factors(nullptr);
+    const double central = (fu - fd) / (2.0 * step);
+    printf("  gap exact dFx/dN with factors: %.8g, central differences %.8g\n", J.d[0][3], central);
+    assert_close(J.d[0][3], central, 1e-6, 0.0);
 }
 
 } // namespace
