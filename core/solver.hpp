@@ -90,9 +90,9 @@ public:
     // Element-wise factors on the friction coefficient of the following
     // solves (contact/friction_law.hpp: nx*ny values >= 0 at [i + j*nx],
     // copied; friction that depends on the temperature), or none (null, the
-    // default: every solve bitwise without). The exact model on the
-    // ellipse's uniform grid takes them; another model's solve refuses them
-    // by name. Under Coulomb's law the totals' mu_min, mu_max are then the
+    // default: every solve bitwise without). The exact model on every grid
+    // and FASTSIM on the ellipse's grids (Coulomb's law or a local law) take
+    // them; another model's solve refuses them by name. Under Coulomb's law the totals' mu_min, mu_max are then the
     // range of mu times the factor over the slipping elements. Allocates on
     // the first call only.
     void set_friction_factors(const double* factor);

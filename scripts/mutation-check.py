@@ -818,6 +818,30 @@ MUTANTS += [
          file="capi/capi_surface.cpp",
          old="            fy = totals.Fy;", new="            fy = totals.Fx;", tests=MU_T),
 ]
+# mu(T) in FASTSIM and in the exact model on a gap grid: the element-wise
+# factors against each element's bound, the fixed point's identity and the
+# CLI's runs.
+MU_T_MODELS = ["test_core_friction_factors", "test_capi_mu_temperature",
+               "cli_surface_mu_T_fastsim", "cli_surface_mu_T_on_a_gap_grid"]
+MUTANTS += [
+    dict(id="mu-t-march-unscaled", what="FASTSIM's march ignores the element-wise factors",
+         file="core/march/march_model.cpp",
+         old="        bound_ = factored_.data();", new="", tests=MU_T_MODELS),
+    dict(id="mu-t-march-mirror", what="FASTSIM reads the factors with x the wrong way round",
+         file="core/march/march_model.cpp",
+         old="        const ElementFriction f{factor_, geometry_.nx, setup_.direction > 0};",
+         new="        const ElementFriction f{factor_, geometry_.nx, setup_.direction < 0};",
+         tests=MU_T_MODELS),
+    dict(id="mu-t-gap-unscaled", what="the gap exact model ignores the element-wise factors",
+         file="core/gap/gap_exact_model.cpp",
+         old="    scale_bounds(box_friction(), g.data(), fine.nx, fine.ny);", new="",
+         tests=MU_T_MODELS),
+    dict(id="mu-t-gap-box", what="the gap exact model reads the factors from the grid's corner, "
+         "not the box's", file="core/gap/gap_exact_model.hpp",
+         old="        return ElementFriction{factor_, nx_, setup_.direction < 0, box_i0_, box_j0_};",
+         new="        return ElementFriction{factor_, nx_, setup_.direction < 0, 0, box_j0_};",
+         tests=MU_T_MODELS),
+]
 # ------------------------------------------------- end temperature, damage
 
 # ---------------------------------------------------------------- progress

@@ -68,7 +68,8 @@ public:
             throw Error(ErrorKind::invalid_input,
                         "mu_T: " + name_ +
                             " takes no friction that varies element by element (the exact "
-                            "model on the ellipse's uniform grid does)");
+                            "model on every grid and FASTSIM on the ellipse's grids with "
+                            "Coulomb's law or friction_speed = local do)");
     }
     // Friction memory under a law of the slip speed for the next solves: the
     // characteristic distance d_c [m] (0: none) and s0 [m/s], validated.

@@ -65,27 +65,43 @@ inline double traction_bound(const Law& law, double pressure, double slip_speed 
 // of the surface (the temperature, thermal/friction_temperature.hpp). Element
 // k's coefficient is factor[k] mu(s), its bound factor[k] mu(s) p. factor
 // holds nx*ny values >= 0 at [i + j*nx] in the caller's layout; a model
-// whose x runs mirrored (rolling_direction -1) reads element i' = nx - 1 - i.
+// whose x runs mirrored against the caller's reads element i' = nx - 1 - i
+// (the exact models for rolling_direction -1, the march for +1: it starts
+// at the leading edge).
 // Without factors (null) the bound is the law's alone, bitwise.
 struct ElementFriction {
     const double* factor = nullptr;
     int nx = 0;
     bool mirrored = false;
+    // Where the model's element (0, 0) lies in its whole grid (a model that
+    // solves on a box of the grid, the gap grid's exact model).
+    int i0 = 0, j0 = 0;
     bool active() const { return factor != nullptr; }
     // Element (i, j) of the model's layout.
     double at(int i, int j) const
     {
-        return factor[static_cast<std::size_t>(mirrored ? nx - 1 - i : i) + static_cast<std::size_t>(nx) * j];
+        const int g = i0 + i;
+        return factor[static_cast<std::size_t>(mirrored ? nx - 1 - g : g) +
+                      static_cast<std::size_t>(nx) * (j0 + j)];
     }
 };
 
-// Scales the bounds g[i + nx j] (nx by ny, the model's layout) by the
-// element-wise factors; nothing without them.
-inline void scale_bounds(const ElementFriction& f, double* g, int nx, int ny)
+// Scales the bounds of elements (i, j), i < nx, j < ny of the model's
+// layout, stored at g[i step_i + j step_j], by the element-wise factors;
+// nothing without them.
+inline void scale_bounds(const ElementFriction& f, double* g, int nx, int ny, std::size_t step_i,
+                         std::size_t step_j)
 {
     if (!f.active()) return;
     for (int j = 0; j < ny; ++j)
-        for (int i = 0; i < nx; ++i) g[i + static_cast<std::size_t>(nx) * j] *= f.at(i, j);
+        for (int i = 0; i < nx; ++i)
+            g[static_cast<std::size_t>(i) * step_i + step_j * static_cast<std::size_t>(j)] *=
+                f.at(i, j);
+}
+// The same for g[i + nx j] (the exact models).
+inline void scale_bounds(const ElementFriction& f, double* g, int nx, int ny)
+{
+    scale_bounds(f, g, nx, ny, 1, static_cast<std::size_t>(nx));
 }
 
 // ---- the vector form (the march kernels, W strips at once)

@@ -27,6 +27,11 @@ public:
                                Jacobian& jacobian) override;
     // mu(w) of the last solve, for both.
     bool friction_range(double& mu_min, double& mu_max) const override;
+    // One mu for the whole contact: element-wise factors are refused by name.
+    void set_friction_factors(const double* factor) override
+    {
+        ContactModel::set_friction_factors(factor);
+    }
 
 private:
     ContactInput effective(const ContactInput& input);

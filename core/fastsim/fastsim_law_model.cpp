@@ -163,7 +163,7 @@ void FastsimLawModel::march_with_memory()
     const MarchGeometry& geo = geometry();
     MarchState& st = march_state();
     const ModelSetup& s = setup();
-    const double* bound = geo.shape(s.pressure).data();
+    const double* bound = march_bound(); // with the element-wise factors
     const double mu_s = static_friction(law_);
     const double T = s.traction_scale; // traction unit of q' [Pa]
     mu_min_ = mu_max_ = mu_s;

@@ -35,6 +35,9 @@ public:
     // the previous element's mu and dt = h / V, adhering elements' too
     // (their s is 0). Throws Error(invalid_input) naming the input.
     void set_memory(const FrictionMemory& memory);
+    // Element-wise factors on mu (contact/friction_law.hpp): each element's
+    // bound is its factor times mu(s) p; the caller keeps them.
+    void set_friction_factors(const double* factor) override { take_friction_factors(factor); }
 
     // input.mu is not read: the traction unit is the law's static
     // coefficient. Full mode: the work of every element from the march's

@@ -24,6 +24,9 @@ public:
     // are bitwise those of solve().
     SolveTotals solve_jacobian(const ContactInput& input, SolveMode mode,
                                Jacobian& jacobian) override;
+    // Element-wise factors on mu (contact/friction_law.hpp): each element's
+    // bound is its factor times mu p; the caller keeps them.
+    void set_friction_factors(const double* factor) override { take_friction_factors(factor); }
 
 private:
     SolveTotals solve(const ContactInput& input, SolveMode mode, Jacobian* jacobian);

@@ -43,6 +43,7 @@ SolveTotals GapExactModel::solve_jacobian(const ContactInput& in, SolveMode mode
         for (int i = 0; i < fine.nx; ++i)
             dg_[i + static_cast<size_t>(fine.nx) * j] =
                 dp_dN_[box_i0_ + i + static_cast<size_t>(nx_) * (box_j0_ + j)] / s.p_ref;
+    scale_bounds(box_friction(), dg_.data(), fine.nx, fine.ny); // the factors held
 
     // d(rolling-frame sums of q: x, y, x qy - y qx [m])/d(s.xi, s.eta, s.phi, N)
     auto x = [&](int i) { return fine.x0 + i * fine.dx; };

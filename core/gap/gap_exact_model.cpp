@@ -347,6 +347,7 @@ SolveTotals GapExactModel::solve(const ContactInput& in, SolveMode mode)
             const double p = pressure[box_i0_ + i + static_cast<size_t>(nx_) * (box_j0_ + j)];
             g[i + static_cast<size_t>(fine.nx) * j] = s.loaded ? p / p_ref : 0.0;
         }
+    scale_bounds(box_friction(), g.data(), fine.nx, fine.ny);
     set_rigid_slip(fine);
     const bool trivial = !s.loaded || !(s.traction_scale > 0.0);
     const bool rolling_freely = s.xi == 0.0 && s.eta == 0.0 && s.phi == 0.0;

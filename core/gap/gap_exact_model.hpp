@@ -36,6 +36,7 @@
 
 #include "contact/contact_model.hpp"
 #include "contact/fields.hpp"
+#include "contact/friction_law.hpp"
 #include "contact/params.hpp"
 #include "exact/creepage_history.hpp"
 #include "exact/exact_law.hpp"
@@ -95,6 +96,10 @@ public:
     {
         return law_.friction_range(info_, mu_min, mu_max);
     }
+    // Element-wise factors on mu (contact/friction_law.hpp, the caller's
+    // layout, kept by the caller): the fine bound is each element's factor
+    // times mu p (the coarse levels sample it); the Jacobian holds them.
+    void set_friction_factors(const double* factor) override { factor_ = factor; }
     // The interface layer's elastic compliance layer_h / layer_G in every
     // level's operator (its yield, tau_c0, is refused by name).
     bool takes_interface_layer() const override { return true; }
@@ -151,6 +156,12 @@ private:
     GapExactSolveInfo info_;
     bool has_previous_ = false;
     ExactLaw law_;
+    const double* factor_ = nullptr; // element-wise friction factors, the caller's
+    // The factors on the box's elements (rolling frame).
+    ElementFriction box_friction() const
+    {
+        return ElementFriction{factor_, nx_, setup_.direction < 0, box_i0_, box_j0_};
+    }
 
     // The last solve (rolling frame).
     struct Setup {

@@ -4,6 +4,7 @@
 #include <utility>
 
 #include "contact/error.hpp"
+#include "contact/friction_law.hpp"
 #include "contact/fp_safe.hpp"
 #include "contact/hertz.hpp"
 
@@ -19,7 +20,7 @@ MarchModel::MarchModel(std::shared_ptr<const ContactGrid> grid)
 {
     state_.resize(grid_->size(), grid_->ny());
     work_.resize(grid_->size(), grid_->ny());
-    bound_ = geometry_.shape(PressureKind::parabolic).data();
+    bound_ = pressure_ = geometry_.shape(PressureKind::parabolic).data();
 }
 
 void MarchModel::set_kernel_isa(KernelIsa isa)
@@ -33,8 +34,17 @@ void MarchModel::set_kernel_isa(KernelIsa isa)
 void MarchModel::begin(const ModelSetup& setup, const double* bound, double bound_max)
 {
     setup_ = setup;
-    bound_ = bound;
+    bound_ = pressure_ = bound;
     bound_max_ = bound_max;
+    if (factor_) {
+        // Element m of strip j is the caller's element (m, j) read mirrored
+        // when the march starts at +x (solved(): mirrored = direction > 0).
+        const ElementFriction f{factor_, geometry_.nx, setup_.direction > 0};
+        factored_.assign(bound, bound + geometry_.inside.size());
+        scale_bounds(f, factored_.data(), geometry_.nx, grid_->ny(),
+                     static_cast<std::size_t>(geometry_.stride), 1);
+        bound_ = factored_.data();
+    }
     set_rigid_slip(*grid_, setup_.kin, state_, 0, grid_->ny());
 }
 
@@ -108,7 +118,7 @@ SolvedContact MarchModel::solved() const
     c.layout = SolvedLayout::strips;
     c.mirrored = setup_.direction > 0; // the march starts at the leading edge
     c.direction = setup_.direction;
-    c.pressure = bound_;
+    c.pressure = pressure_;
     c.pressure_scale = setup_.pressure_scale;
     c.traction_scale = setup_.traction_scale;
     c.work_paper = work_.paper.data();

@@ -12,6 +12,7 @@
 #pragma once
 
 #include <memory>
+#include <vector>
 
 #include "contact/contact_grid.hpp"
 #include "contact/contact_model.hpp"
@@ -42,8 +43,16 @@ protected:
     // kernels' layout, in units of setup.pressure_scale; largest value
     // bound_max), which must outlive the solve's exports. Sets every
     // strip's rigid slip from setup.kin (march_state().wx, wy: a model may
-    // adjust them before marching).
+    // adjust them before marching). With element-wise friction factors
+    // (take_friction_factors) the march's bound is bound times each
+    // element's factor and bound stays the pressure the fields report.
     void begin(const ModelSetup& setup, const double* bound, double bound_max);
+    // The element-wise factors on the coefficient of the next solves
+    // (contact/friction_law.hpp, ElementFriction; null: none), for a model
+    // whose set_friction_factors takes them.
+    void take_friction_factors(const double* factor) { factor_ = factor; }
+    // The march's traction bound of this solve (begin()'s, with the factors).
+    const double* march_bound() const { return bound_; }
     // The plain march, or the march with the work of every element (full mode).
     void march();
     void march_with_work();
@@ -73,8 +82,11 @@ private:
     MarchState state_;
     WorkState work_;
     ModelSetup setup_;
-    const double* bound_ = nullptr;
+    const double* bound_ = nullptr;    // the march's
+    const double* pressure_ = nullptr; // begin()'s bound: the pressure shape
     double bound_max_ = 0;
+    const double* factor_ = nullptr;   // the caller's, or null
+    std::vector<double> factored_;     // bound times the factors (kernels' layout)
     KernelIsa isa_ = KernelIsa::baseline;
     DiscreteLoad load_;
 };

@@ -39,14 +39,7 @@ int command_solve(int argc, char** argv, int first)
 
     ContactSolver solver(c.grid);
     Solution s;
-    SurfaceOutput post;
-    if (surface.mu_T()) { // the temperature's fixed-point loop solves
-        post = solve_surface_mu_T(solver.handle(), c.params, surface);
-        s = read_solution(solver.handle(), c.params, solver.grid());
-    } else {
-        s = solver.solve_full(c.params);
-        post = compute_surface(solver.handle(), surface);
-    }
+    const SurfaceOutput post = solve_with_surface(solver, c.params, surface, s);
     print_notes(c);
     for (const std::string& w : surface.warnings) std::fprintf(stderr, "creepwork: %s\n", w.c_str());
     JsonObject json = result_json(s.result, s.params, s.grid, c.units);

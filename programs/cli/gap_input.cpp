@@ -415,16 +415,13 @@ int command_solve_gap(const ParsedOptions& opts)
     for (const std::string& w : plausibility_warnings(g.grid, p, OptionSource(opts), file))
         c.notes.push_back("warning: " + w);
     const SurfaceRequest surface = read_surface_request(opts, p.rolling_direction, p.V);
-    if (surface.mu_T())
-        throw usage_error("--mu-T", "runs on the exact model on the ellipse's uniform grid, not "
-                                    "on a gap grid (--gap)");
     const std::string out = opts.text("out", "");
     if (!out.empty()) check_output_target(out, "--out", opts.has("force"));
 
     ContactSolver solver(g.grid);
-    const Solution s = solver.solve_full(p);
+    Solution s;
+    const SurfaceOutput post = solve_with_surface(solver, p, surface, s);
     const std::vector<cw_patch> patches = solver.patches();
-    const SurfaceOutput post = compute_surface(solver.handle(), surface);
     print_notes(c);
     for (const std::string& w : surface.warnings) std::fprintf(stderr, "creepwork: %s\n", w.c_str());
     JsonObject json = gap_json(s, patches, file, c.units);

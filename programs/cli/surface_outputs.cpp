@@ -252,6 +252,8 @@ SurfaceOutput compute_surface(const cw_solver* solver, const SurfaceRequest& req
     return o;
 }
 
+namespace {
+
 SurfaceOutput solve_surface_mu_T(cw_solver* solver, const cw_params& params,
                                  const SurfaceRequest& request)
 {
@@ -269,6 +271,21 @@ SurfaceOutput solve_surface_mu_T(cw_solver* solver, const cw_params& params,
         rejected(st, cw_temperature_last_error(t.get()), "cw_temperature_solve");
     read_temperatures(t.get(), element_count(solver), o);
     compute_damage(solver, request, o);
+    return o;
+}
+
+} // namespace
+
+SurfaceOutput solve_with_surface(ContactSolver& solver, const cw_params& params,
+                                 const SurfaceRequest& request, Solution& s)
+{
+    if (!request.mu_T()) {
+        s = solver.solve_full(params);
+        return compute_surface(solver.handle(), request);
+    }
+    // The temperature's fixed-point loop solves.
+    SurfaceOutput o = solve_surface_mu_T(solver.handle(), params, request);
+    s = read_solution(solver.handle(), params, solver.grid());
     return o;
 }
 

@@ -10,6 +10,7 @@
 
 #include <creepwork/creepwork.h>
 
+#include "contact_solver.hpp"
 #include "json.hpp"
 #include "options.hpp"
 
@@ -57,11 +58,12 @@ struct SurfaceOutput {
 // CliError(kExitUsage) with the library's message and the options it names.
 SurfaceOutput compute_surface(const cw_solver* solver, const SurfaceRequest& request);
 
-// Solves params with friction mu(T) (request.mu_T(), through
-// cw_temperature_solve on solver) and computes the rest of the request on
-// that solve. Throws as compute_surface.
-SurfaceOutput solve_surface_mu_T(cw_solver* solver, const cw_params& params,
-                                 const SurfaceRequest& request);
+// Solves params in full mode into s and computes the request on that
+// solve: with friction mu(T) (request.mu_T()) through cw_temperature_solve,
+// the solve and its temperatures in one loop. Throws as compute_surface,
+// and as ContactSolver::solve_full.
+SurfaceOutput solve_with_surface(ContactSolver& solver, const cw_params& params,
+                                 const SurfaceRequest& request, Solution& s);
 
 // T_max_1, T_max_2 [deg C], T_max_x, T_max_y [m] (the hotter body's hottest
 // contact element), temperature_iterations; rcf_index_max, FI_surf,

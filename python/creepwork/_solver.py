@@ -240,7 +240,8 @@ class Solver(Handle):
         temperature (cw_temperature_solve, doc/theory/temperature.md): mu_T
         the points (T [deg C], mu) of mu piecewise linear in the rail's
         temperature, e.g. [(0, 0.33), (400, 0.14)] (CONTACT's L=6); params
-        and keywords as solve() (model="exact" on a uniform grid);
+        and keywords as solve() (model="exact", or "fastsim" on the
+        ellipse's grids);
         temperature the keywords of Temperature.compute (rolling_speed
         defaults to V); tolerance and max_iterations those of the loop.
         Returns (Result with fields, TemperatureResult whose iterations are

@@ -197,6 +197,6 @@ def test_mu_of_temperature_errors_name_the_entry():
                          **EURO)
         with pytest.raises(creepwork.InvalidInputError, match="mu_T"):
             s.solve_mu_T([(0.0, 0.33), (400.0, 0.14)], temperature=EURO_TEMPERATURE,
-                         **dict(EURO, model="fastsim"))
+                         **dict(EURO, model="calibrated"))
         with pytest.raises(creepwork.NoSolutionError):
             s.result()

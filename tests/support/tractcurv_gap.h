@@ -1,7 +1,7 @@
 /* The tractcurv contact (tractcurv_case.h) as a contact of any shape: a gap
  * grid over the uniform grid's box holding Hertz's gap of its semi-axes, for
  * the exact model's tests on a gap grid (test_capi_exact_law,
- * test_capi_exact_layer). */
+ * test_capi_exact_layer, and with another uniform grid test_capi_mu_temperature). */
 #ifndef CREEPWORK_TRACTCURV_GAP_H
 #define CREEPWORK_TRACTCURV_GAP_H
 
@@ -26,18 +26,17 @@ static inline void cw_elliptic_KE(double k, double* K, double* E)
     *E = *K * (1.0 - sum);
 }
 
-/* The gap grid over the uniform grid's box (48 x 44 over 1.1 a, 1.1 b)
- * holding Hertz's gap A x^2 + B y^2 of the semi-axes a < b under N
- * (Johnson eqs. 4.38-4.39, as hertz_from_semi_axes): h receives 48 * 44
- * values. */
-static inline cw_grid cw_tractcurv_gap_grid(const cw_params* p, double* h)
+/* The gap grid over uniform grid u's box (u.nx x u.ny elements over
+ * u.box_scale times the semi-axes, so the same element centres) holding
+ * Hertz's gap A x^2 + B y^2 of the semi-axes a < b under N (Johnson eqs.
+ * 4.38-4.39, as hertz_from_semi_axes): h receives u.nx * u.ny values. */
+static inline cw_grid cw_hertz_gap_grid(const cw_grid* u, const cw_params* p, double* h)
 {
-    const cw_grid u = cw_tractcurv_grid();
-    cw_grid g = cw_test_grid(CW_GRID_GAP, u.nx, u.ny, 1.0);
-    g.dx = 2.0 * u.box_scale * p->a / u.nx;
-    g.dy = 2.0 * u.box_scale * p->b / u.ny;
-    g.x0 = -u.box_scale * p->a + 0.5 * g.dx;
-    g.y0 = -u.box_scale * p->b + 0.5 * g.dy;
+    cw_grid g = cw_test_grid(CW_GRID_GAP, u->nx, u->ny, 1.0);
+    g.dx = 2.0 * u->box_scale * p->a / u->nx;
+    g.dy = 2.0 * u->box_scale * p->b / u->ny;
+    g.x0 = -u->box_scale * p->a + 0.5 * g.dx;
+    g.y0 = -u->box_scale * p->b + 0.5 * g.dy;
     const double small = p->a, big = p->b, k = sqrt(1.0 - (small / big) * (small / big));
     double K, E;
     cw_elliptic_KE(k, &K, &E);
@@ -50,6 +49,14 @@ static inline cw_grid cw_tractcurv_gap_grid(const cw_params* p, double* h)
             h[i + g.nx * j] = A * x * x + B * y * y;
         }
     return g;
+}
+
+/* The gap grid over the tractcurv uniform grid's box (48 x 44 over 1.1 a,
+ * 1.1 b) holding Hertz's gap: h receives 48 * 44 values. */
+static inline cw_grid cw_tractcurv_gap_grid(const cw_params* p, double* h)
+{
+    const cw_grid u = cw_tractcurv_grid();
+    return cw_hertz_gap_grid(&u, p, h);
 }
 
 #endif

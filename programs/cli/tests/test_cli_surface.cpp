@@ -89,9 +89,8 @@ void surface_matches_library(void**)
     cw_solver_destroy(s);
 }
 
-// CONTACT's example ertz_temperature, case 1, through --gap: its grid as a
-// gap file, CONTACT's discretisation: 166.8 deg C (its printed MAX(T1,T2)).
-void surface_contact_example(void**)
+// CONTACT's example ertz_temperature's grid as a gap file.
+std::string ertz_gap_file()
 {
     std::string gap = "x_m,y_m,h_m\n";
     char line[96];
@@ -102,14 +101,62 @@ void surface_contact_example(void**)
                           1.015 * x * x + 0.4215 * y * y);
             gap += line;
         }
-    const std::string file = scratch_file("ertz.csv", gap);
-    const Run r = cli_ok({"solve", "--gap", file, "--N", "1e5", "--mu", "0.3", "--G", "82e9",
-                          "--nu", "0.28", "--xi-x", "-0.03333", "--rolling-direction", "-1",
-                          "--temperature", "--speed", "30", "--T0-1", "0", "--T0-2", "0",
-                          "--temperature-discretisation", "contact", "--format", "json"});
+    return scratch_file("ertz.csv", gap);
+}
+
+// Its case 1: full sliding at 1 m/s with mu = 0.3, V = 30 m/s towards -x.
+std::vector<std::string> ertz_case(const std::string& file)
+{
+    return {"solve", "--gap", file, "--N", "1e5", "--mu", "0.3", "--G", "82e9",
+            "--nu", "0.28", "--xi-x", "-0.03333", "--rolling-direction", "-1",
+            "--temperature", "--speed", "30", "--T0-1", "0", "--T0-2", "0",
+            "--temperature-discretisation", "contact", "--format", "json"};
+}
+
+// CONTACT's example ertz_temperature, case 1, through --gap: its grid as a
+// gap file, CONTACT's discretisation: 166.8 deg C (its printed MAX(T1,T2)).
+void surface_contact_example(void**)
+{
+    const Run r = cli_ok(ertz_case(ertz_gap_file()));
     const Json j = parse_or_fail(r.out);
     assert_close(std::fmax(j.num("T_max_1"), j.num("T_max_2")), 166.8, 0, 0.1);
     assert_string_equal(j.at("temperature_discretisation").string.c_str(), "contact");
+}
+
+// --mu-T on a gap grid (the exact model): the Ertz case in full sliding
+// with mu falling from 0.3 at 0 deg C to 0.2 at 200 deg C. Its fixed point
+// lies between the ends: cooler than Coulomb's 0.3 (166.8 deg C, heat in
+// proportion to mu) and hotter than 0.2 would make it (2/3 of that), and
+// |Fx| within (0.2, 0.3) N; the loop takes several passes. FASTSIM on a
+// gap grid refuses --mu-T by name.
+void surface_mu_T_on_a_gap_grid(void**)
+{
+    const std::string file = ertz_gap_file();
+    const Json j = parse_or_fail(
+        cli_ok(with(ertz_case(file), {"--model", "exact", "--mu-T", "0:0.3,200:0.2"})).out);
+    const double t = std::fmax(j.num("T_max_1"), j.num("T_max_2"));
+    assert_true(t < 166.8 && t > 166.8 * 2.0 / 3.0);
+    assert_true(std::fabs(j.num("Fx")) > 0.2 * 1e5 && std::fabs(j.num("Fx")) < 0.3 * 1e5);
+    assert_true(j.num("temperature_iterations") > 2);
+    const Run r = cli(with(ertz_case(file), {"--model", "fastsim", "--mu-T", "0:0.3,200:0.2"}));
+    expect_refusal(r, 2, "--mu-T", "--mu-T with FASTSIM on a gap grid");
+}
+
+// --mu-T with FASTSIM (Hertz's pressure): CONTACT's euro_tractcurv at 25 %
+// creepage, L=6 falling by 0.19 over 400 deg C, within the C test's bound
+// for FASTSIM in full sliding (1.5e-3 of Fx/(0.33 N) from CONTACT's exact
+// -0.6108).
+void surface_mu_T_fastsim(void**)
+{
+    const Json j = parse_or_fail(
+        cli_ok({"solve", "--model", "fastsim", "--pressure", "elliptic", "--a", "6.304e-3",
+                "--b", "12.61e-3", "--N", "106.7e3", "--V", "10", "--xi-x", "0.25", "--nx",
+                "44", "--ny", "44", "--grid", "uniform", "--box-scale", "1.1", "--temperature",
+                "--T0-1", "0", "--T0-2", "0", "--temperature-discretisation", "contact",
+                "--mu-T", "0:0.33,400:0.14", "--format", "json"})
+            .out);
+    assert_close(j.num("Fx") / (0.33 * 106.7e3), -0.6108, 0, 1.5e-3);
+    assert_true(j.num("temperature_iterations") > 2);
 }
 
 // One rolling speed: without --speed the temperature takes the solve's --V,
@@ -201,7 +248,8 @@ void surface_bad_inputs_fail_cleanly(void**)
                    "100:0.3,0:0.2"}, "--mu-T"},
                  {{"--model", "exact", "--temperature", "--speed", "30", "--mu-T",
                    "0:0.3,100:0"}, "--mu-T"},
-                 {{"--temperature", "--speed", "30", "--mu-T", "0:0.3,100:0.2"}, "--mu-T"}};
+                 {{"--model", "calibrated", "--temperature", "--speed", "30", "--mu-T",
+                   "0:0.3,100:0.2"}, "--mu-T"}};
     for (const Case& c : cases) {
         const std::string out = g_tools.scratch + "/refused";
         const Run r = cli(with(with(kContact, c.extra), {"--out", out}));
@@ -262,6 +310,8 @@ int main(int argc, char** argv)
         cmocka_unit_test(surface_contact_example),
         cmocka_unit_test(surface_speed_from_V),
         cmocka_unit_test(surface_mu_T_matches_library),
+        cmocka_unit_test(surface_mu_T_on_a_gap_grid),
+        cmocka_unit_test(surface_mu_T_fastsim),
         cmocka_unit_test(surface_bad_inputs_fail_cleanly),
         cmocka_unit_test(surface_warns_about_implausible_units),
         cmocka_unit_test(surface_writes_pictures),
