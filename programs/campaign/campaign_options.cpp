@@ -195,18 +195,12 @@ void read_surface(const cwcli::ParsedOptions& o, CampaignOptions& c)
         if (!(speed > 0 && speed <= 1e3))
             throw usage_error("--speed", "must lie in (0, 1000] m/s");
     }
-    const cwcli::SurfaceRequest r = cwcli::read_surface_options(o, speed);
     SurfaceSetup& s = c.surface;
-    s.temperature = r.temperature;
-    s.damage = r.damage;
-    s.temperature_params = r.temperature_params;
-    s.damage_params = r.damage_params;
+    static_cast<cwcli::SurfaceRequest&>(s) = cwcli::read_surface_options(o, speed);
     s.speed = speed;
-    s.mu_T_temperature = r.mu_T_temperature;
-    s.mu_T_mu = r.mu_T_mu;
     if (s.damage && !(s.damage_params.k_yield > 0 && s.damage_params.k_yield <= 1e12))
         throw usage_error("--k-yield", "must lie in (0, 1e12] Pa (the surface shear yield stress)");
-    for (const std::string& w : r.warnings) c.notes.push_back(w);
+    for (const std::string& w : s.warnings) c.notes.push_back(w);
 }
 
 const char* const kWearOnly[] = {"law",          "source",      "speed",        "density",

@@ -7,22 +7,18 @@
 
 #include <cstdint>
 #include <string>
-#include <vector>
 
 #include <creepwork/creepwork.h>
 
+#include "../cli/surface_outputs.hpp"
 #include "campaign_types.hpp"
 
 namespace cwcampaign {
 
-struct SurfaceSetup {
-    bool temperature = false, damage = false;
-    cw_temperature_params temperature_params; // bodies, discretisation; speed, direction: per row
-    cw_damage_params damage_params;           // k_yield and Burstow's thresholds
-    double speed = 0.0;                // --speed [m/s]: rows without V; 0: not given
-    // --mu-T "T1:mu1,...": friction mu(T) [deg C, -]; empty: none.
-    std::vector<double> mu_T_temperature, mu_T_mu;
-    bool mu_T() const { return !mu_T_temperature.empty(); }
+// The request of `creepwork solve` (its bodies, discretisation, mu(T) and
+// damage), with the rolling speed of rows without V.
+struct SurfaceSetup : cwcli::SurfaceRequest {
+    double speed = 0.0; // --speed [m/s]: rows without V; 0: not given
     bool any() const { return temperature || damage; }
 };
 
