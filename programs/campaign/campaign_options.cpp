@@ -88,8 +88,9 @@ wheel) and its damage indices, from its work map, in results.csv:
   --temperature-discretisation consistent|contact
   --speed V         rolling speed (m/s) of rows without V (also --wear's)
   --mu-T "T1:mu1,T2:mu2,..."
-                    friction mu(T), solved in a fixed-point loop per row;
-                    column temperature_iterations (the exact model)
+                    friction mu(T), solved in a fixed-point loop per row
+                    (a model without mu(T) fails the row); column
+                    temperature_iterations
   --k-yield K       surface shear yield stress (Pa): columns rcf_index_max,
                     FI_surf, T_gamma (N), wlrm_damage (per pass)
 
