@@ -320,6 +320,25 @@ CAMPAIGN_MUTANTS = [
          old="        if (o.status == CW_OK) {",
          new="        if (o.status >= CW_OK) {", tests=CAMPAIGN),
 ]
+# Temperature and damage columns (--temperature, --mu-T, --k-yield): caught
+# by the columns against `creepwork solve`'s JSON, with and without mu(T).
+CAMPAIGN_SURFACE = ["campaign_surface_matches_creepwork_solve",
+                    "campaign_surface_mu_T_matches_creepwork_solve"]
+CAMPAIGN_MUTANTS += [
+    dict(id="campaign-surface-body", what="T_max_2 holds the rail's (body 1's) maximum",
+         file="programs/campaign/row_solver.cpp",
+         old="        out.surface[kSurfaceTMax2] = t.T_max_2;",
+         new="        out.surface[kSurfaceTMax2] = t.T_max_1;", tests=CAMPAIGN_SURFACE),
+    dict(id="campaign-surface-column", what="the FI_surf column holds the RCF index",
+         file="programs/campaign/results_writer.cpp",
+         old='    {"FI_surf", kSurfaceFISurf, &ResultColumns::damage},',
+         new='    {"FI_surf", kSurfaceRcfIndexMax, &ResultColumns::damage},',
+         tests=CAMPAIGN_SURFACE),
+    dict(id="campaign-surface-wire", what="a row's temperature and damage are lost in the checkpoint",
+         file="programs/campaign/wire.cpp",
+         old="        o.surface = r.get_doubles();",
+         new="        r.get_doubles();", tests=CAMPAIGN_SURFACE),
+]
 MUTANTS += CAMPAIGN_MUTANTS
 # ------------------------------------------------------------ end campaign
 

@@ -24,6 +24,7 @@
 #include "mpi_link.hpp"
 #include "rank_threads.hpp"
 #include "results_writer.hpp"
+#include "surface_setup.hpp"
 #include "wear_output.hpp"
 #include "wear_setup.hpp"
 #include "wire.hpp"
@@ -112,8 +113,20 @@ void prepare(const CampaignOptions& opt, Setup& s)
             // holds: --resume with others is refused as another input.
             WearSetup w = opt.wear_setup;
             w.nodes = profile_nodes(w, s.input.cases);
-            s.identity.input_hash = wear_identity(w, s.input.hash);
+            s.identity.input_hash = wear_identity(w, s.identity.input_hash);
             s.wear_nodes = std::move(w.nodes);
+        }
+        if (opt.surface.any()) {
+            // Likewise the temperature and damage options; a row that gives
+            // the temperature no rolling speed fails alone.
+            s.identity.input_hash = surface_identity(opt.surface, s.identity.input_hash);
+            for (size_t k = 0; k < s.input.cases.size(); ++k) {
+                ContactCase& c = s.input.cases[k];
+                const std::string problem = surface_row_problem(opt.surface, c, s.input.lines[k]);
+                if (problem.empty()) continue;
+                c.rejected = problem;
+                c.rejected_status = kStatusRowUnreadable;
+            }
         }
     }
     s.output = prepare_output(opt.out, opt.resume, opt.force, s.identity);
@@ -181,8 +194,12 @@ int finish(const CampaignOptions& opt, Setup& s, const RunStats& run, int ranks,
     } else {
         std::unique_ptr<WearProfiles> wear;
         if (opt.wear) wear = std::make_unique<WearProfiles>(opt.wear_setup);
+        ResultColumns extra;
+        extra.temperature = opt.surface.temperature;
+        extra.iterations = opt.surface.mu_T();
+        extra.damage = opt.surface.damage;
         const MergeSummary m = write_results_csv(*s.output.journal, s.input,
-                                                 opt.out + "/results.csv", wear.get());
+                                                 opt.out + "/results.csv", wear.get(), extra);
         ok = m.ok;
         failed = m.failed;
         for (const std::string& f : m.first_failures)
@@ -287,6 +304,7 @@ int run(int argc, char** argv)
 
     WorkerConfig worker;
     worker.wear = opt.wear ? &opt.wear_setup : nullptr;
+    worker.surface = opt.surface.any() ? &opt.surface : nullptr;
     worker.threads = opt.threads > 0 ? opt.threads : default_threads(mpi::ranks_on_node());
     worker.max_batches = static_cast<size_t>(opt.max_grids);
     worker.test_delay_ms = test_delay_ms();

@@ -6,6 +6,7 @@
 #include "../cli/contact_inputs.hpp"
 #include "../cli/options.hpp"
 #include "../cli/progress.hpp"
+#include "../cli/surface_outputs.hpp"
 
 namespace cwcampaign {
 
@@ -75,6 +76,23 @@ body, DIR/wear_profile_rail.csv and/or wear_profile_wheel.csv
   --profile-from S --profile-to S --profile-step H
                     the profile grid (m; default: every patch with a 20 %
                     margin, a quarter of the narrowest strip)
+
+temperature and damage (doc/campaigns.md; the options of `creepwork solve`):
+each row's flash temperature of both bodies (body 1 the rail, body 2 the
+wheel) and its damage indices, from its work map, in results.csv:
+  --temperature     columns T_max_1, T_max_2 (deg C), T_max_x, T_max_y (m);
+                    the rolling speed is the row's V (or speed), else --speed
+  --T0-1 --T0-2 T   bulk temperatures (deg C, default 20)
+  --heat-capacity-1/-2 C (J/(kg K))  --conductivity-1/-2 L (W/(m K))
+  --density-1/-2 RHO (kg/m^3)        (default steel: 450, 50, 7850)
+  --temperature-discretisation consistent|contact
+  --speed V         rolling speed (m/s) of rows without V (also --wear's)
+  --mu-T "T1:mu1,T2:mu2,..."
+                    friction mu(T), solved in a fixed-point loop per row
+                    (a model without mu(T) fails the row); column
+                    temperature_iterations
+  --k-yield K       surface shear yield stress (Pa): columns rcf_index_max,
+                    FI_surf, T_gamma (N), wlrm_damage (per pass)
 
 creep-force table (--table): points over a/b, nu and Kalker's normalised
 creepages xi' = G c^2 C11 xi_x/(3 mu N), eta' = G c^2 C22 xi_y/(3 mu N),
@@ -147,6 +165,43 @@ std::vector<OptionSpec> specs()
             {"profile-from", K::number, {}},
             {"profile-to", K::number, {}},
             {"profile-step", K::number, {}}};
+}
+
+// specs() with the surface options of `creepwork solve` (--speed is there).
+std::vector<OptionSpec> all_specs()
+{
+    std::vector<OptionSpec> s = specs();
+    for (const OptionSpec& t : cwcli::temperature_options()) s.push_back(t);
+    s.push_back({"mu-T", OptionKind::text, {}});
+    s.push_back({"k-yield", OptionKind::number, {}});
+    return s;
+}
+
+const char* const kSurfaceOnly[] = {"temperature",     "temperature-discretisation",
+                                    "T0-1",            "T0-2",
+                                    "heat-capacity-1", "heat-capacity-2",
+                                    "conductivity-1",  "conductivity-2",
+                                    "density-1",       "density-2",
+                                    "mu-T",            "k-yield"};
+
+// --temperature, --mu-T, --k-yield, as `creepwork solve` reads them; --speed
+// is the rolling speed of rows without V (and --wear's).
+void read_surface(const cwcli::ParsedOptions& o, CampaignOptions& c)
+{
+    double speed = 0.0;
+    if (o.has("speed")) {
+        if (!o.has("temperature") && !c.wear)
+            throw usage_error("--speed", "only used with --wear or --temperature");
+        speed = o.number("speed", 0);
+        if (!(speed > 0 && speed <= 1e3))
+            throw usage_error("--speed", "must lie in (0, 1000] m/s");
+    }
+    SurfaceSetup& s = c.surface;
+    static_cast<cwcli::SurfaceRequest&>(s) = cwcli::read_surface_options(o, speed);
+    s.speed = speed;
+    if (s.damage && !(s.damage_params.k_yield > 0 && s.damage_params.k_yield <= 1e12))
+        throw usage_error("--k-yield", "must lie in (0, 1e12] Pa (the surface shear yield stress)");
+    for (const std::string& w : s.warnings) c.notes.push_back(w);
 }
 
 const char* const kWearOnly[] = {"law",          "source",      "speed",        "density",
@@ -275,7 +330,7 @@ CampaignOptions read_campaign_options(int argc, char** argv, int first)
             c.help = true;
             return c;
         }
-    const cwcli::ParsedOptions o = cwcli::parse_options(specs(), argc, argv, first);
+    const cwcli::ParsedOptions o = cwcli::parse_options(all_specs(), argc, argv, first);
     c.table = o.has("table");
     c.out = o.text("out", "");
     c.resume = o.has("resume");
@@ -298,6 +353,11 @@ CampaignOptions read_campaign_options(int argc, char** argv, int first)
             if (o.has(name)) throw usage_error(std::string("--") + name, "only used with --wear");
         if (o.has("wear"))
             throw usage_error("--wear", "not used with --table (a table has no wear)");
+        for (const char* name : kSurfaceOnly)
+            if (o.has(name))
+                throw usage_error(std::string("--") + name,
+                                  "not used with --table (its points are solved for forces "
+                                  "only)");
         c.spec = usetab_axes();
         read_table(o, c.spec);
     } else {
@@ -314,9 +374,10 @@ CampaignOptions read_campaign_options(int argc, char** argv, int first)
                 c.notes.push_back("warning: " + w);
         } else {
             for (const char* name : kWearOnly)
-                if (o.has(name))
+                if (o.has(name) && std::string(name) != "speed")
                     throw usage_error(std::string("--") + name, "only used with --wear");
         }
+        read_surface(o, c);
         c.in = o.text("in", "");
         if (c.in.empty())
             throw usage_error("--in", "missing: the input CSV file (or --table for a creep-force "

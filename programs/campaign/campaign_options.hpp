@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "creep_table.hpp"
+#include "surface_setup.hpp"
 #include "wear_setup.hpp"
 
 namespace cwcampaign {
@@ -27,6 +28,7 @@ struct CampaignOptions {
     bool strict = false;      // --strict: a row with a plausibility warning is rejected
     bool wear = false;        // --wear: each row's wear, accumulated on profiles
     WearSetup wear_setup;     // --wear's options (nodes made later, on rank 0)
+    SurfaceSetup surface;     // --temperature, --mu-T, --k-yield
     std::vector<std::string> notes; // warnings about implausible options, for stderr
 };
 

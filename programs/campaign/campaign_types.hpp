@@ -64,6 +64,27 @@ enum WearValue {
     kWearValues
 };
 
+// A row's temperature and damage results (Outcome::surface, with
+// --temperature or --k-yield), in this order; results.csv's columns carry
+// the names of `creepwork solve`'s JSON keys.
+enum SurfaceValue {
+    kSurfaceTMax1, kSurfaceTMax2, // hottest contact element of body 1 (rail), 2 (wheel) [deg C]
+    kSurfaceTMaxX, kSurfaceTMaxY, // the hotter body's hottest element [m]
+    kSurfaceIterations,           // passes of solve and temperature (--mu-T)
+    kSurfaceRcfIndexMax, kSurfaceFISurf, // [-]
+    kSurfaceTGamma,               // [N]
+    kSurfaceWlrmDamage,           // per pass [-]
+    kSurfaceValues
+};
+
+// The optional column groups of results.csv.
+struct ResultColumns {
+    bool wear = false;        // --wear: body, passes, wear_*
+    bool temperature = false; // --temperature: T_max_1, T_max_2, T_max_x, T_max_y
+    bool iterations = false;  // --mu-T: temperature_iterations
+    bool damage = false;      // --k-yield: rcf_index_max, FI_surf, T_gamma, wlrm_damage
+};
+
 // The result of one row: the library's status and totals, or a message.
 struct Outcome {
     int status = CW_OK; // CW_OK, a CW_ERR_* code, or a kStatusRow* code
@@ -73,6 +94,9 @@ struct Outcome {
     // for a failed row). Its wear-depth profile went into its chunk's
     // accumulator (ChunkResult::wear_states).
     std::vector<double> wear;
+    // With --temperature or --k-yield: the row's kSurfaceValues (empty
+    // otherwise, and for a failed row).
+    std::vector<double> surface;
 };
 
 // A run of consecutive input rows: the unit of scheduling and checkpoints.
@@ -95,6 +119,12 @@ struct ChunkResult {
     // rows, so a resumed campaign counts every row once.
     std::array<std::vector<uint64_t>, kWearBodies> wear_states;
 };
+
+// Whether the library builds the same grid for a and b: kind, nx, ny, and
+// the bits of a uniform grid's box scale or a gap grid's origin and spacing.
+bool same_grid_shape(const cw_grid& a, const cw_grid& b);
+// A strict order of grid shapes under the same comparison.
+bool grid_shape_less(const cw_grid& a, const cw_grid& b);
 
 // Human name of a status for results.csv: "ok", "CW_ERR_INVALID_INPUT", ...,
 // "ROW_UNREADABLE" or "ROW_IMPLAUSIBLE".

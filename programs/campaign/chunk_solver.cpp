@@ -1,41 +1,13 @@
 #include "chunk_solver.hpp"
 
-#include <array>
-#include <cstring>
 #include <map>
-#include <tuple>
 
 namespace cwcampaign {
 
 namespace {
 
-// The bits of what shapes a grid beyond kind, nx, ny: the box scale of a
-// uniform grid, the origin and spacing of a gap grid. Comparing bits, a
-// grid is reused exactly when the library would build the same one.
-std::array<uint64_t, 4> shape_bits(const cw_grid& g)
-{
-    std::array<uint64_t, 4> bits{};
-    if (g.kind == CW_GRID_UNIFORM) std::memcpy(&bits[0], &g.box_scale, sizeof(double));
-    if (g.kind == CW_GRID_GAP) {
-        std::memcpy(&bits[0], &g.x0, sizeof(double));
-        std::memcpy(&bits[1], &g.y0, sizeof(double));
-        std::memcpy(&bits[2], &g.dx, sizeof(double));
-        std::memcpy(&bits[3], &g.dy, sizeof(double));
-    }
-    return bits;
-}
-
-bool same_grid(const cw_grid& a, const cw_grid& b)
-{
-    return a.kind == b.kind && a.nx == b.nx && a.ny == b.ny && shape_bits(a) == shape_bits(b);
-}
-
 struct GridOrder {
-    bool operator()(const cw_grid& a, const cw_grid& b) const
-    {
-        const std::array<uint64_t, 4> sa = shape_bits(a), sb = shape_bits(b);
-        return std::tie(a.kind, a.nx, a.ny, sa) < std::tie(b.kind, b.nx, b.ny, sb);
-    }
+    bool operator()(const cw_grid& a, const cw_grid& b) const { return grid_shape_less(a, b); }
 };
 
 // cw_batch_last_error names the contact as "params[i]: "; a row's message
@@ -62,7 +34,7 @@ ChunkSolver::~ChunkSolver()
 cw_batch* ChunkSolver::batch_for(const cw_grid& grid, int& status, std::string& message)
 {
     for (auto it = batches_.begin(); it != batches_.end(); ++it)
-        if (same_grid(it->grid, grid)) {
+        if (same_grid_shape(it->grid, grid)) {
             batches_.splice(batches_.begin(), batches_, it);
             return batches_.front().batch;
         }

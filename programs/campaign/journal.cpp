@@ -12,9 +12,10 @@ namespace cwcampaign {
 
 namespace {
 
-// The last digit is the record format (wire.cpp): 2 since the rows carry
-// their wear placement and the chunks their wear profiles (--wear).
-constexpr char kMagic[8] = {'C', 'W', 'C', 'K', 'P', 'T', '2', '\0'};
+// The last digit is the record format (wire.cpp): 3 since the rows carry
+// their temperature and damage results (--temperature, --k-yield) beside
+// their wear placement and the chunks' wear profiles (--wear).
+constexpr char kMagic[8] = {'C', 'W', 'C', 'K', 'P', 'T', '3', '\0'};
 constexpr uint32_t kRecordMagic = 0x43575243u; // "CRWC" little-endian
 
 // Fixed header: written once, checked on resume.

@@ -49,6 +49,24 @@ const char* const kWearColumns[kWearValues] = {
     "wear_max_depth",  "wear_mass",         "wear_area_regime1",      "wear_area_regime2",
     "wear_area_regime3", "wear_area_regime4"};
 
+// results.csv's temperature and damage columns: `creepwork solve`'s JSON
+// keys, each with its value in Outcome::surface and its group.
+struct SurfaceColumn {
+    const char* name;
+    SurfaceValue value;
+    bool ResultColumns::*group;
+};
+const SurfaceColumn kSurfaceColumns[] = {
+    {"T_max_1", kSurfaceTMax1, &ResultColumns::temperature},
+    {"T_max_2", kSurfaceTMax2, &ResultColumns::temperature},
+    {"T_max_x", kSurfaceTMaxX, &ResultColumns::temperature},
+    {"T_max_y", kSurfaceTMaxY, &ResultColumns::temperature},
+    {"temperature_iterations", kSurfaceIterations, &ResultColumns::iterations},
+    {"rcf_index_max", kSurfaceRcfIndexMax, &ResultColumns::damage},
+    {"FI_surf", kSurfaceFISurf, &ResultColumns::damage},
+    {"T_gamma", kSurfaceTGamma, &ResultColumns::damage},
+    {"wlrm_damage", kSurfaceWlrmDamage, &ResultColumns::damage}};
+
 std::string optional_number(const std::vector<double>& values, uint64_t row)
 {
     const double v = values[row];
@@ -84,26 +102,31 @@ void for_each_row_in_order(const Journal& journal, uint64_t rows,
                            std::to_string(rows) + " rows");
 }
 
-std::vector<std::string> results_columns(const CampaignInput& in, bool wear)
+std::vector<std::string> results_columns(const CampaignInput& in, const ResultColumns& extra)
 {
     std::vector<std::string> names = {"id", "status"};
     for (const Column& c : kColumns) names.emplace_back(c.name);
     if (in.has_s0) names.emplace_back("s0");
     if (in.has_distance) names.emplace_back("distance");
-    if (wear) {
+    if (extra.wear) {
         names.emplace_back("body");
         for (const char* name : kWearColumns) names.emplace_back(name);
     }
+    for (const SurfaceColumn& c : kSurfaceColumns)
+        if (extra.*c.group) names.emplace_back(c.name);
     names.emplace_back("message");
     return names;
 }
 
 MergeSummary write_results_csv(const Journal& journal, const CampaignInput& in,
-                               const std::string& path, WearProfiles* wear)
+                               const std::string& path, WearProfiles* wear,
+                               ResultColumns extra)
 {
+    extra.wear = wear != nullptr;
     AtomicFile out(path);
     std::string line;
-    for (const std::string& name : results_columns(in, wear != nullptr)) line += (line.empty() ? "" : ",") + name;
+    for (const std::string& name : results_columns(in, extra))
+        line += (line.empty() ? "" : ",") + name;
     out.write(line + "\n");
 
     MergeSummary summary;
@@ -129,6 +152,12 @@ MergeSummary write_results_csv(const Journal& journal, const CampaignInput& in,
                 if (o.status == CW_OK && o.wear.size() == kWearValues)
                     append_number(line, o.wear[k]);
             }
+        }
+        for (const SurfaceColumn& c : kSurfaceColumns) {
+            if (!(extra.*c.group)) continue;
+            line += ',';
+            if (o.status == CW_OK && o.surface.size() == kSurfaceValues)
+                append_number(line, o.surface[c.value]);
         }
         // A solved row's message holds its plausibility warnings.
         const std::string& message = o.status == CW_OK ? in.warnings[row] : o.message;

@@ -24,15 +24,18 @@ struct MergeSummary {
 };
 
 // The header of results.csv (the optional s0, distance columns only when
-// the input has them; the wear_* columns with --wear).
-std::vector<std::string> results_columns(const CampaignInput& in, bool wear = false);
+// the input has them; the groups of extra).
+std::vector<std::string> results_columns(const CampaignInput& in,
+                                         const ResultColumns& extra = {});
 
 // Writes path (via a temporary file renamed into place). Throws JournalError
 // when the checkpoint does not cover every row exactly once, and
 // std::runtime_error when the file cannot be written.
-// wear (--wear; else nullptr) receives every chunk, in input order.
+// wear (--wear; else nullptr) receives every chunk, in input order; extra
+// says which optional columns to write (its wear: whether wear is given).
 MergeSummary write_results_csv(const Journal& journal, const CampaignInput& in,
-                               const std::string& path, WearProfiles* wear = nullptr);
+                               const std::string& path, WearProfiles* wear = nullptr,
+                               ResultColumns extra = {});
 
 // Calls visit(row, outcome) for every row in input order, reading one chunk
 // at a time. Throws JournalError unless the checkpoint covers [0, rows)

@@ -222,6 +222,7 @@ Bytes encode_result(const ChunkResult& result)
         else
             w.put_string(o.message);
         w.put_doubles(o.wear);
+        w.put_doubles(o.surface);
     }
     for (const std::vector<uint64_t>& state : result.wear_states) w.put_words(state);
     return w.take();
@@ -245,6 +246,7 @@ ChunkResult decode_result(const Bytes& bytes)
             o.message = r.get_string();
         }
         o.wear = r.get_doubles();
+        o.surface = r.get_doubles();
     }
     for (std::vector<uint64_t>& state : result.wear_states) state = r.get_words();
     r.finish();

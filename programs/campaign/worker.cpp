@@ -6,29 +6,31 @@
 
 #include "chunk_solver.hpp"
 #include "mpi_link.hpp"
-#include "wear_solver.hpp"
+#include "row_solver.hpp"
 #include "wire.hpp"
 
 namespace cwcampaign {
 
 namespace {
 
-// A worker's solvers: the batches, or with --wear the wear solver.
+// A worker's solvers: the batches, or, when rows need their fields, the
+// row-by-row solver.
 struct Solvers {
     explicit Solvers(const WorkerConfig& c) : plain(c.threads, c.max_batches)
     {
-        if (c.wear) wear = std::make_unique<WearChunkSolver>(c.threads, c.max_batches, *c.wear);
+        if (c.wear || (c.surface && c.surface->any()))
+            rows = std::make_unique<RowChunkSolver>(c.threads, c.max_batches, c.wear, c.surface);
     }
     ChunkSolver plain;
-    std::unique_ptr<WearChunkSolver> wear;
+    std::unique_ptr<RowChunkSolver> rows;
 };
 
 ChunkResult solve_chunk(Solvers& solvers, const Chunk& chunk, int test_delay_ms)
 {
     const auto start = std::chrono::steady_clock::now();
     ChunkResult r;
-    if (solvers.wear) {
-        r = solvers.wear->solve(chunk);
+    if (solvers.rows) {
+        r = solvers.rows->solve(chunk);
     } else {
         r.id = chunk.id;
         r.first_row = chunk.first_row;

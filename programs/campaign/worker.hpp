@@ -11,6 +11,7 @@
 #include <thread>
 
 #include "campaign_types.hpp"
+#include "surface_setup.hpp"
 #include "wear_setup.hpp"
 
 namespace cwcampaign {
@@ -21,9 +22,11 @@ struct WorkerConfig {
     // Test hook (CREEPWORK_CAMPAIGN_TEST_CHUNK_DELAY_MS): sleep after each
     // chunk, so that a test can kill a run while it is certainly midway.
     int test_delay_ms = 0;
-    // --wear: rows are solved with their wear (WearChunkSolver); the setup
-    // outlives the workers. nullptr: forces and fields only (ChunkSolver).
+    // --wear, and --temperature or --k-yield: rows are solved one by one
+    // with their wear, temperature and damage (RowChunkSolver); the setups
+    // outlive the workers. Both nullptr: the batch API (ChunkSolver).
     const WearSetup* wear = nullptr;
+    const SurfaceSetup* surface = nullptr;
 };
 
 // Ranks other than 0: until rank 0 says stop, solve the chunks it sends, in

@@ -157,26 +157,13 @@ cw_temperature_params read_temperature_params(const ParsedOptions& opts)
     return p;
 }
 
-SurfaceRequest read_surface_request(const ParsedOptions& opts, int rolling_direction, double V)
+SurfaceRequest read_surface_options(const ParsedOptions& opts, double speed)
 {
     SurfaceRequest r;
     r.temperature = opts.has("temperature");
     r.temperature_params = read_temperature_params(opts);
     cw_damage_params_init(&r.damage_params);
-    if (r.temperature) {
-        cw_temperature_params& p = r.temperature_params;
-        if (!opts.has("speed") && !(V > 0.0))
-            throw usage_error("--temperature", "needs the rolling speed (m/s): --V or --speed");
-        // 0: the library takes the solve's V
-        p.rolling_speed = opts.has("speed") ? opts.number("speed", 0.0) : 0.0;
-        if (opts.has("speed") && V > 0.0 && std::fabs(p.rolling_speed - V) > 1e-9 * V)
-            throw usage_error("--speed", round_trip_text(p.rolling_speed) + " differs from --V " +
-                                             round_trip_text(V) +
-                                             ": give the rolling speed once, or the same in both");
-        p.rolling_direction = rolling_direction;
-    } else if (opts.has("speed")) {
-        throw usage_error("--speed", "is the rolling speed of --temperature; give that too");
-    }
+    if (r.temperature) r.temperature_params.rolling_speed = speed; // 0: the solve's V
     if (opts.has("mu-T")) {
         if (!r.temperature) throw usage_error("--mu-T", "needs --temperature");
         read_mu_T(opts.text("mu-T", ""), r.mu_T_temperature, r.mu_T_mu);
@@ -184,6 +171,26 @@ SurfaceRequest read_surface_request(const ParsedOptions& opts, int rolling_direc
     r.damage = opts.has("k-yield");
     if (r.damage) r.damage_params.k_yield = opts.number("k-yield", 0.0);
     r.warnings = implausible(r);
+    return r;
+}
+
+SurfaceRequest read_surface_request(const ParsedOptions& opts, int rolling_direction, double V)
+{
+    (void)read_temperature_params(opts); // its refusals come first
+    const bool speed = opts.has("speed");
+    if (opts.has("temperature")) {
+        if (!speed && !(V > 0.0))
+            throw usage_error("--temperature", "needs the rolling speed (m/s): --V or --speed");
+        const double given = opts.number("speed", 0.0);
+        if (speed && V > 0.0 && std::fabs(given - V) > 1e-9 * V)
+            throw usage_error("--speed", round_trip_text(given) + " differs from --V " +
+                                             round_trip_text(V) +
+                                             ": give the rolling speed once, or the same in both");
+    } else if (speed) {
+        throw usage_error("--speed", "is the rolling speed of --temperature; give that too");
+    }
+    SurfaceRequest r = read_surface_options(opts, opts.number("speed", 0.0));
+    if (r.temperature) r.temperature_params.rolling_direction = rolling_direction;
     return r;
 }
 
@@ -289,15 +296,23 @@ SurfaceOutput solve_with_surface(ContactSolver& solver, const cw_params& params,
     return o;
 }
 
+void hottest_point(const cw_temperature_result& t, double& x, double& y)
+{
+    const bool rail = t.T_max_1 >= t.T_max_2;
+    x = rail ? t.x_max_1 : t.x_max_2;
+    y = rail ? t.y_max_1 : t.y_max_2;
+}
+
 void add_surface_json(JsonObject& json, const SurfaceOutput& o)
 {
     if (o.temperature) {
         const cw_temperature_result& t = o.temperature_result;
-        const bool rail = t.T_max_1 >= t.T_max_2;
+        double x = 0.0, y = 0.0;
+        hottest_point(t, x, y);
         json.number("T_max_1", t.T_max_1)
             .number("T_max_2", t.T_max_2)
-            .number("T_max_x", rail ? t.x_max_1 : t.x_max_2)
-            .number("T_max_y", rail ? t.y_max_1 : t.y_max_2)
+            .number("T_max_x", x)
+            .number("T_max_y", y)
             .number("contact_temperature", t.contact_temperature)
             .number("power", t.power)
             .integer("temperature_iterations", t.iterations)

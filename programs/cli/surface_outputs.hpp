@@ -41,10 +41,19 @@ struct SurfaceRequest {
     std::vector<std::string> warnings;
 };
 
-// Throws CliError(kExitUsage) naming the option: a temperature option
-// without --temperature, --temperature without a rolling speed (--speed or
-// the solve's V), --speed and V that differ. V: the solve's cw_params.V
-// (0: not given); without --speed the temperature takes it.
+// The options of the request that do not depend on the contact: the
+// bodies, the discretisation, --mu-T, --k-yield and their warnings, with
+// the temperature's rolling speed `speed` (0: the solve's V) and direction
+// 0 (the solve's). Throws CliError(kExitUsage) naming the option: a
+// temperature option or --mu-T without --temperature. (creepwork campaign
+// reads its rows' speeds and directions itself.)
+SurfaceRequest read_surface_options(const ParsedOptions& opts, double speed);
+
+// read_surface_options for one contact. Throws CliError(kExitUsage) naming
+// the option, as it does, and for --temperature without a rolling speed
+// (--speed or the solve's V), --speed and V that differ, --speed without
+// --temperature. V: the solve's cw_params.V (0: not given); without --speed
+// the temperature takes it.
 SurfaceRequest read_surface_request(const ParsedOptions& opts, int rolling_direction, double V);
 
 struct SurfaceOutput {
@@ -64,6 +73,10 @@ SurfaceOutput compute_surface(const cw_solver* solver, const SurfaceRequest& req
 // and as ContactSolver::solve_full.
 SurfaceOutput solve_with_surface(ContactSolver& solver, const cw_params& params,
                                  const SurfaceRequest& request, Solution& s);
+
+// T_max_x, T_max_y [m]: the hotter body's hottest contact element (the
+// rail's on a tie).
+void hottest_point(const cw_temperature_result& t, double& x, double& y);
 
 // T_max_1, T_max_2 [deg C], T_max_x, T_max_y [m] (the hotter body's hottest
 // contact element), temperature_iterations; rcf_index_max, FI_surf,

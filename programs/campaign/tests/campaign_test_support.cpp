@@ -67,6 +67,14 @@ size_t kill_midway(int np, const std::vector<std::string>& args, int delay_ms,
     return ranks.size();
 }
 
+void expect_resumed_part(const std::string& dir, size_t rows)
+{
+    const Json j = parse_json(slurp(dir + "/campaign.json"));
+    const double resumed = j.num("resumed_rows"), solved = j.num("solved_this_run");
+    assert_true(resumed >= 3 && resumed < static_cast<double>(rows));
+    assert_true(resumed + solved == static_cast<double>(rows));
+}
+
 const std::vector<std::string>& input_columns()
 {
     static const std::vector<std::string> c = {

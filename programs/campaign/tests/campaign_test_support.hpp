@@ -28,6 +28,11 @@ std::vector<std::string> campaign_argv(int np, const std::vector<std::string>& a
 size_t kill_midway(int np, const std::vector<std::string>& args, int delay_ms,
                    const std::string& checkpoint, uintmax_t min_bytes);
 
+// dir/campaign.json of a run resumed after a kill: at least 3 of the rows
+// (not all) came from the checkpoint, and those plus the rows solved in
+// this run are the input's `rows` (finished chunks were not redone).
+void expect_resumed_part(const std::string& dir, size_t rows);
+
 // One input row, as the text of its CSV cells; "" = empty cell.
 using Row = std::map<std::string, std::string>;
 
