@@ -274,7 +274,8 @@ void refusals_name_the_input(void**)
     in.k_tau = 1e9;
     expect_error_naming(solve(exact, in), "k_tau"); // needs tau_c0
     in.tau_c0 = kTauC;
-    expect_error_naming(solve(exact, in), "k_tau"); // not modelled
+    in.k_tau = INFINITY;
+    expect_error_naming(solve(exact, in), "k_tau");
     in = plastic(base);
     in.friction_law = cw::FrictionLaw::exponential;
     in.mu = 0.14;
