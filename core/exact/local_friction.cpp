@@ -37,14 +37,14 @@ template <class Bound>
 Flow solve_flow(const Bound& bound, double cx, double cy, double b1, double b2, double g_hi,
                 std::complex<double>& q, LocalJacobian& J)
 {
-    Flow r;
+    int iterations = 0;
     const double norm_c = std::sqrt(cx * cx + cy * cy);
     double lo = norm_c - g_hi * (b1 > b2 ? b1 : b2), hi = norm_c;
     if (lo < 0.0) lo = 0.0;
     double sigma = lo, h = 0.0, dh = 0.0;
     for (int it = 0; it < 200; ++it) {
         bound(sigma, h, dh);
-        r.iterations = it + 1;
+        iterations = it + 1;
         const double dx = sigma + h * b1, dy = sigma + h * b2;
         const double tx = cx / dx, ty = cy / dy;
         const double f = tx * tx + ty * ty - 1.0;
@@ -72,13 +72,8 @@ Flow solve_flow(const Bound& bound, double cx, double cy, double b1, double b2, 
     J = local_jacobian(m11, m12, m22, b1, b2);
     // u = -(I + J B0) e: the response to the bound's own change.
     const double bx = b1 * ex, by = b2 * ey;
-    r.u = {-(ex + J.j11 * bx + J.j12 * by), -(ey + J.j21 * bx + J.j22 * by)};
-    r.sigma = sigma;
-    r.h = h;
-    r.dh = dh;
-    r.ex = ex;
-    r.ey = ey;
-    return r;
+    const std::complex<double> u{-(ex + J.j11 * bx + J.j12 * by), -(ey + J.j21 * bx + J.j22 * by)};
+    return Flow{sigma, h, dh, ex, ey, iterations, u};
 }
 
 // The adhesion solution when it is within the bound g0 (returns true), else
