@@ -1010,7 +1010,7 @@ MUTANTS += [
          new="    const double m11 = f * (1.0 - ex * ex);", tests=EXACT_LAW, require=EXACT_LAW),
     dict(id="exact-law-speed-source", what="the slip speed's source misses sigma (dh/dsigma, "
          "not dh/dln sigma)", file="core/exact/local_friction.cpp",
-         old="    out.speed_source = sigma * dh;", new="    out.speed_source = dh;",
+         old="    out.speed_source = r.sigma * r.dh;", new="    out.speed_source = r.dh;",
          tests=EXACT_LAW, require=EXACT_LAW),
     dict(id="exact-law-slip-unit", what="the law's argument the normalised slip times V, without "
          "the slip's unit", file="core/exact/exact_law.hpp",
@@ -1049,6 +1049,30 @@ MUTANTS += [
          file="core/solver.cpp",
          old="        if (!m.takes_interface_layer())",
          new="        if (false && !m.takes_interface_layer())", tests=LAYER, require=LAYER),
+    # Hardening and softening (k_tau != 0): the yield stress carried along
+    # each row, its chain in the linearisation, its N column.
+    dict(id="yield-not-carried", what="every element starts from tau_c0, not the yield stress "
+         "ahead", file="core/exact/steady_rolling.cpp",
+         old="                tau = y.tau;", new="                (void)y.tau;",
+         tests=LAYER, require=LAYER),
+    dict(id="yield-slope-length", what="k_tau dx / G per element width, not length",
+         file="core/exact/exact_model.cpp",
+         old="    s.yield_k = s.yield > 0.0 ? in.k_tau * s.dx / in.G : 0.0;",
+         new="    s.yield_k = s.yield > 0.0 ? in.k_tau * s.dy / in.G : 0.0;",
+         tests=LAYER, require=LAYER),
+    dict(id="yield-hardening-uncapped", what="a hardening yield stress passes mu p",
+         file="core/exact/local_friction.hpp",
+         old="        if (k > 0.0) return v < g ? YieldValue{v, k, 1.0, 0.0} : YieldValue{g, 0.0, 0.0, 0.0};",
+         new="        if (k > 0.0) return YieldValue{v, k, 1.0, 0.0};",
+         tests=LAYER, require=LAYER),
+    dict(id="yield-chain-flow", what="the linearised chain drops the flow's share of the yield "
+         "stress", file="core/exact/steady_rolling.cpp",
+         old="    dtau = y.h_phi * dphi + dh;", new="    dtau = 0.0 * dphi + dh;",
+         tests=LAYER, require=LAYER),
+    dict(id="yield-jacobian-N", what="the N column misses tau_c0's share under hardening",
+         file="core/exact/steady_rolling.cpp",
+         old="        double dtau = yield ? tau0_ : 0.0;", new="        double dtau = 0.0;",
+         tests=LAYER, require=LAYER),
 ]
 # Friction memory in the exact models (core/exact/steady_memory.cpp):
 # CONTACT's rows with MEMDST 3 um, the recurrence read back from the fields

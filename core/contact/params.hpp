@@ -137,7 +137,9 @@ struct ContactInput {
     // The interface (third-body) layer, CONTACT's M = 4: an elastic shear
     // compliance layer_h / layer_G [m/Pa] in series with the bodies (h >= 0
     // [m], G3 > 0 [Pa] when h > 0) and the yield stress tau_c = tau_c0 +
-    // k_tau u_pl (tau_c0 >= 0 [Pa], 0: no yield; k_tau [Pa/m]). All 0: none.
+    // k_tau u_pl (tau_c0 >= 0 [Pa], 0: no yield; k_tau [Pa/m], > 0 hardens,
+    // < 0 softens, u_pl the plastic displacement accumulated along a row).
+    // All 0: none.
     // The exact models take it (exact/exact_model.hpp, gap/gap_exact_model.hpp).
     double layer_h = 0.0, layer_G = 0.0, tau_c0 = 0.0, k_tau = 0.0;
 };

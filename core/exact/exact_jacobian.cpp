@@ -15,7 +15,9 @@
 // N) adds the derivative by ln kappa (SteadyRolling::tangent_speed) over N.
 // A layer's yield stress tau_c does not grow with N: the bound it caps,
 // tau_c / (mu p0), falls as 1/N, which adds -tau_c dF/dtau_c / N
-// (SteadyRolling::tangent_bound on the capped elements). The layer's
+// (SteadyRolling::tangent_bound on the capped elements; with hardening or
+// softening tangent_yield, tau_c0 and its floor scaled along every row;
+// k_tau dx / G does not depend on N). The layer's
 // compliance is in the operator and does not depend on N.
 
 #include "contact/jacobian_load.hpp"
@@ -76,10 +78,13 @@ SolveTotals ExactModel::solve_jacobian(const ContactInput& in, SolveMode mode, J
     if (s.yield > 0.0) {
         const std::vector<double>& g = fine.tangential.bound();
         const std::vector<double>& pn = fine.normal.pressure();
-        for (size_t k = 0; k < g.size(); ++k) tangent_yield_[k] = pn[k] > s.yield ? g[k] : 0.0;
+        if (s.yield_k == 0.0)
+            for (size_t k = 0; k < g.size(); ++k) tangent_yield_[k] = pn[k] > s.yield ? g[k] : 0.0;
         const TractionMoments m = traction_moments(
-            fine.tangential.tangent_bound(fine.conv, tangent_yield_, tolerance,
-                                          kMaxJacobianIterations),
+            s.yield_k != 0.0 ? fine.tangential.tangent_yield(fine.conv, tolerance,
+                                                             kMaxJacobianIterations)
+                             : fine.tangential.tangent_bound(fine.conv, tangent_yield_, tolerance,
+                                                             kMaxJacobianIterations),
             nx_, ny_, [&](int i) { return fine.geom.X(i) * s.dx; },
             [&](int j) { return fine.geom.Y(j) * s.dx; });
         dS_yield[0] = m.x;

@@ -123,19 +123,16 @@ void ExactModel::set_rigid_slip(Level& L) const
 void ExactModel::set_bound(TangentialLevel& L, const std::vector<double>& pressure) const
 {
     std::vector<double>& g = L.tangential.bound();
-    const double cap = setup_.yield;
+    // Hardening or softening: the yield is the sweep's (set_yield), not a cap.
+    const double cap = setup_.yield_k != 0.0 ? 0.0 : setup_.yield;
     for (size_t k = 0; k < g.size(); ++k)
         g[k] = cap > 0.0 && pressure[k] > cap ? cap : pressure[k];
 }
 
 // The layer on every level: the compliance per level's dx (dx = a / alpha),
-// the yield stress in traction units.
+// the yield stress in traction units, its hardening per level's dx.
 void ExactModel::set_layer(const ContactInput& in)
 {
-    if (in.k_tau != 0.0)
-        reject_input("k_tau", in.k_tau,
-                     "must be 0 for model = exact: the layer's yield stress is perfectly "
-                     "plastic (tau_c = tau_c0)");
     if (in.tau_c0 > 0.0 && law_.active())
         reject_input("tau_c0", in.tau_c0,
                      "must be 0 with a friction law of the slip speed: the layer's yield "
@@ -143,11 +140,15 @@ void ExactModel::set_layer(const ContactInput& in)
     Setup& s = setup_;
     s.layer = in.layer_h > 0.0 ? in.layer_h / in.layer_G * in.G / s.dx : 0.0;
     s.yield = in.tau_c0 > 0.0 && s.traction_scale > 0.0 ? in.tau_c0 / s.traction_scale : 0.0;
-    if (!std::isfinite(s.layer) || !std::isfinite(s.yield))
+    s.yield_k = s.yield > 0.0 ? in.k_tau * s.dx / in.G : 0.0;
+    if (!std::isfinite(s.layer) || !std::isfinite(s.yield) || !std::isfinite(s.yield_k))
         throw Error(ErrorKind::invalid_input,
-                    "layer_h / layer_G or tau_c0 is so extreme that the layer overflows");
+                    "layer_h / layer_G, tau_c0 or k_tau is so extreme that the layer overflows");
     const double alpha0 = levels_[0]->geom.alpha;
-    for (auto& L : levels_) L->tangential.set_layer(s.layer * (L->geom.alpha / alpha0));
+    for (auto& L : levels_) {
+        L->tangential.set_layer(s.layer * (L->geom.alpha / alpha0));
+        L->tangential.set_yield(s.yield, s.yield_k * (alpha0 / L->geom.alpha));
+    }
 }
 
 // Kalker's simplified theory as a first guess on the coarsest grid: march

@@ -93,9 +93,11 @@ public:
         return law_.friction_range(info_, mu_min, mu_max);
     }
 
-    // The interface layer (ContactInput::layer_h, layer_G, tau_c0; k_tau
-    // must be 0): the elastic compliance in every solve's operator, the
-    // yield stress a cap on every element's bound (Coulomb's law only).
+    // The interface layer (ContactInput::layer_h, layer_G, tau_c0, k_tau):
+    // the elastic compliance in every solve's operator; the yield stress a
+    // cap on every element's bound (k_tau = 0), or hardening / softening
+    // with the plastic flow carried along each row (SteadyRolling::set_yield),
+    // under Coulomb's law only.
     bool takes_interface_layer() const override { return true; }
 
     const ExactSolveInfo& info() const { return info_; }
@@ -151,9 +153,10 @@ private:
         double xi = 0, eta = 0, phi = 0;          // rolling frame, physical
         double c_xi = 0, c_eta = 0, c_phi = 0;     // normalised (per dx for phi)
         double spin_offset = 0;
-        // The layer: compliance (h / G3) G / dx on the finest grid, and the
-        // yield stress over the traction unit (0: no yield).
-        double layer = 0, yield = 0;
+        // The layer: compliance (h / G3) G / dx on the finest grid, the
+        // yield stress over the traction unit (0: no yield) and its
+        // hardening k_tau dx / G on the finest grid (0: perfectly plastic).
+        double layer = 0, yield = 0, yield_k = 0;
         bool full = false;
     } setup_;
     std::vector<double> paper_, consistent_, profile_, row_d_, row_pool_;

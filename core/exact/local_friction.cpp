@@ -21,6 +21,77 @@ LocalJacobian local_jacobian(double m11, double m12, double m22, double b1, doub
     return J;
 }
 
+// The flow of one element whose bound h(sigma) depends on its own flow sigma
+// (bound(sigma, h, dh) gives h and dh/dsigma): the root of
+//   f(sigma) = (cx/(sigma + h b1))^2 + (cy/(sigma + h b2))^2 - 1,
+// q = -h e, J and u = -(I + J B0) e (local_friction.hpp). h <= g_hi, so
+// f(lo) >= 0 at lo = |c| - g_hi max(b); f(|c|) <= 0 (h >= 0). Newton's steps
+// inside the bracket, bisection otherwise; the bracket shrinks with each sign.
+struct Flow {
+    double sigma = 0.0, h = 0.0, dh = 0.0, ex = 0.0, ey = 0.0;
+    int iterations = 0;
+    std::complex<double> u{0.0, 0.0};
+};
+
+template <class Bound>
+Flow solve_flow(const Bound& bound, double cx, double cy, double b1, double b2, double g_hi,
+                std::complex<double>& q, LocalJacobian& J)
+{
+    int iterations = 0;
+    const double norm_c = std::sqrt(cx * cx + cy * cy);
+    double lo = norm_c - g_hi * (b1 > b2 ? b1 : b2), hi = norm_c;
+    if (lo < 0.0) lo = 0.0;
+    double sigma = lo, h = 0.0, dh = 0.0;
+    for (int it = 0; it < 200; ++it) {
+        bound(sigma, h, dh);
+        iterations = it + 1;
+        const double dx = sigma + h * b1, dy = sigma + h * b2;
+        const double tx = cx / dx, ty = cy / dy;
+        const double f = tx * tx + ty * ty - 1.0;
+        if (f == 0.0) break;
+        (f > 0.0 ? lo : hi) = sigma;
+        const double df = -2.0 * (tx * tx * (1.0 + dh * b1) / dx + ty * ty * (1.0 + dh * b2) / dy);
+        double next = df < 0.0 ? sigma - f / df : 0.5 * (lo + hi);
+        if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
+        const bool stalled = !(std::fabs(next - sigma) > 1e-15 * (sigma + h * (b1 + b2)));
+        sigma = next;
+        if (stalled || !(hi > lo)) break;
+    }
+    bound(sigma, h, dh);
+    double ex = cx / (sigma + h * b1), ey = cy / (sigma + h * b2);
+    const double ne = std::sqrt(ex * ex + ey * ey);
+    ex /= ne;
+    ey /= ne;
+    q = {-h * ex, -h * ey};
+    // Derivative: q = -h(sigma) e, s = sigma e: dq = -M ds with
+    // M = (h/sigma)(I - e e^T) + h' e e^T, and ds = dc + B0 dq.
+    const double f = h / (sigma > 1e-300 ? sigma : 1e-300);
+    const double m11 = f * (1.0 - ex * ex) + dh * ex * ex;
+    const double m12 = (dh - f) * ex * ey;
+    const double m22 = f * (1.0 - ey * ey) + dh * ey * ey;
+    J = local_jacobian(m11, m12, m22, b1, b2);
+    // u = -(I + J B0) e: the response to the bound's own change.
+    const double bx = b1 * ex, by = b2 * ey;
+    const std::complex<double> u{-(ex + J.j11 * bx + J.j12 * by), -(ey + J.j21 * bx + J.j22 * by)};
+    return Flow{sigma, h, dh, ex, ey, iterations, u};
+}
+
+// The adhesion solution when it is within the bound g0 (returns true), else
+// q = 0 and J = 0 when g0 = 0 (no pressure: the element slips freely).
+bool adheres(double cx, double cy, double b1, double b2, double g0, std::complex<double>& q,
+             LocalJacobian& J)
+{
+    const double ax = -cx / b1, ay = -cy / b2;
+    if (ax * ax + ay * ay <= g0 * g0) {
+        q = {ax, ay};
+        J = {-1.0 / b1, 0.0, 0.0, -1.0 / b2};
+        return true;
+    }
+    q = {0.0, 0.0};
+    J = {};
+    return false;
+}
+
 } // namespace
 
 bool solve_local_friction(const CoulombLaw& law, std::complex<double> c, double b1, double b2,
@@ -28,17 +99,8 @@ bool solve_local_friction(const CoulombLaw& law, std::complex<double> c, double 
 {
     const double g = traction_bound(law, pressure);
     const double cx = c.real(), cy = c.imag();
-    const double ax = -cx / b1, ay = -cy / b2; // the adhesion solution
-    if (ax * ax + ay * ay <= g * g) {
-        q = {ax, ay};
-        J = {-1.0 / b1, 0.0, 0.0, -1.0 / b2};
-        return false;
-    }
-    if (!(g > 0.0)) { // no pressure: no traction, the element slips freely
-        q = {0.0, 0.0};
-        J = {};
-        return true;
-    }
+    if (adheres(cx, cy, b1, b2, g, q, J)) return false;
+    if (!(g > 0.0)) return true; // no pressure: no traction, the element slips freely
     // f(sigma) = (cx/(sigma+gx))^2 + (cy/(sigma+gy))^2 - 1 decreases and is
     // convex on sigma >= 0, with f(0) > 0 here (no adhesion). Newton's method
     // from a point left of the root converges monotonically; |c| - g max(b)
@@ -85,68 +147,54 @@ bool solve_local_friction(const LocalLaw& law, std::complex<double> c, double b1
 {
     out = ElementSlip{};
     const double cx = c.real(), cy = c.imag();
-    const double ax = -cx / b1, ay = -cy / b2; // the adhesion solution
     const double g0 = traction_bound(law, pressure, 0.0);
-    if (ax * ax + ay * ay <= g0 * g0) { // the static bound decides
-        q = {ax, ay};
-        J = {-1.0 / b1, 0.0, 0.0, -1.0 / b2};
-        return false;
-    }
-    if (!(g0 > 0.0)) {
-        q = {0.0, 0.0};
-        J = {};
-        return true;
-    }
-    // f(sigma) = (cx/(sigma + h b1))^2 + (cy/(sigma + h b2))^2 - 1 with
-    // h = g m(sigma) <= g_hi: f >= Coulomb's f at g_hi, so f(lo) >= 0 at
-    // lo = |c| - g_hi max(b); f(|c|) <= 0 (h >= 0). Newton's steps inside the
-    // bracket, bisection otherwise; the bracket shrinks with each sign. A
-    // law falls from m(0) = 1 (g_hi = g0); under memory m can rise above
+    if (adheres(cx, cy, b1, b2, g0, q, J)) return false; // the static bound decides
+    if (!(g0 > 0.0)) return true;
+    // A law falls from m(0) = 1 (g_hi = g0); under memory m can rise above
     // m(0) (an element behind a slipping one), never above the static
     // coefficient, m = 1.
     const double g_hi = law.memory.distance > 0.0 ? pressure : g0;
-    const double norm_c = std::sqrt(cx * cx + cy * cy);
-    double lo = norm_c - g_hi * (b1 > b2 ? b1 : b2), hi = norm_c;
-    if (lo < 0.0) lo = 0.0;
-    double sigma = lo, h = g0, dh = 0.0;
-    for (int it = 0; it < 200; ++it) {
-        const FrictionValue m = law.value(sigma);
-        h = pressure * m.mu;
-        dh = pressure * m.dmu_ds;
-        out.m = m.mu;
-        out.iterations = it + 1;
-        const double dx = sigma + h * b1, dy = sigma + h * b2;
-        const double tx = cx / dx, ty = cy / dy;
-        const double f = tx * tx + ty * ty - 1.0;
-        if (f == 0.0) break;
-        (f > 0.0 ? lo : hi) = sigma;
-        const double df = -2.0 * (tx * tx * (1.0 + dh * b1) / dx + ty * ty * (1.0 + dh * b2) / dy);
-        double next = df < 0.0 ? sigma - f / df : 0.5 * (lo + hi);
-        if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
-        const bool stalled = !(std::fabs(next - sigma) > 1e-15 * (sigma + h * (b1 + b2)));
-        sigma = next;
-        if (stalled || !(hi > lo)) break;
-    }
-    const FrictionValue m = law.value(sigma);
-    h = pressure * m.mu;
-    dh = pressure * m.dmu_ds;
-    out.m = m.mu;
-    double ex = cx / (sigma + h * b1), ey = cy / (sigma + h * b2);
-    const double ne = std::sqrt(ex * ex + ey * ey);
-    ex /= ne;
-    ey /= ne;
-    q = {-h * ex, -h * ey};
-    // Derivative: q = -h(sigma) e, s = sigma e: dq = -M ds with
-    // M = (h/sigma)(I - e e^T) + h' e e^T, and ds = dc + B0 dq.
-    const double f = h / (sigma > 1e-300 ? sigma : 1e-300);
-    const double m11 = f * (1.0 - ex * ex) + dh * ex * ex;
-    const double m12 = (dh - f) * ex * ey;
-    const double m22 = f * (1.0 - ey * ey) + dh * ey * ey;
-    J = local_jacobian(m11, m12, m22, b1, b2);
-    // u = -(I + J B0) e: the response to the bound's own change.
-    const double bx = b1 * ex, by = b2 * ey;
-    out.u = {-(ex + J.j11 * bx + J.j12 * by), -(ey + J.j21 * bx + J.j22 * by)};
-    out.speed_source = sigma * dh;
+    const Flow r = solve_flow(
+        [&](double sigma, double& h, double& dh) {
+            const FrictionValue m = law.value(sigma);
+            h = pressure * m.mu;
+            dh = pressure * m.dmu_ds;
+            out.m = m.mu;
+        },
+        cx, cy, b1, b2, g_hi, q, J);
+    out.iterations = r.iterations;
+    out.u = r.u;
+    out.speed_source = r.sigma * r.dh;
+    return true;
+}
+
+bool solve_local_yield(const YieldBound& bound, std::complex<double> c, double b1, double b2,
+                       std::complex<double>& q, LocalJacobian& J, YieldElement& out)
+{
+    out = YieldElement{};
+    out.tau = bound.tau_ahead;
+    const double cx = c.real(), cy = c.imag();
+    const double g0 = bound.at(0.0).h;
+    if (adheres(cx, cy, b1, b2, g0, q, J)) return false;
+    if (!(g0 > 0.0)) return true;
+    // Hardening rises to the friction bound g; softening falls from h(0).
+    const double g_hi = bound.k > 0.0 ? bound.g : g0;
+    const Flow r = solve_flow(
+        [&](double phi, double& h, double& dh) {
+            const YieldValue v = bound.at(phi);
+            h = v.h;
+            dh = v.h_phi;
+        },
+        cx, cy, b1, b2, g_hi, q, J);
+    const YieldValue v = bound.at(r.sigma);
+    out.u = r.u;
+    out.e = {r.ex, r.ey};
+    out.h_phi = v.h_phi;
+    out.h_t = v.h_t;
+    out.h_f = v.h_f;
+    out.follows = bound.tau_ahead < bound.g;
+    if (out.follows) out.tau = r.h;
+    out.iterations = r.iterations;
     return true;
 }
 

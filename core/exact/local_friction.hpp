@@ -64,6 +64,46 @@ struct ElementSlip {
     int iterations = 0;        // the scalar equation's Newton steps
 };
 
+// The interface layer's yield with hardening or softening (k != 0) in the
+// local problem's units, for one element: its friction bound g, the yield
+// stress tau_ahead of the element ahead of it in the rolling direction,
+// k = k_tau dx / G (the yield stress's change per unit of normalised
+// plastic flow) and the floor of the yield stress (CONTACT's 0.1 tau_c0).
+// The element flows -- plastically, sliding, or both -- by phi = |s|
+// (s = c + B0 q, its total relative displacement per element length) under
+// the bound
+//   h(phi) = g                          if tau_ahead >= g (it slides, no yield),
+//          = min(g, tau_ahead + k phi)  k > 0 (plastic flow until the yield
+//                                       stress reaches g, then sliding),
+//          = max(floor, tau_ahead + k phi)  k < 0 (plastic flow);
+// its own yield stress, the next element's tau_ahead, is h(phi) when
+// tau_ahead < g, else tau_ahead (and tau_ahead in adhesion).
+struct YieldValue {
+    double h = 0, h_phi = 0; // the bound and dh/dphi
+    double h_t = 0, h_f = 0; // dh/dtau_ahead, dh/dfloor
+};
+struct YieldBound {
+    double g = 0, tau_ahead = 0, k = 0, floor = 0;
+    YieldValue at(double phi) const
+    {
+        if (!(tau_ahead < g)) return {g, 0.0, 0.0, 0.0};
+        const double v = tau_ahead + k * phi;
+        if (k > 0.0) return v < g ? YieldValue{v, k, 1.0, 0.0} : YieldValue{g, 0.0, 0.0, 0.0};
+        return v > floor ? YieldValue{v, k, 1.0, 0.0} : YieldValue{floor, 0.0, 0.0, 1.0};
+    }
+};
+
+// What a flowing element under the yield leaves for the derivatives: dq =
+// J dc + u dh with dh = h_t dtau_ahead + h_f dfloor, the flow's direction e
+// (dphi = e . (dc + B0 dq)), and its yield stress tau with dtau = h_phi dphi
+// + dh when it follows h (else dtau = dtau_ahead).
+struct YieldElement {
+    std::complex<double> u{0.0, 0.0}, e{0.0, 0.0};
+    double h_phi = 0.0, h_t = 0.0, h_f = 0.0, tau = 0.0;
+    bool follows = false;
+    int iterations = 0;
+};
+
 // Coulomb's law (the bound traction_bound(law, g): pass CoulombLaw{1} for
 // the bound g itself). Returns true for slip. g >= 0; b1, b2 > 0. q and J
 // are always written.
@@ -80,5 +120,11 @@ inline bool solve_local_friction(std::complex<double> c, double b1, double b2, d
 // (written in slip; m = 1 otherwise).
 bool solve_local_friction(const LocalLaw& law, std::complex<double> c, double b1, double b2,
                           double g, std::complex<double>& q, LocalJacobian& J, ElementSlip& out);
+
+// The yield with hardening or softening: adhesion when |B0^-1 c| <= h(0),
+// else the flow under h(phi) (YieldBound). Returns true for flow (reported
+// as slip); q, J and out are always written.
+bool solve_local_yield(const YieldBound& bound, std::complex<double> c, double b1, double b2,
+                       std::complex<double>& q, LocalJacobian& J, YieldElement& out);
 
 } // namespace creepwork

@@ -82,6 +82,17 @@ void SteadyRolling::set_law(const LocalLaw* law)
     theta0_ = law->memory.distance / (law->memory.distance + law->dt * law->memory.s0);
 }
 
+void SteadyRolling::set_yield(double tau0, double k)
+{
+    yield_active_ = k != 0.0 && tau0 > 0.0;
+    if (!yield_active_) return;
+    tau0_ = tau0;
+    yield_k_ = k;
+    yield_floor_ = 0.1 * tau0; // CONTACT's floor of a softening yield stress
+    yield_info_.reserve(capacity_);
+    yield_info_.resize(static_cast<size_t>(n_));
+}
+
 void SteadyRolling::set_size(int nx, int ny)
 {
     nx_ = nx;
@@ -93,6 +104,7 @@ void SteadyRolling::set_size(int nx, int ny)
     jac_.resize(n);
     state_.resize(n);
     if (law_active_) slip_info_.resize(n);
+    if (yield_active_) yield_info_.resize(n);
     if (memory_active_) {
         mu_prev_.resize(n);
         mu_.resize(n);
@@ -143,6 +155,7 @@ void SteadyRolling::sweep(GridConvolution& conv, const std::vector<Complex>& q,
     for (int k = 0; k < n_; ++k) s_[k] += w_[k];
     for (int j = 0; j < ny_; ++j) {
         Complex ahead(0.0, 0.0); // change of q at the element ahead (i + 1)
+        double tau = tau0_;      // under the yield: the yield stress ahead
         for (int i = nx_ - 1; i >= 0; --i) {
             const int k = i + nx_ * j;
             if (!(g_[k] > 0.0)) {
@@ -156,7 +169,13 @@ void SteadyRolling::sweep(GridConvolution& conv, const std::vector<Complex>& q,
                             s_[k].imag() - b0y_ * q[k].imag() + b1y_ * ahead.imag());
             Complex qk;
             bool slips;
-            if (law_active_) {
+            if (yield_active_) {
+                YieldElement& y = yield_info_[k];
+                slips = solve_local_yield(YieldBound{g_[k], tau, yield_k_, yield_floor_}, c, b0x_,
+                                          b0y_, qk, jac_[k], y);
+                friction_iterations_ += y.iterations;
+                tau = y.tau;
+            } else if (law_active_) {
                 ElementSlip& e = slip_info_[k];
                 if (memory_active_) law_.mu_prev = mu_prev_[k];
                 slips = solve_local_friction(law_, c, b0x_, b0y_, g_[k], qk, jac_[k], e);
@@ -177,7 +196,8 @@ void SteadyRolling::linear_sweep(GridConvolution& conv, const Complex* v, Comple
     product(conv, v, work_.data());
     for (int j = 0; j < ny_; ++j) {
         Complex ahead(0.0, 0.0);
-        double dmu = 0.0; // under memory (tangents): the change of mu ahead
+        double dmu = 0.0;  // under memory (tangents): the change of mu ahead
+        double dtau = 0.0; // under the yield: the change of the yield stress ahead
         for (int i = nx_ - 1; i >= 0; --i) {
             const int k = i + nx_ * j;
             if (!(g_[k] > 0.0)) {
@@ -190,6 +210,7 @@ void SteadyRolling::linear_sweep(GridConvolution& conv, const Complex* v, Comple
             const double cy = work_[k].imag() - b0y_ * v[k].imag() + b1y_ * ahead.imag();
             const LocalJacobian& J = jac_[k];
             Complex d(J.j11 * cx + J.j12 * cy, J.j21 * cx + J.j22 * cy);
+            if (yield_active_) yield_link(k, cx, cy, d, dtau, 0.0);
             if (memory_linear_) memory_link(k, cx, cy, d, dmu, false);
             out[k] = d;
             ahead = d - v[k];
@@ -361,8 +382,8 @@ SteadyRollingInfo SteadyRolling::newton(GridConvolution& conv, double tolerance,
     return info;
 }
 
-void SteadyRolling::source_sweep(const Complex* dw, const double* dg, bool speed,
-                                 Complex* out) const
+void SteadyRolling::source_sweep(const Complex* dw, const double* dg, bool speed, Complex* out,
+                                 bool yield) const
 {
     // The sweep of sweep() with q held: c = w + (B q - own diagonal) + b1
     // (change ahead), so dc = dw + b1 (dG ahead); a bound change moves a
@@ -371,6 +392,10 @@ void SteadyRolling::source_sweep(const Complex* dw, const double* dg, bool speed
     for (int j = 0; j < ny_; ++j) {
         Complex ahead(0.0, 0.0);
         double dmu = 0.0; // under memory (tangents): the change of mu ahead
+        // Under the yield: the change of the yield stress ahead, tau0 at the
+        // leading edge for the yield stress's scale (and its floor's).
+        double dtau = yield ? tau0_ : 0.0;
+        const double dfloor = yield ? yield_floor_ : 0.0;
         for (int i = nx_ - 1; i >= 0; --i) {
             const int k = i + nx_ * j;
             if (!(g_[k] > 0.0)) {
@@ -400,6 +425,7 @@ void SteadyRolling::source_sweep(const Complex* dw, const double* dg, bool speed
                 const Complex jc(J.j11 * c0x + J.j12 * c0y, J.j21 * c0x + J.j22 * c0y);
                 d += (gq_[k] - jc) * (dg[k] / g_[k]);
             }
+            if (yield_active_) yield_link(k, cx, cy, d, dtau, dfloor);
             if (memory_linear_) memory_link(k, cx, cy, d, dmu, speed);
             out[k] = d;
             ahead = d;
@@ -432,6 +458,30 @@ const std::vector<SteadyRolling::Complex>& SteadyRolling::tangent_speed(GridConv
     memory_linear_ = memory_active_ && rolling_;
     source_sweep(nullptr, nullptr, law_active_, gt_.data());
     return solve_tangent(conv, tolerance, max_iterations);
+}
+
+const std::vector<SteadyRolling::Complex>& SteadyRolling::tangent_yield(GridConvolution& conv,
+                                                                        double tolerance,
+                                                                        int max_iterations)
+{
+    memory_linear_ = false;
+    source_sweep(nullptr, nullptr, false, gt_.data(), yield_active_);
+    return solve_tangent(conv, tolerance, max_iterations);
+}
+
+void SteadyRolling::yield_link(int k, double cx, double cy, Complex& d, double& dtau,
+                               double dfloor) const
+{
+    // Adhesion keeps the yield stress ahead (dtau carried); a flowing
+    // element's bound moves by dh, its flow by dphi = e . ds.
+    if (state_[k] != 2) return;
+    const YieldElement& y = yield_info_[k];
+    const double dh = y.h_t * dtau + y.h_f * dfloor;
+    d += y.u * dh;
+    if (!y.follows) return;
+    const double dphi =
+        y.e.real() * (cx + b0x_ * d.real()) + y.e.imag() * (cy + b0y_ * d.imag());
+    dtau = y.h_phi * dphi + dh;
 }
 
 const std::vector<SteadyRolling::Complex>& SteadyRolling::solve_tangent(GridConvolution& conv,

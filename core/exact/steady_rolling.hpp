@@ -70,6 +70,15 @@ public:
     // c q at each element, A + c I in series with the half-space, so the
     // rolling operator's s_I gains c (q_I - q_ahead) and the shift's c q_I.
     void set_layer(double compliance) { layer_ = compliance; }
+    // The layer's yield with hardening or softening in the normalised units
+    // (local_friction.hpp, YieldBound): tau0 = tau_c0 / (mu p0) > 0 at each
+    // row's leading edge, k = k_tau dx / G != 0; the yield stress is carried
+    // along each row with the sweep, element by element (CONTACT's steady
+    // SteadyGS), its chain inside the Newton system and the tangents. The
+    // bound g is then the friction bound alone. k = 0 (the default): none
+    // (a perfectly plastic yield is a cap on g, the caller's). The first
+    // call with k != 0 allocates its per-element record.
+    void set_yield(double tau0, double k);
     // The friction law of the next solves: Coulomb's (bound g, the default,
     // law = nullptr) or a law of the slip speed (bound g m(sigma) at each
     // element's own normalised slip sigma = |s|, local_friction.hpp), inside
@@ -149,6 +158,10 @@ public:
     // unit of normalised slip), the law's argument scaled at fixed slip.
     const std::vector<Complex>& tangent_speed(GridConvolution& conv, double tolerance,
                                               int max_iterations);
+    // Under the yield (set_yield): the same for the yield stress's scale,
+    // tau0 and its floor times (1 + epsilon): tau_c0 dq/dtau_c0.
+    const std::vector<Complex>& tangent_yield(GridConvolution& conv, double tolerance,
+                                              int max_iterations);
 
 private:
     // solve() with the law's bounds as they stand (mu_prev held under memory).
@@ -168,6 +181,10 @@ private:
     // d gains what the change dmu of the coefficient ahead moves it by, and
     // dmu becomes element k's (speed: with the change of ln kappa).
     void memory_link(int k, double cx, double cy, Complex& d, double& dmu, bool speed) const;
+    // The yield's chain in a linearised sweep: element k's dq d (J dc, with
+    // dc = (cx, cy)) gains u dh from the change dtau of the yield stress
+    // ahead (and dfloor of its floor), and dtau becomes element k's.
+    void yield_link(int k, double cx, double cy, Complex& d, double& dtau, double dfloor) const;
     // Solves (I - G') dq = rhs (in gt_) into qt_ and checks the true residual.
     const std::vector<Complex>& solve_tangent(GridConvolution& conv, double tolerance,
                                               int max_iterations);
@@ -178,10 +195,12 @@ private:
     void product(GridConvolution& conv, const Complex* v, Complex* s);
     // out = G'(q) v at the q of the last sweep. One FFT product.
     void linear_sweep(GridConvolution& conv, const Complex* v, Complex* out);
-    // out = G_w dw + G_g dg (+ G_kappa under a law, with speed) at the q of
-    // the last sweep (the sweep's response to a change of the rigid slip, of
-    // the bound and of ln kappa; dw and dg may be null). No FFT product.
-    void source_sweep(const Complex* dw, const double* dg, bool speed, Complex* out) const;
+    // out = G_w dw + G_g dg (+ G_kappa under a law, with speed; + the yield
+    // stress's scale, with yield) at the q of the last sweep (the sweep's
+    // response to a change of the rigid slip, of the bound, of ln kappa and
+    // of tau_c0; dw and dg may be null). No FFT product.
+    void source_sweep(const Complex* dw, const double* dg, bool speed, Complex* out,
+                      bool yield = false) const;
     // Solves (I - G') x = b to relative residual eta; returns the iterations.
     int gmres(GridConvolution& conv, const std::vector<Complex>& b, std::vector<Complex>& x,
               double eta, int max_iterations);
@@ -213,6 +232,9 @@ private:
     };
     std::vector<MemoryLink> links_;
     double theta0_ = 0.0;        // theta at rest (adhesion, exterior)
+    bool yield_active_ = false;  // set_yield
+    double tau0_ = 0.0, yield_k_ = 0.0, yield_floor_ = 0.0;
+    std::vector<YieldElement> yield_info_;
     bool memory_linear_ = false; // the tangents carry the chain
     size_t capacity_ = 0; // the constructor's element count
     long friction_iterations_ = 0;

@@ -22,7 +22,7 @@ function r = solve(varargin)
 %   'global' (FASTSIM) with k0, alpha_inf, beta;
 %   memory_distance [m], memory_s0 [m/s] (FASTSIM, local); an interface
 %   layer (the exact model on the uniform grid): layer_h [m], layer_G [Pa],
-%   tau_c0 [Pa] (0: no yield), k_tau [Pa/m] (0 only).
+%   tau_c0 [Pa] (0: no yield), k_tau [Pa/m] (> 0 hardens, < 0 softens).
 %   Options: 'grid', a struct of cw_grid fields (kind 'kalker_strips',
 %   'uniform' or 'gap', nx, ny, box_scale; default Kalker's strips 20 x 20,
 %   the exact model CONTACT's uniform 24 x 24 over 1.2 a x 1.2 b); 'fields',

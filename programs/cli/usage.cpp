@@ -155,8 +155,9 @@ interface (third-body) layer, --model exact:
                     yield); with --layer-h 0 the surface yields. Coulomb's
                     law, the ellipse's grid (not --gap)
   --k-tau K         hardening (> 0) or softening (< 0) of the yield stress
-                    with the plastic displacement [Pa/m in every --units
-                    system]; the exact model takes 0 (perfectly plastic) only
+                    with the plastic displacement accumulated along the
+                    contact [Pa/m in every --units system; CONTACT's N/mm^3
+                    times 1e9]; needs --tau-c0; default 0: perfectly plastic
 contact of any shape (instead of --a, --b and the grid options):
   --gap FILE        the undeformed distance on a regular grid: a CSV file with
                     the header x_m,y_m,h_m and one line per cell centre (any

@@ -3,6 +3,8 @@
  * contact with the elastic layer of its series 2 alone (GG3 8200 N/mm^2,
  * LAYTHK 1.25 mm; tests/data/contact_tractcurv_layer.csv) and with a
  * perfectly plastic surface (TAU_C0 150 N/mm^2; contact_tractcurv_plastic.csv),
+ * hardening by K_TAU 2536.1 and softening by -81.918 N/mm^3
+ * (contact_tractcurv_hardening.csv, contact_tractcurv_softening.csv),
  * every printed digit of Fx, Fy and Mz with CONTACT's adhesion area (the bar of
  * test_core_exact_layer); full mode's map against W_macro; the other
  * models, the gap grid and the transient handle refuse a layer naming
@@ -21,6 +23,10 @@
 #define MU 0.33
 #define MAX_ROWS 64
 
+/* The layers of the tables: the elastic layer, the plastic surface,
+ * hardening and softening. */
+enum { ELASTIC, PLASTIC, HARDENING, SOFTENING };
+
 /* Hertz's pressure on CONTACT's printed semi-axes, Coulomb's 0.33. */
 static cw_params layer_contact(double xi_x, double xi_y, double phi, int plastic)
 {
@@ -28,6 +34,8 @@ static cw_params layer_contact(double xi_x, double xi_y, double phi, int plastic
     p.mu = MU;
     if (plastic) {
         p.tau_c0 = 150e6;
+        if (plastic == HARDENING) p.k_tau = 2536.1e9;
+        if (plastic == SOFTENING) p.k_tau = -81.918e9;
     } else {
         p.layer_h = 1.25e-3;
         p.layer_G = 8.2e9;
@@ -47,7 +55,8 @@ static double digits(double ours, const char* printed, double floor)
 /* Every row of a CONTACT table on grid g (gap: the Hertzian gap h): the
  * worst difference in halves of a printed digit; the contact and adhesion
  * areas element for element. */
-static double contact_rows(const char* file, int plastic, const cw_grid* g, const double* h)
+static double contact_rows(const char* file, int plastic, const cw_grid* g, const double* h,
+                           int expected_rows)
 {
     FILE* f = fopen(file, "r");
     assert_non_null(f);
@@ -86,7 +95,7 @@ static double contact_rows(const char* file, int plastic, const cw_grid* g, cons
     }
     fclose(f);
     cw_solver_destroy(s);
-    assert_int_equal(rows, 34);
+    assert_int_equal(rows, expected_rows);
     return worst;
 }
 
@@ -94,7 +103,7 @@ static void elastic_layer_rows(void** state)
 {
     (void)state;
     const cw_grid g = cw_tractcurv_grid();
-    const double worst = contact_rows(CW_TEST_DATA_DIR "/contact_tractcurv_layer.csv", 0, &g, NULL);
+    const double worst = contact_rows(CW_TEST_DATA_DIR "/contact_tractcurv_layer.csv", 0, &g, NULL, 34);
     printf("  elastic layer, 34 rows: worst %.3f of half a printed digit\n", worst);
     assert_true(worst <= 1.0);
 }
@@ -106,7 +115,7 @@ static void elastic_layer_rows_on_a_gap_grid(void** state)
     static double h[48 * 44];
     const cw_params p = layer_contact(0.0, 0.0, 0.0, 0);
     const cw_grid g = cw_tractcurv_gap_grid(&p, h);
-    const double worst = contact_rows(CW_TEST_DATA_DIR "/contact_tractcurv_layer.csv", 0, &g, h);
+    const double worst = contact_rows(CW_TEST_DATA_DIR "/contact_tractcurv_layer.csv", 0, &g, h, 34);
     printf("  elastic layer on a gap grid, 34 rows: worst %.3f of half a printed digit\n", worst);
     assert_true(worst <= 1.0);
 }
@@ -116,9 +125,23 @@ static void plastic_surface_rows(void** state)
     (void)state;
     const cw_grid g = cw_tractcurv_grid();
     const double worst =
-        contact_rows(CW_TEST_DATA_DIR "/contact_tractcurv_plastic.csv", 1, &g, NULL);
+        contact_rows(CW_TEST_DATA_DIR "/contact_tractcurv_plastic.csv", 1, &g, NULL, 34);
     printf("  plastic surface, 34 rows: worst %.3f of half a printed digit\n", worst);
     assert_true(worst <= 1.0);
+}
+
+static void hardening_and_softening_rows(void** state)
+{
+    (void)state;
+    const cw_grid g = cw_tractcurv_grid();
+    const double hard =
+        contact_rows(CW_TEST_DATA_DIR "/contact_tractcurv_hardening.csv", HARDENING, &g, NULL, 9);
+    const double soft =
+        contact_rows(CW_TEST_DATA_DIR "/contact_tractcurv_softening.csv", SOFTENING, &g, NULL, 9);
+    printf("  hardening, softening surface, 9 rows each: worst %.3f, %.3f of half a printed "
+           "digit\n", hard, soft);
+    assert_true(hard <= 1.0);
+    assert_true(soft <= 1.0);
 }
 
 /* Full mode with both the layer and the yield: the energy-consistent map
@@ -139,8 +162,9 @@ static void work_map_balances(void** state)
     cw_solver_destroy(s);
 }
 
-/* The Jacobian with the layer (and the yield on the uniform grid; the
- * elastic layer alone on a gap grid holding the Hertzian gap): the xi_x and
+/* The Jacobian with the layer (and the yield on the uniform grid, perfectly
+ * plastic and hardening; the elastic layer alone on a gap grid holding the
+ * Hertzian gap): the xi_x and
  * N columns against central differences of cw_solver_solve (cold solves to
  * 1e-13, steps 1e-6 of xi_x and of N, where no element changes state;
  * held to 1e-6 of the row). The N column carries the yield's share (tau_c
@@ -150,17 +174,18 @@ static void jacobian_against_differences(void** state)
     (void)state;
     static double h[48 * 44];
     const cw_params base = layer_contact(0.0, 0.0, 0.0, 0);
-    cw_grid grids[2];
-    grids[0] = cw_tractcurv_grid();
+    cw_grid grids[3];
+    grids[0] = grids[2] = cw_tractcurv_grid();
     grids[1] = cw_tractcurv_gap_grid(&base, h);
-    for (int gi = 0; gi < 2; ++gi) {
+    for (int gi = 0; gi < 3; ++gi) {
         cw_solver* s = NULL;
         assert_status(cw_solver_create(&grids[gi], &s, NULL, 0), CW_OK);
         /* At 2.4e-3 most of the contact flows plastically (CONTACT: 666 of
          * 1384 elements), 148 elements adhere. */
-        cw_params p = layer_contact(gi == 0 ? 2.4e-3 : 2e-3, 3e-4, 0.2, 0);
-        if (gi == 0) {
+        cw_params p = layer_contact(gi == 1 ? 2e-3 : 2.4e-3, 3e-4, 0.2, 0);
+        if (gi != 1) {
             p.tau_c0 = 150e6;
+            if (gi == 2) p.k_tau = 2536.1e9;
         } else {
             p.gap = h;
             p.gap_len = 48 * 44;
@@ -195,7 +220,8 @@ static void jacobian_against_differences(void** state)
                 const double* Jr = J + 4 * (row == 0 ? CW_JAC_FX : CW_JAC_FY);
                 const double size = fabs(Jr[CW_JAC_XI_X]) * 2e-3 + fabs(Jr[CW_JAC_N]) * N_TC;
                 printf("  %s, column %d, row %d: %.8g (differences %.8g)\n",
-                       gi ? "gap grid" : "uniform grid", cols[k], row, Jr[cols[k]], dF[row]);
+                       gi == 1 ? "gap grid" : gi ? "hardening" : "uniform grid", cols[k], row,
+                       Jr[cols[k]], dF[row]);
                 assert_close(Jr[cols[k]] * scale, dF[row] * scale, 0.0, 1e-6 * size);
             }
         }
@@ -205,8 +231,8 @@ static void jacobian_against_differences(void** state)
 
 /* A model without the layer refuses it by the name of its input: FASTSIM,
  * the calibrated model, the transient handle, and the yield the exact model
- * on a gap grid; the exact model refuses k_tau != 0 and a yield under a
- * law. */
+ * on a gap grid; the exact model refuses k_tau without a yield stress and
+ * a yield under a law. */
 static void refusals_name_the_input(void** state)
 {
     (void)state;
@@ -268,7 +294,6 @@ static void refusals_name_the_input(void** state)
         cw_params q = layer_contact(1e-3, 0.0, 0.0, 0);
         double* f[4] = {&q.layer_h, &q.layer_G, &q.tau_c0, &q.k_tau};
         *f[bad[k].field] = bad[k].value;
-        if (bad[k].field == 3) q.tau_c0 = 150e6; /* k_tau with a yield: not modelled */
         cw_result_init(&r);
         assert_status(cw_solver_solve(s, &q, CW_SOLVE_FORCES, &r), CW_ERR_INVALID_INPUT);
         assert_names(cw_solver_last_error(s), bad[k].name);
@@ -324,6 +349,7 @@ int main(void)
         cmocka_unit_test(elastic_layer_rows),
         cmocka_unit_test(elastic_layer_rows_on_a_gap_grid),
         cmocka_unit_test(plastic_surface_rows),
+        cmocka_unit_test(hardening_and_softening_rows),
         cmocka_unit_test(work_map_balances),
         cmocka_unit_test(jacobian_against_differences),
         cmocka_unit_test(refusals_name_the_input),

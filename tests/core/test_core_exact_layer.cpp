@@ -11,6 +11,14 @@
 //  - full sliding with a perfectly plastic layer: F = sum min(mu p, tau_c) dA
 //    over the solved pressure, and the Hertzian closed form
 //    F / (mu N) = 1.5 t - 0.5 t^3, t = tau_c / (mu p0);
+//  - hardening and softening (k_tau != 0): CONTACT's exact theory on the
+//    same contact with tractcurve_plast's surface (h = 0, tau_c0 = 150 MPa)
+//    hardening by k_tau = 2536.1 N/mm^3 and softening by -81.918 N/mm^3
+//    (contact_tractcurv_hardening.csv, contact_tractcurv_softening.csv),
+//    every printed digit and the adhesion areas; k_tau -> 0 gives the
+//    perfectly plastic results; full sliding: a hardening layer carries
+//    mu N, a softening one min(mu p, floor) behind the row's first plastic
+//    element (CONTACT's floor 0.1 tau_c0);
 //  - h = 0 gives the model without a layer bitwise, and only h / G3 counts;
 //  - the Jacobian against central differences, the work map's balance, and
 //    every refusal naming its input.
@@ -54,6 +62,24 @@ cw::ContactInput with_layer(cw::ContactInput in)
 cw::ContactInput plastic(cw::ContactInput in)
 {
     in.tau_c0 = kTauC;
+    return in;
+}
+
+// tractcurve_plast's 3rd series hardens by K_TAU = 2536.1 N/mm^3, its 7th
+// softens by -81.918 N/mm^3 (h = 0, tau_c0 = 150 N/mm^2).
+const double kHardening = 2536.1e9, kSoftening = -81.918e9;
+
+cw::ContactInput hardening(cw::ContactInput in)
+{
+    in.tau_c0 = kTauC;
+    in.k_tau = kHardening;
+    return in;
+}
+
+cw::ContactInput softening(cw::ContactInput in)
+{
+    in.tau_c0 = kTauC;
+    in.k_tau = kSoftening;
     return in;
 }
 
@@ -169,6 +195,79 @@ void plastic_full_sliding(void**)
     assert_close(-s.solve(none, cw::SolveMode::forces_only).Fx, kMu * kN, 1e-6, 0.0);
 }
 
+void hardening_rows(void**)
+{
+    const double worst = contact_rows("contact_tractcurv_hardening.csv", hardening, 9);
+    printf("  hardening surface: worst |ours - CONTACT| = %.3f of half a printed digit\n", worst);
+    assert_true(worst <= 1.0);
+}
+
+void softening_rows(void**)
+{
+    const double worst = contact_rows("contact_tractcurv_softening.csv", softening, 9);
+    printf("  softening surface: worst |ours - CONTACT| = %.3f of half a printed digit\n", worst);
+    assert_true(worst <= 1.0);
+}
+
+// k_tau -> 0 from either side is the perfectly plastic layer (its bound
+// capped, a path of its own): |k_tau| = 1 Pa/m moves the yield stress by
+// at most 1 Pa per metre of plastic flow, nothing at these digits.
+void small_k_tau_is_perfectly_plastic(void**)
+{
+    cw::ExactModel m(cwtest::tractcurv_grid());
+    for (double xi : {8e-4, 2e-3, 0.01}) {
+        cw::ContactInput in = plastic(cwtest::tractcurv_exact(xi, 3e-4, 0.1));
+        in.warm_start = false;
+        in.tolerance = 1e-12;
+        const cw::SolveTotals p = m.solve(in, cw::SolveMode::forces_only);
+        for (double k : {1.0, -1.0}) {
+            cw::ContactInput h = in;
+            h.k_tau = k;
+            const cw::SolveTotals t = m.solve(h, cw::SolveMode::forces_only);
+            assert_close(t.Fx, p.Fx, 1e-9, 0.0);
+            assert_close(t.Fy, p.Fy, 1e-9, 0.0);
+            assert_close(t.Mz, p.Mz, 1e-9, 1e-9);
+            assert_int_equal(t.n_adhesion, p.n_adhesion);
+        }
+    }
+}
+
+// Full sliding. Hardening: every element's yield stress reaches mu p within
+// its own flow (k_tau dx / G times the flow, ~0.8 mu p0 at xi = 0.25, beyond
+// mu p - tau_c0 <= 0.29 mu p0), so the contact carries mu N. Softening by
+// -1e5 N/mm^3: along each row the elements slide at mu p while mu p <=
+// tau_c0; the first one beyond yields down to CONTACT's floor 0.1 tau_c0 at
+// once, and every one behind it carries min(mu p, 0.1 tau_c0).
+void full_sliding_hardening_and_softening(void**)
+{
+    cw::Solver s(cwtest::tractcurv_grid(), cw::ModelKind::exact);
+    cw::ContactInput in = hardening(cwtest::tractcurv_exact(0.25));
+    const cw::SolveTotals& h = s.solve(in, cw::SolveMode::full);
+    assert_int_equal(h.n_slip, h.n_contact);
+    printf("  hardening full sliding: %.8f of mu N\n", -h.Fx / (kMu * kN));
+    assert_close(-h.Fx, kMu * kN, 1e-6, 0.0);
+
+    in.k_tau = -1e14;
+    const cw::SolveTotals& t = s.solve(in, cw::SolveMode::full);
+    assert_int_equal(t.n_slip, t.n_contact);
+    const std::vector<double> pz = cwtest::field(s, cw::Field::pz);
+    const std::vector<double> area = cwtest::field(s, cw::Field::area);
+    const int nx = cwtest::tractcurv_grid().nx, ny = cwtest::tractcurv_grid().ny;
+    double sum = 0.0;
+    for (int j = 0; j < ny; ++j) {
+        bool yielded = false; // rolling towards +x: the leading edge is at i = nx - 1
+        for (int i = nx - 1; i >= 0; --i) {
+            const size_t k = size_t(i) + size_t(nx) * j;
+            const double g = kMu * pz[k];
+            yielded |= g > kTauC;
+            sum += (yielded ? std::min(g, 0.1 * kTauC) : g) * area[k];
+        }
+    }
+    printf("  softening full sliding: %.6f of mu N; the rows' sum %.6f\n", -t.Fx / (kMu * kN),
+           sum / (kMu * kN));
+    assert_close(-t.Fx, sum, 1e-6, 0.0);
+}
+
 bool same_bits(const cw::SolveTotals& a, const cw::SolveTotals& b)
 {
     return std::memcmp(&a.Fx, &b.Fx, sizeof a.Fx) == 0 && std::memcmp(&a.Fy, &b.Fy, sizeof a.Fy) == 0 &&
@@ -203,7 +302,9 @@ void zero_thickness_is_no_layer(void**)
 void jacobian_central_differences(void**)
 {
     cw::Solver s(cwtest::guarded_grid(16), cw::ModelKind::exact);
-    for (int yield = 0; yield < 2; ++yield) {
+    const char* label[4] = {"16x16 elastic layer", "16x16 layer + yield", "16x16 hardening",
+                            "16x16 softening"};
+    for (int yield = 0; yield < 4; ++yield) {
         cw::ContactInput in = cwtest::steel_contact(0.7);
         in.model = cw::ModelKind::exact;
         in.tolerance = 1e-13;
@@ -214,12 +315,15 @@ void jacobian_central_differences(void**)
         in.layer_h = 20e-6;
         in.layer_G = 1e9; // compliance 2e-14 m/Pa, about L1's share
         if (yield) in.tau_c0 = 0.6 * in.mu * 3.0 * in.normal_force / (2.0 * M_PI * in.a * in.b);
+        // k_tau dx / G = 0.05 and -0.01 (dx = 0.75 mm)
+        if (yield == 2) in.k_tau = 5.5e12;
+        if (yield == 3) in.k_tau = -1.1e12;
         cw::Jacobian J;
         const cw::SolveTotals t = s.solve_jacobian(in, cw::SolveMode::forces_only, J);
         assert_true(t.n_slip > 0 && t.n_adhesion > 0);
         const double c = std::sqrt(in.a * in.b);
         const double err = cwtest::jacobian_step_study(
-            yield ? "16x16 layer + yield" : "16x16 elastic layer", 30, s, in, J,
+            label[yield], 30, s, in, J,
             {1e-3, 1e-3, 1e-3 / c, in.normal_force}, t.n_slip, 1e-3, 1e-7);
         assert_true(err <= 1e-6);
     }
@@ -264,15 +368,19 @@ void refusals_name_the_input(void**)
     in = base;
     in.k_tau = 1e9;
     expect_error_naming(solve(exact, in), "k_tau"); // needs tau_c0
-    in.tau_c0 = kTauC;
-    expect_error_naming(solve(exact, in), "k_tau"); // not modelled
-    in = plastic(base);
-    in.friction_law = cw::FrictionLaw::exponential;
-    in.mu = 0.14;
-    in.mu_e1 = 0.19;
-    in.s_h1 = 1.25;
-    in.V = 10.0;
-    expect_error_naming(solve(exact, in), "tau_c0");
+    in = hardening(base);
+    in.k_tau = INFINITY;
+    expect_error_naming(solve(exact, in), "k_tau");
+    for (double k_tau : {0.0, kHardening}) { // a yield under a law, perfectly plastic or not
+        in = plastic(base);
+        in.k_tau = k_tau;
+        in.friction_law = cw::FrictionLaw::exponential;
+        in.mu = 0.14;
+        in.mu_e1 = 0.19;
+        in.s_h1 = 1.25;
+        in.V = 10.0;
+        expect_error_naming(solve(exact, in), "tau_c0");
+    }
     // Every other model refuses a layer by the name of its first input.
     cw::Solver fastsim(cwtest::kalker_grid(20, 20));
     in = with_layer(cwtest::tractcurv_contact(1e-3));
@@ -294,6 +402,10 @@ int main()
         cmocka_unit_test(plastic_rows),
         cmocka_unit_test(initial_slope_factor),
         cmocka_unit_test(plastic_full_sliding),
+        cmocka_unit_test(hardening_rows),
+        cmocka_unit_test(softening_rows),
+        cmocka_unit_test(small_k_tau_is_perfectly_plastic),
+        cmocka_unit_test(full_sliding_hardening_and_softening),
         cmocka_unit_test(zero_thickness_is_no_layer),
         cmocka_unit_test(jacobian_central_differences),
         cmocka_unit_test(work_map_balances),

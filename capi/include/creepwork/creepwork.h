@@ -318,17 +318,18 @@ typedef struct cw_params {
     double memory_s0;      /* its background slip speed s0 [m/s] >= 0 (default 0) */
     /* An interface (third-body) layer between the bodies (doc/theory/interface-layer.md):
      * an elastic shear compliance layer_h / layer_G in series with the bodies and a yield
-     * stress tau_c = tau_c0 + k_tau u_pl. CW_MODEL_EXACT takes the elastic layer on
-     * the uniform and gap grids and the yield on the uniform grid (CW_FRICTION_COULOMB,
-     * k_tau = 0); every other model and the transient handle refuse a layer with an
-     * error naming layer_h (or tau_c0, k_tau). Defaults 0: no layer. */
+     * stress tau_c = tau_c0 + k_tau u_pl (u_pl the plastic displacement accumulated along
+     * the contact). CW_MODEL_EXACT takes the elastic layer on the uniform and gap grids and
+     * the yield on the uniform grid (CW_FRICTION_COULOMB); every other model and the
+     * transient handle refuse a layer with an error naming layer_h (or tau_c0, k_tau).
+     * Defaults 0: no layer. */
     double layer_h;        /* the layer's thickness h [m] >= 0; 0 (default) = no elastic layer */
     double layer_G;        /* its shear modulus G3 [Pa], > 0 when layer_h > 0 (only
                               layer_h / layer_G matters) */
     double tau_c0;         /* its yield stress in shear [Pa] >= 0; 0 (default) = no yield */
     double k_tau;          /* its hardening (> 0) or softening (< 0) with the plastic
-                              displacement [Pa/m]; 0 (default) = perfectly plastic, the
-                              only value the exact model takes */
+                              displacement [Pa/m], finite, with tau_c0 > 0; 0 (default) =
+                              perfectly plastic; softening stops at 0.1 tau_c0 */
 } cw_params;
 
 /* Defaults: steel (G = 82e9 Pa, nu = 0.28), mu = 0.3, a = b = 6e-3 m,

@@ -204,7 +204,7 @@ void layer_json_matches_library(void**)
         {with(exact, {"--layer-G", "8e9"}), "--layer-G"},
         {with(exact, {"--tau-c0", "-5"}), "--tau-c0"},
         {with(exact, {"--k-tau", "1e9"}), "--k-tau"},
-        {with(exact, {"--tau-c0", "1.5e8", "--k-tau", "1e9"}), "--k-tau"},
+        {with(exact, {"--tau-c0", "1.5e8", "--k-tau", "inf"}), "--k-tau"},
         {{"--layer-h", "1e-3", "--layer-G", "8e9"}, "--layer-h"},
         {{"--model", "calibrated", "--tau-c0", "1.5e8"}, "--tau-c0"},
     };
