@@ -460,6 +460,22 @@ void profile_messages_name_the_cause(void**)
     assert_true(z.err.find("threshold") == std::string::npos);
 }
 
+// Patch 0 of the CLI's JSON q (benchmark_args() at --V 10) against the C
+// ABI's with params p: the same forces, to the bit. The library's patch.
+cw_wheelrail_patch expect_library_patch(const cwtest::Json& q, const cw_wheelrail_params& p)
+{
+    cw_wheelrail_totals t;
+    cw_wheelrail* w = solved_benchmark(t, &p, 10.0, -21.374417);
+    cw_wheelrail_patch pa;
+    cw_wheelrail_patch_init(&pa);
+    assert_int_equal(cw_wheelrail_get_patch(w, 0, &pa), CW_OK);
+    cw_wheelrail_destroy(w);
+    assert_close(q.num("Fn"), pa.Fn, 1e-15, 0);
+    assert_close(q.num("Fx_rail"), pa.Fx, 1e-15, 0);
+    assert_close(q.num("Fs_rail"), pa.Fs, 1e-15, 0);
+    return pa;
+}
+
 // --friction-law polach --mu MU0 --polach-A A --polach-B B: the patch's
 // forces equal, bitwise, the C ABI's with the law cw_friction_polach writes
 // (the option's documented meaning), at 10 m/s; the law lowers the force
@@ -485,15 +501,7 @@ void friction_law_matches_library(void**)
     p.mu = law.mu;
     p.mu_e1 = law.mu_e1;
     p.s_h1 = law.s_h1;
-    cw_wheelrail_totals t;
-    cw_wheelrail* w = solved_benchmark(t, &p, 10.0, -21.374417);
-    cw_wheelrail_patch pa;
-    cw_wheelrail_patch_init(&pa);
-    assert_int_equal(cw_wheelrail_get_patch(w, 0, &pa), CW_OK);
-    cw_wheelrail_destroy(w);
-    assert_close(q.num("Fn"), pa.Fn, 1e-15, 0);
-    assert_close(q.num("Fx_rail"), pa.Fx, 1e-15, 0);
-    assert_close(q.num("Fs_rail"), pa.Fs, 1e-15, 0);
+    const cw_wheelrail_patch pa = expect_library_patch(q, p);
     assert_true(std::hypot(pa.Fx, pa.Fs) < 0.36 * pa.Fn * 0.95);
 
     using cwtest::cli;
@@ -536,15 +544,7 @@ void memory_and_layer_match_library(void**)
     p.memory_s0 = 1e-3;
     p.layer_h = 1.25e-3;
     p.layer_G = 8.2e9;
-    cw_wheelrail_totals t;
-    cw_wheelrail* w = solved_benchmark(t, &p, 10.0, -21.374417);
-    cw_wheelrail_patch pa;
-    cw_wheelrail_patch_init(&pa);
-    assert_int_equal(cw_wheelrail_get_patch(w, 0, &pa), CW_OK);
-    cw_wheelrail_destroy(w);
-    assert_close(q.num("Fn"), pa.Fn, 1e-15, 0);
-    assert_close(q.num("Fx_rail"), pa.Fx, 1e-15, 0);
-    assert_close(q.num("Fs_rail"), pa.Fs, 1e-15, 0);
+    expect_library_patch(q, p);
 
     const cwtest::Run mm = cwtest::cli_ok(cwtest::with(args, {"--layer-h", "1.25", "--layer-G", "8.2e9"}));
     cwtest::expect_contains(mm.err, "warning: --layer-h = 1.25 m is implausible");
