@@ -8,10 +8,12 @@
 //  * the layer lowers the initial slope by springs in series,
 //    L1 / (L1 + h / G3) (doc/theory/interface-layer.md) with L1 from the
 //    patch's own semi-axes;
+//  * a caller's struct cut before the fields gets neither;
 //  * every invalid field is refused naming it; the layer's units are warned of
 //    by the single contact's rules (cw_wheelrail_check).
 // The core and the standard library first: cmocka's macros would clash.
 #include <cmath>
+#include <cstddef>
 #include <cstdio>
 #include <cstring>
 #include <string>
@@ -267,6 +269,25 @@ void layer_lowers_the_initial_slope(void**)
     assert_true(ratio >= 0.99 * lo_band && ratio <= 1.01 * hi_band);
 }
 
+// A caller built before the fields (struct_size ending at mu_e2, s_h2) gets
+// their defaults whatever lies beyond: no memory, no layer, the plain
+// patch to the bit.
+void older_callers_have_neither(void**)
+{
+    const cw_wheelrail_motion m = motion(height(), kVpitch);
+    cw_wheelrail_params p;
+    cw_wheelrail_params_init(&p);
+    Solved plain, cut;
+    std::string error;
+    assert_int_equal(solve(p, m, false, plain, error), CW_OK);
+    p.layer_h = kLayerH;
+    p.layer_G = kLayerG;
+    p.struct_size = offsetof(cw_wheelrail_params, memory_distance);
+    assert_int_equal(solve(p, m, false, cut, error), CW_OK);
+    assert_true(cut.patch.Fx == plain.patch.Fx && cut.patch.Fs == plain.patch.Fs &&
+                cut.patch.Fn == plain.patch.Fn);
+}
+
 void refused(const cw_wheelrail_params& p, int status, const char* needle)
 {
     Solved s;
@@ -358,6 +379,7 @@ int main(int argc, char** argv)
         cmocka_unit_test(layer_patch_is_cw_solve_on_its_gap),
         cmocka_unit_test(memory_patch_is_cw_solve_on_its_gap),
         cmocka_unit_test(layer_lowers_the_initial_slope),
+        cmocka_unit_test(older_callers_have_neither),
         cmocka_unit_test(errors_name_their_field),
         cmocka_unit_test(layer_units_are_warned_of),
     };
