@@ -62,7 +62,9 @@ void check_params(const cw_wheelrail_params& p)
         {"d_sep", p.d_sep}, {"d_comb", p.d_comb}, {"mu", p.mu}, {"G", p.G}, {"nu", p.nu},
         {"tolerance", p.tolerance}, {"profile_unit", p.profile_unit},
         {"rail_y_offset", p.rail_y_offset}, {"wheel_y_offset", p.wheel_y_offset},
-        {"mu_e1", p.mu_e1}, {"s_h1", p.s_h1}, {"mu_e2", p.mu_e2}, {"s_h2", p.s_h2}};
+        {"mu_e1", p.mu_e1}, {"s_h1", p.s_h1}, {"mu_e2", p.mu_e2}, {"s_h2", p.s_h2},
+        {"memory_distance", p.memory_distance}, {"memory_s0", p.memory_s0}, {"layer_h", p.layer_h},
+        {"layer_G", p.layer_G}, {"tau_c0", p.tau_c0}, {"k_tau", p.k_tau}};
     for (const auto& [name, v] : all) require_finite((std::string("params->") + name).c_str(), v);
     if (p.model != CW_MODEL_EXACT && p.model != CW_MODEL_FASTSIM)
         fail(CW_ERR_UNKNOWN_OPTION, "params->model = " + std::to_string(p.model) +
@@ -134,6 +136,12 @@ wr::WheelRailContact make_contact(const cw_wheelrail_params& p, const wr::Profil
     c.s_h1 = p.s_h1;
     c.mu_e2 = p.mu_e2;
     c.s_h2 = p.s_h2;
+    c.memory_distance = p.memory_distance;
+    c.memory_s0 = p.memory_s0;
+    c.layer_h = p.layer_h;
+    c.layer_G = p.layer_G;
+    c.tau_c0 = p.tau_c0;
+    c.k_tau = p.k_tau;
     c.model = p.model == CW_MODEL_FASTSIM ? cw::ModelKind::fastsim : cw::ModelKind::exact;
     c.normal_method =
         p.normal_method == CW_NORMAL_SEMI_HERTZ ? cw::NormalMethod::semi_hertz : cw::NormalMethod::exact;
@@ -149,6 +157,9 @@ cw_wheelrail* make_handle(const cw_wheelrail_params& p, const wr::Profile& rail,
     auto* w = new cw_wheelrail(make_contact(p, rail, wheel));
     w->inputs.mu = p.mu;
     w->inputs.G = p.G;
+    w->inputs.layer_h = p.layer_h;
+    w->inputs.layer_G = p.layer_G;
+    w->inputs.tau_c0 = p.tau_c0;
     return w;
 }
 

@@ -33,6 +33,7 @@
 !   CWWUPD  profile update: new = old - (smoothed) depth
 !   CWTEMP  surface temperature of both bodies of one contact, their maxima
 !   CWFLAW  forces of one contact under a friction law of the slip speed
+!   CWFMEM  CWFLAW with friction memory and an interface layer
 !   CWERRM  the message of an IERR value
 !   CWLAST  the detailed message of the calling thread's last call, naming
 !           the offending input

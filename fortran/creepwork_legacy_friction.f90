@@ -1,5 +1,63 @@
 ! creepwork_legacy_friction.f90 -- the legacy layer's friction laws of the
-! slip speed (doc/theory/friction.md; conventions: creepwork_legacy.f90).
+! slip speed, friction memory and the interface layer (doc/theory/friction.md,
+! doc/theory/interface-layer.md; conventions: creepwork_legacy.f90).
+
+! What CWFLAW and CWFMEM share: the law's cw_params and the forces-only solve
+! on CWSOLX's grid.
+module creepwork_legacy_law
+   use, intrinsic :: iso_c_binding, only: c_double, c_int
+   use creepwork, only: cw_params, cw_result, cw_solver_type, CW_GRID_UNIFORM, CW_SOLVE_FORCES, &
+                        CW_OK
+   use creepwork_legacy_support, only: material_params, remember
+   implicit none
+   private
+   public :: law_params, law_forces
+
+contains
+
+   function law_params(MODEL, A, B, FN, FMU, G, PNU, XI, ETA, PHI, LAW, FE1, SH1, FE2, SH2, V) &
+      result(p)
+      integer(c_int), intent(in) :: MODEL, LAW
+      real(c_double), intent(in) :: A, B, FN, FMU, G, PNU, XI, ETA, PHI, FE1, SH1, FE2, SH2, V
+      type(cw_params) :: p
+      p = material_params(A, B, FN, FMU, G, PNU, XI, ETA, PHI)
+      p%model = MODEL
+      p%friction_law = LAW
+      p%mu_e1 = FE1
+      p%s_h1 = SH1
+      p%mu_e2 = FE2
+      p%s_h2 = SH2
+      p%V = V
+   end function law_params
+
+   ! Solves p on CWSOLX's grid, forces only, with its own solver; the
+   ! outputs are set only on success.
+   subroutine law_forces(p, NX, NY, BOX, FX, FY, FMZ, FMUR, IERR)
+      type(cw_params), intent(in) :: p
+      integer(c_int), intent(in) :: NX, NY
+      real(c_double), intent(in) :: BOX
+      real(c_double), intent(inout) :: FX, FY, FMZ
+      real(c_double), intent(inout), dimension(3) :: FMUR
+      integer(c_int), intent(out) :: IERR
+      type(cw_result) :: r
+      type(cw_solver_type) :: solver
+      character(len=:), allocatable :: message
+      integer :: stat
+      call solver%create(nx=NX, ny=NY, kind=int(CW_GRID_UNIFORM), box_scale=BOX, stat=stat, &
+                         errmsg=message)
+      if (stat == CW_OK) call solver%solve(p, CW_SOLVE_FORCES, r, stat=stat, errmsg=message)
+      if (stat == CW_OK) then
+         FX = r%Fx
+         FY = r%Fy
+         FMZ = r%Mz
+         FMUR = [r%mu_static, r%mu_min, r%mu_max]
+      end if
+      IERR = int(stat, c_int)
+      call remember(message)
+      call solver%destroy()
+   end subroutine law_forces
+
+end module creepwork_legacy_law
 
 ! Forces of one contact under a friction law of the slip speed, on CONTACT's
 ! uniform grid as CWSOLX (rolling towards +x, flexibilities or half-space
@@ -24,44 +82,65 @@
 subroutine CWFLAW(MODEL, A, B, FN, FMU, G, PNU, XI, ETA, PHI, NX, NY, BOX, LAW, FE1, SH1, FE2, &
                   SH2, V, FX, FY, FMZ, FMUR, IERR)
    use, intrinsic :: iso_c_binding, only: c_double, c_int
-   use creepwork, only: cw_params, cw_result, cw_solver_type, CW_GRID_UNIFORM, CW_SOLVE_FORCES, &
-                        CW_OK
-   use creepwork_legacy_support, only: check_normal, check_cells, material_params, remember
+   use creepwork, only: CW_OK
+   use creepwork_legacy_support, only: check_normal, check_cells
+   use creepwork_legacy_law, only: law_params, law_forces
    implicit none
    integer(c_int), intent(in) :: MODEL, NX, NY, LAW
    real(c_double), intent(in) :: A, B, FN, FMU, G, PNU, XI, ETA, PHI, BOX, FE1, SH1, FE2, SH2, V
    real(c_double), intent(inout) :: FX, FY, FMZ
    real(c_double), intent(inout), dimension(3) :: FMUR
    integer(c_int), intent(out) :: IERR
-   type(cw_params) :: p
-   type(cw_result) :: r
-   type(cw_solver_type) :: solver
-   character(len=:), allocatable :: message
-   integer :: stat
    call check_cells(NX, 'NX', IERR)
    if (IERR == CW_OK) call check_cells(NY, 'NY', IERR)
    if (IERR == CW_OK) call check_normal([A, B, FN, FMU, G, PNU, XI, ETA, PHI, BOX, FE1, SH1, FE2, &
                                          SH2, V], 'A B FN FMU G PNU XI ETA PHI BOX FE1 SH1 FE2 SH2 V', &
                                         IERR)
    if (IERR /= CW_OK) return
-   p = material_params(A, B, FN, FMU, G, PNU, XI, ETA, PHI)
-   p%model = MODEL
-   p%friction_law = LAW
-   p%mu_e1 = FE1
-   p%s_h1 = SH1
-   p%mu_e2 = FE2
-   p%s_h2 = SH2
-   p%V = V
-   call solver%create(nx=NX, ny=NY, kind=int(CW_GRID_UNIFORM), box_scale=BOX, stat=stat, &
-                      errmsg=message)
-   if (stat == CW_OK) call solver%solve(p, CW_SOLVE_FORCES, r, stat=stat, errmsg=message)
-   if (stat == CW_OK) then
-      FX = r%Fx
-      FY = r%Fy
-      FMZ = r%Mz
-      FMUR = [r%mu_static, r%mu_min, r%mu_max]
-   end if
-   IERR = int(stat, c_int)
-   call remember(message)
-   call solver%destroy()
+   call law_forces(law_params(MODEL, A, B, FN, FMU, G, PNU, XI, ETA, PHI, LAW, FE1, SH1, FE2, SH2, &
+                              V), NX, NY, BOX, FX, FY, FMZ, FMUR, IERR)
 end subroutine CWFLAW
+
+! CWFLAW with friction memory and an interface layer (cw_params'
+! memory_distance, memory_s0, layer_h, layer_G, tau_c0, k_tau; the
+! library's messages name them so):
+!   MODEL ... V   as CWFLAW
+!   DC        memory: the characteristic slip distance d_c [m] >= 0 (0: none;
+!             it acts with a law, LAW > 0)
+!   S0        memory: the background slip speed s0 [m/s] >= 0
+!   HL, G3    the layer's thickness [m] >= 0 (0: none) and shear modulus
+!             [Pa], > 0 when HL > 0: the exact model (MODEL 1) only
+!   TAUC0     the layer's yield stress [Pa] >= 0 (0: none): the exact model
+!             with Coulomb's law (LAW 0)
+!   TAUK      its hardening with the plastic displacement [Pa/m] (0)
+!   FX, FY, FMZ, FMUR, IERR   as CWFLAW
+subroutine CWFMEM(MODEL, A, B, FN, FMU, G, PNU, XI, ETA, PHI, NX, NY, BOX, LAW, FE1, SH1, FE2, &
+                  SH2, V, DC, S0, HL, G3, TAUC0, TAUK, FX, FY, FMZ, FMUR, IERR)
+   use, intrinsic :: iso_c_binding, only: c_double, c_int
+   use creepwork, only: cw_params, CW_OK
+   use creepwork_legacy_support, only: check_normal, check_cells
+   use creepwork_legacy_law, only: law_params, law_forces
+   implicit none
+   integer(c_int), intent(in) :: MODEL, NX, NY, LAW
+   real(c_double), intent(in) :: A, B, FN, FMU, G, PNU, XI, ETA, PHI, BOX, FE1, SH1, FE2, SH2, V
+   real(c_double), intent(in) :: DC, S0, HL, G3, TAUC0, TAUK
+   real(c_double), intent(inout) :: FX, FY, FMZ
+   real(c_double), intent(inout), dimension(3) :: FMUR
+   integer(c_int), intent(out) :: IERR
+   type(cw_params) :: p
+   call check_cells(NX, 'NX', IERR)
+   if (IERR == CW_OK) call check_cells(NY, 'NY', IERR)
+   if (IERR == CW_OK) call check_normal([A, B, FN, FMU, G, PNU, XI, ETA, PHI, BOX, FE1, SH1, FE2, &
+                                         SH2, V, DC, S0, HL, G3, TAUC0, TAUK], &
+                                        'A B FN FMU G PNU XI ETA PHI BOX FE1 SH1 FE2 SH2 V DC S0 HL '// &
+                                        'G3 TAUC0 TAUK', IERR)
+   if (IERR /= CW_OK) return
+   p = law_params(MODEL, A, B, FN, FMU, G, PNU, XI, ETA, PHI, LAW, FE1, SH1, FE2, SH2, V)
+   p%memory_distance = DC
+   p%memory_s0 = S0
+   p%layer_h = HL
+   p%layer_G = G3
+   p%tau_c0 = TAUC0
+   p%k_tau = TAUK
+   call law_forces(p, NX, NY, BOX, FX, FY, FMZ, FMUR, IERR)
+end subroutine CWFMEM

@@ -271,6 +271,17 @@ FORTRAN_MUTANTS = [
     dict(id="f-cwlast-padding", what="CWLAST leaves MSG unpadded after the message",
          file="fortran/creepwork_legacy_tools.f90",
          old="   if (n < len(MSG)) MSG(n + 1:) = ' '", new="   continue", tests=FORTRAN),
+    # CWFMEM: against module creepwork bit for bit and against closed forms.
+    dict(id="f-cwfmem-memory", what="CWFMEM drops the memory's slip distance",
+         file="fortran/creepwork_legacy_friction.f90",
+         old="   p%memory_distance = DC", new="   p%memory_distance = 0",
+         tests=["test_fortran_legacy_friction", "test_fortran_legacy_memory"],
+         require=["test_fortran_legacy_friction", "test_fortran_legacy_memory"]),
+    dict(id="f-cwfmem-layer", what="CWFMEM drops the layer's thickness",
+         file="fortran/creepwork_legacy_friction.f90",
+         old="   p%layer_h = HL", new="   p%layer_h = 0",
+         tests=["test_fortran_legacy_friction", "test_fortran_legacy_memory"],
+         require=["test_fortran_legacy_friction", "test_fortran_legacy_memory"]),
 ]
 MUTANTS = MUTANTS + FORTRAN_MUTANTS
 
@@ -644,6 +655,27 @@ WHEELRAIL_MUTANTS += [
          new="        in.mu_e1 = 0.0;",
          tests=["test_wheelrail_friction", "python_test_wheelrail"],
          require=["test_wheelrail_friction", "python_test_wheelrail"]),
+    # Memory and layer in the patches: against cw_solve on the patch's gap,
+    # the Python door's keywords; the layer's units by the contact's rules.
+    dict(id="wheelrail-layer", what="a patch without its interface layer",
+         file="core/wheelrail/patch_contact.cpp",
+         old="    in.layer_h = settings_.layer_h;",
+         new="    in.layer_h = 0.0;",
+         tests=["test_wheelrail_layer", "python_test_wheelrail"],
+         require=["test_wheelrail_layer", "python_test_wheelrail"]),
+    dict(id="wheelrail-memory", what="a patch's law without its memory",
+         file="core/wheelrail/patch_contact.cpp",
+         old="        in.memory_distance = settings_.memory_distance;",
+         new="        in.memory_distance = 0.0;",
+         tests=["test_wheelrail_layer", "python_test_wheelrail"],
+         require=["test_wheelrail_layer", "python_test_wheelrail"]),
+    dict(id="wheelrail-layer-units", what="the wheel/rail checks blind to the layer's thickness",
+         file="core/wheelrail/placement_checks.cpp",
+         old="    layer.layer_h = in.layer_h;",
+         new="    layer.layer_h = 0.0;",
+         tests=["test_wheelrail_layer", "python_test_wheelrail",
+                "cli_wheelrail_memory_and_layer_match_library"],
+         require=["test_wheelrail_layer", "python_test_wheelrail"]),
 ]
 MUTANTS += WHEELRAIL_MUTANTS
 # ------------------------------------------------------------ end wheel/rail

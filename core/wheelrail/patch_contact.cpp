@@ -4,8 +4,10 @@
 #include <string>
 #include <utility>
 
+#include "contact/contact_input.hpp"
 #include "contact/error.hpp"
 #include "contact/number_text.hpp"
+#include "friction/friction_memory.hpp"
 #include "wheelrail/hertz_patch.hpp"
 
 namespace creepwork::wheelrail {
@@ -33,6 +35,18 @@ PatchContact::PatchContact(const PatchContactSettings& s) : settings_(s)
     if (s.friction_law != FrictionLaw::coulomb && s.model != ModelKind::exact)
         throw Error(ErrorKind::invalid_input, "wheel/rail contact: friction_law: a law of the slip speed "
                                               "needs the exact model (FASTSIM on a patch is Coulomb's)");
+    // Memory and layer once for every patch, by the checks a single contact's solve makes.
+    check_friction_memory({s.memory_distance, s.memory_s0});
+    ContactInput layer;
+    layer.layer_h = s.layer_h;
+    layer.layer_G = s.layer_G;
+    layer.tau_c0 = s.tau_c0;
+    layer.k_tau = s.k_tau;
+    validate_layer_input(layer);
+    if (const char* name = layer_input_name(layer); name && s.model != ModelKind::exact)
+        throw Error(ErrorKind::invalid_input, std::string("wheel/rail contact: ") + name +
+                                                  ": an interface layer needs the exact model "
+                                                  "(FASTSIM on a patch has none)");
 }
 
 Solver& PatchContact::solver_for(std::size_t k, int nx, int ny, double dx, double dy)
@@ -109,7 +123,13 @@ const PatchSolution& PatchContact::solve(const ContactPatch& p, std::size_t k, b
         in.mu_e2 = settings_.mu_e2;
         in.s_h2 = settings_.s_h2;
         in.V = p.veloc;
+        in.memory_distance = settings_.memory_distance;
+        in.memory_s0 = settings_.memory_s0;
     }
+    in.layer_h = settings_.layer_h;
+    in.layer_G = settings_.layer_G;
+    in.tau_c0 = settings_.tau_c0;
+    in.k_tau = settings_.k_tau;
     in.G = settings_.G;
     in.nu = settings_.nu;
     in.tolerance = settings_.tolerance;

@@ -46,6 +46,10 @@ struct PatchContactSettings {
     FrictionLaw friction_law = FrictionLaw::coulomb;
     double mu_e1 = 0.0, s_h1 = 0.0; // [-], [m/s]
     double mu_e2 = 0.0, s_h2 = 0.0; // [-], [m/s]
+    // Friction memory (with a law) and the interface layer, ContactInput's
+    // fields of the same names: each patch's solve checks and refuses them.
+    double memory_distance = 0.0, memory_s0 = 0.0; // [m], [m/s]
+    double layer_h = 0.0, layer_G = 0.0, tau_c0 = 0.0, k_tau = 0.0; // [m], [Pa], [Pa], [Pa/m]
 };
 
 // One patch's solution, CONTACT's module-1 conventions (SI).

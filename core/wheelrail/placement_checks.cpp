@@ -92,6 +92,14 @@ std::vector<Implausible> check_wheelrail(const WheelRailGeometry& g, const Wheel
         if (e.v > 5e-3)
             add(CheckRule::patch_element, e.name, e.v, "m",
                 "patch elements are 0.1-2 mm (millimetres typed as metres?)");
+    // The interface layer's, by a single contact's rules (only its fields set:
+    // no other rule reads a zero).
+    ContactPlausibility layer;
+    layer.layer_h = in.layer_h;
+    layer.layer_G = in.layer_G;
+    layer.tau_c0 = in.tau_c0;
+    std::vector<int> rows;
+    check_contact(layer, out, rows);
     if (!in.has_motion) return out;
 
     // The motion.

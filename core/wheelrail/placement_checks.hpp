@@ -17,6 +17,7 @@ namespace creepwork::wheelrail {
 // The case's inputs that are not in the geometry (SI).
 struct WheelRailInputs {
     double mu = 0, G = 0;
+    double layer_h = 0, layer_G = 0, tau_c0 = 0; // the interface layer's (contact/plausibility.hpp)
     // The last solve's motion, when one was asked (also when it failed).
     bool has_motion = false;
     WheelsetPosition position;

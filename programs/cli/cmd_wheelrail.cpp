@@ -54,6 +54,11 @@ std::vector<OptionSpec> wheelrail_options()
             {"s-h2", OptionKind::number, {}},
             {"polach-A", OptionKind::number, {}},
             {"polach-B", OptionKind::number, {}},
+            {"memory-distance", OptionKind::number, {}},
+            {"memory-s0", OptionKind::number, {}},
+            {"layer-h", OptionKind::number, {}},
+            {"layer-G", OptionKind::number, {}},
+            {"tau-c0", OptionKind::number, {}},
             {"G", OptionKind::number, {}},
             {"nu", OptionKind::number, {}},
             {"V", OptionKind::number, {}},
@@ -104,7 +109,8 @@ std::vector<std::string> warnings(const ParsedOptions& o, const cw_wheelrail* w)
     const std::pair<const char*, const char*> options[] = {
         {"y", "y-shift"}, {"roll", "roll"}, {"yaw", "yaw"}, {"Fz", "Fz"},
         {"vs", "V"},      {"vpitch", "pitch-rate"}, {"G", "G"}, {"mu", "mu"},
-        {"dx", "dx"},     {"ds", "ds"},     {"wheel_y_offset", "wheel-y-offset"}};
+        {"dx", "dx"},     {"ds", "ds"},     {"wheel_y_offset", "wheel-y-offset"},
+        {"layer_h", "layer-h"}, {"layer_G", "layer-G"}, {"tau_c0", "tau-c0"}};
     const std::pair<const char*, const char*> in_reasons[] = {
         {"wheel_y_offset", "--wheel-y-offset"}, {"mirror_wheel", "--mirror-wheel"},
         {"flange_back_position", "the flange-back position"}};
@@ -169,6 +175,22 @@ void read_friction(const ParsedOptions& o, cw_wheelrail_params& p)
         p.mu_e2 = o.number("mu-e2", 0.0);
         p.s_h2 = o.number("s-h2", 0.0);
     }
+}
+
+// --memory-distance, --memory-s0 (with a law) and --layer-h, --layer-G,
+// --tau-c0 (creepwork solve's names, SI) into the parameters; the library
+// checks their values and names them.
+void read_memory_and_layer(const ParsedOptions& o, cw_wheelrail_params& p)
+{
+    for (const char* memory : {"memory-distance", "memory-s0"})
+        if (o.has(memory) && o.text("friction-law", "coulomb") == "coulomb")
+            throw usage_error(std::string("--") + memory,
+                              "friction memory acts on a law of the slip speed (--friction-law)");
+    p.memory_distance = o.number("memory-distance", 0.0);
+    p.memory_s0 = o.number("memory-s0", 0.0);
+    p.layer_h = o.number("layer-h", 0.0);
+    p.layer_G = o.number("layer-G", 0.0);
+    p.tau_c0 = o.number("tau-c0", 0.0);
 }
 
 JsonObject patch_json(const cw_wheelrail_patch& p)
@@ -279,6 +301,7 @@ int command_wheelrail(int argc, char** argv, int first)
     p.rail_y_offset = o.number("rail-y-offset", p.rail_y_offset);
     p.mirror_wheel = o.has("mirror-wheel") ? 1 : 0;
     read_friction(o, p);
+    read_memory_and_layer(o, p);
     const std::string model = o.text("model", "exact");
     if (model == "fastsim") {
         p.model = CW_MODEL_FASTSIM;

@@ -622,6 +622,16 @@ contact:
   --polach-A A --polach-B B
                          --friction-law polach: Polach's A [-] and B [s/m],
                          with --mu as mu0
+  --memory-distance D --memory-s0 S
+                         friction memory with a law (as creepwork solve's):
+                         its slip distance [m] and background slip speed
+                         [m/s] (default 0: none)
+  --layer-h H --layer-G G3
+                         an interface layer's thickness [m] and shear
+                         modulus [Pa] in every patch (--model exact; default
+                         0: none)
+  --tau-c0 T             the layer's yield stress [Pa]; a patch's grid is a
+                         gap grid, where the exact model refuses the yield
   --G PA                 combined shear modulus [Pa] (default 8.2e10)
   --nu NU                combined Poisson's ratio (default 0.28)
   --dx M, --ds M         element sizes of the patch grids [m] (default 2e-4)

@@ -74,6 +74,47 @@ def test_friction_law_in_full_sliding():
                             normal_method=creepwork.CW_NORMAL_SEMI_HERTZ, **law)
 
 
+def test_memory_and_layer_equal_the_cli(cli):
+    """Friction memory (with CONTACT's tractcurv law) and CONTACT's tractcurv
+    layer as keywords: the patch's forces equal, bitwise, creepwork
+    wheelrail's with --memory-distance, --memory-s0, --layer-h, --layer-G;
+    the layer moves them, and so does the memory where the patch slides;
+    invalid values are refused by name and a layer in mm typed as m warns."""
+    import json
+
+    from conftest import run_cli
+
+    fields = dict(friction_law=creepwork.CW_FRICTION_EXPONENTIAL, mu=0.14, mu_e1=0.19, s_h1=1.25,
+                  memory_distance=3e-4, memory_s0=1e-3, layer_h=1.25e-3, layer_G=8.2e9)
+    motion = dict(MOTION, yaw=0.0003, vs=10.0, vpitch=5 * MOTION["vpitch"])  # partial slip
+    with creepwork.WheelRail(RAIL, WHEEL, **fields) as w:
+        _, patches = w.solve(Fz=1e4, **motion)
+    with creepwork.WheelRail(RAIL, WHEEL, **dict(fields, layer_h=0.0, layer_G=0.0)) as w:
+        _, bare = w.solve(Fz=1e4, **motion)
+    out, _ = run_cli(cli, "wheelrail", "--wheel-profile", WHEEL, "--rail-profile", RAIL,
+                     "--y-shift", motion["y"], "--yaw", motion["yaw"], "--roll", motion["roll"],
+                     "--V", motion["vs"], "--pitch-rate", repr(motion["vpitch"]), "--Fz", "1e4",
+                     "--friction-law", "exponential", "--mu", "0.14", "--mu-e1", "0.19",
+                     "--s-h1", "1.25", "--memory-distance", "3e-4", "--memory-s0", "1e-3",
+                     "--layer-h", "1.25e-3", "--layer-G", "8.2e9", "--format", "json")
+    q = json.loads(out)["patches"][0]
+    p = patches[0]
+    assert (p["Fn"], p["Fx"], p["Fs"]) == (q["Fn"], q["Fx_rail"], q["Fs_rail"])
+    assert abs(p["Fx"] - bare[0]["Fx"]) > 0.01 * 0.14 * p["Fn"]
+    # at 5 % creepage (slip speeds about 0.5 m/s) 1 mm of memory holds mu up
+    sliding = dict(motion, vpitch=0.95 * motion["vpitch"])
+    forces = []
+    for memory in (1e-3, 0.0):
+        with creepwork.WheelRail(RAIL, WHEEL, **dict(fields, memory_distance=memory)) as w:
+            forces.append(w.solve(Fz=1e4, **sliding)[1][0]["Fx"])
+    assert abs(forces[0] - forces[1]) > 0.05 * abs(forces[1])
+    for name, value in (("memory_distance", -1e-4), ("memory_s0", -1.0), ("layer_G", -1.0)):
+        with pytest.raises(creepwork.InvalidInputError, match=name):
+            creepwork.WheelRail(RAIL, WHEEL, **dict(fields, **{name: value}))
+    with pytest.warns(creepwork.UnitWarning, match="layer_h = 1.25 m"):
+        creepwork.WheelRail(RAIL, WHEEL, **dict(fields, layer_h=1.25)).close()
+
+
 def test_implausible_units_warn():
     with creepwork.WheelRail(RAIL, WHEEL) as w:
         with pytest.warns(creepwork.UnitWarning, match="Fz = 10 N"):

@@ -6,7 +6,7 @@
 ! within 3 %. The patch's pressure adds up to FN (its definition), and its
 ! wear on a rail grid to passes x the wear's volume per distance. Then the
 ! height prescribed gives the same forces, and errors name their input
-! through stat and errmsg.
+! through stat and errmsg (also the appended memory and layer fields).
 program test_fortran_wheelrail
    use, intrinsic :: iso_c_binding, only: c_double
    use creepwork
@@ -87,6 +87,18 @@ program test_fortran_wheelrail
    call check_true(index(errmsg, 'Fz') > 0, 'Fz named: '//errmsg)
    call w%destroy()
    call w%destroy()
+   ! the interface layer's fields of type(cw_wheelrail_params), checked at create
+   p%layer_h = 1.25e-3_c_double
+   call w%create(trim(dir)//'/MBench_UIC60_v3.prr', trim(dir)//'/MBench_S1002_v3.prw', p, &
+                 stat=stat, errmsg=errmsg)
+   call check_int(stat, int(CW_ERR_INVALID_INPUT), 'a layer without its modulus: stat')
+   call check_true(index(errmsg, 'layer_G') > 0, 'layer_G named: '//errmsg)
+   p%layer_h = 0.0_c_double
+   p%memory_s0 = -1.0_c_double
+   call w%create(trim(dir)//'/MBench_UIC60_v3.prr', trim(dir)//'/MBench_S1002_v3.prw', p, &
+                 stat=stat, errmsg=errmsg)
+   call check_int(stat, int(CW_ERR_INVALID_INPUT), 'a negative memory_s0: stat')
+   call check_true(index(errmsg, 'memory_s0') > 0, 'memory_s0 named: '//errmsg)
    call w%create('no/such/rail.prr', trim(dir)//'/MBench_S1002_v3.prw', stat=stat, errmsg=errmsg)
    call check_int(stat, int(CW_ERR_INVALID_INPUT), 'missing file: stat')
    call check_true(index(errmsg, 'no/such/rail.prr') > 0, 'file named: '//errmsg)

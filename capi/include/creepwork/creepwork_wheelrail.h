@@ -81,6 +81,19 @@ typedef struct cw_wheelrail_params {
                                     _EXPONENTIAL */
     double mu_e1, s_h1;          /* [-], [m/s] the law's first term (0, 0) */
     double mu_e2, s_h2;          /* [-], [m/s] its second term (0, 0) */
+    /* Friction memory and an interface layer in every patch (cw_params'
+     * fields of the same names and meaning, doc/theory/friction.md and
+     * doc/theory/interface-layer.md; the exact model only): the memory acts
+     * with a friction law, over the time dx / veloc of one element rolled;
+     * the layer's elastic compliance layer_h / layer_G is in series with the
+     * bodies. A patch's grid is a gap grid: its yield (tau_c0, k_tau) is
+     * refused with an error naming the field, as cw_solve refuses it there. */
+    double memory_distance;      /* [m] characteristic slip distance d_c >= 0 (0: none) */
+    double memory_s0;            /* [m/s] background slip speed s0 >= 0 (0) */
+    double layer_h;              /* [m] the layer's thickness >= 0 (0: no layer) */
+    double layer_G;              /* [Pa] its shear modulus G3, > 0 when layer_h > 0 (0) */
+    double tau_c0;               /* [Pa] its yield stress >= 0 (0: no yield) */
+    double k_tau;                /* [Pa/m] its hardening with the plastic displacement (0) */
 } cw_wheelrail_params;
 
 /* The wheelset's position (CONTACT's Z_WS etc.) and velocity. */

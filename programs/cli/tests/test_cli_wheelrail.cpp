@@ -460,6 +460,22 @@ void profile_messages_name_the_cause(void**)
     assert_true(z.err.find("threshold") == std::string::npos);
 }
 
+// Patch 0 of the CLI's JSON q (benchmark_args() at --V 10) against the C
+// ABI's with params p: the same forces, to the bit. The library's patch.
+cw_wheelrail_patch expect_library_patch(const cwtest::Json& q, const cw_wheelrail_params& p)
+{
+    cw_wheelrail_totals t;
+    cw_wheelrail* w = solved_benchmark(t, &p, 10.0, -21.374417);
+    cw_wheelrail_patch pa;
+    cw_wheelrail_patch_init(&pa);
+    assert_int_equal(cw_wheelrail_get_patch(w, 0, &pa), CW_OK);
+    cw_wheelrail_destroy(w);
+    assert_close(q.num("Fn"), pa.Fn, 1e-15, 0);
+    assert_close(q.num("Fx_rail"), pa.Fx, 1e-15, 0);
+    assert_close(q.num("Fs_rail"), pa.Fs, 1e-15, 0);
+    return pa;
+}
+
 // --friction-law polach --mu MU0 --polach-A A --polach-B B: the patch's
 // forces equal, bitwise, the C ABI's with the law cw_friction_polach writes
 // (the option's documented meaning), at 10 m/s; the law lowers the force
@@ -485,15 +501,7 @@ void friction_law_matches_library(void**)
     p.mu = law.mu;
     p.mu_e1 = law.mu_e1;
     p.s_h1 = law.s_h1;
-    cw_wheelrail_totals t;
-    cw_wheelrail* w = solved_benchmark(t, &p, 10.0, -21.374417);
-    cw_wheelrail_patch pa;
-    cw_wheelrail_patch_init(&pa);
-    assert_int_equal(cw_wheelrail_get_patch(w, 0, &pa), CW_OK);
-    cw_wheelrail_destroy(w);
-    assert_close(q.num("Fn"), pa.Fn, 1e-15, 0);
-    assert_close(q.num("Fx_rail"), pa.Fx, 1e-15, 0);
-    assert_close(q.num("Fs_rail"), pa.Fs, 1e-15, 0);
+    const cw_wheelrail_patch pa = expect_library_patch(q, p);
     assert_true(std::hypot(pa.Fx, pa.Fs) < 0.36 * pa.Fn * 0.95);
 
     using cwtest::cli;
@@ -506,6 +514,50 @@ void friction_law_matches_library(void**)
                    2, "--friction-law", "a law with the fast model");
     expect_refusal(cli(cwtest::with(args, {"--friction-law", "exponential", "--mu-e1", "0.1"})), 2,
                    "s_h1", "a falling term without its half speed");
+}
+
+// --memory-distance, --memory-s0 with CONTACT's tractcurv law and --layer-h,
+// --layer-G (CONTACT's tractcurv layer): the patch's forces equal, bitwise,
+// the C ABI's with the same cw_wheelrail_params fields; a layer typed in mm
+// is warned of by its option; refusals name the option or the field.
+void memory_and_layer_match_library(void**)
+{
+    std::vector<std::string> args = benchmark_args();
+    const auto v = std::find(args.begin(), args.end(), "--V");
+    *(v + 1) = "10";
+    *(v + 3) = "-21.374417"; // the pitch rate scaled with V
+    const std::vector<std::string> law = {"--friction-law", "exponential", "--mu", "0.14", "--mu-e1",
+                                          "0.19", "--s-h1", "1.25"};
+    const cwtest::Run r = cwtest::cli_ok(cwtest::with(
+        cwtest::with(args, law), {"--format", "json", "--memory-distance", "3e-4", "--memory-s0", "1e-3",
+                                  "--layer-h", "1.25e-3", "--layer-G", "8.2e9"}));
+    const cwtest::Json j = cwtest::parse_json(r.out);
+    const cwtest::Json& q = j.at("patches").array[0];
+
+    cw_wheelrail_params p;
+    cw_wheelrail_params_init(&p);
+    p.friction_law = CW_FRICTION_EXPONENTIAL;
+    p.mu = 0.14;
+    p.mu_e1 = 0.19;
+    p.s_h1 = 1.25;
+    p.memory_distance = 3e-4;
+    p.memory_s0 = 1e-3;
+    p.layer_h = 1.25e-3;
+    p.layer_G = 8.2e9;
+    expect_library_patch(q, p);
+
+    const cwtest::Run mm = cwtest::cli_ok(cwtest::with(args, {"--layer-h", "1.25", "--layer-G", "8.2e9"}));
+    cwtest::expect_contains(mm.err, "warning: --layer-h = 1.25 m is implausible");
+    using cwtest::cli;
+    using cwtest::expect_refusal;
+    expect_refusal(cli(cwtest::with(args, {"--memory-distance", "3e-4"})), 2, "--memory-distance",
+                   "memory without a law");
+    expect_refusal(cli(cwtest::with(args, {"--layer-h", "1.25e-3"})), 2, "layer_G",
+                   "a layer without its modulus");
+    expect_refusal(cli(cwtest::with(args, {"--layer-h", "1.25e-3", "--layer-G", "8.2e9", "--model",
+                                           "fastsim"})),
+                   2, "layer_h", "a layer with the fast model");
+    expect_refusal(cli(cwtest::with(args, {"--tau-c0", "150e6"})), 2, "tau_c0", "yield on a patch");
 }
 
 void bad_inputs_fail_cleanly(void**)
@@ -549,6 +601,7 @@ int main(int argc, char** argv)
         cmocka_unit_test(warns_about_implausible_units),
         cmocka_unit_test(bad_inputs_fail_cleanly),
         cmocka_unit_test(friction_law_matches_library),
+        cmocka_unit_test(memory_and_layer_match_library),
         cmocka_unit_test(one_vocabulary),
         cmocka_unit_test(warns_about_misplaced_wheel),
         cmocka_unit_test(profile_messages_name_the_cause),
