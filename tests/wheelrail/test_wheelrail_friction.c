@@ -1,9 +1,10 @@
 /* A friction law of the slip speed in the wheel/rail patches, through the
  * public header: a law without falling terms is Coulomb's law by another
- * path (the exact model's law iteration against its Coulomb solve), a patch
- * in full sliding carries mu(s) Fn at its rigid slip speed s = |(cksi,
- * ceta)| veloc (the closed form of sliding friction), and every refusal
- * names its input. Manchester benchmark profiles, exact model. */
+ * path (the exact model's law iteration against its Coulomb solve; the
+ * fast model's law march, bitwise), a patch in full sliding carries mu(s)
+ * Fn at its rigid slip speed s = |(cksi, ceta)| veloc (the closed form of
+ * sliding friction) with either model, and every refusal names its input.
+ * Manchester benchmark profiles. */
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
@@ -105,6 +106,57 @@ static void full_sliding_follows_the_law(void** state)
     assert_true(ft / patch.Fn < 0.9 * (0.14 + 0.19));
 }
 
+/* The fast model (FASTSIM with the semi-Hertzian normal problem), case
+ * A-2.2's position in partial slip: the exponential law without a falling
+ * term takes the law's march, whose roots land on Coulomb's t = mu pn at
+ * the first evaluation: Coulomb's bits, totals and patch. */
+static void fast_model_law_without_falling_terms_is_coulomb(void** state)
+{
+    (void)state;
+    cw_wheelrail_params p;
+    cw_wheelrail_params_init(&p);
+    p.model = CW_MODEL_FASTSIM;
+    p.normal_method = CW_NORMAL_SEMI_HERTZ;
+    cw_wheelrail_totals tc, tl;
+    cw_wheelrail_patch pc, pl;
+    char error[512];
+    assert_int_equal(solve(&p, 0.0003, 10.0, -10.0 / 0.46, &tc, &pc, error, sizeof error), CW_OK);
+    p.friction_law = CW_FRICTION_EXPONENTIAL;
+    assert_int_equal(solve(&p, 0.0003, 10.0, -10.0 / 0.46, &tl, &pl, error, sizeof error), CW_OK);
+    assert_true(pc.n_slip > 0 && pc.n_adhesion > 0);
+    assert_true(tl.Fz == tc.Fz && pl.Fx == pc.Fx && pl.Fs == pc.Fs && pl.Mn == pc.Mn);
+    assert_int_equal(pl.n_slip, pc.n_slip);
+}
+
+/* The fast model in full sliding (case A-2.2's position, 20 % longitudinal
+ * creepage, 10 m/s): |(Fx, Fs)| / Fn -> mu(s) at the rigid slip speed s =
+ * |(cksi, ceta)| veloc, as the exact model's test above; FASTSIM's elastic
+ * part of the slip, (L1, L2) (1 - f) q / dx, moves each element's speed
+ * around s as the exact model's does; 3e-4 of mu(s) asserted. */
+static void fast_model_full_sliding_follows_the_law(void** state)
+{
+    (void)state;
+    cw_wheelrail_params p;
+    cw_wheelrail_params_init(&p);
+    tractcurv_law(&p);
+    p.model = CW_MODEL_FASTSIM;
+    p.normal_method = CW_NORMAL_SEMI_HERTZ;
+    cw_wheelrail_totals t;
+    cw_wheelrail_patch patch;
+    char error[512];
+    const double vs = 10.0, vpitch = -0.8 * vs / 0.46;
+    assert_int_equal(solve(&p, 0.0072, vs, vpitch, &t, &patch, error, sizeof error), CW_OK);
+    assert_int_equal(patch.n_adhesion, 0);
+    const double s = hypot(patch.cksi, patch.ceta) * patch.veloc;
+    assert_true(s > 1.0 && s < 4.0);
+    const double mu_s = 0.14 + 0.19 * exp(-log(2.0) * s / 1.25);
+    const double ft = hypot(patch.Fx, patch.Fs);
+    printf("fast model: s = %.4f m/s, mu(s) = %.6f, Ft/Fn = %.6f, relative %.2e\n", s, mu_s,
+           ft / patch.Fn, ft / patch.Fn / mu_s - 1.0);
+    assert_close(ft / patch.Fn, mu_s, 0.0, 3e-4 * mu_s);
+    assert_true(ft / patch.Fn < 0.9 * (0.14 + 0.19));
+}
+
 static void refusal(cw_wheelrail_params* p, double vs, int code, const char* needle)
 {
     cw_wheelrail_totals t;
@@ -125,7 +177,8 @@ static void errors_name_their_input(void** state)
     tractcurv_law(&p);
     p.model = CW_MODEL_FASTSIM;
     p.normal_method = CW_NORMAL_SEMI_HERTZ;
-    refusal(&p, 10.0, CW_ERR_INVALID_INPUT, "friction_law");
+    p.mu_e1 = -0.1; /* the fast model checks the law as the exact model */
+    refusal(&p, 10.0, CW_ERR_INVALID_INPUT, "mu_e1");
     cw_wheelrail_params_init(&p);
     tractcurv_law(&p);
     p.mu_e1 = NAN;
@@ -141,6 +194,8 @@ int main(int argc, char** argv)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(law_without_falling_terms_is_coulomb),
         cmocka_unit_test(full_sliding_follows_the_law),
+        cmocka_unit_test(fast_model_law_without_falling_terms_is_coulomb),
+        cmocka_unit_test(fast_model_full_sliding_follows_the_law),
         cmocka_unit_test(errors_name_their_input),
     };
     return cw_run_tests(tests, argc > 1 ? argv[1] : NULL);
