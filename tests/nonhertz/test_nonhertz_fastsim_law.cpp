@@ -17,9 +17,11 @@
 //    exported slip speeds;
 //  - the Jacobian against central differences before and past the peak;
 //  - what is refused (the global slip speed, friction memory) is named.
+#include "ellipse_march.hpp"
 #include "gap_shape_grid.hpp"
 #include "gap_shapes.hpp"
 #include "gap_test_support.hpp"
+#include "jacobian_step_study.hpp"
 #include "test_support.h"
 
 #include <algorithm>
@@ -102,29 +104,14 @@ void march_is_the_ellipse_law_march(void**)
         e.xi_y = -0.75 * xi;
         e.phi = 2000.0 * xi;
         const cw::SolveTotals te = ellipse.solve(e, cw::SolveMode::full);
-        const auto x = cwtest::field(ellipse, cw::Field::x), y = cwtest::field(ellipse, cw::Field::y);
-        const auto pz = cwtest::field(ellipse, cw::Field::pz);
         const auto px = cwtest::field(ellipse, cw::Field::px);
         const auto py = cwtest::field(ellipse, cw::Field::py);
-        std::vector<int> patch(pz.size(), 0);
-        const cw::GapMarchPatch P{te.L1, te.L2, te.L3, 0.0, 0.0};
+        cwtest::EllipseMarch march(ellipse, te, e);
+        const std::vector<double>& pz = march.pz;
         const cw::SlipSpeedLaw law = cw::polach_law(kMu0, kA, kB);
-        cw::GapMarchInput in;
-        in.nx = nx;
-        in.ny = ny;
-        in.x0 = x[0];
-        in.y0 = y[0];
-        in.dx = x[1] - x[0];
-        in.dy = y[nx] - y[0];
-        in.pressure = pz.data();
-        in.patch = patch.data();
-        in.patches = &P;
-        in.law = cw::CoulombLaw{e.mu};
+        cw::GapMarchInput& in = march.in;
         in.speed_law = &law;
         in.V = kV;
-        in.xi = e.xi_x;
-        in.eta = e.xi_y;
-        in.phi = e.phi;
         std::vector<std::complex<double>> p(pz.size()), s(pz.size()), w(pz.size());
         std::vector<signed char> state(pz.size());
         cw::GapMarchTotals t;
@@ -336,12 +323,14 @@ void work_maps_and_range(void**)
     }
 }
 
-// The Jacobian of Fx, Fy, Mz by xi_x, xi_y, phi, N on the Hertzian gap
-// under Polach's law against central differences of the model's solves,
-// before the peak (0.4 %) and past it (2 %, dFx/dxi_x of the other sign),
-// alone and with lateral creepage and spin (rolling towards -x): each
-// entry relative to its row's scale, the best of four steps that change no
-// element's state, within 1e-4 (the bar of the ellipse's law Jacobian).
+// The Jacobian of Fx, Fy, Mz, W_macro by xi_x, xi_y, phi, N on the
+// Hertzian gap under Polach's law against central differences of the
+// model's solves (tests/core/jacobian_step_study.hpp: steps 1e-3 ... 1e-6 of
+// each input's scale, each entry relative to its row's scale, steps that
+// change an element's state not counted), before the peak (0.4 %) and past
+// it (2 %, dFx/dxi_x of the other sign), alone and with lateral creepage
+// and spin (rolling towards -x): within 1e-4, the bar of the ellipse's law
+// Jacobian.
 void jacobian_across_the_peak(void**)
 {
     const TractcurvGap c;
@@ -353,36 +342,10 @@ void jacobian_across_the_peak(void**)
             polach(in);
             cw::Jacobian J;
             const cw::SolveTotals t = s.solve_jacobian(in, cw::SolveMode::forces_only, J);
-            const double scale[4] = {xi, xi, xi / in.a, in.normal_force};
-            double best = INFINITY;
-            for (double rel : {1e-3, 1e-4, 1e-5, 1e-6}) {
-                double fd[3][4], worst = 0.0;
-                bool changed = false;
-                for (int k = 0; k < 4; ++k) {
-                    cw::ContactInput up = in, down = in;
-                    double* u[4] = {&up.xi_x, &up.xi_y, &up.phi, &up.normal_force};
-                    double* d[4] = {&down.xi_x, &down.xi_y, &down.phi, &down.normal_force};
-                    *u[k] += rel * scale[k];
-                    *d[k] -= rel * scale[k];
-                    const cw::SolveTotals a = s.solve(up, cw::SolveMode::forces_only);
-                    const cw::SolveTotals b = s.solve(down, cw::SolveMode::forces_only);
-                    changed |= a.n_slip != t.n_slip || b.n_slip != t.n_slip ||
-                               a.n_contact != t.n_contact || b.n_contact != t.n_contact;
-                    const double h2 = 2 * rel * scale[k];
-                    fd[0][k] = (a.Fx - b.Fx) / h2;
-                    fd[1][k] = (a.Fy - b.Fy) / h2;
-                    fd[2][k] = (a.Mz - b.Mz) / h2;
-                }
-                for (int r = 0; r < 3; ++r) {
-                    double row = 0.0;
-                    for (int k = 0; k < 4; ++k) row += std::fabs(J.d[r][k]) * scale[k];
-                    for (int k = 0; k < 4; ++k)
-                        worst = std::max(worst, std::fabs(J.d[r][k] - fd[r][k]) * scale[k] / row);
-                }
-                if (!changed) best = std::min(best, worst);
-            }
-            print_message("xi_x %.3f (%s): dFx/dxi_x %.6g N, worst relative error %.2e\n", xi,
-                          lateral > 0 ? "with xi_y, phi" : "alone", J.d[0][0], best);
+            char label[64];
+            std::snprintf(label, sizeof label, "xi_x %.3f%s", xi, lateral > 0 ? ", xi_y, phi" : "");
+            const double best = cwtest::jacobian_step_study(
+                label, 24, s, in, J, {xi, xi, xi / in.a, in.normal_force}, t.n_slip, 1e-3, 1e-6);
             assert_true(best <= 1e-4);
             if (lateral == 0.0) assert_true(xi < 0.01 ? J.d[0][0] < 0.0 : J.d[0][0] > 0.0);
         }
