@@ -94,10 +94,6 @@ void check_params(const cw_wheelrail_params& p)
         fail(CW_ERR_UNKNOWN_OPTION, "params->friction_law = " + std::to_string(p.friction_law) +
                                         " is none of CW_FRICTION_COULOMB (0), _LINEAR (2), _RATIONAL (3), "
                                         "_EXPONENTIAL (4)");
-    if (p.friction_law != CW_FRICTION_COULOMB && p.model != CW_MODEL_EXACT)
-        fail(CW_ERR_INVALID_INPUT, "params->friction_law = " + std::to_string(p.friction_law) +
-                                       " needs params->model = CW_MODEL_EXACT (FASTSIM on a patch is "
-                                       "Coulomb's)");
     if (!(p.profile_unit >= 0.0 && p.profile_unit <= 1.0))
         fail(CW_ERR_INVALID_INPUT, "params->profile_unit = " + creepwork::number_text(p.profile_unit) +
                                        " must lie in [0, 1] m per unit");

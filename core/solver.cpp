@@ -234,7 +234,7 @@ const SolveTotals& Solver::solve_impl(const ContactInput& input, SolveMode mode,
     if (input.memory_distance > 0.0 && input.friction_law != FrictionLaw::coulomb && !has_memory)
         throw Error(ErrorKind::invalid_input,
                     "memory_distance: " + m.name() + " has no friction memory (the exact model "
-                    "and FASTSIM with friction_speed = local have)");
+                    "and FASTSIM on the ellipse's grids with friction_speed = local have)");
     if (law_model) law_model->set_memory(friction_memory(input));
     SolveTotals t = jacobian ? m.solve_jacobian(input, mode, *jacobian) : m.solve(input, mode);
     last_ = &m;

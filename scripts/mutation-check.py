@@ -487,6 +487,41 @@ GAP_JACOBIAN_MUTANTS = [
          tests=GAP_JACOBIAN, require=["test_nonhertz_jacobian"]),
 ]
 MUTANTS += GAP_JACOBIAN_MUTANTS
+# FASTSIM on a gap grid under a law of the slip speed (gap/gap_march.hpp,
+# gap_march.cpp, gap_march_tangent.cpp): caught by the ellipse's law march
+# on the same pressure, the closed form of full sliding and central
+# differences (test_nonhertz_fastsim_law), the C ABI's closed form and
+# differences (test_nonhertz_capi) and the fast wheel/rail model in full
+# sliding (test_wheelrail_friction).
+GAP_LAW = ["test_nonhertz_fastsim_law", "test_nonhertz_capi", "test_wheelrail_friction"]
+GAP_LAW_MUTANTS = [
+    dict(id="gap-law-slip-speed-step", what="the gap march's slip speed forgets the step dx",
+         file="core/gap/gap_march.hpp",
+         old="    e.c = in.V * e.Lq / (e.P * in.dx);",
+         new="    e.c = in.V * e.Lq / e.P;",
+         tests=GAP_LAW, require=["test_nonhertz_fastsim_law", "test_nonhertz_capi"]),
+    dict(id="gap-law-slip-onset", what="an element slips past mu_kin pz, not the law's mu(0) pz",
+         file="core/gap/gap_march.hpp",
+         old="    const double bound = pz * static_friction(*in.speed_law), n2 = qx * qx + qy * qy;",
+         new="    const double bound = pz * in.law.mu, n2 = qx * qx + qy * qy;",
+         tests=GAP_LAW, require=["test_nonhertz_fastsim_law"]),
+    dict(id="gap-law-direction", what="a slipping element under a law keeps q_y unscaled",
+         file="core/gap/gap_march.cpp",
+         old="            qy *= e.f;",
+         new="            qy *= 1.0;",
+         tests=GAP_LAW, require=["test_nonhertz_fastsim_law"]),
+    dict(id="gap-law-tangent-dc", what="the law's Jacobian holds the slip-speed factor c fixed",
+         file="core/gap/gap_march_tangent.cpp",
+         old="        const double dc = c * (dLq / e.Lq - dP / P);",
+         new="        const double dc = 0.0 * (dLq / e.Lq - dP / P);",
+         tests=GAP_LAW, require=["test_nonhertz_fastsim_law", "test_nonhertz_capi"]),
+    dict(id="gap-law-tangent-pressure", what="the law's N column misses the bound's own change",
+         file="core/gap/gap_march_tangent.cpp",
+         old="        if (k == 3) dt += e.r.mu * dpz;",
+         new="        if (k == 3) dt += 0.0 * dpz;",
+         tests=GAP_LAW, require=["test_nonhertz_fastsim_law", "test_nonhertz_capi"]),
+]
+MUTANTS += GAP_LAW_MUTANTS
 # -------------------------------------------------- end contacts of any shape
 
 

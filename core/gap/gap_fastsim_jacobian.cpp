@@ -4,7 +4,8 @@
 // (normal/gap_normal.hpp) in the N column: d/dN along the solution, whether
 // the force or the approach is prescribed. Held fixed: the contact set, the
 // patches and so their flexibilities and spin centres (they change only
-// where an element enters or leaves contact).
+// where an element enters or leaves contact). Under a law of the slip speed
+// the march's tangent takes each slipping element's law (gap_march_tangent.hpp).
 
 #include "contact/jacobian_load.hpp"
 #include "gap/gap_fastsim_model.hpp"
@@ -15,7 +16,9 @@ namespace creepwork {
 SolveTotals GapFastsimModel::solve_jacobian(const ContactInput& in, SolveMode mode, Jacobian& J)
 {
     const SolveTotals t = solve(in, mode);
-    if (gap_jacobian_is_zero(in, t.n_contact, J)) return t;
+    ContactInput effective = in; // under a law, its static coefficient bounds the tractions
+    if (has_law_) effective.mu = static_friction(law_);
+    if (gap_jacobian_is_zero(effective, t.n_contact, J)) return t;
     Jacobian out;
     normal_.load_derivative(dp_dN_.data());
 

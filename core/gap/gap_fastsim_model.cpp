@@ -60,7 +60,33 @@ void GapFastsimModel::validate(const ContactInput& in) const
         throw Error(ErrorKind::invalid_input,
                     "flexibility = given is invalid on a gap grid: FASTSIM takes each patch's "
                     "flexibilities from the material (G, nu) and the patch's size");
+    if (in.friction_speed != FrictionSpeed::local)
+        throw Error(ErrorKind::invalid_input,
+                    "friction_speed = global is invalid on a gap grid: FASTSIM on a gap grid "
+                    "takes the law at each element's slip speed (friction_speed = local)");
     validate_gap_input(in, static_cast<size_t>(nx_) * ny_, normal_.kernel_isa());
+}
+
+void GapFastsimModel::set_law(const SlipSpeedLaw& law, double V)
+{
+    check_slip_speed_law(law);
+    // Coulomb's law (or mu_s = 0): the march of input.mu, bitwise; V unread.
+    has_law_ = law.kind != SlipSpeedLawKind::coulomb && static_friction(law) > 0.0;
+    if (!has_law_) return;
+    if (!(std::isfinite(V) && V > 0.0))
+        throw Error(ErrorKind::invalid_input,
+                    "V (the rolling speed) must be finite and > 0 [m/s] for a law of the slip speed");
+    law_ = law;
+    V_ = V;
+}
+
+bool GapFastsimModel::friction_range(double& mu_min, double& mu_max) const
+{
+    if (!has_law_) return false;
+    const bool slips = law_range_.mu_min <= law_range_.mu_max;
+    mu_min = slips ? law_range_.mu_min : static_friction(law_);
+    mu_max = slips ? law_range_.mu_max : static_friction(law_);
+    return true;
 }
 
 // Each patch's "patch ellipse" and its flexibilities, and its spin centre
@@ -136,6 +162,8 @@ SolveTotals GapFastsimModel::solve(const ContactInput& in, SolveMode mode)
     out.rigid = full_ ? rigid_.data() : nullptr;
     out.state = state_.data();
     out.patch_totals = march_totals_.data();
+    law_range_ = GapLawRange{};
+    out.law_range = &law_range_;
     gap_march(m, out);
 
     set_totals(in, t);
@@ -258,6 +286,8 @@ GapMarchInput GapFastsimModel::march_input(const ContactInput& in) const
     m.patch = patch_of_.data();
     m.patches = march_patches_.data();
     m.law = friction_law(in);
+    m.speed_law = has_law_ ? &law_ : nullptr;
+    m.V = V_;
     m.xi = d * in.xi_x;
     m.eta = in.xi_y;
     m.phi = d * in.phi;

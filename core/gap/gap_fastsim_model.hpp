@@ -32,6 +32,10 @@
 //     grid's origin, as the exact model's), and in full mode the work maps
 //     (exact/exact_work.hpp, the same energy-consistent distribution as
 //     FASTSIM's: sums to W_macro, >= 0, zero in adhesion).
+// Under a law of the slip speed (set_law) each slipping element's bound is
+// mu(s) pz at its own slip speed (gap/gap_march.hpp), in the march, the work
+// maps and the Jacobian; the global slip speed and friction memory are the
+// ellipse's FASTSIM's (refused by name here).
 // The calibrated model is not available on a gap grid.
 //
 // Units and frames: the march runs in the rolling frame (leading edge at
@@ -68,6 +72,18 @@ public:
     // an approach without contact) when mu > 0.
     SolveTotals solve_jacobian(const ContactInput& input, SolveMode mode,
                                Jacobian& jacobian) override;
+
+    // The law of the slip speed and the rolling speed V [m/s] > 0 of the next
+    // solves (input.mu, its mu_kin, is then not read; the law's static
+    // coefficient bounds the tractions). Throws Error(invalid_input) naming
+    // the law's parameter or V.
+    void set_law(const SlipSpeedLaw& law, double V) override;
+    void clear_law() override { has_law_ = false; }
+    // Under a law: the range of mu over the last solve's slipping elements
+    // (the static coefficient when none slips); false under Coulomb's law.
+    bool friction_range(double& mu_min, double& mu_max) const override;
+    // Under a law: local_slip's steps in the last solve (0 under Coulomb's).
+    long friction_iterations() const { return law_range_.iterations; }
 
     // The last successful solve (gap_fastsim_fields.cpp), as the exact gap
     // model's.
@@ -125,6 +141,11 @@ private:
     std::vector<double> profile_, row_d_, row_pool_; // per row
     std::vector<int> row_first_, row_last_; // per row: the contact's extent, rolling frame
     std::vector<double> dp_dN_; // solve_jacobian's dpz/dN [1/m^2], rolling frame
+    // A law of the slip speed (has_law_), the rolling speed, the last range.
+    SlipSpeedLaw law_;
+    double V_ = 0;
+    bool has_law_ = false;
+    GapLawRange law_range_;
 };
 
 } // namespace creepwork

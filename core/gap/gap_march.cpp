@@ -38,6 +38,8 @@ struct RowMarch {
     double px = 0, py = 0, ox = 0, oy0 = 0, oyx = 0, L1 = 0, L2 = 0;
     int patch = -1; // of the segment being marched, -1 between segments
     SegmentSums sums;
+    double mu_prev = 0; // under a law: the segment's last slipping element's mu
+    GapLawRange range;  // under a law: the row's
 
     void start(const GapMarchInput& in, int j)
     {
@@ -63,7 +65,8 @@ struct MarchFrame {
 };
 
 // Element i of row r (i = -1: past the trailing end, closing a segment).
-template <bool Full>
+// Law: under in.speed_law (gap_law_element), else Coulomb's projection.
+template <bool Full, bool Law>
 inline void step(const MarchFrame& frame, RowMarch& r, int i)
 {
     using Complex = std::complex<double>;
@@ -94,11 +97,26 @@ inline void step(const MarchFrame& frame, RowMarch& r, int i)
         r.ox = (in.xi - in.phi * M.yc) / M.L1 - in.phi * (r.y - M.yc) / M.L3;
         r.oy0 = (in.eta + in.phi * M.xc) / M.L2 + in.phi * (in.spin_offset * dx - M.xc) / M.L3;
         r.oyx = in.phi / M.L3;
+        if constexpr (Law) r.mu_prev = static_friction(*in.speed_law);
     }
     const double x = in.x0 + i * dx;
     const double ox = r.ox, oy = r.oy0 + r.oyx * x;
     double qx = r.px - dx * ox, qy = r.py - dx * oy;
-    const bool slips = project_traction(qx, qy, traction_bound(in.law, pz)).slips;
+    bool slips;
+    if constexpr (Law) {
+        const GapLawElement e = gap_law_element(in, pz, qx, qy, r.L1, r.L2, r.mu_prev);
+        slips = e.slips;
+        if (slips) {
+            qx *= e.f;
+            qy *= e.f;
+            r.mu_prev = e.r.mu;
+            r.range.mu_min = std::min(r.range.mu_min, e.r.mu);
+            r.range.mu_max = std::max(r.range.mu_max, e.r.mu);
+            r.range.iterations += e.r.iterations;
+        }
+    } else {
+        slips = project_traction(qx, qy, traction_bound(in.law, pz)).slips;
+    }
     out.p[k] = Complex(qx, qy);
     if (Full) {
         out.rigid[k] = Complex(r.L1 * ox, r.L2 * oy);
@@ -133,13 +151,23 @@ void zero_elements(const MarchFrame& frame, int j, int i0, int i1)
     std::fill_n(out.state + k0, n, static_cast<signed char>(0));
 }
 
+// A row's law range into the march's (under a law).
+inline void merge_range(const MarchFrame& frame, const RowMarch& r)
+{
+    GapLawRange* out = frame.out.law_range;
+    if (!out) return;
+    out->mu_min = std::min(out->mu_min, r.range.mu_min);
+    out->mu_max = std::max(out->mu_max, r.range.mu_max);
+    out->iterations += r.range.iterations;
+}
+
 // The march; Full: also the slip and the rigid slip of every element. Four
 // rows at a time, element by element: each element's traction depends on the
 // one ahead (in slip through a root and a division), independent rows keep
 // the processor busy while one waits. With the rows' contact extents given,
 // the steps go over the four rows' common extent (and the element behind
 // it, which closes the segments), the rest is filled with zeros.
-template <bool Full>
+template <bool Full, bool Law>
 void march(const GapMarchInput& input, const GapMarchOutput& output)
 {
     const MarchFrame f(input, output);
@@ -169,16 +197,19 @@ void march(const GapMarchInput& input, const GapMarchOutput& output)
             c.start(in, j + 2);
             e.start(in, j + 3);
             for (int i = last; i >= first - 1; --i) {
-                step<Full>(f, a, i);
-                step<Full>(f, b, i);
-                step<Full>(f, c, i);
-                step<Full>(f, e, i);
+                step<Full, Law>(f, a, i);
+                step<Full, Law>(f, b, i);
+                step<Full, Law>(f, c, i);
+                step<Full, Law>(f, e, i);
             }
+            if (Law)
+                for (const RowMarch* r : {&a, &b, &c, &e}) merge_range(f, *r);
         } else
             for (int r = 0; r < rows; ++r) {
                 RowMarch a;
                 a.start(in, j + r);
-                for (int i = last; i >= first - 1; --i) step<Full>(f, a, i);
+                for (int i = last; i >= first - 1; --i) step<Full, Law>(f, a, i);
+                if (Law) merge_range(f, a);
             }
     }
 }
@@ -187,10 +218,12 @@ void march(const GapMarchInput& input, const GapMarchOutput& output)
 
 void gap_march(const GapMarchInput& in, const GapMarchOutput& out)
 {
-    if (out.slip && out.rigid)
-        march<true>(in, out);
+    if (out.law_range) *out.law_range = GapLawRange{};
+    const bool full = out.slip && out.rigid;
+    if (in.speed_law)
+        full ? march<true, true>(in, out) : march<false, true>(in, out);
     else
-        march<false>(in, out);
+        full ? march<true, false>(in, out) : march<false, false>(in, out);
 }
 
 } // namespace creepwork

@@ -24,11 +24,23 @@
 // s = (L1, L2) (omega + (p - p_prev) / dx), zero in adhesion, with
 // -p.s >= 0 in slip; along each segment -sum p.w dx = sum -p.s dx +
 // 1/2 sum dp.L dp + 1/2 p_e.L p_e (march/march_work.hpp's identity).
+//
+// Under a law of the slip speed (speed_law given) an element slips when
+// |q| > mu_s pz (mu_s the law's static coefficient) and keeps q's direction
+// with the magnitude t = pz mu(s) at its own slip speed s = c (|q| - t),
+// c = V |(L1 q_x, L2 q_y)| / (|q| dx): its micro-slip over the step is the
+// elastic predictor's displacement less the one it keeps, (L1, L2) (1 - f)
+// q / dx with f = t / |q| (as the ellipse's march under a law,
+// fastsim/fastsim_law_model.hpp). The root is friction/local_slip.hpp's,
+// started from the segment's last slipping element's mu.
 #pragma once
 
+#include <cmath>
 #include <complex>
 
 #include "contact/friction_law.hpp"
+#include "friction/local_slip.hpp"
+#include "friction/slip_speed_law.hpp"
 
 namespace creepwork {
 
@@ -45,6 +57,10 @@ struct GapMarchInput {
     const int* patch = nullptr;            // [i + nx j]: index into patches where pressure > 0
     const GapMarchPatch* patches = nullptr;
     CoulombLaw law;                        // the friction law (its mu)
+    // A law of the slip speed (null: Coulomb's, law) and the rolling speed
+    // V [m/s] > 0 that turns micro-slip into slip speed.
+    const SlipSpeedLaw* speed_law = nullptr;
+    double V = 0;
     double xi = 0, eta = 0, phi = 0;       // rolling frame [-, -, 1/m]
     double spin_offset = 0;                // fraction of dx, >= 0
     // Optional, per row j: the first and last contact element (rolling
@@ -62,6 +78,38 @@ struct GapMarchTotals {
     int n_contact = 0, n_slip = 0;
 };
 
+// Under a law of the slip speed, over the slipping elements: the smallest
+// and largest mu (mu_min > mu_max when none slips) and local_slip's steps.
+struct GapLawRange {
+    double mu_min = HUGE_VAL, mu_max = -HUGE_VAL;
+    long iterations = 0;
+};
+
+// One element under in.speed_law (the march's and its tangent's): its
+// predictor q of magnitude P, whether it slips, and in slip the factor f
+// on q, the slip-speed factor c and local_slip's result.
+struct GapLawElement {
+    bool slips = false;
+    double f = 1.0, P = 0.0, c = 0.0, Lq = 0.0; // Lq = |(L1 q_x, L2 q_y)|
+    LocalSlip r;
+};
+
+inline GapLawElement gap_law_element(const GapMarchInput& in, double pz, double qx, double qy,
+                                     double L1, double L2, double mu_guess)
+{
+    GapLawElement e;
+    const double bound = pz * static_friction(*in.speed_law), n2 = qx * qx + qy * qy;
+    if (!(n2 > bound * bound)) return e; // compared squared, as project_traction
+    e.slips = true;
+    e.P = std::sqrt(n2);
+    const double lx = L1 * qx, ly = L2 * qy;
+    e.Lq = std::sqrt(lx * lx + ly * ly);
+    e.c = in.V * e.Lq / (e.P * in.dx);
+    e.r = local_slip(*in.speed_law, e.P, pz, e.c, mu_guess);
+    e.f = e.r.t / e.P;
+    return e;
+}
+
 // Per element [i + nx j], rolling frame; written everywhere (0 outside).
 // slip and rigid may be null (not computed: the forces alone).
 struct GapMarchOutput {
@@ -71,6 +119,7 @@ struct GapMarchOutput {
     signed char* state = nullptr;          // 0 exterior, 1 adhesion, 2 slip
     // Per patch, added to (the caller zeroes them first).
     GapMarchTotals* patch_totals = nullptr;
+    GapLawRange* law_range = nullptr; // under a law: set (may be null)
 };
 
 // Allocates nothing.

@@ -9,6 +9,13 @@
 // dq = dp_prev - dx domega. The patches' flexibilities and spin centres
 // depend on their sizes in whole elements, piecewise constant in N: held
 // fixed. An element exactly on the bound takes the state the march found.
+//
+// Under a law of the slip speed, in slip p = f q with f = t / P, P = |q|,
+// t = pz mu(s), s = c (P - t), c = V Lq / (P dx), Lq = |(L1 q_x, L2 q_y)|:
+//   dt = (mu dpz + pz mu' (c dP + (P - t) dc)) / (1 + pz c mu'),
+//   dc = c (dLq / Lq - dP / P),  dp = (dt - f dP) / P q + f dq
+// (derivative 0 where 1 + pz c mu' = 0), as the ellipse's march under a law
+// (fastsim/march_law.hpp).
 #pragma once
 
 #include "gap/gap_march.hpp"

@@ -32,9 +32,6 @@ PatchContact::PatchContact(const PatchContactSettings& s) : settings_(s)
     check_setting("tolerance", s.tolerance, 0.0, 0.1);
     if (s.model != ModelKind::exact && s.model != ModelKind::fastsim)
         throw Error(ErrorKind::invalid_input, "wheel/rail contact: the model must be the exact model or FASTSIM");
-    if (s.friction_law != FrictionLaw::coulomb && s.model != ModelKind::exact)
-        throw Error(ErrorKind::invalid_input, "wheel/rail contact: friction_law: a law of the slip speed "
-                                              "needs the exact model (FASTSIM on a patch is Coulomb's)");
     // Memory and layer once for every patch, by the checks a single contact's solve makes.
     check_friction_memory({s.memory_distance, s.memory_s0});
     ContactInput layer;

@@ -40,9 +40,9 @@ struct PatchContactSettings {
     ModelKind model = ModelKind::exact;          // exact or fastsim
     NormalMethod normal_method = NormalMethod::exact; // the normal problem's method
     SolveMode mode = SolveMode::full;            // full: every field and the work maps
-    // A law of the slip speed (contact/params.hpp; the exact model only): mu
-    // is then its mu_kin, the slip speed the micro-slip times the patch's
-    // rolling speed veloc.
+    // A law of the slip speed (contact/params.hpp; either model): mu is then
+    // its mu_kin, the slip speed the micro-slip times the patch's rolling
+    // speed veloc.
     FrictionLaw friction_law = FrictionLaw::coulomb;
     double mu_e1 = 0.0, s_h1 = 0.0; // [-], [m/s]
     double mu_e2 = 0.0, s_h2 = 0.0; // [-], [m/s]

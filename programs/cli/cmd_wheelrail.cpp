@@ -150,9 +150,6 @@ void read_friction(const ParsedOptions& o, cw_wheelrail_params& p)
                               law == "polach" ? "missing: --friction-law polach takes --mu (its mu0), "
                                                 "--polach-A and --polach-B"
                                               : "only used with --friction-law polach");
-    if (law != "coulomb" && o.text("model", "exact") != "exact")
-        throw usage_error("--friction-law", "a law of the slip speed needs --model exact "
-                                            "(FASTSIM on a patch is Coulomb's)");
     if (law == "polach") {
         cw_params c;
         cw_params_init(&c);

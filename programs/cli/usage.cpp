@@ -122,8 +122,8 @@ contact (lengths, forces, stresses in the --units system):
                     analytic scale, whose sum differs from N by up to a few
                     tenths of a per cent, the original algorithm; the exact
                     model carries N exactly either way)
-friction falling with the slip speed s = |micro-slip| V (FASTSIM on Kalker's
-strips or the uniform grid; doc/theory/friction.md):
+friction falling with the slip speed s = |micro-slip| V (FASTSIM and the
+exact model, also with --gap; doc/theory/friction.md):
   --friction-law coulomb|linear|rational|exponential|polach
                     CONTACT's laws (its L = 2, 3, 4): mu is then the kinetic
                     coefficient mu_kin, each term falls from --mu-e1 (--mu-e2)

@@ -435,9 +435,10 @@ def solve(params: ParamsLike = None, *, grid: GridLike = None, fields: bool = Tr
     mu_e1=0.2232, s_h1=0.99 [m/s], V=10 [m/s]; or Polach's law as
     polach=(mu0, A, B) with B in s/m (written by cw_friction_polach). The
     exact model takes it at every element's slip speed on the uniform and
-    gap grids; FASTSIM at every element, or with friction_speed="global"
-    at the contact's slip speed; every one in either mode. The calibrated
-    model and FASTSIM on a gap grid refuse it naming friction_law.
+    gap grids; FASTSIM at every element (on the ellipse's and gap grids),
+    or with friction_speed="global" at the contact's slip speed (the
+    ellipse's grids); every one in either mode. The calibrated model
+    refuses it naming friction_law.
 
     For many contacts use solve_many (one call, threads); for loops, a
     Solver. Keywords: every field of the C struct cw_params, in SI units,

@@ -277,6 +277,75 @@ static void fastsim_on_a_shifted_hertzian_gap(void** state)
     cw_solver_destroy(sg);
 }
 
+/* FASTSIM on the Hertzian gap under the exponential law (mu_kin 0.14,
+ * mu_e1 0.19, s_h1 1.25 m/s, V = 10 m/s) through the C ABI: in full
+ * sliding (xi_x 15 %, 1.5 m/s) |Fx| / N -> mu(xi V), the closed form of
+ * sliding friction (each element slides at about xi V): measured 3.7e-4 of
+ * mu(0) on this 24 x 24 grid (2.1e-4 on 48 x 48, test_nonhertz_fastsim_law:
+ * the elements near each row's leading edge, where the traction builds up,
+ * slide at other speeds, a share of the load of order 1/nx), 5e-4 asserted;
+ * mu_min <= mu(xi V) <= mu_max; past the peak (0.8 %) the Jacobian's
+ * dFx/dxi_x and dFx/dN against central differences of the solves (steps
+ * 1e-5 xi and N, within 1e-4 of the entry), dFx/dxi_x positive: |Fx| falls. */
+static void fastsim_law_on_a_hertzian_gap(void** state)
+{
+    (void)state;
+    const cw_grid g = gap_grid(-box * a + box * a / n, -box * b + box * b / n, n, n);
+    cw_solver* s = NULL;
+    assert_int_equal(cw_solver_create(&g, &s, NULL, 0), CW_OK);
+    double h[n * n];
+    hertz_gap(&g, 0, 0, 0, h);
+    cw_params p = exact_params();
+    p.model = CW_MODEL_FASTSIM;
+    p.gap = h;
+    p.gap_len = n * n;
+    p.friction_law = CW_FRICTION_EXPONENTIAL;
+    p.mu = 0.14;
+    p.mu_e1 = 0.19;
+    p.s_h1 = 1.25;
+    p.V = 10.0;
+    p.xi_x = 0.15;
+    p.xi_y = 0.0;
+    p.phi = 0.0;
+    cw_result r;
+    cw_result_init(&r);
+    assert_int_equal(cw_solver_solve(s, &p, CW_SOLVE_FULL, &r), CW_OK);
+    const double mu = 0.14 + 0.19 * exp(-log(2.0) * 0.15 * 10.0 / 1.25);
+    print_message("FASTSIM on a gap, full sliding: |Fx|/N %.6f, mu(xi V) %.6f\n",
+                  -r.Fx / r.normal_force, mu);
+    assert_int_equal(r.n_slip, r.n_contact);
+    assert_close(-r.Fx / r.normal_force, mu, 0.0, 5e-4 * 0.33);
+    assert_true(r.mu_min <= mu && mu <= r.mu_max && r.mu_max < 0.33);
+    assert_close(r.mu_static, 0.33, 1e-15, 0.0);
+    assert_close(r.W_consistent, r.W_macro, 1e-12, 0.0);
+
+    p.xi_x = 0.008;
+    p.xi_y = 3e-4;
+    double J[CW_JACOBIAN_LEN];
+    assert_int_equal(cw_solver_solve_jacobian(s, &p, CW_SOLVE_FORCES, &r, J, CW_JACOBIAN_LEN), CW_OK);
+    assert_true(r.n_adhesion > 0 && r.n_slip > 0);
+    /* Columns xi_x and N of Fx (J[0], J[3]). */
+    double F[2][2];
+    for (int side = 0; side < 2; ++side) {
+        cw_params q = p;
+        q.xi_x += (side ? -1.0 : 1.0) * 1e-5 * p.xi_x;
+        assert_int_equal(cw_solver_solve(s, &q, CW_SOLVE_FORCES, &r), CW_OK);
+        F[0][side] = r.Fx;
+        q = p;
+        q.normal_force += (side ? -1.0 : 1.0) * 1e-5 * p.normal_force;
+        assert_int_equal(cw_solver_solve(s, &q, CW_SOLVE_FORCES, &r), CW_OK);
+        F[1][side] = r.Fx;
+    }
+    const double central = (F[0][0] - F[0][1]) / (2e-5 * p.xi_x);
+    const double central_N = (F[1][0] - F[1][1]) / (2e-5 * p.normal_force);
+    print_message("FASTSIM on a gap, 0.8 %% (%d of %d slip): dFx/dxi_x %.6g, central differences "
+                  "%.6g; dFx/dN %.6g, %.6g\n", r.n_slip, r.n_contact, J[0], central, J[3], central_N);
+    assert_true(J[0] > 0.0);
+    assert_close(J[0], central, 1e-4, 0.0);
+    assert_close(J[3], central_N, 1e-4, 0.0);
+    cw_solver_destroy(s);
+}
+
 /* FASTSIM's adhesion limit per patch, computed by hand: with friction too
  * large for any slip and no spin, each segment of n elements carries the
  * tractions -k dx (xi_x / L1, xi_y / L2), k = 1..n, from its leading edge,
@@ -553,6 +622,7 @@ int main(int argc, char** argv)
         cmocka_unit_test(two_lobes_are_two_patches),
         cmocka_unit_test(fastsim_on_a_shifted_hertzian_gap),
         cmocka_unit_test(fastsim_adhesion_limit_per_patch),
+        cmocka_unit_test(fastsim_law_on_a_hertzian_gap),
         cmocka_unit_test(semi_hertz_fit_stops_at_a_raised_band),
         cmocka_unit_test(errors_name_the_input),
     };

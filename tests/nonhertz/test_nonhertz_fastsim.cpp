@@ -14,6 +14,7 @@
 //    and zero in adhesion; rolling towards -x mirrors; errors name inputs.
 // `test_nonhertz_fastsim --markdown` prints the accuracy table of
 // doc/validation/non-hertzian.md (scripts/doc-tables.sh pastes and checks it).
+#include "ellipse_march.hpp"
 #include "gap_shape_grid.hpp"
 #include "gap_shapes.hpp"
 #include "gap_test_support.hpp"
@@ -137,25 +138,10 @@ void march_is_fastsim_on_an_ellipse(void**)
     e.phi = 0.8;
     cw::Solver fastsim(cwtest::uniform_grid(nx, ny, 1.0));
     const cw::SolveTotals te = fastsim.solve(e, cw::SolveMode::full);
-    const auto x = cwtest::field(fastsim, cw::Field::x), y = cwtest::field(fastsim, cw::Field::y);
-    const auto pz = cwtest::field(fastsim, cw::Field::pz);
     const auto px = cwtest::field(fastsim, cw::Field::px), py = cwtest::field(fastsim, cw::Field::py);
-    std::vector<int> patch(pz.size(), 0);
-    const cw::GapMarchPatch P{te.L1, te.L2, te.L3, 0.0, 0.0};
-    cw::GapMarchInput in;
-    in.nx = nx;
-    in.ny = ny;
-    in.x0 = x[0];
-    in.y0 = y[0];
-    in.dx = x[1] - x[0];
-    in.dy = y[nx] - y[0];
-    in.pressure = pz.data();
-    in.patch = patch.data();
-    in.patches = &P;
-    in.law = cw::CoulombLaw{e.mu};
-    in.xi = e.xi_x;
-    in.eta = e.xi_y;
-    in.phi = e.phi;
+    const cwtest::EllipseMarch march(fastsim, te, e);
+    const cw::GapMarchInput& in = march.in;
+    const std::vector<double>& pz = march.pz;
     std::vector<std::complex<double>> p(pz.size()), s(pz.size()), w(pz.size());
     std::vector<signed char> state(pz.size());
     cw::GapMarchTotals t; // the one patch's

@@ -72,7 +72,7 @@ typedef struct cw_wheelrail_params {
     double wheel_y_offset;       /* [m] added to the wheel profile's y (0) */
     int mirror_wheel;            /* 1: the wheel profile's y is mirrored before the offset
                                     (measured with y towards the track centre); 0 (default) */
-    /* A friction law of the slip speed in every patch (the exact model only;
+    /* A friction law of the slip speed in every patch (either model;
      * cw_params' fields of the same names): mu is then its mu_kin, and the
      * slip speed of an element its micro-slip times the patch's rolling
      * speed veloc. Polach's law: cw_friction_polach writes these fields of a

@@ -309,7 +309,8 @@ void writes_pictures(void**)
 
 // --jacobian with a gap: the JSON's "jacobian" equals the C ABI's
 // cw_solver_solve_jacobian on the same gap (the exact model with the force
-// given, FASTSIM with the approach given and the semi-Hertzian method), to
+// given, FASTSIM with the approach given and the semi-Hertzian method, under
+// Coulomb's law and under the exponential law at every element), to
 // the rounding of the grid the CLI read from the printed coordinates: each
 // entry within 1e-7 of its row's scale sum_c |J[r][c]| s_c (s: 1e-3 for the
 // creepages, 1e-3 / 5 mm for the spin, N for the load).
@@ -319,12 +320,22 @@ void jacobian_matches_library(void**)
     const std::string file = write_gap(g, "lobes_jacobian.csv");
     cw_solver* s = nullptr;
     assert_int_equal(cw_solver_create(&g.grid, &s, nullptr, 0), CW_OK);
-    for (int k = 0; k < 2; ++k) {
+    for (int k = 0; k < 3; ++k) {
         std::vector<std::string> args = {"solve", "--gap", file, "--xi-x", "4e-4", "--xi-y",
                                          "-6e-4", "--spin", "0.5", "--format", "json",
                                          "--jacobian"};
         cw_params p = library_params(g);
-        if (k == 1) {
+        if (k == 2) {
+            p.friction_law = CW_FRICTION_EXPONENTIAL;
+            p.mu = 0.14;
+            p.mu_e1 = 0.19;
+            p.s_h1 = 1.25;
+            p.V = 10.0;
+            for (const char* a : {"--friction-law", "exponential", "--mu", "0.14", "--mu-e1",
+                                  "0.19", "--s-h1", "1.25", "--V", "10"})
+                args.push_back(a);
+        }
+        if (k >= 1) {
             p.model = CW_MODEL_FASTSIM;
             p.normal_load = CW_NORMAL_APPROACH;
             p.approach = 60e-6;

@@ -478,40 +478,48 @@ cw_wheelrail_patch expect_library_patch(const cwtest::Json& q, const cw_wheelrai
 
 // --friction-law polach --mu MU0 --polach-A A --polach-B B: the patch's
 // forces equal, bitwise, the C ABI's with the law cw_friction_polach writes
-// (the option's documented meaning), at 10 m/s; the law lowers the force
-// below Coulomb's mu0 Fn (Polach's mu falls from mu0 with the slip speed).
+// (the option's documented meaning), at 10 m/s, with the exact model and
+// with the fast model (--model fastsim); the law lowers the force below
+// Coulomb's mu0 Fn (Polach's mu falls from mu0 with the slip speed).
 void friction_law_matches_library(void**)
 {
     std::vector<std::string> args = benchmark_args();
     const auto v = std::find(args.begin(), args.end(), "--V");
     *(v + 1) = "10";
     *(v + 3) = "-21.374417"; // the pitch rate scaled with V
-    const cwtest::Run r = cwtest::cli_ok(cwtest::with(
-        args, {"--format", "json", "--friction-law", "polach", "--mu", "0.36", "--polach-A", "0.38",
-               "--polach-B", "0.7"}));
-    const cwtest::Json j = cwtest::parse_json(r.out);
-    const cwtest::Json& q = j.at("patches").array[0];
+    for (const bool fast : {false, true}) {
+        std::vector<std::string> more = {"--format", "json", "--friction-law", "polach", "--mu",
+                                         "0.36", "--polach-A", "0.38", "--polach-B", "0.7"};
+        if (fast) more.insert(more.end(), {"--model", "fastsim"});
+        const cwtest::Run r = cwtest::cli_ok(cwtest::with(args, more));
+        const cwtest::Json j = cwtest::parse_json(r.out);
+        const cwtest::Json& q = j.at("patches").array[0];
 
-    cw_params law;
-    cw_params_init(&law);
-    assert_int_equal(cw_friction_polach(0.36, 0.38, 0.7, &law, nullptr, 0), CW_OK);
-    cw_wheelrail_params p;
-    cw_wheelrail_params_init(&p);
-    p.friction_law = law.friction_law;
-    p.mu = law.mu;
-    p.mu_e1 = law.mu_e1;
-    p.s_h1 = law.s_h1;
-    const cw_wheelrail_patch pa = expect_library_patch(q, p);
-    assert_true(std::hypot(pa.Fx, pa.Fs) < 0.36 * pa.Fn * 0.95);
+        cw_params law;
+        cw_params_init(&law);
+        assert_int_equal(cw_friction_polach(0.36, 0.38, 0.7, &law, nullptr, 0), CW_OK);
+        cw_wheelrail_params p;
+        cw_wheelrail_params_init(&p);
+        p.friction_law = law.friction_law;
+        p.mu = law.mu;
+        p.mu_e1 = law.mu_e1;
+        p.s_h1 = law.s_h1;
+        if (fast) {
+            p.model = CW_MODEL_FASTSIM;
+            p.normal_method = CW_NORMAL_SEMI_HERTZ;
+        }
+        const cw_wheelrail_patch pa = expect_library_patch(q, p);
+        assert_true(std::hypot(pa.Fx, pa.Fs) < 0.36 * pa.Fn * 0.95);
+    }
 
     using cwtest::cli;
     using cwtest::expect_refusal;
     expect_refusal(cli(cwtest::with(args, {"--friction-law", "polach", "--polach-A", "0.38"})), 2,
                    "--polach-B", "Polach without B");
     expect_refusal(cli(cwtest::with(args, {"--mu-e1", "0.1"})), 2, "--mu-e1", "a term without a law");
-    expect_refusal(cli(cwtest::with(args, {"--friction-law", "exponential", "--mu-e1", "0.1", "--s-h1",
-                                           "1", "--model", "fastsim"})),
-                   2, "--friction-law", "a law with the fast model");
+    expect_refusal(cli(cwtest::with(args, {"--friction-law", "exponential", "--mu-e1", "0.1",
+                                           "--model", "fastsim"})),
+                   2, "s_h1", "a falling term without its half speed, the fast model");
     expect_refusal(cli(cwtest::with(args, {"--friction-law", "exponential", "--mu-e1", "0.1"})), 2,
                    "s_h1", "a falling term without its half speed");
 }
