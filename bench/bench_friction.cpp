@@ -12,6 +12,16 @@
 // Not a test: no timed assertion anywhere.
 //
 //   creepwork_bench_friction [--repeats N]
+//
+// With --instructions GRID XI (GRID tractcurv, the 48 x 44 grid above, or
+// ellipse, Kalker's 40 x 40 strips over the same contact; XI the rolling
+// creepage) nothing is timed: each kind of solve runs ten times inside a
+// function of its own, never inlined, after one solve outside it, so that
+// callgrind's inclusive count of the function over ten is the instructions
+// of one solve:
+//   valgrind --tool=callgrind --callgrind-out-file=cg.out
+//       build/bin/creepwork_bench_friction --instructions tractcurv 0.1
+//   callgrind_annotate --inclusive=yes cg.out | grep count_
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
@@ -48,10 +58,90 @@ double per_call(int n, F&& f)
     return best;
 }
 
+// One kind of solve each, ten times (--instructions).
+constexpr int kCounted = 10;
+
+__attribute__((noinline)) double count_coulomb_forces(cw::FastsimModel& m, const cw::ContactInput& in)
+{
+    double s = 0.0;
+    for (int i = 0; i < kCounted; ++i) s += m.solve(in, cw::SolveMode::forces_only).Fx;
+    return s;
+}
+
+__attribute__((noinline)) double count_coulomb_full(cw::FastsimModel& m, const cw::ContactInput& in)
+{
+    double s = 0.0;
+    for (int i = 0; i < kCounted; ++i) s += m.solve(in, cw::SolveMode::full).Fx;
+    return s;
+}
+
+__attribute__((noinline)) double count_coulomb_jacobian(cw::FastsimModel& m,
+                                                        const cw::ContactInput& in)
+{
+    double s = 0.0;
+    cw::Jacobian J;
+    for (int i = 0; i < kCounted; ++i) s += m.solve_jacobian(in, cw::SolveMode::forces_only, J).Fx;
+    return s;
+}
+
+__attribute__((noinline)) double count_law_forces(cw::FastsimLawModel& m, const cw::ContactInput& in)
+{
+    double s = 0.0;
+    for (int i = 0; i < kCounted; ++i) s += m.solve(in, cw::SolveMode::forces_only).Fx;
+    return s;
+}
+
+__attribute__((noinline)) double count_law_full(cw::FastsimLawModel& m, const cw::ContactInput& in)
+{
+    double s = 0.0;
+    for (int i = 0; i < kCounted; ++i) s += m.solve(in, cw::SolveMode::full).Fx;
+    return s;
+}
+
+__attribute__((noinline)) double count_law_jacobian(cw::FastsimLawModel& m,
+                                                    const cw::ContactInput& in)
+{
+    double s = 0.0;
+    cw::Jacobian J;
+    for (int i = 0; i < kCounted; ++i) s += m.solve_jacobian(in, cw::SolveMode::forces_only, J).Fx;
+    return s;
+}
+
+int instructions(const char* grid_name, double xi)
+{
+    cw::GridSpec g = cwtest::tractcurv_grid();
+    if (!std::strcmp(grid_name, "ellipse")) {
+        g = cw::GridSpec{};
+        g.nx = g.ny = 40;
+    } else if (std::strcmp(grid_name, "tractcurv")) {
+        std::fprintf(stderr, "--instructions: GRID is tractcurv or ellipse, not %s\n", grid_name);
+        return 1;
+    }
+    cw::FastsimModel coulomb(g);
+    cw::FastsimLawModel local(g);
+    local.set_law(cw::polach_law(0.36, 0.38, 0.7), 10.0);
+    cw::ContactInput in = cwtest::tractcurv_contact(xi);
+    in.mu = 0.36;
+    cw::Jacobian J;
+    // One solve of each kind first: the counted ones allocate nothing.
+    coulomb.solve_jacobian(in, cw::SolveMode::full, J);
+    local.solve_jacobian(in, cw::SolveMode::full, J);
+    const cw::SolveTotals t = local.solve(in, cw::SolveMode::full);
+    double sink = count_coulomb_forces(coulomb, in) + count_coulomb_full(coulomb, in) +
+                  count_coulomb_jacobian(coulomb, in);
+    sink += count_law_forces(local, in) + count_law_full(local, in) + count_law_jacobian(local, in);
+    std::printf("%s xi_x %.4f: %d slipping elements, %.3f law evaluations each (%g)\n", grid_name,
+                xi, t.n_slip, t.n_slip ? double(local.friction_iterations()) / t.n_slip : 0.0,
+                sink);
+    return 0;
+}
+
 } // namespace
 
 int main(int argc, char** argv)
 {
+    for (int i = 1; i + 2 < argc; ++i)
+        if (!std::strcmp(argv[i], "--instructions")) return instructions(argv[i + 1], std::atof(argv[i + 2]));
     int n = 200;
     for (int i = 1; i + 1 < argc; ++i)
         if (!std::strcmp(argv[i], "--repeats")) n = std::atoi(argv[i + 1]);
