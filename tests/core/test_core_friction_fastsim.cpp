@@ -4,6 +4,7 @@
 // forces at the static coefficient; bad inputs are named.
 #include "contact_friction_formula.hpp"
 #include "core_test_support.hpp"
+#include "law_residual.hpp"
 #include "tractcurv_contact.hpp"
 #include "test_support.h"
 
@@ -97,7 +98,7 @@ void every_form_in_full_sliding(void**)
 
 // Every slipping element meets its law, |p| = p_z mu(V |s|) with the
 // element's exported micro-slip s and mu from CONTACT's formula
-// (contact_friction_formula.hpp, libm's exp): within 1e-12 of p_z mu_s,
+// (law_residual.hpp): within 1e-12 of p_z mu_s,
 // where the march's Halley step stops (fastsim/march_law.hpp), over the
 // creepage range from the first slip to full sliding, with lateral creepage
 // and spin, Polach's law and every form with two terms (mu_kin 0.14,
@@ -115,40 +116,23 @@ void every_element_meets_its_law(void**)
                     cw::ContactInput in =
                         eurosprinter(xi, 0.3 * lateral * xi, 0.2 * lateral * xi / 6.304e-3);
                     in.V = 10.0;
-                    // CONTACT's L-digit and terms (mm/s in its formula).
-                    int kind = 4;
-                    double e1 = 0.36 * 0.62, sh1 = std::log(2.0) / 0.7, e2 = 0.0, sh2 = 1.0;
-                    in.mu = 0.36 * 0.38; // Polach's mu0 = 0.36, A = 0.38, B = 0.7 s/m
-                    if (form > 0) {
-                        kind = form + 1;
+                    if (form == 0) { // Polach's mu0 = 0.36, A = 0.38, B = 0.7 s/m
+                        in.friction_law = cw::FrictionLaw::exponential;
+                        in.mu = 0.36 * 0.38;
+                        in.mu_e1 = 0.36 * 0.62;
+                        in.s_h1 = std::log(2.0) / 0.7;
+                    } else {
+                        in.friction_law = form == 1   ? cw::FrictionLaw::linear
+                                          : form == 2 ? cw::FrictionLaw::rational
+                                                      : cw::FrictionLaw::exponential;
                         in.mu = 0.14;
-                        e1 = 0.19, sh1 = 1.25, e2 = 0.05, sh2 = 0.3;
+                        in.mu_e1 = 0.19;
+                        in.s_h1 = 1.25;
+                        in.mu_e2 = 0.05;
+                        in.s_h2 = 0.3;
                     }
-                    in.friction_law = kind == 2   ? cw::FrictionLaw::linear
-                                      : kind == 3 ? cw::FrictionLaw::rational
-                                                  : cw::FrictionLaw::exponential;
-                    in.mu_e1 = e1;
-                    in.s_h1 = sh1;
-                    in.mu_e2 = e2;
-                    in.s_h2 = sh2;
-                    const double mu_s = in.mu + e1 + e2;
                     s.solve(in, cw::SolveMode::full);
-                    const std::vector<double> px = cwtest::field(s, cw::Field::px),
-                                              py = cwtest::field(s, cw::Field::py),
-                                              pz = cwtest::field(s, cw::Field::pz),
-                                              sx = cwtest::field(s, cw::Field::sx),
-                                              sy = cwtest::field(s, cw::Field::sy);
-                    const std::vector<int> state = cwtest::states(s);
-                    for (size_t k = 0; k < state.size(); ++k) {
-                        if (state[k] != 2) continue;
-                        const double speed = in.V * std::hypot(sx[k], sy[k]);
-                        const double mu = cwtest::contact_mu_steady(kind, in.mu, e1, 1e3 * sh1, e2,
-                                                                    1e3 * sh2, 1e3 * speed);
-                        const double err =
-                            std::fabs(std::hypot(px[k], py[k]) - pz[k] * mu) / (pz[k] * mu_s);
-                        worst = std::max(worst, err);
-                        ++checked;
-                    }
+                    worst = std::max(worst, cwtest::worst_law_residual(s, in, checked));
                 }
     }
     print_message("%ld slipping elements: worst |p - p_z mu(s)| / (p_z mu_s) %.3g\n", checked,
