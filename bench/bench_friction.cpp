@@ -156,7 +156,7 @@ int main(int argc, char** argv)
     std::printf("FASTSIM with a law of the slip speed, 48 x 44 (1376 contact elements), per "
                 "forces-only solve [us]\n\n");
     std::printf("| xi_x | slip el. | coulomb | global | local | local+J | local/coulomb | "
-                "Newton steps per slip el. |\n|---|---|---|---|---|---|---|---|\n");
+                "law evaluations per slip el. |\n|---|---|---|---|---|---|---|---|\n");
     for (double xi : {0.001, 0.004, 0.02, 0.1}) {
         cw::ContactInput in = cwtest::tractcurv_contact(xi);
         in.mu = 0.36;
