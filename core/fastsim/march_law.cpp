@@ -286,14 +286,20 @@ struct LawKernel : KernelWidths {
         }
     }
 
-    // One vector a group: with two or four the state spills, more
-    // instructions in all (doc/dev/decisions.md).
+    // Groups of two vectors, then one: the two strips' chains of dependent
+    // operations overlap in the pipeline (the least CPU time; one vector a
+    // group takes fewer instructions but as long as before, four spill more:
+    // doc/dev/decisions.md); with tangents one (their state fills the
+    // registers).
     template <int W>
     CREEPWORK_INLINE static void run(const LawMarch& A)
     {
         const MarchView& v = A.view;
         const int vectors = (v.last - v.first + W - 1) / W;
-        for (int k = 0; k < vectors; ++k) group<W, 1>(A, v.first + k * W);
+        int k = 0;
+        if constexpr (!Tangents)
+            for (; k + 2 <= vectors; k += 2) group<W, 2>(A, v.first + k * W);
+        for (; k < vectors; ++k) group<W, 1>(A, v.first + k * W);
     }
 };
 
