@@ -7,9 +7,52 @@ namespace creepwork {
 
 namespace {
 
+// A Halley step below this fraction of the bound is the last: the root is
+// within about its cube (times the law's curvature) of where it leads. Not
+// across the linear law's kinks, where a step is wrong to first order in its
+// length: there only a step below 1e-8 (Newton's, m'' = 0) is the last.
+template <SlipSpeedLawKind Kind>
+constexpr double kLawStepTolerance = Kind == SlipSpeedLawKind::linear ? 1e-8 : 1e-4;
+
 template <SlipSpeedLawKind Kind, bool Tangents>
 struct LawKernel : KernelWidths {
     static constexpr int K = kLawTangents;
+
+    // The law at t (its slip speed s = c (P - t) >= 0) and Halley's step
+    // on F(t) = t - g m(s) from there: F' = 1 + g c m', F'' = -g c^2 m'',
+    // next = t - 2 F F' / (2 F'^2 - F F'') (Newton's where that denominator
+    // is not positive; only where F' > 0), with m and m' moved to next to
+    // second and first order: a last step costs no evaluation.
+    template <int W>
+    struct Step {
+        simd::Vec<W> m, dm, res, slope, next, m_next, dm_next;
+    };
+    template <int W>
+    CREEPWORK_INLINE static Step<W> step(const SlipSpeedLawLanes<Kind, W>& law,
+                                         const simd::Vec<W>& t, const simd::Vec<W>& P,
+                                         const simd::Vec<W>& c, const simd::Vec<W>& g)
+    {
+        using V = simd::Vec<W>;
+        const V zero = simd::broadcast<W>(0.0), one = simd::broadcast<W>(1.0),
+                two = simd::broadcast<W>(2.0), half = simd::broadcast<W>(0.5);
+        Step<W> k;
+        const V s0 = c * (P - t);
+        const V s = s0 > zero ? s0 : zero;
+        V d2m;
+        law.value(s, k.m, k.dm, d2m);
+        const V gc = g * c;
+        k.res = t - g * k.m;
+        k.slope = one + gc * k.dm;
+        const V curv = -(gc * c * d2m);
+        const V two_slope2 = two * k.slope * k.slope;
+        const V den0 = two_slope2 - k.res * curv;
+        const V den = den0 > zero ? den0 : two_slope2;
+        k.next = t - two * k.res * k.slope / fp_opaque(k.slope > zero ? den : one);
+        const V ds = c * (P - k.next) - s;
+        k.m_next = k.m + ds * (k.dm + half * ds * d2m);
+        k.dm_next = k.dm + ds * d2m;
+        return k;
+    }
 
     // G vectors of W strips from strip j0, leading edge to trailing edge.
     template <int W, int G>
@@ -23,7 +66,7 @@ struct LawKernel : KernelWidths {
         const V zero = simd::broadcast<W>(0.0), one = simd::broadcast<W>(1.0),
                 half = simd::broadcast<W>(0.5);
         const V tiny = simd::broadcast<W>(2.2250738585072014e-308); // DBL_MIN
-        const V tol = simd::broadcast<W>(1e-8);
+        const V tol = simd::broadcast<W>(kLawStepTolerance<Kind>);
         const V cy = simd::broadcast<W>(v.cy), L1 = simd::broadcast<W>(A.L1),
                 L2 = simd::broadcast<W>(A.L2), speed = simd::broadcast<W>(A.slip_speed_scale);
 
@@ -68,12 +111,12 @@ struct LawKernel : KernelWidths {
                 slip[g] = P[g] > bnd[g] ? one : zero;
                 any = any || simd::max_lane(slip[g]) > 0.0;
             }
-            V f[G], t[G], mu[G], dmu[G], dG[G], c[G], safeP[G], lx[G], ly[G], Lq[G];
+            V f[G], t[G], mu[G], dmu[G], c[G], safeP[G], lx[G], ly[G], Lq[G];
             CREEPWORK_UNROLL
             for (int g = 0; g < G; ++g) f[g] = one;
             if (any) {
-                // Newton's start and bracket [lo, hi] per lane; act: still iterating.
-                V lo[G], hi[G], act[G];
+                // Each slipping lane's start: m extrapolated along its strip.
+                V start[G];
                 CREEPWORK_UNROLL
                 for (int g = 0; g < G; ++g) {
                     // Guarded divisors pass fp_opaque (contact/fp_safe.hpp): no
@@ -84,47 +127,68 @@ struct LawKernel : KernelWidths {
                     Lq[g] = simd::sqrt<W>(lx[g] * lx[g] + ly[g] * ly[g]);
                     const V hs = slip[g] > zero ? h[g] : one;
                     c[g] = speed * Lq[g] / fp_opaque(safeP[g] * hs);
-                    lo[g] = zero;
-                    hi[g] = bnd[g];
                     const V m_start = mprev[g] + mstep[g];
-                    const V start = bnd[g] * (m_start > zero ? m_start : zero);
-                    t[g] = start < hi[g] ? start : hi[g];
-                    mu[g] = mprev[g];
-                    dmu[g] = zero;
-                    dG[g] = one;
-                    act[g] = slip[g];
+                    const V t0 = bnd[g] * (m_start > zero ? m_start : zero);
+                    start[g] = t0 < bnd[g] ? t0 : bnd[g];
                 }
-                for (int it = 0; it < 200; ++it) { // 200: bisection alone reaches rounding
+                // One Halley step from the start. Where it is small and stays
+                // in [0, g], it is the last (nearly every element: the start is
+                // close); the other lanes iterate in the bracket below.
+                V act[G], lo[G], hi[G], res[G], next[G];
+                bool rest = false;
+                CREEPWORK_UNROLL
+                for (int g = 0; g < G; ++g) {
+                    const Step<W> k = step<W>(law, start[g], P[g], c[g], bnd[g]);
+                    // next is within tol g of the start: kept in [0, g].
+                    const V in_range = k.next > zero ? (k.next < bnd[g] ? k.next : bnd[g]) : zero;
+                    const V d = in_range - start[g];
+                    const V done = k.slope > zero ? ((d < zero ? -d : d) <= tol * bnd[g] ? one : zero)
+                                                  : zero;
+                    t[g] = done > zero ? in_range : start[g];
+                    mu[g] = done > zero ? k.m_next : k.m;
+                    dmu[g] = done > zero ? k.dm_next : k.dm;
+                    res[g] = k.res;
+                    next[g] = k.slope > zero ? k.next : start[g];
+                    iters[g] += slip[g];
+                    act[g] = slip[g] > zero ? (done > zero ? zero : one) : zero;
+                    rest = rest || simd::max_lane(act[g]) > 0.0;
+                }
+                // The other lanes: safeguarded Halley in the bracket [lo, hi]
+                // of the root from that first step on, bisection where a step
+                // leaves it, until a step is below tol g.
+                if (rest) {
+                    CREEPWORK_UNROLL
+                    for (int g = 0; g < G; ++g) {
+                        lo[g] = res[g] < zero ? start[g] : zero;
+                        hi[g] = res[g] < zero ? bnd[g] : start[g];
+                        const V mid = half * (lo[g] + hi[g]);
+                        const V inside = next[g] > lo[g] ? (next[g] < hi[g] ? one : zero) : zero;
+                        t[g] = act[g] > zero ? (inside > zero ? next[g] : mid) : t[g];
+                        // A root at the start is not moved.
+                        t[g] = act[g] > zero ? (res[g] == zero ? start[g] : t[g]) : t[g];
+                        act[g] = act[g] > zero ? (res[g] == zero ? zero : one) : zero;
+                    }
+                }
+                for (int it = 0; rest && it < 200; ++it) { // 200: bisection alone reaches rounding
                     bool more = false;
                     CREEPWORK_UNROLL
                     for (int g = 0; g < G; ++g) {
                         if (!(simd::max_lane(act[g]) > 0.0)) continue;
-                        const V s0 = c[g] * (P[g] - t[g]);
-                        const V s = s0 > zero ? s0 : zero;
-                        V mv, dmv;
-                        law.value(s, mv, dmv);
-                        const V res = t[g] - bnd[g] * mv;
-                        const V slope = one + bnd[g] * c[g] * dmv;
+                        const Step<W> k = step<W>(law, t[g], P[g], c[g], bnd[g]);
                         const V live = act[g];
-                        lo[g] = live > zero ? (res < zero ? t[g] : lo[g]) : lo[g];
-                        hi[g] = live > zero ? (res < zero ? hi[g] : t[g]) : hi[g];
+                        lo[g] = live > zero ? (k.res < zero ? t[g] : lo[g]) : lo[g];
+                        hi[g] = live > zero ? (k.res < zero ? hi[g] : t[g]) : hi[g];
                         const V mid = half * (lo[g] + hi[g]);
-                        const V newton = t[g] - res / fp_opaque(slope > zero ? slope : one);
-                        V next = slope > zero ? newton : mid;
-                        const V inside = next > lo[g] ? (next < hi[g] ? one : zero) : zero;
-                        next = inside > zero ? next : mid;
-                        const V step = next - t[g];
-                        const V small = (step < zero ? -step : step) <= tol * hi[g] ? inside : zero;
-                        const V root = res == zero ? one : zero;
-                        // A small step is taken without another evaluation:
-                        // m moves with it to first order.
-                        const V s_next = c[g] * (P[g] - next);
-                        const V m_next = mv + dmv * (s_next - s);
-                        mu[g] = live > zero ? (root > zero ? mv : (small > zero ? m_next : mv))
-                                            : mu[g];
-                        dmu[g] = live > zero ? dmv : dmu[g];
-                        dG[g] = live > zero ? slope : dG[g];
-                        t[g] = live > zero ? (root > zero ? t[g] : next) : t[g];
+                        V nx = k.slope > zero ? k.next : mid;
+                        const V inside = nx > lo[g] ? (nx < hi[g] ? one : zero) : zero;
+                        nx = inside > zero ? nx : mid;
+                        const V d = nx - t[g];
+                        const V small = (d < zero ? -d : d) <= tol * bnd[g] ? inside : zero;
+                        const V root = k.res == zero ? one : zero;
+                        const V last = root > zero ? zero : small;
+                        mu[g] = live > zero ? (last > zero ? k.m_next : k.m) : mu[g];
+                        dmu[g] = live > zero ? (last > zero ? k.dm_next : k.dm) : dmu[g];
+                        t[g] = live > zero ? (root > zero ? t[g] : nx) : t[g];
                         iters[g] += live;
                         act[g] = live > zero ? (root > zero ? zero : (small > zero ? zero : one))
                                              : zero;
@@ -135,7 +199,8 @@ struct LawKernel : KernelWidths {
                 CREEPWORK_UNROLL
                 for (int g = 0; g < G; ++g) {
                     f[g] = slip[g] > zero ? t[g] / safeP[g] : one;
-                    mstep[g] = slip[g] > zero ? mu[g] - mprev[g] : mstep[g];
+                    // No step before the strip's first slipping element.
+                    mstep[g] = slip[g] > zero ? (nslip[g] > zero ? mu[g] - mprev[g] : zero) : mstep[g];
                     mprev[g] = slip[g] > zero ? mu[g] : mprev[g];
                     mmin[g] = slip[g] > zero ? (mu[g] < mmin[g] ? mu[g] : mmin[g]) : mmin[g];
                     mmax[g] = slip[g] > zero ? (mu[g] > mmax[g] ? mu[g] : mmax[g]) : mmax[g];
@@ -167,8 +232,9 @@ struct LawKernel : KernelWidths {
                         // dt = dt_dP dP + dt_dc dc; derivative 0 where 1 + g c m' = 0.
                         const V invP = one / safeP[g];
                         const V invLq = one / fp_opaque(Lq[g] > tiny ? Lq[g] : one);
-                        const V gdm = (dG[g] != zero ? bnd[g] * dmu[g] : zero) /
-                                      fp_opaque(dG[g] != zero ? dG[g] : one);
+                        const V dG = one + bnd[g] * c[g] * dmu[g];
+                        const V gdm = (dG != zero ? bnd[g] * dmu[g] : zero) /
+                                      fp_opaque(dG != zero ? dG : one);
                         const V dt_dP = gdm * c[g], dt_dc = gdm * (P[g] - t[g]);
                         CREEPWORK_UNROLL
                         for (int k = 0; k < K; ++k) {
@@ -220,17 +286,17 @@ struct LawKernel : KernelWidths {
         }
     }
 
-    // Groups of four vectors, then two (the Newton loops of a group overlap
-    // in the pipeline: measured faster than two despite spills); with
-    // tangents one (their state fills the registers).
+    // Groups of two vectors, then one: the two strips' chains of dependent
+    // operations overlap in the pipeline (the least CPU time; one vector a
+    // group takes fewer instructions but as long as before, four spill more:
+    // doc/dev/decisions.md); with tangents one (their state fills the
+    // registers).
     template <int W>
     CREEPWORK_INLINE static void run(const LawMarch& A)
     {
         const MarchView& v = A.view;
         const int vectors = (v.last - v.first + W - 1) / W;
         int k = 0;
-        if constexpr (!Tangents)
-            for (; k + 4 <= vectors; k += 4) group<W, 4>(A, v.first + k * W);
         if constexpr (!Tangents)
             for (; k + 2 <= vectors; k += 2) group<W, 2>(A, v.first + k * W);
         for (; k < vectors; ++k) group<W, 1>(A, v.first + k * W);

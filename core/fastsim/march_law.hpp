@@ -4,12 +4,16 @@
 // root of
 //   t = g m(c (P - t)),   m = mu/mu_s,  c = (V T / a) |(L1 q'_x, L2 q'_y)| / (P h)
 // (the slip speed s = c (P - t) [m/s], fastsim_law_model.hpp), which keeps
-// q's direction: f = t / P. Newton's method from m extrapolated along the
-// strip from its last two slipping elements, safeguarded by bisection in
-// [0, g] (g(0) <= 0 <= g(g) there); all lanes of a group iterate together, each frozen once its
-// step is below 1e-8 g, whose Newton step it then takes (its error squared:
-// the root to rounding), moving m to first order. The law's form is a
-// template parameter: no branch on it in the loop.
+// q's direction: f = t / P. Halley's method (m and m' and m'' from one
+// evaluation) from m extrapolated along the strip from its last two
+// slipping elements: a step below 1e-4 g is the last, taken without another
+// evaluation (m moves with it to second order), and the root is within about
+// the cube of that step of it (every element meets its law within 1e-12 of
+// p_n mu_s, test_core_friction_fastsim); nearly every element takes one
+// evaluation. Lanes whose first step is larger go on in [0, g] (g(0) <= 0 <=
+// g(g) there), safeguarded by bisection, each frozen once its step is small
+// (the linear law, whose kinks a small step may cross: below 1e-8 g). The
+// law's form is a template parameter: no branch on it in the loop.
 //
 // With tangents, the forward derivatives of every traction by ux, uy,
 // kappa (march_tangent.hpp) and ln T (c is proportional to T): per

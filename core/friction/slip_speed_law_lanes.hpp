@@ -1,7 +1,8 @@
 // A law of the slip speed (slip_speed_law.hpp) on W lanes, for the SIMD
 // kernels that evaluate it at every element: its form fixed at compile time
 // (no branch on the kind inside a kernel's loop), its coefficients divided
-// by the static one, so that it gives m(s) = mu(s)/mu_s and dm/ds [s/m].
+// by the static one, so that it gives m(s) = mu(s)/mu_s, dm/ds [s/m] and,
+// when asked, d2m/ds2 [s^2/m^2].
 // The exponential form takes simd::exp_nonpositive (within 1e-15 of exp;
 // a term below 1e-148 of its mu_e is 0);
 // the others are the scalar formulas of slip_speed_law.cpp lane by lane.
@@ -39,19 +40,33 @@ struct SlipSpeedLawLanes {
     // m(s) and dm/ds at slip speeds s >= 0.
     CREEPWORK_INLINE void value(const V& s, V& m, V& dm) const
     {
-        V t, dt;
-        term<1>(e1, rate1, s, m, dm);
-        m += kin;
-        if (two) {
-            term<2>(e2, rate2, s, t, dt);
-            m += t;
-            dm += dt;
-        }
+        V d2m{}; // not computed
+        evaluate<false>(s, m, dm, d2m);
+    }
+    // The same and d2m/ds2 [s^2/m^2] (the march's Halley step).
+    CREEPWORK_INLINE void value(const V& s, V& m, V& dm, V& d2m) const
+    {
+        evaluate<true>(s, m, dm, d2m);
     }
 
 private:
-    template <int Index>
-    CREEPWORK_INLINE static void term(const V& e, const V& rate, const V& s, V& m, V& dm)
+    template <bool Curvature>
+    CREEPWORK_INLINE void evaluate(const V& s, V& m, V& dm, V& d2m) const
+    {
+        V t, dt, d2t{};
+        term<1, Curvature>(e1, rate1, s, m, dm, d2m);
+        m += kin;
+        if (two) {
+            term<2, Curvature>(e2, rate2, s, t, dt, d2t);
+            m += t;
+            dm += dt;
+            if constexpr (Curvature) d2m += d2t;
+        }
+    }
+
+    template <int Index, bool Curvature>
+    CREEPWORK_INLINE static void term(const V& e, const V& rate, const V& s, V& m, V& dm,
+                                      V& d2m)
     {
         if constexpr (Kind == SlipSpeedLawKind::exponential) {
             // A term below exp(-340) ~ 1e-148 of its mu_e is 0: the
@@ -60,22 +75,29 @@ private:
             const V cutoff = simd::broadcast<W>(-340.0), zero = simd::broadcast<W>(0.0);
             m = x > cutoff ? e * simd::exp_nonpositive<W>(x) : zero;
             dm = -(rate * m);
+            if constexpr (Curvature) d2m = -(rate * dm);
         } else if constexpr (Kind == SlipSpeedLawKind::linear) {
             const V zero = simd::broadcast<W>(0.0), one = simd::broadcast<W>(1.0);
             // mu_e max(0, 1 - s/(2 s_h)); the right-hand slope 0 at the kink.
             const V f = one - simd::broadcast<W>(0.5) * (s * rate);
             m = f > zero ? e * f : zero;
             dm = f > zero ? -(simd::broadcast<W>(0.5) * e * rate) : zero;
+            if constexpr (Curvature) d2m = zero;
         } else if constexpr (Index == 1) { // rational: mu_e / (1 + s/s_h)
             const V one = simd::broadcast<W>(1.0);
             const V d = one + s * rate;
             m = e / d;
             dm = -(e * rate) / (d * d);
+            if constexpr (Curvature) d2m = -(simd::broadcast<W>(2.0) * rate * dm) / d;
         } else { // rational: mu_e / (1 + (s/s_h)^2)
             const V one = simd::broadcast<W>(1.0);
             const V r = s * rate, d = one + r * r;
             m = e / d;
             dm = -(simd::broadcast<W>(2.0) * e * r * rate) / (d * d);
+            // e rate^2 (6 r^2 - 2) / d^3
+            if constexpr (Curvature)
+                d2m = e * rate * rate * (simd::broadcast<W>(6.0) * r * r - simd::broadcast<W>(2.0)) /
+                      (d * d * d);
         }
     }
 };

@@ -4,6 +4,7 @@
 // forces at the static coefficient; bad inputs are named.
 #include "contact_friction_formula.hpp"
 #include "core_test_support.hpp"
+#include "law_residual.hpp"
 #include "tractcurv_contact.hpp"
 #include "test_support.h"
 
@@ -13,8 +14,10 @@
 #include "friction/slip_speed_law.hpp"
 #include "solver.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
+#include <vector>
 
 namespace cw = creepwork;
 
@@ -91,6 +94,51 @@ void every_form_in_full_sliding(void**)
             assert_close(-t.Fx / 106.7e3, mu, 0.0, 2e-4 * (0.14 + 0.19 + 0.05));
         }
     }
+}
+
+// Every slipping element meets its law, |p| = p_z mu(V |s|) with the
+// element's exported micro-slip s and mu from CONTACT's formula
+// (law_residual.hpp): within 1e-12 of p_z mu_s,
+// where the march's Halley step stops (fastsim/march_law.hpp), over the
+// creepage range from the first slip to full sliding, with lateral creepage
+// and spin, Polach's law and every form with two terms (mu_kin 0.14,
+// mu_e1 0.19 at 1.25 m/s, mu_e2 0.05 at 0.3 m/s), on the tractcurv grid and
+// Kalker's 40 x 40 strips.
+void every_element_meets_its_law(void**)
+{
+    double worst = 0.0;
+    long checked = 0;
+    for (const cw::GridSpec& g : {tractcurv_grid(), cwtest::kalker_grid(40, 40)}) {
+        cw::Solver s(g);
+        for (int form = 0; form < 4; ++form)
+            for (double xi : {5e-4, 1e-3, 2e-3, 4e-3, 1e-2, 2e-2, 5e-2, 0.1, 0.3})
+                for (double lateral : {0.0, 1.0}) {
+                    cw::ContactInput in =
+                        eurosprinter(xi, 0.3 * lateral * xi, 0.2 * lateral * xi / 6.304e-3);
+                    in.V = 10.0;
+                    if (form == 0) { // Polach's mu0 = 0.36, A = 0.38, B = 0.7 s/m
+                        in.friction_law = cw::FrictionLaw::exponential;
+                        in.mu = 0.36 * 0.38;
+                        in.mu_e1 = 0.36 * 0.62;
+                        in.s_h1 = std::log(2.0) / 0.7;
+                    } else {
+                        in.friction_law = form == 1   ? cw::FrictionLaw::linear
+                                          : form == 2 ? cw::FrictionLaw::rational
+                                                      : cw::FrictionLaw::exponential;
+                        in.mu = 0.14;
+                        in.mu_e1 = 0.19;
+                        in.s_h1 = 1.25;
+                        in.mu_e2 = 0.05;
+                        in.s_h2 = 0.3;
+                    }
+                    s.solve(in, cw::SolveMode::full);
+                    worst = std::max(worst, cwtest::worst_law_residual(s, in, checked));
+                }
+    }
+    print_message("%ld slipping elements: worst |p - p_z mu(s)| / (p_z mu_s) %.3g\n", checked,
+                  worst);
+    assert_true(checked > 100000);
+    assert_true(worst <= 1e-12);
 }
 
 // Full mode under a law (the law at every element, friction memory): the
@@ -302,6 +350,7 @@ int main()
         cmocka_unit_test(slow_rolling_is_coulomb),
         cmocka_unit_test(memory_limits),
         cmocka_unit_test(work_map_under_the_law),
+        cmocka_unit_test(every_element_meets_its_law),
         cmocka_unit_test(falling_law_peaks),
         cmocka_unit_test(inputs_named),
         cmocka_unit_test(jacobian_across_the_peak),

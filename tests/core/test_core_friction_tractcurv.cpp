@@ -5,6 +5,7 @@
 // printed |Fx|/(mu_s N) (tests/data/contact_tractcurv.csv), and the
 // full-sliding closed form A + (1 - A) exp(-B xi V), B in s/m.
 #include "core_test_support.hpp"
+#include "law_residual.hpp"
 #include "tractcurv_contact.hpp"
 #include "test_support.h"
 
@@ -198,6 +199,37 @@ void local_law_meets_series4_in_full_sliding(void**)
     assert_int_equal(rows, 6);
 }
 
+// The law at every element on series 4's contact and law (Polach's, as
+// CONTACT's FKIN, FEXP1, SABSH1), through the solver, at every creepage of
+// the series, partial slip to full sliding: every slipping element meets
+// its law within 1e-12 of p_z mu_s (law_residual.hpp; the root's accuracy,
+// fastsim/march_law.hpp).
+void local_law_holds_at_every_element(void**)
+{
+    const cwtest::CsvTable t = cwtest::read_csv(cwtest::test_data_path("contact_tractcurv.csv"));
+    cw::Solver s(tractcurv_grid());
+    double worst = 0.0;
+    long checked = 0;
+    int rows = 0;
+    for (size_t r = 0; r < t.rows.size(); ++r) {
+        if (t.number(r, "series") != 4) continue;
+        cw::ContactInput in = eurosprinter(t.number(r, "CKSI"));
+        const cw::SlipSpeedLaw law = series4_law();
+        in.friction_law = cw::FrictionLaw::exponential;
+        in.mu = law.mu_kin;
+        in.mu_e1 = law.mu_e1;
+        in.s_h1 = law.s_h1;
+        in.V = kV;
+        s.solve(in, cw::SolveMode::full);
+        worst = std::max(worst, cwtest::worst_law_residual(s, in, checked));
+        ++rows;
+    }
+    print_message("series 4, %d creepages, %ld slipping elements: worst %.3g\n", rows, checked,
+                  worst);
+    assert_true(rows >= 10 && checked > 5000);
+    assert_true(worst <= 1e-12);
+}
+
 // The equivalent ellipse of CONTACT's discrete contact on this grid: 1376
 // elements spanning 44 x 40 of them (CONTACT's picture of series 3 and 4).
 void equivalent_ellipse_of_the_grid(void**)
@@ -264,6 +296,7 @@ int main()
         cmocka_unit_test(series4_falling_friction_fastsim),
         cmocka_unit_test(global_slip_jacobian_across_the_peak),
         cmocka_unit_test(local_law_meets_series4_in_full_sliding),
+        cmocka_unit_test(local_law_holds_at_every_element),
         cmocka_unit_test(equivalent_ellipse_of_the_grid),
         cmocka_unit_test(no_reduction_is_fastsim),
         cmocka_unit_test(setup_inputs_named),

@@ -139,41 +139,58 @@ void vector_exp_within_its_bound(void**)
 // against CONTACT's formula to 1e-14 and mu_s dm/ds against friction_value's
 // slope to 1e-14 (relative, 1e-15 of mu_e / s_h absolute), over 0 .. 20
 // m/s, with both terms, the first alone and the second alone (an absent
-// term's half speed is not read: 1 m/s here).
-void law_lanes_match_contact_formulas(void**)
+// term's half speed is not read: 1 m/s here); the curvature mu_s d2m/ds2
+// (the march's Halley step) against central differences of that slope
+// (step 1e-4 m/s, from s = 0.05 m/s) to 1e-6 of mu_e / s_h^2 (0.19/0.3^2),
+// away from the linear law's kinks;
+// the value and slope with it bitwise those without.
+template <cw::SlipSpeedLawKind Kind>
+void check_law_lanes(const cw::SlipSpeedLaw& law, const double* e)
 {
     using V = cw::simd::Vec<2>;
+    const double mu_s = cw::static_friction(law);
+    const cw::SlipSpeedLawLanes<Kind, 2> lanes(law);
+    const double curvature_scale = 1e-6 * 0.19 / (0.3 * 0.3);
+    for (int i = 0; i <= 200; ++i) {
+        const V s = {0.1 * i, 0.1 * i + 0.05};
+        V m, dm, m2, dm2, d2m;
+        lanes.value(s, m, dm);
+        lanes.value(s, m2, dm2, d2m);
+        for (int l = 0; l < 2; ++l) {
+            assert_true(m2[l] == m[l] && dm2[l] == dm[l]);
+            const double ref = contact_mu_steady(int(Kind), 0.14, e[0], 1e3 * e[1], e[2],
+                                                 1e3 * e[3], 1e3 * s[l]);
+            assert_close(mu_s * m[l], ref, 1e-14, 0.0);
+            // Not at the linear law's kinks, where either side's slope is right.
+            const bool kink = Kind == cw::SlipSpeedLawKind::linear &&
+                              (std::fabs(s[l] - 2 * e[1]) < 1e-3 || std::fabs(s[l] - 2 * e[3]) < 1e-3);
+            if (kink) continue;
+            assert_close(mu_s * dm[l], cw::friction_value(law, s[l]).dmu_ds, 1e-14,
+                         1e-15 * 0.19 / 0.3);
+            const double h = 1e-4;
+            if (s[l] < h) continue; // central differences need s >= h
+            const double fd =
+                (cw::friction_value(law, s[l] + h).dmu_ds - cw::friction_value(law, s[l] - h).dmu_ds) /
+                (2 * h);
+            assert_close(mu_s * d2m[l], fd, 0.0, curvature_scale);
+        }
+    }
+}
+
+void law_lanes_match_contact_formulas(void**)
+{
     const double sets[3][4] = {{0.19, 1.25, 0.05, 0.3}, {0.19, 1.25, 0.0, 1.0}, {0.0, 1.0, 0.05, 0.3}};
     for (const auto kind : kFalling)
         for (const auto& e : sets) {
             const cw::SlipSpeedLaw law = law_of(kind, 0.14, e[0], e[1], e[2], e[3]);
-            const double mu_s = cw::static_friction(law);
-            V m, dm;
-            for (int i = 0; i <= 200; ++i) {
-                const V s = {0.1 * i, 0.1 * i + 0.05};
-                switch (kind) {
-                case cw::SlipSpeedLawKind::linear:
-                    cw::SlipSpeedLawLanes<cw::SlipSpeedLawKind::linear, 2>(law).value(s, m, dm);
-                    break;
-                case cw::SlipSpeedLawKind::rational:
-                    cw::SlipSpeedLawLanes<cw::SlipSpeedLawKind::rational, 2>(law).value(s, m, dm);
-                    break;
-                default:
-                    cw::SlipSpeedLawLanes<cw::SlipSpeedLawKind::exponential, 2>(law).value(s, m, dm);
-                    break;
-                }
-                for (int l = 0; l < 2; ++l) {
-                    const double ref = contact_mu_steady(int(kind), 0.14, e[0], 1e3 * e[1], e[2],
-                                                         1e3 * e[3], 1e3 * s[l]);
-                    assert_close(mu_s * m[l], ref, 1e-14, 0.0);
-                    // Not at the linear law's kinks, where either side's slope is right.
-                    const bool kink = kind == cw::SlipSpeedLawKind::linear &&
-                                      (std::fabs(s[l] - 2 * e[1]) < 1e-9 ||
-                                       std::fabs(s[l] - 2 * e[3]) < 1e-9);
-                    if (!kink)
-                        assert_close(mu_s * dm[l], cw::friction_value(law, s[l]).dmu_ds, 1e-14,
-                                 1e-15 * 0.19 / 0.3);
-                }
+            switch (kind) {
+            case cw::SlipSpeedLawKind::linear:
+                check_law_lanes<cw::SlipSpeedLawKind::linear>(law, e);
+                break;
+            case cw::SlipSpeedLawKind::rational:
+                check_law_lanes<cw::SlipSpeedLawKind::rational>(law, e);
+                break;
+            default: check_law_lanes<cw::SlipSpeedLawKind::exponential>(law, e); break;
             }
         }
 }

@@ -208,6 +208,18 @@ static void elliptic_cases(void)
                 p.a = 3e-3, p.b = 11e-3, p.normal_force = 0.0;
                 snprintf(name, sizeof name, "%s/fastsim/no_load", grids[gi].name);
                 solve_case(name, &g, &p);
+                /* a law of the slip speed at every element, each form, two terms */
+                static const int laws[] = {CW_FRICTION_LINEAR, CW_FRICTION_RATIONAL,
+                                           CW_FRICTION_EXPONENTIAL};
+                for (size_t li = 0; li < sizeof laws / sizeof laws[0]; ++li)
+                    for (size_t ci = 0; ci < N_CREEPAGES; ++ci) {
+                        p = base_params(&creepages[ci]);
+                        p.friction_law = laws[li], p.V = 10.0, p.mu = 0.14;
+                        p.mu_e1 = 0.12, p.s_h1 = 0.02, p.mu_e2 = 0.05, p.s_h2 = 0.005;
+                        snprintf(name, sizeof name, "%s/fastsim/law%d/%s", grids[gi].name, laws[li],
+                                 creepages[ci].name);
+                        solve_case(name, &g, &p);
+                    }
             }
         }
     }
