@@ -82,7 +82,8 @@ struct HuntingCost {
     double cpu = 0.0, evaluations = 0.0, fz_error = 0.0;
 };
 
-HuntingCost hunting_cycle(const cwtest::Benchmark& b, const wr::PatchContactSettings& set, int calls)
+HuntingCost hunting_cycle(const cwtest::Benchmark& b, const wr::PatchContactSettings& set, int calls,
+                          bool print = false)
 {
     constexpr double kPi = 3.14159265358979323846;
     const double amplitude = 5e-3, k_wave = 2.0 * kPi / 15.0, speed = 30.0, radius = 0.46, load = 60e3;
@@ -111,6 +112,9 @@ HuntingCost hunting_cycle(const cwtest::Benchmark& b, const wr::PatchContactSett
             cpu += seconds(CLOCK_THREAD_CPUTIME_ID) - c0;
             evaluations += sol.evaluations;
             worst = std::max(worst, std::abs(sol.total.fz - load) / load);
+            if (print && cycle == 1)
+                std::printf("%d %.17g %.17g %.17g %.17g %d\n", m, sol.z, sol.total.fx, sol.total.fy,
+                            sol.total.fz, sol.evaluations);
             z = sol.z;
         }
         cost = {cpu / calls, evaluations / calls, worst};
@@ -124,14 +128,17 @@ int main(int argc, char** argv)
 {
     const cwtest::Benchmark b;
     if (argc > 2 && std::string(argv[1]) == "--hunting") {
-        // one model's hunting cycle alone (for callgrind): --hunting CALLS [exact]
+        // one model's hunting cycle alone (for callgrind): --hunting CALLS
+        // [exact|fast [print]]; print: each call's height, forces and
+        // evaluations in the second cycle
         wr::PatchContactSettings set;
         set.mode = creepwork::SolveMode::forces_only;
         if (!(argc > 3 && std::string(argv[3]) == "exact")) {
             set.model = creepwork::ModelKind::fastsim;
             set.normal_method = creepwork::NormalMethod::semi_hertz;
         }
-        const HuntingCost h = hunting_cycle(b, set, std::max(1, std::atoi(argv[2])));
+        const bool print = argc > 4 && std::string(argv[4]) == "print";
+        const HuntingCost h = hunting_cycle(b, set, std::max(1, std::atoi(argv[2])), print);
         std::printf("%.1f us per call, %.2f evaluations per call, largest Fz error %.1e\n", 1e6 * h.cpu,
                     h.evaluations, h.fz_error);
         return 0;

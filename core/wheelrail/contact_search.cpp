@@ -144,10 +144,22 @@ void ContactSearch::sample_wheel(const Frame& f)
     }
 }
 
-double ContactSearch::find(const Frame& f, std::vector<Region>& regions)
+double ContactSearch::find(const Frame& f, std::vector<Region>& regions, bool shift_height)
 {
     regions.clear();
-    sample_wheel(f);
+    if (shift_height && has_sampled_ && f.r == sampled_.r && f.o(0) == sampled_.o(0) && f.o(1) == sampled_.o(1)) {
+        const double dz = f.o(2) - sampled_.o(2);
+        for (int i = 0; i < n_; ++i)
+            if (zw_sampled_[i] > -kValidGap) {
+                zw_[i] = zw_sampled_[i] + dz;
+                gap_[i] = zr_[i] - zw_[i];
+            }
+    } else {
+        sample_wheel(f);
+        sampled_ = f;
+        has_sampled_ = true;
+        zw_sampled_ = zw_;
+    }
     const int i_min = static_cast<int>(std::min_element(gap_.begin(), gap_.end()) - gap_.begin());
     const double gap_min = gap_[i_min];
     // local minima, a plateau (equal gaps within kPlateau) counted once

@@ -57,8 +57,13 @@ public:
     // Finds the regions of the wheel placed by `wheel_in_track` (the wheel
     // profile's frame in track coordinates), deepest first, at most two near
     // misses. Returns the least gap over the whole sampling (the vertical
-    // distance to first contact when > 0).
-    double find(const Frame& wheel_in_track, std::vector<Region>& regions);
+    // distance to first contact when > 0). shift_height: the wheel may have
+    // moved along track z only since the last sampling (the same rotation,
+    // the same x and y of its origin): its samples are then those of that
+    // sampling shifted by the height's change (a vertical translation moves
+    // every sample of the locus by it), not sampled anew; any other move is
+    // sampled anew.
+    double find(const Frame& wheel_in_track, std::vector<Region>& regions, bool shift_height = false);
 
     // The sampled gap of the last call: lateral positions, rail and wheel
     // heights, locus x (invalid samples carry a wheel height of -1e3 m).
@@ -77,6 +82,9 @@ private:
     int n_ = 0;
     std::vector<double> zr_, alpha_;        // rail: height and inclination per sample
     std::vector<double> zw_, xw_, gap_;     // wheel locus per sample, gap
+    Frame sampled_;                         // the wheel's frame at the last sampling
+    bool has_sampled_ = false;
+    std::vector<double> zw_sampled_;        // zw_ of the last sampling
     std::vector<char> mask_;
     std::vector<int> minima_;
     // the wheel's knots: position and derivatives in s (fixed), and the

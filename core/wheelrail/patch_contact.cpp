@@ -167,7 +167,9 @@ WheelRailContact::WheelRailContact(WheelRailGeometry geometry, const PatchContac
 {
 }
 
-void WheelRailContact::collect(int evaluations)
+// The solution at the geometry's state: its patches solved in the settings'
+// mode, or (solved) as the balance's last evaluation solved them.
+void WheelRailContact::collect(int evaluations, bool solved)
 {
     const WheelRailState& st = geometry_.state();
     solution_.z = st.position.z;
@@ -175,7 +177,7 @@ void WheelRailContact::collect(int evaluations)
     solution_.patches.clear();
     solution_.total = {};
     for (std::size_t k = 0; k < st.patches.size(); ++k) {
-        const PatchSolution& s = contact_.solve(st.patches[k], k);
+        const PatchSolution& s = solved ? evaluated_.at(k) : contact_.solve(st.patches[k], k);
         solution_.patches.push_back(s);
         solution_.total.fx += s.track.fx;
         solution_.total.fy += s.track.fy;
@@ -188,7 +190,7 @@ const WheelRailSolution& WheelRailContact::solve_position(const WheelsetPosition
 {
     geometry_.evaluate(position, velocity);
     balanced_ = 0; // extrapolate only across consecutive force balances
-    collect(1);
+    collect(1, false);
     return solution_;
 }
 
@@ -203,8 +205,12 @@ const WheelRailSolution& WheelRailContact::solve_force(double fz, const Wheelset
     const bool exact = contact_.settings().normal_method == NormalMethod::exact;
     int evaluation = -1;
     const PatchSolver solver = [this, exact, &evaluation](std::size_t k, const ContactPatch& p) {
-        if (k == 0) ++evaluation;
+        if (k == 0) {
+            ++evaluation;
+            evaluated_.clear();
+        }
         const PatchSolution& s = contact_.solve(p, k, true);
+        evaluated_.push_back(s);
         const bool slope = !exact || evaluation == 0;
         return PatchForces{s.fn, s.fx, s.fs, slope ? contact_.normal_force_by_approach() : 0.0};
     };
@@ -228,10 +234,14 @@ const WheelRailSolution& WheelRailContact::solve_force(double fz, const Wheelset
     balance_z_[0] = balance_z_[1];
     balance_z_[1] = v.z;
     ++balanced_;
-    // the geometry is left at the solution; its patches solve again from
-    // their own last solution (same gap and approach: the normal solution
-    // is kept, the tangential one starts warm)
-    collect(v.evaluations);
+    // The geometry is left at the solution. The fast model's forces there
+    // are those its last evaluation solved (a solve is a function of its
+    // inputs: solving again gives the same bits). Otherwise the patches
+    // solve again in the settings' mode from their own last solution (same
+    // gap and approach: the normal solution is kept, the tangential one
+    // starts warm).
+    const PatchContactSettings& set = contact_.settings();
+    collect(v.evaluations, set.model == ModelKind::fastsim && set.mode == SolveMode::forces_only);
     return solution_;
 }
 

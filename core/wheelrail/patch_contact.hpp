@@ -126,13 +126,14 @@ public:
     PatchContact& patch_contact() { return contact_; }
 
 private:
-    void collect(int evaluations);
+    void collect(int evaluations, bool solved);
 
     WheelRailGeometry geometry_;
     PatchContact contact_;
     WheelRailSolution solution_;
     int balanced_ = 0;              // force balances solved since the last solve_position
     double balance_z_[2] = {0, 0};  // the heights of the last two [m]: [1] the last
+    std::vector<PatchSolution> evaluated_; // the patches of the balance's current evaluation
 };
 
 } // namespace creepwork::wheelrail

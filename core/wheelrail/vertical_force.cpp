@@ -30,9 +30,9 @@ struct Evaluation {
 };
 
 Evaluation vertical_force(WheelRailGeometry& g, const WheelsetPosition& pos, const WheelsetVelocity& vel,
-                          const PatchSolver& solver)
+                          const PatchSolver& solver, bool height_only)
 {
-    const WheelRailState& st = g.evaluate(pos, vel);
+    const WheelRailState& st = g.evaluate(pos, vel, height_only);
     Evaluation e;
     e.gap_min = st.gap_min;
     for (std::size_t k = 0; k < st.patches.size(); ++k) {
@@ -88,7 +88,9 @@ VerticalForceSolution solve_vertical_position(WheelRailGeometry& g, double fz, c
     auto at = [&](double z) {
         pos.z = z;
         ++sol.evaluations;
-        const Evaluation e = vertical_force(g, pos, vel, solver);
+        // after the first height only the height changes: the contact
+        // search shifts the first height's samples of the wheel
+        const Evaluation e = vertical_force(g, pos, vel, solver, sol.evaluations > 1);
         gap = e.gap_min;
         sol.z = z;
         sol.fz = e.fz;

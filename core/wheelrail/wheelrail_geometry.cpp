@@ -89,14 +89,15 @@ WheelRailGeometry::WheelRailGeometry(const Profile& rail, const Profile& wheel, 
     search_ = ContactSearch(rail_track_, wheel_, opt_, wheelset_.nominal_radius);
 }
 
-const WheelRailState& WheelRailGeometry::evaluate(const WheelsetPosition& pos, const WheelsetVelocity& vel)
+const WheelRailState& WheelRailGeometry::evaluate(const WheelsetPosition& pos, const WheelsetVelocity& vel,
+                                                  bool height_only)
 {
     check_state(pos, vel);
     const double sgn = side_ == Side::right ? 1.0 : -1.0;
     const Frame ws = wheelset_in_track(pos, wheelset_, side_);
     const Frame wheel = ws.compose(wheel_ws_);
     state_.position = pos;
-    state_.gap_min = search_.find(wheel, regions_);
+    state_.gap_min = search_.find(wheel, regions_, height_only);
     combine_regions(regions_, opt_);
     state_.patches.resize(regions_.size());
     for (size_t k = 0; k < regions_.size(); ++k) {

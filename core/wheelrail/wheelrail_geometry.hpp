@@ -70,8 +70,12 @@ public:
     WheelRailGeometry(const Profile& rail, const Profile& wheel, const Track& track,
                       const Wheelset& wheelset, Side side, const SearchOptions& options = {});
 
-    // The patches at a prescribed wheelset position.
-    const WheelRailState& evaluate(const WheelsetPosition& position, const WheelsetVelocity& velocity);
+    // The patches at a prescribed wheelset position. height_only: the
+    // position may differ from the last evaluated one in z alone; the
+    // contact search then shifts that position's samples of the wheel
+    // instead of sampling it anew (ContactSearch::find).
+    const WheelRailState& evaluate(const WheelsetPosition& position, const WheelsetVelocity& velocity,
+                                   bool height_only = false);
     const WheelRailState& state() const { return state_; }
     // The rail's or the wheel's profile knots in track coordinates at the
     // last evaluated position (y un-mirrored on the left side, z down): the

@@ -291,8 +291,11 @@ int print_markdown_fast()
 // its 1e-6 tolerance every call, and from the third call on, the start
 // extrapolated from the last two heights (z changes smoothly with y: the
 // start's force is then within a fraction of a percent) and Newton's
-// steps with the patches' derivative: at most three evaluations. A host's
-// own guess of the height is its start: the same bits as a fresh handle's.
+// steps with the patches' derivative: at most three evaluations. The
+// forces returned are those of the last evaluation's patches, which are
+// the solves at the height found: each patch solved again there gives
+// the same bits. A host's own guess of the height is its start: the same
+// bits as a fresh handle's.
 void test_drifting_host(void**)
 {
     const cwtest::Benchmark b;
@@ -313,6 +316,12 @@ void test_drifting_host(void**)
         assert_close(s.total.fz, load, 1e-6, 0);
         if (k >= 2) worst = std::max(worst, s.evaluations);
         pos.z = s.z;
+        const wr::WheelRailState& st = c.geometry().state();
+        assert_int_equal(s.patches.size(), st.patches.size());
+        for (std::size_t n = 0; n < st.patches.size(); ++n) {
+            const wr::PatchSolution& again = c.patch_contact().solve(st.patches[n], n, true);
+            assert_true(again.fn == s.patches[n].fn && again.fx == s.patches[n].fx && again.fs == s.patches[n].fs);
+        }
     }
     std::printf("drifting host: at most %d evaluations per call from the third on\n", worst);
     assert_true(worst <= 3);

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <sstream>
 #include <string>
+#include <utility>
 
 #include "contact/error.hpp"
 #include "mbench_support.hpp"
@@ -284,6 +285,59 @@ void test_left_mirrors_right(void**)
     assert_mirrored(only_patch(left, m.mirrored()), only_patch(right, m));
 }
 
+// A change of height alone moves every sample of the contact locus by it,
+// so the search may shift the last sampling instead of sampling anew
+// (height_only): the patches then match a fresh geometry's at the new
+// height -- grid, reference point, angle, undeformed distance and
+// creepages -- to rounding (1e-15 m on h: the samples' heights are a sum
+// in another order), on either wheel off centre and on the right one in
+// flange contact (y = 7 mm); a lateral move with height_only samples anew:
+// the same bits as a fresh geometry.
+void test_height_shift_as_sampled_anew(void**)
+{
+    cwtest::Benchmark b;
+    const Motion base = off_centre();
+    Motion flange = base;
+    flange.p.y = 7e-3;
+    const std::pair<wr::Side, Motion> cases[] = {
+        {wr::Side::right, base}, {wr::Side::left, base.mirrored()}, {wr::Side::right, flange}};
+    for (const auto& [side, m] : cases) {
+        wr::WheelRailGeometry kept = b.geometry(side);
+        kept.evaluate(m.p, m.v);
+        for (const double dz : {30e-6, -20e-6, 65e-6}) {
+            Motion moved = m;
+            moved.p.z += dz;
+            wr::WheelRailGeometry fresh = b.geometry(side);
+            const wr::WheelRailState& f = fresh.evaluate(moved.p, moved.v);
+            const wr::WheelRailState& k = kept.evaluate(moved.p, moved.v, true);
+            assert_true(!f.patches.empty());
+            assert_int_equal(k.patches.size(), f.patches.size());
+            assert_close(k.gap_min, f.gap_min, 0, 1e-15);
+            for (std::size_t n = 0; n < f.patches.size(); ++n) {
+                const wr::ContactPatch &a = k.patches[n], &e = f.patches[n];
+                assert_int_equal(a.nx, e.nx);
+                assert_int_equal(a.ny, e.ny);
+                assert_close(a.x0, e.x0, 0, 1e-12);
+                assert_close(a.s0, e.s0, 0, 1e-12);
+                assert_close(a.y_tr, e.y_tr, 0, 1e-12);
+                assert_close(a.z_tr, e.z_tr, 0, 1e-12);
+                assert_close(a.delta, e.delta, 0, 1e-12);
+                assert_close(a.cksi, e.cksi, 0, 1e-12);
+                assert_close(a.ceta, e.ceta, 0, 1e-12);
+                assert_close(a.cphi, e.cphi, 0, 1e-12);
+                for (std::size_t i = 0; i < e.h.size(); ++i) assert_close(a.h[i], e.h[i], 0, 1e-15);
+            }
+        }
+        Motion aside = m;
+        aside.p.y += 0.3e-3;
+        wr::WheelRailGeometry fresh = b.geometry(side);
+        const wr::WheelRailState& f = fresh.evaluate(aside.p, aside.v);
+        const wr::WheelRailState& k = kept.evaluate(aside.p, aside.v, true);
+        assert_int_equal(k.patches.size(), f.patches.size());
+        for (std::size_t n = 0; n < f.patches.size(); ++n) assert_true(k.patches[n].h == f.patches[n].h);
+    }
+}
+
 // A rail deviation rail_dy is a lateral shift in track coordinates on either
 // side, with the rail placed by its gauge point as with rail_y0 (CONTACT's
 // wr_set_rail_marker: sgn dy in the side's mirrored frame). So the left rail
@@ -386,6 +440,7 @@ int main(int argc, char** argv)
         cmocka_unit_test(test_profile_table),
         cmocka_unit_test(test_left_mirrors_right),
         cmocka_unit_test(test_rail_offset_mirrors_with_the_gauge),
+        cmocka_unit_test(test_height_shift_as_sampled_anew),
         cmocka_unit_test(test_input_errors),
     };
     return cw_run_tests(tests, argc > 1 ? argv[1] : nullptr);
