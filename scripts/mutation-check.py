@@ -687,7 +687,7 @@ WHEELRAIL_MUTANTS += [
          file="core/wheelrail/patch_contact.cpp",
          old="            evaluated_.clear();",
          new="            evaluated_.reserve(8);",
-         tests=BALANCE, require=["test_wheelrail_forces"]),
+         tests=BALANCE, require=["test_wheelrail_forces", "test_wheelrail_capi"]),
     dict(id="wheelrail-law-speed", what="a patch's law takes twice its rolling speed",
          file="core/wheelrail/patch_contact.cpp",
          old="        in.V = p.veloc;",
