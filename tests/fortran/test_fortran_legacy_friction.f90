@@ -46,17 +46,11 @@ program test_fortran_legacy_friction
 
 contains
 
-   subroutine check_module(model)
+   ! The contact CWFLAW and CWFMEM are called with, as module creepwork's
+   ! cw_params: tractcurv's exponential law at V, creepages (2e-3, -1e-3, 1.5).
+   function law_params(model) result(p)
       integer(c_int), intent(in) :: model
-      type(cw_solver_type) :: solver
       type(cw_params) :: p
-      type(cw_result) :: r
-      real(c_double) :: fx, fy, fmz, fmur(3)
-      integer(c_int) :: ierr
-      call CWFLAW(model, a, b, fn, fkin, 82e9_c_double, 0.28_c_double, 2e-3_c_double, &
-                  -1e-3_c_double, 1.5_c_double, nx, ny, box, int(CW_FRICTION_EXPONENTIAL, c_int), &
-                  fe1, sh1, 0.0_c_double, 0.0_c_double, v, fx, fy, fmz, fmur, ierr)
-      call check_int(int(ierr), CW_OK, 'CWFLAW')
       call cw_params_init(p)
       p%a = a
       p%b = b
@@ -72,6 +66,20 @@ contains
       p%mu_e1 = fe1
       p%s_h1 = sh1
       p%V = v
+   end function law_params
+
+   subroutine check_module(model)
+      integer(c_int), intent(in) :: model
+      type(cw_solver_type) :: solver
+      type(cw_params) :: p
+      type(cw_result) :: r
+      real(c_double) :: fx, fy, fmz, fmur(3)
+      integer(c_int) :: ierr
+      call CWFLAW(model, a, b, fn, fkin, 82e9_c_double, 0.28_c_double, 2e-3_c_double, &
+                  -1e-3_c_double, 1.5_c_double, nx, ny, box, int(CW_FRICTION_EXPONENTIAL, c_int), &
+                  fe1, sh1, 0.0_c_double, 0.0_c_double, v, fx, fy, fmz, fmur, ierr)
+      call check_int(int(ierr), CW_OK, 'CWFLAW')
+      p = law_params(model)
       call solver%create(nx=int(nx), ny=int(ny), kind=int(CW_GRID_UNIFORM), box_scale=box)
       call solver%solve(p, CW_SOLVE_FORCES, r)
       call check_same(fx, r%Fx, 'CWFLAW FX = module')
@@ -131,21 +139,7 @@ contains
                   fe1, sh1, 0.0_c_double, 0.0_c_double, v, 3e-4_c_double, 1e-3_c_double, h, g3, &
                   0.0_c_double, 0.0_c_double, fx, fy, fmz, fmur, ierr)
       call check_int(int(ierr), CW_OK, 'CWFMEM')
-      call cw_params_init(p)
-      p%a = a
-      p%b = b
-      p%normal_force = fn
-      p%mu = fkin
-      p%G = 82e9_c_double
-      p%nu = 0.28_c_double
-      p%xi_x = 2e-3_c_double
-      p%xi_y = -1e-3_c_double
-      p%phi = 1.5_c_double
-      p%model = model
-      p%friction_law = CW_FRICTION_EXPONENTIAL
-      p%mu_e1 = fe1
-      p%s_h1 = sh1
-      p%V = v
+      p = law_params(model)
       call solver%create(nx=int(nx), ny=int(ny), kind=int(CW_GRID_UNIFORM), box_scale=box)
       p%memory_distance = 3e-4_c_double
       p%memory_s0 = 1e-3_c_double
