@@ -186,8 +186,9 @@ run_section() {
     temperature) "$bin/creepwork_bench_temperature" ;;
     calibrated) "$bin/creepwork_calibration" time ;;
     nonhertz)
-      GLIBC_TUNABLES=glibc.malloc.trim_threshold=536870912:glibc.malloc.mmap_threshold=33554432:glibc.malloc.top_pad=67108864 \
-        "$bin/creepwork_bench_nonhertz" $(q --quick) ;;
+      # In $work: CONTACT's library writes contact_addon.out into the working directory.
+      (cd "$work" && GLIBC_TUNABLES=glibc.malloc.trim_threshold=536870912:glibc.malloc.mmap_threshold=33554432:glibc.malloc.top_pad=67108864 \
+        "$bin/creepwork_bench_nonhertz" $(q --quick)) ;;
     wheelrail)
       (cd "$work" && "$bin/creepwork_bench_wheelrail" "$([ $quick -eq 1 ] && echo 10 || echo 200)" \
         "$contact_dir/bin/contact" "$contact_dir/CONTACT/examples") ;;
