@@ -24,9 +24,12 @@ SolveTotals GapFastsimModel::solve_jacobian(const ContactInput& in, SolveMode mo
 
     // The march's input as solve() gives it (rolling frame).
     const double d = direction_;
-    const GapMarchInput m = march_input(in);
+    // With factors the bound's pressure and its derivative both carry them.
+    GapMarchInput m = march_input(in);
+    m.bound_pressure = factored(m.pressure, bound_p_);
+    const double* dbound = factor_ ? factored(dp_dN_.data(), bound_dp_) : dp_dN_.data();
     double dF[3][4];
-    gap_march_tangent(m, dp_dN_.data(), dF);
+    gap_march_tangent(m, dbound, dF);
 
     // Caller's frame: Fx = d Fx', Mz = d Mz' (x = d x'), xi = d xi_x, phi = d phi.
     const double frame[3] = {d, 1.0, d}, dc[4] = {d, 1.0, d, 1.0};

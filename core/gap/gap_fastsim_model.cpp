@@ -36,7 +36,7 @@ GapFastsimModel::GapFastsimModel(const GridSpec& grid)
       normal_(grid, fastsim_normal_options()), labels_(grid.nx, grid.ny)
 {
     const size_t n = static_cast<size_t>(nx_) * ny_;
-    for (auto* v : {&paper_, &consistent_, &dp_dN_}) v->assign(n, 0.0);
+    for (auto* v : {&paper_, &consistent_, &dp_dN_, &bound_p_, &bound_dp_}) v->assign(n, 0.0);
     for (auto* v : {&p_, &slip_, &rigid_}) v->assign(n, {0.0, 0.0});
     state_.assign(n, 0);
     patch_of_.assign(n, -1);
@@ -154,7 +154,8 @@ SolveTotals GapFastsimModel::solve(const ContactInput& in, SolveMode mode)
     set_patches(in);
     check_rigid_slip(in);
 
-    const GapMarchInput m = march_input(in);
+    GapMarchInput m = march_input(in);
+    m.bound_pressure = factored(m.pressure, bound_p_);
     march_totals_.assign(labels_.count(), GapMarchTotals{});
     GapMarchOutput out;
     out.p = p_.data();
@@ -270,6 +271,18 @@ void GapFastsimModel::add_work(SolveTotals& t)
     set_work_totals(exact_work(w, paper_.data(), consistent_.data(), profile_.data(),
                                row_d_.data(), row_pool_.data()),
                     t);
+}
+
+const double* GapFastsimModel::factored(const double* values, std::vector<double>& out) const
+{
+    if (!factor_) return nullptr;
+    const ElementFriction f{factor_, nx_, direction_ < 0};
+    for (int j = 0; j < ny_; ++j)
+        for (int i = 0; i < nx_; ++i) {
+            const size_t k = static_cast<size_t>(nx_) * j + i;
+            out[k] = values[k] * f.at(i, j);
+        }
+    return out.data();
 }
 
 GapMarchInput GapFastsimModel::march_input(const ContactInput& in) const

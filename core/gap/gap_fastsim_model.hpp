@@ -35,7 +35,9 @@
 // Under a law of the slip speed (set_law) each slipping element's bound is
 // mu(s) pz at its own slip speed (gap/gap_march.hpp), in the march, the work
 // maps and the Jacobian; the global slip speed and friction memory are the
-// ellipse's FASTSIM's (refused by name here).
+// ellipse's FASTSIM's (refused by name here). Element-wise friction factors
+// (set_friction_factors: mu(T)) scale each element's bound, under Coulomb's
+// law and under a law; the fields report the pressure itself.
 // The calibrated model is not available on a gap grid.
 //
 // Units and frames: the march runs in the rolling frame (leading edge at
@@ -79,6 +81,10 @@ public:
     // the law's parameter or V.
     void set_law(const SlipSpeedLaw& law, double V) override;
     void clear_law() override { has_law_ = false; }
+    // Element-wise factors on mu (contact/friction_law.hpp, the caller's
+    // layout, kept by the caller; null: none): each element's bound is its
+    // factor times mu pz, in the march and its Jacobian (the factors held).
+    void set_friction_factors(const double* factor) override { factor_ = factor; }
     // Under a law: the range of mu over the last solve's slipping elements
     // (the static coefficient when none slips); false under Coulomb's law.
     bool friction_range(double& mu_min, double& mu_max) const override;
@@ -117,6 +123,9 @@ private:
     // The march's input for the last solve's pressure and patches (rolling frame).
     GapMarchInput march_input(const ContactInput& in) const;
     int caller_index(int i) const { return direction_ > 0 ? i : nx_ - 1 - i; }
+    // values times the factors (rolling frame) into out; returns out's
+    // data, or null without factors.
+    const double* factored(const double* values, std::vector<double>& out) const;
 
     GridSpec grid_;
     int nx_, ny_;
@@ -141,6 +150,8 @@ private:
     std::vector<double> profile_, row_d_, row_pool_; // per row
     std::vector<int> row_first_, row_last_; // per row: the contact's extent, rolling frame
     std::vector<double> dp_dN_; // solve_jacobian's dpz/dN [1/m^2], rolling frame
+    const double* factor_ = nullptr; // element-wise friction factors, the caller's
+    std::vector<double> bound_p_, bound_dp_; // the factored pressure and dpz/dN, rolling frame
     // A law of the slip speed (has_law_), the rolling speed, the last range.
     SlipSpeedLaw law_;
     double V_ = 0;

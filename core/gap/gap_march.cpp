@@ -104,7 +104,8 @@ inline void step(const MarchFrame& frame, RowMarch& r, int i)
     double qx = r.px - dx * ox, qy = r.py - dx * oy;
     bool slips;
     if constexpr (Law) {
-        const GapLawElement e = gap_law_element(in, pz, qx, qy, r.L1, r.L2, r.mu_prev);
+        const GapLawElement e = gap_law_element(in, bound_pressure(in, k, pz), qx, qy, r.L1, r.L2,
+                                                r.mu_prev);
         slips = e.slips;
         if (slips) {
             qx *= e.f;
@@ -115,7 +116,7 @@ inline void step(const MarchFrame& frame, RowMarch& r, int i)
             r.range.iterations += e.r.iterations;
         }
     } else {
-        slips = project_traction(qx, qy, traction_bound(in.law, pz)).slips;
+        slips = project_traction(qx, qy, traction_bound(in.law, bound_pressure(in, k, pz))).slips;
     }
     out.p[k] = Complex(qx, qy);
     if (Full) {

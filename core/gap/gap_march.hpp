@@ -54,6 +54,9 @@ struct GapMarchInput {
     int nx = 0, ny = 0;
     double x0 = 0, y0 = 0, dx = 0, dy = 0; // element (i, j) at (x0 + i dx, y0 + j dy), rolling frame
     const double* pressure = nullptr;      // [i + nx j] [Pa]; contact where > 0
+    // Optional [i + nx j] [Pa]: the pressure that bounds the tractions, each
+    // element's pressure times its friction factor (mu(T)); null: pressure.
+    const double* bound_pressure = nullptr;
     const int* patch = nullptr;            // [i + nx j]: index into patches where pressure > 0
     const GapMarchPatch* patches = nullptr;
     CoulombLaw law;                        // the friction law (its mu)
@@ -84,6 +87,12 @@ struct GapLawRange {
     double mu_min = HUGE_VAL, mu_max = -HUGE_VAL;
     long iterations = 0;
 };
+
+// Element k's pressure pz as its bound sees it (times its friction factor).
+inline double bound_pressure(const GapMarchInput& in, std::size_t k, double pz)
+{
+    return in.bound_pressure ? in.bound_pressure[k] : pz;
+}
 
 // One element under in.speed_law (the march's and its tangent's): its
 // predictor q of magnitude P, whether it slips, and in slip the factor f

@@ -82,9 +82,10 @@ void gap_march_tangent(const GapMarchInput& in, const double* dpressure, double 
             dqx[3] = dpx[3];
             dqy[3] = dpy[3];
             if (in.speed_law) {
-                const GapLawElement e = gap_law_element(in, pz, qx, qy, L1, L2, mu_prev);
+                const double pb = bound_pressure(in, k, pz);
+                const GapLawElement e = gap_law_element(in, pb, qx, qy, L1, L2, mu_prev);
                 if (e.slips) { // as gap_march decides it
-                    law_derivative(*in.speed_law, e, pz, dpressure ? dpressure[k] : 0.0, qx, qy, L1,
+                    law_derivative(*in.speed_law, e, pb, dpressure ? dpressure[k] : 0.0, qx, qy, L1,
                                    L2, dqx, dqy);
                     qx *= e.f;
                     qy *= e.f;
@@ -92,7 +93,8 @@ void gap_march_tangent(const GapMarchInput& in, const double* dpressure, double 
                 }
             } else {
                 const double tx = qx, ty = qy;
-                const ScalarProjection s = project_traction(qx, qy, traction_bound(in.law, pz));
+                const ScalarProjection s =
+                    project_traction(qx, qy, traction_bound(in.law, bound_pressure(in, k, pz)));
                 if (s.slips) { // as gap_march decides it
                     const double ex = tx / s.norm, ey = ty / s.norm;
                     const double dbound = dpressure ? traction_bound(in.law, dpressure[k]) : 0.0;

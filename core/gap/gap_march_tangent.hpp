@@ -23,8 +23,10 @@
 namespace creepwork {
 
 // dF[r][c]: r = Fx, Fy, Mz (rolling frame, Mz about its origin; N, N m),
-// c = xi, eta, phi (rolling frame), N. dpressure: dpz/dN [1/m^2] per element
-// [i + nx j] (rolling frame), or null (N column zero). Allocates nothing.
+// c = xi, eta, phi (rolling frame), N. dpressure: the bound's pressure's
+// derivative by N [1/m^2] per element [i + nx j] (rolling frame: dpz/dN, times
+// the friction factors with in.bound_pressure), or null (N column zero).
+// Allocates nothing.
 void gap_march_tangent(const GapMarchInput& in, const double* dpressure, double dF[3][4]);
 
 } // namespace creepwork

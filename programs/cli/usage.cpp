@@ -204,10 +204,10 @@ body 2 the wheel):
                     linear in the rail's surface temperature [degC],
                     constant beyond the ends (CONTACT's L=6 is two points);
                     solved in a fixed-point loop of solve and temperature
-                    (JSON: temperature_iterations); --model exact (also
-                    on --gap) or fastsim (not on --gap, not with
-                    --friction-speed global); under a --friction-law the
-                    table gives the coefficient at rest
+                    (JSON: temperature_iterations); --model exact or
+                    fastsim (also on --gap; not with --friction-speed
+                    global); under a --friction-law the table gives the
+                    coefficient at rest
   --k-yield K       also the damage indices with the surface shear yield
                     stress K [Pa] (doc/theory/damage.md): the RCF index per
                     element, FI_surf, T_gamma and the WLRM damage per pass

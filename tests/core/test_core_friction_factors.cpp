@@ -7,10 +7,10 @@
 // model's box or not applied fails -- to 1e-12 relative (measured 6e-16:
 // the projection onto the bound, and under the rational law its Newton root
 // to rounding with the exported slip). Every element slides. Models:
-// FASTSIM on the uniform grid (Coulomb's law; the rational law at each
-// element's slip speed), the exact model on the gap grid (Coulomb's law).
-// Without factors the next solve is bitwise a fresh solver's. The gap exact
-// model's Jacobian holds the factors (its N column against central
+// FASTSIM on the uniform and gap grids (Coulomb's law; the rational law at
+// each element's slip speed), the exact model on the gap grid (Coulomb's
+// law). Without factors the next solve is bitwise a fresh solver's. The gap
+// grid's models' Jacobians hold the factors (the N column against central
 // differences).
 #include <algorithm>
 #include <cmath>
@@ -130,11 +130,9 @@ void fastsim_takes_factors(void**)
     check_plain(s, g, in);
 }
 
-void gap_exact_takes_factors(void**)
+// The gap grid: Hertz's gap of the semi-axes on 1.2 times them; h holds it.
+cw::GridSpec hertz_gap_grid(cw::ContactInput& in, std::vector<double>& h)
 {
-    cw::ContactInput in = contact();
-    in.model = cw::ModelKind::exact;
-    // The gap grid: Hertz's gap of the semi-axes on 1.2 times them.
     cw::GridSpec g;
     g.kind = cw::GridKind::gap;
     g.nx = kNx;
@@ -145,7 +143,7 @@ void gap_exact_takes_factors(void**)
     g.y0 = -1.2 * in.b + 0.5 * g.dy;
     const cw::HertzCurvatures hz =
         cw::hertz_from_semi_axes(in.a, in.b, in.normal_force, in.G / (1.0 - in.nu));
-    std::vector<double> h(static_cast<size_t>(kNx) * kNy);
+    h.assign(static_cast<size_t>(kNx) * kNy, 0.0);
     for (int j = 0; j < kNy; ++j)
         for (int i = 0; i < kNx; ++i) {
             const double x = g.x0 + i * g.dx, y = g.y0 + j * g.dy;
@@ -153,17 +151,16 @@ void gap_exact_takes_factors(void**)
         }
     in.gap = h.data();
     in.gap_len = h.size();
-    cw::Solver s(g);
-    for (int d : {1, -1}) {
-        in.rolling_direction = d;
-        check_elements(s, in, 1e-12, d > 0 ? "exact, gap grid" : "exact, gap grid, -x");
-    }
-    in.warm_start = false;
-    check_plain(s, g, in);
-    // The Jacobian holds the factors: its N column in partial slip against
-    // central differences of solves with the same factors (steps 1e-5 N,
-    // no element entering or leaving contact or slip; agreement 1e-6,
-    // measured 5e-8: the differences' truncation and the solves' tolerance).
+    return g;
+}
+
+// The Jacobian holds the factors: its N column in partial slip against
+// central differences of solves with the same factors (steps 1e-5 N, no
+// element entering or leaving contact or slip; agreement 1e-6, measured
+// 5e-8 for the exact model: the differences' truncation and the solves'
+// tolerance).
+void check_jacobian_holds_factors(cw::Solver& s, cw::ContactInput in, const char* what)
+{
     in.xi_x = 2e-3;
     in.rolling_direction = 1;
     const std::vector<double> f = factors();
@@ -178,8 +175,52 @@ void gap_exact_takes_factors(void**)
     const double fd = s.solve(down, cw::SolveMode::forces_only).Fx;
     s.set_friction_factors(nullptr);
     const double central = (fu - fd) / (2.0 * step);
-    printf("  gap exact dFx/dN with factors: %.8g, central differences %.8g\n", J.d[0][3], central);
+    printf("  %s dFx/dN with factors: %.8g, central differences %.8g\n", what, J.d[0][3], central);
     assert_close(J.d[0][3], central, 1e-6, 0.0);
+}
+
+void gap_exact_takes_factors(void**)
+{
+    cw::ContactInput in = contact();
+    in.model = cw::ModelKind::exact;
+    std::vector<double> h;
+    const cw::GridSpec g = hertz_gap_grid(in, h);
+    cw::Solver s(g);
+    for (int d : {1, -1}) {
+        in.rolling_direction = d;
+        check_elements(s, in, 1e-12, d > 0 ? "exact, gap grid" : "exact, gap grid, -x");
+    }
+    in.warm_start = false;
+    check_plain(s, g, in);
+    check_jacobian_holds_factors(s, in, "gap exact");
+}
+
+// FASTSIM on the gap grid (its exact normal method): Coulomb's law and the
+// rational law at each element's slip speed.
+void gap_fastsim_takes_factors(void**)
+{
+    cw::ContactInput in = contact();
+    in.model = cw::ModelKind::fastsim;
+    std::vector<double> h;
+    const cw::GridSpec g = hertz_gap_grid(in, h);
+    cw::Solver s(g);
+    for (int d : {1, -1}) {
+        in.rolling_direction = d;
+        check_elements(s, in, 1e-12, d > 0 ? "FASTSIM, gap grid" : "FASTSIM, gap grid, -x");
+    }
+    check_plain(s, g, in);
+    check_jacobian_holds_factors(s, in, "gap FASTSIM, Coulomb");
+    in.friction_law = cw::FrictionLaw::rational;
+    in.mu = 0.2;
+    in.mu_e1 = 0.15;
+    in.s_h1 = 3.0;
+    for (int d : {1, -1}) {
+        in.rolling_direction = d;
+        check_elements(s, in, 1e-12,
+                       d > 0 ? "FASTSIM, gap grid, rational law" : "FASTSIM, gap grid, rational law, -x");
+    }
+    check_plain(s, g, in);
+    check_jacobian_holds_factors(s, in, "gap FASTSIM, rational law");
 }
 
 } // namespace
@@ -189,6 +230,7 @@ int main()
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(fastsim_takes_factors),
         cmocka_unit_test(gap_exact_takes_factors),
+        cmocka_unit_test(gap_fastsim_takes_factors),
     };
     return cmocka_run_group_tests(tests, nullptr, nullptr);
 }

@@ -138,11 +138,11 @@ CW_API int cw_mu_temperature_init(cw_mu_temperature* mu_T);
  * keeps the last solve (its fields and totals, as after cw_solver_solve;
  * later solves have no mu(T)), the handle its temperatures (as after
  * cw_temperature_compute, with iterations the passes taken). result and
- * temperature_result may be NULL. The exact model (CW_MODEL_EXACT) on the
- * uniform and gap grids and FASTSIM (CW_MODEL_FASTSIM) on the ellipse's
- * grids, under Coulomb's law or a law with CW_FRICTION_SPEED_LOCAL, take
- * mu(T); the calibrated model, FASTSIM on a gap grid and FASTSIM with
- * CW_FRICTION_SPEED_GLOBAL refuse it naming mu_T. Errors: those of cw_solver_solve and cw_temperature_compute,
+ * temperature_result may be NULL. The exact model (CW_MODEL_EXACT) and
+ * FASTSIM (CW_MODEL_FASTSIM) on the ellipse's and gap grids, under
+ * Coulomb's law or a law with CW_FRICTION_SPEED_LOCAL, take mu(T); the
+ * calibrated model and FASTSIM with CW_FRICTION_SPEED_GLOBAL refuse it
+ * naming mu_T. Errors: those of cw_solver_solve and cw_temperature_compute,
  * CW_ERR_INVALID_INPUT naming a bad mu_T entry (mu_T.count,
  * mu_T.temperature[k], mu_T.mu[k], mu_T.tolerance, mu_T.max_iterations) or
  * a model without mu(T), CW_ERR_NOT_CONVERGED (max_iterations reached).

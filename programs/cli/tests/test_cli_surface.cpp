@@ -127,8 +127,11 @@ void surface_contact_example(void**)
 // with mu falling from 0.3 at 0 deg C to 0.2 at 200 deg C. Its fixed point
 // lies between the ends: cooler than Coulomb's 0.3 (166.8 deg C, heat in
 // proportion to mu) and hotter than 0.2 would make it (2/3 of that), and
-// |Fx| within (0.2, 0.3) N; the loop takes several passes. FASTSIM on a
-// gap grid refuses --mu-T by name.
+// |Fx| within (0.2, 0.3) N; the loop takes several passes. FASTSIM on the
+// same gap grid (the same pressure) within 1.5e-3 of Fx/(0.3 N) of it and
+// 1e-2 of its T_max (measured 6.5e-3: at 3.3 % creepage FASTSIM's own
+// micro-slip is not negligible beside the rigid slip; the C test's 4e-3
+// holds at 25 %).
 void surface_mu_T_on_a_gap_grid(void**)
 {
     const std::string file = ertz_gap_file();
@@ -138,8 +141,14 @@ void surface_mu_T_on_a_gap_grid(void**)
     assert_true(t < 166.8 && t > 166.8 * 2.0 / 3.0);
     assert_true(std::fabs(j.num("Fx")) > 0.2 * 1e5 && std::fabs(j.num("Fx")) < 0.3 * 1e5);
     assert_true(j.num("temperature_iterations") > 2);
-    const Run r = cli(with(ertz_case(file), {"--model", "fastsim", "--mu-T", "0:0.3,200:0.2"}));
-    expect_refusal(r, 2, "--mu-T", "--mu-T with FASTSIM on a gap grid");
+    const Json f = parse_or_fail(
+        cli_ok(with(ertz_case(file), {"--model", "fastsim", "--mu-T", "0:0.3,200:0.2"})).out);
+    assert_close(f.num("Fx") / (0.3 * 1e5), j.num("Fx") / (0.3 * 1e5), 0, 1.5e-3);
+    printf("FASTSIM - exact: Fx/(0.3 N) %.3g, T_max %.3g relative\n",
+           (f.num("Fx") - j.num("Fx")) / (0.3 * 1e5),
+           std::fmax(f.num("T_max_1"), f.num("T_max_2")) / t - 1.0);
+    assert_close(std::fmax(f.num("T_max_1"), f.num("T_max_2")), t, 1e-2, 0);
+    assert_true(f.num("temperature_iterations") > 2);
 }
 
 // --mu-T with FASTSIM (Hertz's pressure): CONTACT's euro_tractcurv at 25 %
