@@ -944,10 +944,6 @@ MUTANTS += [
          "wrong way round", file="core/gap/gap_fastsim_model.cpp",
          old="    const ElementFriction f{factor_, nx_, direction_ < 0};",
          new="    const ElementFriction f{factor_, nx_, direction_ > 0};", tests=MU_T_MODELS),
-    dict(id="mu-t-gap-fastsim-jacobian", what="the Jacobian of FASTSIM on a gap grid leaves the "
-         "factors out of the bound's dp/dN", file="core/gap/gap_fastsim_jacobian.cpp",
-         old="    const double* dbound = factor_ ? factored(dp_dN_.data(), bound_dp_) : dp_dN_.data();",
-         new="    const double* dbound = dp_dN_.data();", tests=MU_T_MODELS),
 ]
 # ------------------------------------------------- end temperature, damage
 
