@@ -18,6 +18,7 @@ namespace {
 
 constexpr double kMaxApproach = 10e-3; // [m] no wheel sinks this far into a rail
 constexpr int kFinalMisses = 2;        // final solves that miss before trials stop
+constexpr int kTrialRun = 4;           // trial heights in a row before a final solve is due
 
 // The vertical force at a wheelset position and its slope dFz/dz [N/m]
 // (0 when no patch knows its derivative). Moving the wheelset down by dz
@@ -85,9 +86,10 @@ VerticalForceSolution solve_vertical_position(WheelRailGeometry& g, double fz, c
     return solve_vertical_position(g, fz, start, vel, solver, PatchSolver{}, opt);
 }
 
-// With a final solver: a height whose trial force meets the tolerance is
-// solved again by it, and that force decides; the point keeps the trial's
-// slope (the exact model's final solve computes none).
+// With a final solver: a height whose trial force meets the tolerance, or
+// the fifth trial height in a row (a trial whose force is too rough to
+// meet it), is solved again by it, and that force decides; the point keeps
+// the trial's slope (the exact model's final solve computes none).
 VerticalForceSolution solve_vertical_position(WheelRailGeometry& g, double fz, const WheelsetPosition& start,
                                               const WheelsetVelocity& vel, const PatchSolver& solver,
                                               const PatchSolver& final, const VerticalForceOptions& opt)
@@ -107,7 +109,7 @@ VerticalForceSolution solve_vertical_position(WheelRailGeometry& g, double fz, c
     // solve's difference to them (bias), and after kFinalMisses final solves
     // that missed the tolerance, the final solver at every height.
     double bias = 0.0, rebias = 0.0; // rebias: the bias's change at the last height
-    int misses = 0;
+    int misses = 0, trials = 0; // trials: trial heights since the last final solve
     auto g_of = [&](double f) { return std::cbrt(std::max(f, 0.0) * std::max(f, 0.0)) - target; };
     auto at = [&](double z) {
         pos.z = z;
@@ -118,7 +120,9 @@ VerticalForceSolution solve_vertical_position(WheelRailGeometry& g, double fz, c
         Evaluation e = vertical_force(g, pos, vel, final && !trial ? final : solver, sol.evaluations > 1);
         if (trial) e.fz += bias;
         bool from_trial = trial;
-        if (trial && std::abs(e.fz - fz) <= opt.tolerance * fz) {
+        ++trials;
+        if (trial && (std::abs(e.fz - fz) <= opt.tolerance * fz || trials > kTrialRun)) {
+            trials = 0;
             ++sol.final_solves;
             const Evaluation f = patch_forces(g.state(), final);
             rebias = f.fz - e.fz;
@@ -180,16 +184,18 @@ VerticalForceSolution solve_vertical_position(WheelRailGeometry& g, double fz, c
         now = at(z);
         if (converged()) return sol;
         // a final solve that missed: the trial points move by its difference
-        // to the trial there, and the bracket keeps the ends still on their side
+        // to the trial there, and the bracket keeps the ends still on their
+        // side; once only final solves count, it keeps no trial's end
         const bool rebiased = rebias != 0.0;
         if (rebiased) {
+            const bool finals_only = misses >= kFinalMisses;
             for (Point* p : {&last, &lo, &hi})
                 if (p->trial) {
                     p->fz += rebias;
                     p->g = g_of(p->fz);
                 }
-            if (!(lo.g < 0.0)) lo = Point{z_touch, -target};
-            has_hi = has_hi && hi.g > 0.0;
+            if (!(lo.g < 0.0) || (finals_only && lo.trial)) lo = Point{z_touch, -target};
+            has_hi = has_hi && hi.g > 0.0 && !(finals_only && hi.trial);
             rebias = 0.0;
         }
         // a Newton step that did not halve |g| hands over to the bracket

@@ -55,13 +55,14 @@ VerticalForceSolution solve_vertical_position(WheelRailGeometry& geometry, doubl
 
 // The same with a cheaper solver at the heights tried: `trial` solves the
 // patches at every height (e.g. to a looser tolerance); once its vertical
-// force meets the tolerance, `final` solves the same patches again (the
-// geometry is not evaluated again) and the balance ends only if that force
-// meets the tolerance too; otherwise it goes on from the final force, the
-// later trial forces corrected by the final's difference to the trial's at
-// that height, and after two such misses with `final` at every height. The
-// force returned is always that of a final solve at the height returned,
-// the last solves `final` made.
+// force meets the tolerance (or at the fifth trial height in a row),
+// `final` solves the same patches again (the geometry is not evaluated
+// again) and the balance ends only if that force meets the tolerance too;
+// otherwise it goes on from the final force, the later trial forces
+// corrected by the final's difference to the trial's at that height, and
+// after two such misses with `final` at every height. The force returned
+// is always that of a final solve at the height returned, the last solves
+// `final` made.
 VerticalForceSolution solve_vertical_position(WheelRailGeometry& geometry, double fz,
                                               const WheelsetPosition& start,
                                               const WheelsetVelocity& velocity, const PatchSolver& trial,

@@ -91,7 +91,8 @@ void test_spring_solve(void**)
 // is the final spring's, Fz / k, its force a final solve's at that height;
 // a trial 1e-3 off is corrected by the final's difference to it and ends
 // within three final solves, one 30 % off hands over to the final solver
-// at every height after two misses.
+// at every height after two misses, and one too rough to meet the
+// tolerance gets a final solve at its fifth height in a row.
 void test_trial_and_final_solvers(void**)
 {
     const Cylinder cyl(0.46, 0.3);
@@ -124,6 +125,23 @@ void test_trial_and_final_solvers(void**)
             assert_true(s.evaluations <= (off < 0.01 ? 12 : 16));
         }
     }
+    // A trial that never meets the tolerance (its force pushed 1e-5 of the
+    // load away from the target): the fifth trial height in a row is solved
+    // finally, and the balance ends on the final spring's height all the same.
+    const wr::PatchSolver rough = [&](std::size_t, const wr::ContactPatch& p) {
+        wr::PatchForces f;
+        f.fn = k * p.approach;
+        f.fn += f.fn < load ? -1e-5 * load : 1e-5 * load;
+        return f;
+    };
+    wr::WheelsetPosition p;
+    p.z = 20e-6;
+    finals = 0;
+    const wr::VerticalForceSolution s = wr::solve_vertical_position(g, load, p, {}, rough, exact);
+    assert_close(s.z, load / k, 1e-6, 0);
+    assert_true(s.fz == k * g.state().patches.at(0).approach);
+    assert_int_equal(s.final_solves, finals);
+    assert_true(s.final_solves >= 1 && s.evaluations <= 16);
 }
 
 // The Hertz estimate on a cylinder over a crown of the same radius r: a
