@@ -13,6 +13,8 @@
 // repeated sweeps; CONTACT's is its CPU time (getrusage of the child).
 //
 //   creepwork_bench_wheelrail [SWEEPS [CONTACT EXAMPLES_DIR]]   (default 200)
+//   creepwork_bench_wheelrail --hunting CALLS [exact|fast [print]]  one hunting cycle's model
+//   creepwork_bench_wheelrail --positions exact|fast   one sweep of whole positions (callgrind)
 #include <sys/resource.h>
 #include <time.h>
 
@@ -122,6 +124,56 @@ HuntingCost hunting_cycle(const cwtest::Benchmark& b, const wr::PatchContactSett
     return cost;
 }
 
+// A whole position: the height for 10 kN, every patch by the exact model
+// (as test_wheelrail_forces) or the fast one, over the benchmark's rows.
+// heights[k]: the height found for row k (filled by the first call).
+// Start::zero finds the height for 10 kN from z = 0; Start::near from 1 um
+// off the height found before (a host's next time step); Start::given
+// solves at that height (an MBS host's wheelset position).
+enum class Start { zero, near, given };
+struct Timing {
+    double cpu, wall, evaluations; // per position: [s], [s], geometry evaluations
+    double fz_error;               // the largest relative error of Fz (force balances)
+};
+
+// fresh: new objects each sweep, the positions one after the other from a
+// cold start, as CONTACT runs its examples; otherwise one pair of objects
+// for every sweep after a first one not timed, as a host's loop keeps its
+// handles (their solvers made for the grids met before).
+Timing whole_positions(const cwtest::Benchmark& b, const std::vector<cwtest::Row>& rows,
+                       std::vector<double>& heights, const wr::PatchContactSettings& set, int force_sweeps,
+                       Start start, bool fresh)
+{
+    const bool given_height = start == Start::given;
+    std::vector<double> pos_cpu, pos_wall;
+    double evaluations = 0.0, worst = 0.0;
+    wr::WheelRailContact kept_r(b.geometry(wr::Side::right), set), kept_l(b.geometry(wr::Side::left), set);
+    for (int s = fresh ? 0 : -1; s < force_sweeps; ++s) {
+        wr::WheelRailContact fresh_r(b.geometry(wr::Side::right), set), fresh_l(b.geometry(wr::Side::left), set);
+        wr::WheelRailContact& cr = fresh ? fresh_r : kept_r;
+        wr::WheelRailContact& cl = fresh ? fresh_l : kept_l;
+        double cpu = 0.0, wall = 0.0;
+        for (std::size_t k = 0; k < rows.size(); ++k) {
+            const cwtest::Row& r = rows[k];
+            wr::WheelRailContact& c = cwtest::side_of(r) == wr::Side::right ? cr : cl;
+            wr::WheelsetPosition pos = cwtest::position_of(r);
+            pos.z = start == Start::zero ? 0.0 : start == Start::near ? heights[k] + 1e-6 : heights[k];
+            const double c0 = seconds(CLOCK_THREAD_CPUTIME_ID), w0 = seconds(CLOCK_MONOTONIC);
+            const wr::WheelRailSolution& sol = given_height ? c.solve_position(pos, cwtest::velocity_of(r))
+                                                            : c.solve_force(1e4, pos, cwtest::velocity_of(r));
+            cpu += seconds(CLOCK_THREAD_CPUTIME_ID) - c0;
+            wall += seconds(CLOCK_MONOTONIC) - w0;
+            if (start == Start::zero) heights[k] = sol.z;
+            if (s == 0) evaluations += sol.evaluations;
+            if (!given_height) worst = std::max(worst, std::abs(sol.total.fz - 1e4) / 1e4);
+        }
+        if (s < 0) continue; // the warm-up sweep
+        pos_cpu.push_back(cpu / static_cast<double>(rows.size()));
+        pos_wall.push_back(wall / static_cast<double>(rows.size()));
+    }
+    return Timing{median(pos_cpu), median(pos_wall), evaluations / static_cast<double>(rows.size()), worst};
+}
+
 } // namespace
 
 int main(int argc, char** argv)
@@ -141,6 +193,23 @@ int main(int argc, char** argv)
         const HuntingCost h = hunting_cycle(b, set, std::max(1, std::atoi(argv[2])), print);
         std::printf("%.1f us per call, %.2f evaluations per call, largest Fz error %.1e\n", 1e6 * h.cpu,
                     h.evaluations, h.fz_error);
+        return 0;
+    }
+    if (argc > 2 && std::string(argv[1]) == "--positions") {
+        // one sweep of the whole positions from z = 0 on fresh objects, one
+        // model alone (for callgrind): --positions exact|fast; the exact
+        // model as the table's row (every field), the fast one forces only
+        wr::PatchContactSettings set;
+        if (std::string(argv[2]) == "fast") {
+            set.model = creepwork::ModelKind::fastsim;
+            set.normal_method = creepwork::NormalMethod::semi_hertz;
+            set.mode = creepwork::SolveMode::forces_only;
+        }
+        const auto rows = cwtest::read_rows(cwtest::wheelrail_data("contact_a22_geometry.csv"));
+        std::vector<double> heights(rows.size(), 0.0);
+        const Timing t = whole_positions(b, rows, heights, set, 1, Start::zero, true);
+        std::printf("%.3f ms per position, %.2f evaluations per position, largest Fz error %.1e\n", 1e3 * t.cpu,
+                    t.evaluations, t.fz_error);
         return 0;
     }
     const int sweeps = argc > 1 ? std::max(1, std::atoi(argv[1])) : 200;
@@ -182,52 +251,6 @@ int main(int argc, char** argv)
                 1e6 * median(full_wall));
     std::printf("| contact search alone | %.1f | |\n\n", 1e6 * median(search_cpu));
 
-    // A whole position: the height for 10 kN, every patch by the exact
-    // model (as test_wheelrail_forces) or the fast one, and CONTACT on the
-    // same positions.
-    // heights[k]: the height found for row k (filled by the first call).
-    // Start::zero finds the height for 10 kN from z = 0; Start::near from 1
-    // um off the height found before (a host's next time step); Start::given
-    // solves at that height (an MBS host's wheelset position).
-    enum class Start { zero, near, given };
-    struct Timing {
-        double cpu, wall, evaluations; // per position: [s], [s], geometry evaluations
-    };
-    std::vector<double> heights(rows.size(), 0.0);
-    // fresh: new objects each sweep, the positions one after the other from
-    // a cold start, as CONTACT runs its examples; otherwise one pair of
-    // objects for every sweep after a first one not timed, as a host's loop
-    // keeps its handles (their solvers made for the grids met before).
-    const auto whole_positions = [&](const wr::PatchContactSettings& set, int force_sweeps, Start start,
-                                     bool fresh) {
-        const bool given_height = start == Start::given;
-        std::vector<double> pos_cpu, pos_wall;
-        double evaluations = 0.0;
-        wr::WheelRailContact kept_r(b.geometry(wr::Side::right), set), kept_l(b.geometry(wr::Side::left), set);
-        for (int s = fresh ? 0 : -1; s < force_sweeps; ++s) {
-            wr::WheelRailContact fresh_r(b.geometry(wr::Side::right), set), fresh_l(b.geometry(wr::Side::left), set);
-            wr::WheelRailContact& cr = fresh ? fresh_r : kept_r;
-            wr::WheelRailContact& cl = fresh ? fresh_l : kept_l;
-            double cpu = 0.0, wall = 0.0;
-            for (std::size_t k = 0; k < rows.size(); ++k) {
-                const cwtest::Row& r = rows[k];
-                wr::WheelRailContact& c = cwtest::side_of(r) == wr::Side::right ? cr : cl;
-                wr::WheelsetPosition pos = cwtest::position_of(r);
-                pos.z = start == Start::zero ? 0.0 : start == Start::near ? heights[k] + 1e-6 : heights[k];
-                const double c0 = seconds(CLOCK_THREAD_CPUTIME_ID), w0 = seconds(CLOCK_MONOTONIC);
-                const wr::WheelRailSolution& sol = given_height ? c.solve_position(pos, cwtest::velocity_of(r))
-                                                                : c.solve_force(1e4, pos, cwtest::velocity_of(r));
-                cpu += seconds(CLOCK_THREAD_CPUTIME_ID) - c0;
-                wall += seconds(CLOCK_MONOTONIC) - w0;
-                if (start == Start::zero) heights[k] = sol.z;
-                if (s == 0) evaluations += sol.evaluations;
-            }
-            if (s < 0) continue; // the warm-up sweep
-            pos_cpu.push_back(cpu / static_cast<double>(rows.size()));
-            pos_wall.push_back(wall / static_cast<double>(rows.size()));
-        }
-        return Timing{median(pos_cpu), median(pos_wall), evaluations / static_cast<double>(rows.size())};
-    };
     const int force_sweeps = std::max(1, sweeps / 40);
     wr::PatchContactSettings exact; // mu 0.3, G 82 GPa, nu 0.28: the benchmark's; every field
     wr::PatchContactSettings fast = exact;
@@ -236,11 +259,12 @@ int main(int argc, char** argv)
     fast.mode = creepwork::SolveMode::forces_only;
     wr::PatchContactSettings fast_full = fast;
     fast_full.mode = creepwork::SolveMode::full;
-    const auto te = whole_positions(exact, force_sweeps, Start::zero, true);
-    const auto tf = whole_positions(fast, 10 * force_sweeps, Start::zero, false);
-    const auto tff = whole_positions(fast_full, 10 * force_sweeps, Start::zero, false);
-    const auto tfn = whole_positions(fast, 10 * force_sweeps, Start::near, false);
-    const auto tfh = whole_positions(fast, 10 * force_sweeps, Start::given, false);
+    std::vector<double> heights(rows.size(), 0.0);
+    const auto te = whole_positions(b, rows, heights, exact, force_sweeps, Start::zero, true);
+    const auto tf = whole_positions(b, rows, heights, fast, 10 * force_sweeps, Start::zero, false);
+    const auto tff = whole_positions(b, rows, heights, fast_full, 10 * force_sweeps, Start::zero, false);
+    const auto tfn = whole_positions(b, rows, heights, fast, 10 * force_sweeps, Start::near, false);
+    const auto tfh = whole_positions(b, rows, heights, fast, 10 * force_sweeps, Start::given, false);
     std::printf("Whole position, 10 kN per wheel: height, geometry and the contact of every patch; median of %d "
                 "sweeps from a cold start (exact model), of %d sweeps on kept handles after one sweep not timed "
                 "(fast model) (CONTACT: one run of its examples mbench_a22_right and _left, output files "

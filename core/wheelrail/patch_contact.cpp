@@ -1,5 +1,6 @@
 #include "wheelrail/patch_contact.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <utility>
@@ -13,6 +14,11 @@
 namespace creepwork::wheelrail {
 
 namespace {
+
+// [-] the exact model's tangential tolerance at a force balance's trial
+// heights (doc/dev/decisions.md: a looser one misses the force's tolerance
+// more often at the final solve)
+constexpr double kTrialTolerance = 1e-5;
 
 void check_setting(const char* name, double v, double lo, double hi)
 {
@@ -75,7 +81,7 @@ std::pair<int, int> kept(int lo, int n, int f)
 
 } // namespace
 
-const PatchSolution& PatchContact::solve(const ContactPatch& p, std::size_t k, bool forces_only)
+const PatchSolution& PatchContact::solve(const ContactPatch& p, std::size_t k, bool forces_only, double tolerance)
 {
     const std::size_t n = static_cast<std::size_t>(p.nx) * static_cast<std::size_t>(p.ny);
     if (p.nx <= 0 || p.ny <= 0 || p.h.size() != n || !(p.dx > 0.0 && p.ds > 0.0))
@@ -129,7 +135,7 @@ const PatchSolution& PatchContact::solve(const ContactPatch& p, std::size_t k, b
     in.k_tau = settings_.k_tau;
     in.G = settings_.G;
     in.nu = settings_.nu;
-    in.tolerance = settings_.tolerance;
+    in.tolerance = tolerance > 0.0 ? tolerance : settings_.tolerance;
     in.rolling_direction = p.forward ? 1 : -1;
     // the rigid slip about the reference point on a grid whose element
     // (0, 0) is the origin: (xi - phi (y' + y0), eta + phi (x' + x0))
@@ -202,17 +208,34 @@ const WheelRailSolution& WheelRailContact::solve_force(double fz, const Wheelset
     // of an exact patch solve): the exact model takes it at the first height
     // only, for the first Newton step, and secant steps after it
     // (doc/dev/decisions.md); the fast model's closed form at every height.
-    const bool exact = contact_.settings().normal_method == NormalMethod::exact;
+    const PatchContactSettings& set = contact_.settings();
+    const bool exact = set.normal_method == NormalMethod::exact;
     int evaluation = -1;
-    const PatchSolver solver = [this, exact, &evaluation](std::size_t k, const ContactPatch& p) {
+    // The exact model's tangential problem is solved to a looser tolerance
+    // at the heights tried (kTrialTolerance) and to the settings' at a
+    // height whose trial force meets the balance's tolerance, in the
+    // settings' mode (from the trial's solution: the same gap keeps the
+    // normal solution), which decides; the fast model has no tolerance and
+    // solves once per height.
+    const bool staged = set.model == ModelKind::exact;
+    const double trial_tolerance =
+        staged ? std::max(kTrialTolerance, set.tolerance > 0.0 ? set.tolerance : kExactDefaultTolerance) : 0.0;
+    const PatchSolver solver = [this, exact, staged, trial_tolerance, &evaluation](std::size_t k,
+                                                                                 const ContactPatch& p) {
         if (k == 0) {
             ++evaluation;
             evaluated_.clear();
         }
-        const PatchSolution& s = contact_.solve(p, k, true);
-        evaluated_.push_back(s);
+        const PatchSolution& s = contact_.solve(p, k, true, trial_tolerance);
+        if (!staged) evaluated_.push_back(s);
         const bool slope = !exact || evaluation == 0;
         return PatchForces{s.fn, s.fx, s.fs, slope ? contact_.normal_force_by_approach() : 0.0};
+    };
+    const PatchSolver final = [this](std::size_t k, const ContactPatch& p) {
+        if (k == 0) evaluated_.clear();
+        const PatchSolution& s = contact_.solve(p, k);
+        evaluated_.push_back(s);
+        return PatchForces{s.fn, s.fx, s.fs, 0.0};
     };
     // The height of the Hertz estimate (geometry only) starts the exact
     // balance near its solution, so that the exact solves stay near the
@@ -230,18 +253,18 @@ const WheelRailSolution& WheelRailContact::solve_force(double fz, const Wheelset
             start.z = position.z; // the exact balance reports its own failure
         }
     }
-    const VerticalForceSolution v = solve_vertical_position(geometry_, fz, start, velocity, solver, options);
+    const VerticalForceSolution v =
+        staged ? solve_vertical_position(geometry_, fz, start, velocity, solver, final, options)
+               : solve_vertical_position(geometry_, fz, start, velocity, solver, options);
     balance_z_[0] = balance_z_[1];
     balance_z_[1] = v.z;
     ++balanced_;
-    // The geometry is left at the solution. The fast model's forces there
-    // are those its last evaluation solved (a solve is a function of its
-    // inputs: solving again gives the same bits). Otherwise the patches
-    // solve again in the settings' mode from their own last solution (same
-    // gap and approach: the normal solution is kept, the tangential one
-    // starts warm).
-    const PatchContactSettings& set = contact_.settings();
-    collect(v.evaluations, set.model == ModelKind::fastsim && set.mode == SolveMode::forces_only);
+    // The geometry is left at the solution, and its patches' last solves
+    // are the answer: the exact model's final solves in the settings' mode,
+    // the fast model's last evaluation (a FASTSIM solve is a function of its
+    // inputs: solving again gives the same bits) unless the settings ask
+    // for every field.
+    collect(v.evaluations, staged || set.mode == SolveMode::forces_only);
     return solution_;
 }
 

@@ -76,9 +76,11 @@ public:
 
     // The patch at the wheelset height its grid was made for; k is its
     // index in the position's patches. Solved in settings().mode, or forces
-    // only when forces_only (the force balance's trial heights). Throws
-    // Error naming a bad input or Error(not_converged).
-    const PatchSolution& solve(const ContactPatch& patch, std::size_t k = 0, bool forces_only = false);
+    // only when forces_only (the force balance's trial heights); tolerance
+    // > 0 replaces the settings' for this solve. Throws Error naming a bad
+    // input or Error(not_converged).
+    const PatchSolution& solve(const ContactPatch& patch, std::size_t k = 0, bool forces_only = false,
+                               double tolerance = 0.0);
     const PatchContactSettings& settings() const { return settings_; }
     // dfn/d(approach) [N/m] of the last patch solved, its normal method's
     // own (Solver::normal_force_by_approach).

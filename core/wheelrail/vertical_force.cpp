@@ -17,6 +17,8 @@ TrackForces track_forces(const ContactPatch& p, const PatchForces& f)
 namespace {
 
 constexpr double kMaxApproach = 10e-3; // [m] no wheel sinks this far into a rail
+constexpr int kFinalMisses = 2;        // final solves that miss before trials stop
+constexpr int kTrialRun = 4;           // trial heights in a row before a final solve is due
 
 // The vertical force at a wheelset position and its slope dFz/dz [N/m]
 // (0 when no patch knows its derivative). Moving the wheelset down by dz
@@ -29,10 +31,9 @@ struct Evaluation {
     double fz = 0.0, slope = 0.0, gap_min = 0.0;
 };
 
-Evaluation vertical_force(WheelRailGeometry& g, const WheelsetPosition& pos, const WheelsetVelocity& vel,
-                          const PatchSolver& solver, bool height_only)
+// The patches of the geometry's current state solved by `solver`.
+Evaluation patch_forces(const WheelRailState& st, const PatchSolver& solver)
 {
-    const WheelRailState& st = g.evaluate(pos, vel, height_only);
     Evaluation e;
     e.gap_min = st.gap_min;
     for (std::size_t k = 0; k < st.patches.size(); ++k) {
@@ -49,9 +50,17 @@ Evaluation vertical_force(WheelRailGeometry& g, const WheelsetPosition& pos, con
     return e;
 }
 
+Evaluation vertical_force(WheelRailGeometry& g, const WheelsetPosition& pos, const WheelsetVelocity& vel,
+                          const PatchSolver& solver, bool height_only)
+{
+    return patch_forces(g.evaluate(pos, vel, height_only), solver);
+}
+
 // A point of g(z) = Fz(z)^(2/3) - fz^(2/3) and its slope (0: not known).
 struct Point {
     double z = 0.0, g = 0.0, slope = 0.0;
+    double fz = 0.0;    // [N] the force g was made from
+    bool trial = false; // from a trial solve (corrected by the bias then)
 };
 
 } // namespace
@@ -74,6 +83,17 @@ VerticalForceSolution solve_vertical_position(WheelRailGeometry& g, double fz, c
                                               const WheelsetVelocity& vel, const PatchSolver& solver,
                                               const VerticalForceOptions& opt)
 {
+    return solve_vertical_position(g, fz, start, vel, solver, PatchSolver{}, opt);
+}
+
+// With a final solver: a height whose trial force meets the tolerance, or
+// the fifth trial height in a row (a trial whose force is too rough to
+// meet it), is solved again by it, and that force decides; the point keeps
+// the trial's slope (the exact model's final solve computes none).
+VerticalForceSolution solve_vertical_position(WheelRailGeometry& g, double fz, const WheelsetPosition& start,
+                                              const WheelsetVelocity& vel, const PatchSolver& solver,
+                                              const PatchSolver& final, const VerticalForceOptions& opt)
+{
     if (!(fz > 0.0 && std::isfinite(fz) && fz < 1e7))
         throw Error(ErrorKind::invalid_input,
                     "wheel/rail: the vertical force must lie in (0, 1e7) N, got " + number_text(fz));
@@ -85,22 +105,45 @@ VerticalForceSolution solve_vertical_position(WheelRailGeometry& g, double fz, c
     WheelsetPosition pos = start;
     const double target = std::cbrt(fz * fz);
     double gap = 0.0;
+    // With a final solver: the trial forces corrected by the last final
+    // solve's difference to them (bias), and after kFinalMisses final solves
+    // that missed the tolerance, the final solver at every height.
+    double bias = 0.0, rebias = 0.0; // rebias: the bias's change at the last height
+    int misses = 0, trials = 0; // trials: trial heights since the last final solve
+    auto g_of = [&](double f) { return std::cbrt(std::max(f, 0.0) * std::max(f, 0.0)) - target; };
     auto at = [&](double z) {
         pos.z = z;
         ++sol.evaluations;
         // after the first height only the height changes: the contact
         // search shifts the first height's samples of the wheel
-        const Evaluation e = vertical_force(g, pos, vel, solver, sol.evaluations > 1);
+        const bool trial = final && misses < kFinalMisses;
+        Evaluation e = vertical_force(g, pos, vel, final && !trial ? final : solver, sol.evaluations > 1);
+        if (trial) e.fz += bias;
+        bool from_trial = trial;
+        ++trials;
+        if (trial && (std::abs(e.fz - fz) <= opt.tolerance * fz || trials > kTrialRun)) {
+            trials = 0;
+            ++sol.final_solves;
+            const Evaluation f = patch_forces(g.state(), final);
+            rebias = f.fz - e.fz;
+            bias += rebias;
+            misses += std::abs(f.fz - fz) > opt.tolerance * fz;
+            e.fz = f.fz;
+            from_trial = false;
+        } else if (final && !trial) {
+            ++sol.final_solves;
+        }
         gap = e.gap_min;
         sol.z = z;
         sol.fz = e.fz;
-        Point p{z, std::cbrt(std::max(e.fz, 0.0) * std::max(e.fz, 0.0)) - target, 0.0};
+        Point p{z, g_of(e.fz), 0.0, e.fz, from_trial};
         if (e.fz > 0.0 && e.slope > 0.0) p.slope = 2.0 / 3.0 * e.slope / std::cbrt(e.fz);
         return p;
     };
     auto converged = [&] { return std::abs(sol.fz - fz) <= opt.tolerance * fz; };
     Point now = at(start.z);
     if (converged()) return sol;
+    rebias = 0.0; // nothing tried before
     // the bracket: lo at first contact (no force), hi once there is too much
     Point lo{start.z + gap, -target, 0.0}, hi;
     bool has_hi = false;
@@ -140,8 +183,23 @@ VerticalForceSolution solve_vertical_position(WheelRailGeometry& g, double fz, c
         has_last = true;
         now = at(z);
         if (converged()) return sol;
+        // a final solve that missed: the trial points move by its difference
+        // to the trial there, and the bracket keeps the ends still on their
+        // side; once only final solves count, it keeps no trial's end
+        const bool rebiased = rebias != 0.0;
+        if (rebiased) {
+            const bool finals_only = misses >= kFinalMisses;
+            for (Point* p : {&last, &lo, &hi})
+                if (p->trial) {
+                    p->fz += rebias;
+                    p->g = g_of(p->fz);
+                }
+            if (!(lo.g < 0.0) || (finals_only && lo.trial)) lo = Point{z_touch, -target};
+            has_hi = has_hi && hi.g > 0.0 && !(finals_only && hi.trial);
+            rebias = 0.0;
+        }
         // a Newton step that did not halve |g| hands over to the bracket
-        newton = std::abs(now.g) <= 0.5 * std::abs(last.g);
+        newton = rebiased || std::abs(now.g) <= 0.5 * std::abs(last.g);
         if (now.g > 0.0) {
             hi = now;
             has_hi = true;

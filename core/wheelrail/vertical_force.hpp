@@ -42,6 +42,7 @@ struct VerticalForceSolution {
     double z = 0.0;     // [m] the wheelset height found
     double fz = 0.0;    // [N] the vertical force there
     int evaluations = 0; // geometry evaluations used
+    int final_solves = 0; // heights the final solver solved (with a trial solver)
 };
 
 // Solves for z (the start position gives y, roll, yaw and the first guess
@@ -50,6 +51,22 @@ struct VerticalForceSolution {
 VerticalForceSolution solve_vertical_position(WheelRailGeometry& geometry, double fz,
                                               const WheelsetPosition& start,
                                               const WheelsetVelocity& velocity, const PatchSolver& solver,
+                                              const VerticalForceOptions& options = {});
+
+// The same with a cheaper solver at the heights tried: `trial` solves the
+// patches at every height (e.g. to a looser tolerance); once its vertical
+// force meets the tolerance (or at the fifth trial height in a row),
+// `final` solves the same patches again (the geometry is not evaluated
+// again) and the balance ends only if that force meets the tolerance too;
+// otherwise it goes on from the final force, the later trial forces
+// corrected by the final's difference to the trial's at that height, and
+// after two such misses with `final` at every height. The force returned
+// is always that of a final solve at the height returned, the last solves
+// `final` made.
+VerticalForceSolution solve_vertical_position(WheelRailGeometry& geometry, double fz,
+                                              const WheelsetPosition& start,
+                                              const WheelsetVelocity& velocity, const PatchSolver& trial,
+                                              const PatchSolver& final,
                                               const VerticalForceOptions& options = {});
 
 } // namespace creepwork::wheelrail

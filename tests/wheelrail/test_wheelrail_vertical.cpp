@@ -86,6 +86,64 @@ void test_spring_solve(void**)
     }
 }
 
+// A trial solver that is off and a final one that is right (the spring
+// above, the trial's stiffness 1e-3 or 30 % too high): the height returned
+// is the final spring's, Fz / k, its force a final solve's at that height;
+// a trial 1e-3 off is corrected by the final's difference to it and ends
+// within three final solves, one 30 % off hands over to the final solver
+// at every height after two misses, and one too rough to meet the
+// tolerance gets a final solve at its fifth height in a row.
+void test_trial_and_final_solvers(void**)
+{
+    const Cylinder cyl(0.46, 0.3);
+    wr::WheelRailGeometry g = cyl.geometry();
+    const double k = 4e8, load = 12e3; // [N/m], [N]
+    int finals = 0;
+    const wr::PatchSolver exact = [&](std::size_t, const wr::ContactPatch& p) {
+        ++finals;
+        wr::PatchForces f;
+        f.fn = k * p.approach;
+        return f;
+    };
+    for (double off : {1e-3, 0.3}) {
+        const wr::PatchSolver trial = [&](std::size_t, const wr::ContactPatch& p) {
+            wr::PatchForces f;
+            f.fn = (1.0 + off) * k * p.approach;
+            return f;
+        };
+        for (double start : {0.0, 20e-6, 40e-6}) {
+            wr::WheelsetPosition p;
+            p.z = start;
+            finals = 0;
+            const wr::VerticalForceSolution s = wr::solve_vertical_position(g, load, p, {}, trial, exact);
+            assert_close(s.z, load / k, 1e-6, 0);
+            assert_close(s.fz, load, 1e-6, 0);
+            // the force returned is the final spring's at the height returned
+            assert_true(s.fz == k * g.state().patches.at(0).approach);
+            assert_int_equal(s.final_solves, finals);
+            assert_true(s.final_solves >= 1 && s.final_solves <= (off < 0.01 ? 3 : s.evaluations));
+            assert_true(s.evaluations <= (off < 0.01 ? 12 : 16));
+        }
+    }
+    // A trial that never meets the tolerance (its force pushed 1e-5 of the
+    // load away from the target): the fifth trial height in a row is solved
+    // finally, and the balance ends on the final spring's height all the same.
+    const wr::PatchSolver rough = [&](std::size_t, const wr::ContactPatch& p) {
+        wr::PatchForces f;
+        f.fn = k * p.approach;
+        f.fn += f.fn < load ? -1e-5 * load : 1e-5 * load;
+        return f;
+    };
+    wr::WheelsetPosition p;
+    p.z = 20e-6;
+    finals = 0;
+    const wr::VerticalForceSolution s = wr::solve_vertical_position(g, load, p, {}, rough, exact);
+    assert_close(s.z, load / k, 1e-6, 0);
+    assert_true(s.fz == k * g.state().patches.at(0).approach);
+    assert_int_equal(s.final_solves, finals);
+    assert_true(s.final_solves >= 1 && s.evaluations <= 16);
+}
+
 // The Hertz estimate on a cylinder over a crown of the same radius r: a
 // sphere-like contact, N = 4/3 E* sqrt(r) d^(3/2) (Johnson, eq. 4.23, for
 // the relative radius r).
@@ -214,6 +272,7 @@ int main(int argc, char** argv)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_track_forces_against_contact),
         cmocka_unit_test(test_spring_solve),
+        cmocka_unit_test(test_trial_and_final_solvers),
         cmocka_unit_test(test_hertz_estimate_sphere),
         cmocka_unit_test(test_newton_step_on_a_sphere),
         cmocka_unit_test(test_benchmark_heights),
