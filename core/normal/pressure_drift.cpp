@@ -40,7 +40,7 @@ void PressureDrift::predict(const double* h, bool force, double approach, double
         shift_r = count > 0.0 ? sr / count : 0.0;
         for (int i = 0; i < m; ++i) shift[i] = count > 0.0 ? sd[i] / count : 0.0;
     }
-    double a11 = 0.0, a12 = 0.0, a22 = 0.0, b1 = 0.0, b2 = 0.0;
+    double a11 = 0.0, a12 = 0.0, a22 = 0.0, b1 = 0.0, b2 = 0.0, hh = 0.0;
     for (std::size_t k = 0; k < n; ++k)
         if (m > 0 && in_contact(k)) {
             const double r = h[k] - h0[k] - shift_r;
@@ -51,17 +51,24 @@ void PressureDrift::predict(const double* h, bool force, double approach, double
             a22 += d2 * d2;
             b1 += d1 * r;
             b2 += d2 * r;
+            hh += h0[k] * h0[k];
         }
+    // A difference within rounding of the gaps (a height alone changed, with
+    // the force prescribed) is no direction: its step would scale the
+    // solutions' own rounding up.
+    const double floor = kRoundingFloor * kRoundingFloor * hh;
+    const bool use1 = a11 > floor, use2 = m > 1 && a22 > floor;
     double g[2] = {0.0, 0.0};
     const double det = a11 * a22 - a12 * a12;
-    if (m == 2 && det > 1e-12 * a11 * a22) { // normal equations of the least squares
+    if (use1 && use2 && det > 1e-12 * a11 * a22) { // normal equations of the least squares
         g[0] = (b1 * a22 - b2 * a12) / det;
         g[1] = (a11 * b2 - a12 * b1) / det;
-    } else if (a11 > 0.0) {
+    } else if (use1) {
         g[0] = b1 / a11;
+    } else if (use2) {
+        g[1] = b2 / a22;
     }
-    for (double& v : g)
-        if (!(std::fabs(v) <= kMaxStep)) v = 0.0;
+    if (!std::isfinite(g[0] + g[1])) g[0] = g[1] = 0.0;
     if (g_out) std::copy(g, g + kSolutions - 1, g_out);
     if (g[0] == 0.0 && g[1] == 0.0) {
         std::copy(p0.begin(), p0.end(), start);

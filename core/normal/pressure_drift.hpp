@@ -12,9 +12,12 @@
 // leave contact, instead of the drift itself (measured: the conjugate
 // gradients' products a warm step, doc/dev/decisions.md). Two differences
 // follow a drift in two shapes (the gap's shape and its height, say); when
-// they are parallel (one shape drifting) the newest alone. A step with
-// |g_i| > kMaxStep is left out (extrapolate, do not leap); a gap that has not
-// moved gives p_0. The caller keeps one problem (rolling direction,
+// they are parallel (one shape drifting) the newest alone; a difference
+// below kRoundingFloor of the gap (rounding) is left out. The step is taken
+// however long it is: a leap along the drift is still linear on the contact
+// set away from the elements that enter or leave it (measured: a gap 5 %
+// deeper at once, half the products of a start from p_0). A gap that has
+// not moved gives p_0. The caller keeps one problem (rolling direction,
 // material, kind of load) per history and clears it when that changes.
 // Made once; nothing allocates.
 #pragma once
@@ -26,7 +29,8 @@ namespace creepwork {
 
 class PressureDrift {
 public:
-    static constexpr double kMaxStep = 4.0;
+    // |d_i| <= kRoundingFloor |h_0| on the contact: rounding, no drift.
+    static constexpr double kRoundingFloor = 1e-12;
     static constexpr int kSolutions = 3;
 
     explicit PressureDrift(std::size_t n); // n elements per field

@@ -277,6 +277,34 @@ void warm_drift_repeats_and_stays_short(void**)
                double(products) / steps, double(normal_products) / steps);
     assert_true(double(products) / steps <= 33.2);
     assert_true(double(normal_products) / steps <= 9.25 * 1.05);
+
+    // Three more steps: a leap of the gap (5 % deeper at once, 30 steps'
+    // drift), the secant step taken however long (20 products of the normal
+    // problem; from the last pressure 40); the height alone raised by
+    // 0.2 um (the pressure the same: 2); the gap 6 % deeper, where the
+    // newest difference is rounding and left out (the secant step along
+    // the one before it: 18). Each step gives the cold answer; each one's
+    // products bounded 5 % above.
+    const struct Leap {
+        double scale, raise;
+        int products;
+    } leaps[] = {{1.05, 0.0, 20}, {1.05, 2e-7, 2}, {1.06, 0.0, 18}};
+    for (const Leap& l : leaps) {
+        for (size_t q = 0; q < h.size(); ++q) h[q] = s.h[q] * l.scale + l.raise;
+        const cw::SolveTotals ta = a.solve(in, cw::SolveMode::forces_only);
+        const cw::SolveTotals tb = b.solve(in, cw::SolveMode::forces_only);
+        assert_memory_equal(&ta.Fx, &tb.Fx, sizeof(double));
+        const int normal = a.gap_model()->info().normal_products;
+        cw::Solver cold(g);
+        cw::ContactInput ic = in;
+        ic.warm_start = false;
+        const cw::SolveTotals tc = cold.solve(ic, cw::SolveMode::forces_only);
+        assert_close(ta.approach, tc.approach, 1e-9, 0.0);
+        assert_close(ta.p_max, tc.p_max, 1e-8, 0.0);
+        assert_close(ta.Fx, tc.Fx, 0.0, 1e-6 * in.mu * in.normal_force);
+        if (getenv("CW_VERBOSE")) printf("  %d products of the normal problem\n", normal);
+        assert_true(normal <= l.products * 1.05);
+    }
 }
 
 // No contact (approach below the gap, no load), no friction, no creepage;
