@@ -13,8 +13,8 @@
 //             step (xi_x, xi_y, phi each x (1 + 0.1 sin(2 pi k/100 + offset)))
 //             with the gap fixed (the normal solution is kept), and with the
 //             gap drifting too (h x (1 + 0.01 sin(2 pi k/100)): the normal
-//             problem re-solved from the last pressure); FFT products per step
-//             of each
+//             problem re-solved from the last pressures); FFT products per
+//             step of each, and of the normal problem with the gap drifting
 //  semi-Hertz the fast normal method alone, N prescribed (per call)
 // and a second table, FASTSIM on the gap grid with the semi-Hertzian normal
 // method (the fast model, gap_fastsim_model.hpp): per solve on one solver,
@@ -231,11 +231,11 @@ int main(int argc, char** argv)
 #endif
     std::printf("\n\n| shape | cells | contact elements | patches | cold ms | warm ms (gap fixed) | "
                 "warm ms (gap drifting) | warm FFT products/step (fixed, drifting) | "
-                "semi-Hertz normal us |");
+                "normal FFT products/step (gap drifting) | semi-Hertz normal us |");
 #ifdef CW_BENCH_CONTACT
     std::printf(" CONTACT ms | CONTACT / cold | CONTACT / warm (gap drifting) |");
 #endif
-    std::printf("\n|---|---:|---:|---:|---:|---:|---:|---:|---:|");
+    std::printf("\n|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|");
 #ifdef CW_BENCH_CONTACT
     std::printf("---:|---:|---:|");
 #endif
@@ -272,6 +272,7 @@ int main(int argc, char** argv)
         const int steps = quick ? 20 : 100;
         double warm_fixed = 1e300, warm_moving = 1e300;
         double products[2] = {0, 0}; // FFT products per warm step: gap fixed, drifting
+        double normal_products = 0;  // the normal problem's, gap drifting
         std::vector<double> h = s.h;
         for (int run = 0; run < (quick ? 1 : 3); ++run)
             for (int moving = 0; moving < 2; ++moving) {
@@ -281,7 +282,7 @@ int main(int argc, char** argv)
                 w.gap = h.data();
                 h = s.h;
                 solver.solve(w, cw::SolveMode::full);
-                long count = 0;
+                long count = 0, normal_count = 0;
                 const double t0 = thread_seconds();
                 for (int k = 1; k <= steps; ++k) {
                     const double a = 2.0 * 3.14159265358979323846 * k / 100.0;
@@ -292,9 +293,11 @@ int main(int argc, char** argv)
                         for (size_t q = 0; q < h.size(); ++q) h[q] = s.h[q] * (1.0 + 0.01 * std::sin(a));
                     solver.solve(w, cw::SolveMode::full);
                     count += solver.gap_model()->info().products;
+                    normal_count += solver.gap_model()->info().normal_products;
                 }
                 const double per = (thread_seconds() - t0) / steps;
                 products[moving] = double(count) / steps;
+                if (moving) normal_products = double(normal_count) / steps;
                 (moving ? warm_moving : warm_fixed) = std::min(moving ? warm_moving : warm_fixed, per);
             }
         // The semi-Hertzian method alone.
@@ -309,10 +312,10 @@ int main(int argc, char** argv)
                          s.approach_given ? s.approach : s.normal_force, p.data());
             fast = std::min(fast, (thread_seconds() - t0) / reps);
         }
-        std::printf("| %s | %d x %d | %d | %d | %s | %s | %s | %.1f, %.1f | %s |", id.c_str(), s.nx,
-                    s.ny, t.n_contact, t.n_patches, sig3(cold * 1e3).c_str(),
+        std::printf("| %s | %d x %d | %d | %d | %s | %s | %s | %.1f, %.1f | %.1f | %s |", id.c_str(),
+                    s.nx, s.ny, t.n_contact, t.n_patches, sig3(cold * 1e3).c_str(),
                     sig3(warm_fixed * 1e3).c_str(), sig3(warm_moving * 1e3).c_str(), products[0],
-                    products[1], sig3(fast * 1e6).c_str());
+                    products[1], normal_products, sig3(fast * 1e6).c_str());
 #ifdef CW_BENCH_CONTACT
         contact_gap_case cc{};
         cc.nx = s.nx;

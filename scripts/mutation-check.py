@@ -409,6 +409,28 @@ GAP_MUTANTS = [
          tests=GAP, require=["test_nonhertz_fastsim"]),
 ]
 MUTANTS += GAP_MUTANTS
+# The exact normal problem's warm solves on a gap grid (core/normal/gap_normal.cpp,
+# pressure_drift.cpp, normal_problem.cpp): caught by the drift prediction on linear
+# fields and the warm normal solves' products along a drifting gap
+# (test_nonhertz_parts), and the exact model's warm drift on a patch (test_nonhertz_model).
+WARM_NORMAL = ["test_nonhertz_parts", "test_nonhertz_model"]
+MUTANTS += [
+    dict(id="normal-drift-off", what="the normal problem's warm start is the last pressure",
+         file="core/normal/pressure_drift.cpp",
+         old="        start[k] = p0[k] + g[0] * (p1[k] - p0[k]) + g[1] * (p2[k] - p0[k]);",
+         new="        start[k] = p0[k];", tests=WARM_NORMAL),
+    dict(id="normal-drift-mean", what="the drift's fit keeps the gap's mean with the force prescribed",
+         file="core/normal/pressure_drift.cpp",
+         old="    if (force) {", new="    if (false) {", tests=WARM_NORMAL),
+    dict(id="normal-warm-loose-passes", what="a warm normal solve takes the loose first passes",
+         file="core/normal/gap_normal.cpp",
+         old="                                       warm ? kNormalTolerance : kNormalFirstTolerance);",
+         new="                                       kNormalFirstTolerance);", tests=WARM_NORMAL),
+    dict(id="normal-share-product-again", what="a pass's first residual takes the share's product again",
+         file="core/normal/normal_problem.cpp",
+         old="    if (!u_current) set_product(conv, q_, u_, false);",
+         new="    set_product(conv, q_, u_, false);", tests=WARM_NORMAL),
+]
 # The solved-contact view's one export (core/contact/solved_contact.*,
 # solved_strips.cpp): every model's fields read through it.
 VIEW = EXACT + GAP + ["test_core_symmetry", "test_capi_solver"]

@@ -321,6 +321,7 @@ SolveTotals GapExactModel::solve(const ContactInput& in, SolveMode mode)
     const bool warm = in.warm_start && had_previous;
     const GapNormalInfo& ni = normal_.solve(in, warm);
     info_.normal_iterations = ni.normal_iterations;
+    info_.normal_products = ni.normal_products;
     info_.semi_hertz_iterations = ni.semi_hertz_iterations;
     info_.normal_reused = ni.reused;
     const std::vector<double>& pressure = normal_.pressure();

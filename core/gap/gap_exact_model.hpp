@@ -54,6 +54,7 @@ namespace creepwork {
 // problem's (normal/gap_normal.hpp).
 struct GapExactSolveInfo : TangentialInfo {
     int normal_iterations = 0;     // conjugate-gradient iterations of the normal problem
+    int normal_products = 0;       // its FFT products (on its contact set's box or the grid)
     int semi_hertz_iterations = 0; // force evaluations of the semi-Hertzian method
     bool normal_reused = false;    // the last normal solution was kept (same gap and load)
 };

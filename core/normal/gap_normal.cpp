@@ -33,7 +33,8 @@ constexpr double kForceByApproachTolerance = 1e-6;
 
 GapNormal::GapNormal(const GridSpec& grid, GapNormalOptions options)
     : options_(options), nx_(grid.nx), ny_(grid.ny), dx_(grid.dx), dy_(grid.dy),
-      semi_hertz_(grid.nx, grid.ny)
+      semi_hertz_(grid.nx, grid.ny),
+      drift_(options.warm ? static_cast<size_t>(grid.nx) * grid.ny : 0)
 {
     if (!options_.half_space_on_first_use) prepare_half_space();
     const size_t n = static_cast<size_t>(nx_) * ny_;
@@ -86,7 +87,12 @@ const GapNormalInfo& GapNormal::solve(const ContactInput& in, bool warm)
     const bool force = in.normal_load == NormalLoad::force;
     const double* gap = rolling_gap(in);
     const bool from_last = warm && exact && held_.loaded && held_.method == NormalMethod::exact;
-    if (from_last) start_from_last(in);
+    // The drift's history holds one problem: the last one solved, if it is in's.
+    const bool same_problem = from_last && held_.direction == in.rolling_direction &&
+                              held_.G == in.G && held_.nu == in.nu &&
+                              held_.load == in.normal_load;
+    if (!same_problem) drift_.clear();
+    if (from_last) start_from_last(in, gap);
     if (force && in.normal_force == 0.0) {
         std::fill(pressure_.begin(), pressure_.end(), 0.0);
         const size_t n = static_cast<size_t>(nx_) * ny_;
@@ -102,9 +108,15 @@ const GapNormalInfo& GapNormal::solve(const ContactInput& in, bool warm)
             if (exact)
                 for (size_t k = 0; k < pressure_.size(); ++k) start_[k] = pressure_[k] / in.G;
         }
-        if (exact) approach_ = solve_half_space(in, gap);
+        if (exact) approach_ = solve_half_space(in, gap, from_last);
     }
-    if (options_.warm) hold(in);
+    if (options_.warm) {
+        hold(in);
+        if (exact && held_.loaded)
+            drift_.remember(gap, approach_, pressure_);
+        else
+            drift_.clear();
+    }
     return info_;
 }
 
@@ -119,16 +131,21 @@ const double* GapNormal::rolling_gap(const ContactInput& in)
 }
 
 // The last pressure as the half-space problem's start, mirrored if the
-// rolling direction changed.
-void GapNormal::start_from_last(const ContactInput& in)
+// rolling direction changed, or predicted along the gap's drift.
+void GapNormal::start_from_last(const ContactInput& in, const double* gap)
 {
+    if (drift_.count() >= 2) {
+        drift_.predict(gap, in.normal_load == NormalLoad::force, in.approach, start_.data());
+        for (double& v : start_) v /= in.G;
+        return;
+    }
     const bool same = held_.direction == in.rolling_direction;
     for (int j = 0; j < ny_; ++j)
         for (int i = 0; i < nx_; ++i)
             start_[i + nx_ * j] = pressure_[(same ? i : nx_ - 1 - i) + nx_ * j] / in.G;
 }
 
-double GapNormal::solve_half_space(const ContactInput& in, const double* gap)
+double GapNormal::solve_half_space(const ContactInput& in, const double* gap, bool warm)
 {
     const size_t n = static_cast<size_t>(nx_) * ny_;
     const bool force = in.normal_load == NormalLoad::force;
@@ -136,10 +153,13 @@ double GapNormal::solve_half_space(const ContactInput& in, const double* gap)
     zero_outside_extents_ = false; // the half-space pressure overwrites it below
     for (size_t k = 0; k < n; ++k) gap_in_dx_[k] = gap[k] / dx_;
     const double value = force ? in.normal_force / (in.G * dx_ * dy_) : in.approach / dx_;
+    // A warm start's contact set is nearly the solution's: no loose passes.
     const NormalSolveInfo ni =
         half_space_problem().solve_gap(conv(), gap_in_dx_.data(), start_.data(), force, value,
-                              kNormalTolerance, kNormalMaxIterations, kNormalFirstTolerance);
+                                       kNormalTolerance, kNormalMaxIterations,
+                                       warm ? kNormalTolerance : kNormalFirstTolerance);
     info_.normal_iterations = ni.iterations;
+    info_.normal_products = ni.products;
     if (!ni.converged)
         throw Error(ErrorKind::not_converged,
                     "the normal problem on the gap did not converge (residual " +

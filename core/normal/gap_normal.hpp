@@ -3,7 +3,9 @@
 // normal force or the approach prescribed, by the method the input names --
 //  - NormalMethod::exact: Kalker's half-space problem (normal_problem.hpp,
 //    solve_gap), started from the semi-Hertzian pressure, or, warm, from the
-//    last solution (mirrored when the rolling direction changed);
+//    last solution (mirrored when the rolling direction changed), predicted
+//    along the gap's drift once two solutions of the same problem are known
+//    (pressure_drift.hpp);
 //  - NormalMethod::semi_hertz: the semi-Hertzian method alone
 //    (semi_hertz.hpp; the fast path);
 // N = 0 gives no pressure and the approach where the surfaces just touch.
@@ -25,6 +27,7 @@
 #include "contact/params.hpp"
 #include "halfspace/grid_convolution.hpp"
 #include "normal/normal_problem.hpp"
+#include "normal/pressure_drift.hpp"
 #include "normal/semi_hertz.hpp"
 #include "simd/kernel_isa.hpp"
 
@@ -58,6 +61,7 @@ struct GapNormalOptions {
 struct GapNormalInfo {
     int normal_iterations = 0;     // conjugate-gradient iterations of the half-space problem
     int semi_hertz_iterations = 0; // force evaluations of the semi-Hertzian method
+    int normal_products = 0;       // FFT products of the half-space problem
     bool reused = false;           // a warm solve kept the last solution
 };
 
@@ -117,9 +121,12 @@ public:
 private:
     bool holds(const ContactInput& in) const; // the held solution is in's
     const double* rolling_gap(const ContactInput& in); // in's gap, rolling frame
-    void start_from_last(const ContactInput& in);      // start_ from pressure_
-    // The half-space problem from start_; returns the approach [m].
-    double solve_half_space(const ContactInput& in, const double* gap);
+    // start_ from pressure_, or predicted along the gap's drift (gap: in's,
+    // rolling frame).
+    void start_from_last(const ContactInput& in, const double* gap);
+    // The half-space problem from start_ (warm: a warm start's); returns
+    // the approach [m].
+    double solve_half_space(const ContactInput& in, const double* gap, bool warm);
     void hold(const ContactInput& in);
     GridConvolution& conv()
     {
@@ -160,6 +167,8 @@ private:
         int direction = 1;
     } held_;
     std::vector<double> held_gap_;
+    // The last exact solutions of the held problem (options.warm).
+    PressureDrift drift_;
 };
 
 } // namespace creepwork

@@ -34,6 +34,7 @@ void NormalProblem::fit_box(GridConvolution& conv)
 void NormalProblem::set_product(GridConvolution& conv, const std::vector<double>& in,
                                 std::vector<double>& out, bool inverse)
 {
+    ++products_;
     if (!box_) {
         if (inverse)
             conv.apply_normal_inverse(in.data(), out.data());
@@ -57,6 +58,12 @@ void NormalProblem::set_product(GridConvolution& conv, const std::vector<double>
                 box_out_[i + static_cast<size_t>(box_nx_) * j];
 }
 
+void NormalProblem::grid_product(GridConvolution& conv)
+{
+    ++products_;
+    conv.apply_normal(q_.data(), u_.data());
+}
+
 void NormalProblem::project(std::vector<double>& v) const
 {
     double mean = 0.0;
@@ -69,8 +76,8 @@ void NormalProblem::project(std::vector<double>& v) const
 // Projected preconditioned CG for A q + h = pen on the active set, with
 // sum q fixed (the mean of the residual is the approach's share) or with
 // pen fixed (then the residual is only restricted to the set).
-bool NormalProblem::conjugate_gradients(GridConvolution& conv, bool fixed_sum, double target,
-                                        double tolerance, int max_iterations,
+bool NormalProblem::conjugate_gradients(GridConvolution& conv, bool fixed_sum, bool u_current,
+                                        double target, double tolerance, int max_iterations,
                                         NormalSolveInfo& info)
 {
     auto restrict_to_set = [&](std::vector<double>& v) {
@@ -80,7 +87,7 @@ bool NormalProblem::conjugate_gradients(GridConvolution& conv, bool fixed_sum, d
             for (int k = 0; k < n_; ++k)
                 if (!active_[k]) v[k] = 0.0;
     };
-    set_product(conv, q_, u_, false);
+    if (!u_current) set_product(conv, q_, u_, false);
     if (fixed_sum)
         for (int k = 0; k < n_; ++k) r_[k] = active_[k] ? -(h_[k] + u_[k]) : 0.0;
     else
@@ -196,6 +203,7 @@ void NormalProblem::active_set(GridConvolution& conv, bool fixed_sum, double loa
                                int max_iterations, NormalSolveInfo& info)
 {
     double pass_tolerance = first_tolerance; // until the contact set settles
+    products_ = 0;
     n_active_ = 0;
     for (int k = 0; k < n_; ++k) {
         active_[k] = q_[k] > 0.0;
@@ -224,10 +232,11 @@ void NormalProblem::active_set(GridConvolution& conv, bool fixed_sum, double loa
             target = std::max(std::fabs(pen_ - h_floor), 1e-300);
             if (box_) fit_box(conv);
         }
-        if (!conjugate_gradients(conv, fixed_sum, target, pass_tolerance, max_iterations, info))
+        if (!conjugate_gradients(conv, fixed_sum, fixed_sum, target, pass_tolerance,
+                                 max_iterations, info))
             break;
 
-        conv.apply_normal(q_.data(), u_.data());
+        grid_product(conv);
         if (fixed_sum) {
             pen = 0.0;
             for (int k = 0; k < n_; ++k)
@@ -272,6 +281,7 @@ void NormalProblem::active_set(GridConvolution& conv, bool fixed_sum, double loa
         for (int k = 0; k < n_ && info.converged; ++k)
             info.converged = h_[k] - pen_ >= -tolerance * std::fabs(pen_ - h_floor);
     }
+    info.products = products_;
     // A failed solve leaves no start for the next one.
     n_contact_ = 0;
     for (int k = 0; k < n_; ++k) {

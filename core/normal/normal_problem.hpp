@@ -40,6 +40,7 @@ namespace creepwork {
 struct NormalSolveInfo {
     int iterations = 0;      // conjugate-gradient iterations (each two FFT products)
     int active_set_passes = 0;
+    int products = 0;        // FFT products, on the contact set's box or the whole grid
     double residual = 0;     // final max |gap| on the contact set, relative to the approach
     bool converged = false;
 };
@@ -99,13 +100,16 @@ private:
     void active_set(GridConvolution& conv, bool fixed_sum, double load, double h_floor,
                     double tolerance, double first_tolerance, int max_iterations,
                     NormalSolveInfo& info);
-    bool conjugate_gradients(GridConvolution& conv, bool fixed_sum, double target,
+    // u_current: u_ holds A q_ where it is read (the pass just took it).
+    bool conjugate_gradients(GridConvolution& conv, bool fixed_sum, bool u_current, double target,
                              double tolerance, int max_iterations, NormalSolveInfo& info);
     void project(std::vector<double>& v) const; // zero mean on the set, zero off it
     // out = A in (inverse: the preconditioner) where out is read: on the
     // contact set's box with box_, else on the whole grid.
+    // Counted in products_.
     void set_product(GridConvolution& conv, const std::vector<double>& in,
                      std::vector<double>& out, bool inverse);
+    void grid_product(GridConvolution& conv); // u_ = A q_ on the whole grid, counted
     void fit_box(GridConvolution& conv); // box_ to the bounding box of the set
 
     int n_, nx_;
@@ -117,6 +121,7 @@ private:
     int n_contact_ = 0;
     double pen_ = 0.0;
     double load_by_approach_ = 0.0;
+    int products_ = 0; // FFT products since the solve began
 };
 
 } // namespace creepwork

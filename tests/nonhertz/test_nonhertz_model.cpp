@@ -219,10 +219,11 @@ void warm_start_equals_cold_start(void**)
 // benchmark drifts them (times 1 + 0.1 sin(2 pi k / 100 + offset)) and the
 // gap with them (times 1 + 0.01 sin(2 pi k / 100)): every step within the
 // tolerance of a fresh cold solve, the same calls on another handle give
-// the same bits, and the start predicted along the drift keeps the steps
+// the same bits, and the starts predicted along the drift keep the steps
 // short: measured 31.6 FFT products per step over these 16 steps (an
 // element changes state almost every step on this patch: the error is
-// seldom extrapolated), bounded 5 % above.
+// seldom extrapolated), and the normal problem's 9.25 (started from the
+// last pressure alone: 20.4), each bounded 5 % above.
 void warm_drift_repeats_and_stays_short(void**)
 {
     const gapshapes::Shape& s = shape("N07_wide");
@@ -236,7 +237,7 @@ void warm_drift_repeats_and_stays_short(void**)
     a.solve(in, cw::SolveMode::forces_only);
     b.solve(in, cw::SolveMode::forces_only);
     const int steps = 16;
-    long products = 0;
+    long products = 0, normal_products = 0;
     for (int k = 1; k <= steps; ++k) {
         const double t = 2.0 * 3.14159265358979323846 * k / 100.0;
         in.xi_x = X * (1.0 + 0.1 * std::sin(t));
@@ -248,6 +249,7 @@ void warm_drift_repeats_and_stays_short(void**)
         const cw::GapExactSolveInfo& info = a.gap_model()->info();
         assert_true(info.warm && !info.retried_cold);
         products += info.products;
+        normal_products += info.normal_products;
         assert_memory_equal(&ta.Fx, &tb.Fx, sizeof(double));
         assert_memory_equal(&ta.Fy, &tb.Fy, sizeof(double));
         assert_memory_equal(&ta.Mz, &tb.Mz, sizeof(double));
@@ -264,10 +266,45 @@ void warm_drift_repeats_and_stays_short(void**)
             assert_close(ta.Fy, tc.Fy, 0.0, 1e-6 * muN);
             assert_close(ta.Mz, tc.Mz, 0.0, 1e-6 * muN * 1e-2);
             assert_int_equal(ta.n_slip, tc.n_slip);
+            // The normal problem to its tolerance (1e-10 of the depth).
+            assert_close(ta.approach, tc.approach, 1e-9, 0.0);
+            assert_close(ta.p_max, tc.p_max, 1e-8, 0.0);
+            assert_int_equal(ta.n_contact, tc.n_contact);
         }
     }
-    if (getenv("CW_VERBOSE")) printf("  FFT products per warm step: %.2f\n", double(products) / steps);
+    if (getenv("CW_VERBOSE"))
+        printf("  FFT products per warm step: %.2f, the normal problem's %.2f\n",
+               double(products) / steps, double(normal_products) / steps);
     assert_true(double(products) / steps <= 33.2);
+    assert_true(double(normal_products) / steps <= 9.25 * 1.05);
+
+    // Three more steps: a leap of the gap (5 % deeper at once, 30 steps'
+    // drift), the secant step taken however long (20 products of the normal
+    // problem; from the last pressure 40); the height alone raised by
+    // 0.2 um (the pressure the same: 2); the gap 6 % deeper, where the
+    // newest difference is rounding and left out (the secant step along
+    // the one before it: 18). Each step gives the cold answer; each one's
+    // products bounded 5 % above.
+    const struct Leap {
+        double scale, raise;
+        int products;
+    } leaps[] = {{1.05, 0.0, 20}, {1.05, 2e-7, 2}, {1.06, 0.0, 18}};
+    for (const Leap& l : leaps) {
+        for (size_t q = 0; q < h.size(); ++q) h[q] = s.h[q] * l.scale + l.raise;
+        const cw::SolveTotals ta = a.solve(in, cw::SolveMode::forces_only);
+        const cw::SolveTotals tb = b.solve(in, cw::SolveMode::forces_only);
+        assert_memory_equal(&ta.Fx, &tb.Fx, sizeof(double));
+        const int normal = a.gap_model()->info().normal_products;
+        cw::Solver cold(g);
+        cw::ContactInput ic = in;
+        ic.warm_start = false;
+        const cw::SolveTotals tc = cold.solve(ic, cw::SolveMode::forces_only);
+        assert_close(ta.approach, tc.approach, 1e-9, 0.0);
+        assert_close(ta.p_max, tc.p_max, 1e-8, 0.0);
+        assert_close(ta.Fx, tc.Fx, 0.0, 1e-6 * in.mu * in.normal_force);
+        if (getenv("CW_VERBOSE")) printf("  %d products of the normal problem\n", normal);
+        assert_true(normal <= l.products * 1.05);
+    }
 }
 
 // No contact (approach below the gap, no load), no friction, no creepage;
