@@ -409,6 +409,24 @@ GAP_MUTANTS = [
          tests=GAP, require=["test_nonhertz_fastsim"]),
 ]
 MUTANTS += GAP_MUTANTS
+# The half-space products' pruned transforms (core/halfspace/batched_fft.cpp):
+# a zero input taken as nonzero costs only time, a nonzero one dropped or an
+# output left unwritten changes every product: the pruned transforms against
+# the full ones bit for bit, the products against direct sums, CONTACT's rows.
+FFT = ["test_core_exact_parts", "test_core_exact_reference", "test_core_exact_model",
+       "test_nonhertz_contact", "test_nonhertz_model"]
+MUTANTS += [
+    dict(id="fft-prune-inputs", what="a pruned first stage drops the last nonzero input of a "
+         "sub-transform", file="core/halfspace/batched_fft.cpp",
+         old="        const int K = std::min(R, std::max(0, (nonzero - p0 + m - 1) / m));",
+         new="        const int K = std::min(R, std::max(0, (nonzero - p0) / m));",
+         tests=FFT, require=["test_core_exact_parts"]),
+    dict(id="fft-prune-outputs", what="a pruned last stage stores one output too few",
+         file="core/halfspace/batched_fft.cpp",
+         old="        const int J = std::min(R, std::max(0, (needed - q0 + s - 1) / s));",
+         new="        const int J = std::min(R, std::max(0, (needed - q0) / s));",
+         tests=FFT, require=["test_core_exact_parts"]),
+]
 # The solved-contact view's one export (core/contact/solved_contact.*,
 # solved_strips.cpp): every model's fields read through it.
 VIEW = EXACT + GAP + ["test_core_symmetry", "test_capi_solver"]

@@ -241,7 +241,7 @@ void GridConvolution::forward(int cols, int rows)
         std::fill(rows_im_.begin() + used, rows_im_.begin() + static_cast<size_t>(my_) * rc, 0.0);
     }
     fft_y_.transform(rows_re_.data(), rows_im_.data(), out_re_.data(), out_im_.data(),
-                     static_cast<int>(rc), false, work_.data());
+                     static_cast<int>(rc), false, work_.data(), rows);
     // Transpose [ky][i] -> [i][ky], zero columns i >= cols, then along x:
     // lines are the my rows ky (and sy_ - my zero ones), element i at
     // [i * sy_ + ky].
@@ -259,7 +259,7 @@ void GridConvolution::forward(int cols, int rows)
                   spec_im_.begin() + static_cast<size_t>(mx_) * sy_, 0.0);
     }
     fft_x_.transform(spec_re_.data(), spec_im_.data(), out_re_.data(), out_im_.data(),
-                     static_cast<int>(sy_), false, work_.data());
+                     static_cast<int>(sy_), false, work_.data(), cols);
 }
 
 // Zero the values lines ... stride - 1 of the first count elements (the
@@ -276,7 +276,7 @@ void GridConvolution::clear_padding(double* re, double* im, int count, size_t st
 void GridConvolution::inverse()
 {
     fft_x_.transform(back_re_.data(), back_im_.data(), out_re_.data(), out_im_.data(),
-                     static_cast<int>(sy_), true, work_.data());
+                     static_cast<int>(sy_), true, work_.data(), nx_);
     const size_t rc = line_stride(nx_);
     for (int ky = 0; ky < my_; ++ky)
         for (int i = 0; i < nx_; ++i) {
@@ -285,7 +285,7 @@ void GridConvolution::inverse()
         }
     clear_padding(back_re_.data(), back_im_.data(), my_, rc, nx_);
     fft_y_.transform(back_re_.data(), back_im_.data(), out_re_.data(), out_im_.data(),
-                     static_cast<int>(rc), true, work_.data());
+                     static_cast<int>(rc), true, work_.data(), ny_);
 }
 
 void GridConvolution::real_product(const double* p, double* u,
@@ -307,7 +307,8 @@ void GridConvolution::real_product(const double* p, double* u,
     const size_t used = static_cast<size_t>(ny_) * rc, total = static_cast<size_t>(my_) * rc;
     std::fill(rows_re_.begin() + used, rows_re_.begin() + total, 0.0);
     std::fill(rows_im_.begin() + used, rows_im_.begin() + total, 0.0);
-    fft_y_.transform(rows_re_.data(), rows_im_.data(), static_cast<int>(rc), false, work_.data());
+    fft_y_.transform(rows_re_.data(), rows_im_.data(), static_cast<int>(rc), false, work_.data(),
+                     ny_);
     // Separate the pair, Z = A + i B: A(k) = (Z(k) + conj Z(-k)) / 2,
     // B(k) = (Z(k) - conj Z(-k)) / 2i, for ky <= h, into [i][ky] (stride sh).
     for (int c = 0; c < nc; ++c)
@@ -331,14 +332,16 @@ void GridConvolution::real_product(const double* p, double* u,
     std::fill(spec_im_.begin() + static_cast<size_t>(nx_) * sh,
               spec_im_.begin() + static_cast<size_t>(mx_) * sh, 0.0);
     // Along x on the h + 1 lines, times the (real) kernel, and back.
-    fft_x_.transform(spec_re_.data(), spec_im_.data(), static_cast<int>(sh), false, work_.data());
+    fft_x_.transform(spec_re_.data(), spec_im_.data(), static_cast<int>(sh), false, work_.data(),
+                     nx_);
     for (int kx = 0; kx < mx_; ++kx)
         for (int ky = 0; ky <= h; ++ky) {
             const double k = spectrum[ky + static_cast<size_t>(my_) * kx];
             spec_re_[static_cast<size_t>(kx) * sh + ky] *= k;
             spec_im_[static_cast<size_t>(kx) * sh + ky] *= k;
         }
-    fft_x_.transform(spec_re_.data(), spec_im_.data(), static_cast<int>(sh), true, work_.data());
+    fft_x_.transform(spec_re_.data(), spec_im_.data(), static_cast<int>(sh), true, work_.data(),
+                     nx_);
     // Each column's y-spectrum is Hermitian (the column is real): complete it
     // and pair the columns again, W = T_2c + i T_2c+1, into [ky][c].
     for (int c = 0; c < nc; ++c) {
@@ -356,7 +359,8 @@ void GridConvolution::real_product(const double* p, double* u,
         }
     }
     clear_padding(rows_re_.data(), rows_im_.data(), my_, rc, nc);
-    fft_y_.transform(rows_re_.data(), rows_im_.data(), static_cast<int>(rc), true, work_.data());
+    fft_y_.transform(rows_re_.data(), rows_im_.data(), static_cast<int>(rc), true, work_.data(),
+                     ny_);
     for (int j = 0; j < ny_; ++j)
         for (int c = 0; c < nc; ++c) {
             const size_t k = j * rc + c;
