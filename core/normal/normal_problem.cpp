@@ -71,7 +71,7 @@ void NormalProblem::project(std::vector<double>& v) const
 // pen fixed (then the residual is only restricted to the set).
 bool NormalProblem::conjugate_gradients(GridConvolution& conv, bool fixed_sum, double target,
                                         double tolerance, int max_iterations,
-                                        NormalSolveInfo& info)
+                                        NormalSolveInfo& info, bool product_known)
 {
     auto restrict_to_set = [&](std::vector<double>& v) {
         if (fixed_sum)
@@ -80,7 +80,7 @@ bool NormalProblem::conjugate_gradients(GridConvolution& conv, bool fixed_sum, d
             for (int k = 0; k < n_; ++k)
                 if (!active_[k]) v[k] = 0.0;
     };
-    set_product(conv, q_, u_, false);
+    if (!product_known) set_product(conv, q_, u_, false);
     if (fixed_sum)
         for (int k = 0; k < n_; ++k) r_[k] = active_[k] ? -(h_[k] + u_[k]) : 0.0;
     else
@@ -224,7 +224,9 @@ void NormalProblem::active_set(GridConvolution& conv, bool fixed_sum, double loa
             target = std::max(std::fabs(pen_ - h_floor), 1e-300);
             if (box_) fit_box(conv);
         }
-        if (!conjugate_gradients(conv, fixed_sum, target, pass_tolerance, max_iterations, info))
+        // With the force prescribed, u_ = A q_ of this pass's q_ (the approach's scale).
+        if (!conjugate_gradients(conv, fixed_sum, target, pass_tolerance, max_iterations, info,
+                                 fixed_sum))
             break;
 
         conv.apply_normal(q_.data(), u_.data());

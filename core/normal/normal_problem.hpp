@@ -99,8 +99,10 @@ private:
     void active_set(GridConvolution& conv, bool fixed_sum, double load, double h_floor,
                     double tolerance, double first_tolerance, int max_iterations,
                     NormalSolveInfo& info);
+    // product_known: u_ already holds A q_ (on the set's box).
     bool conjugate_gradients(GridConvolution& conv, bool fixed_sum, double target,
-                             double tolerance, int max_iterations, NormalSolveInfo& info);
+                             double tolerance, int max_iterations, NormalSolveInfo& info,
+                             bool product_known);
     void project(std::vector<double>& v) const; // zero mean on the set, zero off it
     // out = A in (inverse: the preconditioner) where out is read: on the
     // contact set's box with box_, else on the whole grid.
