@@ -105,7 +105,10 @@ private:
     void inverse();
     void set_shift();
     void compute_spectra(); // the kernels' spectra for the FFT size
-    bool spectra_ready_ = false;
+    // The preconditioner's spectrum (apply_normal_inverse), made on its first
+    // use: a gap grid's whole-grid normal products never take it.
+    void compute_inverse_spectrum();
+    bool spectra_ready_ = false, inverse_ready_ = false;
     static void clear_padding(double* re, double* im, int count, size_t stride, int lines);
     void kernel_spectrum_pair(const std::vector<double>& k1, const std::vector<double>& k2,
                               std::vector<double>& s1, std::vector<double>& s2);
