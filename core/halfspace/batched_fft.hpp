@@ -42,6 +42,9 @@ public:
     // stages, as lengths 40 = 4 2 5 and 45 = 3 3 5 have). extent as above.
     void transform(const double* in_re, const double* in_im, double* out_re, double* out_im,
                    int lines, bool inverse, double* work, int extent = 1 << 30) const;
+    // Whether a forward transform with this extent reads its inputs from
+    // extent on (false: they need not be zeroed).
+    bool reads_beyond(int extent) const { return !pruned(0, false, extent); }
     // A cheap 2^a 3^b 5^c length >= n (at most 1.1 n; see the .cpp).
     static int good_size(int n);
     // The copy of the stages to run: best_kernel_isa() unless set (isa must

@@ -171,12 +171,30 @@ void GridConvolution::compute_spectra()
                 out[(k < 0 ? k + mx_ : k) + static_cast<size_t>(mx_) * (l < 0 ? l + my_ : l)] =
                     value(k, l);
     };
-    fill([&](int k, int l) { return 0.5 * (cf11(k, l) + cf22(k, l)); }, kern1_);
-    fill([&](int k, int l) { return cf33(k, l); }, kern2_);
+    // The same for a kernel even in both directions (a function of |k| and
+    // |l|, so the same bits): each value computed once, stored four times
+    // (2 ex < mx and 2 (ey - 1) < my: no two offsets share a cell).
+    auto fill_even = [&](auto value, std::vector<double>& out) {
+        std::fill(out.begin(), out.begin() + m, 0.0);
+        for (int l = 0; l <= ey - 1; ++l) {
+            const size_t r0 = static_cast<size_t>(mx_) * l,
+                         r1 = static_cast<size_t>(mx_) * (l == 0 ? 0 : my_ - l);
+            for (int k = 0; k <= ex; ++k) {
+                const double v = value(k, l);
+                const size_t c1 = k == 0 ? 0 : mx_ - k;
+                out[k + r0] = v;
+                out[c1 + r0] = v;
+                out[k + r1] = v;
+                out[c1 + r1] = v;
+            }
+        }
+    };
+    fill_even([&](int k, int l) { return 0.5 * (cf11(k, l) + cf22(k, l)); }, kern1_);
+    fill_even([&](int k, int l) { return cf33(k, l); }, kern2_);
     kernel_spectrum_pair(kern1_, kern2_, alpha_, k33_);
 
     if (use_ != ConvolutionUse::normal) {
-        fill([&](int k, int l) { return 0.5 * (cf11(k, l) - cf22(k, l)); }, kern1_);
+        fill_even([&](int k, int l) { return 0.5 * (cf11(k, l) - cf22(k, l)); }, kern1_);
         fill([&](int k, int l) { return cf12(k, l); }, kern2_);
         kernel_spectrum_pair(kern1_, kern2_, beta_re_, beta_im_);
     }
@@ -311,8 +329,10 @@ void GridConvolution::real_product(const double* p, double* u,
         }
     clear_padding(rows_re_.data(), rows_im_.data(), ny_, rc, nc);
     const size_t used = static_cast<size_t>(ny_) * rc, total = static_cast<size_t>(my_) * rc;
-    std::fill(rows_re_.begin() + used, rows_re_.begin() + total, 0.0);
-    std::fill(rows_im_.begin() + used, rows_im_.begin() + total, 0.0);
+    if (fft_y_.reads_beyond(ny_)) { // else the zero padding is never read
+        std::fill(rows_re_.begin() + used, rows_re_.begin() + total, 0.0);
+        std::fill(rows_im_.begin() + used, rows_im_.begin() + total, 0.0);
+    }
     // The transforms run out of place (rows_ -> out_ -> spec_ ... ): no copy
     // back after an odd number of stages (batched_fft.hpp).
     fft_y_.transform(rows_re_.data(), rows_im_.data(), out_re_.data(), out_im_.data(),
@@ -335,10 +355,12 @@ void GridConvolution::real_product(const double* p, double* u,
             }
         }
     clear_padding(spec_re_.data(), spec_im_.data(), nx_, sh, static_cast<int>(hl));
-    std::fill(spec_re_.begin() + static_cast<size_t>(nx_) * sh,
-              spec_re_.begin() + static_cast<size_t>(mx_) * sh, 0.0);
-    std::fill(spec_im_.begin() + static_cast<size_t>(nx_) * sh,
-              spec_im_.begin() + static_cast<size_t>(mx_) * sh, 0.0);
+    if (fft_x_.reads_beyond(nx_)) {
+        std::fill(spec_re_.begin() + static_cast<size_t>(nx_) * sh,
+                  spec_re_.begin() + static_cast<size_t>(mx_) * sh, 0.0);
+        std::fill(spec_im_.begin() + static_cast<size_t>(nx_) * sh,
+                  spec_im_.begin() + static_cast<size_t>(mx_) * sh, 0.0);
+    }
     // Along x on the h + 1 lines, times the (real) kernel, and back.
     fft_x_.transform(spec_re_.data(), spec_im_.data(), out_re_.data(), out_im_.data(),
                      static_cast<int>(sh), false, work_.data(), nx_);
