@@ -426,6 +426,18 @@ MUTANTS += [
          old="        const int J = std::min(R, std::max(0, (needed - q0 + s - 1) / s));",
          new="        const int J = std::min(R, std::max(0, (needed - q0) / s));",
          tests=FFT, require=["test_core_exact_parts"]),
+    dict(id="fft-even-kernel-mirror", what="an even kernel's mirrored column lands one cell short",
+         file="core/halfspace/grid_convolution.cpp",
+         old="        const size_t c1 = k == 0 ? 0 : mx_ - k;",
+         new="        const size_t c1 = k == 0 ? 0 : mx_ - k - 1;",
+         tests=FFT, require=["test_core_exact_parts"]),
+    # The normal problem's conjugate gradients start from the pass's product
+    # only with the force prescribed; with the approach prescribed u_ is stale.
+    dict(id="normal-stale-first-product", what="the normal problem's gradients reuse a stale "
+         "product with the approach prescribed", file="core/normal/normal_problem.cpp",
+         old="                                 fixed_sum))",
+         new="                                 true))",
+         tests=GAP + ["test_nonhertz_jacobian", "test_wheelrail_forces"]),
 ]
 # The solved-contact view's one export (core/contact/solved_contact.*,
 # solved_strips.cpp): every model's fields read through it.
