@@ -431,6 +431,11 @@ MUTANTS += [
          old="        const size_t c1 = k == 0 ? 0 : mx_ - k;",
          new="        const size_t c1 = k == 0 ? 0 : mx_ - k - 1;",
          tests=FFT, require=["test_core_exact_parts"]),
+    dict(id="fft-copied-spectra", what="the gap model's fine grid copies K33's spectrum for alpha",
+         file="core/halfspace/grid_convolution.cpp",
+         old="    std::copy(from.alpha_.begin(), from.alpha_.begin() + m, alpha_.begin());",
+         new="    std::copy(from.k33_.begin(), from.k33_.begin() + m, alpha_.begin());",
+         tests=FFT, require=["test_core_exact_parts", "test_nonhertz_contact"]),
     # The normal problem's conjugate gradients start from the pass's product
     # only with the force prescribed; with the approach prescribed u_ is stale.
     dict(id="normal-stale-first-product", what="the normal problem's gradients reuse a stale "

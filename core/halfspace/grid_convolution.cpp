@@ -100,7 +100,7 @@ bool GridConvolution::set_size(int nx, int ny)
     fft_x_.plan(mx_);
     fft_y_.plan(my_);
     set_shift();
-    spectra_ready_ = inverse_ready_ = false;
+    spectra_ready_ = inverse_ready_ = pair_copied_ = false;
     return true;
 }
 
@@ -136,7 +136,7 @@ bool GridConvolution::set_coefficients(double rho, double nu)
                            corner_work_.data());
     rho_ = rho;
     nu_ = nu;
-    spectra_ready_ = inverse_ready_ = false;
+    spectra_ready_ = inverse_ready_ = pair_copied_ = false;
     return true;
 }
 
@@ -150,7 +150,7 @@ bool GridConvolution::copy_coefficients(const GridConvolution& from)
     }
     rho_ = from.rho_;
     nu_ = from.nu_;
-    spectra_ready_ = inverse_ready_ = false;
+    spectra_ready_ = inverse_ready_ = pair_copied_ = false;
     return true;
 }
 
@@ -189,15 +189,32 @@ void GridConvolution::compute_spectra()
             }
         }
     };
-    fill_even([&](int k, int l) { return 0.5 * (cf11(k, l) + cf22(k, l)); }, kern1_);
-    fill_even([&](int k, int l) { return cf33(k, l); }, kern2_);
-    kernel_spectrum_pair(kern1_, kern2_, alpha_, k33_);
+    if (!pair_copied_) {
+        fill_even([&](int k, int l) { return 0.5 * (cf11(k, l) + cf22(k, l)); }, kern1_);
+        fill_even([&](int k, int l) { return cf33(k, l); }, kern2_);
+        kernel_spectrum_pair(kern1_, kern2_, alpha_, k33_);
+    }
 
     if (use_ != ConvolutionUse::normal) {
         fill_even([&](int k, int l) { return 0.5 * (cf11(k, l) - cf22(k, l)); }, kern1_);
         fill([&](int k, int l) { return cf12(k, l); }, kern2_);
         kernel_spectrum_pair(kern1_, kern2_, beta_re_, beta_im_);
     }
+}
+
+bool GridConvolution::copy_pair_spectra(const GridConvolution& from)
+{
+    // The spectra depend on the FFT size, the largest field (the kernels'
+    // extent, compute_spectra) and the coefficients only.
+    if (pair_ready() || !from.pair_ready() || from.mx_ != mx_ || from.my_ != my_ ||
+        from.nx_max_ != nx_max_ || from.ny_max_ != ny_max_ || from.rho_ != rho_ ||
+        from.nu_ != nu_)
+        return false;
+    const size_t m = static_cast<size_t>(mx_) * my_;
+    std::copy(from.alpha_.begin(), from.alpha_.begin() + m, alpha_.begin());
+    std::copy(from.k33_.begin(), from.k33_.begin() + m, k33_.begin());
+    pair_copied_ = true;
+    return true;
 }
 
 void GridConvolution::compute_inverse_spectrum()

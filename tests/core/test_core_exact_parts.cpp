@@ -211,6 +211,56 @@ void products_match_direct_sums(void**)
     }
 }
 
+// A tangential convolution given the spectra of a normal one (the gap
+// model's fine grid from the normal problem's box products): the products
+// are bitwise those of a convolution that made its own, and nothing is
+// copied from a convolution of another FFT size or other coefficients.
+void copied_spectra_give_the_same_products(void**)
+{
+    std::mt19937 gen(13);
+    std::uniform_real_distribution<double> U(-1.0, 1.0);
+    const int nx = 24, ny = 22, bx = 19, by = 17;
+    const double rho = 0.8, nu = 0.28;
+    cw::GridConvolution whole(nx, ny, cw::ConvolutionUse::normal);
+    whole.set_coefficients(rho, nu);
+    cw::GridConvolution box(nx, ny, cw::ConvolutionUse::normal);
+    box.set_size(bx, by);
+    box.copy_coefficients(whole);
+    std::vector<double> p(bx * by), u(bx * by);
+    for (double& v : p) v = U(gen);
+    box.apply_normal(p.data(), u.data()); // makes its spectra
+    cw::GridConvolution own(nx, ny, cw::ConvolutionUse::tangential),
+        copied(nx, ny, cw::ConvolutionUse::tangential);
+    for (cw::GridConvolution* c : {&own, &copied}) {
+        c->set_size(bx, by);
+        c->copy_coefficients(whole);
+    }
+    // Not from a convolution without spectra, of another size or material.
+    cw::GridConvolution fresh(nx, ny, cw::ConvolutionUse::normal);
+    fresh.set_size(bx, by);
+    fresh.copy_coefficients(whole);
+    assert_false(copied.copy_pair_spectra(fresh));
+    cw::GridConvolution other_size(nx, ny, cw::ConvolutionUse::normal);
+    other_size.set_size(bx - 4, by);
+    other_size.copy_coefficients(whole);
+    other_size.apply_normal(p.data(), u.data());
+    assert_false(copied.copy_pair_spectra(other_size));
+    cw::GridConvolution other_nu(nx, ny, cw::ConvolutionUse::normal);
+    other_nu.set_size(bx, by);
+    other_nu.set_coefficients(rho, 0.3);
+    other_nu.apply_normal(p.data(), u.data());
+    assert_false(copied.copy_pair_spectra(other_nu));
+    assert_true(copied.copy_pair_spectra(box));
+    assert_false(copied.copy_pair_spectra(box)); // has them now
+    std::vector<C> z(bx * by), s_own(bx * by), s_copied(bx * by);
+    for (C& v : z) v = C(U(gen), U(gen));
+    for (bool steady : {true, false}) {
+        own.apply_tangential(z.data(), s_own.data(), steady);
+        copied.apply_tangential(z.data(), s_copied.data(), steady);
+        assert_memory_equal(s_own.data(), s_copied.data(), s_own.size() * sizeof(C));
+    }
+}
+
 void local_friction_solves_coulomb(void**)
 {
     std::mt19937 gen(5);
@@ -334,6 +384,7 @@ int main()
         cmocka_unit_test(pruned_fft_gives_the_full_bits),
         cmocka_unit_test(coefficients_match_contact_form),
         cmocka_unit_test(products_match_direct_sums),
+        cmocka_unit_test(copied_spectra_give_the_same_products),
         cmocka_unit_test(local_friction_solves_coulomb),
         cmocka_unit_test(history_predicts_a_drift),
         cmocka_unit_test(history_extrapolates_the_error),
