@@ -98,6 +98,16 @@ Inputs creepages_of(const std::string& id)
     return in;
 }
 
+// The shape named id, or nullptr (with a message).
+const gapshapes::Shape* find_shape(const std::vector<gapshapes::Shape>& shapes,
+                                   const std::string& id)
+{
+    for (const auto& s : shapes)
+        if (s.id == id) return &s;
+    std::fprintf(stderr, "no shape %s\n", id.c_str());
+    return nullptr;
+}
+
 // The benchmark's creepages of a shape (H20_hertz: the elliptic benchmark's).
 Inputs bench_creepages(const std::string& id)
 {
@@ -132,13 +142,8 @@ int fast_table(const std::vector<std::string>& ids, const std::vector<gapshapes:
                 "| shape | cells | contact elements | patches | semi-Hertz normal us | FASTSIM "
                 "forces us | FASTSIM full us |\n|---|---:|---:|---:|---:|---:|---:|\n");
     for (const std::string& id : ids) {
-        const gapshapes::Shape* sp = nullptr;
-        for (const auto& s : shapes)
-            if (s.id == id) sp = &s;
-        if (!sp) {
-            std::fprintf(stderr, "no shape %s\n", id.c_str());
-            return 2;
-        }
+        const gapshapes::Shape* sp = find_shape(shapes, id);
+        if (!sp) return 2;
         const gapshapes::Shape& s = *sp;
         const Inputs c = bench_creepages(id);
         cw::ContactInput in = gapshapes::contact_input(s);
@@ -180,13 +185,8 @@ int cold_table(const std::vector<std::string>& ids, const std::vector<gapshapes:
                int k_solves)
 {
     for (const std::string& id : ids) {
-        const gapshapes::Shape* sp = nullptr;
-        for (const auto& s : shapes)
-            if (s.id == id) sp = &s;
-        if (!sp) {
-            std::fprintf(stderr, "no shape %s\n", id.c_str());
-            return 2;
-        }
+        const gapshapes::Shape* sp = find_shape(shapes, id);
+        if (!sp) return 2;
         cw::ContactInput in = exact_input(*sp);
         cw::SolveTotals t;
         cw::GapExactSolveInfo info;
@@ -297,13 +297,8 @@ int main(int argc, char** argv)
 #endif
     std::printf("\n");
     for (const std::string& id : ids) {
-        const gapshapes::Shape* sp = nullptr;
-        for (const auto& s : shapes)
-            if (s.id == id) sp = &s;
-        if (!sp) {
-            std::fprintf(stderr, "no shape %s\n", id.c_str());
-            return 2;
-        }
+        const gapshapes::Shape* sp = find_shape(shapes, id);
+        if (!sp) return 2;
         const gapshapes::Shape& s = *sp;
         const Inputs c = bench_creepages(id);
         const cw::ContactInput in = exact_input(s);
