@@ -5,7 +5,8 @@
 // repeated: CONTACT recomputes everything on every call). Not a test: no
 // timed assertion anywhere (doc/performance.md has the table).
 //
-//   creepwork_bench_nonhertz [--contact-eps E] [--quick] [--fast] [--cases ID,ID...]
+//   creepwork_bench_nonhertz [--contact-eps E] [--quick] [--fast] [--cold-only K]
+//                            [--cases ID,ID...]
 //
 // Shapes from gap_shapes.hpp with the creepages of data/contact_cases.csv.
 //  cold       create a solver and solve once (CW_SOLVE_FULL): best of samples
@@ -21,7 +22,9 @@
 // forces only (CW_SOLVE_FORCES) and full (CW_SOLVE_FULL: the work maps),
 // best of three runs, beside the semi-Hertzian method alone in the same run
 // (the difference is the labelling, the patches' flexibilities, the march
-// and the totals). --fast prints only that table.
+// and the totals). --fast prints only that table. --cold-only K runs K cold
+// solves of each shape and prints their totals only (for a profiler such as
+// callgrind: nothing else runs).
 // Thread CPU time of the calling thread (CONTACT runs on it, one thread).
 // Run CONTACT with GLIBC_TUNABLES=glibc.malloc.trim_threshold=536870912:
 // glibc.malloc.mmap_threshold=33554432:glibc.malloc.top_pad=67108864 (it
@@ -95,6 +98,35 @@ Inputs creepages_of(const std::string& id)
     return in;
 }
 
+// The shape named id, or nullptr (with a message).
+const gapshapes::Shape* find_shape(const std::vector<gapshapes::Shape>& shapes,
+                                   const std::string& id)
+{
+    for (const auto& s : shapes)
+        if (s.id == id) return &s;
+    std::fprintf(stderr, "no shape %s\n", id.c_str());
+    return nullptr;
+}
+
+// The benchmark's creepages of a shape (H20_hertz: the elliptic benchmark's).
+Inputs bench_creepages(const std::string& id)
+{
+    return id == "H20_hertz" ? Inputs{6e-4, 3e-4, 0.2} : creepages_of(id);
+}
+
+// The exact model's cold input on a shape with its benchmark creepages.
+cw::ContactInput exact_input(const gapshapes::Shape& s)
+{
+    const Inputs c = bench_creepages(s.id);
+    cw::ContactInput in = gapshapes::contact_input(s);
+    in.model = cw::ModelKind::exact;
+    in.xi_x = c.xi_x;
+    in.xi_y = c.xi_y;
+    in.phi = c.phi;
+    in.warm_start = false;
+    return in;
+}
+
 std::string sig3(double v)
 {
     char b[32];
@@ -110,16 +142,10 @@ int fast_table(const std::vector<std::string>& ids, const std::vector<gapshapes:
                 "| shape | cells | contact elements | patches | semi-Hertz normal us | FASTSIM "
                 "forces us | FASTSIM full us |\n|---|---:|---:|---:|---:|---:|---:|\n");
     for (const std::string& id : ids) {
-        const gapshapes::Shape* sp = nullptr;
-        for (const auto& s : shapes)
-            if (s.id == id) sp = &s;
-        if (!sp) {
-            std::fprintf(stderr, "no shape %s\n", id.c_str());
-            return 2;
-        }
+        const gapshapes::Shape* sp = find_shape(shapes, id);
+        if (!sp) return 2;
         const gapshapes::Shape& s = *sp;
-        Inputs c = creepages_of(id);
-        if (id == "H20_hertz") c = {6e-4, 3e-4, 0.2};
+        const Inputs c = bench_creepages(id);
         cw::ContactInput in = gapshapes::contact_input(s);
         in.model = cw::ModelKind::fastsim;
         in.normal_method = cw::NormalMethod::semi_hertz;
@@ -153,12 +179,37 @@ int fast_table(const std::vector<std::string>& ids, const std::vector<gapshapes:
     return 0;
 }
 
+// K cold solves (create + solve, CW_SOLVE_FULL) of each shape, their totals
+// printed to all digits: nothing else runs (a profiler's view of the cold path).
+int cold_table(const std::vector<std::string>& ids, const std::vector<gapshapes::Shape>& shapes,
+               int k_solves)
+{
+    for (const std::string& id : ids) {
+        const gapshapes::Shape* sp = find_shape(shapes, id);
+        if (!sp) return 2;
+        cw::ContactInput in = exact_input(*sp);
+        cw::SolveTotals t;
+        cw::GapExactSolveInfo info;
+        for (int k = 0; k < k_solves; ++k) {
+            cw::Solver solver(gapshapes::grid_of(*sp));
+            t = solver.solve(in, cw::SolveMode::full);
+            info = solver.gap_model()->info();
+        }
+        std::printf("%s: Fx %.17g Fy %.17g Mz %.17g, %d contact, %d adhesion; %d grids, %d Newton "
+                    "steps, %d FFT products, %d normal CG iterations\n",
+                    id.c_str(), t.Fx, t.Fy, t.Mz, t.n_contact, t.n_adhesion, info.levels_used,
+                    info.newton_steps, info.products, info.normal_iterations);
+    }
+    return 0;
+}
+
 } // namespace
 
 int main(int argc, char** argv)
 {
     double contact_eps = 1e-8;
     bool quick = false, fast_only = false;
+    int cold_only = 0;
     std::vector<std::string> ids = {"N07_wide", "N04_crescent", "N01_hollow", "N03_three_lobes",
                                     "N06_flange_root", "H20_hertz"};
     for (int k = 1; k < argc; ++k) {
@@ -169,6 +220,8 @@ int main(int argc, char** argv)
             quick = true;
         else if (a == "--fast")
             fast_only = true;
+        else if (a == "--cold-only" && k + 1 < argc)
+            cold_only = std::max(std::atoi(argv[++k]), 1);
         else if (a == "--cases" && k + 1 < argc) {
             ids.clear();
             std::string list = argv[++k];
@@ -178,7 +231,9 @@ int main(int argc, char** argv)
                 p = q + 1;
             }
         } else {
-            std::fprintf(stderr, "usage: %s [--contact-eps E] [--quick] [--fast] [--cases ID,...]\n",
+            std::fprintf(stderr,
+                         "usage: %s [--contact-eps E] [--quick] [--fast] [--cold-only K] "
+                         "[--cases ID,...]\n",
                          argv[0]);
             return 2;
         }
@@ -216,6 +271,7 @@ int main(int argc, char** argv)
         shapes.push_back(h);
     }
     if (fast_only) return fast_table(ids, shapes, quick);
+    if (cold_only) return cold_table(ids, shapes, cold_only);
 #ifndef CW_BENCH_CONTACT
     (void)contact_eps; // read only when CONTACT runs side by side
 #endif
@@ -241,22 +297,11 @@ int main(int argc, char** argv)
 #endif
     std::printf("\n");
     for (const std::string& id : ids) {
-        const gapshapes::Shape* sp = nullptr;
-        for (const auto& s : shapes)
-            if (s.id == id) sp = &s;
-        if (!sp) {
-            std::fprintf(stderr, "no shape %s\n", id.c_str());
-            return 2;
-        }
+        const gapshapes::Shape* sp = find_shape(shapes, id);
+        if (!sp) return 2;
         const gapshapes::Shape& s = *sp;
-        Inputs c = creepages_of(id);
-        if (id == "H20_hertz") c = {6e-4, 3e-4, 0.2};
-        cw::ContactInput in = gapshapes::contact_input(s);
-        in.model = cw::ModelKind::exact;
-        in.xi_x = c.xi_x;
-        in.xi_y = c.xi_y;
-        in.phi = c.phi;
-        in.warm_start = false;
+        const Inputs c = bench_creepages(id);
+        const cw::ContactInput in = exact_input(s);
         const cw::GridSpec g = gapshapes::grid_of(s);
 
         // Cold: create + solve, best of samples.

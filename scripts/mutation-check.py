@@ -431,6 +431,41 @@ MUTANTS += [
          old="    if (!u_current) set_product(conv, q_, u_, false);",
          new="    set_product(conv, q_, u_, false);", tests=WARM_NORMAL),
 ]
+# The half-space products' pruned transforms (core/halfspace/batched_fft.cpp):
+# a zero input taken as nonzero costs only time, a nonzero one dropped or an
+# output left unwritten changes every product: the pruned transforms against
+# the full ones bit for bit, the products against direct sums, CONTACT's rows.
+FFT = ["test_core_exact_parts", "test_core_exact_reference", "test_core_exact_model",
+       "test_nonhertz_contact", "test_nonhertz_model"]
+MUTANTS += [
+    dict(id="fft-prune-inputs", what="a pruned first stage drops the last nonzero input of a "
+         "sub-transform", file="core/halfspace/batched_fft.cpp",
+         old="        const int K = std::min(R, std::max(0, (nonzero - p0 + m - 1) / m));",
+         new="        const int K = std::min(R, std::max(0, (nonzero - p0) / m));",
+         tests=FFT, require=["test_core_exact_parts"]),
+    dict(id="fft-prune-outputs", what="a pruned last stage stores one output too few",
+         file="core/halfspace/batched_fft.cpp",
+         old="        const int J = std::min(R, std::max(0, (needed - q0 + s - 1) / s));",
+         new="        const int J = std::min(R, std::max(0, (needed - q0) / s));",
+         tests=FFT, require=["test_core_exact_parts"]),
+    dict(id="fft-even-kernel-mirror", what="an even kernel's mirrored column lands one cell short",
+         file="core/halfspace/grid_convolution.cpp",
+         old="        const size_t c1 = k == 0 ? 0 : mx_ - k;",
+         new="        const size_t c1 = k == 0 ? 0 : mx_ - k - 1;",
+         tests=FFT, require=["test_core_exact_parts"]),
+    dict(id="fft-copied-spectra", what="the gap model's fine grid copies K33's spectrum for alpha",
+         file="core/halfspace/grid_convolution.cpp",
+         old="    std::copy(from.alpha_.begin(), from.alpha_.begin() + m, alpha_.begin());",
+         new="    std::copy(from.k33_.begin(), from.k33_.begin() + m, alpha_.begin());",
+         tests=FFT, require=["test_core_exact_parts", "test_nonhertz_contact"]),
+    # The normal problem's conjugate gradients start from the pass's product
+    # only with the force prescribed; with the approach prescribed u_ is stale.
+    dict(id="normal-stale-first-product", what="the normal problem's gradients reuse a stale "
+         "product with the approach prescribed", file="core/normal/normal_problem.cpp",
+         old="                                 fixed_sum))",
+         new="                                 true))",
+         tests=GAP + ["test_nonhertz_jacobian", "test_wheelrail_forces"]),
+]
 # The solved-contact view's one export (core/contact/solved_contact.*,
 # solved_strips.cpp): every model's fields read through it.
 VIEW = EXACT + GAP + ["test_core_symmetry", "test_capi_solver"]

@@ -200,6 +200,10 @@ void GapExactModel::set_box(const GridConvolution& coefficients)
     fine.conv.set_size(nx, ny);
     fine.tangential.set_size(nx, ny);
     fine.conv.copy_coefficients(coefficients);
+    // The normal problem's last products ran on this box (the contact set's):
+    // their spectra alpha and K33 are this one's.
+    if (const GridConvolution* box_conv = normal_.box_convolution())
+        fine.conv.copy_pair_spectra(*box_conv);
     fine.dx = grid_.dx;
     fine.dy = grid_.dy;
     n_levels_ = 1;

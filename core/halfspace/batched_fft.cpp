@@ -1,5 +1,6 @@
 #include "halfspace/batched_fft.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 
@@ -14,13 +15,20 @@ constexpr double kPi = 3.14159265358979323846;
 // One Stockham stage: sub-transforms of length n = r m with stride s, every
 // value a run of L contiguous lines. Decimation in frequency:
 //   y[s (r p + j) + q] = w_n^(p j) sum_k x[s (p + k m) + q] w_r^(j k).
-// Sign = -1 forward, +1 inverse (the sign of the exponent).
-template <int R, int Sign>
+// Sign = -1 forward, +1 inverse (the sign of the exponent). For the
+// sub-transforms p0 <= p < p1 and the values t0 <= t < t1 of each run.
+// K < R: the inputs k >= K are zero (a first stage, whose inputs beyond the
+// transform's nonzero ones are zero), taken as the constant 0.0, so the
+// compiler drops only what IEEE arithmetic leaves unchanged: the same bits
+// as reading zeros. J < R: only the outputs j < J are stored (a last stage,
+// whose other outputs the caller does not read).
+template <int R, int Sign, int K = R, int J = R>
 CREEPWORK_INLINE void stage(int m, int s, int L, const double* xr, const double* xi, double* yr,
-                            double* yi, const double* twr, const double* twi)
+                            double* yi, const double* twr, const double* twi, int p0, int p1,
+                            size_t t0, size_t t1)
 {
     const size_t run = static_cast<size_t>(s) * L; // contiguous values per (p, k)
-    for (int p = 0; p < m; ++p) {
+    for (int p = p0; p < p1; ++p) {
         double wr[R], wi[R];
         wr[0] = 1.0;
         wi[0] = 0.0;
@@ -33,39 +41,46 @@ CREEPWORK_INLINE void stage(int m, int s, int L, const double* xr, const double*
         double* br[R];
         double* bi[R];
         for (int k = 0; k < R; ++k) {
-            ar[k] = xr + (static_cast<size_t>(p) + static_cast<size_t>(k) * m) * run;
-            ai[k] = xi + (static_cast<size_t>(p) + static_cast<size_t>(k) * m) * run;
+            ar[k] = k < K ? xr + (static_cast<size_t>(p) + static_cast<size_t>(k) * m) * run
+                          : nullptr;
+            ai[k] = k < K ? xi + (static_cast<size_t>(p) + static_cast<size_t>(k) * m) * run
+                          : nullptr;
             br[k] = yr + (static_cast<size_t>(R) * p + k) * run;
             bi[k] = yi + (static_cast<size_t>(R) * p + k) * run;
         }
         const bool twiddled = p != 0;
-        for (size_t t = 0; t < run; ++t) {
+        for (size_t t = t0; t < t1; ++t) {
+            double vr[R], vi[R]; // the inputs, the zero ones as constants
+            for (int k = 0; k < R; ++k) {
+                vr[k] = k < K ? ar[k][t] : 0.0;
+                vi[k] = k < K ? ai[k][t] : 0.0;
+            }
             double ur[R], ui[R];
             if constexpr (R == 2) {
-                ur[0] = ar[0][t] + ar[1][t];
-                ui[0] = ai[0][t] + ai[1][t];
-                ur[1] = ar[0][t] - ar[1][t];
-                ui[1] = ai[0][t] - ai[1][t];
+                ur[0] = vr[0] + vr[1];
+                ui[0] = vi[0] + vi[1];
+                ur[1] = vr[0] - vr[1];
+                ui[1] = vi[0] - vi[1];
             } else if constexpr (R == 3) {
                 constexpr double h = 0.86602540378443864676; // sin(2 pi/3)
-                const double t1r = ar[1][t] + ar[2][t], t1i = ai[1][t] + ai[2][t];
-                const double t2r = ar[0][t] - 0.5 * t1r, t2i = ai[0][t] - 0.5 * t1i;
+                const double t1r = vr[1] + vr[2], t1i = vi[1] + vi[2];
+                const double t2r = vr[0] - 0.5 * t1r, t2i = vi[0] - 0.5 * t1i;
                 // Sign * i * h (a1 - a2)
-                const double t3r = -Sign * h * (ai[1][t] - ai[2][t]);
-                const double t3i = Sign * h * (ar[1][t] - ar[2][t]);
-                ur[0] = ar[0][t] + t1r;
-                ui[0] = ai[0][t] + t1i;
+                const double t3r = -Sign * h * (vi[1] - vi[2]);
+                const double t3i = Sign * h * (vr[1] - vr[2]);
+                ur[0] = vr[0] + t1r;
+                ui[0] = vi[0] + t1i;
                 ur[1] = t2r + t3r;
                 ui[1] = t2i + t3i;
                 ur[2] = t2r - t3r;
                 ui[2] = t2i - t3i;
             } else if constexpr (R == 4) {
-                const double t0r = ar[0][t] + ar[2][t], t0i = ai[0][t] + ai[2][t];
-                const double t1r = ar[0][t] - ar[2][t], t1i = ai[0][t] - ai[2][t];
-                const double t2r = ar[1][t] + ar[3][t], t2i = ai[1][t] + ai[3][t];
+                const double t0r = vr[0] + vr[2], t0i = vi[0] + vi[2];
+                const double t1r = vr[0] - vr[2], t1i = vi[0] - vi[2];
+                const double t2r = vr[1] + vr[3], t2i = vi[1] + vi[3];
                 // Sign * i * (a1 - a3)
-                const double t3r = -Sign * (ai[1][t] - ai[3][t]);
-                const double t3i = Sign * (ar[1][t] - ar[3][t]);
+                const double t3r = -Sign * (vi[1] - vi[3]);
+                const double t3i = Sign * (vr[1] - vr[3]);
                 ur[0] = t0r + t2r;
                 ui[0] = t0i + t2i;
                 ur[2] = t0r - t2r;
@@ -79,18 +94,18 @@ CREEPWORK_INLINE void stage(int m, int s, int L, const double* xr, const double*
                 constexpr double c2 = -0.80901699437494742410; // cos(4 pi/5)
                 constexpr double s1 = 0.95105651629515357212;  // sin(2 pi/5)
                 constexpr double s2 = 0.58778525229247312917;  // sin(4 pi/5)
-                const double t1r = ar[1][t] + ar[4][t], t1i = ai[1][t] + ai[4][t];
-                const double t2r = ar[2][t] + ar[3][t], t2i = ai[2][t] + ai[3][t];
-                const double t3r = ar[1][t] - ar[4][t], t3i = ai[1][t] - ai[4][t];
-                const double t4r = ar[2][t] - ar[3][t], t4i = ai[2][t] - ai[3][t];
-                const double b1r = ar[0][t] + c1 * t1r + c2 * t2r;
-                const double b1i = ai[0][t] + c1 * t1i + c2 * t2i;
-                const double b2r = ar[0][t] + c2 * t1r + c1 * t2r;
-                const double b2i = ai[0][t] + c2 * t1i + c1 * t2i;
+                const double t1r = vr[1] + vr[4], t1i = vi[1] + vi[4];
+                const double t2r = vr[2] + vr[3], t2i = vi[2] + vi[3];
+                const double t3r = vr[1] - vr[4], t3i = vi[1] - vi[4];
+                const double t4r = vr[2] - vr[3], t4i = vi[2] - vi[3];
+                const double b1r = vr[0] + c1 * t1r + c2 * t2r;
+                const double b1i = vi[0] + c1 * t1i + c2 * t2i;
+                const double b2r = vr[0] + c2 * t1r + c1 * t2r;
+                const double b2i = vi[0] + c2 * t1i + c1 * t2i;
                 const double d1r = s1 * t3r + s2 * t4r, d1i = s1 * t3i + s2 * t4i;
                 const double d2r = s2 * t3r - s1 * t4r, d2i = s2 * t3i - s1 * t4i;
-                ur[0] = ar[0][t] + t1r + t2r;
-                ui[0] = ai[0][t] + t1i + t2i;
+                ur[0] = vr[0] + t1r + t2r;
+                ui[0] = vi[0] + t1i + t2i;
                 // y1 = b1 + Sign i d1, y4 = b1 - Sign i d1; y2, y3 likewise with d2.
                 ur[1] = b1r - Sign * d1i;
                 ui[1] = b1i + Sign * d1r;
@@ -103,7 +118,7 @@ CREEPWORK_INLINE void stage(int m, int s, int L, const double* xr, const double*
             }
             br[0][t] = ur[0];
             bi[0][t] = ui[0];
-            for (int j = 1; j < R; ++j) {
+            for (int j = 1; j < J; ++j) {
                 if (twiddled) {
                     br[j][t] = ur[j] * wr[j] - ui[j] * wi[j];
                     bi[j][t] = ur[j] * wi[j] + ui[j] * wr[j];
@@ -121,11 +136,89 @@ CREEPWORK_INLINE void run_stage(int radix, int m, int s, int L, const double* xr
                                 const double* xi, double* yr, double* yi, const double* twr,
                                 const double* twi)
 {
+    const size_t run = static_cast<size_t>(s) * L;
     switch (radix) {
-    case 2: stage<2, Sign>(m, s, L, xr, xi, yr, yi, twr, twi); break;
-    case 3: stage<3, Sign>(m, s, L, xr, xi, yr, yi, twr, twi); break;
-    case 4: stage<4, Sign>(m, s, L, xr, xi, yr, yi, twr, twi); break;
-    default: stage<5, Sign>(m, s, L, xr, xi, yr, yi, twr, twi); break;
+    case 2: stage<2, Sign>(m, s, L, xr, xi, yr, yi, twr, twi, 0, m, 0, run); break;
+    case 3: stage<3, Sign>(m, s, L, xr, xi, yr, yi, twr, twi, 0, m, 0, run); break;
+    case 4: stage<4, Sign>(m, s, L, xr, xi, yr, yi, twr, twi, 0, m, 0, run); break;
+    default: stage<5, Sign>(m, s, L, xr, xi, yr, yi, twr, twi, 0, m, 0, run); break;
+    }
+}
+
+// A first stage (stride 1) whose inputs from nonzero on are zero: the
+// sub-transform p reads x[p + k m], nonzero for k < K(p) = ceil((nonzero -
+// p) / m) (at most R), which falls with p; each run of p with one K by the
+// stage with those inputs zero.
+template <int R, int Sign>
+CREEPWORK_INLINE void first_stage_radix(int m, int L, const double* xr, const double* xi,
+                                        double* yr, double* yi, const double* twr,
+                                        const double* twi, int nonzero)
+{
+    const size_t run = static_cast<size_t>(L);
+    int p0 = 0;
+    while (p0 < m) {
+        const int K = std::min(R, std::max(0, (nonzero - p0 + m - 1) / m));
+        // The last p with this K: p < nonzero - (K - 1) m (K >= 1), all the rest for K = 0.
+        const int p1 = K == 0 ? m : std::min(m, nonzero - (K - 1) * m);
+        switch (K) {
+        case 0: stage<R, Sign, 0>(m, 1, L, xr, xi, yr, yi, twr, twi, p0, p1, 0, run); break;
+        case 1: stage<R, Sign, 1>(m, 1, L, xr, xi, yr, yi, twr, twi, p0, p1, 0, run); break;
+        case 2:
+            if constexpr (R >= 2)
+                stage<R, Sign, (R >= 2 ? 2 : R)>(m, 1, L, xr, xi, yr, yi, twr, twi, p0, p1, 0,
+                                                 run);
+            break;
+        case 3:
+            if constexpr (R >= 3)
+                stage<R, Sign, (R >= 3 ? 3 : R)>(m, 1, L, xr, xi, yr, yi, twr, twi, p0, p1, 0,
+                                                 run);
+            break;
+        case 4:
+            if constexpr (R >= 4)
+                stage<R, Sign, (R >= 4 ? 4 : R)>(m, 1, L, xr, xi, yr, yi, twr, twi, p0, p1, 0,
+                                                 run);
+            break;
+        default:
+            stage<R, Sign>(m, 1, L, xr, xi, yr, yi, twr, twi, p0, p1, 0, run);
+            break;
+        }
+        p0 = p1;
+    }
+}
+
+// A last stage (m = 1, stride s = n / R) of which only the outputs
+// e = j s + q < needed are read: for each q, J(q) = ceil((needed - q) / s)
+// outputs (at most R), which falls with q; each run of q with one J by the
+// stage storing those only, and none where J(q) = 0.
+template <int R, int Sign>
+CREEPWORK_INLINE void last_stage_radix(int s, int L, const double* xr, const double* xi,
+                                       double* yr, double* yi, const double* twr,
+                                       const double* twi, int needed)
+{
+    int q0 = 0;
+    while (q0 < s) {
+        const int J = std::min(R, std::max(0, (needed - q0 + s - 1) / s));
+        if (J == 0) break;
+        const int q1 = std::min(s, needed - (J - 1) * s);
+        const size_t t0 = static_cast<size_t>(q0) * L, t1 = static_cast<size_t>(q1) * L;
+        switch (J) {
+        case 1: stage<R, Sign, R, 1>(1, s, L, xr, xi, yr, yi, twr, twi, 0, 1, t0, t1); break;
+        case 2:
+            stage<R, Sign, R, (R >= 2 ? 2 : R)>(1, s, L, xr, xi, yr, yi, twr, twi, 0, 1, t0, t1);
+            break;
+        case 3:
+            if constexpr (R >= 3)
+                stage<R, Sign, R, (R >= 3 ? 3 : R)>(1, s, L, xr, xi, yr, yi, twr, twi, 0, 1, t0,
+                                                    t1);
+            break;
+        case 4:
+            if constexpr (R >= 4)
+                stage<R, Sign, R, (R >= 4 ? 4 : R)>(1, s, L, xr, xi, yr, yi, twr, twi, 0, 1, t0,
+                                                    t1);
+            break;
+        default: stage<R, Sign>(1, s, L, xr, xi, yr, yi, twr, twi, 0, 1, t0, t1); break;
+        }
+        q0 = q1;
     }
 }
 
@@ -134,18 +227,41 @@ CREEPWORK_INLINE void run_stage(int radix, int m, int s, int L, const double* xr
 // vectorises the butterflies over the lines for the copy's ISA). The same
 // operations on every lane and no fused multiply-add (-ffp-contract=off), so
 // every copy gives the same bits.
+// pruned: a forward transform's first stage with its inputs from extent on
+// zero, or an inverse transform's last stage with only its first extent
+// outputs stored (transform()).
 struct StageKernel : KernelWidths {
     template <int W>
     CREEPWORK_INLINE static void run(const bool& inverse, const int& radix, const int& m,
                                      const int& s, const int& L, const double* const& xr,
                                      const double* const& xi, double* const& yr,
                                      double* const& yi, const double* const& twr,
-                                     const double* const& twi)
+                                     const double* const& twi, const bool& pruned,
+                                     const int& extent)
     {
-        if (inverse)
-            run_stage<1>(radix, m, s, L, xr, xi, yr, yi, twr, twi);
-        else
-            run_stage<-1>(radix, m, s, L, xr, xi, yr, yi, twr, twi);
+        if (inverse) {
+            if (!pruned)
+                run_stage<1>(radix, m, s, L, xr, xi, yr, yi, twr, twi);
+            else if (radix == 2)
+                last_stage_radix<2, 1>(s, L, xr, xi, yr, yi, twr, twi, extent);
+            else if (radix == 3)
+                last_stage_radix<3, 1>(s, L, xr, xi, yr, yi, twr, twi, extent);
+            else if (radix == 4)
+                last_stage_radix<4, 1>(s, L, xr, xi, yr, yi, twr, twi, extent);
+            else
+                last_stage_radix<5, 1>(s, L, xr, xi, yr, yi, twr, twi, extent);
+        } else {
+            if (!pruned)
+                run_stage<-1>(radix, m, s, L, xr, xi, yr, yi, twr, twi);
+            else if (radix == 2)
+                first_stage_radix<2, -1>(m, L, xr, xi, yr, yi, twr, twi, extent);
+            else if (radix == 3)
+                first_stage_radix<3, -1>(m, L, xr, xi, yr, yi, twr, twi, extent);
+            else if (radix == 4)
+                first_stage_radix<4, -1>(m, L, xr, xi, yr, yi, twr, twi, extent);
+            else
+                first_stage_radix<5, -1>(m, L, xr, xi, yr, yi, twr, twi, extent);
+        }
     }
 };
 
@@ -220,18 +336,28 @@ void BatchedFft::plan(int n)
     }
 }
 
-void BatchedFft::transform(double* re, double* im, int lines, bool inverse, double* work) const
+bool BatchedFft::pruned(size_t stage, bool inverse, int extent) const
+{
+    // The first stage of a forward transform, the last of an inverse one,
+    // never the only one (which would need both).
+    const size_t count = stages_.size();
+    return extent < n_ && count >= 2 && stage == (inverse ? count - 1 : 0);
+}
+
+void BatchedFft::transform(double* re, double* im, int lines, bool inverse, double* work,
+                           int extent) const
 {
     const size_t total = static_cast<size_t>(n_) * lines;
     double* xr = re;
     double* xi = im;
     double* yr = work;
     double* yi = work + total;
-    for (const Stage& st : stages_) {
+    for (size_t k = 0; k < stages_.size(); ++k) {
+        const Stage& st = stages_[k];
         const double* twr = tw_re_.data() + st.twiddle;
         const double* twi = tw_im_.data() + st.twiddle;
         run_kernel<StageKernel>(isa_, inverse, st.radix, st.m, st.stride, lines, xr, xi, yr, yi,
-                                twr, twi);
+                                twr, twi, pruned(k, inverse, extent), extent);
         std::swap(xr, yr);
         std::swap(xi, yi);
     }
@@ -242,7 +368,8 @@ void BatchedFft::transform(double* re, double* im, int lines, bool inverse, doub
 }
 
 void BatchedFft::transform(const double* in_re, const double* in_im, double* out_re,
-                           double* out_im, int lines, bool inverse, double* work) const
+                           double* out_im, int lines, bool inverse, double* work,
+                           int extent) const
 {
     const size_t total = static_cast<size_t>(n_) * lines;
     if (stages_.empty()) { // length 1
@@ -263,7 +390,7 @@ void BatchedFft::transform(const double* in_re, const double* in_im, double* out
         const double* twr = tw_re_.data() + st.twiddle;
         const double* twi = tw_im_.data() + st.twiddle;
         run_kernel<StageKernel>(isa_, inverse, st.radix, st.m, st.stride, lines, xr, xi, yr, yi,
-                                twr, twi);
+                                twr, twi, pruned(k, inverse, extent), extent);
         xr = yr;
         xi = yi;
     }

@@ -100,7 +100,7 @@ bool GridConvolution::set_size(int nx, int ny)
     fft_x_.plan(mx_);
     fft_y_.plan(my_);
     set_shift();
-    spectra_ready_ = false;
+    spectra_ready_ = inverse_ready_ = pair_copied_ = false;
     return true;
 }
 
@@ -136,7 +136,7 @@ bool GridConvolution::set_coefficients(double rho, double nu)
                            corner_work_.data());
     rho_ = rho;
     nu_ = nu;
-    spectra_ready_ = false;
+    spectra_ready_ = inverse_ready_ = pair_copied_ = false;
     return true;
 }
 
@@ -150,7 +150,7 @@ bool GridConvolution::copy_coefficients(const GridConvolution& from)
     }
     rho_ = from.rho_;
     nu_ = from.nu_;
-    spectra_ready_ = false;
+    spectra_ready_ = inverse_ready_ = pair_copied_ = false;
     return true;
 }
 
@@ -171,35 +171,76 @@ void GridConvolution::compute_spectra()
                 out[(k < 0 ? k + mx_ : k) + static_cast<size_t>(mx_) * (l < 0 ? l + my_ : l)] =
                     value(k, l);
     };
-    fill([&](int k, int l) { return 0.5 * (cf11(k, l) + cf22(k, l)); }, kern1_);
-    fill([&](int k, int l) { return cf33(k, l); }, kern2_);
-    kernel_spectrum_pair(kern1_, kern2_, alpha_, k33_);
-
-    if (use_ != ConvolutionUse::tangential) {
-        // The preconditioner: the kernel over the whole periodic cell, not cut
-        // off at the grid's offsets. Cut off, its spectrum has negative values
-        // when dy != dx (measured: a/b = 2 on 24 x 24 and 44 x 44 grids); over
-        // the whole cell it stayed positive for dy/dx = 0.05 ... 20 (min/max
-        // 1e-3 ... 1e-2). The clamp only keeps the inverse finite regardless.
-        for (int l = 0; l < my_; ++l)
-            for (int k = 0; k < mx_; ++k) {
-                const int kk = k <= mx_ / 2 ? k : k - mx_, ll = l <= my_ / 2 ? l : l - my_;
-                kern1_[k + static_cast<size_t>(mx_) * l] = cf33(kk, ll);
+    // The same for a kernel even in both directions (a function of |k| and
+    // |l|, so the same bits): each value computed once, stored four times
+    // (2 ex < mx and 2 (ey - 1) < my: no two offsets share a cell).
+    auto fill_even = [&](auto value, std::vector<double>& out) {
+        std::fill(out.begin(), out.begin() + m, 0.0);
+        for (int l = 0; l <= ey - 1; ++l) {
+            const size_t r0 = static_cast<size_t>(mx_) * l,
+                         r1 = static_cast<size_t>(mx_) * (l == 0 ? 0 : my_ - l);
+            for (int k = 0; k <= ex; ++k) {
+                const double v = value(k, l);
+                const size_t c1 = k == 0 ? 0 : mx_ - k;
+                out[k + r0] = v;
+                out[c1 + r0] = v;
+                out[k + r1] = v;
+                out[c1 + r1] = v;
             }
-        std::fill(kern2_.begin(), kern2_.begin() + m, 0.0);
-        kernel_spectrum_pair(kern1_, kern2_, k33_inv_, beta_re_); // beta_re_: scratch here
-        // k33_inv_ holds spectrum / (mx my); the inverse needs 1 / (spectrum mx my).
-        const double m2 = static_cast<double>(mx_) * my_ * static_cast<double>(mx_) * my_;
-        double largest = 0.0;
-        for (size_t i = 0; i < m; ++i) largest = std::max(largest, k33_inv_[i]);
-        for (size_t i = 0; i < m; ++i)
-            k33_inv_[i] = 1.0 / (std::max(k33_inv_[i], 1e-6 * largest) * m2);
+        }
+    };
+    if (!pair_copied_) {
+        fill_even([&](int k, int l) { return 0.5 * (cf11(k, l) + cf22(k, l)); }, kern1_);
+        fill_even([&](int k, int l) { return cf33(k, l); }, kern2_);
+        kernel_spectrum_pair(kern1_, kern2_, alpha_, k33_);
     }
+
     if (use_ != ConvolutionUse::normal) {
-        fill([&](int k, int l) { return 0.5 * (cf11(k, l) - cf22(k, l)); }, kern1_);
+        fill_even([&](int k, int l) { return 0.5 * (cf11(k, l) - cf22(k, l)); }, kern1_);
         fill([&](int k, int l) { return cf12(k, l); }, kern2_);
         kernel_spectrum_pair(kern1_, kern2_, beta_re_, beta_im_);
     }
+}
+
+bool GridConvolution::copy_pair_spectra(const GridConvolution& from)
+{
+    // The spectra depend on the FFT size, the largest field (the kernels'
+    // extent, compute_spectra) and the coefficients only.
+    if (pair_ready() || !from.pair_ready() || from.mx_ != mx_ || from.my_ != my_ ||
+        from.nx_max_ != nx_max_ || from.ny_max_ != ny_max_ || from.rho_ != rho_ ||
+        from.nu_ != nu_)
+        return false;
+    const size_t m = static_cast<size_t>(mx_) * my_;
+    std::copy(from.alpha_.begin(), from.alpha_.begin() + m, alpha_.begin());
+    std::copy(from.k33_.begin(), from.k33_.begin() + m, k33_.begin());
+    pair_copied_ = true;
+    return true;
+}
+
+void GridConvolution::compute_inverse_spectrum()
+{
+    inverse_ready_ = true;
+    // The preconditioner: the kernel over the whole periodic cell, not cut
+    // off at the grid's offsets. Cut off, its spectrum has negative values
+    // when dy != dx (measured: a/b = 2 on 24 x 24 and 44 x 44 grids); over
+    // the whole cell it stayed positive for dy/dx = 0.05 ... 20 (min/max
+    // 1e-3 ... 1e-2). The clamp only keeps the inverse finite regardless.
+    const size_t m = static_cast<size_t>(mx_) * my_;
+    for (int l = 0; l < my_; ++l)
+        for (int k = 0; k < mx_; ++k) {
+            const int kk = k <= mx_ / 2 ? k : k - mx_, ll = l <= my_ / 2 ? l : l - my_;
+            kern1_[k + static_cast<size_t>(mx_) * l] = cf33(kk, ll);
+        }
+    std::fill(kern2_.begin(), kern2_.begin() + m, 0.0);
+    // kern2_'s zero spectrum is not wanted: it overwrites kern2_ itself (read
+    // before the spectra are written).
+    kernel_spectrum_pair(kern1_, kern2_, k33_inv_, kern2_);
+    // k33_inv_ holds spectrum / (mx my); the inverse needs 1 / (spectrum mx my).
+    const double m2 = static_cast<double>(mx_) * my_ * static_cast<double>(mx_) * my_;
+    double largest = 0.0;
+    for (size_t i = 0; i < m; ++i) largest = std::max(largest, k33_inv_[i]);
+    for (size_t i = 0; i < m; ++i)
+        k33_inv_[i] = 1.0 / (std::max(k33_inv_[i], 1e-6 * largest) * m2);
 }
 
 // Two real kernels with real spectra (even, or odd in both directions) in one
@@ -241,7 +282,7 @@ void GridConvolution::forward(int cols, int rows)
         std::fill(rows_im_.begin() + used, rows_im_.begin() + static_cast<size_t>(my_) * rc, 0.0);
     }
     fft_y_.transform(rows_re_.data(), rows_im_.data(), out_re_.data(), out_im_.data(),
-                     static_cast<int>(rc), false, work_.data());
+                     static_cast<int>(rc), false, work_.data(), rows);
     // Transpose [ky][i] -> [i][ky], zero columns i >= cols, then along x:
     // lines are the my rows ky (and sy_ - my zero ones), element i at
     // [i * sy_ + ky].
@@ -259,7 +300,7 @@ void GridConvolution::forward(int cols, int rows)
                   spec_im_.begin() + static_cast<size_t>(mx_) * sy_, 0.0);
     }
     fft_x_.transform(spec_re_.data(), spec_im_.data(), out_re_.data(), out_im_.data(),
-                     static_cast<int>(sy_), false, work_.data());
+                     static_cast<int>(sy_), false, work_.data(), cols);
 }
 
 // Zero the values lines ... stride - 1 of the first count elements (the
@@ -276,7 +317,7 @@ void GridConvolution::clear_padding(double* re, double* im, int count, size_t st
 void GridConvolution::inverse()
 {
     fft_x_.transform(back_re_.data(), back_im_.data(), out_re_.data(), out_im_.data(),
-                     static_cast<int>(sy_), true, work_.data());
+                     static_cast<int>(sy_), true, work_.data(), nx_);
     const size_t rc = line_stride(nx_);
     for (int ky = 0; ky < my_; ++ky)
         for (int i = 0; i < nx_; ++i) {
@@ -285,7 +326,7 @@ void GridConvolution::inverse()
         }
     clear_padding(back_re_.data(), back_im_.data(), my_, rc, nx_);
     fft_y_.transform(back_re_.data(), back_im_.data(), out_re_.data(), out_im_.data(),
-                     static_cast<int>(rc), true, work_.data());
+                     static_cast<int>(rc), true, work_.data(), ny_);
 }
 
 void GridConvolution::real_product(const double* p, double* u,
@@ -305,18 +346,23 @@ void GridConvolution::real_product(const double* p, double* u,
         }
     clear_padding(rows_re_.data(), rows_im_.data(), ny_, rc, nc);
     const size_t used = static_cast<size_t>(ny_) * rc, total = static_cast<size_t>(my_) * rc;
-    std::fill(rows_re_.begin() + used, rows_re_.begin() + total, 0.0);
-    std::fill(rows_im_.begin() + used, rows_im_.begin() + total, 0.0);
-    fft_y_.transform(rows_re_.data(), rows_im_.data(), static_cast<int>(rc), false, work_.data());
+    if (fft_y_.reads_beyond(ny_)) { // else the zero padding is never read
+        std::fill(rows_re_.begin() + used, rows_re_.begin() + total, 0.0);
+        std::fill(rows_im_.begin() + used, rows_im_.begin() + total, 0.0);
+    }
+    // The transforms run out of place (rows_ -> out_ -> spec_ ... ): no copy
+    // back after an odd number of stages (batched_fft.hpp).
+    fft_y_.transform(rows_re_.data(), rows_im_.data(), out_re_.data(), out_im_.data(),
+                     static_cast<int>(rc), false, work_.data(), ny_);
     // Separate the pair, Z = A + i B: A(k) = (Z(k) + conj Z(-k)) / 2,
     // B(k) = (Z(k) - conj Z(-k)) / 2i, for ky <= h, into [i][ky] (stride sh).
     for (int c = 0; c < nc; ++c)
         for (int ky = 0; ky <= h; ++ky) {
             const int km = ky == 0 ? 0 : my_ - ky;
-            const double zr = rows_re_[ky * rc + c];
-            const double zi = rows_im_[ky * rc + c];
-            const double wr = rows_re_[km * rc + c];
-            const double wi = rows_im_[km * rc + c];
+            const double zr = out_re_[ky * rc + c];
+            const double zi = out_im_[ky * rc + c];
+            const double wr = out_re_[km * rc + c];
+            const double wi = out_im_[km * rc + c];
             const size_t a = static_cast<size_t>(2 * c) * sh + ky;
             spec_re_[a] = 0.5 * (zr + wr);
             spec_im_[a] = 0.5 * (zi - wi);
@@ -326,19 +372,23 @@ void GridConvolution::real_product(const double* p, double* u,
             }
         }
     clear_padding(spec_re_.data(), spec_im_.data(), nx_, sh, static_cast<int>(hl));
-    std::fill(spec_re_.begin() + static_cast<size_t>(nx_) * sh,
-              spec_re_.begin() + static_cast<size_t>(mx_) * sh, 0.0);
-    std::fill(spec_im_.begin() + static_cast<size_t>(nx_) * sh,
-              spec_im_.begin() + static_cast<size_t>(mx_) * sh, 0.0);
+    if (fft_x_.reads_beyond(nx_)) {
+        std::fill(spec_re_.begin() + static_cast<size_t>(nx_) * sh,
+                  spec_re_.begin() + static_cast<size_t>(mx_) * sh, 0.0);
+        std::fill(spec_im_.begin() + static_cast<size_t>(nx_) * sh,
+                  spec_im_.begin() + static_cast<size_t>(mx_) * sh, 0.0);
+    }
     // Along x on the h + 1 lines, times the (real) kernel, and back.
-    fft_x_.transform(spec_re_.data(), spec_im_.data(), static_cast<int>(sh), false, work_.data());
+    fft_x_.transform(spec_re_.data(), spec_im_.data(), out_re_.data(), out_im_.data(),
+                     static_cast<int>(sh), false, work_.data(), nx_);
     for (int kx = 0; kx < mx_; ++kx)
         for (int ky = 0; ky <= h; ++ky) {
             const double k = spectrum[ky + static_cast<size_t>(my_) * kx];
-            spec_re_[static_cast<size_t>(kx) * sh + ky] *= k;
-            spec_im_[static_cast<size_t>(kx) * sh + ky] *= k;
+            out_re_[static_cast<size_t>(kx) * sh + ky] *= k;
+            out_im_[static_cast<size_t>(kx) * sh + ky] *= k;
         }
-    fft_x_.transform(spec_re_.data(), spec_im_.data(), static_cast<int>(sh), true, work_.data());
+    fft_x_.transform(out_re_.data(), out_im_.data(), spec_re_.data(), spec_im_.data(),
+                     static_cast<int>(sh), true, work_.data(), nx_);
     // Each column's y-spectrum is Hermitian (the column is real): complete it
     // and pair the columns again, W = T_2c + i T_2c+1, into [ky][c].
     for (int c = 0; c < nc; ++c) {
@@ -356,12 +406,13 @@ void GridConvolution::real_product(const double* p, double* u,
         }
     }
     clear_padding(rows_re_.data(), rows_im_.data(), my_, rc, nc);
-    fft_y_.transform(rows_re_.data(), rows_im_.data(), static_cast<int>(rc), true, work_.data());
+    fft_y_.transform(rows_re_.data(), rows_im_.data(), out_re_.data(), out_im_.data(),
+                     static_cast<int>(rc), true, work_.data(), ny_);
     for (int j = 0; j < ny_; ++j)
         for (int c = 0; c < nc; ++c) {
             const size_t k = j * rc + c;
-            u[2 * c + static_cast<size_t>(nx_) * j] = rows_re_[k];
-            if (2 * c + 1 < nx_) u[2 * c + 1 + static_cast<size_t>(nx_) * j] = rows_im_[k];
+            u[2 * c + static_cast<size_t>(nx_) * j] = out_re_[k];
+            if (2 * c + 1 < nx_) u[2 * c + 1 + static_cast<size_t>(nx_) * j] = out_im_[k];
         }
 }
 
@@ -373,7 +424,7 @@ void GridConvolution::apply_normal(const double* p, double* u)
 
 void GridConvolution::apply_normal_inverse(const double* u, double* p)
 {
-    if (!spectra_ready_) compute_spectra();
+    if (!inverse_ready_) compute_inverse_spectrum();
     real_product(u, p, k33_inv_);
 }
 

@@ -59,6 +59,11 @@ public:
     // The coefficients of another convolution of the same largest field
     // (its tables copied, not recomputed); returns true if they changed.
     bool copy_coefficients(const GridConvolution& from);
+    // The spectra alpha and K33 of another convolution of the same largest
+    // field, FFT size and coefficients that has made them (a normal
+    // problem's products on the box this one solves on), copied instead of
+    // computed: the same bits. Returns false, copying nothing, otherwise.
+    bool copy_pair_spectra(const GridConvolution& from);
     double rho() const { return rho_; }
     double nu() const { return nu_; }
     // The copy of the FFTs' kernels to run (supported by this CPU; every copy
@@ -105,7 +110,12 @@ private:
     void inverse();
     void set_shift();
     void compute_spectra(); // the kernels' spectra for the FFT size
-    bool spectra_ready_ = false;
+    // The preconditioner's spectrum (apply_normal_inverse), made on its first
+    // use: a gap grid's whole-grid normal products never take it.
+    void compute_inverse_spectrum();
+    bool spectra_ready_ = false, inverse_ready_ = false;
+    bool pair_copied_ = false; // alpha_ and k33_ hold copy_pair_spectra's
+    bool pair_ready() const { return spectra_ready_ || pair_copied_; }
     static void clear_padding(double* re, double* im, int count, size_t stride, int lines);
     void kernel_spectrum_pair(const std::vector<double>& k1, const std::vector<double>& k2,
                               std::vector<double>& s1, std::vector<double>& s2);

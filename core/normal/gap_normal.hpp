@@ -110,6 +110,10 @@ public:
     // The half-space coefficients of this grid's cells for nu (computed when
     // nu changes): the tangential problem copies them.
     const GridConvolution& half_space(double nu);
+    // The convolution of the last solve's products on the contact set's box
+    // (box_products), or nullptr: the tangential problem on that box may
+    // copy its spectra (GridConvolution::copy_pair_spectra).
+    const GridConvolution* box_convolution() const { return box_.get(); }
     // Makes the half-space problem's memory now (if not yet made), so that
     // no solve allocates.
     void prepare_half_space();

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <complex>
+#include <cstring>
 #include <random>
 #include <vector>
 
@@ -60,6 +61,56 @@ void fft_matches_dft(void**)
     assert_int_equal(cw::BatchedFft::good_size(209), 216);
     assert_int_equal(cw::BatchedFft::good_size(89), 96);   // not 90
     assert_int_equal(cw::BatchedFft::good_size(7), 8);
+}
+
+// The pruned transforms (extent < n: forward with the inputs from extent on
+// zero, inverse with only the outputs before extent read) against the full
+// ones: the same bits where the caller reads, in place and out of place, on
+// every ISA the CPU runs, for every extent of lengths whose first and last
+// stages have each radix (2, 3, 4, 5) and the benchmark's (40, 45, 50).
+// Inputs hold signed zeros too: skipping the zero inputs' arithmetic must
+// not change a sign.
+void pruned_fft_gives_the_full_bits(void**)
+{
+    std::mt19937 gen(11);
+    std::uniform_real_distribution<double> U(-1.0, 1.0);
+    for (cw::KernelIsa isa : {cw::KernelIsa::baseline, cw::KernelIsa::avx2, cw::KernelIsa::avx512}) {
+        if (!cw::kernel_isa_supported(isa)) continue;
+        for (int n : {6, 8, 10, 12, 15, 20, 24, 40, 45, 50, 75}) {
+            const int L = 5;
+            cw::BatchedFft f(n);
+            f.set_kernel_isa(isa);
+            std::vector<double> work(2 * n * L);
+            for (int extent = 1; extent < n; ++extent)
+                for (bool inverse : {false, true}) {
+                    std::vector<double> re(n * L), im(n * L);
+                    for (int e = 0; e < n; ++e)
+                        for (int l = 0; l < L; ++l) {
+                            const bool zero = !inverse && e >= extent;
+                            const double r = U(gen), i = U(gen);
+                            re[e * L + l] = zero ? 0.0 : r < -0.8 ? -0.0 : r;
+                            im[e * L + l] = zero ? 0.0 : i > 0.8 ? -0.0 : i;
+                        }
+                    std::vector<double> full_re = re, full_im = im;
+                    f.transform(full_re.data(), full_im.data(), L, inverse, work.data());
+                    std::vector<double> out_re(n * L), out_im(n * L);
+                    f.transform(re.data(), im.data(), out_re.data(), out_im.data(), L, inverse,
+                                work.data(), extent);
+                    f.transform(re.data(), im.data(), L, inverse, work.data(), extent);
+                    const int shown = inverse ? extent : n;
+                    bool same = true;
+                    for (int k = 0; k < shown * L; ++k)
+                        same = same && std::memcmp(&re[k], &full_re[k], sizeof(double)) == 0 &&
+                               std::memcmp(&im[k], &full_im[k], sizeof(double)) == 0 &&
+                               std::memcmp(&out_re[k], &full_re[k], sizeof(double)) == 0 &&
+                               std::memcmp(&out_im[k], &full_im[k], sizeof(double)) == 0;
+                    if (!same)
+                        printf("n %d extent %d %s %s: not the full transform's bits\n", n, extent,
+                               inverse ? "inverse" : "forward", cw::kernel_isa_name(isa));
+                    assert_true(same);
+                }
+        }
+    }
 }
 
 double x_log_y(double x, double y1, double y2)
@@ -157,6 +208,56 @@ void products_match_direct_sums(void**)
             check_tangential(conv, zs, true);
             check_tangential(conv, zs, false);
         }
+    }
+}
+
+// A tangential convolution given the spectra of a normal one (the gap
+// model's fine grid from the normal problem's box products): the products
+// are bitwise those of a convolution that made its own, and nothing is
+// copied from a convolution of another FFT size or other coefficients.
+void copied_spectra_give_the_same_products(void**)
+{
+    std::mt19937 gen(13);
+    std::uniform_real_distribution<double> U(-1.0, 1.0);
+    const int nx = 24, ny = 22, bx = 19, by = 17;
+    const double rho = 0.8, nu = 0.28;
+    cw::GridConvolution whole(nx, ny, cw::ConvolutionUse::normal);
+    whole.set_coefficients(rho, nu);
+    cw::GridConvolution box(nx, ny, cw::ConvolutionUse::normal);
+    box.set_size(bx, by);
+    box.copy_coefficients(whole);
+    std::vector<double> p(bx * by), u(bx * by);
+    for (double& v : p) v = U(gen);
+    box.apply_normal(p.data(), u.data()); // makes its spectra
+    cw::GridConvolution own(nx, ny, cw::ConvolutionUse::tangential),
+        copied(nx, ny, cw::ConvolutionUse::tangential);
+    for (cw::GridConvolution* c : {&own, &copied}) {
+        c->set_size(bx, by);
+        c->copy_coefficients(whole);
+    }
+    // Not from a convolution without spectra, of another size or material.
+    cw::GridConvolution fresh(nx, ny, cw::ConvolutionUse::normal);
+    fresh.set_size(bx, by);
+    fresh.copy_coefficients(whole);
+    assert_false(copied.copy_pair_spectra(fresh));
+    cw::GridConvolution other_size(nx, ny, cw::ConvolutionUse::normal);
+    other_size.set_size(bx - 4, by);
+    other_size.copy_coefficients(whole);
+    other_size.apply_normal(p.data(), u.data());
+    assert_false(copied.copy_pair_spectra(other_size));
+    cw::GridConvolution other_nu(nx, ny, cw::ConvolutionUse::normal);
+    other_nu.set_size(bx, by);
+    other_nu.set_coefficients(rho, 0.3);
+    other_nu.apply_normal(p.data(), u.data());
+    assert_false(copied.copy_pair_spectra(other_nu));
+    assert_true(copied.copy_pair_spectra(box));
+    assert_false(copied.copy_pair_spectra(box)); // has them now
+    std::vector<C> z(bx * by), s_own(bx * by), s_copied(bx * by);
+    for (C& v : z) v = C(U(gen), U(gen));
+    for (bool steady : {true, false}) {
+        own.apply_tangential(z.data(), s_own.data(), steady);
+        copied.apply_tangential(z.data(), s_copied.data(), steady);
+        assert_memory_equal(s_own.data(), s_copied.data(), s_own.size() * sizeof(C));
     }
 }
 
@@ -280,8 +381,10 @@ int main()
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(fft_matches_dft),
+        cmocka_unit_test(pruned_fft_gives_the_full_bits),
         cmocka_unit_test(coefficients_match_contact_form),
         cmocka_unit_test(products_match_direct_sums),
+        cmocka_unit_test(copied_spectra_give_the_same_products),
         cmocka_unit_test(local_friction_solves_coulomb),
         cmocka_unit_test(history_predicts_a_drift),
         cmocka_unit_test(history_extrapolates_the_error),
