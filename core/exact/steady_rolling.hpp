@@ -202,8 +202,13 @@ private:
     void source_sweep(const Complex* dw, const double* dg, bool speed, Complex* out,
                       bool yield = false) const;
     // Solves (I - G') x = b to relative residual eta; returns the iterations.
+    // lanes: the inner products in partial sums (faster, other bits; the
+    // warm starts' Newton steps).
     int gmres(GridConvolution& conv, const std::vector<Complex>& b, std::vector<Complex>& x,
-              double eta, int max_iterations);
+              double eta, int max_iterations, bool lanes);
+    template <int L>
+    int arnoldi(GridConvolution& conv, const std::vector<Complex>& b, std::vector<Complex>& x,
+                double eta, int max_iterations);
     double residual_norm(const std::vector<Complex>& q, const std::vector<Complex>& gq,
                          std::vector<Complex>& f, double& max_rel) const;
 
