@@ -6,6 +6,7 @@
 
 #include "contact/error.hpp"
 #include "contact/number_text.hpp"
+#include "simd/simd.hpp"
 
 namespace creepwork {
 
@@ -35,16 +36,58 @@ double dot(const std::vector<Complex>& a, const std::vector<Complex>& b)
     return dot(a.data(), b.data(), static_cast<int>(a.size()));
 }
 
+// The lanes of subtract_dot: L partial sums (element t of the fields seen
+// as doubles goes to sum t mod L), whatever the ISA's width W (W divides
+// L), so every ISA's copy gives the same bits (kernel_isa.hpp).
+template <int L>
+struct PartialSums : KernelWidths {
+    template <int W>
+    static CREEPWORK_INLINE void run(double* const& a, const double* const& b, const double& h,
+                                     const double* const& c, const int& m, const bool& apply,
+                                     double* const& out)
+    {
+        static_assert(L % W == 0, "the partial sums hold whole vectors");
+        using V = simd::Vec<W>;
+        constexpr int G = L / W;
+        V sum[G];
+        for (int g = 0; g < G; ++g) sum[g] = V{};
+        const V hv = simd::broadcast<W>(h);
+        int t = 0;
+        for (; t + L <= m; t += L) {
+            CREEPWORK_UNROLL
+            for (int g = 0; g < G; ++g) {
+                const int o = t + g * W;
+                const V av = simd::load<W>(a + o), bv = simd::load<W>(b + o);
+                const V r = apply ? bv - av : av - hv * bv;
+                simd::store<W>(a + o, r);
+                sum[g] += r * simd::load<W>(c + o);
+            }
+        }
+        double s[L];
+        for (int g = 0; g < G; ++g) simd::store<W>(s + g * W, sum[g]);
+        for (; t < m; ++t) {
+            a[t] = apply ? b[t] - a[t] : a[t] - h * b[t];
+            s[0] += a[t] * c[t];
+        }
+        for (int k = L / 2; k >= 1; k /= 2) // pairwise: (s0 + s1) + (s2 + s3)
+            for (int l = 0; l < k; ++l) s[l] = s[2 * l] + s[2 * l + 1];
+        *out = s[0];
+    }
+};
+
 // Of GMRES's modified Gram-Schmidt: v -= h u (Apply: v = u - v, the
 // operator I - G' applied to u), then v . w (w may be v), in one pass.
 // L = 1 sums the inner product in element order, as dot(). L > 1 (a power
-// of 2) runs over the fields as 2n doubles into L interleaved partial
-// sums, added pairwise at the end: other bits, but the loop vectorises and
-// no chain of dependent additions runs through the whole field.
+// of 2) runs over the fields as 2n doubles into L partial sums
+// (PartialSums, isa's copy), added pairwise at the end: other bits, but
+// the loop vectorises and no chain of dependent additions runs through
+// the whole field.
 template <int L, bool Apply>
-double subtract_dot(Complex* v, const Complex* u, double h, const Complex* w, int n)
+double subtract_dot(KernelIsa isa, Complex* v, const Complex* u, double h, const Complex* w,
+                    int n)
 {
-    if (L == 1) {
+    if constexpr (L == 1) {
+        (void)isa;
         double s = 0.0;
         for (int t = 0; t < n; ++t) {
             if (Apply)
@@ -54,26 +97,14 @@ double subtract_dot(Complex* v, const Complex* u, double h, const Complex* w, in
             s += v[t].real() * w[t].real() + v[t].imag() * w[t].imag();
         }
         return s;
+    } else {
+        // Complex is layout-compatible with double[2] ([complex.numbers]).
+        double s = 0.0;
+        run_kernel<PartialSums<L>>(isa, reinterpret_cast<double*>(v),
+                                   reinterpret_cast<const double*>(u), h,
+                                   reinterpret_cast<const double*>(w), 2 * n, Apply, &s);
+        return s;
     }
-    // Complex is layout-compatible with double[2] ([complex.numbers]).
-    double* a = reinterpret_cast<double*>(v);
-    const double* b = reinterpret_cast<const double*>(u);
-    const double* c = reinterpret_cast<const double*>(w);
-    const int m = 2 * n;
-    double s[L] = {};
-    int t = 0;
-    for (; t + L <= m; t += L)
-        for (int l = 0; l < L; ++l) {
-            a[t + l] = Apply ? b[t + l] - a[t + l] : a[t + l] - h * b[t + l];
-            s[l] += a[t + l] * c[t + l];
-        }
-    for (; t < m; ++t) {
-        a[t] = Apply ? b[t] - a[t] : a[t] - h * b[t];
-        s[0] += a[t] * c[t];
-    }
-    for (int k = L / 2; k >= 1; k /= 2) // pairwise: (s0 + s1) + (s2 + s3)
-        for (int l = 0; l < k; ++l) s[l] = s[2 * l] + s[2 * l + 1];
-    return s[0];
 }
 
 // Newton's method: the loosest forcing term, and the line search.
@@ -92,7 +123,7 @@ constexpr int kMaxGmresPerStep = 200;
 // Partial sums of GMRES's inner products in a warm start's Newton steps
 // (subtract_dot); 1 everywhere else, so that a cold solve and the
 // Jacobians keep their bits.
-constexpr int kLanes = 4;
+constexpr int kLanes = 8;
 
 } // namespace
 
@@ -104,7 +135,8 @@ SteadyRolling::SteadyRolling(int nx, int ny, int krylov_dimension)
       // machine's VM, page faults are dear) only if GMRES gets that far.
       // Every vector is written in full before it is read.
       basis_(static_cast<Complex*>(::operator new(sizeof(Complex) * n_ * (m_ + 1)))),
-      hessenberg_(static_cast<size_t>(m_ + 1) * m_), cs_(m_), sn_(m_), rhs_(m_ + 1), y_(m_)
+      hessenberg_(static_cast<size_t>(m_ + 1) * m_), cs_(m_), sn_(m_), rhs_(m_ + 1), y_(m_),
+      isa_(best_kernel_isa())
 {
     capacity_ = static_cast<size_t>(n_);
 }
@@ -297,10 +329,10 @@ int SteadyRolling::arnoldi(GridConvolution& conv, const std::vector<Complex>& b,
             linear_sweep(conv, vk, v);
             // Modified Gram-Schmidt, each subtraction fused with the next
             // inner product: (I - G') v_k, then v -= h_i v_i for i = 0..k.
-            H(0, k) = subtract_dot<L, true>(v, vk, 0.0, basis(0), n_);
+            H(0, k) = subtract_dot<L, true>(isa_, v, vk, 0.0, basis(0), n_);
             for (int i = 1; i <= k; ++i)
-                H(i, k) = subtract_dot<L, false>(v, basis(i - 1), H(i - 1, k), basis(i), n_);
-            const double h = std::sqrt(subtract_dot<L, false>(v, basis(k), H(k, k), v, n_));
+                H(i, k) = subtract_dot<L, false>(isa_, v, basis(i - 1), H(i - 1, k), basis(i), n_);
+            const double h = std::sqrt(subtract_dot<L, false>(isa_, v, basis(k), H(k, k), v, n_));
             H(k + 1, k) = h;
             if (h > 0.0 && L == 1)
                 for (int t = 0; t < n_; ++t) v[t] /= h;

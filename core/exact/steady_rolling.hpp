@@ -29,6 +29,7 @@
 
 #include "halfspace/grid_convolution.hpp"
 #include "exact/local_friction.hpp"
+#include "simd/kernel_isa.hpp"
 
 namespace creepwork {
 
@@ -250,6 +251,7 @@ private:
     std::unique_ptr<Complex, Release> basis_;
     Complex* basis(int k) { return basis_.get() + static_cast<size_t>(n_) * k; }
     std::vector<double> hessenberg_, cs_, sn_, rhs_, y_;
+    KernelIsa isa_; // the copy of warm GMRES's kernel (steady_rolling.cpp)
     int products_ = 0;
 };
 
