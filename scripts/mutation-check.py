@@ -195,6 +195,23 @@ MUTANTS = [
          "kept (zero)", file="core/exact/creepage_history.cpp",
          old="    error_before_.swap(error_);", new="    error_before_.swap(error_before_);",
          tests=WARM),
+    # Warm GMRES's Gram-Schmidt in partial sums (core/exact/steady_rolling.cpp,
+    # subtract_dot): wrong inner products or basis vectors cost a warm drift
+    # its products (or its convergence, retried cold).
+    dict(id="warm-gmres-partial-sums", what="exact: warm GMRES's inner products drop half "
+         "their partial sums", file="core/exact/steady_rolling.cpp",
+         old="    for (int k = L / 2; k >= 1; k /= 2) // pairwise: (s0 + s1) + (s2 + s3)",
+         new="    for (int k = L / 2; k > 1; k /= 2) // pairwise: (s0 + s1) + (s2 + s3)",
+         tests=WARM),
+    dict(id="warm-gmres-operator-sign", what="exact: warm GMRES applies G' - I, not I - G'",
+         file="core/exact/steady_rolling.cpp",
+         old="                const V r = apply ? bv - av : av - hv * bv;",
+         new="                const V r = apply ? av - bv : av - hv * bv;",
+         tests=WARM),
+    dict(id="warm-gmres-normalise", what="exact: warm GMRES's basis vector not normalised",
+         file="core/exact/steady_rolling.cpp",
+         old="                for (int t = 0; t < n_; ++t) v[t] *= 1.0 / h;",
+         new="                for (int t = 0; t < n_; ++t) v[t] *= 1.0;", tests=WARM),
     # The calibrated model.
     dict(id="calibrated-moment-flexibility", what="calibrated: spin x-slip on L3/L_M, not L_M/L3",
          file="core/calibrated/calibrated_model.cpp", old="        s.kin.cx *= s.L3 / L_M;",

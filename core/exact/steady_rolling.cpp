@@ -6,6 +6,7 @@
 
 #include "contact/error.hpp"
 #include "contact/number_text.hpp"
+#include "simd/simd.hpp"
 
 namespace creepwork {
 
@@ -35,6 +36,77 @@ double dot(const std::vector<Complex>& a, const std::vector<Complex>& b)
     return dot(a.data(), b.data(), static_cast<int>(a.size()));
 }
 
+// The lanes of subtract_dot: L partial sums (element t of the fields seen
+// as doubles goes to sum t mod L), whatever the ISA's width W (W divides
+// L), so every ISA's copy gives the same bits (kernel_isa.hpp).
+template <int L>
+struct PartialSums : KernelWidths {
+    template <int W>
+    static CREEPWORK_INLINE void run(double* const& a, const double* const& b, const double& h,
+                                     const double* const& c, const int& m, const bool& apply,
+                                     double* const& out)
+    {
+        static_assert(L % W == 0, "the partial sums hold whole vectors");
+        using V = simd::Vec<W>;
+        constexpr int G = L / W;
+        V sum[G];
+        for (int g = 0; g < G; ++g) sum[g] = V{};
+        const V hv = simd::broadcast<W>(h);
+        int t = 0;
+        for (; t + L <= m; t += L) {
+            CREEPWORK_UNROLL
+            for (int g = 0; g < G; ++g) {
+                const int o = t + g * W;
+                const V av = simd::load<W>(a + o), bv = simd::load<W>(b + o);
+                const V r = apply ? bv - av : av - hv * bv;
+                simd::store<W>(a + o, r);
+                sum[g] += r * simd::load<W>(c + o);
+            }
+        }
+        double s[L];
+        for (int g = 0; g < G; ++g) simd::store<W>(s + g * W, sum[g]);
+        for (; t < m; ++t) {
+            a[t] = apply ? b[t] - a[t] : a[t] - h * b[t];
+            s[0] += a[t] * c[t];
+        }
+        for (int k = L / 2; k >= 1; k /= 2) // pairwise: (s0 + s1) + (s2 + s3)
+            for (int l = 0; l < k; ++l) s[l] = s[2 * l] + s[2 * l + 1];
+        *out = s[0];
+    }
+};
+
+// Of GMRES's modified Gram-Schmidt: v -= h u (Apply: v = u - v, the
+// operator I - G' applied to u), then v . w (w may be v), in one pass.
+// L = 1 sums the inner product in element order, as dot(). L > 1 (a power
+// of 2) runs over the fields as 2n doubles into L partial sums
+// (PartialSums, isa's copy), added pairwise at the end: other bits, but
+// the loop vectorises and no chain of dependent additions runs through
+// the whole field.
+template <int L, bool Apply>
+double subtract_dot(KernelIsa isa, Complex* v, const Complex* u, double h, const Complex* w,
+                    int n)
+{
+    if constexpr (L == 1) {
+        (void)isa;
+        double s = 0.0;
+        for (int t = 0; t < n; ++t) {
+            if (Apply)
+                v[t] = u[t] - v[t];
+            else
+                v[t] -= h * u[t];
+            s += v[t].real() * w[t].real() + v[t].imag() * w[t].imag();
+        }
+        return s;
+    } else {
+        // Complex is layout-compatible with double[2] ([complex.numbers]).
+        double s = 0.0;
+        run_kernel<PartialSums<L>>(isa, reinterpret_cast<double*>(v),
+                                   reinterpret_cast<const double*>(u), h,
+                                   reinterpret_cast<const double*>(w), 2 * n, Apply, &s);
+        return s;
+    }
+}
+
 // Newton's method: the loosest forcing term, and the line search.
 constexpr double kFirstForcing = 0.3;
 // The last linear solve's target, times tolerance / residual. From any start
@@ -48,6 +120,10 @@ constexpr double kWarmLastForcing = 1.0;
 constexpr double kArmijo = 1e-4;
 constexpr int kMaxHalvings = 8;
 constexpr int kMaxGmresPerStep = 200;
+// Partial sums of GMRES's inner products in a warm start's Newton steps
+// (subtract_dot); 1 everywhere else, so that a cold solve and the
+// Jacobians keep their bits.
+constexpr int kLanes = 8;
 
 } // namespace
 
@@ -59,7 +135,8 @@ SteadyRolling::SteadyRolling(int nx, int ny, int krylov_dimension)
       // machine's VM, page faults are dear) only if GMRES gets that far.
       // Every vector is written in full before it is read.
       basis_(static_cast<Complex*>(::operator new(sizeof(Complex) * n_ * (m_ + 1)))),
-      hessenberg_(static_cast<size_t>(m_ + 1) * m_), cs_(m_), sn_(m_), rhs_(m_ + 1), y_(m_)
+      hessenberg_(static_cast<size_t>(m_ + 1) * m_), cs_(m_), sn_(m_), rhs_(m_ + 1), y_(m_),
+      isa_(best_kernel_isa())
 {
     capacity_ = static_cast<size_t>(n_);
 }
@@ -219,7 +296,15 @@ void SteadyRolling::linear_sweep(GridConvolution& conv, const Complex* v, Comple
 }
 
 int SteadyRolling::gmres(GridConvolution& conv, const std::vector<Complex>& b,
-                         std::vector<Complex>& x, double eta, int max_iterations)
+                         std::vector<Complex>& x, double eta, int max_iterations, bool lanes)
+{
+    return lanes ? arnoldi<kLanes>(conv, b, x, eta, max_iterations)
+                 : arnoldi<1>(conv, b, x, eta, max_iterations);
+}
+
+template <int L>
+int SteadyRolling::arnoldi(GridConvolution& conv, const std::vector<Complex>& b,
+                           std::vector<Complex>& x, double eta, int max_iterations)
 {
     std::fill(x.begin(), x.end(), Complex(0.0, 0.0));
     const double bnorm = std::sqrt(dot(b, b));
@@ -242,17 +327,17 @@ int SteadyRolling::gmres(GridConvolution& conv, const std::vector<Complex>& b,
             Complex* v = basis(k + 1);
             const Complex* vk = basis(k);
             linear_sweep(conv, vk, v);
-            for (int t = 0; t < n_; ++t) v[t] = vk[t] - v[t]; // (I - G') v_k
-            for (int i = 0; i <= k; ++i) { // modified Gram-Schmidt
-                const Complex* vi = basis(i);
-                const double h = dot(v, vi, n_);
-                H(i, k) = h;
-                for (int t = 0; t < n_; ++t) v[t] -= h * vi[t];
-            }
-            const double h = std::sqrt(dot(v, v, n_));
+            // Modified Gram-Schmidt, each subtraction fused with the next
+            // inner product: (I - G') v_k, then v -= h_i v_i for i = 0..k.
+            H(0, k) = subtract_dot<L, true>(isa_, v, vk, 0.0, basis(0), n_);
+            for (int i = 1; i <= k; ++i)
+                H(i, k) = subtract_dot<L, false>(isa_, v, basis(i - 1), H(i - 1, k), basis(i), n_);
+            const double h = std::sqrt(subtract_dot<L, false>(isa_, v, basis(k), H(k, k), v, n_));
             H(k + 1, k) = h;
-            if (h > 0.0)
+            if (h > 0.0 && L == 1)
                 for (int t = 0; t < n_; ++t) v[t] /= h;
+            else if (h > 0.0) // by the reciprocal: other bits, no division per element
+                for (int t = 0; t < n_; ++t) v[t] *= 1.0 / h;
             for (int i = 0; i < k; ++i) {
                 const double a = cs_[i] * H(i, k) + sn_[i] * H(i + 1, k);
                 H(i + 1, k) = -sn_[i] * H(i, k) + cs_[i] * H(i + 1, k);
@@ -271,15 +356,17 @@ int SteadyRolling::gmres(GridConvolution& conv, const std::vector<Complex>& b,
                 break;
             }
         }
-        // x += V y with H y = rhs (upper triangular, k columns).
+        // x += V y with H y = rhs (upper triangular, k columns), in one
+        // pass over x (each element sums its terms in the order of i).
         for (int i = k - 1; i >= 0; --i) {
             double v = rhs_[i];
             for (int c = i + 1; c < k; ++c) v -= H(i, c) * y_[c];
             y_[i] = H(i, i) != 0.0 ? v / H(i, i) : 0.0;
         }
-        for (int i = 0; i < k; ++i) {
-            const Complex* vi = basis(i);
-            for (int t = 0; t < n_; ++t) x[t] += y_[i] * vi[t];
+        for (int t = 0; t < n_; ++t) {
+            Complex xt = x[t];
+            for (int i = 0; i < k; ++i) xt += y_[i] * basis(i)[t];
+            x[t] = xt;
         }
         if (done || total >= max_iterations) break;
         // Restart: the true residual b - (I - G') x.
@@ -361,7 +448,7 @@ SteadyRollingInfo SteadyRolling::newton(GridConvolution& conv, double tolerance,
         double eta = std::min(kFirstForcing, warm ? rel * std::sqrt(rel) : rel);
         eta = std::max(eta, (warm ? kWarmLastForcing : kLastForcing) * tolerance / rel);
         ++info.newton_steps;
-        gmres(conv, f_, dq_, eta, kMaxGmresPerStep);
+        gmres(conv, f_, dq_, eta, kMaxGmresPerStep, warm);
 
         double lambda = 1.0, fnew = 0.0, rel_new = 0.0;
         for (int halving = 0;; ++halving) {
@@ -490,7 +577,7 @@ const std::vector<SteadyRolling::Complex>& SteadyRolling::solve_tangent(GridConv
 {
     std::vector<Complex>& rhs = gt_;
     std::vector<Complex>& dq = qt_;
-    gmres(conv, rhs, dq, tolerance, max_iterations);
+    gmres(conv, rhs, dq, tolerance, max_iterations, false);
     // The true residual of the linear system, checked rather than trusted.
     std::vector<Complex>& r = ft_;
     linear_sweep(conv, dq.data(), r.data());

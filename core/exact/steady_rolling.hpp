@@ -29,6 +29,7 @@
 
 #include "halfspace/grid_convolution.hpp"
 #include "exact/local_friction.hpp"
+#include "simd/kernel_isa.hpp"
 
 namespace creepwork {
 
@@ -202,8 +203,13 @@ private:
     void source_sweep(const Complex* dw, const double* dg, bool speed, Complex* out,
                       bool yield = false) const;
     // Solves (I - G') x = b to relative residual eta; returns the iterations.
+    // lanes: the inner products in partial sums (faster, other bits; the
+    // warm starts' Newton steps).
     int gmres(GridConvolution& conv, const std::vector<Complex>& b, std::vector<Complex>& x,
-              double eta, int max_iterations);
+              double eta, int max_iterations, bool lanes);
+    template <int L>
+    int arnoldi(GridConvolution& conv, const std::vector<Complex>& b, std::vector<Complex>& x,
+                double eta, int max_iterations);
     double residual_norm(const std::vector<Complex>& q, const std::vector<Complex>& gq,
                          std::vector<Complex>& f, double& max_rel) const;
 
@@ -245,6 +251,7 @@ private:
     std::unique_ptr<Complex, Release> basis_;
     Complex* basis(int k) { return basis_.get() + static_cast<size_t>(n_) * k; }
     std::vector<double> hessenberg_, cs_, sn_, rhs_, y_;
+    KernelIsa isa_; // the copy of warm GMRES's kernel (steady_rolling.cpp)
     int products_ = 0;
 };
 
