@@ -479,8 +479,8 @@ MUTANTS += [
     # only with the force prescribed; with the approach prescribed u_ is stale.
     dict(id="normal-stale-first-product", what="the normal problem's gradients reuse a stale "
          "product with the approach prescribed", file="core/normal/normal_problem.cpp",
-         old="                                 fixed_sum))",
-         new="                                 true))",
+         old="        if (!conjugate_gradients(conv, fixed_sum, fixed_sum, target, pass_tolerance,",
+         new="        if (!conjugate_gradients(conv, fixed_sum, true, target, pass_tolerance,",
          tests=GAP + ["test_nonhertz_jacobian", "test_wheelrail_forces"]),
 ]
 # The solved-contact view's one export (core/contact/solved_contact.*,
