@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <string>
 #include <vector>
 
 #include "contact/hertz.hpp"
@@ -96,6 +97,24 @@ double check_elements(cw::Solver& s, const cw::ContactInput& in, double tol, con
     return t.Fx;
 }
 
+// check_elements in both rolling directions ("what" and "what, -x").
+void check_both_directions(cw::Solver& s, cw::ContactInput& in, const std::string& what)
+{
+    for (int d : {1, -1}) {
+        in.rolling_direction = d;
+        check_elements(s, in, 1e-12, (d > 0 ? what : what + ", -x").c_str());
+    }
+}
+
+// The rational law of the slip speed: mu from 0.35 at rest to 0.2.
+void set_rational_law(cw::ContactInput& in)
+{
+    in.friction_law = cw::FrictionLaw::rational;
+    in.mu = 0.2;
+    in.mu_e1 = 0.15;
+    in.s_h1 = 3.0;
+}
+
 // After the factors, a solve without them equals a fresh solver's, bitwise.
 void check_plain(cw::Solver& s, const cw::GridSpec& g, const cw::ContactInput& in)
 {
@@ -114,19 +133,10 @@ void fastsim_takes_factors(void**)
     g.box_scale = 1.05;
     cw::Solver s(g);
     cw::ContactInput in = contact();
-    for (int d : {1, -1}) {
-        in.rolling_direction = d;
-        check_elements(s, in, 1e-12, d > 0 ? "FASTSIM, Coulomb" : "FASTSIM, Coulomb, -x");
-    }
+    check_both_directions(s, in, "FASTSIM, Coulomb");
     check_plain(s, g, in);
-    in.friction_law = cw::FrictionLaw::rational;
-    in.mu = 0.2;
-    in.mu_e1 = 0.15;
-    in.s_h1 = 3.0;
-    for (int d : {1, -1}) {
-        in.rolling_direction = d;
-        check_elements(s, in, 1e-12, d > 0 ? "FASTSIM, rational law" : "FASTSIM, rational law, -x");
-    }
+    set_rational_law(in);
+    check_both_directions(s, in, "FASTSIM, rational law");
     check_plain(s, g, in);
 }
 
@@ -186,10 +196,7 @@ void gap_exact_takes_factors(void**)
     std::vector<double> h;
     const cw::GridSpec g = hertz_gap_grid(in, h);
     cw::Solver s(g);
-    for (int d : {1, -1}) {
-        in.rolling_direction = d;
-        check_elements(s, in, 1e-12, d > 0 ? "exact, gap grid" : "exact, gap grid, -x");
-    }
+    check_both_directions(s, in, "exact, gap grid");
     in.warm_start = false;
     check_plain(s, g, in);
     check_jacobian_holds_factors(s, in, "gap exact");
@@ -204,21 +211,11 @@ void gap_fastsim_takes_factors(void**)
     std::vector<double> h;
     const cw::GridSpec g = hertz_gap_grid(in, h);
     cw::Solver s(g);
-    for (int d : {1, -1}) {
-        in.rolling_direction = d;
-        check_elements(s, in, 1e-12, d > 0 ? "FASTSIM, gap grid" : "FASTSIM, gap grid, -x");
-    }
+    check_both_directions(s, in, "FASTSIM, gap grid");
     check_plain(s, g, in);
     check_jacobian_holds_factors(s, in, "gap FASTSIM, Coulomb");
-    in.friction_law = cw::FrictionLaw::rational;
-    in.mu = 0.2;
-    in.mu_e1 = 0.15;
-    in.s_h1 = 3.0;
-    for (int d : {1, -1}) {
-        in.rolling_direction = d;
-        check_elements(s, in, 1e-12,
-                       d > 0 ? "FASTSIM, gap grid, rational law" : "FASTSIM, gap grid, rational law, -x");
-    }
+    set_rational_law(in);
+    check_both_directions(s, in, "FASTSIM, gap grid, rational law");
     check_plain(s, g, in);
     check_jacobian_holds_factors(s, in, "gap FASTSIM, rational law");
 }
