@@ -6,10 +6,14 @@
 // timed assertion anywhere (doc/performance.md has the table).
 //
 //   creepwork_bench_nonhertz [--contact-eps E] [--quick] [--fast] [--cold-only K]
-//                            [--cases ID,ID...]
+//                            [--rounds R] [--cases ID,ID...]
 //
 // Shapes from gap_shapes.hpp with the creepages of data/contact_cases.csv.
-//  cold       create a solver and solve once (CW_SOLVE_FULL): best of samples
+// Each shape is timed in R rounds (default 5, --quick 1): a round runs
+// CONTACT's solve, two cold solves and the two warm runs one after the
+// other, and every column is the best of its rounds, so that CONTACT and
+// creepwork meet the same spells of a machine whose speed drifts.
+//  cold       create a solver and solve once (CW_SOLVE_FULL)
 //  warm       one solver, warm-started, creepages drifting by at most 1 % a
 //             step (xi_x, xi_y, phi each x (1 + 0.1 sin(2 pi k/100 + offset)))
 //             with the gap fixed (the normal solution is kept), and with the
@@ -209,7 +213,7 @@ int main(int argc, char** argv)
 {
     double contact_eps = 1e-8;
     bool quick = false, fast_only = false;
-    int cold_only = 0;
+    int cold_only = 0, rounds = 0;
     std::vector<std::string> ids = {"N07_wide", "N04_crescent", "N01_hollow", "N03_three_lobes",
                                     "N06_flange_root", "H20_hertz"};
     for (int k = 1; k < argc; ++k) {
@@ -220,6 +224,8 @@ int main(int argc, char** argv)
             quick = true;
         else if (a == "--fast")
             fast_only = true;
+        else if (a == "--rounds" && k + 1 < argc)
+            rounds = std::max(std::atoi(argv[++k]), 1);
         else if (a == "--cold-only" && k + 1 < argc)
             cold_only = std::max(std::atoi(argv[++k]), 1);
         else if (a == "--cases" && k + 1 < argc) {
@@ -233,7 +239,7 @@ int main(int argc, char** argv)
         } else {
             std::fprintf(stderr,
                          "usage: %s [--contact-eps E] [--quick] [--fast] [--cold-only K] "
-                         "[--cases ID,...]\n",
+                         "[--rounds R] [--cases ID,...]\n",
                          argv[0]);
             return 2;
         }
@@ -270,6 +276,7 @@ int main(int argc, char** argv)
         h.normal_force = 100e3;
         shapes.push_back(h);
     }
+    if (rounds == 0) rounds = quick ? 1 : 5;
     if (fast_only) return fast_table(ids, shapes, quick);
     if (cold_only) return cold_table(ids, shapes, cold_only);
 #ifndef CW_BENCH_CONTACT
@@ -277,10 +284,16 @@ int main(int argc, char** argv)
 #endif
 
     std::printf("Contacts of any shape: the exact model on the gap grid (tolerance 1e-8, "
-                "CW_SOLVE_FULL), one core, thread CPU time.");
+                "CW_SOLVE_FULL), one core, thread CPU time; each column the best of %d rounds "
+                "run one after the other (in each: ", rounds);
+#ifdef CW_BENCH_CONTACT
+    std::printf("CONTACT's solve, ");
+#endif
+    std::printf("2 cold solves, %d warm steps with the gap fixed, %d drifting).", quick ? 20 : 100,
+                quick ? 20 : 100);
 #ifdef CW_BENCH_CONTACT
     std::printf(" CONTACT (d431cdb, this build: no MKL, so no FFT) module 3, exact normal and "
-                "tangential problems, EPS %g, the same gap, cntc_calculate once per solve%s.",
+                "tangential problems, EPS %g, the same gap, cntc_calculate once per round%s.",
                 contact_eps,
                 std::getenv("GLIBC_TUNABLES") ? "" : " (GLIBC_TUNABLES not set: page faults count)");
     if (contact_gap_init() != 0) return 1;
@@ -289,11 +302,12 @@ int main(int argc, char** argv)
                 "warm ms (gap drifting) | warm FFT products/step (fixed, drifting) | "
                 "normal FFT products/step (gap drifting) | semi-Hertz normal us |");
 #ifdef CW_BENCH_CONTACT
-    std::printf(" CONTACT ms | CONTACT / cold | CONTACT / warm (gap drifting) |");
+    std::printf(" CONTACT ms | CONTACT / cold | CONTACT / warm (gap fixed) | CONTACT / warm (gap "
+                "drifting) |");
 #endif
     std::printf("\n|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|");
 #ifdef CW_BENCH_CONTACT
-    std::printf("---:|---:|---:|");
+    std::printf("---:|---:|---:|---:|");
 #endif
     std::printf("\n");
     for (const std::string& id : ids) {
@@ -304,22 +318,53 @@ int main(int argc, char** argv)
         const cw::ContactInput in = exact_input(s);
         const cw::GridSpec g = gapshapes::grid_of(s);
 
-        // Cold: create + solve, best of samples.
-        double cold = 1e300;
+#ifdef CW_BENCH_CONTACT
+        contact_gap_case cc{};
+        cc.nx = s.nx;
+        cc.ny = s.ny;
+        cc.x0 = s.x0;
+        cc.y0 = s.y0;
+        cc.dx = s.dx;
+        cc.dy = s.dy;
+        cc.h = s.h.data();
+        cc.approach_given = s.approach_given;
+        cc.normal_force = s.normal_force;
+        cc.approach = s.approach;
+        cc.G = s.G;
+        cc.nu = s.nu;
+        cc.mu = s.mu;
+        cc.xi_x = c.xi_x;
+        cc.xi_y = c.xi_y;
+        cc.phi = c.phi;
+        cc.rolling_direction = s.rolling_direction;
+        cc.eps = contact_eps;
+        contact_gap_setup(&cc);
+        contact_gap_result r{};
+        double contact = 1e300;
+#endif
+        // Rounds: in each, CONTACT's solve, two cold solves, a warm run with
+        // the gap fixed and one with it drifting, one after the other; each
+        // column the best of its rounds. The machine's speed drifts over
+        // minutes, so both programs meet the same spells.
+        double cold = 1e300, warm_fixed = 1e300, warm_moving = 1e300;
         cw::SolveTotals t;
-        for (int k = 0; k < (quick ? 3 : 9); ++k) {
-            const double t0 = thread_seconds();
-            cw::Solver solver(g);
-            t = solver.solve(in, cw::SolveMode::full);
-            cold = std::min(cold, thread_seconds() - t0);
-        }
-        // Warm: the gap fixed, then drifting; best of three runs.
         const int steps = quick ? 20 : 100;
-        double warm_fixed = 1e300, warm_moving = 1e300;
         double products[2] = {0, 0}; // FFT products per warm step: gap fixed, drifting
         double normal_products = 0;  // the normal problem's, gap drifting
         std::vector<double> h = s.h;
-        for (int run = 0; run < (quick ? 1 : 3); ++run)
+        for (int round = 0; round < rounds; ++round) {
+#ifdef CW_BENCH_CONTACT
+            contact_gap_solve(&cc, 1, &r);
+            contact = std::min(contact, r.seconds);
+#endif
+            // Cold: create + solve.
+            for (int k = 0; k < 2; ++k) {
+                const double t0 = thread_seconds();
+                cw::Solver solver(g);
+                t = solver.solve(in, cw::SolveMode::full);
+                cold = std::min(cold, thread_seconds() - t0);
+            }
+            // Warm: the gap fixed, then drifting.
             for (int moving = 0; moving < 2; ++moving) {
                 cw::Solver solver(g);
                 cw::ContactInput w = in;
@@ -345,6 +390,7 @@ int main(int argc, char** argv)
                 if (moving) normal_products = double(normal_count) / steps;
                 (moving ? warm_moving : warm_fixed) = std::min(moving ? warm_moving : warm_fixed, per);
             }
+        }
         // The semi-Hertzian method alone.
         cw::SemiHertz sh(s.nx, s.ny);
         std::vector<double> p(s.h.size());
@@ -362,32 +408,8 @@ int main(int argc, char** argv)
                     sig3(warm_fixed * 1e3).c_str(), sig3(warm_moving * 1e3).c_str(), products[0],
                     products[1], normal_products, sig3(fast * 1e6).c_str());
 #ifdef CW_BENCH_CONTACT
-        contact_gap_case cc{};
-        cc.nx = s.nx;
-        cc.ny = s.ny;
-        cc.x0 = s.x0;
-        cc.y0 = s.y0;
-        cc.dx = s.dx;
-        cc.dy = s.dy;
-        cc.h = s.h.data();
-        cc.approach_given = s.approach_given;
-        cc.normal_force = s.normal_force;
-        cc.approach = s.approach;
-        cc.G = s.G;
-        cc.nu = s.nu;
-        cc.mu = s.mu;
-        cc.xi_x = c.xi_x;
-        cc.xi_y = c.xi_y;
-        cc.phi = c.phi;
-        cc.rolling_direction = s.rolling_direction;
-        cc.eps = contact_eps;
-        contact_gap_setup(&cc);
-        contact_gap_result r{};
-        const double t0 = thread_seconds();
-        contact_gap_solve(&cc, 1, &r);
-        const double contact = thread_seconds() - t0;
-        std::printf(" %s | %.0f | %.0f |", sig3(contact * 1e3).c_str(), contact / cold,
-                    contact / warm_moving);
+        std::printf(" %s | %.0f | %.0f | %.0f |", sig3(contact * 1e3).c_str(), contact / cold,
+                    contact / warm_fixed, contact / warm_moving);
         if (r.n_adhesion != t.n_adhesion || r.n_slip != t.n_slip)
             std::printf(" (CONTACT %d/%d elements at EPS %g)", r.n_adhesion, r.n_slip, contact_eps);
 #endif
