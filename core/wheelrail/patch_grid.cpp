@@ -9,12 +9,16 @@ namespace creepwork::wheelrail {
 namespace {
 
 constexpr double kApart = 1.0; // [m] h where a surface is missing: far apart
-constexpr int kNodes = 5;      // exact wheel heights per row, quartic in between
+constexpr int kNodes = WheelNodes::kPerRow; // exact wheel heights per row, quartic in between
+constexpr double kColdStep = 1e-14; // [m] Newton's last step from a far start
+constexpr double kWarmStep = 1e-8;  // [m] ... from the last height's point (below)
 
 // The wheel surface point on the line p(t) = b + a_x x + a_s s + a_n t in
 // wheel profile coordinates: (p_z + R)^2 + p_x^2 = (R + z(p_y))^2, the root
-// near t (Newton; the far root lies a wheel diameter away).
-bool solve_wheel(const ProfileTable& tab, double R, const Vec3& q, const Vec3& an, double& t)
+// near t (Newton; the far root lies a wheel diameter away), done at a step
+// below last_step.
+bool solve_wheel(const ProfileTable& tab, double R, const Vec3& q, const Vec3& an, double& t,
+                 double last_step = kColdStep)
 {
     for (int it = 0; it < 30; ++it) {
         const Vec3 p = q + t * an;
@@ -26,7 +30,7 @@ bool solve_wheel(const ProfileTable& tab, double R, const Vec3& q, const Vec3& a
         if (dg == 0.0) return false;
         const double step = quotient_or_zero(g, dg);
         t -= step;
-        if (std::abs(step) < 1e-14) return std::isfinite(t);
+        if (std::abs(step) < last_step) return std::isfinite(t);
     }
     return false;
 }
@@ -116,7 +120,7 @@ bool wheel_surface_n(const Frame& ref, const ProfileTable& tab, const Frame& whe
 }
 
 void undeformed_distance(const Frame& ref, const Profile& rail, double s_rail, const ProfileTable& tab,
-                         const Frame& wheel, double R, PatchGrid& g)
+                         const Frame& wheel, double R, PatchGrid& g, WheelNodes* kept, bool warm)
 {
     const Mat3 a = wheel.r.transpose() * ref.r;
     const Vec3 b = wheel.r.transpose() * (ref.o - wheel.o);
@@ -157,7 +161,20 @@ void undeformed_distance(const Frame& ref, const Profile& rail, double s_rail, c
     }
     double sigma = s_rail, tn[kNodes];
     bool have_guess = false;
-    g.h_min = kApart;
+    double h_min = kApart; // a local: row's stores cannot alias it
+    // the last height's points: the same grid, the wheel moved along z only
+    warm = warm && kept && kept->nx == g.nx && kept->ny == g.ny && kept->ix_lo == g.ix_lo &&
+           kept->iy_lo == g.iy_lo && kept->dx == g.dx && kept->ds == g.ds;
+    if (kept && !warm) {
+        kept->nx = g.nx;
+        kept->ny = g.ny;
+        kept->ix_lo = g.ix_lo;
+        kept->iy_lo = g.iy_lo;
+        kept->dx = g.dx;
+        kept->ds = g.ds;
+        kept->p.assign(static_cast<size_t>(g.ny) * kNodes, Vec3::Zero());
+        kept->found.assign(static_cast<size_t>(g.ny), 0);
+    }
     for (int j = 0; j < g.ny; ++j) {
         const double s = (g.iy_lo + j) * g.ds;
         double* row = &g.h[static_cast<size_t>(j) * g.nx];
@@ -165,14 +182,23 @@ void undeformed_distance(const Frame& ref, const Profile& rail, double s_rail, c
         double sig = j == 0 ? s_rail + s : sigma;
         if (!rail_n(rail, ref, s, sig, nr)) {
             std::fill(row, row + g.nx, kApart);
+            if (kept) kept->found[static_cast<size_t>(j)] = 0;
             continue;
         }
         sigma = sig + g.ds;
         bool ok = true;
+        const bool from_kept = warm && kept->found[static_cast<size_t>(j)];
+        Vec3* old = kept ? &kept->p[static_cast<size_t>(j) * kNodes] : nullptr;
         for (int k = 0; k < nodes && ok; ++k) {
-            if (!have_guess) tn[k] = nr;
-            ok = solve_wheel(tab, R, b + a.col(0) * xn[k] + a.col(1) * s, an, tn[k]);
+            const Vec3 q = b + a.col(0) * xn[k] + a.col(1) * s;
+            if (from_kept)
+                tn[k] = an.dot(old[k] - q);
+            else if (!have_guess)
+                tn[k] = nr;
+            ok = solve_wheel(tab, R, q, an, tn[k], from_kept ? kWarmStep : kColdStep);
+            if (ok && kept) old[k] = q + tn[k] * an;
         }
+        if (kept) kept->found[static_cast<size_t>(j)] = ok;
         if (!ok) {
             std::fill(row, row + g.nx, kApart);
             have_guess = false;
@@ -185,14 +211,16 @@ void undeformed_distance(const Frame& ref, const Profile& rail, double s_rail, c
             double c[kNodes] = {};
             for (int d = 0; d < nodes; ++d)
                 for (int k = 0; k < nodes; ++k) c[d] += vinv[d][k] * tn[k];
-            const double du = g.dx / xh;
+            const double du = g.dx / xh, c0 = c[0], c1 = c[1], c2 = c[2], c3 = c[3], c4 = c[4];
             for (int i = 0; i < g.nx; ++i) {
                 const double u = -1.0 + i * du;
-                row[i] = nr - (c[0] + u * (c[1] + u * (c[2] + u * (c[3] + u * c[4]))));
+                row[i] = nr - (c0 + u * (c1 + u * (c2 + u * (c3 + u * c4))));
             }
         }
-        for (int i = 0; i < g.nx; ++i) g.h_min = std::min(g.h_min, row[i]);
+        // apart from the loop above, which vectorizes without the minimum
+        for (int i = 0; i < g.nx; ++i) h_min = std::min(h_min, row[i]);
     }
+    g.h_min = h_min;
 }
 
 } // namespace creepwork::wheelrail
