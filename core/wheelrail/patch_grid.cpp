@@ -164,7 +164,9 @@ void undeformed_distance(const Frame& ref, const Profile& rail, double s_rail, c
     double h_min = kApart; // a local: row's stores cannot alias it
     // the last height's points: the same grid, the wheel moved along z only
     warm = warm && kept && kept->nx == g.nx && kept->ny == g.ny && kept->ix_lo == g.ix_lo &&
-           kept->iy_lo == g.iy_lo && kept->dx == g.dx && kept->ds == g.ds;
+           kept->iy_lo == g.iy_lo && kept->dx == g.dx && kept->ds == g.ds && kept->wheel.r == wheel.r &&
+           kept->wheel.o(0) == wheel.o(0) && kept->wheel.o(1) == wheel.o(1);
+    if (kept) kept->wheel = wheel;
     if (kept && !warm) {
         kept->nx = g.nx;
         kept->ny = g.ny;
