@@ -107,7 +107,7 @@ void potential_contact(const Region& region, const Profile& rail, double s_rail,
             g.ny = size(sp_lo, sp_hi, g.ds, g.iy_lo);
         }
     }
-    g.h.assign(static_cast<size_t>(g.nx) * g.ny, 0.0);
+    g.h.resize(static_cast<size_t>(g.nx) * g.ny); // every element written by undeformed_distance
 }
 
 bool wheel_surface_n(const Frame& ref, const ProfileTable& tab, const Frame& wheel, double R, double x,
