@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "contact/fp_safe.hpp"
+#include "simd/simd.hpp"
 
 namespace creepwork::wheelrail {
 namespace {
@@ -33,6 +34,24 @@ bool solve_wheel(const ProfileTable& tab, double R, const Vec3& q, const Vec3& a
         if (std::abs(step) < last_step) return std::isfinite(t);
     }
     return false;
+}
+
+// The least of lowest and row[0..n): two elements per vector, two vectors
+// at a time (min is exact: the same value as a scalar loop, which
+// compilers do not vectorize for doubles).
+double row_lowest(const double* row, int n, double lowest)
+{
+    using V = simd::Vec<2>;
+    V m0 = simd::broadcast<2>(lowest), m1 = m0;
+    int i = 0;
+    for (; i + 4 <= n; i += 4) {
+        const V a = simd::load<2>(row + i), b = simd::load<2>(row + i + 2);
+        m0 = a < m0 ? a : m0;
+        m1 = b < m1 ? b : m1;
+    }
+    double best = simd::min_lane(m0 < m1 ? m0 : m1);
+    for (; i < n; ++i) best = std::min(best, row[i]);
+    return best;
 }
 
 // The rail's n coordinate at lateral coordinate s of the patch frame: the
@@ -220,7 +239,7 @@ void undeformed_distance(const Frame& ref, const Profile& rail, double s_rail, c
             }
         }
         // apart from the loop above, which vectorizes without the minimum
-        for (int i = 0; i < g.nx; ++i) h_min = std::min(h_min, row[i]);
+        h_min = row_lowest(row, g.nx, h_min);
     }
     g.h_min = h_min;
 }
