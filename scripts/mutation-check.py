@@ -757,6 +757,21 @@ WHEELRAIL_MUTANTS += [
          old="                zw_[i] = zw_sampled_[i] + dz;",
          new="                zw_[i] = zw_sampled_[i];",
          tests=["test_wheelrail_geometry"] + BALANCE, require=["test_wheelrail_geometry", "test_wheelrail_forces"]),
+    # The later heights' wheel solves from the last height's points
+    # (core/wheelrail/patch_grid.cpp): a step's warm start misses by more
+    # than their stop only after steps larger than a balance's, which only
+    # the geometry test takes (within a balance one Newton step reaches
+    # rounding whatever the stop): one catcher is all there is.
+    dict(id="wheelrail-warm-wheel-stop", what="the later heights' wheel solves stopped at a step below 1e-3 m",
+         file="core/wheelrail/patch_grid.cpp",
+         old="constexpr double kWarmStep = 1e-8; ",
+         new="constexpr double kWarmStep = 1e-3; ",
+         tests=["test_wheelrail_geometry"] + BALANCE, require=["test_wheelrail_geometry"], min_caught=1),
+    dict(id="wheelrail-warm-wheel-moved", what="the last height's wheel points used after a lateral move",
+         file="core/wheelrail/patch_grid.cpp",
+         old="           kept->wheel.o(0) == wheel.o(0) && kept->wheel.o(1) == wheel.o(1);",
+         new="           true;",
+         tests=["test_wheelrail_geometry"] + BALANCE, require=["test_wheelrail_geometry"], min_caught=1),
     dict(id="wheelrail-balance-last-evaluation", what="the forces returned from every evaluation's patches, not the last's",
          file="core/wheelrail/patch_contact.cpp",
          old="            evaluated_.clear();",

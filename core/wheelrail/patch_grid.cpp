@@ -4,17 +4,22 @@
 #include <cmath>
 
 #include "contact/fp_safe.hpp"
+#include "simd/simd.hpp"
 
 namespace creepwork::wheelrail {
 namespace {
 
 constexpr double kApart = 1.0; // [m] h where a surface is missing: far apart
-constexpr int kNodes = 5;      // exact wheel heights per row, quartic in between
+constexpr int kNodes = WheelNodes::kPerRow; // exact wheel heights per row, quartic in between
+constexpr double kColdStep = 1e-14; // [m] Newton's last step from a far start
+constexpr double kWarmStep = 1e-8;  // [m] ... from the last height's point (below)
 
 // The wheel surface point on the line p(t) = b + a_x x + a_s s + a_n t in
 // wheel profile coordinates: (p_z + R)^2 + p_x^2 = (R + z(p_y))^2, the root
-// near t (Newton; the far root lies a wheel diameter away).
-bool solve_wheel(const ProfileTable& tab, double R, const Vec3& q, const Vec3& an, double& t)
+// near t (Newton; the far root lies a wheel diameter away), done at a step
+// below last_step.
+bool solve_wheel(const ProfileTable& tab, double R, const Vec3& q, const Vec3& an, double& t,
+                 double last_step = kColdStep)
 {
     for (int it = 0; it < 30; ++it) {
         const Vec3 p = q + t * an;
@@ -26,9 +31,27 @@ bool solve_wheel(const ProfileTable& tab, double R, const Vec3& q, const Vec3& a
         if (dg == 0.0) return false;
         const double step = quotient_or_zero(g, dg);
         t -= step;
-        if (std::abs(step) < 1e-14) return std::isfinite(t);
+        if (std::abs(step) < last_step) return std::isfinite(t);
     }
     return false;
+}
+
+// The least of lowest and row[0..n): two elements per vector, two vectors
+// at a time (min is exact: the same value as a scalar loop, which
+// compilers do not vectorize for doubles).
+double row_lowest(const double* row, int n, double lowest)
+{
+    using V = simd::Vec<2>;
+    V m0 = simd::broadcast<2>(lowest), m1 = m0;
+    int i = 0;
+    for (; i + 4 <= n; i += 4) {
+        const V a = simd::load<2>(row + i), b = simd::load<2>(row + i + 2);
+        m0 = a < m0 ? a : m0;
+        m1 = b < m1 ? b : m1;
+    }
+    double best = simd::min_lane(m0 < m1 ? m0 : m1);
+    for (; i < n; ++i) best = std::min(best, row[i]);
+    return best;
 }
 
 // The rail's n coordinate at lateral coordinate s of the patch frame: the
@@ -103,7 +126,7 @@ void potential_contact(const Region& region, const Profile& rail, double s_rail,
             g.ny = size(sp_lo, sp_hi, g.ds, g.iy_lo);
         }
     }
-    g.h.assign(static_cast<size_t>(g.nx) * g.ny, 0.0);
+    g.h.resize(static_cast<size_t>(g.nx) * g.ny); // every element written by undeformed_distance
 }
 
 bool wheel_surface_n(const Frame& ref, const ProfileTable& tab, const Frame& wheel, double R, double x,
@@ -116,7 +139,7 @@ bool wheel_surface_n(const Frame& ref, const ProfileTable& tab, const Frame& whe
 }
 
 void undeformed_distance(const Frame& ref, const Profile& rail, double s_rail, const ProfileTable& tab,
-                         const Frame& wheel, double R, PatchGrid& g)
+                         const Frame& wheel, double R, PatchGrid& g, WheelNodes* kept, bool warm)
 {
     const Mat3 a = wheel.r.transpose() * ref.r;
     const Vec3 b = wheel.r.transpose() * (ref.o - wheel.o);
@@ -157,7 +180,22 @@ void undeformed_distance(const Frame& ref, const Profile& rail, double s_rail, c
     }
     double sigma = s_rail, tn[kNodes];
     bool have_guess = false;
-    g.h_min = kApart;
+    double h_min = kApart; // a local: row's stores cannot alias it
+    // the last height's points: the same grid, the wheel moved along z only
+    warm = warm && kept && kept->nx == g.nx && kept->ny == g.ny && kept->ix_lo == g.ix_lo &&
+           kept->iy_lo == g.iy_lo && kept->dx == g.dx && kept->ds == g.ds && kept->wheel.r == wheel.r &&
+           kept->wheel.o(0) == wheel.o(0) && kept->wheel.o(1) == wheel.o(1);
+    if (kept) kept->wheel = wheel;
+    if (kept && !warm) {
+        kept->nx = g.nx;
+        kept->ny = g.ny;
+        kept->ix_lo = g.ix_lo;
+        kept->iy_lo = g.iy_lo;
+        kept->dx = g.dx;
+        kept->ds = g.ds;
+        kept->p.assign(static_cast<size_t>(g.ny) * kNodes, Vec3::Zero());
+        kept->found.assign(static_cast<size_t>(g.ny), 0);
+    }
     for (int j = 0; j < g.ny; ++j) {
         const double s = (g.iy_lo + j) * g.ds;
         double* row = &g.h[static_cast<size_t>(j) * g.nx];
@@ -165,14 +203,23 @@ void undeformed_distance(const Frame& ref, const Profile& rail, double s_rail, c
         double sig = j == 0 ? s_rail + s : sigma;
         if (!rail_n(rail, ref, s, sig, nr)) {
             std::fill(row, row + g.nx, kApart);
+            if (kept) kept->found[static_cast<size_t>(j)] = 0;
             continue;
         }
         sigma = sig + g.ds;
         bool ok = true;
+        const bool from_kept = warm && kept->found[static_cast<size_t>(j)];
+        Vec3* old = kept ? &kept->p[static_cast<size_t>(j) * kNodes] : nullptr;
         for (int k = 0; k < nodes && ok; ++k) {
-            if (!have_guess) tn[k] = nr;
-            ok = solve_wheel(tab, R, b + a.col(0) * xn[k] + a.col(1) * s, an, tn[k]);
+            const Vec3 q = b + a.col(0) * xn[k] + a.col(1) * s;
+            if (from_kept)
+                tn[k] = an.dot(old[k] - q);
+            else if (!have_guess)
+                tn[k] = nr;
+            ok = solve_wheel(tab, R, q, an, tn[k], from_kept ? kWarmStep : kColdStep);
+            if (ok && kept) old[k] = q + tn[k] * an;
         }
+        if (kept) kept->found[static_cast<size_t>(j)] = ok;
         if (!ok) {
             std::fill(row, row + g.nx, kApart);
             have_guess = false;
@@ -185,14 +232,16 @@ void undeformed_distance(const Frame& ref, const Profile& rail, double s_rail, c
             double c[kNodes] = {};
             for (int d = 0; d < nodes; ++d)
                 for (int k = 0; k < nodes; ++k) c[d] += vinv[d][k] * tn[k];
-            const double du = g.dx / xh;
+            const double du = g.dx / xh, c0 = c[0], c1 = c[1], c2 = c[2], c3 = c[3], c4 = c[4];
             for (int i = 0; i < g.nx; ++i) {
                 const double u = -1.0 + i * du;
-                row[i] = nr - (c[0] + u * (c[1] + u * (c[2] + u * (c[3] + u * c[4]))));
+                row[i] = nr - (c0 + u * (c1 + u * (c2 + u * (c3 + u * c4))));
             }
         }
-        for (int i = 0; i < g.nx; ++i) g.h_min = std::min(g.h_min, row[i]);
+        // apart from the loop above, which vectorizes without the minimum
+        h_min = row_lowest(row, g.nx, h_min);
     }
+    g.h_min = h_min;
 }
 
 } // namespace creepwork::wheelrail

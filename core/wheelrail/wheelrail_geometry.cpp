@@ -100,13 +100,15 @@ const WheelRailState& WheelRailGeometry::evaluate(const WheelsetPosition& pos, c
     state_.gap_min = search_.find(wheel, regions_, height_only);
     combine_regions(regions_, opt_);
     state_.patches.resize(regions_.size());
+    wheel_nodes_.resize(regions_.size());
     for (size_t k = 0; k < regions_.size(); ++k) {
         const Region& reg = regions_[k];
         ContactPatch& cp = state_.patches[k];
         double s_rail = 0.0;
         const Frame ref = contact_reference(reg, rail_track_, s_rail);
         potential_contact(reg, rail_track_, s_rail, ref, opt_, grid_);
-        undeformed_distance(ref, rail_track_, s_rail, wheel_table_, wheel, wheelset_.nominal_radius, grid_);
+        undeformed_distance(ref, rail_track_, s_rail, wheel_table_, wheel, wheelset_.nominal_radius, grid_,
+                            &wheel_nodes_[k], height_only);
         const Creepages c = creepages_at(ref, -grid_.h_min, ws, vel, track_, side_);
         // positions, un-mirrored for the left side
         const Frame in_rail = rail_frame_.local_of(ref), in_wheel = wheel.local_of(ref);

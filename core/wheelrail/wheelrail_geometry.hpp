@@ -73,7 +73,9 @@ public:
     // The patches at a prescribed wheelset position. height_only: the
     // position may differ from the last evaluated one in z alone; the
     // contact search then shifts that position's samples of the wheel
-    // instead of sampling it anew (ContactSearch::find).
+    // instead of sampling it anew (ContactSearch::find), and the wheel's
+    // surface on a patch grid laid out as at the last height is solved from
+    // the points found there (undeformed_distance).
     const WheelRailState& evaluate(const WheelsetPosition& position, const WheelsetVelocity& velocity,
                                    bool height_only = false);
     const WheelRailState& state() const { return state_; }
@@ -105,6 +107,7 @@ private:
     ContactSearch search_;
     std::vector<Region> regions_;
     PatchGrid grid_;
+    std::vector<WheelNodes> wheel_nodes_; // per patch: the wheel's points at the last height
     WheelRailState state_;
 };
 
