@@ -441,7 +441,7 @@ MUTANTS += [
          old="    if (force) {", new="    if (false) {", tests=WARM_NORMAL),
     dict(id="normal-warm-loose-passes", what="a warm normal solve takes the loose first passes",
          file="core/normal/gap_normal.cpp",
-         old="                                       warm ? kNormalTolerance : kNormalFirstTolerance);",
+         old="                                       warm ? tolerance : kNormalFirstTolerance);",
          new="                                       kNormalFirstTolerance);", tests=WARM_NORMAL),
     dict(id="normal-share-product-again", what="a pass's first residual takes the share's product again",
          file="core/normal/normal_problem.cpp",

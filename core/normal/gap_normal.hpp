@@ -169,6 +169,7 @@ private:
         NormalMethod method = NormalMethod::exact;
         double value = 0, nu = 0, G = 0;
         int direction = 1;
+        double tolerance = 0; // the half-space problem's, of the solution held
     } held_;
     std::vector<double> held_gap_;
     // The last exact solutions of the held problem (options.warm).
