@@ -24,10 +24,12 @@ constexpr int kNormalMaxIterations = 500;
 // the derivative is then as good as the solution it linearises.
 constexpr double kLoadDerivativeTolerance = 1e-12;
 constexpr int kLoadDerivativeMaxIterations = 1000;
-// dN/d(approach) is a Newton slope (the wheel/rail force balance): sum z to
-// about 1e-6 is plenty, and the linear solve then takes about half the
-// iterations of the load derivative's.
-constexpr double kForceByApproachTolerance = 1e-6;
+// dN/d(approach) is a Newton slope (the wheel/rail force balance): max
+// |A z - 1| <= 1e-4 on the contact set is plenty (the exact balance took
+// the same evaluations with 1e-12, 1e-6 and 1e-4 on the Manchester
+// benchmark; doc/dev/decisions.md), and the linear solve then takes well
+// under half the iterations of the load derivative's.
+constexpr double kForceByApproachTolerance = 1e-4;
 
 // The half-space problem's tolerance for in: its own, or a looser one the
 // caller asks for (a wheel/rail force balance's trial heights).
