@@ -772,6 +772,18 @@ WHEELRAIL_MUTANTS += [
          old="        const PatchSolution& s = contact_.solve(p, k);",
          new="        const PatchSolution& s = contact_.solve(p, k, false, kTrialTolerance);",
          tests=BALANCE, require=["test_wheelrail_forces", "test_wheelrail_capi"]),
+    # The exact balance's start (the fast model's height) and its trials'
+    # looser normal problem, solved again at the height accepted.
+    dict(id="wheelrail-exact-start-fast", what="the exact balance from the Hertz estimate's height",
+         file="core/wheelrail/patch_contact.cpp",
+         old="        return solve_vertical_position(geometry_, fz, start, velocity, fast, options).z;",
+         new="        (void)fast; throw Error(ErrorKind::not_converged, \"no fast start\");",
+         tests=BALANCE, require=["test_wheelrail_forces", "test_wheelrail_capi"]),
+    dict(id="normal-held-tolerance", what="a final solve keeps the trial's normal solution to 1e-6",
+         file="core/normal/gap_normal.cpp",
+         old="    if (h.method == NormalMethod::exact && h.tolerance > normal_tolerance(in)) return false;",
+         new="    if (h.method == NormalMethod::exact && h.tolerance > 1.0) return false;",
+         tests=BALANCE, require=["test_wheelrail_forces", "test_wheelrail_capi"]),
     dict(id="wheelrail-law-speed", what="a patch's law takes twice its rolling speed",
          file="core/wheelrail/patch_contact.cpp",
          old="        in.V = p.veloc;",
