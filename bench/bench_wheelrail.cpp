@@ -17,7 +17,8 @@
 //
 //   creepwork_bench_wheelrail [SWEEPS [CONTACT EXAMPLES_DIR]]   (default 200)
 //   creepwork_bench_wheelrail --hunting CALLS [exact|fast [print]]  one hunting cycle's model
-//   creepwork_bench_wheelrail --positions exact|fast   one sweep of whole positions (callgrind)
+//   creepwork_bench_wheelrail --positions exact|fast [print]   one sweep of whole positions (callgrind);
+//       print: each position's height and forces
 #include <sys/resource.h>
 #include <time.h>
 
@@ -148,7 +149,7 @@ struct Timing {
 // handles (their solvers made for the grids met before).
 Timing whole_positions(const cwtest::Benchmark& b, const std::vector<cwtest::Row>& rows,
                        std::vector<double>& heights, const wr::PatchContactSettings& set, int force_sweeps,
-                       Start start, bool fresh)
+                       Start start, bool fresh, bool print = false)
 {
     const bool given_height = start == Start::given;
     std::vector<double> pos_cpu, pos_wall;
@@ -172,6 +173,9 @@ Timing whole_positions(const cwtest::Benchmark& b, const std::vector<cwtest::Row
             if (start == Start::zero) heights[k] = sol.z;
             if (s == 0) evaluations += sol.evaluations;
             if (!given_height) worst = std::max(worst, std::abs(sol.total.fz - 1e4) / 1e4);
+            if (print && s == 0)
+                std::printf("%zu %.17g %.17g %.17g %.17g %d\n", k, sol.z, sol.total.fx, sol.total.fy, sol.total.fz,
+                            sol.evaluations);
         }
         if (s < 0) continue; // the warm-up sweep
         pos_cpu.push_back(cpu / static_cast<double>(rows.size()));
@@ -213,7 +217,8 @@ int main(int argc, char** argv)
         }
         const auto rows = cwtest::read_rows(cwtest::wheelrail_data("contact_a22_geometry.csv"));
         std::vector<double> heights(rows.size(), 0.0);
-        const Timing t = whole_positions(b, rows, heights, set, 1, Start::zero, true);
+        const bool print = argc > 3 && std::string(argv[3]) == "print";
+        const Timing t = whole_positions(b, rows, heights, set, 1, Start::zero, true, print);
         std::printf("%.3f ms per position, %.2f evaluations per position, largest Fz error %.1e\n", 1e3 * t.cpu,
                     t.evaluations, t.fz_error);
         return 0;

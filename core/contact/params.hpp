@@ -102,6 +102,10 @@ struct ContactInput {
     double tolerance = 0.0;
     int max_iterations = 0;
     bool warm_start = true;
+    // The exact normal problem on a gap grid (gap_normal.hpp): its relative
+    // tolerance, 0 for its own (1e-10). Set by the wheel/rail force
+    // balance's trial heights only; the C ABI leaves it 0.
+    double normal_tolerance = 0.0;
     // CONTACT's facphi: the spin centre of the rigid slip shifted by
     // spin_offset * dx along x (uniform grid). Negative: the model's default
     // (0 for FASTSIM as Kalker 1982, 1/6 for exact as CONTACT).

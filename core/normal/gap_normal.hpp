@@ -10,7 +10,9 @@
 //    (semi_hertz.hpp; the fast path);
 // N = 0 gives no pressure and the approach where the surfaces just touch.
 // A warm solve of the problem solved last (the same gap, load, method,
-// material and rolling direction) keeps its solution. The pressure's
+// material and rolling direction) keeps its solution, unless it asks for a
+// tighter tolerance (ContactInput::normal_tolerance) than that was solved
+// to: it is then solved again from it. The pressure's
 // derivative by the load (for the Jacobians) follows the method of the last
 // solve. Made once per grid; solves allocate nothing.
 //
@@ -169,6 +171,7 @@ private:
         NormalMethod method = NormalMethod::exact;
         double value = 0, nu = 0, G = 0;
         int direction = 1;
+        double tolerance = 0; // the half-space problem's, of the solution held
     } held_;
     std::vector<double> held_gap_;
     // The last exact solutions of the held problem (options.warm).

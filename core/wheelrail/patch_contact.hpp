@@ -77,10 +77,11 @@ public:
     // The patch at the wheelset height its grid was made for; k is its
     // index in the position's patches. Solved in settings().mode, or forces
     // only when forces_only (the force balance's trial heights); tolerance
-    // > 0 replaces the settings' for this solve. Throws Error naming a bad
-    // input or Error(not_converged).
+    // > 0 replaces the settings' for this solve, normal_tolerance > 0 the
+    // exact normal problem's (ContactInput::normal_tolerance). Throws Error
+    // naming a bad input or Error(not_converged).
     const PatchSolution& solve(const ContactPatch& patch, std::size_t k = 0, bool forces_only = false,
-                               double tolerance = 0.0);
+                               double tolerance = 0.0, double normal_tolerance = 0.0);
     const PatchContactSettings& settings() const { return settings_; }
     // dfn/d(approach) [N/m] of the last patch solved, its normal method's
     // own (Solver::normal_force_by_approach).
@@ -129,9 +130,13 @@ public:
 
 private:
     void collect(int evaluations, bool solved);
+    // The exact balance's first height for the vertical force fz.
+    double exact_start(double fz, const WheelsetPosition& start, const WheelsetVelocity& velocity,
+                       const VerticalForceOptions& options);
 
     WheelRailGeometry geometry_;
     PatchContact contact_;
+    std::unique_ptr<PatchContact> start_; // the fast model, for the exact model's start
     WheelRailSolution solution_;
     int balanced_ = 0;              // force balances solved since the last solve_position
     double balance_z_[2] = {0, 0};  // the heights of the last two [m]: [1] the last

@@ -244,7 +244,9 @@ def test_profiles_meet_at_the_contact():
 def test_left_wheel_wears_the_same_profile_grid():
     """Mirror symmetry: the left wheel at the mirrored position (y, yaw and
     roll negated) wears the rail's and the wheel's grids (the profiles' y as
-    their points are given) as the right wheel does, to 1e-9 of the peak."""
+    their points are given) as the right wheel does, to 2e-6 of the peak: two
+    force balances each meet Fz to 1e-6 and may accept heights that far
+    apart (test_wheelrail_patch_capi's sides_mirror)."""
     mirrored = dict(MOTION, y=-MOTION["y"], yaw=-MOTION["yaw"], roll=-MOTION["roll"])
     depths = []
     for side, motion in ((creepwork.CW_WHEELRAIL_RIGHT, MOTION), (creepwork.CW_WHEELRAIL_LEFT, mirrored)):
@@ -256,4 +258,4 @@ def test_left_wheel_wears_the_same_profile_grid():
             depths.append((rail.depth("height"), wheel.depth("height")))
     for right, left in zip(depths[0], depths[1]):
         assert right.max() > 0
-        np.testing.assert_allclose(left, right, rtol=0, atol=1e-9 * right.max())
+        np.testing.assert_allclose(left, right, rtol=0, atol=2e-6 * right.max())
