@@ -1,0 +1,274 @@
+#include "exact/coarse_correction.hpp"
+
+#include <cmath>
+#include <utility>
+
+#include "simd/simd.hpp"
+
+namespace creepwork {
+
+namespace {
+
+// acc[t] = sum_c z[c] w[c len + t], the columns in order for every t (the
+// same bits in every ISA's copy), len a multiple of W or not.
+struct Combine : KernelWidths {
+    template <int W>
+    static CREEPWORK_INLINE void run(double* const& acc, const double* const& w,
+                                     const double* const& z, const int& m, const int& len)
+    {
+        using V = simd::Vec<W>;
+        const size_t stride = static_cast<size_t>(len);
+        int t = 0;
+        for (; t + 2 * W <= len; t += 2 * W) {
+            V a0{}, a1{};
+            for (int c = 0; c < m; ++c) {
+                const V zc = simd::broadcast<W>(z[c]);
+                a0 += zc * simd::load<W>(w + c * stride + t);
+                a1 += zc * simd::load<W>(w + c * stride + t + W);
+            }
+            simd::store<W>(acc + t, a0);
+            simd::store<W>(acc + t + W, a1);
+        }
+        for (; t < len; ++t) {
+            double a = 0.0;
+            for (int c = 0; c < m; ++c) a += z[c] * w[c * stride + t];
+            acc[t] = a;
+        }
+    }
+};
+
+} // namespace
+
+void CoarseCorrection::make_kernel(const GridConvolution& conv, bool rolling)
+{
+    // s(I) = sum_J B(I - J) q_J; B(d) = A(d) - A(d + e_x) rolling
+    // (grid_convolution.hpp), cf12 even in d as a whole.
+    const int wx = 2 * nx_ - 1, wy = 2 * ny_ - 1;
+    kxx_.resize(static_cast<size_t>(wx) * wy);
+    kxy_.resize(kxx_.size());
+    kyy_.resize(kxx_.size());
+    for (int dy = -(ny_ - 1); dy <= ny_ - 1; ++dy)
+        for (int dx = -(nx_ - 1); dx <= nx_ - 1; ++dx) {
+            const size_t t = static_cast<size_t>(dx + nx_ - 1) + static_cast<size_t>(wx) * (dy + ny_ - 1);
+            double xx = conv.cf11(dx, dy), xy = conv.cf12(dx, dy), yy = conv.cf22(dx, dy);
+            if (rolling) {
+                xx -= conv.cf11(dx + 1, dy);
+                xy -= conv.cf12(dx + 1, dy);
+                yy -= conv.cf22(dx + 1, dy);
+            }
+            kxx_[t] = xx;
+            kxy_[t] = xy;
+            kyy_[t] = yy;
+        }
+}
+
+void CoarseCorrection::reserve(int n)
+{
+    const size_t e = static_cast<size_t>(n), cols = 2 * static_cast<size_t>(kMaxAggregates);
+    for (auto* v : {&kxx_, &kxy_, &kyy_}) v->reserve(4 * e);
+    mask_.reserve(e);
+    agg_.reserve(e);
+    block_.reserve(e);
+    index_.reserve(e);
+    size_.reserve(cols);
+    bp_.reserve(e * cols);
+    gp_.reserve(e * cols);
+    wc_.reserve(2 * e * cols);
+    acc_.reserve(2 * e);
+    t_.reserve(cols * cols);
+    rhs_.reserve(cols);
+    pivot_.reserve(cols);
+    capacity_ = n;
+}
+
+void CoarseCorrection::set_space(const GridConvolution& conv, bool rolling, double layer, int nx,
+                                 int ny, const std::vector<double>& g)
+{
+    const int n = nx * ny;
+    bool same = nx == nx_ && ny == ny_ && rolling == rolling_ && layer == layer_ &&
+                conv.rho() == rho_ && conv.nu() == nu_;
+    const bool kernel_same = same;
+    for (int k = 0; same && k < n; ++k) same = mask_[k] == (g[k] > 0.0);
+    factored_ = false;
+    if (same) return;
+    nx_ = nx;
+    ny_ = ny;
+    n_ = n;
+    rolling_ = rolling;
+    layer_ = layer;
+    rho_ = conv.rho();
+    nu_ = conv.nu();
+    if (!kernel_same) make_kernel(conv, rolling);
+    mask_.resize(n);
+    agg_.resize(n);
+    int contact = 0;
+    for (int k = 0; k < n; ++k) {
+        mask_[k] = g[k] > 0.0;
+        contact += mask_[k];
+    }
+    // The smallest block side that keeps the aggregates within kMaxAggregates.
+    int side = 2;
+    for (;; ++side) {
+        const int bx = (nx + side - 1) / side, by = (ny + side - 1) / side;
+        std::vector<int>& id = block_;
+        id.assign(static_cast<size_t>(bx) * by, -1);
+        int count = 0;
+        for (int j = 0; j < ny; ++j)
+            for (int i = 0; i < nx; ++i) {
+                const int k = i + nx * j;
+                if (!mask_[k]) {
+                    agg_[k] = -1;
+                    continue;
+                }
+                int& b = id[static_cast<size_t>(i / side) + static_cast<size_t>(bx) * (j / side)];
+                if (b < 0) b = count++;
+                agg_[k] = b;
+            }
+        if (count <= kMaxAggregates) {
+            aggregates_ = count;
+            break;
+        }
+    }
+    side_ = side;
+    index_.clear();
+    index_.reserve(static_cast<size_t>(contact));
+    for (int k = 0; k < n; ++k)
+        if (mask_[k]) index_.push_back(k);
+    size_.assign(static_cast<size_t>(aggregates_), 0);
+    for (int k = 0; k < n; ++k)
+        if (agg_[k] >= 0) ++size_[agg_[k]];
+    const size_t cols = static_cast<size_t>(columns());
+    bp_.assign(static_cast<size_t>(n) * cols, Complex(0.0, 0.0));
+    gp_.assign(static_cast<size_t>(n) * cols, Complex(0.0, 0.0));
+    t_.resize(cols * cols);
+    wc_.resize(2 * static_cast<size_t>(contact) * cols);
+    acc_.resize(2 * static_cast<size_t>(contact));
+    rhs_.resize(cols);
+    pivot_.resize(cols);
+    // B P: each contact element's column of B added into its aggregate's
+    // columns, at the contact elements (the sweep reads no other).
+    const int wx = 2 * nx - 1;
+    for (int jj = 0; jj < ny; ++jj)
+        for (int ii = 0; ii < nx; ++ii) {
+            const int src = ii + nx * jj;
+            const int a = agg_[src];
+            if (a < 0) continue;
+            Complex* cx = bp_.data() + static_cast<size_t>(n) * (2 * a);
+            Complex* cy = cx + n;
+            for (int j = 0; j < ny; ++j)
+                for (int i = 0; i < nx; ++i) {
+                    const int k = i + nx * j;
+                    if (!mask_[k]) continue;
+                    const size_t t = static_cast<size_t>(i - ii + nx - 1) +
+                                     static_cast<size_t>(wx) * (j - jj + ny - 1);
+                    cx[k] += Complex(kxx_[t], kxy_[t]);
+                    cy[k] += Complex(kxy_[t], kyy_[t]);
+                }
+        }
+    if (layer != 0.0)
+        for (int j = 0; j < ny; ++j)
+            for (int i = 0; i < nx; ++i) {
+                const int k = i + nx * j;
+                if (!mask_[k]) continue;
+                const int a = agg_[k];
+                const int ahead = rolling && i + 1 < nx ? agg_[k + 1] : -1;
+                // s_k += c (v_k - v_ahead) for the indicator v of each column.
+                bp_[static_cast<size_t>(n) * (2 * a) + k] += layer;
+                bp_[static_cast<size_t>(n) * (2 * a + 1) + k] += Complex(0.0, layer);
+                if (ahead >= 0) {
+                    bp_[static_cast<size_t>(n) * (2 * ahead) + k] -= layer;
+                    bp_[static_cast<size_t>(n) * (2 * ahead + 1) + k] -= Complex(0.0, layer);
+                }
+            }
+}
+
+void CoarseCorrection::indicator(int c, Complex* v) const
+{
+    const Complex one = c % 2 == 0 ? Complex(1.0, 0.0) : Complex(0.0, 1.0);
+    for (int k = 0; k < n_; ++k)
+        if (agg_[k] == c / 2) v[k] = one;
+}
+
+void CoarseCorrection::clear(int c, Complex* v) const
+{
+    for (int k = 0; k < n_; ++k)
+        if (agg_[k] == c / 2) v[k] = 0.0;
+}
+
+bool CoarseCorrection::factor()
+{
+    const int m = columns();
+    factored_ = false;
+    if (m == 0) return false;
+    // T(r, c) = P_r^T P_c - P_r^T (G' P)_c.
+    for (int c = 0; c < m; ++c) {
+        for (int r = 0; r < m; ++r) t_[static_cast<size_t>(r) * m + c] = 0.0;
+        const Complex* w = gp(c);
+        for (int k = 0; k < n_; ++k) {
+            const int a = agg_[k];
+            if (a < 0) continue;
+            t_[static_cast<size_t>(2 * a) * m + c] -= w[k].real();
+            t_[static_cast<size_t>(2 * a + 1) * m + c] -= w[k].imag();
+        }
+        t_[static_cast<size_t>(c) * m + c] += size_[c / 2];
+    }
+    for (int j = 0; j < m; ++j) {
+        int p = j;
+        for (int r = j + 1; r < m; ++r)
+            if (std::fabs(t_[static_cast<size_t>(r) * m + j]) >
+                std::fabs(t_[static_cast<size_t>(p) * m + j]))
+                p = r;
+        pivot_[j] = p;
+        if (!(t_[static_cast<size_t>(p) * m + j] != 0.0)) return false;
+        if (p != j)
+            for (int c = 0; c < m; ++c)
+                std::swap(t_[static_cast<size_t>(j) * m + c], t_[static_cast<size_t>(p) * m + c]);
+        const double d = t_[static_cast<size_t>(j) * m + j];
+        for (int r = j + 1; r < m; ++r) {
+            const double l = t_[static_cast<size_t>(r) * m + j] / d;
+            t_[static_cast<size_t>(r) * m + j] = l;
+            for (int c = j + 1; c < m; ++c)
+                t_[static_cast<size_t>(r) * m + c] -= l * t_[static_cast<size_t>(j) * m + c];
+        }
+    }
+    // G' P at the contact elements (it is zero elsewhere), column by column.
+    const int nk = static_cast<int>(index_.size());
+    for (int c = 0; c < m; ++c) {
+        const Complex* w = gp(c);
+        double* out = wc_.data() + static_cast<size_t>(2 * nk) * c;
+        for (int t = 0; t < nk; ++t) {
+            out[2 * t] = w[index_[t]].real();
+            out[2 * t + 1] = w[index_[t]].imag();
+        }
+    }
+    factored_ = true;
+    return true;
+}
+
+void CoarseCorrection::apply(const Complex* u, Complex* x)
+{
+    for (int k = 0; k < n_; ++k) x[k] = u[k];
+    if (!factored_) return;
+    const int m = columns();
+    const int nk = static_cast<int>(index_.size());
+    for (int c = 0; c < m; ++c) rhs_[c] = 0.0;
+    for (int t = 0; t < nk; ++t) {
+        const int k = index_[t];
+        const int a = agg_[k];
+        rhs_[2 * a] += u[k].real();
+        rhs_[2 * a + 1] += u[k].imag();
+    }
+    for (int j = 0; j < m; ++j) std::swap(rhs_[j], rhs_[pivot_[j]]);
+    for (int r = 1; r < m; ++r)
+        for (int c = 0; c < r; ++c) rhs_[r] -= t_[static_cast<size_t>(r) * m + c] * rhs_[c];
+    for (int r = m - 1; r >= 0; --r) {
+        for (int c = r + 1; c < m; ++c) rhs_[r] -= t_[static_cast<size_t>(r) * m + c] * rhs_[c];
+        rhs_[r] /= t_[static_cast<size_t>(r) * m + r];
+    }
+    // G' P z over the contact elements, as 2 nk doubles.
+    run_kernel<Combine>(isa_, acc_.data(), static_cast<const double*>(wc_.data()),
+                        static_cast<const double*>(rhs_.data()), m, 2 * nk);
+    for (int t = 0; t < nk; ++t) x[index_[t]] += Complex(acc_[2 * t], acc_[2 * t + 1]);
+}
+
+} // namespace creepwork
