@@ -71,6 +71,7 @@ void CoarseCorrection::reserve(int n)
     block_.reserve(e);
     index_.reserve(e);
     size_.reserve(cols);
+    sizes_.reserve(cols);
     bp_.reserve(e * cols);
     gp_.reserve(e * cols);
     wc_.reserve(2 * e * cols);
@@ -81,16 +82,76 @@ void CoarseCorrection::reserve(int n)
     capacity_ = n;
 }
 
+void CoarseCorrection::add_element(int src, int a, double sign)
+{
+    // B's column of element src times sign, into aggregate a's x and y
+    // columns at every element (a contact element may join later).
+    const int ii = src % nx_, jj = src / nx_, wx = 2 * nx_ - 1;
+    Complex* cx = bp_.data() + static_cast<size_t>(n_) * (2 * a);
+    Complex* cy = cx + n_;
+    for (int j = 0; j < ny_; ++j) {
+        const size_t row = static_cast<size_t>(wx) * (j - jj + ny_ - 1) + (nx_ - 1 - ii);
+        for (int i = 0; i < nx_; ++i) {
+            const int k = i + nx_ * j;
+            const size_t t = row + i;
+            cx[k] += Complex(sign * kxx_[t], sign * kxy_[t]);
+            cy[k] += Complex(sign * kxy_[t], sign * kyy_[t]);
+        }
+    }
+    if (layer_ == 0.0) return;
+    // The layer's c (v_k - v_ahead): +c at src, -c at the element behind it.
+    const double c = sign * layer_;
+    cx[src] += c;
+    cy[src] += Complex(0.0, c);
+    if (rolling_ && ii > 0) {
+        cx[src - 1] -= c;
+        cy[src - 1] -= Complex(0.0, c);
+    }
+}
+
+bool CoarseCorrection::update(const std::vector<double>& g)
+{
+    // The aggregates stay when every element that joined or left the
+    // contact set falls in a block with an aggregate that keeps a member.
+    for (int a = 0; a < aggregates_; ++a) sizes_[a] = size_[a];
+    const int bx = (nx_ + side_ - 1) / side_;
+    int changed = 0;
+    for (int k = 0; k < n_; ++k) {
+        const bool in = g[k] > 0.0;
+        if (in == static_cast<bool>(mask_[k])) continue;
+        const int a = block_[static_cast<size_t>(k % nx_ / side_) + static_cast<size_t>(bx) * (k / nx_ / side_)];
+        if (a < 0) return false;
+        sizes_[a] += in ? 1 : -1;
+        ++changed;
+    }
+    for (int a = 0; a < aggregates_; ++a)
+        if (sizes_[a] <= 0) return false;
+    if (changed == 0) return true;
+    for (int k = 0; k < n_; ++k) {
+        const bool in = g[k] > 0.0;
+        if (in == static_cast<bool>(mask_[k])) continue;
+        const int a = block_[static_cast<size_t>(k % nx_ / side_) + static_cast<size_t>(bx) * (k / nx_ / side_)];
+        add_element(k, a, in ? 1.0 : -1.0);
+        mask_[k] = in;
+        agg_[k] = in ? a : -1;
+        size_[a] = sizes_[a];
+    }
+    index_.clear();
+    for (int k = 0; k < n_; ++k)
+        if (mask_[k]) index_.push_back(k);
+    wc_.resize(2 * index_.size() * static_cast<size_t>(columns()));
+    acc_.resize(2 * index_.size());
+    return true;
+}
+
 void CoarseCorrection::set_space(const GridConvolution& conv, bool rolling, double layer, int nx,
                                  int ny, const std::vector<double>& g)
 {
-    const int n = nx * ny;
-    bool same = nx == nx_ && ny == ny_ && rolling == rolling_ && layer == layer_ &&
-                conv.rho() == rho_ && conv.nu() == nu_;
-    const bool kernel_same = same;
-    for (int k = 0; same && k < n; ++k) same = mask_[k] == (g[k] > 0.0);
     factored_ = false;
-    if (same) return;
+    const bool kernel_same = nx == nx_ && ny == ny_ && rolling == rolling_ && layer == layer_ &&
+                             conv.rho() == rho_ && conv.nu() == nu_;
+    if (kernel_same && aggregates_ > 0 && update(g)) return;
+    const int n = nx * ny;
     nx_ = nx;
     ny_ = ny;
     n_ = n;
@@ -101,85 +162,44 @@ void CoarseCorrection::set_space(const GridConvolution& conv, bool rolling, doub
     if (!kernel_same) make_kernel(conv, rolling);
     mask_.resize(n);
     agg_.resize(n);
-    int contact = 0;
-    for (int k = 0; k < n; ++k) {
-        mask_[k] = g[k] > 0.0;
-        contact += mask_[k];
-    }
+    for (int k = 0; k < n; ++k) mask_[k] = g[k] > 0.0;
     // The smallest block side that keeps the aggregates within kMaxAggregates.
-    int side = 2;
-    for (;; ++side) {
+    for (int side = 2;; ++side) {
         const int bx = (nx + side - 1) / side, by = (ny + side - 1) / side;
-        std::vector<int>& id = block_;
-        id.assign(static_cast<size_t>(bx) * by, -1);
+        block_.assign(static_cast<size_t>(bx) * by, -1);
         int count = 0;
         for (int j = 0; j < ny; ++j)
             for (int i = 0; i < nx; ++i) {
                 const int k = i + nx * j;
-                if (!mask_[k]) {
-                    agg_[k] = -1;
-                    continue;
-                }
-                int& b = id[static_cast<size_t>(i / side) + static_cast<size_t>(bx) * (j / side)];
+                agg_[k] = -1;
+                if (!mask_[k]) continue;
+                int& b = block_[static_cast<size_t>(i / side) + static_cast<size_t>(bx) * (j / side)];
                 if (b < 0) b = count++;
                 agg_[k] = b;
             }
         if (count <= kMaxAggregates) {
             aggregates_ = count;
+            side_ = side;
             break;
         }
     }
-    side_ = side;
     index_.clear();
-    index_.reserve(static_cast<size_t>(contact));
     for (int k = 0; k < n; ++k)
         if (mask_[k]) index_.push_back(k);
     size_.assign(static_cast<size_t>(aggregates_), 0);
+    sizes_.assign(static_cast<size_t>(aggregates_), 0);
     for (int k = 0; k < n; ++k)
         if (agg_[k] >= 0) ++size_[agg_[k]];
     const size_t cols = static_cast<size_t>(columns());
     bp_.assign(static_cast<size_t>(n) * cols, Complex(0.0, 0.0));
     gp_.assign(static_cast<size_t>(n) * cols, Complex(0.0, 0.0));
     t_.resize(cols * cols);
-    wc_.resize(2 * static_cast<size_t>(contact) * cols);
-    acc_.resize(2 * static_cast<size_t>(contact));
+    wc_.resize(2 * index_.size() * cols);
+    acc_.resize(2 * index_.size());
     rhs_.resize(cols);
     pivot_.resize(cols);
-    // B P: each contact element's column of B added into its aggregate's
-    // columns, at the contact elements (the sweep reads no other).
-    const int wx = 2 * nx - 1;
-    for (int jj = 0; jj < ny; ++jj)
-        for (int ii = 0; ii < nx; ++ii) {
-            const int src = ii + nx * jj;
-            const int a = agg_[src];
-            if (a < 0) continue;
-            Complex* cx = bp_.data() + static_cast<size_t>(n) * (2 * a);
-            Complex* cy = cx + n;
-            for (int j = 0; j < ny; ++j)
-                for (int i = 0; i < nx; ++i) {
-                    const int k = i + nx * j;
-                    if (!mask_[k]) continue;
-                    const size_t t = static_cast<size_t>(i - ii + nx - 1) +
-                                     static_cast<size_t>(wx) * (j - jj + ny - 1);
-                    cx[k] += Complex(kxx_[t], kxy_[t]);
-                    cy[k] += Complex(kxy_[t], kyy_[t]);
-                }
-        }
-    if (layer != 0.0)
-        for (int j = 0; j < ny; ++j)
-            for (int i = 0; i < nx; ++i) {
-                const int k = i + nx * j;
-                if (!mask_[k]) continue;
-                const int a = agg_[k];
-                const int ahead = rolling && i + 1 < nx ? agg_[k + 1] : -1;
-                // s_k += c (v_k - v_ahead) for the indicator v of each column.
-                bp_[static_cast<size_t>(n) * (2 * a) + k] += layer;
-                bp_[static_cast<size_t>(n) * (2 * a + 1) + k] += Complex(0.0, layer);
-                if (ahead >= 0) {
-                    bp_[static_cast<size_t>(n) * (2 * ahead) + k] -= layer;
-                    bp_[static_cast<size_t>(n) * (2 * ahead + 1) + k] -= Complex(0.0, layer);
-                }
-            }
+    // B P: each contact element's column of B added into its aggregate's.
+    for (int k : index_) add_element(k, agg_[k], 1.0);
 }
 
 void CoarseCorrection::indicator(int c, Complex* v) const

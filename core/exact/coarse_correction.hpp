@@ -27,10 +27,9 @@ namespace creepwork {
 // Aggregates at most (the coarse system has twice as many unknowns, factored
 // once per Newton step).
 constexpr int kMaxAggregates = 25;
-// The largest field (elements) a solver makes the correction for: beyond
-// it, its set-up per contact set (B P, direct sums over the contact
-// elements) costs more than the products it saves (doc/dev/decisions.md).
-constexpr int kCoarseMaxElements = 1024;
+// The largest field (elements) a solver makes the correction for: its
+// memory, about 2.4 kB per element, is the size of the rest of the solver's.
+constexpr int kCoarseMaxElements = 4096;
 
 class CoarseCorrection {
 public:
@@ -43,7 +42,10 @@ public:
     // The aggregates of the contact set g > 0 on nx x ny and B P (the
     // operator's product on each aggregate's indicator, with the layer's
     // share: s = B v + c (v - v_ahead) rolling, A v + c v shift). Kept as
-    // they are when nothing of it changed.
+    // they are when nothing of it changed; when only some elements joined or
+    // left the contact set within the aggregates' blocks, B P is updated by
+    // their columns alone (other bits than a fresh set-up: the correction
+    // is a preconditioner, the solve's result is GMRES's to the tolerance).
     void set_space(const GridConvolution& conv, bool rolling, double layer, int nx, int ny,
                    const std::vector<double>& g);
     bool same_space(int nx, int ny, const std::vector<double>& g) const
@@ -72,6 +74,13 @@ public:
 private:
     // The kernel's table over every offset of the grid, B_xx, B_xy, B_yy.
     void make_kernel(const GridConvolution& conv, bool rolling);
+    // sign times element src's column of B (and the layer's share) into
+    // aggregate a's columns of B P.
+    void add_element(int src, int a, double sign);
+    // The contact set g within the aggregates as they stand: B P updated by
+    // the elements that joined or left it; false (nothing changed) when an
+    // aggregate would be born or emptied.
+    bool update(const std::vector<double>& g);
     int capacity_ = 0;
     int nx_ = 0, ny_ = 0, n_ = 0, aggregates_ = 0, side_ = 0;
     bool rolling_ = true;
@@ -79,7 +88,7 @@ private:
     std::vector<unsigned char> mask_; // the contact set of bp_
     std::vector<int> agg_;            // per element: its aggregate, -1 outside
     std::vector<int> block_;          // per block of the grid: its aggregate
-    std::vector<int> size_;           // per aggregate: its elements
+    std::vector<int> size_, sizes_;   // per aggregate: its elements (sizes_: update's)
     std::vector<int> index_;          // the contact elements
     std::vector<double> wc_, acc_;    // G' P at them (2 doubles each, per column)
     std::vector<double> kxx_, kxy_, kyy_; // [dx + (nx - 1) + (2 nx - 1) (dy + ny - 1)]

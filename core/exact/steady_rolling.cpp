@@ -120,6 +120,10 @@ constexpr double kWarmLastForcing = 1.0;
 constexpr double kArmijo = 1e-4;
 constexpr int kMaxHalvings = 8;
 constexpr int kMaxGmresPerStep = 200;
+// A warm Newton step's coarse correction is made again once the element
+// states have differed from those it was made at on this many Newton steps
+// (doc/dev/decisions.md: 1, 3, 6, 10 and never measured).
+constexpr int kCoarseRefresh = 10;
 // Partial sums of GMRES's inner products in a warm start's Newton steps
 // (subtract_dot); 1 everywhere else, so that a cold solve and the
 // Jacobians keep their bits.
@@ -140,10 +144,13 @@ SteadyRolling::SteadyRolling(int nx, int ny, int krylov_dimension)
       isa_(best_kernel_isa())
 {
     capacity_ = static_cast<size_t>(n_);
-    if (n_ <= kCoarseMaxElements) {
-        coarse_.reserve(n_);
-        coarse_states_.reserve(capacity_);
-    }
+}
+
+void SteadyRolling::reserve_coarse()
+{
+    if (static_cast<int>(capacity_) > kCoarseMaxElements) return;
+    coarse_.reserve(static_cast<int>(capacity_));
+    coarse_states_.reserve(capacity_);
 }
 
 void SteadyRolling::set_law(const LocalLaw* law)
@@ -308,10 +315,14 @@ void SteadyRolling::local_sweep(const Complex* v, const Complex* bv, Complex* ou
 
 void SteadyRolling::build_coarse(GridConvolution& conv)
 {
-    // Kept while every element keeps its state: the slip elements' local
-    // Jacobians drift with q, but a correction a little stale costs no more
-    // products (GMRES's residual is the true one) and saves its set-up.
-    if (coarse_.active() && coarse_.same_space(nx_, ny_, g_) && coarse_states_ == state_) return;
+    // Kept while every element keeps its state, and for kCoarseRefresh - 1
+    // Newton steps after a state changed: the slip elements' local Jacobians
+    // drift with q, but a correction a little stale costs few products
+    // (GMRES's residual is the true one) and saves its set-up.
+    if (coarse_.active() && coarse_.same_space(nx_, ny_, g_) &&
+        (coarse_states_ == state_ || ++coarse_age_ < kCoarseRefresh))
+        return;
+    coarse_age_ = 0;
     coarse_states_ = state_;
     coarse_.set_space(conv, rolling_, layer_, nx_, ny_, g_);
     Complex* v = pre_.data();

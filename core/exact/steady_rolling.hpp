@@ -63,6 +63,12 @@ public:
     // constructor's): every vector is resized within its capacity (no
     // allocation) and keeps its first values.
     void set_size(int nx, int ny);
+    // Makes the memory of the warm Newton steps' coarse correction
+    // (coarse_correction.hpp) for the constructor's field, if it has at most
+    // kCoarseMaxElements elements (about 2.4 kB per element); without it
+    // warm steps run without the correction. The finest level of a model
+    // calls it.
+    void reserve_coarse();
     int nx() const { return nx_; }
     int ny() const { return ny_; }
     // The operator of the next solves (rolling unless set).
@@ -106,8 +112,9 @@ public:
     }
     // The same; warm = true when q is a warm start's prediction, already
     // close: the Newton steps' linear solves are then tightened faster
-    // (forcing min(0.3, residual^1.5) instead of min(0.3, residual)) and
-    // target the tolerance itself instead of half of it. Fewer products from
+    // (forcing min(0.3, residual^1.5) instead of min(0.3, residual)), target
+    // the tolerance itself instead of half of it, and run with the coarse
+    // correction when reserve_coarse() made its memory. Fewer products from
     // such a start; from any start, a safe margin (the .cpp).
     SteadyRollingInfo solve(GridConvolution& conv, double tolerance, int max_steps, bool warm)
     {
@@ -229,6 +236,7 @@ private:
     std::vector<Complex> w_, q_, gq_, f_, dq_, qt_, gt_, ft_, s_, work_, pre_, pre2_;
     CoarseCorrection coarse_;
     std::vector<signed char> coarse_states_; // state_ when coarse_ was made
+    int coarse_age_ = 0; // Newton steps since then with other states
     std::vector<LocalJacobian> jac_;
     std::vector<signed char> state_;
     bool law_active_ = false;
