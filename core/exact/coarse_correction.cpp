@@ -1,5 +1,6 @@
 #include "exact/coarse_correction.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <utility>
 
@@ -37,6 +38,22 @@ struct Combine : KernelWidths {
     }
 };
 
+// The blocks of at most a elements along an axis of L, mirror-symmetric
+// about its centre (elements i and L - 1 - i in mirror blocks, so that a
+// contact and its mirror image get mirror corrections): their number.
+int axis_blocks(int L, int a, std::vector<int>& block)
+{
+    int nb = (L + a - 1) / a;
+    if (L % 2 == 1 && nb % 2 == 0) ++nb; // the middle element in a middle block
+    block.resize(static_cast<size_t>(L));
+    for (int i = 0; 2 * i + 1 <= L; ++i) {
+        const int b = static_cast<int>(std::floor((2.0 * i + 1.0 - L) / (2.0 * a) + 0.5 * nb));
+        block[i] = std::min(std::max(b, 0), nb - 1);
+        block[L - 1 - i] = nb - 1 - block[i];
+    }
+    return nb;
+}
+
 } // namespace
 
 void CoarseCorrection::make_kernel(const GridConvolution& conv, bool rolling)
@@ -69,6 +86,8 @@ void CoarseCorrection::reserve(int n)
     mask_.reserve(e);
     agg_.reserve(e);
     block_.reserve(e);
+    bxi_.reserve(e);
+    byj_.reserve(e);
     index_.reserve(e);
     size_.reserve(cols);
     sizes_.reserve(cols);
@@ -114,12 +133,11 @@ bool CoarseCorrection::update(const std::vector<double>& g)
     // The aggregates stay when every element that joined or left the
     // contact set falls in a block with an aggregate that keeps a member.
     for (int a = 0; a < aggregates_; ++a) sizes_[a] = size_[a];
-    const int bx = (nx_ + side_ - 1) / side_;
     int changed = 0;
     for (int k = 0; k < n_; ++k) {
         const bool in = g[k] > 0.0;
         if (in == static_cast<bool>(mask_[k])) continue;
-        const int a = block_[static_cast<size_t>(k % nx_ / side_) + static_cast<size_t>(bx) * (k / nx_ / side_)];
+        const int a = block_[static_cast<size_t>(bxi_[k % nx_]) + static_cast<size_t>(bx_) * byj_[k / nx_]];
         if (a < 0) return false;
         sizes_[a] += in ? 1 : -1;
         ++changed;
@@ -130,7 +148,7 @@ bool CoarseCorrection::update(const std::vector<double>& g)
     for (int k = 0; k < n_; ++k) {
         const bool in = g[k] > 0.0;
         if (in == static_cast<bool>(mask_[k])) continue;
-        const int a = block_[static_cast<size_t>(k % nx_ / side_) + static_cast<size_t>(bx) * (k / nx_ / side_)];
+        const int a = block_[static_cast<size_t>(bxi_[k % nx_]) + static_cast<size_t>(bx_) * byj_[k / nx_]];
         add_element(k, a, in ? 1.0 : -1.0);
         mask_[k] = in;
         agg_[k] = in ? a : -1;
@@ -165,7 +183,7 @@ void CoarseCorrection::set_space(const GridConvolution& conv, bool rolling, doub
     for (int k = 0; k < n; ++k) mask_[k] = g[k] > 0.0;
     // The smallest block side that keeps the aggregates within kMaxAggregates.
     for (int side = 2;; ++side) {
-        const int bx = (nx + side - 1) / side, by = (ny + side - 1) / side;
+        const int bx = axis_blocks(nx, side, bxi_), by = axis_blocks(ny, side, byj_);
         block_.assign(static_cast<size_t>(bx) * by, -1);
         int count = 0;
         for (int j = 0; j < ny; ++j)
@@ -173,13 +191,13 @@ void CoarseCorrection::set_space(const GridConvolution& conv, bool rolling, doub
                 const int k = i + nx * j;
                 agg_[k] = -1;
                 if (!mask_[k]) continue;
-                int& b = block_[static_cast<size_t>(i / side) + static_cast<size_t>(bx) * (j / side)];
+                int& b = block_[static_cast<size_t>(bxi_[i]) + static_cast<size_t>(bx) * byj_[j]];
                 if (b < 0) b = count++;
                 agg_[k] = b;
             }
         if (count <= kMaxAggregates) {
             aggregates_ = count;
-            side_ = side;
+            bx_ = bx;
             break;
         }
     }

@@ -4,7 +4,8 @@
 // but the smooth (long-wave) ones of the half-space operator converge by
 // only ~0.6 per iteration. Here the contact elements are grouped into
 // aggregates of a x a elements (a block of the grid, its contact elements;
-// at most kMaxAggregates), P holds each aggregate's indicator per traction
+// at most kMaxAggregates; the blocks mirror-symmetric about the grid's
+// centre), P holds each aggregate's indicator per traction
 // component, and T = P^T K P is K's Galerkin operator on them, solved
 // densely. GMRES then runs on K M with the right preconditioner
 //   M u = u + G' P T^-1 P^T u,
@@ -82,12 +83,13 @@ private:
     // aggregate would be born or emptied.
     bool update(const std::vector<double>& g);
     int capacity_ = 0;
-    int nx_ = 0, ny_ = 0, n_ = 0, aggregates_ = 0, side_ = 0;
+    int nx_ = 0, ny_ = 0, n_ = 0, aggregates_ = 0, bx_ = 0;
     bool rolling_ = true;
     double layer_ = 0.0, rho_ = -1.0, nu_ = -1.0;
     std::vector<unsigned char> mask_; // the contact set of bp_
     std::vector<int> agg_;            // per element: its aggregate, -1 outside
     std::vector<int> block_;          // per block of the grid: its aggregate
+    std::vector<int> bxi_, byj_;      // per column and row: its block along x and y
     std::vector<int> size_, sizes_;   // per aggregate: its elements (sizes_: update's)
     std::vector<int> index_;          // the contact elements
     std::vector<double> wc_, acc_;    // G' P at them (2 doubles each, per column)

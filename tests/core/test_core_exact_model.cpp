@@ -191,9 +191,9 @@ void warm_start_equals_cold_start(void**)
 // cold solve; the same calls on another handle give the same bits; and the
 // start predicted along the drift (exact/creepage_history.hpp) and the
 // coarse correction of the Newton steps' GMRES (exact/coarse_correction.hpp)
-// keep the steps short: measured 11.25 FFT products per step over these 40
+// keep the steps short: measured 11.70 FFT products per step over these 40
 // steps, 16.7 without the correction (17.9 without it and with the last
-// error added but not extrapolated); the bound is 11 % above.
+// error added but not extrapolated); the bound is 7 % above.
 void warm_drift_repeats_and_stays_short(void**)
 {
     const double tol = 1e-8;

@@ -311,8 +311,9 @@ void coarse_correction_inverts_its_space(void**)
     }
     cc.apply(u.data(), x.data());
     for (int k = 0; k < n; ++k) {
-        assert_close(x[k].real(), py[k].real(), 0.0, 1e-11);
-        assert_close(x[k].imag(), py[k].imag(), 0.0, 1e-11);
+        // (T with a random W is far from the identity: rounding to 1e-10.)
+        assert_close(x[k].real(), py[k].real(), 0.0, 1e-10);
+        assert_close(x[k].imag(), py[k].imag(), 0.0, 1e-10);
     }
 }
 
