@@ -212,6 +212,25 @@ MUTANTS = [
          file="core/exact/steady_rolling.cpp",
          old="                for (int t = 0; t < n_; ++t) v[t] *= 1.0 / h;",
          new="                for (int t = 0; t < n_; ++t) v[t] *= 1.0;", tests=WARM),
+    # The warm Newton steps' coarse correction (core/exact/coarse_correction.cpp):
+    # a wrong coarse space or Galerkin operator costs a warm drift its products;
+    # the space is checked against the FFT products, the operator by M K P = P.
+    dict(id="coarse-kernel-shift", what="exact: the coarse space's rolling kernel shifted "
+         "backwards, A(d) - A(d - e_x)", file="core/exact/coarse_correction.cpp",
+         old="                xx -= conv.cf11(dx + 1, dy);",
+         new="                xx -= conv.cf11(dx - 1, dy);", tests=WARM),
+    dict(id="coarse-update-sign", what="exact: an element leaving the contact set is added "
+         "to its block's B P, not taken out", file="core/exact/coarse_correction.cpp",
+         old="        add_element(k, a, in ? 1.0 : -1.0);",
+         new="        add_element(k, a, 1.0);", tests=WARM + ["test_nonhertz_parts"]),
+    dict(id="coarse-galerkin-identity", what="exact: the Galerkin operator drops P^T P "
+         "(T = -P^T G' P)", file="core/exact/coarse_correction.cpp",
+         old="        t_[static_cast<size_t>(c) * m + c] += size_[c / 2];",
+         new="        t_[static_cast<size_t>(c) * m + c] += 0.0;", tests=WARM),
+    dict(id="coarse-solution-unpreconditioned", what="exact: warm GMRES adds V y to the "
+         "solution, not M V y", file="core/exact/steady_rolling.cpp",
+         old="            for (int t = 0; t < n_; ++t) x[t] += pre_[t];",
+         new="            for (int t = 0; t < n_; ++t) x[t] += pre2_[t];", tests=WARM),
     # The calibrated model.
     dict(id="calibrated-moment-flexibility", what="calibrated: spin x-slip on L3/L_M, not L_M/L3",
          file="core/calibrated/calibrated_model.cpp", old="        s.kin.cx *= s.L3 / L_M;",

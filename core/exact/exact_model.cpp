@@ -65,6 +65,7 @@ ExactModel::ExactModel(const GridSpec& grid)
                     "box_scale = " + number_text(grid.box_scale) + " is outside [1, 100]");
     int nx = nx_, ny = ny_;
     levels_.push_back(std::make_unique<Level>(nx, ny));
+    levels_.front()->tangential.reserve_coarse(); // the warm steps' (the finest level's)
     while (coarser(nx, ny)) levels_.push_back(std::make_unique<Level>(nx, ny));
     const size_t n = static_cast<size_t>(nx_) * ny_;
     history_.resize(n);

@@ -120,6 +120,10 @@ constexpr double kWarmLastForcing = 1.0;
 constexpr double kArmijo = 1e-4;
 constexpr int kMaxHalvings = 8;
 constexpr int kMaxGmresPerStep = 200;
+// A warm Newton step's coarse correction is made again once the element
+// states have differed from those it was made at on this many Newton steps
+// (doc/dev/decisions.md: 1, 3, 6, 10 and never measured).
+constexpr int kCoarseRefresh = 10;
 // Partial sums of GMRES's inner products in a warm start's Newton steps
 // (subtract_dot); 1 everywhere else, so that a cold solve and the
 // Jacobians keep their bits.
@@ -129,7 +133,8 @@ constexpr int kLanes = 8;
 
 SteadyRolling::SteadyRolling(int nx, int ny, int krylov_dimension)
     : nx_(nx), ny_(ny), n_(nx * ny), m_(krylov_dimension), g_(n_, 0.0), w_(n_), q_(n_),
-      gq_(n_), f_(n_), dq_(n_), qt_(n_), gt_(n_), ft_(n_), s_(n_), work_(n_), jac_(n_),
+      gq_(n_), f_(n_), dq_(n_), qt_(n_), gt_(n_), ft_(n_), s_(n_), work_(n_), pre_(n_),
+      pre2_(n_), jac_(n_),
       state_(n_, 0),
       // Raw storage: a basis vector's pages are touched (and, on this
       // machine's VM, page faults are dear) only if GMRES gets that far.
@@ -139,6 +144,13 @@ SteadyRolling::SteadyRolling(int nx, int ny, int krylov_dimension)
       isa_(best_kernel_isa())
 {
     capacity_ = static_cast<size_t>(n_);
+}
+
+void SteadyRolling::reserve_coarse()
+{
+    if (static_cast<int>(capacity_) > kCoarseMaxElements) return;
+    coarse_.reserve(static_cast<int>(capacity_));
+    coarse_states_.reserve(capacity_);
 }
 
 void SteadyRolling::set_law(const LocalLaw* law)
@@ -177,7 +189,8 @@ void SteadyRolling::set_size(int nx, int ny)
     n_ = nx * ny;
     const size_t n = static_cast<size_t>(n_);
     g_.resize(n);
-    for (auto* v : {&w_, &q_, &gq_, &f_, &dq_, &qt_, &gt_, &ft_, &s_, &work_}) v->resize(n);
+    for (auto* v : {&w_, &q_, &gq_, &f_, &dq_, &qt_, &gt_, &ft_, &s_, &work_, &pre_, &pre2_})
+        v->resize(n);
     jac_.resize(n);
     state_.resize(n);
     if (law_active_) slip_info_.resize(n);
@@ -271,6 +284,11 @@ void SteadyRolling::sweep(GridConvolution& conv, const std::vector<Complex>& q,
 void SteadyRolling::linear_sweep(GridConvolution& conv, const Complex* v, Complex* out)
 {
     product(conv, v, work_.data());
+    local_sweep(v, work_.data(), out);
+}
+
+void SteadyRolling::local_sweep(const Complex* v, const Complex* bv, Complex* out) const
+{
     for (int j = 0; j < ny_; ++j) {
         Complex ahead(0.0, 0.0);
         double dmu = 0.0;  // under memory (tangents): the change of mu ahead
@@ -283,8 +301,8 @@ void SteadyRolling::linear_sweep(GridConvolution& conv, const Complex* v, Comple
                 dmu *= theta0_;
                 continue;
             }
-            const double cx = work_[k].real() - b0x_ * v[k].real() + b1x_ * ahead.real();
-            const double cy = work_[k].imag() - b0y_ * v[k].imag() + b1y_ * ahead.imag();
+            const double cx = bv[k].real() - b0x_ * v[k].real() + b1x_ * ahead.real();
+            const double cy = bv[k].imag() - b0y_ * v[k].imag() + b1y_ * ahead.imag();
             const LocalJacobian& J = jac_[k];
             Complex d(J.j11 * cx + J.j12 * cy, J.j21 * cx + J.j22 * cy);
             if (yield_active_) yield_link(k, cx, cy, d, dtau, 0.0);
@@ -295,16 +313,38 @@ void SteadyRolling::linear_sweep(GridConvolution& conv, const Complex* v, Comple
     }
 }
 
+void SteadyRolling::build_coarse(GridConvolution& conv)
+{
+    // Kept while every element keeps its state, and for kCoarseRefresh - 1
+    // Newton steps after a state changed: the slip elements' local Jacobians
+    // drift with q, but a correction a little stale costs few products
+    // (GMRES's residual is the true one) and saves its set-up.
+    if (coarse_.active() && coarse_.same_space(nx_, ny_, g_) &&
+        (coarse_states_ == state_ || ++coarse_age_ < kCoarseRefresh))
+        return;
+    coarse_age_ = 0;
+    coarse_states_ = state_;
+    coarse_.set_space(conv, rolling_, layer_, nx_, ny_, g_);
+    Complex* v = pre_.data();
+    std::fill(pre_.begin(), pre_.end(), Complex(0.0, 0.0));
+    for (int c = 0; c < coarse_.columns(); ++c) {
+        coarse_.indicator(c, v);
+        local_sweep(v, coarse_.bp(c), coarse_.gp(c));
+        coarse_.clear(c, v);
+    }
+    coarse_.factor();
+}
+
 int SteadyRolling::gmres(GridConvolution& conv, const std::vector<Complex>& b,
                          std::vector<Complex>& x, double eta, int max_iterations, bool lanes)
 {
-    return lanes ? arnoldi<kLanes>(conv, b, x, eta, max_iterations)
-                 : arnoldi<1>(conv, b, x, eta, max_iterations);
+    return lanes ? arnoldi<kLanes>(conv, b, x, eta, max_iterations, false)
+                 : arnoldi<1>(conv, b, x, eta, max_iterations, false);
 }
 
 template <int L>
 int SteadyRolling::arnoldi(GridConvolution& conv, const std::vector<Complex>& b,
-                           std::vector<Complex>& x, double eta, int max_iterations)
+                           std::vector<Complex>& x, double eta, int max_iterations, bool coarse)
 {
     std::fill(x.begin(), x.end(), Complex(0.0, 0.0));
     const double bnorm = std::sqrt(dot(b, b));
@@ -326,6 +366,10 @@ int SteadyRolling::arnoldi(GridConvolution& conv, const std::vector<Complex>& b,
             ++total;
             Complex* v = basis(k + 1);
             const Complex* vk = basis(k);
+            if (coarse) { // right preconditioner: (I - G') M v_k
+                coarse_.apply(vk, pre_.data());
+                vk = pre_.data();
+            }
             linear_sweep(conv, vk, v);
             // Modified Gram-Schmidt, each subtraction fused with the next
             // inner product: (I - G') v_k, then v -= h_i v_i for i = 0..k.
@@ -363,10 +407,20 @@ int SteadyRolling::arnoldi(GridConvolution& conv, const std::vector<Complex>& b,
             for (int c = i + 1; c < k; ++c) v -= H(i, c) * y_[c];
             y_[i] = H(i, i) != 0.0 ? v / H(i, i) : 0.0;
         }
-        for (int t = 0; t < n_; ++t) {
-            Complex xt = x[t];
-            for (int i = 0; i < k; ++i) xt += y_[i] * basis(i)[t];
-            x[t] = xt;
+        if (coarse) { // x += M V y
+            for (int t = 0; t < n_; ++t) {
+                Complex ut(0.0, 0.0);
+                for (int i = 0; i < k; ++i) ut += y_[i] * basis(i)[t];
+                pre2_[t] = ut;
+            }
+            coarse_.apply(pre2_.data(), pre_.data());
+            for (int t = 0; t < n_; ++t) x[t] += pre_[t];
+        } else {
+            for (int t = 0; t < n_; ++t) {
+                Complex xt = x[t];
+                for (int i = 0; i < k; ++i) xt += y_[i] * basis(i)[t];
+                x[t] = xt;
+            }
         }
         if (done || total >= max_iterations) break;
         // Restart: the true residual b - (I - G') x.
@@ -448,7 +502,12 @@ SteadyRollingInfo SteadyRolling::newton(GridConvolution& conv, double tolerance,
         double eta = std::min(kFirstForcing, warm ? rel * std::sqrt(rel) : rel);
         eta = std::max(eta, (warm ? kWarmLastForcing : kLastForcing) * tolerance / rel);
         ++info.newton_steps;
-        gmres(conv, f_, dq_, eta, kMaxGmresPerStep, warm);
+        if (warm && coarse_.reserved(n_)) {
+            build_coarse(conv);
+            arnoldi<kLanes>(conv, f_, dq_, eta, kMaxGmresPerStep, coarse_.active());
+        } else {
+            gmres(conv, f_, dq_, eta, kMaxGmresPerStep, warm);
+        }
 
         double lambda = 1.0, fnew = 0.0, rel_new = 0.0;
         for (int halving = 0;; ++halving) {

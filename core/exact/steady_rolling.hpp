@@ -28,6 +28,7 @@
 #include <vector>
 
 #include "halfspace/grid_convolution.hpp"
+#include "exact/coarse_correction.hpp"
 #include "exact/local_friction.hpp"
 #include "simd/kernel_isa.hpp"
 
@@ -62,6 +63,12 @@ public:
     // constructor's): every vector is resized within its capacity (no
     // allocation) and keeps its first values.
     void set_size(int nx, int ny);
+    // Makes the memory of the warm Newton steps' coarse correction
+    // (coarse_correction.hpp) for the constructor's field, if it has at most
+    // kCoarseMaxElements elements (about 2.4 kB per element); without it
+    // warm steps run without the correction. The finest level of a model
+    // calls it.
+    void reserve_coarse();
     int nx() const { return nx_; }
     int ny() const { return ny_; }
     // The operator of the next solves (rolling unless set).
@@ -105,8 +112,9 @@ public:
     }
     // The same; warm = true when q is a warm start's prediction, already
     // close: the Newton steps' linear solves are then tightened faster
-    // (forcing min(0.3, residual^1.5) instead of min(0.3, residual)) and
-    // target the tolerance itself instead of half of it. Fewer products from
+    // (forcing min(0.3, residual^1.5) instead of min(0.3, residual)), target
+    // the tolerance itself instead of half of it, and run with the coarse
+    // correction when reserve_coarse() made its memory. Fewer products from
     // such a start; from any start, a safe margin (the .cpp).
     SteadyRollingInfo solve(GridConvolution& conv, double tolerance, int max_steps, bool warm)
     {
@@ -196,6 +204,10 @@ private:
     void product(GridConvolution& conv, const Complex* v, Complex* s);
     // out = G'(q) v at the q of the last sweep. One FFT product.
     void linear_sweep(GridConvolution& conv, const Complex* v, Complex* out);
+    // linear_sweep's part after the product: bv = the product's s of v.
+    void local_sweep(const Complex* v, const Complex* bv, Complex* out) const;
+    // The coarse correction's space and its G' P at the q of the last sweep.
+    void build_coarse(GridConvolution& conv);
     // out = G_w dw + G_g dg (+ G_kappa under a law, with speed; + the yield
     // stress's scale, with yield) at the q of the last sweep (the sweep's
     // response to a change of the rigid slip, of the bound, of ln kappa and
@@ -207,9 +219,10 @@ private:
     // warm starts' Newton steps).
     int gmres(GridConvolution& conv, const std::vector<Complex>& b, std::vector<Complex>& x,
               double eta, int max_iterations, bool lanes);
+    // coarse: right-preconditioned by coarse_ (its M; x = M u).
     template <int L>
     int arnoldi(GridConvolution& conv, const std::vector<Complex>& b, std::vector<Complex>& x,
-                double eta, int max_iterations);
+                double eta, int max_iterations, bool coarse);
     double residual_norm(const std::vector<Complex>& q, const std::vector<Complex>& gq,
                          std::vector<Complex>& f, double& max_rel) const;
 
@@ -220,7 +233,10 @@ private:
     // rolling, A(0,0), A(-1,0) shift.
     double b0x_ = 0, b0y_ = 0, b1x_ = 0, b1y_ = 0;
     std::vector<double> g_;
-    std::vector<Complex> w_, q_, gq_, f_, dq_, qt_, gt_, ft_, s_, work_;
+    std::vector<Complex> w_, q_, gq_, f_, dq_, qt_, gt_, ft_, s_, work_, pre_, pre2_;
+    CoarseCorrection coarse_;
+    std::vector<signed char> coarse_states_; // state_ when coarse_ was made
+    int coarse_age_ = 0; // Newton steps since then with other states
     std::vector<LocalJacobian> jac_;
     std::vector<signed char> state_;
     bool law_active_ = false;

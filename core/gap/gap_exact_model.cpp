@@ -44,6 +44,7 @@ GapExactModel::GapExactModel(const GridSpec& grid)
 {
     int nx = nx_, ny = ny_;
     levels_.push_back(std::make_unique<Level>(nx, ny));
+    levels_.front()->tangential.reserve_coarse(); // the warm steps' (the finest level's)
     while (coarser(nx, ny)) levels_.push_back(std::make_unique<Level>(nx, ny));
     const size_t n = static_cast<size_t>(nx_) * ny_;
     for (auto* v : {&traction_, &slip_, &rigid_, &tangent_w_}) v->assign(n, 0.0);

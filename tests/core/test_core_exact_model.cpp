@@ -189,9 +189,11 @@ void warm_start_equals_cold_start(void**)
 // 1 + 0.1 sin(2 pi k / 100 + offset), at most 1 % a step) on the benchmark
 // contact in partial slip. Every step is within the tolerance of a fresh
 // cold solve; the same calls on another handle give the same bits; and the
-// start predicted along the drift (exact/creepage_history.hpp) keeps the
-// steps short: measured 16.7 FFT products per step over these 40 steps,
-// 17.9 with the last error added but not extrapolated; the bound is between.
+// start predicted along the drift (exact/creepage_history.hpp) and the
+// coarse correction of the Newton steps' GMRES (exact/coarse_correction.hpp)
+// keep the steps short: measured 11.70 FFT products per step over these 40
+// steps, 16.7 without the correction (17.9 without it and with the last
+// error added but not extrapolated); the bound is 7 % above.
 void warm_drift_repeats_and_stays_short(void**)
 {
     const double tol = 1e-8;
@@ -232,7 +234,7 @@ void warm_drift_repeats_and_stays_short(void**)
         }
     }
     if (getenv("CW_VERBOSE")) printf("  FFT products per warm step: %.2f\n", double(products) / steps);
-    assert_true(double(products) / steps <= 17.3);
+    assert_true(double(products) / steps <= 12.5);
 }
 
 // No load: no contact and exact zeros. No friction: no traction; every

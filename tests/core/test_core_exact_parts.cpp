@@ -2,7 +2,8 @@
 // FFT against the DFT sum, the influence coefficients against CONTACT's
 // logarithm form (m_visc.f90:elascf_pcwcns, doc/theory/exact-discretisation.md rule 3),
 // the FFT products against direct sums over element pairs (odd and even
-// sizes, dy != dx), and the local Coulomb solve against its definition.
+// sizes, dy != dx), the local Coulomb solve against its definition, and the
+// warm steps' coarse correction against the products and its definition.
 #include <algorithm>
 #include <cmath>
 #include <complex>
@@ -12,6 +13,7 @@
 
 #include "test_support.h"
 
+#include "exact/coarse_correction.hpp"
 #include "halfspace/batched_fft.hpp"
 #include "exact/creepage_history.hpp"
 #include "halfspace/grid_convolution.hpp"
@@ -211,6 +213,110 @@ void products_match_direct_sums(void**)
     }
 }
 
+// An elliptic contact set on nx x ny, off-centre (1 inside, 0 outside);
+// ra, rb: the semi-axes over the grid's.
+std::vector<double> elliptic_set(int nx, int ny, double ra = 0.46, double rb = 0.42)
+{
+    std::vector<double> g(static_cast<size_t>(nx) * ny, 0.0);
+    for (int j = 0; j < ny; ++j)
+        for (int i = 0; i < nx; ++i) {
+            const double x = (i - 0.45 * nx) / (ra * nx), y = (j - 0.5 * ny) / (rb * ny);
+            if (x * x + y * y < 1.0) g[i + nx * j] = 1.0;
+        }
+    return g;
+}
+
+// The coarse correction's B P (exact/coarse_correction.hpp: sums of the
+// influence coefficients) against the FFT product of each aggregate's
+// indicator with the layer's share (steady_rolling.hpp: c (v - v_ahead)
+// rolling, c v shift), at every contact element: both operators, with and
+// without the layer, on two grids (several aggregate sides), as the contact
+// set changes.
+void coarse_space_matches_products(void**)
+{
+    for (int shape = 0; shape < 2; ++shape) {
+        const int nx = shape == 0 ? 14 : 24, ny = shape == 0 ? 11 : 24;
+        const int n = nx * ny;
+        cw::GridConvolution conv(nx, ny);
+        conv.set_coefficients(shape == 0 ? 0.8 : 1.0, 0.28);
+        // The set, a narrower and longer one (elements leave and join
+        // within the blocks: B P updated in place), and the first again.
+        const std::vector<double> sets[3] = {elliptic_set(nx, ny), elliptic_set(nx, ny, 0.42, 0.45),
+                                             elliptic_set(nx, ny)};
+        std::vector<C> v(n), s(n);
+        for (int rolling = 0; rolling < 2; ++rolling)
+            for (double layer : {0.0, 0.3}) {
+                cw::CoarseCorrection cc;
+                cc.reserve(n);
+                for (const std::vector<double>& g : sets) {
+                int contact = 0;
+                for (double e : g) contact += e > 0.0;
+                cc.set_space(conv, rolling, layer, nx, ny, g);
+                assert_true(cc.columns() >= 8 && cc.columns() <= 2 * cw::kMaxAggregates);
+                int members = 0;
+                for (int c = 0; c < cc.columns(); ++c) {
+                    std::fill(v.begin(), v.end(), C(0.0, 0.0));
+                    cc.indicator(c, v.data());
+                    for (int k = 0; k < n; ++k) members += v[k] != C(0.0, 0.0);
+                    conv.apply_tangential(v.data(), s.data(), rolling);
+                    double scale = 0.0;
+                    for (int k = 0; k < n; ++k) {
+                        const int i = k % nx;
+                        const C ahead = rolling && i + 1 < nx ? v[k + 1] : C(0.0, 0.0);
+                        s[k] += layer * (v[k] - ahead);
+                        scale = std::max(scale, std::abs(s[k]));
+                    }
+                    for (int k = 0; k < n; ++k) {
+                        if (!(g[k] > 0.0)) continue;
+                        assert_close(cc.bp(c)[k].real(), s[k].real(), 0.0, 1e-13 * scale);
+                        assert_close(cc.bp(c)[k].imag(), s[k].imag(), 0.0, 1e-13 * scale);
+                    }
+                }
+                // Every contact element in one aggregate, once per component.
+                assert_int_equal(members, 2 * contact);
+                }
+            }
+    }
+}
+
+// The correction M u = u + W T^-1 P^T u with T = P^T (P - W) inverts K =
+// I - G' on the aggregates' space whatever W = G' P is: M (P - W) y = P y
+// for any coarse y (coarse_correction.hpp), here with W random at the
+// contact elements.
+void coarse_correction_inverts_its_space(void**)
+{
+    std::mt19937 gen(5);
+    std::uniform_real_distribution<double> U(-1.0, 1.0);
+    const int nx = 24, ny = 24, n = nx * ny;
+    cw::GridConvolution conv(nx, ny);
+    conv.set_coefficients(1.0, 0.28);
+    const std::vector<double> g = elliptic_set(nx, ny);
+    cw::CoarseCorrection cc;
+    cc.reserve(n);
+    cc.set_space(conv, true, 0.0, nx, ny, g);
+    const int m = cc.columns();
+    for (int c = 0; c < m; ++c)
+        for (int k = 0; k < n; ++k) cc.gp(c)[k] = g[k] > 0.0 ? C(U(gen), U(gen)) : C(0.0, 0.0);
+    assert_true(cc.factor());
+    assert_true(cc.active());
+    std::vector<C> u(n, C(0.0, 0.0)), py(n, C(0.0, 0.0)), p(n, C(0.0, 0.0)), x(n);
+    for (int c = 0; c < m; ++c) {
+        const double y = U(gen);
+        std::fill(p.begin(), p.end(), C(0.0, 0.0));
+        cc.indicator(c, p.data());
+        for (int k = 0; k < n; ++k) {
+            py[k] += y * p[k];
+            u[k] += y * (p[k] - cc.gp(c)[k]);
+        }
+    }
+    cc.apply(u.data(), x.data());
+    for (int k = 0; k < n; ++k) {
+        // (T with a random W is far from the identity: rounding to 1e-10.)
+        assert_close(x[k].real(), py[k].real(), 0.0, 1e-10);
+        assert_close(x[k].imag(), py[k].imag(), 0.0, 1e-10);
+    }
+}
+
 // A tangential convolution given the spectra of a normal one (the gap
 // model's fine grid from the normal problem's box products): the products
 // are bitwise those of a convolution that made its own, and nothing is
@@ -385,6 +491,8 @@ int main()
         cmocka_unit_test(coefficients_match_contact_form),
         cmocka_unit_test(products_match_direct_sums),
         cmocka_unit_test(copied_spectra_give_the_same_products),
+        cmocka_unit_test(coarse_space_matches_products),
+        cmocka_unit_test(coarse_correction_inverts_its_space),
         cmocka_unit_test(local_friction_solves_coulomb),
         cmocka_unit_test(history_predicts_a_drift),
         cmocka_unit_test(history_extrapolates_the_error),

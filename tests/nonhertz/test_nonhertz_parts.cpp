@@ -10,7 +10,8 @@
 // (GridConvolution::set_size, other FFT lengths) against the whole grid's,
 // and the normal problem with its products on the contact set's box against
 // the one on the whole grid; the normal methods' dN/d(approach) against
-// central differences of their own force.
+// central differences of their own force; the warm exact steps' coarse
+// space followed along a gap's changing contact set against a fresh one.
 #include "gap_shape_grid.hpp"
 #include "gap_shapes.hpp"
 #include "gap_test_support.hpp"
@@ -22,6 +23,7 @@
 #include <vector>
 
 #include "contact/hertz.hpp"
+#include "exact/coarse_correction.hpp"
 #include "halfspace/exact_geometry.hpp"
 #include "halfspace/grid_convolution.hpp"
 #include "normal/gap_normal.hpp"
@@ -311,6 +313,45 @@ void pressure_drift_follows_a_linear_drift(void**)
     assert_int_equal(drift.count(), 0);
 }
 
+// The coarse correction of the warm exact steps (exact/coarse_correction.hpp)
+// follows a gap's contact set as it grows and shrinks by the columns of the
+// elements that joined or left it: its B P equals a fresh set-up's on the
+// last set, to rounding (1e-12 of the largest entry), on N07_wide's grid
+// with the sets h < t for three levels t a few elements apart.
+void coarse_space_follows_the_contact_set(void**)
+{
+    static const std::vector<gapshapes::Shape> all = gapshapes::shapes();
+    const gapshapes::Shape* sp = nullptr;
+    for (const gapshapes::Shape& s : all)
+        if (s.id == "N07_wide") sp = &s;
+    assert_non_null(sp);
+    const gapshapes::Shape& s = *sp;
+    const int n = s.nx * s.ny;
+    std::vector<double> sorted = s.h;
+    std::sort(sorted.begin(), sorted.end());
+    auto set_below = [&](int rank) {
+        std::vector<double> g(n);
+        for (int k = 0; k < n; ++k) g[k] = s.h[k] < sorted[rank] ? 1.0 : 0.0;
+        return g;
+    };
+    cw::GridConvolution conv(s.nx, s.ny, cw::ConvolutionUse::tangential);
+    conv.set_coefficients(s.dy / s.dx, s.nu);
+    cw::CoarseCorrection followed, fresh;
+    followed.reserve(n);
+    fresh.reserve(n);
+    for (int rank : {1200, 1230, 1185}) followed.set_space(conv, true, 0.0, s.nx, s.ny, set_below(rank));
+    fresh.set_space(conv, true, 0.0, s.nx, s.ny, set_below(1185));
+    assert_int_equal(followed.columns(), fresh.columns());
+    double scale = 0.0;
+    for (int c = 0; c < fresh.columns(); ++c)
+        for (int k = 0; k < n; ++k) scale = std::max(scale, std::abs(fresh.bp(c)[k]));
+    for (int c = 0; c < fresh.columns(); ++c)
+        for (int k = 0; k < n; ++k) {
+            assert_close(followed.bp(c)[k].real(), fresh.bp(c)[k].real(), 0.0, 1e-12 * scale);
+            assert_close(followed.bp(c)[k].imag(), fresh.bp(c)[k].imag(), 0.0, 1e-12 * scale);
+        }
+}
+
 // The exact normal problem held for warm solves (GapNormal with the warm
 // option, as the exact model makes it) along a drifting gap, the force
 // prescribed (N04_crescent's gap times 1 + 0.01 sin(2 pi k / 100), raised
@@ -588,6 +629,7 @@ int main(int argc, char** argv)
         cmocka_unit_test(semi_hertz_matches_contacts_analyn),
         cmocka_unit_test(patches_are_edge_connected),
         cmocka_unit_test(normal_methods_give_the_force_by_approach),
+        cmocka_unit_test(coarse_space_follows_the_contact_set),
     };
     return cw_run_tests(tests, argc > 1 ? argv[1] : nullptr);
 }

@@ -268,6 +268,18 @@ static void wear_of_two_patches(void** state)
  * fast model's height; measured 1.8e-8 of the forces at y = 3 mm). */
 static const double kBalances = 2e-6;
 
+/* What the exact solve's tolerance (1e-8) guarantees of a moment: the
+ * tractions to 1e-8 of the largest, so Mn to 1e-8 |F| times a length of
+ * the patch (here an element's, less than the patch's size). Mn of the
+ * benchmark's patch is small (0.024 N m against |F| dx = 0.59 N m), so 1e-8 of
+ * Mn itself holds only while both sides' solves follow mirror paths, which
+ * the warm steps' coarse correction (its blocks on the patch's grid) need
+ * not. */
+static double mn_tolerance(const cw_wheelrail_patch* p)
+{
+    return 1e-8 * hypot(p->Fx, p->Fs) * p->field_dx;
+}
+
 /* Mirror symmetry: the left wheel at the mirrored position wears the same
  * profiles (as their points are given) as the right wheel, and its forces
  * mirror (Fs and Mn change sign), to kBalances. */
@@ -279,7 +291,7 @@ static void sides_mirror(void** state)
     const cw_wheelrail_patch pr = patch0(r), pl = patch0(l);
     assert_close(pl.Fx, pr.Fx, kBalances, 0);
     assert_close(pl.Fs, -pr.Fs, kBalances, 0);
-    assert_close(pl.Mn, -pr.Mn, kBalances, 1e-12);
+    assert_close(pl.Mn, -pr.Mn, kBalances, mn_tolerance(&pr));
     assert_close(pl.rail_profile_y, pr.rail_profile_y, 0, 1e-12);
     assert_close(pl.rail_s_cos, -pr.rail_s_cos, 0, 1e-12);
     cw_wear_params law;
@@ -349,7 +361,7 @@ static void rail_offset_mirrors_with_the_gauge(void** state)
     assert_close(l.Fn, r.Fn, kBalances, 0);
     assert_close(l.Fx, r.Fx, kBalances, 0);
     assert_close(l.Fs, -r.Fs, kBalances, 0);
-    assert_close(l.Mn, -r.Mn, kBalances, 1e-12);
+    assert_close(l.Mn, -r.Mn, kBalances, mn_tolerance(&r));
     assert_close(l.cksi, r.cksi, 1e-12, 0);
     assert_close(l.ceta, -r.ceta, 1e-12, 0);
     cw_wheelrail_destroy(moved[0]);

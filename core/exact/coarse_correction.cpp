@@ -1,0 +1,312 @@
+#include "exact/coarse_correction.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
+#include "simd/simd.hpp"
+
+namespace creepwork {
+
+namespace {
+
+// acc[t] = sum_c z[c] w[c len + t], the columns in order for every t (the
+// same bits in every ISA's copy), len a multiple of W or not.
+struct Combine : KernelWidths {
+    template <int W>
+    static CREEPWORK_INLINE void run(double* const& acc, const double* const& w,
+                                     const double* const& z, const int& m, const int& len)
+    {
+        using V = simd::Vec<W>;
+        const size_t stride = static_cast<size_t>(len);
+        int t = 0;
+        for (; t + 2 * W <= len; t += 2 * W) {
+            V a0{}, a1{};
+            for (int c = 0; c < m; ++c) {
+                const V zc = simd::broadcast<W>(z[c]);
+                a0 += zc * simd::load<W>(w + c * stride + t);
+                a1 += zc * simd::load<W>(w + c * stride + t + W);
+            }
+            simd::store<W>(acc + t, a0);
+            simd::store<W>(acc + t + W, a1);
+        }
+        for (; t < len; ++t) {
+            double a = 0.0;
+            for (int c = 0; c < m; ++c) a += z[c] * w[c * stride + t];
+            acc[t] = a;
+        }
+    }
+};
+
+// The blocks of at most a elements along an axis of L, mirror-symmetric
+// about its centre (elements i and L - 1 - i in mirror blocks, so that a
+// contact and its mirror image get mirror corrections): their number.
+int axis_blocks(int L, int a, std::vector<int>& block)
+{
+    int nb = (L + a - 1) / a;
+    if (L % 2 == 1 && nb % 2 == 0) ++nb; // the middle element in a middle block
+    block.resize(static_cast<size_t>(L));
+    for (int i = 0; 2 * i + 1 <= L; ++i) {
+        const int b = static_cast<int>(std::floor((2.0 * i + 1.0 - L) / (2.0 * a) + 0.5 * nb));
+        block[i] = std::min(std::max(b, 0), nb - 1);
+        block[L - 1 - i] = nb - 1 - block[i];
+    }
+    return nb;
+}
+
+} // namespace
+
+void CoarseCorrection::make_kernel(const GridConvolution& conv, bool rolling)
+{
+    // s(I) = sum_J B(I - J) q_J; B(d) = A(d) - A(d + e_x) rolling
+    // (grid_convolution.hpp), cf12 even in d as a whole.
+    const int wx = 2 * nx_ - 1, wy = 2 * ny_ - 1;
+    kxx_.resize(static_cast<size_t>(wx) * wy);
+    kxy_.resize(kxx_.size());
+    kyy_.resize(kxx_.size());
+    for (int dy = -(ny_ - 1); dy <= ny_ - 1; ++dy)
+        for (int dx = -(nx_ - 1); dx <= nx_ - 1; ++dx) {
+            const size_t t = static_cast<size_t>(dx + nx_ - 1) + static_cast<size_t>(wx) * (dy + ny_ - 1);
+            double xx = conv.cf11(dx, dy), xy = conv.cf12(dx, dy), yy = conv.cf22(dx, dy);
+            if (rolling) {
+                xx -= conv.cf11(dx + 1, dy);
+                xy -= conv.cf12(dx + 1, dy);
+                yy -= conv.cf22(dx + 1, dy);
+            }
+            kxx_[t] = xx;
+            kxy_[t] = xy;
+            kyy_[t] = yy;
+        }
+}
+
+void CoarseCorrection::reserve(int n)
+{
+    const size_t e = static_cast<size_t>(n), cols = 2 * static_cast<size_t>(kMaxAggregates);
+    for (auto* v : {&kxx_, &kxy_, &kyy_}) v->reserve(4 * e);
+    mask_.reserve(e);
+    agg_.reserve(e);
+    block_.reserve(e);
+    bxi_.reserve(e);
+    byj_.reserve(e);
+    index_.reserve(e);
+    size_.reserve(cols);
+    sizes_.reserve(cols);
+    bp_.reserve(e * cols);
+    gp_.reserve(e * cols);
+    wc_.reserve(2 * e * cols);
+    acc_.reserve(2 * e);
+    t_.reserve(cols * cols);
+    rhs_.reserve(cols);
+    pivot_.reserve(cols);
+    capacity_ = n;
+}
+
+void CoarseCorrection::add_element(int src, int a, double sign)
+{
+    // B's column of element src times sign, into aggregate a's x and y
+    // columns at every element (a contact element may join later).
+    const int ii = src % nx_, jj = src / nx_, wx = 2 * nx_ - 1;
+    Complex* cx = bp_.data() + static_cast<size_t>(n_) * (2 * a);
+    Complex* cy = cx + n_;
+    for (int j = 0; j < ny_; ++j) {
+        const size_t row = static_cast<size_t>(wx) * (j - jj + ny_ - 1) + (nx_ - 1 - ii);
+        for (int i = 0; i < nx_; ++i) {
+            const int k = i + nx_ * j;
+            const size_t t = row + i;
+            cx[k] += Complex(sign * kxx_[t], sign * kxy_[t]);
+            cy[k] += Complex(sign * kxy_[t], sign * kyy_[t]);
+        }
+    }
+    if (layer_ == 0.0) return;
+    // The layer's c (v_k - v_ahead): +c at src, -c at the element behind it.
+    const double c = sign * layer_;
+    cx[src] += c;
+    cy[src] += Complex(0.0, c);
+    if (rolling_ && ii > 0) {
+        cx[src - 1] -= c;
+        cy[src - 1] -= Complex(0.0, c);
+    }
+}
+
+bool CoarseCorrection::update(const std::vector<double>& g)
+{
+    // The aggregates stay when every element that joined or left the
+    // contact set falls in a block with an aggregate that keeps a member.
+    for (int a = 0; a < aggregates_; ++a) sizes_[a] = size_[a];
+    int changed = 0;
+    for (int k = 0; k < n_; ++k) {
+        const bool in = g[k] > 0.0;
+        if (in == static_cast<bool>(mask_[k])) continue;
+        const int a = block_[static_cast<size_t>(bxi_[k % nx_]) + static_cast<size_t>(bx_) * byj_[k / nx_]];
+        if (a < 0) return false;
+        sizes_[a] += in ? 1 : -1;
+        ++changed;
+    }
+    for (int a = 0; a < aggregates_; ++a)
+        if (sizes_[a] <= 0) return false;
+    if (changed == 0) return true;
+    for (int k = 0; k < n_; ++k) {
+        const bool in = g[k] > 0.0;
+        if (in == static_cast<bool>(mask_[k])) continue;
+        const int a = block_[static_cast<size_t>(bxi_[k % nx_]) + static_cast<size_t>(bx_) * byj_[k / nx_]];
+        add_element(k, a, in ? 1.0 : -1.0);
+        mask_[k] = in;
+        agg_[k] = in ? a : -1;
+        size_[a] = sizes_[a];
+    }
+    index_.clear();
+    for (int k = 0; k < n_; ++k)
+        if (mask_[k]) index_.push_back(k);
+    wc_.resize(2 * index_.size() * static_cast<size_t>(columns()));
+    acc_.resize(2 * index_.size());
+    return true;
+}
+
+void CoarseCorrection::set_space(const GridConvolution& conv, bool rolling, double layer, int nx,
+                                 int ny, const std::vector<double>& g)
+{
+    factored_ = false;
+    const bool kernel_same = nx == nx_ && ny == ny_ && rolling == rolling_ && layer == layer_ &&
+                             conv.rho() == rho_ && conv.nu() == nu_;
+    if (kernel_same && aggregates_ > 0 && update(g)) return;
+    const int n = nx * ny;
+    nx_ = nx;
+    ny_ = ny;
+    n_ = n;
+    rolling_ = rolling;
+    layer_ = layer;
+    rho_ = conv.rho();
+    nu_ = conv.nu();
+    if (!kernel_same) make_kernel(conv, rolling);
+    mask_.resize(n);
+    agg_.resize(n);
+    for (int k = 0; k < n; ++k) mask_[k] = g[k] > 0.0;
+    // The smallest block side that keeps the aggregates within kMaxAggregates.
+    for (int side = 2;; ++side) {
+        const int bx = axis_blocks(nx, side, bxi_), by = axis_blocks(ny, side, byj_);
+        block_.assign(static_cast<size_t>(bx) * by, -1);
+        int count = 0;
+        for (int j = 0; j < ny; ++j)
+            for (int i = 0; i < nx; ++i) {
+                const int k = i + nx * j;
+                agg_[k] = -1;
+                if (!mask_[k]) continue;
+                int& b = block_[static_cast<size_t>(bxi_[i]) + static_cast<size_t>(bx) * byj_[j]];
+                if (b < 0) b = count++;
+                agg_[k] = b;
+            }
+        if (count <= kMaxAggregates) {
+            aggregates_ = count;
+            bx_ = bx;
+            break;
+        }
+    }
+    index_.clear();
+    for (int k = 0; k < n; ++k)
+        if (mask_[k]) index_.push_back(k);
+    size_.assign(static_cast<size_t>(aggregates_), 0);
+    sizes_.assign(static_cast<size_t>(aggregates_), 0);
+    for (int k = 0; k < n; ++k)
+        if (agg_[k] >= 0) ++size_[agg_[k]];
+    const size_t cols = static_cast<size_t>(columns());
+    bp_.assign(static_cast<size_t>(n) * cols, Complex(0.0, 0.0));
+    gp_.assign(static_cast<size_t>(n) * cols, Complex(0.0, 0.0));
+    t_.resize(cols * cols);
+    wc_.resize(2 * index_.size() * cols);
+    acc_.resize(2 * index_.size());
+    rhs_.resize(cols);
+    pivot_.resize(cols);
+    // B P: each contact element's column of B added into its aggregate's.
+    for (int k : index_) add_element(k, agg_[k], 1.0);
+}
+
+void CoarseCorrection::indicator(int c, Complex* v) const
+{
+    const Complex one = c % 2 == 0 ? Complex(1.0, 0.0) : Complex(0.0, 1.0);
+    for (int k = 0; k < n_; ++k)
+        if (agg_[k] == c / 2) v[k] = one;
+}
+
+void CoarseCorrection::clear(int c, Complex* v) const
+{
+    for (int k = 0; k < n_; ++k)
+        if (agg_[k] == c / 2) v[k] = 0.0;
+}
+
+bool CoarseCorrection::factor()
+{
+    const int m = columns();
+    factored_ = false;
+    if (m == 0) return false;
+    // T(r, c) = P_r^T P_c - P_r^T (G' P)_c.
+    for (int c = 0; c < m; ++c) {
+        for (int r = 0; r < m; ++r) t_[static_cast<size_t>(r) * m + c] = 0.0;
+        const Complex* w = gp(c);
+        for (int k = 0; k < n_; ++k) {
+            const int a = agg_[k];
+            if (a < 0) continue;
+            t_[static_cast<size_t>(2 * a) * m + c] -= w[k].real();
+            t_[static_cast<size_t>(2 * a + 1) * m + c] -= w[k].imag();
+        }
+        t_[static_cast<size_t>(c) * m + c] += size_[c / 2];
+    }
+    for (int j = 0; j < m; ++j) {
+        int p = j;
+        for (int r = j + 1; r < m; ++r)
+            if (std::fabs(t_[static_cast<size_t>(r) * m + j]) >
+                std::fabs(t_[static_cast<size_t>(p) * m + j]))
+                p = r;
+        pivot_[j] = p;
+        if (!(t_[static_cast<size_t>(p) * m + j] != 0.0)) return false;
+        if (p != j)
+            for (int c = 0; c < m; ++c)
+                std::swap(t_[static_cast<size_t>(j) * m + c], t_[static_cast<size_t>(p) * m + c]);
+        const double d = t_[static_cast<size_t>(j) * m + j];
+        for (int r = j + 1; r < m; ++r) {
+            const double l = t_[static_cast<size_t>(r) * m + j] / d;
+            t_[static_cast<size_t>(r) * m + j] = l;
+            for (int c = j + 1; c < m; ++c)
+                t_[static_cast<size_t>(r) * m + c] -= l * t_[static_cast<size_t>(j) * m + c];
+        }
+    }
+    // G' P at the contact elements (it is zero elsewhere), column by column.
+    const int nk = static_cast<int>(index_.size());
+    for (int c = 0; c < m; ++c) {
+        const Complex* w = gp(c);
+        double* out = wc_.data() + static_cast<size_t>(2 * nk) * c;
+        for (int t = 0; t < nk; ++t) {
+            out[2 * t] = w[index_[t]].real();
+            out[2 * t + 1] = w[index_[t]].imag();
+        }
+    }
+    factored_ = true;
+    return true;
+}
+
+void CoarseCorrection::apply(const Complex* u, Complex* x)
+{
+    for (int k = 0; k < n_; ++k) x[k] = u[k];
+    if (!factored_) return;
+    const int m = columns();
+    const int nk = static_cast<int>(index_.size());
+    for (int c = 0; c < m; ++c) rhs_[c] = 0.0;
+    for (int t = 0; t < nk; ++t) {
+        const int k = index_[t];
+        const int a = agg_[k];
+        rhs_[2 * a] += u[k].real();
+        rhs_[2 * a + 1] += u[k].imag();
+    }
+    for (int j = 0; j < m; ++j) std::swap(rhs_[j], rhs_[pivot_[j]]);
+    for (int r = 1; r < m; ++r)
+        for (int c = 0; c < r; ++c) rhs_[r] -= t_[static_cast<size_t>(r) * m + c] * rhs_[c];
+    for (int r = m - 1; r >= 0; --r) {
+        for (int c = r + 1; c < m; ++c) rhs_[r] -= t_[static_cast<size_t>(r) * m + c] * rhs_[c];
+        rhs_[r] /= t_[static_cast<size_t>(r) * m + r];
+    }
+    // G' P z over the contact elements, as 2 nk doubles.
+    run_kernel<Combine>(isa_, acc_.data(), static_cast<const double*>(wc_.data()),
+                        static_cast<const double*>(rhs_.data()), m, 2 * nk);
+    for (int t = 0; t < nk; ++t) x[index_[t]] += Complex(acc_[2 * t], acc_[2 * t + 1]);
+}
+
+} // namespace creepwork
