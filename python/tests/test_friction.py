@@ -125,8 +125,12 @@ def test_exact_model_with_a_law(test_data_dir):
         assert abs(res.work_consistent.sum() - res.W_macro) <= 1e-9 * res.W_macro
         slipping = res.state == 2  # CW_STATE_SLIP
         mu = 0.14 + 0.19 * np.exp(-math.log(2) * np.hypot(res.sx, res.sy)[slipping] * V / 1.25)
-        assert res.mu_min == pytest.approx(mu.min(), abs=1e-12)
-        assert res.mu_max == pytest.approx(mu.max(), abs=1e-12)
+        # mu_min/mu_max come from the last local friction solve, the reported
+        # slip from the final iterate: they agree to the solver's tolerance
+        # (1e-8 of the slip), and |dmu/d|s|| |s| <= 0.19/e = 0.07 for this law,
+        # so to 7e-10 (a warm solve's last Newton update need not end in a sweep).
+        assert res.mu_min == pytest.approx(mu.min(), abs=1e-9)
+        assert res.mu_max == pytest.approx(mu.max(), abs=1e-9)
         coulomb = tractcurv(xi_x=3e-3, **dict(EXACT_LAW, friction_law="coulomb", mu=0.33))
         after = s.solve(coulomb)
     with creepwork.Solver(GRID) as fresh:
