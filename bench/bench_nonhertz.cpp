@@ -48,9 +48,7 @@
 #include "solver.hpp"
 
 #ifdef CW_BENCH_CONTACT
-extern "C" {
-#include "contact_gap.h"
-}
+#include "contact_gap_shape.hpp"
 #endif
 
 namespace cw = creepwork;
@@ -319,25 +317,10 @@ int main(int argc, char** argv)
         const cw::GridSpec g = gapshapes::grid_of(s);
 
 #ifdef CW_BENCH_CONTACT
-        contact_gap_case cc{};
-        cc.nx = s.nx;
-        cc.ny = s.ny;
-        cc.x0 = s.x0;
-        cc.y0 = s.y0;
-        cc.dx = s.dx;
-        cc.dy = s.dy;
-        cc.h = s.h.data();
-        cc.approach_given = s.approach_given;
-        cc.normal_force = s.normal_force;
-        cc.approach = s.approach;
-        cc.G = s.G;
-        cc.nu = s.nu;
-        cc.mu = s.mu;
-        cc.xi_x = c.xi_x;
+        contact_gap_case cc = contact_case_of(s, contact_eps);
+        cc.xi_x = c.xi_x; // the benchmark's creepages (H20_hertz: the elliptic bench's)
         cc.xi_y = c.xi_y;
         cc.phi = c.phi;
-        cc.rolling_direction = s.rolling_direction;
-        cc.eps = contact_eps;
         contact_gap_setup(&cc);
         contact_gap_result r{};
         double contact = 1e300;

@@ -16,10 +16,7 @@
 #include <string>
 #include <vector>
 
-extern "C" {
-#include "contact_gap.h"
-}
-#include "gap_shapes.hpp"
+#include "contact_gap_shape.hpp"
 
 namespace {
 
@@ -29,30 +26,6 @@ double round4(double v)
     char buf[32];
     std::snprintf(buf, sizeof buf, "%.4g", v);
     return std::strtod(buf, nullptr);
-}
-
-contact_gap_case to_case(const gapshapes::Shape& s, double eps)
-{
-    contact_gap_case c{};
-    c.nx = s.nx;
-    c.ny = s.ny;
-    c.x0 = s.x0;
-    c.y0 = s.y0;
-    c.dx = s.dx;
-    c.dy = s.dy;
-    c.h = s.h.data();
-    c.approach_given = s.approach_given;
-    c.normal_force = s.normal_force;
-    c.approach = s.approach;
-    c.G = s.G;
-    c.nu = s.nu;
-    c.mu = s.mu;
-    c.xi_x = s.xi_x;
-    c.xi_y = s.xi_y;
-    c.phi = s.phi;
-    c.rolling_direction = s.rolling_direction;
-    c.eps = eps;
-    return c;
 }
 
 // 4-connected components of eldiv > 0, numbered by first element in [i + nx j].
@@ -113,7 +86,7 @@ int main(int argc, char** argv)
         r.px = px.data();
         r.py = py.data();
         // Contact area without creepage -> creepages.
-        contact_gap_case c = to_case(s, 1e-12);
+        contact_gap_case c = contact_case_of(s, 1e-12);
         contact_gap_setup(&c);
         if (contact_gap_solve(&c, 1, &r) != 0) return 1;
         const double N = r.Fn;
@@ -126,7 +99,7 @@ int main(int argc, char** argv)
         if (std::fabs(s.xi_x) < 1e-12) s.xi_x = 0.0;
         if (std::fabs(s.xi_y) < 1e-12) s.xi_y = 0.0;
 
-        c = to_case(s, 1e-12);
+        c = contact_case_of(s, 1e-12);
         contact_gap_setup(&c);
         if (contact_gap_solve(&c, 1, &r) != 0) return 1;
         const contact_gap_result ref = r;
@@ -151,7 +124,7 @@ int main(int argc, char** argv)
                          fy, mz);
         }
         // CONTACT's own convergence: the same case at EPS = 1e-10.
-        c = to_case(s, 1e-10);
+        c = contact_case_of(s, 1e-10);
         contact_gap_setup(&c);
         contact_gap_result loose{};
         if (contact_gap_solve(&c, 1, &loose) != 0) return 1;
