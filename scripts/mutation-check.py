@@ -778,9 +778,10 @@ WHEELRAIL_MUTANTS += [
          tests=["test_wheelrail_geometry"] + BALANCE, require=["test_wheelrail_geometry", "test_wheelrail_forces"]),
     # The later heights' wheel solves from the last height's points
     # (core/wheelrail/patch_grid.cpp): a step's warm start misses by more
-    # than their stop only after steps larger than a balance's, which only
-    # the geometry test takes (within a balance one Newton step reaches
-    # rounding whatever the stop): one catcher is all there is.
+    # than their stop only after steps larger than a balance's (within a
+    # balance one Newton step reaches rounding whatever the stop), and
+    # only the geometry's own callers move it sideways between heights:
+    # the geometry test and the vertical test's fixed-grid steps catch them.
     dict(id="wheelrail-warm-wheel-stop", what="the later heights' wheel solves stopped at a step below 1e-3 m",
          file="core/wheelrail/patch_grid.cpp",
          old="constexpr double kWarmStep = 1e-8; ",
@@ -791,6 +792,25 @@ WHEELRAIL_MUTANTS += [
          old="           kept->wheel.o(0) == wheel.o(0) && kept->wheel.o(1) == wheel.o(1);",
          new="           true;",
          tests=["test_wheelrail_geometry"] + BALANCE, require=["test_wheelrail_geometry", "test_wheelrail_vertical"]),
+    # The search's sampling leaves out the wheel knots whose locus cannot
+    # reach a rail sample (core/wheelrail/contact_search.cpp).
+    dict(id="wheelrail-locus-knots-above", what="the locus' knots cut at the first sample instead of the last",
+         file="core/wheelrail/contact_search.cpp",
+         old="    while (k_sta < k_end && ky_[k_sta + 1] - reach(k_sta + 1) > y_last) ++k_sta;",
+         new="    while (k_sta < k_end && ky_[k_sta + 1] - reach(k_sta + 1) > y0_) ++k_sta;",
+         tests=["test_wheelrail_geometry"] + BALANCE, require=["test_wheelrail_geometry", "test_wheelrail_forces"]),
+    dict(id="wheelrail-locus-knots-below", what="the locus' knots cut at the last sample instead of the first",
+         file="core/wheelrail/contact_search.cpp",
+         old="    while (k_end > k_sta && ky_[k_end - 1] + reach(k_end - 1) < y0_) --k_end;",
+         new="    while (k_end > k_sta && ky_[k_end - 1] + reach(k_end - 1) < y_last) --k_end;",
+         tests=["test_wheelrail_geometry"] + BALANCE, require=["test_wheelrail_geometry", "test_wheelrail_forces"]),
+    # The yaw's share of the reach moves the locus only at the rail's far
+    # ends, away from any contact: only the samples show it.
+    dict(id="wheelrail-locus-reach-yaw", what="the locus' reach without the yaw's share",
+         file="core/wheelrail/contact_search.cpp",
+         old="        return std::abs(r(1, 0)) * 0.5 * R + std::abs(r(1, 2)) * (R + std::abs(knot_[k].z)) + kReachSlack;",
+         new="        return std::abs(r(1, 2)) * (R + std::abs(knot_[k].z)) + kReachSlack;",
+         tests=["test_wheelrail_geometry"], require=["test_wheelrail_geometry"], min_caught=1),
     dict(id="wheelrail-balance-last-evaluation", what="the forces returned from every evaluation's patches, not the last's",
          file="core/wheelrail/patch_contact.cpp",
          old="            evaluated_.clear();",

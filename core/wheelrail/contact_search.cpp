@@ -15,6 +15,7 @@ constexpr double kPlateau = 1e-9;   // [m] equal gaps on a plateau (CONTACT: 1e-
 constexpr double kSteep = 1e-3;     // [m] no parabola through steps this large (CONTACT: 1 mm)
 constexpr double kMinWeight = 1e-19; // [m^3] CONTACT's floor of 1e-10 mm^3 per sample
 constexpr int kMaxNearMisses = 2;
+constexpr double kReachSlack = 1e-9; // [m] beyond the rounding of a knot's track y
 
 // The interpenetration weight of one lateral sample: the squared
 // interpenetration pen - a x^2 integrated over |x| < t0 = sqrt(pen / a),
@@ -88,6 +89,16 @@ void ContactSearch::sample_wheel(const Frame& f)
 
     // locus: x = r (dz/dy) R01 / R00 on each circle (R02 = 0 without pitch)
     const double R = radius_, a = r(0, 1) / r(0, 0), b = R * r(0, 2) / r(0, 0);
+    // Only the knots whose locus can reach the rail's samples: the locus's
+    // track y differs from the profile point's (ky_ above) by r10 x + r12
+    // (z_w - z), |x| <= R / 2 and |z_w - z| <= R + |z|; an interval of the
+    // locus wholly above the last sample or below the first adds none.
+    const double y_last = y0_ + (n_ - 1) * dy_;
+    auto reach = [&](int k) {
+        return std::abs(r(1, 0)) * 0.5 * R + std::abs(r(1, 2)) * (R + std::abs(knot_[k].z)) + kReachSlack;
+    };
+    while (k_sta < k_end && ky_[k_sta + 1] - reach(k_sta + 1) > y_last) ++k_sta;
+    while (k_end > k_sta && ky_[k_end - 1] + reach(k_end - 1) < y0_) --k_end;
     for (int k = k_sta; k <= k_end; ++k) {
         const Profile::Point& p = knot_[k];
         const double dyc = std::min(-1e-6, p.dy);

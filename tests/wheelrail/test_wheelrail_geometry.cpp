@@ -5,6 +5,7 @@
 // also with a rail offset under the gauge placement, and a rail offset as a
 // translation; input errors.
 #include <cmath>
+#include <cstdio>
 #include <sstream>
 #include <string>
 #include <utility>
@@ -14,6 +15,7 @@
 #include "test_support.h"
 #include "wheelrail/patch_grid.hpp"
 #include "wheelrail/placement.hpp"
+#include "wheelrail/profile_table.hpp"
 
 namespace wr = creepwork::wheelrail;
 
@@ -344,6 +346,68 @@ void test_height_shift_as_sampled_anew(void**)
     }
 }
 
+// The search's samples of the contact locus against the wheel's lowest
+// point over x at each sample's lateral position (a vertical line's hit of
+// the wheel's surface, maximised over x by golden sections: another
+// method), on every sample of the rail, the wheelset yawed by up to 0.05
+// rad: within 1e-8 m (7.3e-10 m measured; the locus is a Hermite cubic between the wheel's
+// knots, the surface a table every 20 um), and every sample under the
+// wheel's visible part holds the wheel (the knots whose locus cannot reach
+// a sample are left out of the sampling).
+void test_locus_samples_are_the_lowest_points(void**)
+{
+    cwtest::Benchmark b;
+    const wr::ProfileTable table(b.wheel, 2e-5);
+    const double R = b.wheelset.nominal_radius;
+    const wr::Frame vertical; // track axes: n is track z
+    for (const double yaw : {0.0, 0.05, -0.05}) {
+        wr::WheelRailGeometry g = b.geometry(wr::Side::right, 0.5, 0.5);
+        wr::WheelsetPosition p;
+        p.y = 2e-3;
+        p.yaw = yaw;
+        p.z = 0.1e-3;
+        g.evaluate(p, {});
+        const wr::Frame wheel = wr::wheelset_in_track(p, b.wheelset, wr::Side::right).compose(wr::wheel_in_wheelset(b.wheelset));
+        const wr::ContactSearch& cs = g.search();
+        int checked = 0;
+        double worst = 0.0;
+        for (int i = 0; i < cs.samples(); ++i) {
+            const double y = cs.y_at(i);
+            // the wheel's lowest point along x at y (z down: the largest z)
+            auto z_at = [&](double x) {
+                double n = 0.0;
+                return wr::wheel_surface_n(vertical, table, wheel, R, x, y, n) ? n : -1.0;
+            };
+            double lo = -0.2, hi = 0.2;
+            const double gr = 0.5 * (std::sqrt(5.0) - 1.0);
+            double x1 = hi - gr * (hi - lo), x2 = lo + gr * (hi - lo), f1 = z_at(x1), f2 = z_at(x2);
+            for (int it = 0; it < 80; ++it) {
+                if (f1 > f2) {
+                    hi = x2;
+                    x2 = x1;
+                    f2 = f1;
+                    x1 = hi - gr * (hi - lo);
+                    f1 = z_at(x1);
+                } else {
+                    lo = x1;
+                    x1 = x2;
+                    f1 = f2;
+                    x2 = lo + gr * (hi - lo);
+                    f2 = z_at(x2);
+                }
+            }
+            const double zl = std::max(f1, f2);
+            if (zl < -0.5) continue; // no wheel above this sample
+            assert_true(cs.wheel_z()[static_cast<std::size_t>(i)] > -100.0);
+            assert_close(cs.wheel_z()[static_cast<std::size_t>(i)], zl, 0, 1e-8);
+            worst = std::max(worst, std::abs(cs.wheel_z()[static_cast<std::size_t>(i)] - zl));
+            ++checked;
+        }
+        std::printf("yaw %.2f: %d samples, locus within %.1e m of the lowest point\n", yaw, checked, worst);
+        assert_int_equal(checked, cs.samples());
+    }
+}
+
 // A rail deviation rail_dy is a lateral shift in track coordinates on either
 // side, with the rail placed by its gauge point as with rail_y0 (CONTACT's
 // wr_set_rail_marker: sgn dy in the side's mirrored frame). So the left rail
@@ -447,6 +511,7 @@ int main(int argc, char** argv)
         cmocka_unit_test(test_left_mirrors_right),
         cmocka_unit_test(test_rail_offset_mirrors_with_the_gauge),
         cmocka_unit_test(test_height_shift_as_sampled_anew),
+        cmocka_unit_test(test_locus_samples_are_the_lowest_points),
         cmocka_unit_test(test_input_errors),
     };
     return cw_run_tests(tests, argc > 1 ? argv[1] : nullptr);
