@@ -223,13 +223,13 @@ void CoarseCorrection::set_space(const GridConvolution& conv, bool rolling, doub
 void CoarseCorrection::indicator(int c, Complex* v) const
 {
     const Complex one = c % 2 == 0 ? Complex(1.0, 0.0) : Complex(0.0, 1.0);
-    for (int k = 0; k < n_; ++k)
+    for (const int k : index_)
         if (agg_[k] == c / 2) v[k] = one;
 }
 
 void CoarseCorrection::clear(int c, Complex* v) const
 {
-    for (int k = 0; k < n_; ++k)
+    for (const int k : index_)
         if (agg_[k] == c / 2) v[k] = 0.0;
 }
 
@@ -238,13 +238,13 @@ bool CoarseCorrection::factor()
     const int m = columns();
     factored_ = false;
     if (m == 0) return false;
-    // T(r, c) = P_r^T P_c - P_r^T (G' P)_c.
+    // T(r, c) = P_r^T P_c - P_r^T (G' P)_c, over the contact elements (the
+    // only ones with an aggregate) in the order of the grid.
     for (int c = 0; c < m; ++c) {
         for (int r = 0; r < m; ++r) t_[static_cast<size_t>(r) * m + c] = 0.0;
         const Complex* w = gp(c);
-        for (int k = 0; k < n_; ++k) {
+        for (const int k : index_) {
             const int a = agg_[k];
-            if (a < 0) continue;
             t_[static_cast<size_t>(2 * a) * m + c] -= w[k].real();
             t_[static_cast<size_t>(2 * a + 1) * m + c] -= w[k].imag();
         }
