@@ -20,6 +20,23 @@ struct Combine : KernelWidths {
         using V = simd::Vec<W>;
         const size_t stride = static_cast<size_t>(len);
         int t = 0;
+        // Four vectors per column's broadcast where the field allows (fewer
+        // broadcasts and loop steps per term), then two, then one element.
+        for (; t + 4 * W <= len; t += 4 * W) {
+            V a0{}, a1{}, a2{}, a3{};
+            for (int c = 0; c < m; ++c) {
+                const V zc = simd::broadcast<W>(z[c]);
+                const double* wc = w + c * stride + t;
+                a0 += zc * simd::load<W>(wc);
+                a1 += zc * simd::load<W>(wc + W);
+                a2 += zc * simd::load<W>(wc + 2 * W);
+                a3 += zc * simd::load<W>(wc + 3 * W);
+            }
+            simd::store<W>(acc + t, a0);
+            simd::store<W>(acc + t + W, a1);
+            simd::store<W>(acc + t + 2 * W, a2);
+            simd::store<W>(acc + t + 3 * W, a3);
+        }
         for (; t + 2 * W <= len; t += 2 * W) {
             V a0{}, a1{};
             for (int c = 0; c < m; ++c) {
