@@ -255,15 +255,22 @@ bool CoarseCorrection::factor()
     const int m = columns();
     factored_ = false;
     if (m == 0) return false;
-    // T(r, c) = P_r^T P_c - P_r^T (G' P)_c, over the contact elements (the
-    // only ones with an aggregate) in the order of the grid.
+    // T(r, c) = P_r^T P_c - P_r^T (G' P)_c, summed over the contact elements
+    // (the only ones with an aggregate) in the order of the grid, in the
+    // pass that gathers G' P at them (it is zero elsewhere) for apply().
+    const int nk = static_cast<int>(index_.size());
     for (int c = 0; c < m; ++c) {
         for (int r = 0; r < m; ++r) t_[static_cast<size_t>(r) * m + c] = 0.0;
         const Complex* w = gp(c);
-        for (const int k : index_) {
-            const int a = agg_[k];
-            t_[static_cast<size_t>(2 * a) * m + c] -= w[k].real();
-            t_[static_cast<size_t>(2 * a + 1) * m + c] -= w[k].imag();
+        double* out = wc_.data() + static_cast<size_t>(2 * nk) * c;
+        for (int t = 0; t < nk; ++t) {
+            const int k = index_[t];
+            const double re = w[k].real(), im = w[k].imag();
+            out[2 * t] = re;
+            out[2 * t + 1] = im;
+            const size_t row = static_cast<size_t>(2 * agg_[k]) * m + c;
+            t_[row] -= re;
+            t_[row + m] -= im;
         }
         t_[static_cast<size_t>(c) * m + c] += size_[c / 2];
     }
@@ -284,16 +291,6 @@ bool CoarseCorrection::factor()
             t_[static_cast<size_t>(r) * m + j] = l;
             for (int c = j + 1; c < m; ++c)
                 t_[static_cast<size_t>(r) * m + c] -= l * t_[static_cast<size_t>(j) * m + c];
-        }
-    }
-    // G' P at the contact elements (it is zero elsewhere), column by column.
-    const int nk = static_cast<int>(index_.size());
-    for (int c = 0; c < m; ++c) {
-        const Complex* w = gp(c);
-        double* out = wc_.data() + static_cast<size_t>(2 * nk) * c;
-        for (int t = 0; t < nk; ++t) {
-            out[2 * t] = w[index_[t]].real();
-            out[2 * t + 1] = w[index_[t]].imag();
         }
     }
     factored_ = true;
