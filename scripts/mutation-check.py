@@ -223,6 +223,16 @@ MUTANTS = [
          "to its block's B P, not taken out", file="core/exact/coarse_correction.cpp",
          old="        add_element(k, a, in ? 1.0 : -1.0);",
          new="        add_element(k, a, 1.0);", tests=WARM + ["test_nonhertz_parts"]),
+    dict(id="coarse-run-partial-sums", what="exact: a fresh coarse set-up's run of elements "
+         "along x loses its last element (the partial sums' lower end one too far)",
+         file="core/exact/coarse_correction.cpp",
+         old="const size_t hi = row + (nx_ - i0), lo = row + (nx_ - 1 - i1);",
+         new="const size_t hi = row + (nx_ - i0), lo = row + (nx_ - i1);",
+         tests=WARM + ["test_nonhertz_parts"]),
+    dict(id="coarse-combine-fourth-vector", what="exact: the coarse combination's fourth "
+         "vector reads the third's coefficients", file="core/exact/coarse_correction.cpp",
+         old="                a3 += zc * simd::load<W>(wc + 3 * W);",
+         new="                a3 += zc * simd::load<W>(wc + 2 * W);", tests=WARM),
     dict(id="coarse-galerkin-identity", what="exact: the Galerkin operator drops P^T P "
          "(T = -P^T G' P)", file="core/exact/coarse_correction.cpp",
          old="        t_[static_cast<size_t>(c) * m + c] += size_[c / 2];",

@@ -29,7 +29,7 @@ namespace creepwork {
 // once per Newton step).
 constexpr int kMaxAggregates = 25;
 // The largest field (elements) a solver makes the correction for: its
-// memory, about 2.4 kB per element, is the size of the rest of the solver's.
+// memory, about 2.6 kB per element, is the size of the rest of the solver's.
 constexpr int kCoarseMaxElements = 4096;
 
 class CoarseCorrection {
