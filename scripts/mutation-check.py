@@ -229,10 +229,6 @@ MUTANTS = [
          old="const size_t hi = row + (nx_ - i0), lo = row + (nx_ - 1 - i1);",
          new="const size_t hi = row + (nx_ - i0), lo = row + (nx_ - i1);",
          tests=WARM + ["test_nonhertz_parts"]),
-    dict(id="coarse-combine-fourth-vector", what="exact: the coarse combination's fourth "
-         "vector reads the third's coefficients", file="core/exact/coarse_correction.cpp",
-         old="                a3 += zc * simd::load<W>(wc + 3 * W);",
-         new="                a3 += zc * simd::load<W>(wc + 2 * W);", tests=WARM),
     dict(id="coarse-galerkin-identity", what="exact: the Galerkin operator drops P^T P "
          "(T = -P^T G' P)", file="core/exact/coarse_correction.cpp",
          old="        t_[static_cast<size_t>(c) * m + c] += size_[c / 2];",
@@ -476,11 +472,6 @@ MUTANTS += [
          file="core/normal/normal_problem.cpp",
          old="    if (!u_current) set_product(conv, q_, u_, false);",
          new="    set_product(conv, q_, u_, false);", tests=WARM_NORMAL),
-    dict(id="normal-start-product-scale", what="the start's predicted product is not scaled "
-         "with the start to the load", file="core/normal/normal_problem.cpp",
-         old="                for (int k = 0; k < n_; ++k) u_[k] = start_product[k] * (load / sum);",
-         new="                for (int k = 0; k < n_; ++k) u_[k] = start_product[k];",
-         tests=WARM_NORMAL),
     dict(id="normal-start-product-units", what="the start's predicted product is left in the "
          "pressures' units (not divided by G)", file="core/normal/gap_normal.cpp",
          old="            for (double& v : start_product_) v /= in.G;",
