@@ -223,6 +223,12 @@ MUTANTS = [
          "to its block's B P, not taken out", file="core/exact/coarse_correction.cpp",
          old="        add_element(k, a, in ? 1.0 : -1.0);",
          new="        add_element(k, a, 1.0);", tests=WARM + ["test_nonhertz_parts"]),
+    dict(id="coarse-run-partial-sums", what="exact: a fresh coarse set-up's run of elements "
+         "along x loses its last element (the partial sums' lower end one too far)",
+         file="core/exact/coarse_correction.cpp",
+         old="const size_t hi = row + (nx_ - i0), lo = row + (nx_ - 1 - i1);",
+         new="const size_t hi = row + (nx_ - i0), lo = row + (nx_ - i1);",
+         tests=WARM + ["test_nonhertz_parts"]),
     dict(id="coarse-galerkin-identity", what="exact: the Galerkin operator drops P^T P "
          "(T = -P^T G' P)", file="core/exact/coarse_correction.cpp",
          old="        t_[static_cast<size_t>(c) * m + c] += size_[c / 2];",
@@ -460,12 +466,20 @@ MUTANTS += [
          old="    if (force) {", new="    if (false) {", tests=WARM_NORMAL),
     dict(id="normal-warm-loose-passes", what="a warm normal solve takes the loose first passes",
          file="core/normal/gap_normal.cpp",
-         old="                                       warm ? tolerance : kNormalFirstTolerance);",
-         new="                                       kNormalFirstTolerance);", tests=WARM_NORMAL),
+         old="                                       warm ? tolerance : kNormalFirstTolerance,",
+         new="                                       kNormalFirstTolerance,", tests=WARM_NORMAL),
     dict(id="normal-share-product-again", what="a pass's first residual takes the share's product again",
          file="core/normal/normal_problem.cpp",
          old="    if (!u_current) set_product(conv, q_, u_, false);",
          new="    set_product(conv, q_, u_, false);", tests=WARM_NORMAL),
+    dict(id="normal-start-product-units", what="the start's predicted product is left in the "
+         "pressures' units (not divided by G)", file="core/normal/gap_normal.cpp",
+         old="            for (double& v : start_product_) v /= in.G;",
+         new="            for (double& v : start_product_) v /= 1.0;", tests=WARM_NORMAL),
+    dict(id="normal-start-product-newest", what="the start's predicted product is the newest "
+         "solution's product whatever the step", file="core/normal/pressure_drift.cpp",
+         old="        product[k] = u0[k] + g[0] * (u1[k] - u0[k]) + g[1] * (u2[k] - u0[k]);",
+         new="        product[k] = u0[k];", tests=WARM_NORMAL),
 ]
 # The half-space products' pruned transforms (core/halfspace/batched_fft.cpp):
 # a zero input taken as nonzero costs only time, a nonzero one dropped or an
@@ -498,8 +512,8 @@ MUTANTS += [
     # only with the force prescribed; with the approach prescribed u_ is stale.
     dict(id="normal-stale-first-product", what="the normal problem's gradients reuse a stale "
          "product with the approach prescribed", file="core/normal/normal_problem.cpp",
-         old="        if (!conjugate_gradients(conv, fixed_sum, fixed_sum, target, pass_tolerance,",
-         new="        if (!conjugate_gradients(conv, fixed_sum, true, target, pass_tolerance,",
+         old="        const bool u_current = fixed_sum || start_product;",
+         new="        const bool u_current = true;",
          tests=GAP + ["test_nonhertz_jacobian", "test_wheelrail_forces"]),
 ]
 # The solved-contact view's one export (core/contact/solved_contact.*,

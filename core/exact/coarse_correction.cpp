@@ -20,6 +20,23 @@ struct Combine : KernelWidths {
         using V = simd::Vec<W>;
         const size_t stride = static_cast<size_t>(len);
         int t = 0;
+        // Four vectors per column's broadcast where the field allows (fewer
+        // broadcasts and loop steps per term), then two, then one element.
+        for (; t + 4 * W <= len; t += 4 * W) {
+            V a0{}, a1{}, a2{}, a3{};
+            for (int c = 0; c < m; ++c) {
+                const V zc = simd::broadcast<W>(z[c]);
+                const double* wc = w + c * stride + t;
+                a0 += zc * simd::load<W>(wc);
+                a1 += zc * simd::load<W>(wc + W);
+                a2 += zc * simd::load<W>(wc + 2 * W);
+                a3 += zc * simd::load<W>(wc + 3 * W);
+            }
+            simd::store<W>(acc + t, a0);
+            simd::store<W>(acc + t + W, a1);
+            simd::store<W>(acc + t + 2 * W, a2);
+            simd::store<W>(acc + t + 3 * W, a3);
+        }
         for (; t + 2 * W <= len; t += 2 * W) {
             V a0{}, a1{};
             for (int c = 0; c < m; ++c) {
@@ -77,12 +94,25 @@ void CoarseCorrection::make_kernel(const GridConvolution& conv, bool rolling)
             kxy_[t] = xy;
             kyy_[t] = yy;
         }
+    // Their partial sums along x, a leading zero per row: the sum over a
+    // run of dx in one row is a difference of two.
+    const int wp = wx + 1;
+    for (auto* v : {&pxx_, &pxy_, &pyy_}) v->resize(static_cast<size_t>(wp) * wy);
+    for (int r = 0; r < wy; ++r) {
+        const size_t t = static_cast<size_t>(wx) * r, u = static_cast<size_t>(wp) * r;
+        pxx_[u] = pxy_[u] = pyy_[u] = 0.0;
+        for (int e = 0; e < wx; ++e) {
+            pxx_[u + e + 1] = pxx_[u + e] + kxx_[t + e];
+            pxy_[u + e + 1] = pxy_[u + e] + kxy_[t + e];
+            pyy_[u + e + 1] = pyy_[u + e] + kyy_[t + e];
+        }
+    }
 }
 
 void CoarseCorrection::reserve(int n)
 {
     const size_t e = static_cast<size_t>(n), cols = 2 * static_cast<size_t>(kMaxAggregates);
-    for (auto* v : {&kxx_, &kxy_, &kyy_}) v->reserve(4 * e);
+    for (auto* v : {&kxx_, &kxy_, &kyy_, &pxx_, &pxy_, &pyy_}) v->reserve(4 * e);
     mask_.reserve(e);
     agg_.reserve(e);
     block_.reserve(e);
@@ -125,6 +155,37 @@ void CoarseCorrection::add_element(int src, int a, double sign)
     if (rolling_ && ii > 0) {
         cx[src - 1] -= c;
         cy[src - 1] -= Complex(0.0, c);
+    }
+}
+
+void CoarseCorrection::add_run(int i0, int i1, int jj, int a)
+{
+    // Elements i0 ... i1 of row jj: at each element, the sum of B over the
+    // offsets i - i1 ... i - i0 along x, a difference of the partial sums.
+    const int wp = 2 * nx_;
+    Complex* cx = bp_.data() + static_cast<size_t>(n_) * (2 * a);
+    Complex* cy = cx + n_;
+    for (int j = 0; j < ny_; ++j) {
+        const size_t row = static_cast<size_t>(wp) * (j - jj + ny_ - 1);
+        const size_t hi = row + (nx_ - i0), lo = row + (nx_ - 1 - i1);
+        for (int i = 0; i < nx_; ++i) {
+            const int k = i + nx_ * j;
+            const double xx = pxx_[hi + i] - pxx_[lo + i];
+            const double xy = pxy_[hi + i] - pxy_[lo + i];
+            const double yy = pyy_[hi + i] - pyy_[lo + i];
+            cx[k] += Complex(xx, xy);
+            cy[k] += Complex(xy, yy);
+        }
+    }
+    if (layer_ == 0.0) return;
+    for (int ii = i0; ii <= i1; ++ii) { // the layer's share, as add_element's
+        const int src = ii + nx_ * jj;
+        cx[src] += layer_;
+        cy[src] += Complex(0.0, layer_);
+        if (rolling_ && ii > 0) {
+            cx[src - 1] -= layer_;
+            cy[src - 1] -= Complex(0.0, layer_);
+        }
     }
 }
 
@@ -216,20 +277,27 @@ void CoarseCorrection::set_space(const GridConvolution& conv, bool rolling, doub
     acc_.resize(2 * index_.size());
     rhs_.resize(cols);
     pivot_.resize(cols);
-    // B P: each contact element's column of B added into its aggregate's.
-    for (int k : index_) add_element(k, agg_[k], 1.0);
+    // B P: the columns of B of each aggregate's runs of elements along x.
+    for (int j = 0; j < ny; ++j)
+        for (int i = 0; i < nx;) {
+            const int a = agg_[i + nx * j];
+            int end = i + 1;
+            while (end < nx && agg_[end + nx * j] == a) ++end;
+            if (a >= 0) add_run(i, end - 1, j, a);
+            i = end;
+        }
 }
 
 void CoarseCorrection::indicator(int c, Complex* v) const
 {
     const Complex one = c % 2 == 0 ? Complex(1.0, 0.0) : Complex(0.0, 1.0);
-    for (int k = 0; k < n_; ++k)
+    for (const int k : index_)
         if (agg_[k] == c / 2) v[k] = one;
 }
 
 void CoarseCorrection::clear(int c, Complex* v) const
 {
-    for (int k = 0; k < n_; ++k)
+    for (const int k : index_)
         if (agg_[k] == c / 2) v[k] = 0.0;
 }
 
@@ -238,15 +306,22 @@ bool CoarseCorrection::factor()
     const int m = columns();
     factored_ = false;
     if (m == 0) return false;
-    // T(r, c) = P_r^T P_c - P_r^T (G' P)_c.
+    // T(r, c) = P_r^T P_c - P_r^T (G' P)_c, summed over the contact elements
+    // (the only ones with an aggregate) in the order of the grid, in the
+    // pass that gathers G' P at them (it is zero elsewhere) for apply().
+    const int nk = static_cast<int>(index_.size());
     for (int c = 0; c < m; ++c) {
         for (int r = 0; r < m; ++r) t_[static_cast<size_t>(r) * m + c] = 0.0;
         const Complex* w = gp(c);
-        for (int k = 0; k < n_; ++k) {
-            const int a = agg_[k];
-            if (a < 0) continue;
-            t_[static_cast<size_t>(2 * a) * m + c] -= w[k].real();
-            t_[static_cast<size_t>(2 * a + 1) * m + c] -= w[k].imag();
+        double* out = wc_.data() + static_cast<size_t>(2 * nk) * c;
+        for (int t = 0; t < nk; ++t) {
+            const int k = index_[t];
+            const double re = w[k].real(), im = w[k].imag();
+            out[2 * t] = re;
+            out[2 * t + 1] = im;
+            const size_t row = static_cast<size_t>(2 * agg_[k]) * m + c;
+            t_[row] -= re;
+            t_[row + m] -= im;
         }
         t_[static_cast<size_t>(c) * m + c] += size_[c / 2];
     }
@@ -267,16 +342,6 @@ bool CoarseCorrection::factor()
             t_[static_cast<size_t>(r) * m + j] = l;
             for (int c = j + 1; c < m; ++c)
                 t_[static_cast<size_t>(r) * m + c] -= l * t_[static_cast<size_t>(j) * m + c];
-        }
-    }
-    // G' P at the contact elements (it is zero elsewhere), column by column.
-    const int nk = static_cast<int>(index_.size());
-    for (int c = 0; c < m; ++c) {
-        const Complex* w = gp(c);
-        double* out = wc_.data() + static_cast<size_t>(2 * nk) * c;
-        for (int t = 0; t < nk; ++t) {
-            out[2 * t] = w[index_[t]].real();
-            out[2 * t + 1] = w[index_[t]].imag();
         }
     }
     factored_ = true;

@@ -29,7 +29,7 @@ namespace creepwork {
 // once per Newton step).
 constexpr int kMaxAggregates = 25;
 // The largest field (elements) a solver makes the correction for: its
-// memory, about 2.4 kB per element, is the size of the rest of the solver's.
+// memory, about 2.6 kB per element, is the size of the rest of the solver's.
 constexpr int kCoarseMaxElements = 4096;
 
 class CoarseCorrection {
@@ -78,6 +78,9 @@ private:
     // sign times element src's column of B (and the layer's share) into
     // aggregate a's columns of B P.
     void add_element(int src, int a, double sign);
+    // The columns of B of elements i0 ... i1 of row jj (all in aggregate a)
+    // into a's columns of B P, by the partial sums along x (a fresh set-up).
+    void add_run(int i0, int i1, int jj, int a);
     // The contact set g within the aggregates as they stand: B P updated by
     // the elements that joined or left it; false (nothing changed) when an
     // aggregate would be born or emptied.
@@ -94,6 +97,7 @@ private:
     std::vector<int> index_;          // the contact elements
     std::vector<double> wc_, acc_;    // G' P at them (2 doubles each, per column)
     std::vector<double> kxx_, kxy_, kyy_; // [dx + (nx - 1) + (2 nx - 1) (dy + ny - 1)]
+    std::vector<double> pxx_, pxy_, pyy_; // [e + 2 nx (dy + ny - 1)]: sum of k(dx < e - (nx - 1))
     std::vector<Complex> bp_, gp_;    // n per column
     std::vector<double> t_, rhs_;     // T (row-major, LU in place), P^T u
     std::vector<int> pivot_;

@@ -49,6 +49,7 @@ GapNormal::GapNormal(const GridSpec& grid, GapNormalOptions options)
     const size_t n = static_cast<size_t>(nx_) * ny_;
     for (auto* v : {&gap_, &gap_in_dx_, &start_, &pressure_}) v->assign(n, 0.0);
     if (options_.warm) held_gap_.assign(n, 0.0);
+    if (options_.warm) start_product_.assign(n, 0.0);
 }
 
 GapNormal::~GapNormal() = default;
@@ -102,6 +103,7 @@ const GapNormalInfo& GapNormal::solve(const ContactInput& in, bool warm)
                               held_.load == in.normal_load;
     if (!same_problem) drift_.clear();
     if (from_last) start_from_last(in, gap);
+    bool solved_half_space = false; // its product is the pressure's
     if (force && in.normal_force == 0.0) {
         std::fill(pressure_.begin(), pressure_.end(), 0.0);
         const size_t n = static_cast<size_t>(nx_) * ny_;
@@ -118,11 +120,13 @@ const GapNormalInfo& GapNormal::solve(const ContactInput& in, bool warm)
                 for (size_t k = 0; k < pressure_.size(); ++k) start_[k] = pressure_[k] / in.G;
         }
         if (exact) approach_ = solve_half_space(in, gap, from_last);
+        solved_half_space = exact;
     }
     if (options_.warm) {
         hold(in);
         if (exact && held_.loaded)
-            drift_.remember(gap, approach_, pressure_);
+            drift_.remember(gap, approach_, pressure_,
+                            solved_half_space ? half_space_->product().data() : nullptr, in.G);
         else
             drift_.clear();
     }
@@ -143,9 +147,15 @@ const double* GapNormal::rolling_gap(const ContactInput& in)
 // rolling direction changed, or predicted along the gap's drift.
 void GapNormal::start_from_last(const ContactInput& in, const double* gap)
 {
+    start_product_valid_ = false;
     if (drift_.count() >= 2) {
-        drift_.predict(gap, in.normal_load == NormalLoad::force, in.approach, start_.data());
+        double g[PressureDrift::kSolutions - 1];
+        drift_.predict(gap, in.normal_load == NormalLoad::force, in.approach, start_.data(), g);
         for (double& v : start_) v /= in.G;
+        // The start's product from the solutions' (one FFT product fewer).
+        start_product_valid_ = drift_.predict_product(g, start_product_.data());
+        if (start_product_valid_)
+            for (double& v : start_product_) v /= in.G;
         return;
     }
     const bool same = held_.direction == in.rolling_direction;
@@ -164,10 +174,13 @@ double GapNormal::solve_half_space(const ContactInput& in, const double* gap, bo
     const double value = force ? in.normal_force / (in.G * dx_ * dy_) : in.approach / dx_;
     // A warm start's contact set is nearly the solution's: no loose passes.
     const double tolerance = normal_tolerance(in);
+    const bool product = warm && start_product_valid_;
+    start_product_valid_ = false;
     const NormalSolveInfo ni =
         half_space_problem().solve_gap(conv(), gap_in_dx_.data(), start_.data(), force, value,
                                        tolerance, kNormalMaxIterations,
-                                       warm ? tolerance : kNormalFirstTolerance);
+                                       warm ? tolerance : kNormalFirstTolerance,
+                                       product ? start_product_.data() : nullptr);
     info_.normal_iterations = ni.iterations;
     info_.normal_products = ni.products;
     if (!ni.converged)

@@ -174,8 +174,11 @@ private:
         double tolerance = 0; // the half-space problem's, of the solution held
     } held_;
     std::vector<double> held_gap_;
-    // The last exact solutions of the held problem (options.warm).
+    // The last exact solutions of the held problem (options.warm), and the
+    // product A start_ predicted with start_ (when start_product_valid_).
     PressureDrift drift_;
+    std::vector<double> start_product_;
+    bool start_product_valid_ = false;
 };
 
 } // namespace creepwork

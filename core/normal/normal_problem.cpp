@@ -169,18 +169,21 @@ NormalSolveInfo NormalProblem::solve(const ExactGeometry& g, GridConvolution& co
 NormalSolveInfo NormalProblem::solve_gap(GridConvolution& conv, const double* h,
                                          const double* start, bool force, double value,
                                          double tolerance, int max_iterations,
-                                         double first_tolerance)
+                                         double first_tolerance, const double* start_product)
 {
     NormalSolveInfo info;
     double h_floor = h[0];
+    start_product_ = start_product;
     for (int k = 0; k < n_; ++k) {
         h_[k] = h[k];
         q_[k] = start[k] > 0.0 ? start[k] : 0.0;
         h_floor = std::min(h_floor, h[k]);
+        if (start[k] < 0.0) start_product_ = nullptr; // clipped: not A q
     }
     if (!force) {
         pen_ = value;
         if (!(value > h_floor)) { // the surfaces do not touch
+            start_product_ = nullptr;
             std::fill(q_.begin(), q_.end(), 0.0);
             n_contact_ = 0;
             info.converged = true;
@@ -203,6 +206,8 @@ void NormalProblem::active_set(GridConvolution& conv, bool fixed_sum, double loa
                                int max_iterations, NormalSolveInfo& info)
 {
     double pass_tolerance = first_tolerance; // until the contact set settles
+    const double* start_product = start_product_; // solve_gap's, this solve's only
+    start_product_ = nullptr;
     products_ = 0;
     n_active_ = 0;
     for (int k = 0; k < n_; ++k) {
@@ -222,7 +227,10 @@ void NormalProblem::active_set(GridConvolution& conv, bool fixed_sum, double loa
                 q_[k] = !active_[k] ? 0.0 : sum > 0.0 ? q_[k] * (load / sum) : load / n_active_;
             // The approach sets the scale of the gap residual.
             if (box_) fit_box(conv);
-            set_product(conv, q_, u_, false);
+            if (start_product && sum > 0.0) // the start's product, scaled as q
+                for (int k = 0; k < n_; ++k) u_[k] = start_product[k] * (load / sum);
+            else
+                set_product(conv, q_, u_, false);
             for (int k = 0; k < n_; ++k)
                 if (active_[k]) pen += h_[k] + u_[k];
             target = std::max(std::fabs(pen / n_active_ - h_floor), 1e-300);
@@ -231,8 +239,11 @@ void NormalProblem::active_set(GridConvolution& conv, bool fixed_sum, double loa
                 if (!active_[k]) q_[k] = 0.0;
             target = std::max(std::fabs(pen_ - h_floor), 1e-300);
             if (box_) fit_box(conv);
+            if (start_product) std::copy(start_product, start_product + n_, u_.begin());
         }
-        if (!conjugate_gradients(conv, fixed_sum, fixed_sum, target, pass_tolerance,
+        const bool u_current = fixed_sum || start_product;
+        start_product = nullptr; // the first pass's only
+        if (!conjugate_gradients(conv, fixed_sum, u_current, target, pass_tolerance,
                                  max_iterations, info))
             break;
 

@@ -65,9 +65,16 @@ public:
     // converged, q = 0. first_tolerance (> tolerance) solves the passes that
     // still change the contact set only that far: the set settles as well,
     // and one last pass at the tolerance finishes.
+    // start_product (or null): A start on the whole grid (the units of h),
+    // taken for the first pass's product when no element of start is
+    // negative (one FFT product fewer; other bits than the product's).
     NormalSolveInfo solve_gap(GridConvolution& conv, const double* h, const double* start,
                               bool force, double value, double tolerance, int max_iterations,
-                              double first_tolerance = 0.0);
+                              double first_tolerance = 0.0,
+                              const double* start_product = nullptr);
+    // After a converged solve: A q on the whole grid (the units of h), the
+    // last pass's product.
+    const std::vector<double>& product() const { return u_; }
 
     // box: a convolution of the same largest grid (ConvolutionUse::normal)
     // for the products on the contact set's box, or nullptr (the default:
@@ -122,6 +129,7 @@ private:
     double pen_ = 0.0;
     double load_by_approach_ = 0.0;
     int products_ = 0; // FFT products since the solve began
+    const double* start_product_ = nullptr; // solve_gap's, for the first pass
 };
 
 } // namespace creepwork

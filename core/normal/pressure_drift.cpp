@@ -10,6 +10,7 @@ PressureDrift::PressureDrift(std::size_t n)
     for (int s = 0; s < kSolutions; ++s) {
         h_[s].assign(n, 0.0);
         p_[s].assign(n, 0.0);
+        u_[s].assign(n, 0.0);
     }
 }
 
@@ -80,11 +81,33 @@ void PressureDrift::predict(const double* h, bool force, double approach, double
         start[k] = p0[k] + g[0] * (p1[k] - p0[k]) + g[1] * (p2[k] - p0[k]);
 }
 
-void PressureDrift::remember(const double* h, double approach, const std::vector<double>& p)
+bool PressureDrift::predict_product(const double* g, double* product) const
+{
+    const int m = count_ - 1;
+    if (count_ == 0 || !u_valid_[slot(0)]) return false;
+    const std::vector<double>& u0 = u_[slot(0)];
+    if (g[0] == 0.0 && g[1] == 0.0) {
+        std::copy(u0.begin(), u0.end(), product);
+        return true;
+    }
+    const int s1 = slot(1), s2 = slot(m > 1 ? 2 : 1);
+    if (!u_valid_[s1] || !u_valid_[s2]) return false;
+    const std::vector<double>& u1 = u_[s1];
+    const std::vector<double>& u2 = u_[s2];
+    for (std::size_t k = 0; k < u0.size(); ++k)
+        product[k] = u0[k] + g[0] * (u1[k] - u0[k]) + g[1] * (u2[k] - u0[k]);
+    return true;
+}
+
+void PressureDrift::remember(const double* h, double approach, const std::vector<double>& p,
+                             const double* product, double scale)
 {
     newest_ = count_ == 0 ? 0 : (newest_ + 1) % kSolutions;
     std::copy(h, h + h_[newest_].size(), h_[newest_].begin());
     std::copy(p.begin(), p.end(), p_[newest_].begin());
+    u_valid_[newest_] = product != nullptr;
+    if (product)
+        for (std::size_t k = 0; k < u_[newest_].size(); ++k) u_[newest_][k] = product[k] * scale;
     approach_[newest_] = approach;
     count_ = std::min(count_ + 1, kSolutions);
 }

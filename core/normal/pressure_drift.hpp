@@ -44,15 +44,22 @@ public:
     // out), or null.
     void predict(const double* h, bool force, double approach, double* start,
                  double* g = nullptr) const;
-    // Adds the solution p (n values) of the gap h and the approach.
-    void remember(const double* h, double approach, const std::vector<double>& p);
+    // The same steps g (predict's) on the solutions' products A p: A start
+    // (n values) while start is not clipped, at no FFT product; false when
+    // a solution used came without its product.
+    bool predict_product(const double* g, double* product) const;
+    // Adds the solution p (n values) of the gap h and the approach, with
+    // its product A p times scale (n values) or none (null).
+    void remember(const double* h, double approach, const std::vector<double>& p,
+                  const double* product = nullptr, double scale = 1.0);
 
 private:
     // Slot of the i-th newest solution.
     int slot(int i) const { return (newest_ + kSolutions - i) % kSolutions; }
 
-    std::vector<double> h_[kSolutions], p_[kSolutions];
+    std::vector<double> h_[kSolutions], p_[kSolutions], u_[kSolutions];
     double approach_[kSolutions] = {};
+    bool u_valid_[kSolutions] = {};
     int newest_ = 0;
     int count_ = 0;
 };
