@@ -133,8 +133,7 @@ constexpr int kLanes = 8;
 
 SteadyRolling::SteadyRolling(int nx, int ny, int krylov_dimension)
     : nx_(nx), ny_(ny), n_(nx * ny), m_(krylov_dimension), g_(n_, 0.0), w_(n_), q_(n_),
-      gq_(n_), f_(n_), dq_(n_), qt_(n_), gt_(n_), ft_(n_), s_(n_), work_(n_), pre_(n_),
-      pre2_(n_), jac_(n_),
+      gq_(n_), f_(n_), dq_(n_), qt_(n_), gt_(n_), ft_(n_), s_(n_), work_(n_), jac_(n_),
       state_(n_, 0),
       // Raw storage: a basis vector's pages are touched (and, on this
       // machine's VM, page faults are dear) only if GMRES gets that far.
@@ -151,6 +150,10 @@ void SteadyRolling::reserve_coarse()
     if (static_cast<int>(capacity_) > kCoarseMaxElements) return;
     coarse_.reserve(static_cast<int>(capacity_));
     coarse_states_.reserve(capacity_);
+    for (auto* v : {&pre_, &pre2_}) {
+        v->reserve(capacity_);
+        v->resize(static_cast<size_t>(n_));
+    }
 }
 
 void SteadyRolling::set_law(const LocalLaw* law)
@@ -189,8 +192,9 @@ void SteadyRolling::set_size(int nx, int ny)
     n_ = nx * ny;
     const size_t n = static_cast<size_t>(n_);
     g_.resize(n);
-    for (auto* v : {&w_, &q_, &gq_, &f_, &dq_, &qt_, &gt_, &ft_, &s_, &work_, &pre_, &pre2_})
-        v->resize(n);
+    for (auto* v : {&w_, &q_, &gq_, &f_, &dq_, &qt_, &gt_, &ft_, &s_, &work_}) v->resize(n);
+    if (coarse_.reserved(n_)) // the correction's work vectors, reserve_coarse()'s
+        for (auto* v : {&pre_, &pre2_}) v->resize(n);
     jac_.resize(n);
     state_.resize(n);
     if (law_active_) slip_info_.resize(n);

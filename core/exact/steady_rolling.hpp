@@ -65,7 +65,8 @@ public:
     void set_size(int nx, int ny);
     // Makes the memory of the warm Newton steps' coarse correction
     // (coarse_correction.hpp) for the constructor's field, if it has at most
-    // kCoarseMaxElements elements (about 2.4 kB per element); without it
+    // kCoarseMaxElements elements (about 2.4 kB per element, with the
+    // correction's two work vectors, which no other level has); without it
     // warm steps run without the correction. The finest level of a model
     // calls it.
     void reserve_coarse();
