@@ -215,20 +215,35 @@ MUTANTS = [
     # The warm Newton steps' coarse correction (core/exact/coarse_correction.cpp):
     # a wrong coarse space or Galerkin operator costs a warm drift its products;
     # the space is checked against the FFT products, the operator by M K P = P.
-    dict(id="coarse-kernel-shift", what="exact: the coarse space's rolling kernel shifted "
-         "backwards, A(d) - A(d - e_x)", file="core/exact/coarse_correction.cpp",
-         old="                xx -= conv.cf11(dx + 1, dy);",
-         new="                xx -= conv.cf11(dx - 1, dy);", tests=WARM),
+    dict(id="coarse-kernel-shift", what="exact: the coarse space's rolling kernel (B P's "
+         "updates) negated, A(d + e_x) - A(d)", file="core/exact/coarse_correction.cpp",
+         old="                for (int m = 0; m < wx; ++m) k[m] = a[m] - a[m + 1];",
+         new="                for (int m = 0; m < wx; ++m) k[m] = a[m + 1] - a[m];",
+         tests=WARM + ["test_nonhertz_parts"]),
+    dict(id="coarse-run-sums-sign", what="exact: the rolling kernel's sums along x negated "
+         "(B P's runs)", file="core/exact/coarse_correction.cpp",
+         old="                for (size_t m = 0; m < wp; ++m) a[m] = first - a[m];",
+         new="                for (size_t m = 0; m < wp; ++m) a[m] = a[m] - first;",
+         tests=WARM + ["test_nonhertz_parts"]),
+    dict(id="coarse-run-short", what="exact: a run of B P's sources drops its last element",
+         file="core/exact/coarse_correction.cpp",
+         old="        const size_t hi = row + nx_ - i0, lo = row + nx_ - 1 - i1;",
+         new="        const size_t hi = row + nx_ - i0, lo = row + nx_ - i1;",
+         tests=WARM + ["test_nonhertz_parts"]),
+    # The cold solve's coarse correction (core/exact/steady_rolling.cpp): made
+    # afresh for each cold solve (a fresh handle's bits), and on in partial slip.
+    dict(id="cold-coarse-kept", what="exact: a cold solve keeps the last solve's coarse "
+         "correction", file="core/exact/steady_rolling.cpp",
+         old="    if (!warm) coarse_.forget();", new="    if (!warm) (void)0;",
+         tests=WARM + ["test_robustness_determinism", "test_nonhertz_capi"]),
+    dict(id="cold-coarse-off", what="exact: a cold solve never runs with the coarse correction",
+         file="core/exact/steady_rolling.cpp",
+         old="adhesion_share() >= kColdAdhesion)) {", new="adhesion_share() > 1.0)) {",
+         tests=WARM),
     dict(id="coarse-update-sign", what="exact: an element leaving the contact set is added "
          "to its block's B P, not taken out", file="core/exact/coarse_correction.cpp",
          old="        add_element(k, a, in ? 1.0 : -1.0);",
          new="        add_element(k, a, 1.0);", tests=WARM + ["test_nonhertz_parts"]),
-    dict(id="coarse-run-partial-sums", what="exact: a fresh coarse set-up's run of elements "
-         "along x loses its last element (the partial sums' lower end one too far)",
-         file="core/exact/coarse_correction.cpp",
-         old="const size_t hi = row + (nx_ - i0), lo = row + (nx_ - 1 - i1);",
-         new="const size_t hi = row + (nx_ - i0), lo = row + (nx_ - i1);",
-         tests=WARM + ["test_nonhertz_parts"]),
     dict(id="coarse-galerkin-identity", what="exact: the Galerkin operator drops P^T P "
          "(T = -P^T G' P)", file="core/exact/coarse_correction.cpp",
          old="        t_[static_cast<size_t>(c) * m + c] += size_[c / 2];",

@@ -76,35 +76,39 @@ int axis_blocks(int L, int a, std::vector<int>& block)
 void CoarseCorrection::make_kernel(const GridConvolution& conv, bool rolling)
 {
     // s(I) = sum_J B(I - J) q_J; B(d) = A(d) - A(d + e_x) rolling
-    // (grid_convolution.hpp), cf12 even in d as a whole.
+    // (grid_convolution.hpp), cf12 even in d as a whole. Each row's A is
+    // read once (dx = -(nx - 1) ... nx) into the place of its sums along x
+    // (add_run): those are A(-(nx - 1)) - A(dx) rolling (the differences
+    // telescope), running sums of A shift.
     const int wx = 2 * nx_ - 1, wy = 2 * ny_ - 1;
+    const size_t wp = static_cast<size_t>(wx) + 1;
     kxx_.resize(static_cast<size_t>(wx) * wy);
     kxy_.resize(kxx_.size());
     kyy_.resize(kxx_.size());
-    for (int dy = -(ny_ - 1); dy <= ny_ - 1; ++dy)
-        for (int dx = -(nx_ - 1); dx <= nx_ - 1; ++dx) {
-            const size_t t = static_cast<size_t>(dx + nx_ - 1) + static_cast<size_t>(wx) * (dy + ny_ - 1);
-            double xx = conv.cf11(dx, dy), xy = conv.cf12(dx, dy), yy = conv.cf22(dx, dy);
-            if (rolling) {
-                xx -= conv.cf11(dx + 1, dy);
-                xy -= conv.cf12(dx + 1, dy);
-                yy -= conv.cf22(dx + 1, dy);
-            }
-            kxx_[t] = xx;
-            kxy_[t] = xy;
-            kyy_[t] = yy;
-        }
-    // Their partial sums along x, a leading zero per row: the sum over a
-    // run of dx in one row is a difference of two.
-    const int wp = wx + 1;
-    for (auto* v : {&pxx_, &pxy_, &pyy_}) v->resize(static_cast<size_t>(wp) * wy);
+    for (auto* v : {&sxx_, &sxy_, &syy_}) v->resize(wp * wy);
     for (int r = 0; r < wy; ++r) {
-        const size_t t = static_cast<size_t>(wx) * r, u = static_cast<size_t>(wp) * r;
-        pxx_[u] = pxy_[u] = pyy_[u] = 0.0;
-        for (int e = 0; e < wx; ++e) {
-            pxx_[u + e + 1] = pxx_[u + e] + kxx_[t + e];
-            pxy_[u + e + 1] = pxy_[u + e] + kxy_[t + e];
-            pyy_[u + e + 1] = pyy_[u + e] + kyy_[t + e];
+        const int dy = r - (ny_ - 1);
+        const size_t k0 = static_cast<size_t>(wx) * r, s0 = wp * r;
+        double* const sums[3] = {sxx_.data() + s0, sxy_.data() + s0, syy_.data() + s0};
+        double* const table[3] = {kxx_.data() + k0, kxy_.data() + k0, kyy_.data() + k0};
+        for (size_t m = 0; m < wp; ++m) {
+            const int dx = static_cast<int>(m) - (nx_ - 1);
+            sums[0][m] = conv.cf11(dx, dy);
+            sums[1][m] = conv.cf12(dx, dy);
+            sums[2][m] = conv.cf22(dx, dy);
+        }
+        for (int c = 0; c < 3; ++c) {
+            double* a = sums[c];
+            double* k = table[c];
+            if (rolling) {
+                for (int m = 0; m < wx; ++m) k[m] = a[m] - a[m + 1];
+                const double first = a[0];
+                for (size_t m = 0; m < wp; ++m) a[m] = first - a[m];
+            } else {
+                for (int m = 0; m < wx; ++m) k[m] = a[m];
+                a[0] = 0.0;
+                for (int m = 0; m < wx; ++m) a[m + 1] = a[m] + k[m];
+            }
         }
     }
 }
@@ -112,7 +116,7 @@ void CoarseCorrection::make_kernel(const GridConvolution& conv, bool rolling)
 void CoarseCorrection::reserve(int n)
 {
     const size_t e = static_cast<size_t>(n), cols = 2 * static_cast<size_t>(kMaxAggregates);
-    for (auto* v : {&kxx_, &kxy_, &kyy_, &pxx_, &pxy_, &pyy_}) v->reserve(4 * e);
+    for (auto* v : {&kxx_, &kxy_, &kyy_, &sxx_, &sxy_, &syy_}) v->reserve(4 * e);
     mask_.reserve(e);
     agg_.reserve(e);
     block_.reserve(e);
@@ -147,45 +151,42 @@ void CoarseCorrection::add_element(int src, int a, double sign)
             cy[k] += Complex(sign * kxy_[t], sign * kyy_[t]);
         }
     }
+    add_layer(src, a, sign);
+}
+
+void CoarseCorrection::add_run(int j0, int i0, int i1, int a)
+{
+    // The sources (i0 ... i1, j0) into aggregate a's columns at every
+    // element: sum over i' of K(i - i') = S(i - i0 + 1) - S(i - i1), S the
+    // table's sums along x.
+    const int wp = 2 * nx_;
+    Complex* cx = bp_.data() + static_cast<size_t>(n_) * (2 * a);
+    Complex* cy = cx + n_;
+    for (int j = 0; j < ny_; ++j) {
+        const size_t row = static_cast<size_t>(wp) * (j - j0 + ny_ - 1);
+        const size_t hi = row + nx_ - i0, lo = row + nx_ - 1 - i1;
+        for (int i = 0; i < nx_; ++i) {
+            const int k = i + nx_ * j;
+            const double xy = sxy_[hi + i] - sxy_[lo + i];
+            cx[k] += Complex(sxx_[hi + i] - sxx_[lo + i], xy);
+            cy[k] += Complex(xy, syy_[hi + i] - syy_[lo + i]);
+        }
+    }
+}
+
+void CoarseCorrection::add_layer(int src, int a, double sign)
+{
     if (layer_ == 0.0) return;
     // The layer's c (v_k - v_ahead): +c at src, -c at the element behind it.
+    const int ii = src % nx_;
+    Complex* cx = bp_.data() + static_cast<size_t>(n_) * (2 * a);
+    Complex* cy = cx + n_;
     const double c = sign * layer_;
     cx[src] += c;
     cy[src] += Complex(0.0, c);
     if (rolling_ && ii > 0) {
         cx[src - 1] -= c;
         cy[src - 1] -= Complex(0.0, c);
-    }
-}
-
-void CoarseCorrection::add_run(int i0, int i1, int jj, int a)
-{
-    // Elements i0 ... i1 of row jj: at each element, the sum of B over the
-    // offsets i - i1 ... i - i0 along x, a difference of the partial sums.
-    const int wp = 2 * nx_;
-    Complex* cx = bp_.data() + static_cast<size_t>(n_) * (2 * a);
-    Complex* cy = cx + n_;
-    for (int j = 0; j < ny_; ++j) {
-        const size_t row = static_cast<size_t>(wp) * (j - jj + ny_ - 1);
-        const size_t hi = row + (nx_ - i0), lo = row + (nx_ - 1 - i1);
-        for (int i = 0; i < nx_; ++i) {
-            const int k = i + nx_ * j;
-            const double xx = pxx_[hi + i] - pxx_[lo + i];
-            const double xy = pxy_[hi + i] - pxy_[lo + i];
-            const double yy = pyy_[hi + i] - pyy_[lo + i];
-            cx[k] += Complex(xx, xy);
-            cy[k] += Complex(xy, yy);
-        }
-    }
-    if (layer_ == 0.0) return;
-    for (int ii = i0; ii <= i1; ++ii) { // the layer's share, as add_element's
-        const int src = ii + nx_ * jj;
-        cx[src] += layer_;
-        cy[src] += Complex(0.0, layer_);
-        if (rolling_ && ii > 0) {
-            cx[src - 1] -= layer_;
-            cy[src - 1] -= Complex(0.0, layer_);
-        }
     }
 }
 
@@ -224,12 +225,13 @@ bool CoarseCorrection::update(const std::vector<double>& g)
 }
 
 void CoarseCorrection::set_space(const GridConvolution& conv, bool rolling, double layer, int nx,
-                                 int ny, const std::vector<double>& g)
+                                 int ny, const std::vector<double>& g, int max_aggregates)
 {
     factored_ = false;
     const bool kernel_same = nx == nx_ && ny == ny_ && rolling == rolling_ && layer == layer_ &&
                              conv.rho() == rho_ && conv.nu() == nu_;
-    if (kernel_same && aggregates_ > 0 && update(g)) return;
+    if (kernel_same && aggregates_ > 0 && max_aggregates == max_aggregates_ && update(g)) return;
+    max_aggregates_ = std::min(max_aggregates, kMaxAggregates);
     const int n = nx * ny;
     nx_ = nx;
     ny_ = ny;
@@ -242,7 +244,7 @@ void CoarseCorrection::set_space(const GridConvolution& conv, bool rolling, doub
     mask_.resize(n);
     agg_.resize(n);
     for (int k = 0; k < n; ++k) mask_[k] = g[k] > 0.0;
-    // The smallest block side that keeps the aggregates within kMaxAggregates.
+    // The smallest block side that keeps the aggregates within max_aggregates.
     for (int side = 2;; ++side) {
         const int bx = axis_blocks(nx, side, bxi_), by = axis_blocks(ny, side, byj_);
         block_.assign(static_cast<size_t>(bx) * by, -1);
@@ -256,7 +258,7 @@ void CoarseCorrection::set_space(const GridConvolution& conv, bool rolling, doub
                 if (b < 0) b = count++;
                 agg_[k] = b;
             }
-        if (count <= kMaxAggregates) {
+        if (count <= max_aggregates_) {
             aggregates_ = count;
             bx_ = bx;
             break;
@@ -271,21 +273,22 @@ void CoarseCorrection::set_space(const GridConvolution& conv, bool rolling, doub
         if (agg_[k] >= 0) ++size_[agg_[k]];
     const size_t cols = static_cast<size_t>(columns());
     bp_.assign(static_cast<size_t>(n) * cols, Complex(0.0, 0.0));
-    gp_.assign(static_cast<size_t>(n) * cols, Complex(0.0, 0.0));
+    gp_.resize(static_cast<size_t>(n) * cols); // written in full by the caller
     t_.resize(cols * cols);
     wc_.resize(2 * index_.size() * cols);
     acc_.resize(2 * index_.size());
     rhs_.resize(cols);
     pivot_.resize(cols);
-    // B P: the columns of B of each aggregate's runs of elements along x.
+    // B P: each aggregate's runs of contact elements along x, row by row.
     for (int j = 0; j < ny; ++j)
         for (int i = 0; i < nx;) {
             const int a = agg_[i + nx * j];
             int end = i + 1;
             while (end < nx && agg_[end + nx * j] == a) ++end;
-            if (a >= 0) add_run(i, end - 1, j, a);
+            if (a >= 0) add_run(j, i, end - 1, a);
             i = end;
         }
+    for (int k : index_) add_layer(k, agg_[k], 1.0);
 }
 
 void CoarseCorrection::indicator(int c, Complex* v) const

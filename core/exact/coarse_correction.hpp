@@ -1,5 +1,5 @@
-// The coarse-grid correction of a warm Newton step's linear solve
-// (steady_rolling.hpp). GMRES solves K x = f with K = I - G'(q), the
+// The coarse-grid correction of a Newton step's linear solve
+// (steady_rolling.hpp: a warm step's, and a cold solve's in partial slip). GMRES solves K x = f with K = I - G'(q), the
 // linearised sweep already inside K; the sweep damps the rough error modes
 // but the smooth (long-wave) ones of the half-space operator converge by
 // only ~0.6 per iteration. Here the contact elements are grouped into
@@ -26,7 +26,7 @@
 namespace creepwork {
 
 // Aggregates at most (the coarse system has twice as many unknowns, factored
-// once per Newton step).
+// once per Newton step); set_space may take fewer.
 constexpr int kMaxAggregates = 25;
 // The largest field (elements) a solver makes the correction for: its
 // memory, about 2.6 kB per element, is the size of the rest of the solver's.
@@ -40,6 +40,13 @@ public:
     // allocates nothing); without it the correction stays off.
     void reserve(int n);
     bool reserved(int n) const { return n <= capacity_; }
+    // The next set_space() sets up afresh (the kernel's table, a function of
+    // the operator alone, kept): the bits of a fresh correction.
+    void forget()
+    {
+        aggregates_ = 0;
+        factored_ = false;
+    }
     // The aggregates of the contact set g > 0 on nx x ny and B P (the
     // operator's product on each aggregate's indicator, with the layer's
     // share: s = B v + c (v - v_ahead) rolling, A v + c v shift). Kept as
@@ -48,7 +55,7 @@ public:
     // their columns alone (other bits than a fresh set-up: the correction
     // is a preconditioner, the solve's result is GMRES's to the tolerance).
     void set_space(const GridConvolution& conv, bool rolling, double layer, int nx, int ny,
-                   const std::vector<double>& g);
+                   const std::vector<double>& g, int max_aggregates = kMaxAggregates);
     bool same_space(int nx, int ny, const std::vector<double>& g) const
     {
         if (nx != nx_ || ny != ny_) return false;
@@ -56,6 +63,8 @@ public:
             if (mask_[k] != (g[k] > 0.0)) return false;
         return true;
     }
+    // set_space's bound on the aggregates.
+    int max_aggregates() const { return max_aggregates_; }
     // Columns of P (two per aggregate: x, then y).
     int columns() const { return 2 * aggregates_; }
     // Column c of P as a field (v, zero elsewhere on entry, left holding the
@@ -78,15 +87,17 @@ private:
     // sign times element src's column of B (and the layer's share) into
     // aggregate a's columns of B P.
     void add_element(int src, int a, double sign);
-    // The columns of B of elements i0 ... i1 of row jj (all in aggregate a)
-    // into a's columns of B P, by the partial sums along x (a fresh set-up).
-    void add_run(int i0, int i1, int jj, int a);
+    // The sources i0 ... i1 of row j0 (contact elements of aggregate a) into
+    // its columns of B P, and an element's share of the layer.
+    void add_run(int j0, int i0, int i1, int a);
+    void add_layer(int src, int a, double sign);
     // The contact set g within the aggregates as they stand: B P updated by
     // the elements that joined or left it; false (nothing changed) when an
     // aggregate would be born or emptied.
     bool update(const std::vector<double>& g);
     int capacity_ = 0;
     int nx_ = 0, ny_ = 0, n_ = 0, aggregates_ = 0, bx_ = 0;
+    int max_aggregates_ = 0; // set_space's bound on the aggregates
     bool rolling_ = true;
     double layer_ = 0.0, rho_ = -1.0, nu_ = -1.0;
     std::vector<unsigned char> mask_; // the contact set of bp_
@@ -97,7 +108,7 @@ private:
     std::vector<int> index_;          // the contact elements
     std::vector<double> wc_, acc_;    // G' P at them (2 doubles each, per column)
     std::vector<double> kxx_, kxy_, kyy_; // [dx + (nx - 1) + (2 nx - 1) (dy + ny - 1)]
-    std::vector<double> pxx_, pxy_, pyy_; // [e + 2 nx (dy + ny - 1)]: sum of k(dx < e - (nx - 1))
+    std::vector<double> sxx_, sxy_, syy_; // sums of m terms of their rows: [m + 2 nx (dy + ny - 1)]
     std::vector<Complex> bp_, gp_;    // n per column
     std::vector<double> t_, rhs_;     // T (row-major, LU in place), P^T u
     std::vector<int> pivot_;

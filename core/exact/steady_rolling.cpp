@@ -125,16 +125,22 @@ constexpr int kMaxGmresPerStep = 200;
 // (doc/dev/decisions.md: 1, 3, 6, 10 and never measured).
 constexpr int kCoarseRefresh = 10;
 // Partial sums of GMRES's inner products in a warm start's Newton steps
-// (subtract_dot); 1 everywhere else, so that a cold solve and the
-// Jacobians keep their bits.
+// (subtract_dot), and in a cold solve's steps with the coarse correction;
+// 1 everywhere else (the Jacobians' linear solves among them).
 constexpr int kLanes = 8;
+// A cold solve's Newton steps run with the coarse correction once this share
+// of the contact elements adheres (full slip: the sweep alone converges in a
+// few iterations and the set-up would not pay), with at most this many
+// aggregates (its set-up pays back over one solve only;
+// doc/dev/decisions.md).
+constexpr double kColdAdhesion = 0.1;
+constexpr int kColdAggregates = 16;
 
 } // namespace
 
 SteadyRolling::SteadyRolling(int nx, int ny, int krylov_dimension)
     : nx_(nx), ny_(ny), n_(nx * ny), m_(krylov_dimension), g_(n_, 0.0), w_(n_), q_(n_),
-      gq_(n_), f_(n_), dq_(n_), qt_(n_), gt_(n_), ft_(n_), s_(n_), work_(n_), pre_(n_),
-      pre2_(n_), jac_(n_),
+      gq_(n_), f_(n_), dq_(n_), qt_(n_), gt_(n_), ft_(n_), s_(n_), work_(n_), jac_(n_),
       state_(n_, 0),
       // Raw storage: a basis vector's pages are touched (and, on this
       // machine's VM, page faults are dear) only if GMRES gets that far.
@@ -151,6 +157,10 @@ void SteadyRolling::reserve_coarse()
     if (static_cast<int>(capacity_) > kCoarseMaxElements) return;
     coarse_.reserve(static_cast<int>(capacity_));
     coarse_states_.reserve(capacity_);
+    for (auto* v : {&pre_, &pre2_}) {
+        v->reserve(capacity_);
+        v->resize(static_cast<size_t>(n_));
+    }
 }
 
 void SteadyRolling::set_law(const LocalLaw* law)
@@ -189,8 +199,9 @@ void SteadyRolling::set_size(int nx, int ny)
     n_ = nx * ny;
     const size_t n = static_cast<size_t>(n_);
     g_.resize(n);
-    for (auto* v : {&w_, &q_, &gq_, &f_, &dq_, &qt_, &gt_, &ft_, &s_, &work_, &pre_, &pre2_})
-        v->resize(n);
+    for (auto* v : {&w_, &q_, &gq_, &f_, &dq_, &qt_, &gt_, &ft_, &s_, &work_}) v->resize(n);
+    if (coarse_.reserved(n_)) // the correction's work vectors, reserve_coarse()'s
+        for (auto* v : {&pre_, &pre2_}) v->resize(n);
     jac_.resize(n);
     state_.resize(n);
     if (law_active_) slip_info_.resize(n);
@@ -313,18 +324,19 @@ void SteadyRolling::local_sweep(const Complex* v, const Complex* bv, Complex* ou
     }
 }
 
-void SteadyRolling::build_coarse(GridConvolution& conv)
+void SteadyRolling::build_coarse(GridConvolution& conv, int max_aggregates)
 {
     // Kept while every element keeps its state, and for kCoarseRefresh - 1
     // Newton steps after a state changed: the slip elements' local Jacobians
     // drift with q, but a correction a little stale costs few products
     // (GMRES's residual is the true one) and saves its set-up.
-    if (coarse_.active() && coarse_.same_space(nx_, ny_, g_) &&
+    if (coarse_.active() && coarse_.max_aggregates() == max_aggregates &&
+        coarse_.same_space(nx_, ny_, g_) &&
         (coarse_states_ == state_ || ++coarse_age_ < kCoarseRefresh))
         return;
     coarse_age_ = 0;
     coarse_states_ = state_;
-    coarse_.set_space(conv, rolling_, layer_, nx_, ny_, g_);
+    coarse_.set_space(conv, rolling_, layer_, nx_, ny_, g_, max_aggregates);
     Complex* v = pre_.data();
     std::fill(pre_.begin(), pre_.end(), Complex(0.0, 0.0));
     for (int c = 0; c < coarse_.columns(); ++c) {
@@ -480,6 +492,8 @@ SteadyRollingInfo SteadyRolling::newton(GridConvolution& conv, double tolerance,
         b1y_ -= layer_;
     }
 
+    // A cold solve makes its own correction: a fresh handle's bits.
+    if (!warm) coarse_.forget();
     project(q_);
     sweep(conv, q_, gq_);
     double rel = 0.0;
@@ -503,7 +517,10 @@ SteadyRollingInfo SteadyRolling::newton(GridConvolution& conv, double tolerance,
         eta = std::max(eta, (warm ? kWarmLastForcing : kLastForcing) * tolerance / rel);
         ++info.newton_steps;
         if (warm && coarse_.reserved(n_)) {
-            build_coarse(conv);
+            build_coarse(conv, kMaxAggregates);
+            arnoldi<kLanes>(conv, f_, dq_, eta, kMaxGmresPerStep, coarse_.active());
+        } else if (coarse_.reserved(n_) && (coarse_.active() || adhesion_share() >= kColdAdhesion)) {
+            build_coarse(conv, kColdAggregates);
             arnoldi<kLanes>(conv, f_, dq_, eta, kMaxGmresPerStep, coarse_.active());
         } else {
             gmres(conv, f_, dq_, eta, kMaxGmresPerStep, warm);
@@ -526,6 +543,16 @@ SteadyRollingInfo SteadyRolling::newton(GridConvolution& conv, double tolerance,
     }
     info.products = products_;
     return info;
+}
+
+double SteadyRolling::adhesion_share() const
+{
+    int adhesion = 0, contact = 0;
+    for (int k = 0; k < n_; ++k) {
+        adhesion += state_[k] == 1;
+        contact += state_[k] != 0;
+    }
+    return contact > 0 ? static_cast<double>(adhesion) / contact : 0.0;
 }
 
 void SteadyRolling::source_sweep(const Complex* dw, const double* dg, bool speed, Complex* out,

@@ -63,10 +63,11 @@ public:
     // constructor's): every vector is resized within its capacity (no
     // allocation) and keeps its first values.
     void set_size(int nx, int ny);
-    // Makes the memory of the warm Newton steps' coarse correction
+    // Makes the memory of the Newton steps' coarse correction
     // (coarse_correction.hpp) for the constructor's field, if it has at most
-    // kCoarseMaxElements elements (about 2.6 kB per element); without it
-    // warm steps run without the correction. The finest level of a model
+    // kCoarseMaxElements elements (about 2.6 kB per element, with the
+    // correction's two work vectors, which no other level has); without it
+    // Newton steps run without the correction. The finest level of a model
     // calls it.
     void reserve_coarse();
     int nx() const { return nx_; }
@@ -114,7 +115,9 @@ public:
     // close: the Newton steps' linear solves are then tightened faster
     // (forcing min(0.3, residual^1.5) instead of min(0.3, residual)), target
     // the tolerance itself instead of half of it, and run with the coarse
-    // correction when reserve_coarse() made its memory. Fewer products from
+    // correction when reserve_coarse() made its memory (a cold solve too,
+    // once a tenth of its contact elements adheres, with fewer aggregates
+    // and made afresh: a fresh handle's bits). Fewer products from
     // such a start; from any start, a safe margin (the .cpp).
     SteadyRollingInfo solve(GridConvolution& conv, double tolerance, int max_steps, bool warm)
     {
@@ -206,8 +209,11 @@ private:
     void linear_sweep(GridConvolution& conv, const Complex* v, Complex* out);
     // linear_sweep's part after the product: bv = the product's s of v.
     void local_sweep(const Complex* v, const Complex* bv, Complex* out) const;
-    // The coarse correction's space and its G' P at the q of the last sweep.
-    void build_coarse(GridConvolution& conv);
+    // The coarse correction's space (at most max_aggregates) and its G' P
+    // at the q of the last sweep.
+    void build_coarse(GridConvolution& conv, int max_aggregates);
+    // Of the last sweep: the adhering share of the contact elements.
+    double adhesion_share() const;
     // out = G_w dw + G_g dg (+ G_kappa under a law, with speed; + the yield
     // stress's scale, with yield) at the q of the last sweep (the sweep's
     // response to a change of the rigid slip, of the bound, of ln kappa and
