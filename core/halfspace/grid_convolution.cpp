@@ -75,6 +75,90 @@ struct TransposeKernel : KernelWidths {
     }
 };
 
+// The normal product's real rows and its complex lines of column pairs
+// (real_product), a kernel of simd/kernel_isa.hpp: split (to null), re[c] =
+// from[2 c], im[c] = from[2 c + 1] (0 past the row's end); join (from null),
+// the reverse into to; count rows of nx values, the lines at [j * rc + c]. Only copies, W
+// pairs at a time where they lie inside the row, so every copy gives the
+// same bits.
+struct ColumnPairKernel : KernelWidths {
+    static constexpr int avx512 = 4; // 4 pairs a vector: AVX-512 gains nothing
+    template <int W>
+    CREEPWORK_INLINE static void run(const int& nx, const int& count, const size_t& rc,
+                                     const double* const& from, double* const& to,
+                                     double* const& re, double* const& im)
+    {
+        using V = simd::Vec<W>;
+        const int nc = (nx + 1) / 2, vc = nx / (2 * W) * W; // pairs, those in vectors
+        const bool join = to != nullptr;                   // else split from
+        for (int j = 0; j < count; ++j) {
+            const size_t o = static_cast<size_t>(nx) * j;
+            double* r = join ? to + o : nullptr;
+            const double* f = join ? nullptr : from + o;
+            double* a = re + j * rc;
+            double* b = im + j * rc;
+            for (int c = 0; c < vc; c += W) {
+                if (join) {
+                    const V x = simd::load<W>(a + c), y = simd::load<W>(b + c);
+                    if constexpr (W == 2) {
+                        simd::store<2>(r + 2 * c, __builtin_shufflevector(x, y, 0, 2));
+                        simd::store<2>(r + 2 * c + 2, __builtin_shufflevector(x, y, 1, 3));
+                    } else {
+                        simd::store<4>(r + 2 * c, __builtin_shufflevector(x, y, 0, 4, 1, 5));
+                        simd::store<4>(r + 2 * c + 4, __builtin_shufflevector(x, y, 2, 6, 3, 7));
+                    }
+                } else {
+                    const V x = simd::load<W>(f + 2 * c), y = simd::load<W>(f + 2 * c + W);
+                    if constexpr (W == 2) {
+                        simd::store<2>(a + c, __builtin_shufflevector(x, y, 0, 2));
+                        simd::store<2>(b + c, __builtin_shufflevector(x, y, 1, 3));
+                    } else {
+                        simd::store<4>(a + c, __builtin_shufflevector(x, y, 0, 2, 4, 6));
+                        simd::store<4>(b + c, __builtin_shufflevector(x, y, 1, 3, 5, 7));
+                    }
+                }
+            }
+            for (int c = vc; c < nc; ++c) {
+                const bool second = 2 * c + 1 < nx;
+                if (join) {
+                    r[2 * c] = a[c];
+                    if (second) r[2 * c + 1] = b[c];
+                } else {
+                    a[c] = f[2 * c];
+                    b[c] = second ? f[2 * c + 1] : 0.0;
+                }
+            }
+        }
+    }
+};
+
+// out[kx * stride + ky] *= spectrum[ky + my kx] for kx < mx, ky < lines (the
+// normal product's real spectrum), a kernel of simd/kernel_isa.hpp: one
+// product per value, so every copy gives the same bits.
+struct RealSpectrumKernel : KernelWidths {
+    template <int W>
+    CREEPWORK_INLINE static void run(const int& mx, const int& my, const int& lines,
+                                     const size_t& stride, const double* const& spectrum,
+                                     double* const& re, double* const& im)
+    {
+        for (int kx = 0; kx < mx; ++kx) {
+            const double* k = spectrum + static_cast<size_t>(my) * kx;
+            double* a = re + kx * stride;
+            double* b = im + kx * stride;
+            int ky = 0;
+            for (; ky + W <= lines; ky += W) {
+                const simd::Vec<W> f = simd::load<W>(k + ky);
+                simd::store<W>(a + ky, simd::load<W>(a + ky) * f);
+                simd::store<W>(b + ky, simd::load<W>(b + ky) * f);
+            }
+            for (; ky < lines; ++ky) {
+                a[ky] *= k[ky];
+                b[ky] *= k[ky];
+            }
+        }
+    }
+};
+
 // The tangential product in Fourier space (apply_tangential), a kernel of
 // simd/kernel_isa.hpp: for every column kx, s^(k) = f(kx) (alpha^(k) z^(k) +
 // beta^(k) conj(z^(-k))), z read from (zr, zi) and s written to (sr, si)
@@ -441,12 +525,8 @@ void GridConvolution::real_product(const double* p, double* u,
     const size_t hl = static_cast<size_t>(h) + 1;
     const size_t rc = line_stride(nc), sh = line_stride(static_cast<int>(hl));
     // Along y: column pairs as one complex line, element j at [j * rc + c].
-    for (int j = 0; j < ny_; ++j)
-        for (int c = 0; c < nc; ++c) {
-            const size_t k = j * rc + c;
-            rows_re_[k] = p[2 * c + static_cast<size_t>(nx_) * j];
-            rows_im_[k] = 2 * c + 1 < nx_ ? p[2 * c + 1 + static_cast<size_t>(nx_) * j] : 0.0;
-        }
+    run_kernel<ColumnPairKernel>(isa_, nx_, ny_, rc, p, static_cast<double*>(nullptr),
+                                 rows_re_.data(), rows_im_.data());
     clear_padding(rows_re_.data(), rows_im_.data(), ny_, rc, nc);
     const size_t used = static_cast<size_t>(ny_) * rc, total = static_cast<size_t>(my_) * rc;
     if (fft_y_.reads_beyond(ny_)) { // else the zero padding is never read
@@ -484,12 +564,8 @@ void GridConvolution::real_product(const double* p, double* u,
     // Along x on the h + 1 lines, times the (real) kernel, and back.
     fft_x_.transform(spec_re_.data(), spec_im_.data(), out_re_.data(), out_im_.data(),
                      static_cast<int>(sh), false, work_.data(), nx_);
-    for (int kx = 0; kx < mx_; ++kx)
-        for (int ky = 0; ky <= h; ++ky) {
-            const double k = spectrum[ky + static_cast<size_t>(my_) * kx];
-            out_re_[static_cast<size_t>(kx) * sh + ky] *= k;
-            out_im_[static_cast<size_t>(kx) * sh + ky] *= k;
-        }
+    run_kernel<RealSpectrumKernel>(isa_, mx_, my_, h + 1, sh, spectrum.data(), out_re_.data(),
+                                   out_im_.data());
     fft_x_.transform(out_re_.data(), out_im_.data(), spec_re_.data(), spec_im_.data(),
                      static_cast<int>(sh), true, work_.data(), nx_);
     // Each column's y-spectrum is Hermitian (the column is real): complete it
@@ -511,12 +587,8 @@ void GridConvolution::real_product(const double* p, double* u,
     clear_padding(rows_re_.data(), rows_im_.data(), my_, rc, nc);
     fft_y_.transform(rows_re_.data(), rows_im_.data(), out_re_.data(), out_im_.data(),
                      static_cast<int>(rc), true, work_.data(), ny_);
-    for (int j = 0; j < ny_; ++j)
-        for (int c = 0; c < nc; ++c) {
-            const size_t k = j * rc + c;
-            u[2 * c + static_cast<size_t>(nx_) * j] = out_re_[k];
-            if (2 * c + 1 < nx_) u[2 * c + 1 + static_cast<size_t>(nx_) * j] = out_im_[k];
-        }
+    run_kernel<ColumnPairKernel>(isa_, nx_, ny_, rc, static_cast<const double*>(nullptr), u,
+                                 out_re_.data(), out_im_.data());
 }
 
 void GridConvolution::apply_normal(const double* p, double* u)
