@@ -607,11 +607,11 @@ void GridConvolution::apply_tangential(const Complex* z, Complex* s, bool steady
 {
     if (!spectra_ready_) compute_spectra();
     const size_t rc = line_stride(nx_);
-    for (int j = 0; j < ny_; ++j)
-        for (int i = 0; i < nx_; ++i) {
-            rows_re_[j * rc + i] = z[i + static_cast<size_t>(nx_) * j].real();
-            rows_im_[j * rc + i] = z[i + static_cast<size_t>(nx_) * j].imag();
-        }
+    // A row of complex values is a row of 2 nx doubles in real-imaginary
+    // pairs (std::complex's layout), split and joined as the normal product's
+    // column pairs.
+    run_kernel<ColumnPairKernel>(isa_, 2 * nx_, ny_, rc, reinterpret_cast<const double*>(z),
+                                 static_cast<double*>(nullptr), rows_re_.data(), rows_im_.data());
     forward(nx_, ny_);
     // The spectrum z is read from out_ and s written to back_.
     run_kernel<SpectralProductKernel>(isa_, mx_, my_, sy_, steady ? shift_.data() : nullptr,
@@ -619,9 +619,8 @@ void GridConvolution::apply_tangential(const Complex* z, Complex* s, bool steady
                                       out_re_.data(), out_im_.data(), back_re_.data(),
                                       back_im_.data());
     inverse();
-    for (int j = 0; j < ny_; ++j)
-        for (int i = 0; i < nx_; ++i)
-            s[i + static_cast<size_t>(nx_) * j] = Complex(out_re_[j * rc + i], out_im_[j * rc + i]);
+    run_kernel<ColumnPairKernel>(isa_, 2 * nx_, ny_, rc, static_cast<const double*>(nullptr),
+                                 reinterpret_cast<double*>(s), out_re_.data(), out_im_.data());
 }
 
 } // namespace creepwork
