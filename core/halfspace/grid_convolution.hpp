@@ -66,8 +66,9 @@ public:
     bool copy_pair_spectra(const GridConvolution& from);
     double rho() const { return rho_; }
     double nu() const { return nu_; }
-    // The copy of the FFTs' kernels to run (supported by this CPU; every copy
-    // gives the same bits).
+    // The copy of the products' kernels to run (the FFTs', the spectral
+    // multiply's, the copies'; supported by this CPU; every copy gives the
+    // same bits).
     void set_kernel_isa(KernelIsa isa)
     {
         isa_ = isa;
@@ -130,7 +131,7 @@ private:
     int mx_, my_, kmax_ = 0, lmax_ = 0;
     size_t sy_ = 0; // elements of the spectrum's batches along x: my_ lines and padding
     double rho_ = -1.0, nu_ = -1.0;
-    KernelIsa isa_ = best_kernel_isa(); // the spectral product's copy (set_kernel_isa)
+    KernelIsa isa_ = best_kernel_isa(); // the kernels' copy (set_kernel_isa)
     BatchedFft fft_x_, fft_y_;
     // Tabulated nu-free parts for 0 <= k <= kmax_, 0 <= l <= lmax_.
     std::vector<double> X_, Y_, R_, corner_work_;
