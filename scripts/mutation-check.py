@@ -515,10 +515,10 @@ MUTANTS += [
          file="core/halfspace/grid_convolution.cpp",
          old="            for (int c = cb; c < cols; ++c)", new="            for (int c = cb; c < cb; ++c)",
          tests=FFT, require=["test_core_exact_parts"]),
-    dict(id="fft-pair-odd-column", what="the normal product's odd last column pairs with a one",
-         file="core/halfspace/grid_convolution.cpp",
-         old="                    b[c] = second ? f[2 * c + 1] : 0.0;",
-         new="                    b[c] = second ? f[2 * c + 1] : 1.0;",
+    dict(id="fft-pair-split", what="the column pairs' split (AVX2) takes the second column of "
+         "each pair as the first", file="core/halfspace/grid_convolution.cpp",
+         old="                        simd::store<4>(a + c, __builtin_shufflevector(x, y, 0, 2, 4, 6));",
+         new="                        simd::store<4>(a + c, __builtin_shufflevector(x, y, 1, 3, 5, 7));",
          tests=FFT, require=["test_core_exact_parts"]),
     dict(id="fft-real-spectrum-tail", what="the normal product leaves its last spectrum line "
          "unscaled", file="core/halfspace/grid_convolution.cpp",
