@@ -523,6 +523,36 @@ MUTANTS += [
          old="    std::copy(from.alpha_.begin(), from.alpha_.begin() + m, alpha_.begin());",
          new="    std::copy(from.k33_.begin(), from.k33_.begin() + m, alpha_.begin());",
          tests=FFT, require=["test_core_exact_parts", "test_nonhertz_contact"]),
+    # The products' SIMD kernels (explicit vectors over the lines, a scalar
+    # tail; the spectral product's mirrored reads; the transposes' and the
+    # column pairs' edges): each skipped or shifted value changes a product.
+    dict(id="fft-vector-tail", what="a stage skips the values after its last full vector",
+         file="core/halfspace/batched_fft.cpp",
+         old="        for (; t < t1; ++t) butterfly<double, R, Sign, K, J>(",
+         new="        for (; t < vector_end; ++t) butterfly<double, R, Sign, K, J>(",
+         tests=FFT, require=["test_core_exact_parts"]),
+    dict(id="fft-mirror-first-vector", what="the spectral product's first vector mirrors one "
+         "row too far", file="core/halfspace/grid_convolution.cpp",
+         old="                    m0r[l] = mr[my - l];", new="                    m0r[l] = mr[my - l - 1];",
+         tests=FFT, require=["test_core_exact_parts"]),
+    dict(id="fft-mirror-not-reversed", what="the spectral product reads z^(-k) forwards",
+         file="core/halfspace/grid_convolution.cpp",
+         old="                         reversed<W>(simd::load<W>(mi + back)), fr, fi,",
+         new="                         simd::load<W>(mi + back), fr, fi,",
+         tests=FFT, require=["test_core_exact_parts"]),
+    dict(id="fft-transpose-edge", what="a transpose drops the columns after its last block",
+         file="core/halfspace/grid_convolution.cpp",
+         old="            for (int c = cb; c < cols; ++c)", new="            for (int c = cb; c < cb; ++c)",
+         tests=FFT, require=["test_core_exact_parts"]),
+    dict(id="fft-pair-split", what="the column pairs' split (AVX2) takes the second column of "
+         "each pair as the first", file="core/halfspace/grid_convolution.cpp",
+         old="                        simd::store<4>(a + c, __builtin_shufflevector(x, y, 0, 2, 4, 6));",
+         new="                        simd::store<4>(a + c, __builtin_shufflevector(x, y, 1, 3, 5, 7));",
+         tests=FFT, require=["test_core_exact_parts"]),
+    dict(id="fft-real-spectrum-tail", what="the normal product leaves its last spectrum line "
+         "unscaled", file="core/halfspace/grid_convolution.cpp",
+         old="            for (; ky < lines; ++ky) {", new="            for (; ky + 1 < lines; ++ky) {",
+         tests=FFT, require=["test_core_exact_parts"]),
     # The normal problem's conjugate gradients start from the pass's product
     # only with the force prescribed; with the approach prescribed u_ is stale.
     dict(id="normal-stale-first-product", what="the normal problem's gradients reuse a stale "

@@ -12,22 +12,115 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
+// One butterfly of a Stockham stage on the values t ... t + lanes - 1 of each
+// run (lanes: 1 for V = double, W for V = simd::Vec<W>): the same
+// operations on every lane, so a vector gives each lane the bits of the
+// scalar butterfly. Sign = -1 forward, +1 inverse. K < R: the inputs k >= K
+// are the constant 0.0 (zero inputs not read); J < R: only the outputs
+// j < J are stored (stage()).
+template <class V, int R, int Sign, int K, int J>
+CREEPWORK_INLINE void butterfly(const double* const* ar, const double* const* ai,
+                                double* const* br, double* const* bi, const double* wr,
+                                const double* wi, bool twiddled, size_t t)
+{
+    constexpr double sg = Sign;
+    V vr[R], vi[R]; // the inputs, the zero ones as constants
+    for (int k = 0; k < R; ++k) {
+        vr[k] = k < K ? simd::load_as<V>(ar[k] + t) : V{} + 0.0;
+        vi[k] = k < K ? simd::load_as<V>(ai[k] + t) : V{} + 0.0;
+    }
+    V ur[R], ui[R];
+    if constexpr (R == 2) {
+        ur[0] = vr[0] + vr[1];
+        ui[0] = vi[0] + vi[1];
+        ur[1] = vr[0] - vr[1];
+        ui[1] = vi[0] - vi[1];
+    } else if constexpr (R == 3) {
+        constexpr double h = 0.86602540378443864676; // sin(2 pi/3)
+        const V t1r = vr[1] + vr[2], t1i = vi[1] + vi[2];
+        const V t2r = vr[0] - 0.5 * t1r, t2i = vi[0] - 0.5 * t1i;
+        // Sign * i * h (a1 - a2)
+        const V t3r = -sg * h * (vi[1] - vi[2]);
+        const V t3i = sg * h * (vr[1] - vr[2]);
+        ur[0] = vr[0] + t1r;
+        ui[0] = vi[0] + t1i;
+        ur[1] = t2r + t3r;
+        ui[1] = t2i + t3i;
+        ur[2] = t2r - t3r;
+        ui[2] = t2i - t3i;
+    } else if constexpr (R == 4) {
+        const V t0r = vr[0] + vr[2], t0i = vi[0] + vi[2];
+        const V t1r = vr[0] - vr[2], t1i = vi[0] - vi[2];
+        const V t2r = vr[1] + vr[3], t2i = vi[1] + vi[3];
+        // Sign * i * (a1 - a3)
+        const V t3r = -sg * (vi[1] - vi[3]);
+        const V t3i = sg * (vr[1] - vr[3]);
+        ur[0] = t0r + t2r;
+        ui[0] = t0i + t2i;
+        ur[2] = t0r - t2r;
+        ui[2] = t0i - t2i;
+        ur[1] = t1r + t3r;
+        ui[1] = t1i + t3i;
+        ur[3] = t1r - t3r;
+        ui[3] = t1i - t3i;
+    } else {
+        constexpr double c1 = 0.30901699437494742410;  // cos(2 pi/5)
+        constexpr double c2 = -0.80901699437494742410; // cos(4 pi/5)
+        constexpr double s1 = 0.95105651629515357212;  // sin(2 pi/5)
+        constexpr double s2 = 0.58778525229247312917;  // sin(4 pi/5)
+        const V t1r = vr[1] + vr[4], t1i = vi[1] + vi[4];
+        const V t2r = vr[2] + vr[3], t2i = vi[2] + vi[3];
+        const V t3r = vr[1] - vr[4], t3i = vi[1] - vi[4];
+        const V t4r = vr[2] - vr[3], t4i = vi[2] - vi[3];
+        const V b1r = vr[0] + c1 * t1r + c2 * t2r;
+        const V b1i = vi[0] + c1 * t1i + c2 * t2i;
+        const V b2r = vr[0] + c2 * t1r + c1 * t2r;
+        const V b2i = vi[0] + c2 * t1i + c1 * t2i;
+        const V d1r = s1 * t3r + s2 * t4r, d1i = s1 * t3i + s2 * t4i;
+        const V d2r = s2 * t3r - s1 * t4r, d2i = s2 * t3i - s1 * t4i;
+        ur[0] = vr[0] + t1r + t2r;
+        ui[0] = vi[0] + t1i + t2i;
+        // y1 = b1 + Sign i d1, y4 = b1 - Sign i d1; y2, y3 likewise with d2.
+        ur[1] = b1r - sg * d1i;
+        ui[1] = b1i + sg * d1r;
+        ur[4] = b1r + sg * d1i;
+        ui[4] = b1i - sg * d1r;
+        ur[2] = b2r - sg * d2i;
+        ui[2] = b2i + sg * d2r;
+        ur[3] = b2r + sg * d2i;
+        ui[3] = b2i - sg * d2r;
+    }
+    simd::store_as(br[0] + t, ur[0]);
+    simd::store_as(bi[0] + t, ui[0]);
+    for (int j = 1; j < J; ++j) {
+        if (twiddled) {
+            simd::store_as(br[j] + t, ur[j] * wr[j] - ui[j] * wi[j]);
+            simd::store_as(bi[j] + t, ur[j] * wi[j] + ui[j] * wr[j]);
+        } else {
+            simd::store_as(br[j] + t, ur[j]);
+            simd::store_as(bi[j] + t, ui[j]);
+        }
+    }
+}
+
 // One Stockham stage: sub-transforms of length n = r m with stride s, every
 // value a run of L contiguous lines. Decimation in frequency:
 //   y[s (r p + j) + q] = w_n^(p j) sum_k x[s (p + k m) + q] w_r^(j k).
 // Sign = -1 forward, +1 inverse (the sign of the exponent). For the
-// sub-transforms p0 <= p < p1 and the values t0 <= t < t1 of each run.
+// sub-transforms p0 <= p < p1 and the values t0 <= t < t1 of each run, W
+// values at a time (the vector of the kernel's ISA) and the rest one by one.
 // K < R: the inputs k >= K are zero (a first stage, whose inputs beyond the
 // transform's nonzero ones are zero), taken as the constant 0.0, so the
 // compiler drops only what IEEE arithmetic leaves unchanged: the same bits
 // as reading zeros. J < R: only the outputs j < J are stored (a last stage,
 // whose other outputs the caller does not read).
-template <int R, int Sign, int K = R, int J = R>
+template <int W, int R, int Sign, int K = R, int J = R>
 CREEPWORK_INLINE void stage(int m, int s, int L, const double* xr, const double* xi, double* yr,
                             double* yi, const double* twr, const double* twi, int p0, int p1,
                             size_t t0, size_t t1)
 {
     const size_t run = static_cast<size_t>(s) * L; // contiguous values per (p, k)
+    const size_t vector_end = t0 + (t1 - t0) / W * W;
     for (int p = p0; p < p1; ++p) {
         double wr[R], wi[R];
         wr[0] = 1.0;
@@ -49,99 +142,24 @@ CREEPWORK_INLINE void stage(int m, int s, int L, const double* xr, const double*
             bi[k] = yi + (static_cast<size_t>(R) * p + k) * run;
         }
         const bool twiddled = p != 0;
-        for (size_t t = t0; t < t1; ++t) {
-            double vr[R], vi[R]; // the inputs, the zero ones as constants
-            for (int k = 0; k < R; ++k) {
-                vr[k] = k < K ? ar[k][t] : 0.0;
-                vi[k] = k < K ? ai[k][t] : 0.0;
-            }
-            double ur[R], ui[R];
-            if constexpr (R == 2) {
-                ur[0] = vr[0] + vr[1];
-                ui[0] = vi[0] + vi[1];
-                ur[1] = vr[0] - vr[1];
-                ui[1] = vi[0] - vi[1];
-            } else if constexpr (R == 3) {
-                constexpr double h = 0.86602540378443864676; // sin(2 pi/3)
-                const double t1r = vr[1] + vr[2], t1i = vi[1] + vi[2];
-                const double t2r = vr[0] - 0.5 * t1r, t2i = vi[0] - 0.5 * t1i;
-                // Sign * i * h (a1 - a2)
-                const double t3r = -Sign * h * (vi[1] - vi[2]);
-                const double t3i = Sign * h * (vr[1] - vr[2]);
-                ur[0] = vr[0] + t1r;
-                ui[0] = vi[0] + t1i;
-                ur[1] = t2r + t3r;
-                ui[1] = t2i + t3i;
-                ur[2] = t2r - t3r;
-                ui[2] = t2i - t3i;
-            } else if constexpr (R == 4) {
-                const double t0r = vr[0] + vr[2], t0i = vi[0] + vi[2];
-                const double t1r = vr[0] - vr[2], t1i = vi[0] - vi[2];
-                const double t2r = vr[1] + vr[3], t2i = vi[1] + vi[3];
-                // Sign * i * (a1 - a3)
-                const double t3r = -Sign * (vi[1] - vi[3]);
-                const double t3i = Sign * (vr[1] - vr[3]);
-                ur[0] = t0r + t2r;
-                ui[0] = t0i + t2i;
-                ur[2] = t0r - t2r;
-                ui[2] = t0i - t2i;
-                ur[1] = t1r + t3r;
-                ui[1] = t1i + t3i;
-                ur[3] = t1r - t3r;
-                ui[3] = t1i - t3i;
-            } else {
-                constexpr double c1 = 0.30901699437494742410;  // cos(2 pi/5)
-                constexpr double c2 = -0.80901699437494742410; // cos(4 pi/5)
-                constexpr double s1 = 0.95105651629515357212;  // sin(2 pi/5)
-                constexpr double s2 = 0.58778525229247312917;  // sin(4 pi/5)
-                const double t1r = vr[1] + vr[4], t1i = vi[1] + vi[4];
-                const double t2r = vr[2] + vr[3], t2i = vi[2] + vi[3];
-                const double t3r = vr[1] - vr[4], t3i = vi[1] - vi[4];
-                const double t4r = vr[2] - vr[3], t4i = vi[2] - vi[3];
-                const double b1r = vr[0] + c1 * t1r + c2 * t2r;
-                const double b1i = vi[0] + c1 * t1i + c2 * t2i;
-                const double b2r = vr[0] + c2 * t1r + c1 * t2r;
-                const double b2i = vi[0] + c2 * t1i + c1 * t2i;
-                const double d1r = s1 * t3r + s2 * t4r, d1i = s1 * t3i + s2 * t4i;
-                const double d2r = s2 * t3r - s1 * t4r, d2i = s2 * t3i - s1 * t4i;
-                ur[0] = vr[0] + t1r + t2r;
-                ui[0] = vi[0] + t1i + t2i;
-                // y1 = b1 + Sign i d1, y4 = b1 - Sign i d1; y2, y3 likewise with d2.
-                ur[1] = b1r - Sign * d1i;
-                ui[1] = b1i + Sign * d1r;
-                ur[4] = b1r + Sign * d1i;
-                ui[4] = b1i - Sign * d1r;
-                ur[2] = b2r - Sign * d2i;
-                ui[2] = b2i + Sign * d2r;
-                ur[3] = b2r + Sign * d2i;
-                ui[3] = b2i - Sign * d2r;
-            }
-            br[0][t] = ur[0];
-            bi[0][t] = ui[0];
-            for (int j = 1; j < J; ++j) {
-                if (twiddled) {
-                    br[j][t] = ur[j] * wr[j] - ui[j] * wi[j];
-                    bi[j][t] = ur[j] * wi[j] + ui[j] * wr[j];
-                } else {
-                    br[j][t] = ur[j];
-                    bi[j][t] = ui[j];
-                }
-            }
-        }
+        size_t t = t0;
+        for (; t < vector_end; t += W)
+            butterfly<simd::Vec<W>, R, Sign, K, J>(ar, ai, br, bi, wr, wi, twiddled, t);
+        for (; t < t1; ++t) butterfly<double, R, Sign, K, J>(ar, ai, br, bi, wr, wi, twiddled, t);
     }
 }
 
-template <int Sign>
+template <int W, int Sign>
 CREEPWORK_INLINE void run_stage(int radix, int m, int s, int L, const double* xr,
                                 const double* xi, double* yr, double* yi, const double* twr,
                                 const double* twi)
 {
     const size_t run = static_cast<size_t>(s) * L;
     switch (radix) {
-    case 2: stage<2, Sign>(m, s, L, xr, xi, yr, yi, twr, twi, 0, m, 0, run); break;
-    case 3: stage<3, Sign>(m, s, L, xr, xi, yr, yi, twr, twi, 0, m, 0, run); break;
-    case 4: stage<4, Sign>(m, s, L, xr, xi, yr, yi, twr, twi, 0, m, 0, run); break;
-    default: stage<5, Sign>(m, s, L, xr, xi, yr, yi, twr, twi, 0, m, 0, run); break;
+    case 2: stage<W, 2, Sign>(m, s, L, xr, xi, yr, yi, twr, twi, 0, m, 0, run); break;
+    case 3: stage<W, 3, Sign>(m, s, L, xr, xi, yr, yi, twr, twi, 0, m, 0, run); break;
+    case 4: stage<W, 4, Sign>(m, s, L, xr, xi, yr, yi, twr, twi, 0, m, 0, run); break;
+    default: stage<W, 5, Sign>(m, s, L, xr, xi, yr, yi, twr, twi, 0, m, 0, run); break;
     }
 }
 
@@ -149,7 +167,7 @@ CREEPWORK_INLINE void run_stage(int radix, int m, int s, int L, const double* xr
 // sub-transform p reads x[p + k m], nonzero for k < K(p) = ceil((nonzero -
 // p) / m) (at most R), which falls with p; each run of p with one K by the
 // stage with those inputs zero.
-template <int R, int Sign>
+template <int W, int R, int Sign>
 CREEPWORK_INLINE void first_stage_radix(int m, int L, const double* xr, const double* xi,
                                         double* yr, double* yi, const double* twr,
                                         const double* twi, int nonzero)
@@ -161,25 +179,25 @@ CREEPWORK_INLINE void first_stage_radix(int m, int L, const double* xr, const do
         // The last p with this K: p < nonzero - (K - 1) m (K >= 1), all the rest for K = 0.
         const int p1 = K == 0 ? m : std::min(m, nonzero - (K - 1) * m);
         switch (K) {
-        case 0: stage<R, Sign, 0>(m, 1, L, xr, xi, yr, yi, twr, twi, p0, p1, 0, run); break;
-        case 1: stage<R, Sign, 1>(m, 1, L, xr, xi, yr, yi, twr, twi, p0, p1, 0, run); break;
+        case 0: stage<W, R, Sign, 0>(m, 1, L, xr, xi, yr, yi, twr, twi, p0, p1, 0, run); break;
+        case 1: stage<W, R, Sign, 1>(m, 1, L, xr, xi, yr, yi, twr, twi, p0, p1, 0, run); break;
         case 2:
             if constexpr (R >= 2)
-                stage<R, Sign, (R >= 2 ? 2 : R)>(m, 1, L, xr, xi, yr, yi, twr, twi, p0, p1, 0,
+                stage<W, R, Sign, (R >= 2 ? 2 : R)>(m, 1, L, xr, xi, yr, yi, twr, twi, p0, p1, 0,
                                                  run);
             break;
         case 3:
             if constexpr (R >= 3)
-                stage<R, Sign, (R >= 3 ? 3 : R)>(m, 1, L, xr, xi, yr, yi, twr, twi, p0, p1, 0,
+                stage<W, R, Sign, (R >= 3 ? 3 : R)>(m, 1, L, xr, xi, yr, yi, twr, twi, p0, p1, 0,
                                                  run);
             break;
         case 4:
             if constexpr (R >= 4)
-                stage<R, Sign, (R >= 4 ? 4 : R)>(m, 1, L, xr, xi, yr, yi, twr, twi, p0, p1, 0,
+                stage<W, R, Sign, (R >= 4 ? 4 : R)>(m, 1, L, xr, xi, yr, yi, twr, twi, p0, p1, 0,
                                                  run);
             break;
         default:
-            stage<R, Sign>(m, 1, L, xr, xi, yr, yi, twr, twi, p0, p1, 0, run);
+            stage<W, R, Sign>(m, 1, L, xr, xi, yr, yi, twr, twi, p0, p1, 0, run);
             break;
         }
         p0 = p1;
@@ -190,7 +208,7 @@ CREEPWORK_INLINE void first_stage_radix(int m, int L, const double* xr, const do
 // e = j s + q < needed are read: for each q, J(q) = ceil((needed - q) / s)
 // outputs (at most R), which falls with q; each run of q with one J by the
 // stage storing those only, and none where J(q) = 0.
-template <int R, int Sign>
+template <int W, int R, int Sign>
 CREEPWORK_INLINE void last_stage_radix(int s, int L, const double* xr, const double* xi,
                                        double* yr, double* yi, const double* twr,
                                        const double* twi, int needed)
@@ -202,30 +220,30 @@ CREEPWORK_INLINE void last_stage_radix(int s, int L, const double* xr, const dou
         const int q1 = std::min(s, needed - (J - 1) * s);
         const size_t t0 = static_cast<size_t>(q0) * L, t1 = static_cast<size_t>(q1) * L;
         switch (J) {
-        case 1: stage<R, Sign, R, 1>(1, s, L, xr, xi, yr, yi, twr, twi, 0, 1, t0, t1); break;
+        case 1: stage<W, R, Sign, R, 1>(1, s, L, xr, xi, yr, yi, twr, twi, 0, 1, t0, t1); break;
         case 2:
-            stage<R, Sign, R, (R >= 2 ? 2 : R)>(1, s, L, xr, xi, yr, yi, twr, twi, 0, 1, t0, t1);
+            stage<W, R, Sign, R, (R >= 2 ? 2 : R)>(1, s, L, xr, xi, yr, yi, twr, twi, 0, 1, t0, t1);
             break;
         case 3:
             if constexpr (R >= 3)
-                stage<R, Sign, R, (R >= 3 ? 3 : R)>(1, s, L, xr, xi, yr, yi, twr, twi, 0, 1, t0,
+                stage<W, R, Sign, R, (R >= 3 ? 3 : R)>(1, s, L, xr, xi, yr, yi, twr, twi, 0, 1, t0,
                                                     t1);
             break;
         case 4:
             if constexpr (R >= 4)
-                stage<R, Sign, R, (R >= 4 ? 4 : R)>(1, s, L, xr, xi, yr, yi, twr, twi, 0, 1, t0,
+                stage<W, R, Sign, R, (R >= 4 ? 4 : R)>(1, s, L, xr, xi, yr, yi, twr, twi, 0, 1, t0,
                                                     t1);
             break;
-        default: stage<R, Sign>(1, s, L, xr, xi, yr, yi, twr, twi, 0, 1, t0, t1); break;
+        default: stage<W, R, Sign>(1, s, L, xr, xi, yr, yi, twr, twi, 0, 1, t0, t1); break;
         }
         q0 = q1;
     }
 }
 
 // One stage, a kernel of simd/kernel_isa.hpp: compiled for every ISA and
-// run by run_kernel in the copy the FFT's owner chose (W unused: the compiler
-// vectorises the butterflies over the lines for the copy's ISA). The same
-// operations on every lane and no fused multiply-add (-ffp-contract=off), so
+// run by run_kernel in the copy the FFT's owner chose, W lines to a vector
+// (GCC 12 left the plain loops over the lines scalar in every copy: the
+// stages' input and output runs may alias). The same operations on every lane and no fused multiply-add (-ffp-contract=off), so
 // every copy gives the same bits.
 // pruned: a forward transform's first stage with its inputs from extent on
 // zero, or an inverse transform's last stage with only its first extent
@@ -241,26 +259,26 @@ struct StageKernel : KernelWidths {
     {
         if (inverse) {
             if (!pruned)
-                run_stage<1>(radix, m, s, L, xr, xi, yr, yi, twr, twi);
+                run_stage<W, 1>(radix, m, s, L, xr, xi, yr, yi, twr, twi);
             else if (radix == 2)
-                last_stage_radix<2, 1>(s, L, xr, xi, yr, yi, twr, twi, extent);
+                last_stage_radix<W, 2, 1>(s, L, xr, xi, yr, yi, twr, twi, extent);
             else if (radix == 3)
-                last_stage_radix<3, 1>(s, L, xr, xi, yr, yi, twr, twi, extent);
+                last_stage_radix<W, 3, 1>(s, L, xr, xi, yr, yi, twr, twi, extent);
             else if (radix == 4)
-                last_stage_radix<4, 1>(s, L, xr, xi, yr, yi, twr, twi, extent);
+                last_stage_radix<W, 4, 1>(s, L, xr, xi, yr, yi, twr, twi, extent);
             else
-                last_stage_radix<5, 1>(s, L, xr, xi, yr, yi, twr, twi, extent);
+                last_stage_radix<W, 5, 1>(s, L, xr, xi, yr, yi, twr, twi, extent);
         } else {
             if (!pruned)
-                run_stage<-1>(radix, m, s, L, xr, xi, yr, yi, twr, twi);
+                run_stage<W, -1>(radix, m, s, L, xr, xi, yr, yi, twr, twi);
             else if (radix == 2)
-                first_stage_radix<2, -1>(m, L, xr, xi, yr, yi, twr, twi, extent);
+                first_stage_radix<W, 2, -1>(m, L, xr, xi, yr, yi, twr, twi, extent);
             else if (radix == 3)
-                first_stage_radix<3, -1>(m, L, xr, xi, yr, yi, twr, twi, extent);
+                first_stage_radix<W, 3, -1>(m, L, xr, xi, yr, yi, twr, twi, extent);
             else if (radix == 4)
-                first_stage_radix<4, -1>(m, L, xr, xi, yr, yi, twr, twi, extent);
+                first_stage_radix<W, 4, -1>(m, L, xr, xi, yr, yi, twr, twi, extent);
             else
-                first_stage_radix<5, -1>(m, L, xr, xi, yr, yi, twr, twi, extent);
+                first_stage_radix<W, 5, -1>(m, L, xr, xi, yr, yi, twr, twi, extent);
         }
     }
 };

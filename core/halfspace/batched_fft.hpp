@@ -2,7 +2,8 @@
 // mixed-radix transform for lengths 2^a 3^b 5^c, applied to L lines stored
 // "element-major" (element e of line l at [e * L + l], real and imaginary
 // parts in separate arrays). Every butterfly then runs over L contiguous
-// values, which the compiler vectorises, instead of over one line at a time
+// values, W lines to a vector (simd/simd.hpp; the compiler's own
+// vectoriser left these loops scalar), instead of over one line at a time
 // as a one-dimensional FFT library does (Eigen's kissfft took two thirds of
 // the exact model's time; this is ~3x faster on its grids). Results are the
 // same bits whatever the vector width (no fused multiply-add: the core is

@@ -4,6 +4,8 @@
 #include <cmath>
 
 #include "halfspace/influence.hpp"
+#include "simd/kernel_isa.hpp"
+#include "simd/simd.hpp"
 
 namespace creepwork {
 namespace {
@@ -18,20 +20,213 @@ constexpr double kPi = 3.14159265358979323846;
 // count gets 4 lines more, zero and transformed with the rest.
 int line_stride(int lines) { return lines % 16 == 0 ? lines + 4 : lines; }
 
-// One column kx of the tangential product in Fourier space (apply_tangential).
-void multiply_column(int n, double fr, double fi, const double* __restrict al,
-                     const double* __restrict br, const double* __restrict bi,
-                     const double* __restrict zr, const double* __restrict zi,
-                     const double* __restrict mr, const double* __restrict mi,
-                     double* __restrict sr, double* __restrict si)
+// Vector v with its lanes in reverse order.
+template <int W>
+CREEPWORK_INLINE simd::Vec<W> reversed(const simd::Vec<W>& v)
 {
-    for (int k = 0; k < n; ++k) {
-        const double tr = al[k] * zr[k] + br[k] * mr[k] + bi[k] * mi[k];
-        const double ti = al[k] * zi[k] + bi[k] * mr[k] - br[k] * mi[k];
-        sr[k] = fr * tr - fi * ti;
-        si[k] = fr * ti + fi * tr;
-    }
+    if constexpr (W == 2)
+        return __builtin_shufflevector(v, v, 1, 0);
+    else if constexpr (W == 4)
+        return __builtin_shufflevector(v, v, 3, 2, 1, 0);
+    else
+        return __builtin_shufflevector(v, v, 7, 6, 5, 4, 3, 2, 1, 0);
 }
+
+// dst[c * ds + r] = src[r * ss + c] for r < rows, c < cols (the transposes
+// between a 2D FFT's two batches), a kernel of simd/kernel_isa.hpp: W x W
+// blocks transposed in registers, the edges one value at a time. Only copies,
+// so every copy gives the same bits.
+struct TransposeKernel : KernelWidths {
+    static constexpr int avx512 = 4; // 4 x 4 blocks: AVX-512 gains nothing
+    template <int W>
+    CREEPWORK_INLINE static void block(const double* src, size_t ss, double* dst, size_t ds)
+    {
+        using V = simd::Vec<W>;
+        if constexpr (W == 2) {
+            const V a0 = simd::load<2>(src), a1 = simd::load<2>(src + ss);
+            simd::store<2>(dst, __builtin_shufflevector(a0, a1, 0, 2));
+            simd::store<2>(dst + ds, __builtin_shufflevector(a0, a1, 1, 3));
+        } else {
+            const V a0 = simd::load<4>(src), a1 = simd::load<4>(src + ss),
+                    a2 = simd::load<4>(src + 2 * ss), a3 = simd::load<4>(src + 3 * ss);
+            const V t0 = __builtin_shufflevector(a0, a1, 0, 4, 2, 6),
+                    t1 = __builtin_shufflevector(a0, a1, 1, 5, 3, 7),
+                    t2 = __builtin_shufflevector(a2, a3, 0, 4, 2, 6),
+                    t3 = __builtin_shufflevector(a2, a3, 1, 5, 3, 7);
+            simd::store<4>(dst, __builtin_shufflevector(t0, t2, 0, 1, 4, 5));
+            simd::store<4>(dst + ds, __builtin_shufflevector(t1, t3, 0, 1, 4, 5));
+            simd::store<4>(dst + 2 * ds, __builtin_shufflevector(t0, t2, 2, 3, 6, 7));
+            simd::store<4>(dst + 3 * ds, __builtin_shufflevector(t1, t3, 2, 3, 6, 7));
+        }
+    }
+    template <int W>
+    CREEPWORK_INLINE static void run(const double* const& src, const size_t& ss,
+                                     double* const& dst, const size_t& ds, const int& rows,
+                                     const int& cols)
+    {
+        const int rb = rows / W * W, cb = cols / W * W;
+        for (int r = 0; r < rb; r += W) {
+            for (int c = 0; c < cb; c += W) block<W>(src + r * ss + c, ss, dst + c * ds + r, ds);
+            for (int c = cb; c < cols; ++c)
+                for (int q = r; q < r + W; ++q) dst[c * ds + q] = src[q * ss + c];
+        }
+        for (int r = rb; r < rows; ++r)
+            for (int c = 0; c < cols; ++c) dst[c * ds + r] = src[r * ss + c];
+    }
+};
+
+// The normal product's real rows and its complex lines of column pairs
+// (real_product), a kernel of simd/kernel_isa.hpp: split (to null), re[c] =
+// from[2 c], im[c] = from[2 c + 1] (0 past the row's end); join (from null),
+// the reverse into to; count rows of nx values, the lines at [j * rc + c]. Only copies, W
+// pairs at a time where they lie inside the row, so every copy gives the
+// same bits.
+struct ColumnPairKernel : KernelWidths {
+    static constexpr int avx512 = 4; // 4 pairs a vector: AVX-512 gains nothing
+    template <int W>
+    CREEPWORK_INLINE static void run(const int& nx, const int& count, const size_t& rc,
+                                     const double* const& from, double* const& to,
+                                     double* const& re, double* const& im)
+    {
+        using V = simd::Vec<W>;
+        const int nc = (nx + 1) / 2, vc = nx / (2 * W) * W; // pairs, those in vectors
+        const bool join = to != nullptr;                   // else split from
+        for (int j = 0; j < count; ++j) {
+            const size_t o = static_cast<size_t>(nx) * j;
+            double* r = join ? to + o : nullptr;
+            const double* f = join ? nullptr : from + o;
+            double* a = re + j * rc;
+            double* b = im + j * rc;
+            for (int c = 0; c < vc; c += W) {
+                if (join) {
+                    const V x = simd::load<W>(a + c), y = simd::load<W>(b + c);
+                    if constexpr (W == 2) {
+                        simd::store<2>(r + 2 * c, __builtin_shufflevector(x, y, 0, 2));
+                        simd::store<2>(r + 2 * c + 2, __builtin_shufflevector(x, y, 1, 3));
+                    } else {
+                        simd::store<4>(r + 2 * c, __builtin_shufflevector(x, y, 0, 4, 1, 5));
+                        simd::store<4>(r + 2 * c + 4, __builtin_shufflevector(x, y, 2, 6, 3, 7));
+                    }
+                } else {
+                    const V x = simd::load<W>(f + 2 * c), y = simd::load<W>(f + 2 * c + W);
+                    if constexpr (W == 2) {
+                        simd::store<2>(a + c, __builtin_shufflevector(x, y, 0, 2));
+                        simd::store<2>(b + c, __builtin_shufflevector(x, y, 1, 3));
+                    } else {
+                        simd::store<4>(a + c, __builtin_shufflevector(x, y, 0, 2, 4, 6));
+                        simd::store<4>(b + c, __builtin_shufflevector(x, y, 1, 3, 5, 7));
+                    }
+                }
+            }
+            for (int c = vc; c < nc; ++c) {
+                const bool second = 2 * c + 1 < nx;
+                if (join) {
+                    r[2 * c] = a[c];
+                    if (second) r[2 * c + 1] = b[c];
+                } else {
+                    a[c] = f[2 * c];
+                    b[c] = second ? f[2 * c + 1] : 0.0;
+                }
+            }
+        }
+    }
+};
+
+// out[kx * stride + ky] *= spectrum[ky + my kx] for kx < mx, ky < lines (the
+// normal product's real spectrum), a kernel of simd/kernel_isa.hpp: one
+// product per value, so every copy gives the same bits.
+struct RealSpectrumKernel : KernelWidths {
+    template <int W>
+    CREEPWORK_INLINE static void run(const int& mx, const int& my, const int& lines,
+                                     const size_t& stride, const double* const& spectrum,
+                                     double* const& re, double* const& im)
+    {
+        for (int kx = 0; kx < mx; ++kx) {
+            const double* k = spectrum + static_cast<size_t>(my) * kx;
+            double* a = re + kx * stride;
+            double* b = im + kx * stride;
+            int ky = 0;
+            for (; ky + W <= lines; ky += W) {
+                const simd::Vec<W> f = simd::load<W>(k + ky);
+                simd::store<W>(a + ky, simd::load<W>(a + ky) * f);
+                simd::store<W>(b + ky, simd::load<W>(b + ky) * f);
+            }
+            for (; ky < lines; ++ky) {
+                a[ky] *= k[ky];
+                b[ky] *= k[ky];
+            }
+        }
+    }
+};
+
+// The tangential product in Fourier space (apply_tangential), a kernel of
+// simd/kernel_isa.hpp: for every column kx, s^(k) = f(kx) (alpha^(k) z^(k) +
+// beta^(k) conj(z^(-k))), z read from (zr, zi) and s written to (sr, si)
+// ([kx * sy + ky]), alpha and beta ([ky + my kx]), f = (fr, fi) per column or
+// 1 (shift null). z^(-k) of the column mx - kx is read backwards, W values
+// at a time reversed in the register (the first vector's lanes one by one:
+// ky = 0 mirrors to itself), so ky runs forward in vectors: the same
+// operations on every lane, the same bits on every ISA.
+struct SpectralProductKernel : KernelWidths {
+    template <class V>
+    CREEPWORK_INLINE static void point(const double* al, const double* br, const double* bi,
+                                       const V& zr, const V& zi, const V& mr, const V& mi,
+                                       double fr, double fi, double* sr, double* si)
+    {
+        const V a = simd::load_as<V>(al), b = simd::load_as<V>(br), c = simd::load_as<V>(bi);
+        const V tr = a * zr + b * mr + c * mi;
+        const V ti = a * zi + c * mr - b * mi;
+        simd::store_as(sr, fr * tr - fi * ti);
+        simd::store_as(si, fr * ti + fi * tr);
+    }
+    template <int W>
+    CREEPWORK_INLINE static void run(const int& mx, const int& my, const size_t& sy,
+                                     const std::complex<double>* const& shift,
+                                     const double* const& alpha, const double* const& beta_re,
+                                     const double* const& beta_im, const double* const& zr,
+                                     const double* const& zi, double* const& sr,
+                                     double* const& si)
+    {
+        using V = simd::Vec<W>;
+        for (int kx = 0; kx < mx; ++kx) {
+            const int kxm = kx == 0 ? 0 : mx - kx;
+            const double fr = shift ? shift[kx].real() : 1.0, fi = shift ? shift[kx].imag() : 0.0;
+            const size_t c = static_cast<size_t>(my) * kx, o = sy * kx;
+            const double* al = alpha + c;
+            const double* br = beta_re + c;
+            const double* bi = beta_im + c;
+            const double* zcr = zr + o;
+            const double* zci = zi + o;
+            const double* mr = zr + sy * kxm; // z^(-k): ky = 0 at 0, ky > 0 at my - ky
+            const double* mi = zi + sy * kxm;
+            int ky = 0;
+            if (my >= W) { // the first vector's mirror: ky = 0 at 0, the others at my - ky
+                V m0r, m0i;
+                m0r[0] = mr[0];
+                m0i[0] = mi[0];
+                for (int l = 1; l < W; ++l) {
+                    m0r[l] = mr[my - l];
+                    m0i[l] = mi[my - l];
+                }
+                point<V>(al, br, bi, simd::load<W>(zcr), simd::load<W>(zci), m0r, m0i, fr, fi,
+                         sr + o, si + o);
+                ky = W;
+            } else {
+                point<double>(al, br, bi, zcr[0], zci[0], mr[0], mi[0], fr, fi, sr + o, si + o);
+                ky = 1;
+            }
+            for (; ky + W <= my; ky += W) {
+                const size_t back = static_cast<size_t>(my - ky - (W - 1));
+                point<V>(al + ky, br + ky, bi + ky, simd::load<W>(zcr + ky),
+                         simd::load<W>(zci + ky), reversed<W>(simd::load<W>(mr + back)),
+                         reversed<W>(simd::load<W>(mi + back)), fr, fi, sr + o + ky, si + o + ky);
+            }
+            for (; ky < my; ++ky)
+                point<double>(al + ky, br + ky, bi + ky, zcr[ky], zci[ky], mr[my - ky],
+                              mi[my - ky], fr, fi, sr + o + ky, si + o + ky);
+        }
+    }
+};
 
 } // namespace
 
@@ -75,7 +270,6 @@ GridConvolution::GridConvolution(int nx, int ny, ConvolutionUse use)
     out_im_.assign(cap, 0.0);
     back_re_.assign(cap, 0.0);
     back_im_.assign(cap, 0.0);
-    mirror_.assign(2 * static_cast<size_t>(my_), 0.0);
     work_.assign(2 * cap, 0.0);
 }
 
@@ -286,12 +480,8 @@ void GridConvolution::forward(int cols, int rows)
     // Transpose [ky][i] -> [i][ky], zero columns i >= cols, then along x:
     // lines are the my rows ky (and sy_ - my zero ones), element i at
     // [i * sy_ + ky].
-    for (int i = 0; i < cols; ++i) {
-        for (int ky = 0; ky < my_; ++ky) {
-            spec_re_[static_cast<size_t>(i) * sy_ + ky] = out_re_[ky * rc + i];
-            spec_im_[static_cast<size_t>(i) * sy_ + ky] = out_im_[ky * rc + i];
-        }
-    }
+    run_kernel<TransposeKernel>(isa_, out_re_.data(), rc, spec_re_.data(), sy_, my_, cols);
+    run_kernel<TransposeKernel>(isa_, out_im_.data(), rc, spec_im_.data(), sy_, my_, cols);
     if (!padded) {
         clear_padding(spec_re_.data(), spec_im_.data(), cols, sy_, my_);
         std::fill(spec_re_.begin() + static_cast<size_t>(cols) * sy_,
@@ -319,11 +509,8 @@ void GridConvolution::inverse()
     fft_x_.transform(back_re_.data(), back_im_.data(), out_re_.data(), out_im_.data(),
                      static_cast<int>(sy_), true, work_.data(), nx_);
     const size_t rc = line_stride(nx_);
-    for (int ky = 0; ky < my_; ++ky)
-        for (int i = 0; i < nx_; ++i) {
-            back_re_[ky * rc + i] = out_re_[static_cast<size_t>(i) * sy_ + ky];
-            back_im_[ky * rc + i] = out_im_[static_cast<size_t>(i) * sy_ + ky];
-        }
+    run_kernel<TransposeKernel>(isa_, out_re_.data(), sy_, back_re_.data(), rc, nx_, my_);
+    run_kernel<TransposeKernel>(isa_, out_im_.data(), sy_, back_im_.data(), rc, nx_, my_);
     clear_padding(back_re_.data(), back_im_.data(), my_, rc, nx_);
     fft_y_.transform(back_re_.data(), back_im_.data(), out_re_.data(), out_im_.data(),
                      static_cast<int>(rc), true, work_.data(), ny_);
@@ -338,12 +525,8 @@ void GridConvolution::real_product(const double* p, double* u,
     const size_t hl = static_cast<size_t>(h) + 1;
     const size_t rc = line_stride(nc), sh = line_stride(static_cast<int>(hl));
     // Along y: column pairs as one complex line, element j at [j * rc + c].
-    for (int j = 0; j < ny_; ++j)
-        for (int c = 0; c < nc; ++c) {
-            const size_t k = j * rc + c;
-            rows_re_[k] = p[2 * c + static_cast<size_t>(nx_) * j];
-            rows_im_[k] = 2 * c + 1 < nx_ ? p[2 * c + 1 + static_cast<size_t>(nx_) * j] : 0.0;
-        }
+    run_kernel<ColumnPairKernel>(isa_, nx_, ny_, rc, p, static_cast<double*>(nullptr),
+                                 rows_re_.data(), rows_im_.data());
     clear_padding(rows_re_.data(), rows_im_.data(), ny_, rc, nc);
     const size_t used = static_cast<size_t>(ny_) * rc, total = static_cast<size_t>(my_) * rc;
     if (fft_y_.reads_beyond(ny_)) { // else the zero padding is never read
@@ -381,12 +564,8 @@ void GridConvolution::real_product(const double* p, double* u,
     // Along x on the h + 1 lines, times the (real) kernel, and back.
     fft_x_.transform(spec_re_.data(), spec_im_.data(), out_re_.data(), out_im_.data(),
                      static_cast<int>(sh), false, work_.data(), nx_);
-    for (int kx = 0; kx < mx_; ++kx)
-        for (int ky = 0; ky <= h; ++ky) {
-            const double k = spectrum[ky + static_cast<size_t>(my_) * kx];
-            out_re_[static_cast<size_t>(kx) * sh + ky] *= k;
-            out_im_[static_cast<size_t>(kx) * sh + ky] *= k;
-        }
+    run_kernel<RealSpectrumKernel>(isa_, mx_, my_, h + 1, sh, spectrum.data(), out_re_.data(),
+                                   out_im_.data());
     fft_x_.transform(out_re_.data(), out_im_.data(), spec_re_.data(), spec_im_.data(),
                      static_cast<int>(sh), true, work_.data(), nx_);
     // Each column's y-spectrum is Hermitian (the column is real): complete it
@@ -408,12 +587,8 @@ void GridConvolution::real_product(const double* p, double* u,
     clear_padding(rows_re_.data(), rows_im_.data(), my_, rc, nc);
     fft_y_.transform(rows_re_.data(), rows_im_.data(), out_re_.data(), out_im_.data(),
                      static_cast<int>(rc), true, work_.data(), ny_);
-    for (int j = 0; j < ny_; ++j)
-        for (int c = 0; c < nc; ++c) {
-            const size_t k = j * rc + c;
-            u[2 * c + static_cast<size_t>(nx_) * j] = out_re_[k];
-            if (2 * c + 1 < nx_) u[2 * c + 1 + static_cast<size_t>(nx_) * j] = out_im_[k];
-        }
+    run_kernel<ColumnPairKernel>(isa_, nx_, ny_, rc, static_cast<const double*>(nullptr), u,
+                                 out_re_.data(), out_im_.data());
 }
 
 void GridConvolution::apply_normal(const double* p, double* u)
@@ -432,40 +607,20 @@ void GridConvolution::apply_tangential(const Complex* z, Complex* s, bool steady
 {
     if (!spectra_ready_) compute_spectra();
     const size_t rc = line_stride(nx_);
-    for (int j = 0; j < ny_; ++j)
-        for (int i = 0; i < nx_; ++i) {
-            rows_re_[j * rc + i] = z[i + static_cast<size_t>(nx_) * j].real();
-            rows_im_[j * rc + i] = z[i + static_cast<size_t>(nx_) * j].imag();
-        }
+    // A row of complex values is a row of 2 nx doubles in real-imaginary
+    // pairs (std::complex's layout), split and joined as the normal product's
+    // column pairs.
+    run_kernel<ColumnPairKernel>(isa_, 2 * nx_, ny_, rc, reinterpret_cast<const double*>(z),
+                                 static_cast<double*>(nullptr), rows_re_.data(), rows_im_.data());
     forward(nx_, ny_);
-    // s^(k) = f(kx) (alpha^(k) z^(k) + beta^(k) conj(z^(-k))), f the shift
-    // factor of column kx for the steady operator (1 otherwise). The spectrum
-    // z is read from out_ and s written to back_, every k on its own; z^(-k)
-    // is first copied in the order of k (mirror_), so that the loop runs
-    // forward and vectorises.
-    double* mirror_re = mirror_.data();
-    double* mirror_im = mirror_.data() + my_;
-    for (int kx = 0; kx < mx_; ++kx) {
-        const int kxm = kx == 0 ? 0 : mx_ - kx;
-        const double* mr = out_re_.data() + sy_ * kxm;
-        const double* mi = out_im_.data() + sy_ * kxm;
-        mirror_re[0] = mr[0];
-        mirror_im[0] = mi[0];
-        for (int ky = 1; ky < my_; ++ky) {
-            mirror_re[ky] = mr[my_ - ky];
-            mirror_im[ky] = mi[my_ - ky];
-        }
-        multiply_column(my_, steady ? shift_[kx].real() : 1.0, steady ? shift_[kx].imag() : 0.0,
-                        alpha_.data() + static_cast<size_t>(my_) * kx,
-                        beta_re_.data() + static_cast<size_t>(my_) * kx,
-                        beta_im_.data() + static_cast<size_t>(my_) * kx,
-                        out_re_.data() + sy_ * kx, out_im_.data() + sy_ * kx, mirror_re,
-                        mirror_im, back_re_.data() + sy_ * kx, back_im_.data() + sy_ * kx);
-    }
+    // The spectrum z is read from out_ and s written to back_.
+    run_kernel<SpectralProductKernel>(isa_, mx_, my_, sy_, steady ? shift_.data() : nullptr,
+                                      alpha_.data(), beta_re_.data(), beta_im_.data(),
+                                      out_re_.data(), out_im_.data(), back_re_.data(),
+                                      back_im_.data());
     inverse();
-    for (int j = 0; j < ny_; ++j)
-        for (int i = 0; i < nx_; ++i)
-            s[i + static_cast<size_t>(nx_) * j] = Complex(out_re_[j * rc + i], out_im_[j * rc + i]);
+    run_kernel<ColumnPairKernel>(isa_, 2 * nx_, ny_, rc, static_cast<const double*>(nullptr),
+                                 reinterpret_cast<double*>(s), out_re_.data(), out_im_.data());
 }
 
 } // namespace creepwork

@@ -66,10 +66,12 @@ public:
     bool copy_pair_spectra(const GridConvolution& from);
     double rho() const { return rho_; }
     double nu() const { return nu_; }
-    // The copy of the FFTs' kernels to run (supported by this CPU; every copy
-    // gives the same bits).
+    // The copy of the products' kernels to run (the FFTs', the spectral
+    // multiply's, the copies'; supported by this CPU; every copy gives the
+    // same bits).
     void set_kernel_isa(KernelIsa isa)
     {
+        isa_ = isa;
         fft_x_.set_kernel_isa(isa);
         fft_y_.set_kernel_isa(isa);
     }
@@ -129,6 +131,7 @@ private:
     int mx_, my_, kmax_ = 0, lmax_ = 0;
     size_t sy_ = 0; // elements of the spectrum's batches along x: my_ lines and padding
     double rho_ = -1.0, nu_ = -1.0;
+    KernelIsa isa_ = best_kernel_isa(); // the kernels' copy (set_kernel_isa)
     BatchedFft fft_x_, fft_y_;
     // Tabulated nu-free parts for 0 <= k <= kmax_, 0 <= l <= lmax_.
     std::vector<double> X_, Y_, R_, corner_work_;
@@ -149,7 +152,6 @@ private:
     // of one size (padded_cols_ x padded_rows_; -1 when unknown).
     std::vector<double> back_re_, back_im_;
     int padded_cols_ = -1, padded_rows_ = -1;
-    std::vector<double> mirror_; // one column of z^(-k), real then imaginary parts
 };
 
 } // namespace creepwork

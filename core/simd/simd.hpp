@@ -53,6 +53,12 @@ CREEPWORK_INLINE Vec<W> load(const double* p)
 {
     return load_as<Vec<W>>(p);
 }
+// v to p: a vector, or one double.
+template <class V>
+CREEPWORK_INLINE void store_as(double* p, const V& v)
+{
+    std::memcpy(p, &v, sizeof v);
+}
 template <int W>
 CREEPWORK_INLINE void store(double* p, const Vec<W>& v)
 {
